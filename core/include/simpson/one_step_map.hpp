@@ -1,0 +1,42 @@
+#pragma once
+// Linear one-step maps on the state y = (p, q): y_{j+1} = Φ y_j, written with the paper's
+// entry names of Section 7, Φ = ((α, β), (γ, δ)).
+
+namespace simpson {
+
+/// A point of phase space: momentum p and state q.
+template <class Real>
+struct phase_point {
+  Real p;
+  Real q;
+};
+
+/// The matrix of a linear one-step map on (p, q): p' = α p + β q, q' = γ p + δ q.
+template <class Real>
+struct one_step_matrix {
+  Real alpha;
+  Real beta;
+  Real gamma;
+  Real delta;
+};
+
+/// Φ y (an operator rather than a function named apply, which ADL would confuse with std::apply).
+template <class Real>
+phase_point<Real> operator*(const one_step_matrix<Real>& phi, const phase_point<Real>& y) {
+  return {phi.alpha * y.p + phi.beta * y.q, phi.gamma * y.p + phi.delta * y.q};
+}
+
+/// det Φ = αδ − βγ; equal to 1 exactly when the map is symplectic (one degree of freedom).
+template <class Real>
+Real determinant(const one_step_matrix<Real>& phi) {
+  return phi.alpha * phi.delta - phi.beta * phi.gamma;
+}
+
+/// The matrix product A B (the map "B, then A").
+template <class Real>
+one_step_matrix<Real> operator*(const one_step_matrix<Real>& a, const one_step_matrix<Real>& b) {
+  return {a.alpha * b.alpha + a.beta * b.gamma, a.alpha * b.beta + a.beta * b.delta,
+          a.gamma * b.alpha + a.delta * b.gamma, a.gamma * b.beta + a.delta * b.delta};
+}
+
+}  // namespace simpson
