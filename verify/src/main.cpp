@@ -1,75 +1,63 @@
-// simpson-verify: the main job. For now it prints, in every precision, Φ_3 and its checks at the
-// paper's configuration (Section 8: m = 1, ω = 2π, h = 1/15).
+// simpson-verify: runs a scene of the claims ledger and writes its report.
+// Exit codes: 0 every verdict as expected; 1 some verdict differs (each named on stderr);
+// 2 bad input or usage (one line on stderr, nothing written).
 
-#include <simpson/energy.hpp>
-#include <simpson/precision.hpp>
-#include <simpson/simpson_map.hpp>
-#include <simpson/three_term_scheme.hpp>
+#include <simpson/verify/ledger.hpp>
+#include <simpson/verify/report.hpp>
+#include <simpson/verify/scene.hpp>
 
 #include <CLI/CLI.hpp>
-#include <boost/math/constants/constants.hpp>
 #include <fmt/core.h>
 
+#include <chrono>
 #include <cstdio>
 #include <exception>
-#include <sstream>
 #include <string>
 #include <vector>
 
 namespace {
 
-/// 2π in Real; for exact rationals, 2π rounded to a 100-digit binary float, then exact.
-template <class Real>
-Real two_pi() {
-  if constexpr (simpson::is_exact_v<Real>) {
-    return Real(boost::math::constants::two_pi<simpson::bin100>());
-  } else {
-    return boost::math::constants::two_pi<Real>();
+using namespace simpson::verify;
+
+int list_claims() {
+  for (const claim& c : ledger()) {
+    fmt::print("{:<34} §{:<8} {:<8} {}\n", c.id, c.section, to_string(c.expected), c.equation);
   }
+  return 0;
 }
 
-/// A value in decimal with `digits` significant digits; rationals are shown through bin100.
-template <class Real>
-std::string decimal(const Real& v, int digits) {
-  if constexpr (simpson::is_exact_v<Real>) {
-    if (v == 0) return "0 (exact)";
-    return simpson::to_string(simpson::bin100(v), digits);
-  } else {
-    return simpson::to_string(v, digits);
+int list_scenes() {
+  for (const auto& [name, text] : embedded_scenes()) {
+    const scene s = parse_scene(text, name);
+    fmt::print("{:<8} {} claims, {} precisions: {}\n", name, s.claims.size(), s.precisions.size(), s.description);
   }
+  return 0;
 }
 
-struct row {
-  std::string precision, epsilon, alpha, beta, gamma, det_minus_one, discriminant, energy_change;
-};
-
-row paper_configuration_row(const simpson::precision& prec) {
-  return prec.visit([&](auto tag) {
-    using Real = typename decltype(tag)::type;
-    const simpson::oscillator_parameters<Real> par(Real(1), two_pi<Real>(), Real(1) / 15);
-    const simpson::one_step_matrix<Real> phi3 = simpson::simpson_map(par);  // (Phi3)
-    const simpson::phase_point<Real> y{par.m() * par.omega(), Real(0)};     // q = sin ωt, p = mω cos ωt at t = 0
-    const Real energy_change =
-        simpson::discrete_energy(par, phi3 * y) - simpson::discrete_energy(par, y);
-    const int digits = 20;
-    return row{prec.name(),
-               prec.epsilon(),
-               decimal(phi3.alpha, digits),
-               decimal(phi3.beta, digits),
-               decimal(phi3.gamma, digits),
-               decimal(Real(simpson::determinant(phi3) - 1), 3),
-               decimal(simpson::discriminant(par.omega2_h2()), 3),
-               decimal(energy_change, 3)};
-  });
+int list_precisions() {
+  fmt::print("double, long double (or long-double), float128, bin50, bin100, mpfr:D ({} <= D <= {}), rational\n",
+             simpson::precision::min_mpfr_digits, simpson::precision::max_mpfr_digits);
+  for (const simpson::precision& p : simpson::default_precisions()) fmt::print("{:<12} epsilon {}\n", p.name(), p.epsilon());
+  return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"simpson-verify: checks the claims of the symplectic Simpson paper"};
+  CLI::App app{"simpson-verify: proves, rechecks and reports every claim of the symplectic Simpson paper"};
   app.set_version_flag("--version", std::string("simpson-verify ") + SIMPSON_VERSION);
-  std::vector<std::string> precision_names;
-  app.add_option("--precisions", precision_names, "comma-separated precisions (default: all)")->delimiter(',');
+  std::string scene_name = "paper", out_dir, seed_text, samples_text;
+  std::vector<std::string> claim_ids, precision_names;
+  bool want_claims = false, want_scenes = false, want_precisions = false;
+  app.add_option("--scene", scene_name, "embedded scene name (paper, quick) or a scene JSON file")->capture_default_str();
+  app.add_option("--out", out_dir, "report directory (default: reports/out/<scene>)");
+  app.add_option("--claims", claim_ids, "comma-separated claim ids (default: the scene's)")->delimiter(',');
+  app.add_option("--precisions", precision_names, "comma-separated precisions (default: the scene's)")->delimiter(',');
+  app.add_option("--seed", seed_text, "seed of the random samples (default: the scene's, printed in the report)");
+  app.add_option("--samples", samples_text, "random samples per numeric recheck and precision, 1..10000");
+  app.add_flag("--list-claims", want_claims, "list the claims of the ledger and exit");
+  app.add_flag("--list-scenes", want_scenes, "list the embedded scenes and exit");
+  app.add_flag("--list-precisions", want_precisions, "list the precisions and exit");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -78,26 +66,78 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  scene s;
+  std::filesystem::path out;
   try {
-    std::vector<simpson::precision> precisions;
-    for (const std::string& name : precision_names) precisions.push_back(simpson::precision::parse(name));
-    if (precisions.empty()) precisions = simpson::default_precisions();
-
-    fmt::print("Phi3 at the paper's configuration: m = 1, omega = 2 pi, h = 1/15, y = (p, q) = (m omega, 0)\n");
-    fmt::print("(rational: omega = 2 pi rounded to bin100, then exact; its entries are shown to 20 digits)\n\n");
-    fmt::print("{:<12} {:<10} {:<27} {:<27} {:<27} {:<11} {:<11} {}\n", "precision", "epsilon", "alpha = delta",
-               "beta", "gamma", "det-1", "Delta", "Hd(Phi3 y)-Hd(y)");
-    for (const simpson::precision& prec : precisions) {
-      const row r = paper_configuration_row(prec);
-      fmt::print("{:<12} {:<10} {:<27} {:<27} {:<27} {:<11} {:<11} {}\n", r.precision, r.epsilon, r.alpha, r.beta,
-                 r.gamma, r.det_minus_one, r.discriminant, r.energy_change);
+    if (want_claims) return list_claims();
+    if (want_scenes) return list_scenes();
+    if (want_precisions) return list_precisions();
+    s = load_scene(scene_name);
+    if (!claim_ids.empty()) {
+      std::vector<std::string> ids;
+      for (const claim& c : ledger()) {
+        for (const std::string& id : claim_ids) {
+          if (find_claim(id).id == c.id && (ids.empty() || ids.back() != c.id)) ids.push_back(c.id);
+        }
+      }
+      s.claims = ids;
     }
+    if (!precision_names.empty()) {
+      s.precisions.clear();
+      for (const std::string& name : precision_names) s.precisions.push_back(simpson::precision::parse(name));
+    }
+    const auto parse_count = [](const std::string& flag, const std::string& text, unsigned long long max) {
+      std::size_t used = 0;
+      unsigned long long v = 0;
+      try {
+        if (text.empty() || text.front() == '-') throw std::invalid_argument("");
+        v = std::stoull(text, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used != text.size() || used == 0 || v > max) {
+        throw std::invalid_argument(flag + " '" + text + "': expected an integer from 0 to " + std::to_string(max));
+      }
+      return v;
+    };
+    if (!seed_text.empty()) s.seed = parse_count("--seed", seed_text, ~0ULL);
+    if (!samples_text.empty()) {
+      const unsigned long long n = parse_count("--samples", samples_text, 10000);
+      if (n < 1) throw std::invalid_argument("--samples '" + samples_text + "': expected an integer from 1 to 10000");
+      s.samples = static_cast<unsigned>(n);
+    }
+    out = out_dir.empty() ? std::filesystem::path("reports/out") / s.name : std::filesystem::path(out_dir);
+    prepare_output_directory(out);
   } catch (const std::invalid_argument& e) {
     std::fprintf(stderr, "simpson-verify: %s\n", e.what());
     return 2;
+  } catch (const std::domain_error& e) {
+    std::fprintf(stderr, "simpson-verify: %s\n", e.what());
+    return 2;
+  }
+
+  try {
+    const auto start = std::chrono::steady_clock::now();
+    const run_record record = run(s, [&](std::size_t k, std::size_t n, const claim& c, const claim_outcome* done) {
+      if (!done) return;
+      fmt::print(stderr, "[{:>2}/{}] {:<34} {:<8} {:.2f} s\n", k + 1, n, c.id, to_string(done->result.outcome), done->seconds);
+    });
+    write_report_files(out, record);
+    for (const claim_outcome& o : record.outcomes) {
+      const bool as_expected = o.result.outcome == o.expected;
+      fmt::print("  {:<8} {:<34}{}\n", to_string(o.result.outcome), o.checked->id,
+                 as_expected ? "" : "  <- expected " + to_string(o.expected));
+      if (!as_expected) {
+        fmt::print(stderr, "simpson-verify: {}: verdict {}, expected {}\n", o.checked->id, to_string(o.result.outcome),
+                   to_string(o.expected));
+      }
+    }
+    fmt::print("{} (scene {}, seed {}, {:.1f} s)\nreport: {}, {}\n", summary_line(record), s.name, s.seed,
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+               (out / "report.md").string(), (out / "report.json").string());
+    return all_as_expected(record) ? 0 : 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "simpson-verify: error: %s\n", e.what());
-    return 1;
+    return 2;
   }
-  return 0;
 }

@@ -1,0 +1,58 @@
+#pragma once
+// Running a scene and writing its report: report.json (machine-readable) and report.md (for
+// people), both written atomically. Same scene and seed give byte-identical files apart from
+// the "timing" members of report.json and the "environment" member (compiler, versions, commit).
+
+#include <simpson/verify/claim.hpp>
+#include <simpson/verify/scene.hpp>
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace simpson::verify {
+
+struct claim_outcome {
+  const claim* checked = nullptr;
+  verdict expected = verdict::holds;
+  claim_result result;
+  double seconds = 0;
+};
+
+struct run_record {
+  scene run_scene;
+  std::vector<claim_outcome> outcomes;
+  json paper_configuration;
+  json environment;
+  double seconds = 0;
+};
+
+/// Called before and after each claim: (index, count, claim, outcome or nullptr).
+using progress_callback = std::function<void(std::size_t, std::size_t, const claim&, const claim_outcome*)>;
+
+/// Runs every claim of the scene; a check that throws is recorded as `fails` with the message.
+run_record run(const scene& s, const progress_callback& progress = {});
+
+/// True when every verdict equals its expected verdict.
+bool all_as_expected(const run_record& r);
+
+/// Φ_3, det Φ_3 − 1, Δ and H_d(Φ_3 y) − H_d(y) at m = 1, ω = 2π, h = 1/15 in each precision.
+json paper_configuration(const std::vector<precision>& precisions);
+
+/// Compiler, flags, library versions and git commit of this build.
+json build_environment();
+
+json report_json(const run_record& r);
+std::string report_markdown(const run_record& r);
+/// One line: "48 claims: 42 held, 5 errata, 1 failed; all as expected".
+std::string summary_line(const run_record& r);
+
+/// Creates `dir` if needed and checks that a file can be written there; throws
+/// std::invalid_argument naming the directory otherwise.
+void prepare_output_directory(const std::filesystem::path& dir);
+
+/// Writes dir/report.json and dir/report.md, each to a temporary file renamed into place.
+void write_report_files(const std::filesystem::path& dir, const run_record& r);
+
+}  // namespace simpson::verify

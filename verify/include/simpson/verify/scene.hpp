@@ -1,0 +1,47 @@
+#pragma once
+// Scenes: JSON files saying what a run computes. Validated on load; unknown keys are refused.
+//
+// {
+//   "name": "paper",                       required, [a-z0-9_-]+
+//   "description": "...",                  optional
+//   "claims": "all" | ["phi3-det", ...],   required
+//   "precisions": ["double", "mpfr:100"],  required, names of the precision list
+//   "samples": 16,                         optional, random samples per numeric recheck, 1..10000
+//   "seed": 20230830,                      optional, the default seed (--seed overrides)
+//   "expected_overrides": {"id": "fails"}  optional, replaces expected verdicts (tests the exit code)
+// }
+
+#include <simpson/precision.hpp>
+#include <simpson/verify/claim.hpp>
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace simpson::verify {
+
+inline constexpr std::uint64_t default_seed = 20230830;  // the first day of GSI 2023
+inline constexpr unsigned default_samples = 16;
+
+struct scene {
+  std::string name;
+  std::string description;
+  std::vector<std::string> claims;  // ids, in ledger order
+  std::vector<precision> precisions;
+  unsigned samples = default_samples;
+  std::uint64_t seed = default_seed;
+  std::map<std::string, verdict> expected_overrides;
+};
+
+/// Parses and validates a scene; `origin` names it in errors. Throws std::invalid_argument with a
+/// one-line message naming the field (and, for malformed JSON, the line and column).
+scene parse_scene(const std::string& text, const std::string& origin);
+
+/// An embedded scene by name ("paper", "quick"), or else a file path.
+scene load_scene(const std::string& name_or_path);
+
+/// Names and texts of the embedded scenes (the files of scenes/, compiled in).
+const std::map<std::string, std::string>& embedded_scenes();
+
+}  // namespace simpson::verify

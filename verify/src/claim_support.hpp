@@ -1,0 +1,140 @@
+#pragma once
+// Helpers shared by the claim definitions: exact identity proofs with their evidence, and the
+// rule that turns evidence into a verdict.
+
+#include <simpson/verify/claim.hpp>
+#include <simpson/verify/exact_proof.hpp>
+#include <simpson/verify/numeric_recheck.hpp>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace simpson::verify::detail {
+
+/// The outcome of an exact proof attempt and its evidence.
+struct proof {
+  bool proved = false;
+  json evidence = json::object();
+};
+
+/// `difference` is a symbolic expression that the claim says is zero; proved when its numerator
+/// is the zero polynomial. `reduction` says how the claim became this expression.
+inline proof prove_zero(const std::string& reduction, const symbolic& difference) {
+  proof p;
+  p.proved = difference.is_zero();
+  p.evidence["method"] = "exact";
+  p.evidence["reduction"] = reduction;
+  p.evidence["numerator_of_difference"] = to_string(difference.numerator(), "θ");
+  p.evidence["result"] = p.proved ? "zero polynomial: identity proved" : "nonzero polynomial: identity false";
+  return p;
+}
+
+/// Grid lemma over further variables: `f(values)` gives the symbolic differences the claim says
+/// are zero (one, or a std::vector of several, each checked on its own) at integer values
+/// 1, ..., bound + 1 of each variable (nonzero, so divisions are defined); proved when they are
+/// zero at every point, given that each is a polynomial of degree ≤ bound in each variable.
+template <class F>
+proof prove_zero_on_grid(const std::string& reduction, const std::vector<std::string>& variables,
+                         const std::vector<int>& bounds, F&& f) {
+  std::size_t points = 0;
+  symbolic witness;
+  const auto first = first_nonzero_on_grid(bounds, [&](const std::vector<int>& point) {
+    ++points;
+    std::vector<rational> values;
+    for (const int v : point) values.emplace_back(v + 1);
+    const auto value = f(values);
+    if constexpr (std::is_same_v<std::decay_t<decltype(value)>, symbolic>) {
+      witness = value;
+    } else {
+      witness = symbolic(0);
+      for (const symbolic& part : value) {
+        if (!part.is_zero()) {
+          witness = part;
+          break;
+        }
+      }
+    }
+    return witness;
+  });
+  proof p;
+  p.proved = !first.has_value();
+  p.evidence["method"] = "exact";
+  p.evidence["reduction"] = reduction;
+  std::string grid;
+  for (std::size_t k = 0; k < variables.size(); ++k) {
+    grid += (k ? ", " : "") + variables[k] + " in {1..." + std::to_string(bounds[k] + 1) + "} (degree <= " +
+            std::to_string(bounds[k]) + ")";
+  }
+  p.evidence["grid"] = grid;
+  p.evidence["points_evaluated"] = points;
+  if (p.proved) {
+    p.evidence["result"] = "zero at every grid point: identity proved (grid lemma)";
+  } else {
+    std::string at;
+    for (std::size_t k = 0; k < first->size(); ++k) {
+      at += (k ? ", " : "") + variables[k] + " = " + std::to_string((*first)[k] + 1);
+    }
+    p.evidence["result"] = "nonzero at " + at + ": identity false";
+    p.evidence["numerator_there"] = to_string(witness.numerator(), "θ");
+  }
+  return p;
+}
+
+/// The same bound for every variable.
+template <class F>
+proof prove_zero_on_grid(const std::string& reduction, const std::vector<std::string>& variables, int bound, F&& f) {
+  return prove_zero_on_grid(reduction, variables, std::vector<int>(variables.size(), bound), std::forward<F>(f));
+}
+
+/// holds when every method confirms; otherwise fails (errata are built explicitly).
+inline claim_result confirmed_if(bool ok, json evidence, std::string note = {}) {
+  claim_result r;
+  r.outcome = ok ? verdict::holds : verdict::fails;
+  r.evidence = std::move(evidence);
+  r.note = std::move(note);
+  return r;
+}
+
+/// An identity proved exactly and rechecked numerically.
+inline claim_result identity(const proof& exact, bool numeric_within, json numeric, std::string note = {}) {
+  json evidence = json::object();
+  evidence["exact"] = exact.evidence;
+  evidence["numeric"] = std::move(numeric);
+  return confirmed_if(exact.proved && numeric_within, std::move(evidence), std::move(note));
+}
+
+/// An identity proved exactly, with no numeric recheck.
+inline claim_result identity(const proof& exact, std::string note = {}) {
+  json evidence = json::object();
+  evidence["exact"] = exact.evidence;
+  return confirmed_if(exact.proved, std::move(evidence), std::move(note));
+}
+
+/// An erratum: the printed form is refuted and the corrected form proved. When the printed form
+/// turns out true, or the correction does not hold, the verdict is fails, and the evidence says which.
+inline claim_result erratum(const proof& printed, const proof& corrected, std::string correction, std::string note = {}) {
+  claim_result r;
+  r.evidence["printed"] = printed.evidence;
+  r.evidence["corrected"] = corrected.evidence;
+  r.correction = std::move(correction);
+  r.note = std::move(note);
+  r.outcome = (!printed.proved && corrected.proved) ? verdict::erratum : verdict::fails;
+  return r;
+}
+
+/// The symbolic value of an exact-difference derivative (exact for polynomials of degree ≤ 4
+/// in the differentiated variable): (4 D(1) − D(2)) / 3 with D(e) the central difference.
+template <class F>
+symbolic exact_derivative(F&& f, const symbolic& at) {
+  const symbolic d1 = (f(at + 1) - f(at - 1)) / 2;
+  const symbolic d2 = (f(at + 2) - f(at - 2)) / 4;
+  return (4 * d1 - d2) / 3;
+}
+
+template <class Real>
+Real from_double(double v) {
+  return Real(v);
+}
+
+}  // namespace simpson::verify::detail

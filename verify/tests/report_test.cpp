@@ -1,0 +1,75 @@
+#include <simpson/verify/report.hpp>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace simpson::verify {
+namespace {
+
+json without_volatile(json j) {
+  j.erase("timing");
+  j.erase("environment");
+  return j;
+}
+
+TEST(Report, SameSceneAndSeedGiveIdenticalReportsApartFromTiming) {
+  const scene s = load_scene("quick");
+  const run_record first = run(s), second = run(s);
+  EXPECT_EQ(without_volatile(report_json(first)).dump(), without_volatile(report_json(second)).dump());
+  EXPECT_EQ(report_markdown(first), report_markdown(second));
+}
+
+TEST(Report, ADifferentSeedChangesTheSamplesAndIsRecorded) {
+  scene s = load_scene("quick");
+  const json a = report_json(run(s));
+  s.seed += 1;
+  const json b = report_json(run(s));
+  EXPECT_EQ(b["seed"].get<std::uint64_t>(), a["seed"].get<std::uint64_t>() + 1);
+  EXPECT_NE(without_volatile(a).dump(), without_volatile(b).dump());
+}
+
+TEST(Report, HasTheRequiredFieldsAndAnErrataSection) {
+  const run_record r = run(load_scene("quick"));
+  const json j = report_json(r);
+  for (const json& c : j["claims"]) {
+    for (const char* key : {"id", "equation", "statement", "methods", "verdict", "expected", "evidence"}) {
+      EXPECT_TRUE(c.contains(key)) << key;
+    }
+    if (c["verdict"] == "erratum") {
+      EXPECT_TRUE(c.contains("correction"));
+    }
+  }
+  const std::string md = report_markdown(r);
+  EXPECT_NE(md.find("**6 claims: 4 held, 2 errata, 0 failed; all verdicts as expected**"), std::string::npos) << md.substr(0, 400);
+  EXPECT_NE(md.find("### gamma-system"), std::string::npos);
+}
+
+TEST(Report, WritesBothFilesAtomically) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "simpson-report-test";
+  std::filesystem::remove_all(dir);
+  prepare_output_directory(dir);
+  write_report_files(dir, run(load_scene("quick")));
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"report.json", "report.md"}));
+  std::ifstream in(dir / "report.json");
+  const json parsed = json::parse(in);
+  EXPECT_EQ(parsed["scene"], "quick");
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Report, AnOutputDirectoryThatCannotBeCreatedIsNamed) {
+  try {
+    prepare_output_directory("/proc/simpson-cannot-write-here");
+    ADD_FAILURE();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("'/proc/simpson-cannot-write-here'"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace simpson::verify
