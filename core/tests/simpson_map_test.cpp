@@ -1,9 +1,8 @@
 #include <simpson/simpson_map.hpp>
 
+
 #include <simpson/energy.hpp>
 #include <simpson/reduced_lagrangian.hpp>
-#include <simpson/simpson_momentum.hpp>
-#include <simpson/three_term_scheme.hpp>
 
 #include "test_support.hpp"
 
@@ -16,18 +15,6 @@ template <class Real>
 class SimpsonMap : public test::precision_fixture<Real> {};
 TYPED_TEST_SUITE(SimpsonMap, test::all_scalars, test::scalar_names);
 
-/// The route Section 6 describes, without (Phi3): q_{j−1} from p_j by (moment-ordre-3), q_{j+1}
-/// from (schema-ordre-3), p_{j+1} by (moment-ordre-3). Both relations are affine in the unknown,
-/// so each is solved from two evaluations.
-template <class Real>
-phase_point<Real> step_by_elimination(const oscillator_parameters<Real>& par, const phase_point<Real>& y) {
-  const Real p0 = simpson_momentum(par, Real(0), y.q);
-  const Real q_prev = (y.p - p0) / (simpson_momentum(par, Real(1), y.q) - p0);
-  const Real r0 = three_term_residual(par, q_prev, y.q, Real(0));
-  const Real q_next = -r0 / (three_term_residual(par, q_prev, y.q, Real(1)) - r0);
-  return {simpson_momentum(par, y.q, q_next), q_next};
-}
-
 TYPED_TEST(SimpsonMap, DeterminantIsOne) {
   using Real = TypeParam;
   for (const auto& par : test::parameter_cases<Real>()) {
@@ -35,24 +22,6 @@ TYPED_TEST(SimpsonMap, DeterminantIsOne) {
     // Each entry carries at most ~14 roundings; αδ − βγ errs by at most 2·14·eps·(|αδ| + |βγ|).
     const Real condition = test::magnitude(Real(phi.alpha * phi.delta)) + test::magnitude(Real(phi.beta * phi.gamma));
     EXPECT_TRUE(test::within(determinant(phi), Real(1), Real(32 * eps<Real>() * condition)));
-  }
-}
-
-TYPED_TEST(SimpsonMap, EqualsTheMapObtainedByEliminatingThePreviousState) {
-  using Real = TypeParam;
-  for (const auto& par : test::parameter_cases<Real>()) {
-    const phase_point<Real> y{test::ratio<Real>(-3, 2), test::ratio<Real>(5, 7)};
-    const phase_point<Real> by_formula = simpson_map(par) * y;
-    const phase_point<Real> by_elimination = step_by_elimination(par, y);
-    // The elimination sums terms of size (|q| + h|p|/m)(1 + x/|1 − x/8|) in q and m/h times that in p,
-    // then divides by slopes of size m/h; 128 covers its ~40 roundings twice over.
-    const Real x = par.omega2_h2();
-    const Real amplification = 1 + x / test::magnitude(Real(1 - x / 8));
-    const Real q_scale = (test::magnitude(y.q) + test::magnitude(by_formula.q) + par.h() * test::magnitude(y.p) / par.m()) *
-                         amplification;
-    const Real p_scale = q_scale * par.m() / par.h();
-    EXPECT_TRUE(test::within(by_elimination.q, by_formula.q, Real(128 * eps<Real>() * q_scale)));
-    EXPECT_TRUE(test::within(by_elimination.p, by_formula.p, Real(128 * eps<Real>() * p_scale)));
   }
 }
 

@@ -6,6 +6,8 @@
 #include <simpson/verify/exact_proof.hpp>
 #include <simpson/verify/numeric_recheck.hpp>
 
+#include <simpson/one_step_map.hpp>
+
 #include <string>
 #include <utility>
 #include <vector>
@@ -132,9 +134,50 @@ symbolic exact_derivative(F&& f, const symbolic& at) {
   return (4 * d1 - d2) / 3;
 }
 
-template <class Real>
-Real from_double(double v) {
-  return Real(v);
+/// Numeric recheck of det Φ = 1 for the map `map_of(parameters)` at the sampled parameters. With
+/// at most `roundings` roundings in each entry, |det Φ − 1| ≤ 2·roundings·eps·(|αδ| + |βγ|), the
+/// condition factor of the difference αδ − βγ.
+template <class MapOf>
+json determinant_recheck(const run_context& ctx, const std::string& stream, int roundings, MapOf&& map_of, bool& within) {
+  return numeric_recheck(ctx, stream, [&](auto tag, const sample& s) {
+    using Real = typename decltype(tag)::type;
+    const one_step_matrix<Real> phi = map_of(oscillator_parameters<Real>{Real(s.m), Real(s.omega), Real(s.h)});
+    using std::abs;
+    const Real condition = abs(Real(phi.alpha * phi.delta)) + abs(Real(phi.beta * phi.gamma));
+    return residual_and_bound<Real>{Real(determinant(phi) - 1), Real(2 * roundings * eps<Real>() * condition)};
+  }, within);
+}
+
+/// V(q) = q^k and V'(q) = k q^(k−1): the basis of the quartic potentials on which the claims
+/// stated for a general V are proved (each of them is linear in V).
+struct monomial_potential {
+  int k;
+  symbolic operator()(const symbolic& q) const { return power(q, k); }
+  symbolic derivative(const symbolic& q) const { return k == 0 ? symbolic(0) : symbolic(k) * power(q, k - 1); }
+  static symbolic power(const symbolic& q, int n) {
+    symbolic v(1);
+    for (int i = 0; i < n; ++i) v = v * q;
+    return v;
+  }
+};
+
+/// Proves f(V, values) ≡ 0 on the grid for V = q^k, k = 0..4: hence for every polynomial V of
+/// degree ≤ 4, the identity being linear in V.
+template <class F>
+claim_result identity_for_quartic_potentials(const std::string& reduction, const std::vector<std::string>& variables,
+                                             const std::vector<int>& bounds, F&& f, std::string note) {
+  bool all = true;
+  json per_potential = json::array();
+  for (int k = 0; k <= 4; ++k) {
+    const monomial_potential V{k};
+    const proof p = prove_zero_on_grid(reduction + "; V(q) = q^" + std::to_string(k), variables, bounds,
+                                       [&](const std::vector<rational>& values) { return f(V, values); });
+    all = all && p.proved;
+    per_potential.push_back(p.evidence);
+  }
+  json evidence;
+  evidence["exact"] = per_potential;
+  return confirmed_if(all, evidence, std::move(note));
 }
 
 }  // namespace simpson::verify::detail

@@ -13,22 +13,6 @@ namespace {
 
 const char* const unit_reduction = "m = omega = 1, h = theta (lemma-dimensional-scaling)";
 
-/// V(q) = q^k: the general-V formulas are checked on the basis of quartic potentials.
-struct monomial_potential {
-  int k;
-  symbolic operator()(const symbolic& q) const {
-    symbolic v(1);
-    for (int i = 0; i < k; ++i) v = v * q;
-    return v;
-  }
-  symbolic derivative(const symbolic& q) const {
-    if (k == 0) return symbolic(0);
-    symbolic v(k);
-    for (int i = 1; i < k; ++i) v = v * q;
-    return v;
-  }
-};
-
 /// ∂/∂q_1 of Σ_{j=first}^{N−1} L(q_j, q_{j+1}) for N = 3, by exact differences.
 template <class Lagrangian>
 symbolic action_derivative_at_q1(Lagrangian&& L, int first, const std::vector<symbolic>& q) {
@@ -66,30 +50,21 @@ claim_result check_action_range(const run_context&) {
 }
 
 claim_result check_classical_euler_lagrange(const run_context&) {
-  // For V = q^k, k = 0..4: dL_d/dq_r(q_{j-1}, q_j) + dL_d/dq_l(q_j, q_{j+1}) + h (schema-ordre-deux) = 0,
-  // a polynomial of degree <= 4 in each q and of degree 1 in m.
-  bool all = true;
-  json per_potential = json::array();
-  for (int k = 0; k <= 4; ++k) {
-    const monomial_potential V{k};
-    const symbolic h = symbolic::variable();
-    const proof p = prove_zero_on_grid(
-        "h = theta; V(q) = q^" + std::to_string(k) + "; dL_d/dq_r(q_{j-1},q_j) + dL_d/dq_l(q_j,q_{j+1}) + h (schema-ordre-deux)",
-        {"m", "q_{j-1}", "q_j", "q_{j+1}"}, std::vector<int>{1, 4, 4, 4}, [&](const std::vector<rational>& v) {
-          const symbolic m(v[0]), qp(v[1]), q(v[2]), qn(v[3]);
-          const auto L_right = [&](const symbolic& x) { return classical_lagrangian(m, h, V, qp, x); };
-          const auto L_left = [&](const symbolic& x) { return classical_lagrangian(m, h, V, x, qn); };
-          const auto dV = [&](const symbolic& x) { return V.derivative(x); };
-          return exact_derivative(L_right, q) + exact_derivative(L_left, q) + h * classical_scheme_residual(m, h, dV, qp, q, qn);
-        });
-    all = all && p.proved;
-    per_potential.push_back(p.evidence);
-  }
-  json evidence;
-  evidence["exact"] = per_potential;
-  return confirmed_if(all, evidence,
-                      "Proved for every polynomial V of degree <= 4 (the identity is linear in V); for a general smooth V "
-                      "it is the chain rule on V((q_l + q_r)/2).");
+  // dL_d/dq_r(q_{j-1}, q_j) + dL_d/dq_l(q_j, q_{j+1}) + h (schema-ordre-deux) = 0: a polynomial of
+  // degree <= 4 in each q and of degree 1 in m.
+  const symbolic h = symbolic::variable();
+  return identity_for_quartic_potentials(
+      "h = theta; dL_d/dq_r(q_{j-1},q_j) + dL_d/dq_l(q_j,q_{j+1}) (exact differences) + h (schema-ordre-deux)",
+      {"m", "q_{j-1}", "q_j", "q_{j+1}"}, {1, 4, 4, 4},
+      [&](const monomial_potential& V, const std::vector<rational>& v) {
+        const symbolic m(v[0]), qp(v[1]), q(v[2]), qn(v[3]);
+        const auto dV = [&](const symbolic& x) { return V.derivative(x); };
+        return exact_derivative([&](const symbolic& x) { return classical_lagrangian(m, h, V, qp, x); }, q) +
+               exact_derivative([&](const symbolic& x) { return classical_lagrangian(m, h, V, x, qn); }, q) +
+               h * classical_scheme_residual(m, h, dV, qp, q, qn);
+      },
+      "Proved for every polynomial V of degree <= 4 (the identity is linear in V); for a general smooth V it is the "
+      "chain rule on V((q_l + q_r)/2).");
 }
 
 claim_result check_classical_consistency(const run_context&) {
@@ -161,15 +136,8 @@ claim_result check_newmark_matrix(const run_context&) {
 claim_result check_newmark_det(const run_context& ctx) {
   const proof exact = prove_zero(std::string(unit_reduction) + "; det Phi - 1", determinant(newmark_map(unit_oscillator_in_theta())) - 1);
   bool within = false;
-  const json numeric = numeric_recheck(ctx, "newmark-det", [](auto tag, const sample& s) {
-    using Real = typename decltype(tag)::type;
-    const oscillator_parameters<Real> par{Real(s.m), Real(s.omega), Real(s.h)};
-    const one_step_matrix<Real> phi = newmark_map(par);
-    using std::abs;
-    // Entries carry <= 8 roundings each: |det - 1| <= 2*8 eps (|alpha delta| + |beta gamma|).
-    const Real condition = abs(Real(phi.alpha * phi.delta)) + abs(Real(phi.beta * phi.gamma));
-    return residual_and_bound<Real>{Real(determinant(phi) - 1), Real(16 * eps<Real>() * condition)};
-  }, within);
+  // Entries carry at most 8 roundings each.
+  const json numeric = determinant_recheck(ctx, "newmark-det", 8, [](const auto& par) { return newmark_map(par); }, within);
   return identity(exact, within, numeric);
 }
 

@@ -109,32 +109,19 @@ claim_result check_simpson_exactness(const run_context&) {
 }
 
 claim_result check_simpson_lagrangian(const run_context&) {
-  // For V = q^k (k <= 4) and all q_l, q_m, q_r, m: (LLhh) equals h * simpson(m/2 q'^2 - V(q)) along (q2t).
-  bool all = true;
-  json per_potential = json::array();
+  // (LLhh) against h * simpson(m/2 q'^2 - V(q)) along (q2t): degree <= 4 in each q, 1 in m.
   const symbolic h = symbolic::variable();
-  for (int k = 0; k <= 4; ++k) {
-    const auto V = [k](const symbolic& q) {
-      symbolic v(1);
-      for (int i = 0; i < k; ++i) v = v * q;
-      return v;
-    };
-    const proof p = prove_zero_on_grid(
-        "h = theta; V(q) = q^" + std::to_string(k) + "; (LLhh) - h (simpson)[m/2 (dq/dt)^2 - V(q)] along (q2t)",
-        {"m", "q_l", "q_m", "q_r"}, std::vector<int>{1, 4, 4, 4}, [&](const std::vector<rational>& v) {
-          const symbolic m(v[0]), ql(v[1]), qm(v[2]), qr(v[3]);
-          const auto integrand = [&](const symbolic& s) {
-            const symbolic velocity = quadratic_interpolant_derivative(ql, qm, qr, h, s);
-            return m / 2 * velocity * velocity - V(quadratic_interpolant(ql, qm, qr, s));
-          };
-          return simpson_lagrangian(m, h, V, ql, qm, qr) - h * simpson_rule<symbolic>(integrand);
-        });
-    all = all && p.proved;
-    per_potential.push_back(p.evidence);
-  }
-  json evidence;
-  evidence["exact"] = per_potential;
-  return confirmed_if(all, evidence, "Proved for every polynomial V of degree <= 4 (the identity is linear in V).");
+  return identity_for_quartic_potentials(
+      "h = theta; (LLhh) - h (simpson)[m/2 (dq/dt)^2 - V(q)] along (q2t)", {"m", "q_l", "q_m", "q_r"}, {1, 4, 4, 4},
+      [&](const monomial_potential& V, const std::vector<rational>& v) {
+        const symbolic m(v[0]), ql(v[1]), qm(v[2]), qr(v[3]);
+        const auto integrand = [&](const symbolic& s) {
+          const symbolic velocity = quadratic_interpolant_derivative(ql, qm, qr, h, s);
+          return m / 2 * velocity * velocity - V(quadratic_interpolant(ql, qm, qr, s));
+        };
+        return simpson_lagrangian(m, h, V, ql, qm, qr) - h * simpson_rule<symbolic>(integrand);
+      },
+      "Proved for every polynomial V of degree <= 4 (the identity is linear in V).");
 }
 
 /// dS/dq_1 + (factor) × scheme at j = 1 for N = 3, summing L over j = first..N−1.

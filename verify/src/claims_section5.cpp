@@ -17,12 +17,6 @@ namespace {
 
 const char* const unit_reduction = "m = omega = 1, h = theta (lemma-dimensional-scaling)";
 
-symbolic power(const symbolic& q, int k) {
-  symbolic v(1);
-  for (int i = 0; i < k; ++i) v = v * q;
-  return v;
-}
-
 claim_result check_gear_partials(const run_context&) {
   const symbolic h = symbolic::variable();
   const proof p = prove_zero_on_grid(
@@ -38,25 +32,16 @@ claim_result check_gear_partials(const run_context&) {
 }
 
 claim_result check_lh_dqm(const run_context&) {
-  bool all = true;
-  json per_potential = json::array();
   const symbolic h = symbolic::variable();
-  for (int k = 0; k <= 4; ++k) {
-    const auto V = [k](const symbolic& q) { return power(q, k); };
-    const auto dV = [k](const symbolic& q) { return k == 0 ? symbolic(0) : symbolic(k) * power(q, k - 1); };
-    const proof p = prove_zero_on_grid(
-        "h = theta; V(q) = q^" + std::to_string(k) + "; printed dL_h/dq_m minus the exact difference of (LLhh) in q_m",
-        {"m", "q_l", "q_m", "q_r"}, std::vector<int>{1, 4, 4, 4}, [&](const std::vector<rational>& v) {
-          const symbolic m(v[0]), ql(v[1]), qm(v[2]), qr(v[3]);
-          return simpson_lagrangian_dq_mid(m, h, dV, ql, qm, qr) -
-                 exact_derivative([&](const symbolic& x) { return simpson_lagrangian(m, h, V, ql, x, qr); }, qm);
-        });
-    all = all && p.proved;
-    per_potential.push_back(p.evidence);
-  }
-  json evidence;
-  evidence["exact"] = per_potential;
-  return confirmed_if(all, evidence, "Proved for every polynomial V of degree <= 4 (the identity is linear in V).");
+  return identity_for_quartic_potentials(
+      "h = theta; printed dL_h/dq_m minus the exact difference of (LLhh) in q_m", {"m", "q_l", "q_m", "q_r"}, {1, 4, 4, 4},
+      [&](const monomial_potential& V, const std::vector<rational>& v) {
+        const symbolic m(v[0]), ql(v[1]), qm(v[2]), qr(v[3]);
+        const auto dV = [&](const symbolic& x) { return V.derivative(x); };
+        return simpson_lagrangian_dq_mid(m, h, dV, ql, qm, qr) -
+               exact_derivative([&](const symbolic& x) { return simpson_lagrangian(m, h, V, ql, x, qr); }, qm);
+      },
+      "Proved for every polynomial V of degree <= 4 (the identity is linear in V).");
 }
 
 claim_result check_gr_minus_gl(const run_context&) {
@@ -70,23 +55,16 @@ claim_result check_gr_minus_gl(const run_context&) {
 }
 
 claim_result check_internal_equation(const run_context&) {
-  bool all = true;
-  json per_potential = json::array();
   const symbolic h = symbolic::variable();
-  for (int k = 0; k <= 4; ++k) {
-    const auto dV = [k](const symbolic& q) { return k == 0 ? symbolic(0) : symbolic(k) * power(q, k - 1); };
-    const proof p = prove_zero_on_grid(
-        "h = theta; V(q) = q^" + std::to_string(k) + "; dL_h/dq_m + (2h/3) (equation-milieu-intervalle): the two vanish together",
-        {"m", "q_l", "q_m", "q_r"}, std::vector<int>{1, 3, 3, 3}, [&](const std::vector<rational>& v) {
-          const symbolic m(v[0]), ql(v[1]), qm(v[2]), qr(v[3]);
-          return simpson_lagrangian_dq_mid(m, h, dV, ql, qm, qr) + 2 * h / 3 * internal_equation_residual(m, h, dV, ql, qm, qr);
-        });
-    all = all && p.proved;
-    per_potential.push_back(p.evidence);
-  }
-  json evidence;
-  evidence["exact"] = per_potential;
-  return confirmed_if(all, evidence);
+  return identity_for_quartic_potentials(
+      "h = theta; dL_h/dq_m + (2h/3) (equation-milieu-intervalle): the two vanish together", {"m", "q_l", "q_m", "q_r"},
+      {1, 3, 3, 3},
+      [&](const monomial_potential& V, const std::vector<rational>& v) {
+        const symbolic m(v[0]), ql(v[1]), qm(v[2]), qr(v[3]);
+        const auto dV = [&](const symbolic& x) { return V.derivative(x); };
+        return simpson_lagrangian_dq_mid(m, h, dV, ql, qm, qr) + 2 * h / 3 * internal_equation_residual(m, h, dV, ql, qm, qr);
+      },
+      "Proved for every polynomial V of degree <= 4 (the identity is linear in V).");
 }
 
 claim_result check_internal_second_order(const run_context&) {
@@ -271,7 +249,7 @@ claim_result check_taylor_display(const run_context&) {
           const int used = (printed && order == 6) ? 5 : order;  // printed: d^6q/dt^5 in the h^6 term
           sum += hk * derivative_at(k, used, t_j) / factorial;
         }
-        gaps.push_back(power(symbolic(t_j) + sign * h, k) - sum);
+        gaps.push_back(monomial_potential::power(symbolic(t_j) + sign * h, k) - sum);
       }
       return gaps;
     };

@@ -5,6 +5,7 @@
 
 #include <simpson/energy.hpp>
 #include <simpson/quadratic_invariant.hpp>
+#include <simpson/simpson_elimination.hpp>
 #include <simpson/reduced_lagrangian.hpp>
 #include <simpson/simpson_map.hpp>
 #include <simpson/simpson_momentum.hpp>
@@ -26,17 +27,6 @@ claim_result check_momentum_order3(const run_context&) {
   return identity(p);
 }
 
-/// Section 6's route without (Phi3): q_{j-1} from p_j by (moment-ordre-3), q_{j+1} from
-/// (schema-ordre-3), p_{j+1} by (moment-ordre-3); each relation is affine in its unknown.
-template <class Real>
-phase_point<Real> step_by_elimination(const oscillator_parameters<Real>& par, const phase_point<Real>& y) {
-  const Real p0 = simpson_momentum(par, Real(0), y.q);
-  const Real q_prev = (y.p - p0) / (simpson_momentum(par, Real(1), y.q) - p0);
-  const Real r0 = three_term_residual(par, q_prev, y.q, Real(0));
-  const Real q_next = -r0 / (three_term_residual(par, q_prev, y.q, Real(1)) - r0);
-  return {simpson_momentum(par, y.q, q_next), q_next};
-}
-
 claim_result check_phi3_elimination(const run_context& ctx) {
   const auto par = unit_oscillator_in_theta();
   const one_step_matrix<symbolic> phi = simpson_map(par);
@@ -44,7 +34,7 @@ claim_result check_phi3_elimination(const run_context& ctx) {
       std::string(unit_reduction) + "; (Phi3) y minus the state obtained by eliminating q_{j-1}", {"p_j", "q_j"}, 1,
       [&](const std::vector<rational>& v) {
         const phase_point<symbolic> y{symbolic(v[0]), symbolic(v[1])};
-        const phase_point<symbolic> by_formula = phi * y, by_elimination = step_by_elimination(par, y);
+        const phase_point<symbolic> by_formula = phi * y, by_elimination = simpson_step_by_elimination(par, y);
         return std::vector<symbolic>{by_formula.p - by_elimination.p, by_formula.q - by_elimination.q};
       });
   bool within = false;
@@ -52,7 +42,7 @@ claim_result check_phi3_elimination(const run_context& ctx) {
     using Real = typename decltype(tag)::type;
     const oscillator_parameters<Real> par{Real(s.m), Real(s.omega), Real(s.h)};
     const phase_point<Real> y{Real(s.p), Real(s.q)};
-    const phase_point<Real> by_formula = simpson_map(par) * y, by_elimination = step_by_elimination(par, y);
+    const phase_point<Real> by_formula = simpson_map(par) * y, by_elimination = simpson_step_by_elimination(par, y);
     using std::abs;
     // The elimination sums terms of size m/h (|q| + h|p|/m)(1 + x/|1 - x/8|) and divides by slopes of
     // size m/h: 128 eps times that scale bounds ~40 roundings twice over. Checked on p, scaled by h/m.
@@ -86,15 +76,8 @@ claim_result check_phi3_explicit(const run_context&) {
 claim_result check_phi3_det(const run_context& ctx) {
   const proof exact = prove_zero(std::string(unit_reduction) + "; det Phi_3 - 1", determinant(simpson_map(unit_oscillator_in_theta())) - 1);
   bool within = false;
-  const json numeric = numeric_recheck(ctx, "phi3-det", [](auto tag, const sample& s) {
-    using Real = typename decltype(tag)::type;
-    const oscillator_parameters<Real> par{Real(s.m), Real(s.omega), Real(s.h)};
-    const one_step_matrix<Real> phi = simpson_map(par);
-    using std::abs;
-    // Entries carry <= 14 roundings each: |det - 1| <= 2*14 eps (|alpha delta| + |beta gamma|).
-    const Real condition = abs(Real(phi.alpha * phi.delta)) + abs(Real(phi.beta * phi.gamma));
-    return residual_and_bound<Real>{Real(determinant(phi) - 1), Real(32 * eps<Real>() * condition)};
-  }, within);
+  // Entries carry at most 14 roundings each.
+  const json numeric = determinant_recheck(ctx, "phi3-det", 14, [](const auto& par) { return simpson_map(par); }, within);
   return identity(exact, within, numeric);
 }
 

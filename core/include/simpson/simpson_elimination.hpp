@@ -1,0 +1,23 @@
+#pragma once
+// Section 6's route to the one-step map, without (Phi3): the derivation the paper describes,
+// kept as an independent way to compute y_{j+1} from y_j.
+
+#include <simpson/one_step_map.hpp>
+#include <simpson/simpson_momentum.hpp>
+#include <simpson/three_term_scheme.hpp>
+
+namespace simpson {
+
+/// y_{j+1} from y_j = (p_j, q_j): q_{j−1} from p_j by (moment-ordre-3), q_{j+1} from
+/// (schema-ordre-3), then p_{j+1} by (moment-ordre-3). Both relations are affine in their unknown,
+/// so each is solved from two evaluations. Throws std::domain_error at ω²h² = 8.
+template <class Real>
+phase_point<Real> simpson_step_by_elimination(const oscillator_parameters<Real>& par, const phase_point<Real>& y) {
+  const Real p0 = simpson_momentum(par, Real(0), y.q);
+  const Real q_prev = (y.p - p0) / (simpson_momentum(par, Real(1), y.q) - p0);
+  const Real r0 = three_term_residual(par, q_prev, y.q, Real(0));
+  const Real q_next = -r0 / (three_term_residual(par, q_prev, y.q, Real(1)) - r0);
+  return {simpson_momentum(par, y.q, q_next), q_next};
+}
+
+}  // namespace simpson
