@@ -33,3 +33,21 @@ TYPED_TEST(SimpsonElimination, EqualsTheMapObtainedByEliminatingThePreviousState
 
 }  // namespace
 }  // namespace simpson
+
+namespace simpson {
+namespace {
+
+TEST(SimpsonEliminationRegression, StateLargeAgainstMomentumKeepsItsAccuracy) {
+  // Found by the property EqualsTheMapObtainedByElimination (seed 20230830): with a unit probe the
+  // slopes were differences of values of size |q| m/h and lost a factor |q| = 6456 of accuracy.
+  using Real = long double;
+  const oscillator_parameters<Real> par(1, 1, 1);
+  const phase_point<Real> y{1, 6456.542290346556L};
+  const phase_point<Real> by_formula = simpson_map(par) * y, by_elimination = simpson_step_by_elimination(par, y);
+  // Same scale as the property: (|q| + |q'| + h|p|/m)(1 + x/|1 − x/8|), 256 eps.
+  const Real scale = (6456.542290346556L + std::abs(by_formula.q) + 1) * (1 + 1 / 0.875L);
+  EXPECT_TRUE(test::within(by_elimination.q, by_formula.q, Real(256 * eps<Real>() * scale)));
+}
+
+}  // namespace
+}  // namespace simpson

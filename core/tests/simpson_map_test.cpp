@@ -62,6 +62,21 @@ TEST(SimpsonMapExact, KnownValues) {
   EXPECT_EQ(wide.delta, R(-3, 5));
 }
 
+TEST(SimpsonMapExact, BackwardMapIsTheInverse) {
+  // Time reversibility, exactly: Φ_3(h) Φ_3(−h) = I, and Φ_3(−h) flips the sign of β and γ only.
+  using R = rational;
+  for (const auto& par : test::parameter_cases<R>()) {
+    const one_step_matrix<R> forward = simpson_map(par), backward = simpson_map_backward(par);
+    const one_step_matrix<R> product = forward * backward;
+    EXPECT_EQ(product.alpha, R(1));
+    EXPECT_EQ(product.beta, R(0));
+    EXPECT_EQ(product.gamma, R(0));
+    EXPECT_EQ(product.delta, R(1));
+    EXPECT_EQ(backward.alpha, forward.alpha);
+    EXPECT_EQ(backward.beta, -forward.beta);
+  }
+}
+
 TEST(SimpsonMapExact, MomentumOfEachStepIsThatOfTheReducedLagrangian) {
   // p_{j+1} = ∂L_h^r/∂q_r(q_j, q_{j+1}) and p_j = −∂L_h^r/∂q_l(q_j, q_{j+1}), by exact differences.
   using R = rational;

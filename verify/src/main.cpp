@@ -132,7 +132,16 @@ int main(int argc, char** argv) {
                    to_string(o.expected));
       }
     }
-    fmt::print("{} (scene {}, seed {}, {:.1f} s)\nreport: {}, {}\n", summary_line(record), s.name, s.seed,
+    fmt::print("\nPhi3 at the paper's configuration ({})\n{:<12} {:<10} {:<27} {:<11} {:<13} {}\n",
+               record.paper_configuration["parameters"].get<std::string>(), "precision", "epsilon", "alpha = delta",
+               "det-1", "Delta", "Hd(Phi3 y)-Hd(y)");
+    for (const auto& row : record.paper_configuration["rows"]) {
+      fmt::print("{:<12} {:<10} {:<27} {:<11} {:<13} {}\n", row["precision"].get<std::string>(),
+                 row["epsilon"].get<std::string>(), row["alpha_equals_delta"].get<std::string>(),
+                 row["det_minus_one"].get<std::string>(), row["discriminant"].get<std::string>(),
+                 row["hd_change_one_step"].get<std::string>());
+    }
+    fmt::print("\n{} (scene {}, seed {}, {:.1f} s)\nreport: {}, {}\n", summary_line(record), s.name, s.seed,
                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                (out / "report.md").string(), (out / "report.json").string());
     return all_as_expected(record) ? 0 : 1;
