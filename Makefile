@@ -2,7 +2,7 @@
 BUILD ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 
-.PHONY: all deps configure build verify test clean
+.PHONY: all deps configure build verify test sanitize fuzz ci clean
 
 all: build
 
@@ -21,5 +21,21 @@ verify: build
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
+# The whole test suite under AddressSanitizer and UndefinedBehaviorSanitizer (-O1), in build-sanitize/.
+sanitize: deps
+	cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" -DSIMPSON_SANITIZE=ON
+	cmake --build build-sanitize -j $(JOBS)
+	cd build-sanitize && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+	  ctest --output-on-failure -j $(JOBS)
+
+# The scene parser under libFuzzer (clang) for 60 s, in build-fuzz/.
+fuzz: deps
+	cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" -DCMAKE_CXX_COMPILER=clang++ -DSIMPSON_FUZZ=ON
+	cmake --build build-fuzz -j $(JOBS) --target scene_parser_fuzz
+	scripts/run-fuzz build-fuzz/bin/scene_parser_fuzz 60
+
+# What CI runs (.ci/run): the tests, then the same under sanitizers, then the fuzzer.
+ci: test sanitize fuzz
+
 clean:
-	rm -rf $(BUILD)
+	rm -rf $(BUILD) build-sanitize build-fuzz

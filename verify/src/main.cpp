@@ -2,6 +2,7 @@
 // Exit codes: 0 every verdict as expected; 1 some verdict differs (each named on stderr);
 // 2 bad input or usage (one line on stderr, nothing written).
 
+#include <simpson/verify/interruption.hpp>
 #include <simpson/verify/ledger.hpp>
 #include <simpson/verify/report.hpp>
 #include <simpson/verify/scene.hpp>
@@ -10,6 +11,7 @@
 #include <fmt/core.h>
 
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -18,6 +20,15 @@
 namespace {
 
 using namespace simpson::verify;
+
+extern "C" void record_signal(int signal) { interruption_signal().store(signal); }
+
+/// The exit code of a run stopped by a signal: 128 + its number (130 for SIGINT, 143 for SIGTERM).
+int interrupted_exit(const interrupted& e) {
+  std::fprintf(stderr, "simpson-verify: interrupted (%s); stopped, no report written\n",
+               e.signal() == SIGINT ? "SIGINT" : e.signal() == SIGTERM ? "SIGTERM" : "signal");
+  return 128 + e.signal();
+}
 
 int list_claims() {
   for (const claim& c : ledger()) {
@@ -116,12 +127,15 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  std::signal(SIGINT, record_signal);
+  std::signal(SIGTERM, record_signal);
   try {
     const auto start = std::chrono::steady_clock::now();
     const run_record record = run(s, [&](std::size_t k, std::size_t n, const claim& c, const claim_outcome* done) {
       if (!done) return;
       fmt::print(stderr, "[{:>2}/{}] {:<34} {:<8} {:.2f} s\n", k + 1, n, c.id, to_string(done->result.outcome), done->seconds);
     });
+    throw_if_interrupted();
     write_report_files(out, record);
     for (const claim_outcome& o : record.outcomes) {
       const bool as_expected = o.result.outcome == o.expected;
@@ -145,6 +159,8 @@ int main(int argc, char** argv) {
                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                (out / "report.md").string(), (out / "report.json").string());
     return all_as_expected(record) ? 0 : 1;
+  } catch (const interrupted& e) {
+    return interrupted_exit(e);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "simpson-verify: error: %s\n", e.what());
     return 2;

@@ -1,3 +1,4 @@
+#include <simpson/verify/interruption.hpp>
 #include <simpson/verify/ledger.hpp>
 #include <simpson/verify/report.hpp>
 
@@ -13,6 +14,7 @@ run_record run(const scene& s, const progress_callback& progress) {
   r.run_scene = s;
   const run_context ctx{s.precisions, s.seed, s.samples};
   for (std::size_t k = 0; k < s.claims.size(); ++k) {
+    throw_if_interrupted();
     const claim& c = find_claim(s.claims[k]);
     if (progress) progress(k, s.claims.size(), c, nullptr);
     claim_outcome outcome;
@@ -22,6 +24,8 @@ run_record run(const scene& s, const progress_callback& progress) {
     const auto claim_start = clock::now();
     try {
       outcome.result = c.check(ctx);
+    } catch (const interrupted&) {
+      throw;
     } catch (const std::exception& e) {
       outcome.result = claim_result{};
       outcome.result.outcome = verdict::fails;

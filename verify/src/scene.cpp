@@ -48,6 +48,12 @@ scene parse_scene(const std::string& text, const std::string& origin) {
     const std::size_t cut = what.find("parse error");
     what = cut == std::string::npos ? what : what.substr(cut);
     fail(origin, "malformed JSON at " + position(text, e.byte == 0 ? 0 : e.byte - 1) + ": " + what);
+  } catch (const nlohmann::json::exception& e) {
+    // Not a syntax error but still unreadable, e.g. out_of_range 406 for a number that overflows
+    // a double (found by the fuzzer): no position is known.
+    std::string what = e.what();
+    if (what.size() > 160) what = what.substr(0, 160) + "...";
+    fail(origin, "malformed JSON: " + what);
   }
   if (!doc.is_object()) fail(origin, "the top level must be an object");
   static const std::set<std::string> known{"name", "description", "claims", "precisions", "samples", "seed", "expected_overrides"};

@@ -44,16 +44,38 @@ check "bad samples" 2 --scene quick --samples 0 --out "$work/none6"
 echo '{"name": "x", "claims": [,]}' >"$work/malformed.json"
 check "malformed scene" 2 --scene "$work/malformed.json" --out "$work/none7"
 grep -q 'line 1, column' "$work/err" || { echo "FAIL malformed scene: no line and column"; failures=$((failures + 1)); }
+: >"$work/empty.json"
+check "empty scene file" 2 --scene "$work/empty.json" --out "$work/none9"
+printf '{"name": "x", "claims": "all", "precisions": ["dou' >"$work/truncated.json"
+check "truncated scene file" 2 --scene "$work/truncated.json" --out "$work/none10"
+echo '{"name": "x", "claims": "all", "precisions": "double"}' >"$work/wrongtype.json"
+check "wrong type" 2 --scene "$work/wrongtype.json" --out "$work/none11"
 echo '{"name": "x", "claims": "all", "precisions": ["double"], "extra": 1}' >"$work/unknown.json"
 check "unknown key" 2 --scene "$work/unknown.json" --out "$work/none8"
 touch "$work/a-file"
 check "unwritable out" 2 --scene quick --out "$work/a-file/sub"
-for k in 1 2 3 4 5 6 7 8; do
+for k in 1 2 3 4 5 6 7 8 9 10 11; do
   [ -e "$work/none$k" ] && { echo "FAIL: bad input wrote $work/none$k"; failures=$((failures + 1)); }
+done
+# Interruption: a long run (10000 samples per recheck) stopped after one second.
+for sig in INT TERM; do
+  "$bin" --samples 10000 --out "$work/stopped-$sig" >"$work/out" 2>"$work/err" &
+  pid=$!
+  sleep 1
+  kill -"$sig" "$pid"
+  wait "$pid"
+  got=$?
+  want=$([ "$sig" = INT ] && echo 130 || echo 143)
+  if [ "$got" != "$want" ] || ! grep -q "interrupted (SIG$sig)" "$work/err" || [ -n "$(ls -A "$work/stopped-$sig")" ]; then
+    echo "FAIL SIG$sig: exit $got (expected $want), stderr: $(tail -1 "$work/err"), files: $(ls -A "$work/stopped-$sig")"
+    failures=$((failures + 1))
+  else
+    echo "ok   SIG$sig stops the run with $got and writes nothing"
+  fi
 done
 check "list claims" 0 --list-claims
 check "version" 0 --version
 
-total=20
+total=25
 echo "$((total - failures)) passed, $failures failed"
 [ "$failures" = 0 ]

@@ -49,6 +49,13 @@ TEST(Scene, MalformedJsonNamesLineAndColumn) {
   EXPECT_TRUE(mentions(error_of("{\"name\": \"x\", \"claims\""), "malformed JSON")) << "truncated";
 }
 
+TEST(Scene, NumberOverflowIsMalformedJsonNotACrash) {
+  // Found by the fuzzer: nlohmann::json throws out_of_range (406), not parse_error, on this.
+  EXPECT_TRUE(mentions(error_of("9999929999992e9999929999992"), "scene 't.json': malformed JSON"));
+  EXPECT_TRUE(mentions(error_of(R"({"name": "x", "claims": "all", "precisions": ["double"], "samples": 1e99999})"),
+                       "malformed JSON"));
+}
+
 TEST(Scene, RejectsEveryBadField) {
   const std::string base = R"("name": "x", "claims": ["phi3-det"], "precisions": ["double"])";
   EXPECT_TRUE(mentions(error_of("[1, 2]"), "top level must be an object"));

@@ -4,6 +4,7 @@
 
 #include <simpson/precision.hpp>
 #include <simpson/verify/claim.hpp>
+#include <simpson/verify/interruption.hpp>
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
@@ -100,6 +101,7 @@ json numeric_recheck(const run_context& ctx, const std::string& stream, Check&& 
       double worst_ratio = 0;
       bool all_within = true;
       for (unsigned k = 0; k < ctx.samples; ++k) {
+        throw_if_interrupted();
         const sample s = draw_sample(g);
         const residual_and_bound<Real> r = check(tag, s);
         using std::abs;

@@ -32,6 +32,8 @@ struct run_record {
 using progress_callback = std::function<void(std::size_t, std::size_t, const claim&, const claim_outcome*)>;
 
 /// Runs every claim of the scene; a check that throws is recorded as `fails` with the message.
+/// Throws simpson::verify::interrupted when interruption_signal() is set (checked between claims
+/// and between numeric samples).
 run_record run(const scene& s, const progress_callback& progress = {});
 
 /// True when every verdict equals its expected verdict.
