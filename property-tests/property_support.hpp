@@ -4,6 +4,7 @@
 
 #include <simpson/oscillator_parameters.hpp>
 #include <simpson/precision.hpp>
+#include <simpson/residual.hpp>
 
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
@@ -136,6 +137,13 @@ bool within(const char* what, const Real& actual, const Real& expected, const Re
              << to_string(bound, 3) << "\n";
   }
   return ok;
+}
+
+/// A core check (residual and its bound) holds; logged like within().
+template <class Real>
+bool holds(const char* what, const residual_and_bound<Real>& check) {
+  using std::abs;
+  return within(what, check.residual, Real(0), check.bound);
 }
 
 /// 1/|1 − ω²h²/8|: the amplification near the boundary of the stable band, where 1 − x/8 cancels

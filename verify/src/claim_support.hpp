@@ -134,17 +134,13 @@ symbolic exact_derivative(F&& f, const symbolic& at) {
   return (4 * d1 - d2) / 3;
 }
 
-/// Numeric recheck of det Φ = 1 for the map `map_of(parameters)` at the sampled parameters. With
-/// at most `roundings` roundings in each entry, |det Φ − 1| ≤ 2·roundings·eps·(|αδ| + |βγ|), the
-/// condition factor of the difference αδ − βγ.
-template <class MapOf>
-json determinant_recheck(const run_context& ctx, const std::string& stream, int roundings, MapOf&& map_of, bool& within) {
+/// The numeric recheck of a check that lives beside its formula in the core:
+/// `check(parameters, state)` returns its residual and round-off bound at each sampled case.
+template <class Check>
+json recheck_with(const run_context& ctx, const std::string& stream, Check&& check, bool& within) {
   return numeric_recheck(ctx, stream, [&](auto tag, const sample& s) {
     using Real = typename decltype(tag)::type;
-    const one_step_matrix<Real> phi = map_of(oscillator_parameters<Real>{Real(s.m), Real(s.omega), Real(s.h)});
-    using std::abs;
-    const Real condition = abs(Real(phi.alpha * phi.delta)) + abs(Real(phi.beta * phi.gamma));
-    return residual_and_bound<Real>{Real(determinant(phi) - 1), Real(2 * roundings * eps<Real>() * condition)};
+    return check(oscillator_parameters<Real>{Real(s.m), Real(s.omega), Real(s.h)}, phase_point<Real>{Real(s.p), Real(s.q)});
   }, within);
 }
 

@@ -136,8 +136,7 @@ claim_result check_newmark_matrix(const run_context&) {
 claim_result check_newmark_det(const run_context& ctx) {
   const proof exact = prove_zero(std::string(unit_reduction) + "; det Phi - 1", determinant(newmark_map(unit_oscillator_in_theta())) - 1);
   bool within = false;
-  // Entries carry at most 8 roundings each.
-  const json numeric = determinant_recheck(ctx, "newmark-det", 8, [](const auto& par) { return newmark_map(par); }, within);
+  const json numeric = recheck_with(ctx, "newmark-det", [](const auto& par, const auto&) { return newmark_map_determinant_check(par); }, within);
   return identity(exact, within, numeric);
 }
 
@@ -150,14 +149,7 @@ claim_result check_newmark_energy(const run_context& ctx) {
                                            return energy(par, phi * y) - energy(par, y);
                                          });
   bool within = false;
-  const json numeric = numeric_recheck(ctx, "newmark-energy", [](auto tag, const sample& s) {
-    using Real = typename decltype(tag)::type;
-    const oscillator_parameters<Real> par{Real(s.m), Real(s.omega), Real(s.h)};
-    const phase_point<Real> y{Real(s.p), Real(s.q)};
-    const Real H = energy(par, y);
-    // H is a sum of squares; the map is a rotation in (p/(m omega), q): 32 eps H bounds the round-off.
-    return residual_and_bound<Real>{Real(energy(par, newmark_map(par) * y) - H), Real(32 * eps<Real>() * H)};
-  }, within);
+  const json numeric = recheck_with(ctx, "newmark-energy", [](const auto& par, const auto& y) { return newmark_energy_step_check(par, y); }, within);
   return identity(exact, within, numeric);
 }
 

@@ -98,17 +98,9 @@ claim_result check_qm_harmonic(const run_context& ctx) {
                                                                              harmonic_internal_node(par, ql, qr), qr);
                                          });
   bool within = false;
-  const json numeric = numeric_recheck(ctx, "qm-harmonic", [](auto tag, const sample& s) {
-    using Real = typename decltype(tag)::type;
-    const oscillator_parameters<Real> par{Real(s.m), Real(s.omega), Real(s.h)};
-    const Real ql(s.q), qr(s.p / (s.m * s.omega));
-    const Real qm = harmonic_internal_node(par, ql, qr);
-    const auto gradient = [&](const Real& v) -> Real { return par.force_gradient(v); };
-    using std::abs;
-    // Terms of size (4m/h^2)(|q_l| + 2|q_m| + |q_r|) cancel; ~16 roundings including those of q_m.
-    const Real scale = 4 * par.m() / (par.h() * par.h()) * (abs(ql) + 2 * abs(qm) + abs(qr));
-    return residual_and_bound<Real>{internal_equation_residual(par.m(), par.h(), gradient, ql, qm, qr),
-                                    Real(32 * eps<Real>() * scale)};
+  // q_l = q, q_r = p/(m omega): two states of the same scale.
+  const json numeric = recheck_with(ctx, "qm-harmonic", [](const auto& par, const auto& y) {
+    return harmonic_internal_node_check(par, y.q, decltype(y.p)(y.p / (par.m() * par.omega())));
   }, within);
   return identity(exact, within, numeric);
 }
@@ -166,19 +158,8 @@ claim_result check_reduced_lagrangian(const run_context& ctx) {
                                                   simpson_lagrangian(par.m(), par.h(), V, ql, harmonic_internal_node(par, ql, qr), qr);
                                          });
   bool within = false;
-  const json numeric = numeric_recheck(ctx, "reduced-lagrangian", [](auto tag, const sample& s) {
-    using Real = typename decltype(tag)::type;
-    const oscillator_parameters<Real> par{Real(s.m), Real(s.omega), Real(s.h)};
-    const Real ql(s.q), qr(s.p / (s.m * s.omega));
-    const Real qm = harmonic_internal_node(par, ql, qr);
-    const auto V = [&](const Real& v) -> Real { return par.potential(v); };
-    using std::abs;
-    // Both sides sum terms of size (m/h)(|q_l| + |q_m| + |q_r|)^2 and m w^2 h (...)^2, amplified by 1/|1 - x/8|.
-    const Real q_sum = abs(ql) + abs(qm) + abs(qr);
-    const Real condition = (par.m() / par.h() + par.m() * par.omega() * par.omega() * par.h()) * q_sum * q_sum /
-                           abs(Real(1 - par.omega2_h2() / 8));
-    return residual_and_bound<Real>{Real(reduced_lagrangian(par, ql, qr) - simpson_lagrangian(par.m(), par.h(), V, ql, qm, qr)),
-                                    Real(64 * eps<Real>() * condition)};
+  const json numeric = recheck_with(ctx, "reduced-lagrangian", [](const auto& par, const auto& y) {
+    return reduced_lagrangian_check(par, y.q, decltype(y.p)(y.p / (par.m() * par.omega())));
   }, within);
   return identity(exact, within, numeric);
 }
@@ -372,15 +353,8 @@ claim_result check_discriminant_factorization(const run_context& ctx) {
   const proof exact = prove_zero("x = theta^2; (b^2 - 4ac) - x/576 (x - 24)(x - 12)(x - 8), a, b, c from the core",
                                  discriminant(par.omega2_h2()) - discriminant_factorized(par.omega2_h2()));
   bool within = false;
-  const json numeric = numeric_recheck(ctx, "discriminant-factorization", [](auto tag, const sample& s) {
-    using Real = typename decltype(tag)::type;
-    const Real theta = Real(s.omega) * Real(s.h);
-    const Real x = theta * theta;
-    const characteristic_coefficients<Real> k = characteristic_polynomial(x);
-    using std::abs;
-    // b^2 - 4ac cancels terms of size b^2 + 4|ac|; the factored form has relative error ~8 eps.
-    const Real condition = k.b * k.b + 4 * abs(Real(k.a * k.c)) + abs(discriminant_factorized(x));
-    return residual_and_bound<Real>{Real(discriminant(x) - discriminant_factorized(x)), Real(16 * eps<Real>() * condition)};
+  const json numeric = recheck_with(ctx, "discriminant-factorization", [](const auto& par, const auto&) {
+    return discriminant_factorization_check(par.omega2_h2());
   }, within);
   return identity(exact, within, numeric);
 }

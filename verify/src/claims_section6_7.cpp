@@ -38,19 +38,7 @@ claim_result check_phi3_elimination(const run_context& ctx) {
         return std::vector<symbolic>{by_formula.p - by_elimination.p, by_formula.q - by_elimination.q};
       });
   bool within = false;
-  const json numeric = numeric_recheck(ctx, "phi3-elimination", [](auto tag, const sample& s) {
-    using Real = typename decltype(tag)::type;
-    const oscillator_parameters<Real> par{Real(s.m), Real(s.omega), Real(s.h)};
-    const phase_point<Real> y{Real(s.p), Real(s.q)};
-    const phase_point<Real> by_formula = simpson_map(par) * y, by_elimination = simpson_step_by_elimination(par, y);
-    using std::abs;
-    // The elimination sums terms of size m/h (|q| + h|p|/m)(1 + x/|1 - x/8|) and divides by slopes of
-    // size m/h: 128 eps times that scale bounds ~40 roundings twice over. Checked on p, scaled by h/m.
-    const Real x = par.omega2_h2();
-    const Real scale = (abs(y.q) + abs(by_formula.q) + par.h() * abs(y.p) / par.m()) * (1 + x / abs(Real(1 - x / 8)));
-    const Real residual = abs(Real(by_formula.q - by_elimination.q)) + par.h() / par.m() * abs(Real(by_formula.p - by_elimination.p));
-    return residual_and_bound<Real>{residual, Real(256 * eps<Real>() * scale)};
-  }, within);
+  const json numeric = recheck_with(ctx, "phi3-elimination", [](const auto& par, const auto& y) { return elimination_check(par, y); }, within);
   return identity(exact, within, numeric);
 }
 
@@ -76,8 +64,7 @@ claim_result check_phi3_explicit(const run_context&) {
 claim_result check_phi3_det(const run_context& ctx) {
   const proof exact = prove_zero(std::string(unit_reduction) + "; det Phi_3 - 1", determinant(simpson_map(unit_oscillator_in_theta())) - 1);
   bool within = false;
-  // Entries carry at most 14 roundings each.
-  const json numeric = determinant_recheck(ctx, "phi3-det", 14, [](const auto& par) { return simpson_map(par); }, within);
+  const json numeric = recheck_with(ctx, "phi3-det", [](const auto& par, const auto&) { return simpson_map_determinant_check(par); }, within);
   return identity(exact, within, numeric);
 }
 
@@ -232,15 +219,7 @@ claim_result check_hd_invariance(const run_context& ctx) {
                                            return discrete_energy(par, phi * y) - discrete_energy(par, y);
                                          });
   bool within = false;
-  const json numeric = numeric_recheck(ctx, "hd-invariance", [](auto tag, const sample& s) {
-    using Real = typename decltype(tag)::type;
-    const oscillator_parameters<Real> par{Real(s.m), Real(s.omega), Real(s.h)};
-    const phase_point<Real> y{Real(s.p), Real(s.q)};
-    const Real H = discrete_energy(par, y);
-    // In the first stable band H_d is positive definite with q^2 weight k(x) >= 1; the rounding of
-    // Phi_3 y and of H_d stays below 64 eps H_d (the weight k(x) ~ 1/(1 - x/8) enters both sides).
-    return residual_and_bound<Real>{Real(discrete_energy(par, simpson_map(par) * y) - H), Real(64 * eps<Real>() * H)};
-  }, within);
+  const json numeric = recheck_with(ctx, "hd-invariance", [](const auto& par, const auto& y) { return discrete_energy_step_check(par, y); }, within);
   return identity(exact, within, numeric);
 }
 

@@ -4,6 +4,7 @@
 
 #include <simpson/one_step_map.hpp>
 #include <simpson/oscillator_parameters.hpp>
+#include <simpson/residual.hpp>
 
 namespace simpson {
 
@@ -16,6 +17,12 @@ one_step_matrix<Real> newmark_map(const oscillator_parameters<Real>& par) {
   const Real diagonal = (1 - x / 4) / denominator;
   return {diagonal, -par.m() * par.omega() * par.omega() * par.h() / denominator, par.h() / par.m() / denominator,
           diagonal};
+}
+
+/// det Φ − 1: each entry carries at most 8 roundings.
+template <class Real>
+residual_and_bound<Real> newmark_map_determinant_check(const oscillator_parameters<Real>& par) {
+  return unit_determinant_check(newmark_map(par), 8);
 }
 
 /// The two relations (systeme-dynamique-discret-ordre-2) that Φ solves, as residuals:

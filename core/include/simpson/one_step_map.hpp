@@ -2,6 +2,11 @@
 // Linear one-step maps on the state y = (p, q): y_{j+1} = Φ y_j, written with the paper's
 // entry names of Section 7, Φ = ((α, β), (γ, δ)).
 
+#include <simpson/precision.hpp>
+#include <simpson/residual.hpp>
+
+#include <cmath>
+
 namespace simpson {
 
 /// A point of phase space: momentum p and state q.
@@ -30,6 +35,15 @@ phase_point<Real> operator*(const one_step_matrix<Real>& phi, const phase_point<
 template <class Real>
 Real determinant(const one_step_matrix<Real>& phi) {
   return phi.alpha * phi.delta - phi.beta * phi.gamma;
+}
+
+/// det Φ − 1 for a map whose entries each carry at most `roundings` roundings: αδ − βγ then errs
+/// by at most 2·roundings·eps·(|αδ| + |βγ|), the condition factor of the difference.
+template <class Real>
+residual_and_bound<Real> unit_determinant_check(const one_step_matrix<Real>& phi, int roundings) {
+  using std::abs;
+  const Real condition = abs(Real(phi.alpha * phi.delta)) + abs(Real(phi.beta * phi.gamma));
+  return {Real(determinant(phi) - 1), Real(2 * roundings * eps<Real>() * condition)};
 }
 
 /// The matrix product A B (the map "B, then A").

@@ -3,6 +3,9 @@
 // polynomial a r² + b r + c and its discriminant.
 
 #include <simpson/oscillator_parameters.hpp>
+#include <simpson/residual.hpp>
+
+#include <cmath>
 
 namespace simpson {
 
@@ -45,6 +48,16 @@ Real discriminant(const Real& x) {
 template <class Real>
 Real discriminant_factorized(const Real& x) {
   return x / 576 * (x - 24) * (x - 12) * (x - 8);
+}
+
+/// (b² − 4ac) − the printed factorisation. b² − 4ac cancels terms of size b² + 4|ac|, the factored
+/// form has ~8 roundings of its own: 16 eps (b² + 4|ac| + |Δ|).
+template <class Real>
+residual_and_bound<Real> discriminant_factorization_check(const Real& x) {
+  using std::abs;
+  const characteristic_coefficients<Real> k = characteristic_polynomial(x);
+  const Real factored = discriminant_factorized(x);
+  return {Real(discriminant(x) - factored), Real(16 * eps<Real>() * (k.b * k.b + 4 * abs(Real(k.a * k.c)) + abs(factored)))};
 }
 
 }  // namespace simpson

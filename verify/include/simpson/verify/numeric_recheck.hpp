@@ -3,6 +3,7 @@
 // every precision of the run, with the ladder of residuals across precisions.
 
 #include <simpson/precision.hpp>
+#include <simpson/residual.hpp>
 #include <simpson/verify/claim.hpp>
 #include <simpson/verify/interruption.hpp>
 
@@ -56,12 +57,6 @@ inline sample draw_sample(sample_generator& g) {
   return s;
 }
 
-/// A residual and the bound it must respect in the precision it was computed in.
-template <class Real>
-struct residual_and_bound {
-  Real residual;
-  Real bound;
-};
 
 namespace detail {
 template <class Real>
