@@ -15,6 +15,7 @@ const std::vector<claim>& ledger() {
     detail::add_section5_claims(all);
     detail::add_section6_7_claims(all);
     detail::add_section8_9_claims(all);
+    detail::add_peer_claims(all);
     return all;
   }();
   return claims;

@@ -13,5 +13,6 @@ void add_section3_4_claims(std::vector<claim>& claims);
 void add_section5_claims(std::vector<claim>& claims);
 void add_section6_7_claims(std::vector<claim>& claims);
 void add_section8_9_claims(std::vector<claim>& claims);
+void add_peer_claims(std::vector<claim>& claims);
 
 }  // namespace simpson::verify::detail

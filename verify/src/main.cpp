@@ -9,6 +9,7 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
+#include <fmt/format.h>
 
 #include <chrono>
 #include <csignal>
@@ -59,13 +60,16 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("simpson-verify ") + SIMPSON_VERSION);
   std::string scene_name = "paper", out_dir, seed_text, samples_text;
   std::vector<std::string> claim_ids, precision_names;
-  bool want_claims = false, want_scenes = false, want_precisions = false;
+  bool want_claims = false, want_scenes = false, want_precisions = false, allow_expensive = false, long_run = false;
   app.add_option("--scene", scene_name, "embedded scene name (paper, quick) or a scene JSON file")->capture_default_str();
   app.add_option("--out", out_dir, "report directory (default: reports/out/<scene>)");
   app.add_option("--claims", claim_ids, "comma-separated claim ids (default: the scene's)")->delimiter(',');
   app.add_option("--precisions", precision_names, "comma-separated precisions (default: the scene's)")->delimiter(',');
   app.add_option("--seed", seed_text, "seed of the random samples (default: the scene's, printed in the report)");
   app.add_option("--samples", samples_text, "random samples per numeric recheck and precision, 1..10000");
+  app.add_flag("--allow-expensive", allow_expensive,
+               fmt::format("run a scene whose estimated cost exceeds the budget ({:.0e} double-step units)", default_cost_budget));
+  app.add_flag("--long", long_run, "long_time section: 1e9 steps in double instead of the scene's (implies --allow-expensive)");
   app.add_flag("--list-claims", want_claims, "list the claims of the ledger and exit");
   app.add_flag("--list-scenes", want_scenes, "list the embedded scenes and exit");
   app.add_flag("--list-precisions", want_precisions, "list the precisions and exit");
@@ -117,6 +121,19 @@ int main(int argc, char** argv) {
       if (n < 1) throw std::invalid_argument("--samples '" + samples_text + "': expected an integer from 1 to 10000");
       s.samples = static_cast<unsigned>(n);
     }
+    if (long_run) {
+      if (!s.experiments.long_time) s.experiments.long_time = long_time_settings{};
+      s.experiments.long_time->steps_double = 1'000'000'000;
+      allow_expensive = true;
+    }
+    const cost_estimate cost = estimate_cost(s.experiments);
+    if (cost.units > default_cost_budget && !allow_expensive) {
+      std::string parts;
+      for (const std::string& line : cost.lines) parts += (parts.empty() ? "" : "; ") + line;
+      throw std::invalid_argument(fmt::format("scene '{}': estimated cost {:.3g} units exceeds the budget {:.3g} ({}); "
+                                              "pass --allow-expensive to run it anyway",
+                                              s.name, cost.units, default_cost_budget, parts));
+    }
     out = out_dir.empty() ? std::filesystem::path("reports/out") / s.name : std::filesystem::path(out_dir);
     prepare_output_directory(out);
   } catch (const std::invalid_argument& e) {
@@ -134,9 +151,10 @@ int main(int argc, char** argv) {
     const run_record record = run(s, [&](std::size_t k, std::size_t n, const claim& c, const claim_outcome* done) {
       if (!done) return;
       fmt::print(stderr, "[{:>2}/{}] {:<34} {:<8} {:.2f} s\n", k + 1, n, c.id, to_string(done->result.outcome), done->seconds);
-    });
+    }, [](const std::string& section, double seconds) { fmt::print(stderr, "[section] {:<34} {:.2f} s\n", section, seconds); });
     throw_if_interrupted();
-    write_report_files(out, record);
+    const plot_outcome plots = write_report_files(out, record);
+    for (const std::string& failure : plots.failures) fmt::print(stderr, "simpson-verify: warning: plot not drawn: {}\n", failure);
     for (const claim_outcome& o : record.outcomes) {
       const bool as_expected = o.result.outcome == o.expected;
       fmt::print("  {:<8} {:<34}{}\n", to_string(o.result.outcome), o.checked->id,
@@ -158,6 +176,11 @@ int main(int argc, char** argv) {
     fmt::print("\n{} (scene {}, seed {}, {:.1f} s)\nreport: {}, {}\n", summary_line(record), s.name, s.seed,
                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                (out / "report.md").string(), (out / "report.json").string());
+    if (!record.sections.empty()) {
+      fmt::print("sections: ");
+      for (std::size_t k = 0; k < record.sections.size(); ++k) fmt::print("{}{}", k ? ", " : "", record.sections[k].name);
+      fmt::print(" ({} plots drawn); html: {}\n", plots.drawn.size(), (out / "report.html").string());
+    }
     return all_as_expected(record) ? 0 : 1;
   } catch (const interrupted& e) {
     return interrupted_exit(e);

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -32,21 +33,6 @@ std::string cell(std::string text) {
   return text;
 }
 
-void write_atomically(const std::filesystem::path& target, const std::string& content) {
-  const std::filesystem::path temporary = target.parent_path() / ("." + target.filename().string() + ".tmp" + std::to_string(::getpid()));
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << content;
-    out.flush();
-    if (!out) {
-      std::error_code ignored;
-      std::filesystem::remove(temporary, ignored);
-      throw std::runtime_error("cannot write " + temporary.string());
-    }
-  }
-  std::filesystem::rename(temporary, target);
-}
-
 }  // namespace
 
 std::string summary_line(const run_record& r) {
@@ -63,7 +49,17 @@ std::string summary_line(const run_record& r) {
                                         : fmt::format("{} not as expected ({})", unexpected.size(), join(unexpected, ", ")));
 }
 
-json report_json(const run_record& r) {
+plot_outcome all_plots_drawn(const run_record& r) {
+  plot_outcome p;
+  for (const section_output& section : r.sections) {
+    for (const plot_spec& plot : section.plots) p.drawn.push_back(plot.name);
+  }
+  return p;
+}
+
+json report_json(const run_record& r) { return report_json(r, all_plots_drawn(r)); }
+
+json report_json(const run_record& r, const plot_outcome& plots) {
   json claims = json::array();
   json timing = json::object();
   for (const claim_outcome& o : r.outcomes) {
@@ -82,6 +78,23 @@ json report_json(const run_record& r) {
     claims.push_back(std::move(entry));
     timing[c.id] = o.seconds;
   }
+  json experiments = json::object(), section_timing = json::object(), plot_list = json::array();
+  for (std::size_t k = 0; k < r.sections.size(); ++k) {
+    const section_output& section = r.sections[k];
+    experiments[section.name] = section.data;
+    json files = json::array();
+    for (const data_file& f : section.files) files.push_back(f.name);
+    experiments[section.name]["files"] = files;
+    section_timing[section.name] = r.section_seconds[k];
+    for (const plot_spec& plot : section.plots) {
+      const bool drawn = std::find(plots.drawn.begin(), plots.drawn.end(), plot.name) != plots.drawn.end();
+      plot_list.push_back({{"name", plot.name},
+                           {"section", section.name},
+                           {"caption", plot.caption},
+                           {"script", plot.name + ".gp"},
+                           {"files", drawn ? json::array({plot.name + ".svg", plot.name + ".png"}) : json::array()}});
+    }
+  }
   timing["total"] = r.seconds;
   return json{{"tool", "simpson-verify"},
               {"scene", r.run_scene.name},
@@ -92,12 +105,17 @@ json report_json(const run_record& r) {
               {"summary", summary_line(r)},
               {"all_as_expected", all_as_expected(r)},
               {"claims", claims},
+              {"experiments", experiments},
+              {"plots", plot_list},
+              {"plots_not_drawn", plots.failures},
               {"paper_configuration", r.paper_configuration},
               {"environment", r.environment},
-              {"timing", {{"unit", "seconds"}, {"claims", timing}}}};
+              {"timing", {{"unit", "seconds"}, {"claims", timing}, {"sections", section_timing}}}};
 }
 
-std::string report_markdown(const run_record& r) {
+std::string report_markdown(const run_record& r) { return report_markdown(r, all_plots_drawn(r)); }
+
+std::string report_markdown(const run_record& r, const plot_outcome& plots) {
   std::string md;
   md += fmt::format("# simpson-verify report: scene `{}`\n\n", r.run_scene.name);
   if (!r.run_scene.description.empty()) md += r.run_scene.description + "\n\n";
@@ -145,6 +163,18 @@ std::string report_markdown(const run_record& r) {
                       row["discriminant"].get<std::string>(), row["hd_change_one_step"].get<std::string>());
   }
 
+  if (!r.sections.empty()) {
+    md += "\n# Experiments\n\n";
+    std::vector<std::string> names;
+    for (const section_output& section : r.sections) names.push_back(section.name);
+    md += "Sections computed for this scene: " + join(names, ", ") +
+          ". Data files (CSV, .dat) and gnuplot scripts (.gp) are beside this report; each plot is an SVG and a PNG.\n\n";
+    for (const section_output& section : r.sections) md += section.markdown;
+    if (!plots.failures.empty()) {
+      md += "**Plots not drawn:** " + join(plots.failures, "; ") + "\n\n";
+    }
+  }
+
   md += "\n## Evidence\n\n";
   for (const claim_outcome& o : r.outcomes) {
     const claim& c = *o.checked;
@@ -173,9 +203,5 @@ void prepare_output_directory(const std::filesystem::path& dir) {
   std::filesystem::remove(probe, error);
 }
 
-void write_report_files(const std::filesystem::path& dir, const run_record& r) {
-  write_atomically(dir / "report.json", report_json(r).dump(2) + "\n");
-  write_atomically(dir / "report.md", report_markdown(r));
-}
 
 }  // namespace simpson::verify

@@ -7,7 +7,8 @@
 
 namespace simpson::verify {
 
-run_record run(const scene& s, const progress_callback& progress) {
+run_record run(const scene& s, const progress_callback& progress,
+               const std::function<void(const std::string&, double)>& section_progress) {
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
   run_record r;
@@ -35,6 +36,18 @@ run_record run(const scene& s, const progress_callback& progress) {
     r.outcomes.push_back(std::move(outcome));
     if (progress) progress(k, s.claims.size(), c, &r.outcomes.back());
   }
+  const experiment_settings& e = s.experiments;
+  const auto section = [&](auto&& compute) {
+    throw_if_interrupted();
+    const auto section_start = clock::now();
+    r.sections.push_back(compute());
+    r.section_seconds.push_back(std::chrono::duration<double>(clock::now() - section_start).count());
+    if (section_progress) section_progress(r.sections.back().name, r.section_seconds.back());
+  };
+  if (e.table1) section([&] { return run_table1(*e.table1); });
+  if (e.work_precision) section([&] { return run_work_precision(*e.work_precision); });
+  if (e.stability) section([&] { return run_stability(*e.stability); });
+  if (e.long_time) section([&] { return run_long_time(*e.long_time); });
   r.paper_configuration = paper_configuration(s.precisions);
   r.environment = build_environment();
   r.seconds = std::chrono::duration<double>(clock::now() - start).count();

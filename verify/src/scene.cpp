@@ -4,6 +4,10 @@
 
 #include "embedded_scenes.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -37,6 +41,163 @@ verdict parse_verdict(const std::string& origin, const std::string& field, const
   fail(origin, field + ": '" + v + "' is not a verdict (holds, erratum, fails)");
 }
 
+/// Reads the members of one experiment section, naming each field "section.key" in errors.
+class section_reader {
+ public:
+  section_reader(const std::string& origin, const std::string& section, const nlohmann::json& object,
+                 std::set<std::string> known)
+      : origin_(origin), section_(section), object_(object) {
+    if (!object.is_object()) fail(origin_, "'" + section_ + "' must be an object");
+    for (const auto& item : object.items()) {
+      if (!known.count(item.key())) fail(origin_, "unknown key '" + section_ + "." + item.key() + "'");
+    }
+  }
+  bool has(const std::string& key) const { return object_.contains(key); }
+  /// A finite number with lo < v <= hi (JSON has no NaN or infinity; a number beyond double is
+  /// refused by the parser).
+  double number(const std::string& key, double lo, double hi) const {
+    const nlohmann::json& v = object_[key];
+    if (!v.is_number() || !std::isfinite(v.get<double>()) || !(v.get<double>() > lo) || !(v.get<double>() <= hi)) {
+      fail(origin_, field(key) + " must be a number greater than " + fmt::format("{:g}", lo) + " and at most " +
+                        fmt::format("{:g}", hi) + ", got " + v.dump());
+    }
+    return v.get<double>();
+  }
+  /// An integer lo <= v <= hi (a number like 1e7 is accepted when it is an integer).
+  long long integer(const nlohmann::json& v, const std::string& name, long long lo, long long hi) const {
+    const bool integral = v.is_number_integer() || (v.is_number_float() && std::isfinite(v.get<double>()) &&
+                                                    std::floor(v.get<double>()) == v.get<double>() &&
+                                                    std::abs(v.get<double>()) < 9e18);
+    if (!integral || v.get<double>() < static_cast<double>(lo) || v.get<double>() > static_cast<double>(hi)) {
+      fail(origin_, name + " must be an integer from " + std::to_string(lo) + " to " + std::to_string(hi) + ", got " + v.dump());
+    }
+    return v.is_number_integer() ? v.get<long long>() : static_cast<long long>(v.get<double>());
+  }
+  long long integer(const std::string& key, long long lo, long long hi) const { return integer(object_[key], field(key), lo, hi); }
+  std::vector<long long> integers(const std::string& key, long long lo, long long hi) const {
+    const nlohmann::json& v = object_[key];
+    if (!v.is_array() || v.empty() || v.size() > 64) fail(origin_, field(key) + " must be a list of 1 to 64 integers");
+    std::vector<long long> out;
+    for (std::size_t k = 0; k < v.size(); ++k) out.push_back(integer(v[k], field(key) + "[" + std::to_string(k) + "]", lo, hi));
+    return out;
+  }
+  std::vector<double> numbers(const std::string& key, double lo, double hi) const {
+    const nlohmann::json& v = object_[key];
+    if (!v.is_array() || v.empty() || v.size() > 64) fail(origin_, field(key) + " must be a list of 1 to 64 numbers");
+    std::vector<double> out;
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      const nlohmann::json& x = v[k];
+      if (!x.is_number() || !std::isfinite(x.get<double>()) || !(x.get<double>() > lo) || !(x.get<double>() <= hi)) {
+        fail(origin_, field(key) + "[" + std::to_string(k) + "] must be a number greater than " + fmt::format("{:g}", lo) +
+                          " and at most " + fmt::format("{:g}", hi) + ", got " + x.dump());
+      }
+      out.push_back(x.get<double>());
+    }
+    return out;
+  }
+  /// Floating precisions only: the experiments need cos, sin and a round-off to measure.
+  std::vector<precision> precisions(const std::string& key) const {
+    const nlohmann::json& v = object_[key];
+    if (!v.is_array() || v.empty()) fail(origin_, field(key) + " must be a non-empty list of precision names");
+    std::vector<precision> out;
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      const std::string name = field(key) + "[" + std::to_string(k) + "]";
+      if (!v[k].is_string()) fail(origin_, name + " must be a string");
+      try {
+        out.push_back(precision::parse(v[k].get<std::string>()));
+      } catch (const std::invalid_argument& e) {
+        fail(origin_, name + ": " + e.what());
+      }
+      if (out.back().exact()) fail(origin_, name + ": 'rational' has no cos or sin; experiments need a floating precision");
+    }
+    return out;
+  }
+  std::vector<std::string> schemes(const std::string& key) const {
+    const nlohmann::json& v = object_[key];
+    if (v.is_string() && v.get<std::string>() == "all") return scheme_names();
+    if (!v.is_array() || v.empty()) fail(origin_, field(key) + " must be \"all\" or a non-empty list of scheme names");
+    std::vector<std::string> out;
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      const std::string name = field(key) + "[" + std::to_string(k) + "]";
+      if (!v[k].is_string()) fail(origin_, name + " must be a string");
+      const std::string scheme = v[k].get<std::string>();
+      if (std::find(scheme_names().begin(), scheme_names().end(), scheme) == scheme_names().end()) {
+        std::string known;
+        for (const std::string& n : scheme_names()) known += (known.empty() ? "" : ", ") + n;
+        fail(origin_, name + ": unknown scheme '" + scheme + "' (expected " + known + ")");
+      }
+      out.push_back(scheme);
+    }
+    return out;
+  }
+
+ private:
+  std::string field(const std::string& key) const { return "'" + section_ + "." + key + "'"; }
+  std::string origin_, section_;
+  const nlohmann::json& object_;
+};
+
+/// The most steps a single run may ask for (a larger N is refused as absurd, not merely costly).
+constexpr long long max_steps = 1'000'000'000'000LL;
+
+experiment_settings parse_experiments(const nlohmann::json& doc, const std::string& origin) {
+  experiment_settings e;
+  if (doc.contains("table1")) {
+    const section_reader r(origin, "table1", doc["table1"], {"N", "figure_N", "m"});
+    table1_settings t;
+    if (r.has("N")) t.meshes = r.integers("N", 1, 1'000'000);
+    if (r.has("figure_N")) t.figure_meshes = r.integer("figure_N", 1, 100'000);
+    if (r.has("m")) t.m = r.number("m", 0, 1e300);
+    e.table1 = t;
+  }
+  if (doc.contains("work_precision")) {
+    const section_reader r(origin, "work_precision", doc["work_precision"],
+                           {"schemes", "precisions", "N", "periods", "max_runs", "max_seconds"});
+    work_precision_settings w;
+    if (r.has("schemes")) w.schemes = r.schemes("schemes");
+    if (!r.has("precisions")) fail(origin, "'work_precision.precisions' is missing");
+    w.precisions = r.precisions("precisions");
+    if (r.has("N")) w.meshes = r.integers("N", 1, max_steps);
+    if (r.has("periods")) w.periods = r.integer("periods", 1, 1'000'000);
+    for (const long long N : w.meshes) {
+      if (static_cast<double>(N) * static_cast<double>(w.periods) > static_cast<double>(max_steps)) {
+        fail(origin, "'work_precision': N x periods = " + std::to_string(N) + " x " + std::to_string(w.periods) +
+                         " exceeds the limit of " + std::to_string(max_steps) + " steps per run");
+      }
+    }
+    if (r.has("max_runs")) w.timing.max_runs = static_cast<unsigned>(r.integer("max_runs", 1, 1000));
+    if (r.has("max_seconds")) w.timing.max_seconds = r.number("max_seconds", 0, 3600);
+    e.work_precision = w;
+  }
+  if (doc.contains("stability")) {
+    const section_reader r(origin, "stability", doc["stability"],
+                           {"precisions", "stiff_omegas", "stiff_omega_h", "omega_h", "masses", "steps"});
+    stability_settings st;
+    if (!r.has("precisions")) fail(origin, "'stability.precisions' is missing");
+    st.precisions = r.precisions("precisions");
+    if (r.has("stiff_omegas")) st.stiff_omegas = r.numbers("stiff_omegas", 0, 1e300);
+    if (r.has("stiff_omega_h")) st.stiff_omega_h = r.number("stiff_omega_h", 0, 1e3);
+    if (r.has("omega_h")) st.omega_h = r.numbers("omega_h", 0, 1e3);
+    if (r.has("masses")) st.masses = r.numbers("masses", 0, 1e300);
+    if (r.has("steps")) st.steps = r.integer("steps", 1, max_steps);
+    e.stability = st;
+  }
+  if (doc.contains("long_time")) {
+    const section_reader r(origin, "long_time", doc["long_time"],
+                           {"steps_double", "steps_mpfr", "mpfr_digits", "omega_h", "windows"});
+    long_time_settings l;
+    if (r.has("steps_double")) l.steps_double = r.integer("steps_double", 1, max_steps);
+    if (r.has("steps_mpfr")) l.steps_mpfr = r.integer("steps_mpfr", 1, max_steps);
+    if (r.has("mpfr_digits")) {
+      l.mpfr_digits = static_cast<unsigned>(r.integer("mpfr_digits", precision::min_mpfr_digits, precision::max_mpfr_digits));
+    }
+    if (r.has("omega_h")) l.omega_h = r.number("omega_h", 0, 2);
+    if (r.has("windows")) l.windows = r.integer("windows", 1, 100'000);
+    e.long_time = l;
+  }
+  return e;
+}
+
 }  // namespace
 
 scene parse_scene(const std::string& text, const std::string& origin) {
@@ -56,7 +217,8 @@ scene parse_scene(const std::string& text, const std::string& origin) {
     fail(origin, "malformed JSON: " + what);
   }
   if (!doc.is_object()) fail(origin, "the top level must be an object");
-  static const std::set<std::string> known{"name", "description", "claims", "precisions", "samples", "seed", "expected_overrides"};
+  static const std::set<std::string> known{"name", "description", "claims", "precisions", "samples", "seed", "expected_overrides",
+                                         "table1", "work_precision", "stability", "long_time"};
   for (const auto& item : doc.items()) {
     if (!known.count(item.key())) fail(origin, "unknown key '" + item.key() + "'");
   }
@@ -70,12 +232,15 @@ scene parse_scene(const std::string& text, const std::string& origin) {
     if (!doc["description"].is_string()) fail(origin, "'description' must be a string");
     s.description = doc["description"].get<std::string>();
   }
-  if (!doc.contains("claims")) fail(origin, "'claims' is missing (\"all\" or a list of ids)");
-  const nlohmann::json& claims = doc["claims"];
+  s.experiments = parse_experiments(doc, origin);
+  if (!doc.contains("claims") && !s.experiments.any()) {
+    fail(origin, "'claims' is missing (\"all\" or a list of ids; it may be left out only when an experiment section is present)");
+  }
+  const nlohmann::json claims = doc.contains("claims") ? doc["claims"] : nlohmann::json::array();
   std::set<std::string> wanted;
   if (claims.is_string() && claims.get<std::string>() == "all") {
     for (const claim& c : ledger()) wanted.insert(c.id);
-  } else if (claims.is_array() && !claims.empty()) {
+  } else if (claims.is_array() && (!claims.empty() || !doc.contains("claims"))) {
     for (std::size_t k = 0; k < claims.size(); ++k) {
       if (!claims[k].is_string()) fail(origin, "'claims[" + std::to_string(k) + "]' must be a string");
       try {
@@ -90,11 +255,14 @@ scene parse_scene(const std::string& text, const std::string& origin) {
   for (const claim& c : ledger()) {
     if (wanted.count(c.id)) s.claims.push_back(c.id);
   }
-  if (!doc.contains("precisions") || !doc["precisions"].is_array() || doc["precisions"].empty()) {
+  // The precisions of the claims' numeric rechecks: required with claims, "double" otherwise.
+  const nlohmann::json precisions = doc.contains("precisions") || doc.contains("claims") ? doc.value("precisions", nlohmann::json())
+                                                                                          : nlohmann::json::array({"double"});
+  if (!precisions.is_array() || precisions.empty()) {
     fail(origin, "'precisions' must be a non-empty list of precision names");
   }
-  for (std::size_t k = 0; k < doc["precisions"].size(); ++k) {
-    const nlohmann::json& p = doc["precisions"][k];
+  for (std::size_t k = 0; k < precisions.size(); ++k) {
+    const nlohmann::json& p = precisions[k];
     const std::string field = "'precisions[" + std::to_string(k) + "]'";
     if (!p.is_string()) fail(origin, field + " must be a string");
     try {

@@ -6,6 +6,7 @@ bin="$1"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
+passes=0
 check() {  # check NAME EXPECTED_CODE ARGS...
   local name="$1" want="$2"
   shift 2
@@ -19,6 +20,7 @@ check() {  # check NAME EXPECTED_CODE ARGS...
     failures=$((failures + 1))
   else
     echo "ok   $name"
+    passes=$((passes + 1))
   fi
 }
 
@@ -54,7 +56,26 @@ echo '{"name": "x", "claims": "all", "precisions": ["double"], "extra": 1}' >"$w
 check "unknown key" 2 --scene "$work/unknown.json" --out "$work/none8"
 touch "$work/a-file"
 check "unwritable out" 2 --scene quick --out "$work/a-file/sub"
-for k in 1 2 3 4 5 6 7 8 9 10 11; do
+# Experiment parameters (each section's fields are validated before anything runs).
+bad_section() {  # bad_section NAME K JSON-MEMBERS EXPECTED-TEXT
+  echo "{\"name\": \"x\", $3}" >"$work/section$2.json"
+  check "$1" 2 --scene "$work/section$2.json" --out "$work/none$2"
+  grep -q -- "$4" "$work/err" || { echo "FAIL $1: stderr lacks '$4': $(cat "$work/err")"; failures=$((failures + 1)); }
+}
+bad_section "m <= 0" 12 '"table1": {"m": -1}' "'table1.m' must be a number greater than 0"
+bad_section "N = 0" 13 '"table1": {"N": [10, 0]}' "'table1.N'\[1\] must be an integer from 1"
+bad_section "absurd N" 14 '"work_precision": {"precisions": ["double"], "N": [1e15]}' "'work_precision.N'\[0\]"
+bad_section "NaN literal" 15 '"table1": {"m": NaN}' "malformed JSON at line 1, column"
+bad_section "infinite omega h" 16 '"stability": {"precisions": ["double"], "omega_h": [1e999]}' "malformed JSON"
+bad_section "h = 0" 17 '"stability": {"precisions": ["double"], "omega_h": [0]}' "'stability.omega_h'\[0\] must be a number greater than 0"
+bad_section "stiff omega < 0" 18 '"stability": {"precisions": ["double"], "stiff_omegas": [-1]}' "'stability.stiff_omegas'\[0\]"
+bad_section "rational in experiments" 19 '"work_precision": {"precisions": ["rational"]}' "has no cos or sin"
+bad_section "unknown scheme" 20 '"work_precision": {"precisions": ["double"], "schemes": ["euler"]}' "unknown scheme 'euler'"
+bad_section "digits > 100000" 21 '"long_time": {"mpfr_digits": 200000}' "'long_time.mpfr_digits' must be an integer from 30 to 100000"
+bad_section "unknown section key" 22 '"long_time": {"step": 5}' "unknown key 'long_time.step'"
+bad_section "section wrong type" 23 '"stability": []' "'stability' must be an object"
+bad_section "run for days" 24 '"long_time": {"steps_double": 100000000000}' "estimated cost .* exceeds the budget .* --allow-expensive"
+for k in 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21 22 23 24; do
   [ -e "$work/none$k" ] && { echo "FAIL: bad input wrote $work/none$k"; failures=$((failures + 1)); }
 done
 # Interruption: a long run (10000 samples per recheck) stopped after one second.
@@ -71,11 +92,29 @@ for sig in INT TERM; do
     failures=$((failures + 1))
   else
     echo "ok   SIG$sig stops the run with $got and writes nothing"
+    passes=$((passes + 1))
   fi
+done
+# The same during an experiment section (work_precision in mpfr:1000, minutes long).
+echo '{"name": "slow", "work_precision": {"precisions": ["mpfr:1000"], "N": [100000]}}' >"$work/slow.json"
+"$bin" --scene "$work/slow.json" --allow-expensive --out "$work/stopped-section" >"$work/out" 2>"$work/err" &
+pid=$!
+sleep 1
+kill -INT "$pid"
+wait "$pid"
+got=$?
+if [ "$got" != 130 ] || [ -n "$(ls -A "$work/stopped-section" 2>/dev/null)" ]; then
+  echo "FAIL SIGINT in a section: exit $got, files: $(ls -A "$work/stopped-section")"; failures=$((failures + 1))
+else
+  echo "ok   SIGINT during an experiment section stops it with 130 and writes nothing"
+  passes=$((passes + 1))
+fi
+# The quick scene's report: every format, and plots in both SVG and PNG.
+for f in report.json report.md report.html table1.csv work_precision.csv figure1.svg figure1.png work_precision_time.svg; do
+  [ -s "$work/quick/$f" ] || { echo "FAIL quick: $f missing or empty"; failures=$((failures + 1)); }
 done
 check "list claims" 0 --list-claims
 check "version" 0 --version
 
-total=25
-echo "$((total - failures)) passed, $failures failed"
+echo "$passes passed, $failures failed"
 [ "$failures" = 0 ]

@@ -79,6 +79,58 @@ TEST(Scene, RejectsEveryBadField) {
   EXPECT_TRUE(mentions(error_of("{" + base + R"(, "expected_overrides": {"nope": "holds"}})"), "unknown claim id 'nope'"));
 }
 
+TEST(Scene, ExperimentSectionsParseWithDefaultsAndOnlyWhenAsked) {
+  const scene none = parse_scene(R"({"name": "c", "claims": ["phi3-det"], "precisions": ["double"]})", "t");
+  EXPECT_FALSE(none.experiments.any());
+  const scene s = parse_scene(R"({"name": "e", "table1": {}, "long_time": {"steps_double": 1e5}})", "t");
+  EXPECT_TRUE(s.claims.empty());
+  ASSERT_TRUE(s.experiments.table1 && s.experiments.long_time);
+  EXPECT_FALSE(s.experiments.work_precision || s.experiments.stability);
+  EXPECT_EQ(s.experiments.table1->meshes, (std::vector<long long>{10, 20, 40}));
+  EXPECT_EQ(s.experiments.long_time->steps_double, 100000);
+  const scene paper = load_scene("paper");
+  EXPECT_TRUE(paper.experiments.table1 && paper.experiments.work_precision && paper.experiments.stability &&
+              paper.experiments.long_time);
+  EXPECT_EQ(paper.experiments.work_precision->schemes, scheme_names());
+}
+
+TEST(Scene, RejectsEveryBadExperimentParameter) {
+  const std::string head = R"({"name": "x", )";
+  const auto section = [&](const std::string& body) { return error_of(head + body + "}"); };
+  EXPECT_TRUE(mentions(section(R"("table1": 3)"), "'table1' must be an object"));
+  EXPECT_TRUE(mentions(section(R"("table1": {"n": [10]})"), "unknown key 'table1.n'"));
+  EXPECT_TRUE(mentions(section(R"("table1": {"N": [10, 0]})"), "'table1.N'[1] must be an integer from 1"));
+  EXPECT_TRUE(mentions(section(R"("table1": {"N": [10.5]})"), "'table1.N'[0] must be an integer"));
+  EXPECT_TRUE(mentions(section(R"("table1": {"N": []})"), "'table1.N' must be a list"));
+  EXPECT_TRUE(mentions(section(R"("table1": {"N": [1e13]})"), "'table1.N'[0] must be an integer from 1 to 1000000"));
+  EXPECT_TRUE(mentions(section(R"("table1": {"m": 0})"), "'table1.m' must be a number greater than 0"));
+  EXPECT_TRUE(mentions(section(R"("table1": {"m": -1})"), "'table1.m' must be a number greater than 0"));
+  EXPECT_TRUE(mentions(section(R"("table1": {"m": "NaN"})"), "'table1.m' must be a number"));
+  EXPECT_TRUE(mentions(section(R"("table1": {"m": NaN})"), "malformed JSON at line 1"));
+  EXPECT_TRUE(mentions(section(R"("table1": {"m": Infinity})"), "malformed JSON at line 1"));
+  EXPECT_TRUE(mentions(section(R"("table1": {"m": 1e999})"), "malformed JSON"));
+  EXPECT_TRUE(mentions(section(R"("work_precision": {"N": [16]})"), "'work_precision.precisions' is missing"));
+  EXPECT_TRUE(mentions(section(R"("work_precision": {"precisions": ["rational"]})"),
+                       "'work_precision.precisions'[0]: 'rational' has no cos or sin"));
+  EXPECT_TRUE(mentions(section(R"("work_precision": {"precisions": ["mpfr:9"]})"), "mpfr digits must be an integer from 30"));
+  EXPECT_TRUE(mentions(section(R"("work_precision": {"precisions": ["mpfr:100001"]})"), "to 100000"));
+  EXPECT_TRUE(mentions(section(R"("work_precision": {"precisions": ["double"], "schemes": ["euler"]})"),
+                       "unknown scheme 'euler'"));
+  EXPECT_TRUE(mentions(section(R"("work_precision": {"precisions": ["double"], "N": [1e12], "periods": 1000})"),
+                       "exceeds the limit"));
+  EXPECT_TRUE(mentions(section(R"("work_precision": {"precisions": ["double"], "max_seconds": 0})"),
+                       "'work_precision.max_seconds' must be a number greater than 0"));
+  EXPECT_TRUE(mentions(section(R"("stability": {"precisions": ["double"], "omega_h": [0]})"),
+                       "'stability.omega_h'[0] must be a number greater than 0"));
+  EXPECT_TRUE(mentions(section(R"("stability": {"precisions": ["double"], "stiff_omegas": [-1e8]})"),
+                       "'stability.stiff_omegas'[0]"));
+  EXPECT_TRUE(mentions(section(R"("stability": {"precisions": ["double"], "masses": [0]})"), "'stability.masses'[0]"));
+  EXPECT_TRUE(mentions(section(R"("stability": {"precisions": ["double"], "steps": 0})"), "'stability.steps' must be an integer"));
+  EXPECT_TRUE(mentions(section(R"("long_time": {"omega_h": 3})"), "'long_time.omega_h' must be a number greater than 0 and at most 2"));
+  EXPECT_TRUE(mentions(section(R"("long_time": {"mpfr_digits": 5})"), "'long_time.mpfr_digits' must be an integer from 30"));
+  EXPECT_TRUE(mentions(section(R"("long_time": {"steps_double": 1e19})"), "'long_time.steps_double' must be an integer"));
+}
+
 TEST(Scene, UnknownNameAndUnreadableFileAreNamed) {
   try {
     load_scene("/nonexistent/scene.json");

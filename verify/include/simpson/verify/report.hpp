@@ -4,6 +4,7 @@
 // the "timing" members of report.json and the "environment" member (compiler, versions, commit).
 
 #include <simpson/verify/claim.hpp>
+#include <simpson/verify/experiments.hpp>
 #include <simpson/verify/scene.hpp>
 
 #include <filesystem>
@@ -25,6 +26,8 @@ struct run_record {
   std::vector<claim_outcome> outcomes;
   json paper_configuration;
   json environment;
+  std::vector<section_output> sections;  // the experiment sections the scene asked for, in order
+  std::vector<double> section_seconds;
   double seconds = 0;
 };
 
@@ -34,7 +37,10 @@ using progress_callback = std::function<void(std::size_t, std::size_t, const cla
 /// Runs every claim of the scene; a check that throws is recorded as `fails` with the message.
 /// Throws simpson::verify::interrupted when interruption_signal() is set (checked between claims
 /// and between numeric samples).
-run_record run(const scene& s, const progress_callback& progress = {});
+/// Then runs the experiment sections the scene asks for (table1, work_precision, stability,
+/// long_time), calling `section_progress(name, seconds)` after each.
+run_record run(const scene& s, const progress_callback& progress = {},
+               const std::function<void(const std::string&, double)>& section_progress = {});
 
 /// True when every verdict equals its expected verdict.
 bool all_as_expected(const run_record& r);
@@ -54,7 +60,19 @@ std::string summary_line(const run_record& r);
 /// std::invalid_argument naming the directory otherwise.
 void prepare_output_directory(const std::filesystem::path& dir);
 
-/// Writes dir/report.json and dir/report.md, each to a temporary file renamed into place.
-void write_report_files(const std::filesystem::path& dir, const run_record& r);
+/// Plots drawn and plots that could not be drawn (gnuplot missing or failing), by the writer.
+struct plot_outcome {
+  std::vector<std::string> drawn;               // plot names, each with <name>.svg and <name>.png
+  std::vector<std::string> failures;            // "<name>: <reason>"
+};
+
+/// Writes report.json, report.md, report.html, the sections' data files (CSV, .dat), the gnuplot
+/// scripts (<plot>.gp) and the plots (SVG, PNG). Everything is made in a staging directory inside
+/// `dir` and renamed into place at the end, so an error or an interruption leaves no partial files.
+plot_outcome write_report_files(const std::filesystem::path& dir, const run_record& r);
+
+/// report.md with the outcome of the plots (a list of those not drawn, if any).
+std::string report_markdown(const run_record& r, const plot_outcome& plots);
+json report_json(const run_record& r, const plot_outcome& plots);
 
 }  // namespace simpson::verify

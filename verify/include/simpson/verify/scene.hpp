@@ -8,11 +8,15 @@
 //   "precisions": ["double", "mpfr:100"],  required, names of the precision list
 //   "samples": 16,                         optional, random samples per numeric recheck, 1..10000
 //   "seed": 20230830,                      optional, the default seed (--seed overrides)
-//   "expected_overrides": {"id": "fails"}  optional, replaces expected verdicts (tests the exit code)
+//   "expected_overrides": {"id": "fails"}, optional, replaces expected verdicts (tests the exit code)
+//   "table1": {...}, "work_precision": {...}, "stability": {...}, "long_time": {...}
+//                                          optional experiment sections (experiments.hpp; README)
 // }
+// "claims" may be left out when the scene has at least one experiment section.
 
 #include <simpson/precision.hpp>
 #include <simpson/verify/claim.hpp>
+#include <simpson/verify/experiments.hpp>
 
 #include <cstdint>
 #include <map>
@@ -32,6 +36,7 @@ struct scene {
   unsigned samples = default_samples;
   std::uint64_t seed = default_seed;
   std::map<std::string, verdict> expected_overrides;
+  experiment_settings experiments;
 };
 
 /// Parses and validates a scene; `origin` names it in errors. Throws std::invalid_argument with a

@@ -1,0 +1,113 @@
+#pragma once
+// Partitioned Runge–Kutta methods on the oscillator, run by their stages: the peers of the
+// Simpson scheme (implicit midpoint, Gauss–Legendre, Lobatto IIIA–IIIB, classic RK4) share this
+// one stage algorithm and differ only in their tableaux (runge_kutta_tableaux.hpp).
+
+#include <simpson/one_step_map.hpp>
+#include <simpson/oscillator_parameters.hpp>
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace simpson {
+
+/// A Butcher tableau (A, b) with s stages; A is s × s, row-major.
+template <class Real>
+struct butcher_tableau {
+  std::vector<std::vector<Real>> a;
+  std::vector<Real> b;
+  std::size_t stages() const noexcept { return b.size(); }
+};
+
+namespace detail {
+
+/// Solves M x = r by Gaussian elimination. Pivot: the largest |entry| for ordered numbers, the
+/// first non-zero for symbolic scalars (exact, so any non-zero pivot is as good). Throws
+/// std::domain_error when M is singular.
+template <class Real>
+std::vector<Real> solve_linear(std::vector<std::vector<Real>> M, std::vector<Real> r) {
+  const std::size_t n = r.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    std::size_t pivot = n;
+    for (std::size_t i = k; i < n; ++i) {
+      if constexpr (is_ordered_number_v<Real>) {
+        using std::abs;
+        if (M[i][k] != 0 && (pivot == n || abs(M[i][k]) > abs(M[pivot][k]))) pivot = i;
+      } else {
+        if (pivot == n && M[i][k] != Real(0)) pivot = i;
+      }
+    }
+    if (pivot == n) throw std::domain_error("simpson::partitioned_runge_kutta: the stage equations are singular");
+    std::swap(M[k], M[pivot]);
+    std::swap(r[k], r[pivot]);
+    for (std::size_t i = k + 1; i < n; ++i) {
+      const Real factor = M[i][k] / M[k][k];
+      for (std::size_t j = k; j < n; ++j) M[i][j] -= factor * M[k][j];
+      r[i] -= factor * r[k];
+    }
+  }
+  std::vector<Real> x(n, Real(0));
+  for (std::size_t k = n; k-- > 0;) {
+    Real sum = r[k];
+    for (std::size_t j = k + 1; j < n; ++j) sum -= M[k][j] * x[j];
+    x[k] = sum / M[k][k];
+  }
+  return x;
+}
+
+}  // namespace detail
+
+/// One step of the partitioned Runge–Kutta method with tableau `for_q` for q' = p/m and `for_p`
+/// for p' = −m ω² q (both with s stages):
+///   Q_i = q_j + h Σ_k a_ik P_k / m,   P_i = p_j − h Σ_k â_ik m ω² Q_k,
+///   q_{j+1} = q_j + h Σ_i b_i P_i / m,   p_{j+1} = p_j − h Σ_i b̂_i m ω² Q_i.
+/// The stage equations are linear here; eliminating P gives (I + ω²h² A Â) Q = q_j 1 + (h/m) p_j A 1,
+/// solved at every step as an implementation for a general linear force would. Explicit tableaux
+/// make that system triangular. Throws std::domain_error when it is singular.
+template <class Real>
+phase_point<Real> partitioned_runge_kutta_step(const oscillator_parameters<Real>& par, const butcher_tableau<Real>& for_q,
+                                               const butcher_tableau<Real>& for_p, const phase_point<Real>& y) {
+  const std::size_t s = for_q.stages();
+  if (s == 0 || for_p.stages() != s) {
+    throw std::invalid_argument("simpson::partitioned_runge_kutta_step: the tableaux must have the same number of stages");
+  }
+  const Real& m = par.m();
+  const Real& h = par.h();
+  const Real x = par.omega2_h2();
+  const Real stiffness = m * par.omega() * par.omega();
+  std::vector<std::vector<Real>> M(s, std::vector<Real>(s, Real(0)));
+  std::vector<Real> rhs(s, y.q);
+  for (std::size_t i = 0; i < s; ++i) {
+    Real row_sum(0);
+    for (std::size_t k = 0; k < s; ++k) {
+      row_sum += for_q.a[i][k];
+      Real product(0);
+      for (std::size_t l = 0; l < s; ++l) product += for_q.a[i][l] * for_p.a[l][k];
+      M[i][k] = (i == k ? Real(1) : Real(0)) + x * product;
+    }
+    rhs[i] += h / m * y.p * row_sum;
+  }
+  const std::vector<Real> Q = detail::solve_linear(std::move(M), std::move(rhs));
+  phase_point<Real> next = y;
+  for (std::size_t i = 0; i < s; ++i) {
+    Real P_i = y.p;
+    for (std::size_t k = 0; k < s; ++k) P_i -= h * for_p.a[i][k] * stiffness * Q[k];
+    next.q += h * for_q.b[i] * P_i / m;
+    next.p -= h * for_p.b[i] * stiffness * Q[i];
+  }
+  return next;
+}
+
+/// The one-step matrix of the method: its step applied to (1, 0) and (0, 1) (exact for a linear map).
+template <class Real>
+one_step_matrix<Real> partitioned_runge_kutta_map(const oscillator_parameters<Real>& par, const butcher_tableau<Real>& for_q,
+                                                  const butcher_tableau<Real>& for_p) {
+  const phase_point<Real> from_p = partitioned_runge_kutta_step(par, for_q, for_p, phase_point<Real>{Real(1), Real(0)});
+  const phase_point<Real> from_q = partitioned_runge_kutta_step(par, for_q, for_p, phase_point<Real>{Real(0), Real(1)});
+  return {from_p.p, from_q.p, from_p.q, from_q.q};
+}
+
+}  // namespace simpson

@@ -1,0 +1,71 @@
+#include <simpson/partitioned_runge_kutta.hpp>
+
+#include <simpson/newmark_map.hpp>
+#include <simpson/runge_kutta_tableaux.hpp>
+#include <simpson/stormer_verlet.hpp>
+
+#include "test_support.hpp"
+
+#include <gtest/gtest.h>
+
+namespace simpson {
+namespace {
+
+template <class Real>
+class PartitionedRungeKutta : public test::precision_fixture<Real> {};
+TYPED_TEST_SUITE(PartitionedRungeKutta, test::all_scalars, test::scalar_names);
+
+/// |a − b| entrywise against k eps (|a| + |b|) (each entry a sum of O(k) rounded terms of that size).
+template <class Real>
+::testing::AssertionResult same_map(const one_step_matrix<Real>& a, const one_step_matrix<Real>& b, int k) {
+  for (const auto& [x, y] : {std::pair{a.alpha, b.alpha}, std::pair{a.beta, b.beta}, std::pair{a.gamma, b.gamma},
+                             std::pair{a.delta, b.delta}}) {
+    const ::testing::AssertionResult r =
+        test::within(x, y, Real(k * eps<Real>() * (test::magnitude(x) + test::magnitude(y))));
+    if (!r) return r;
+  }
+  return ::testing::AssertionSuccess();
+}
+
+TYPED_TEST(PartitionedRungeKutta, ImplicitMidpointIsTheNewmarkMap) {
+  using Real = TypeParam;
+  for (const auto& par : test::parameter_cases<Real>()) {
+    EXPECT_TRUE(same_map(partitioned_runge_kutta_map(par, implicit_midpoint_tableau<Real>(), implicit_midpoint_tableau<Real>()),
+                         newmark_map(par), 32));
+  }
+}
+
+TYPED_TEST(PartitionedRungeKutta, TwoStageLobattoPairIsStormerVerlet) {
+  using Real = TypeParam;
+  for (const auto& par : test::parameter_cases<Real>()) {
+    EXPECT_TRUE(same_map(partitioned_runge_kutta_map(par, lobatto_iiia2_tableau<Real>(), lobatto_iiib2_tableau<Real>()),
+                         stormer_verlet_map(par), 32));
+  }
+}
+
+TYPED_TEST(PartitionedRungeKutta, ClassicRk4IsTheTaylorPolynomialOfTheFlow) {
+  // On y' = L y, RK4 gives I + hL + (hL)²/2 + (hL)³/6 + (hL)⁴/24; with L² = −ω² I:
+  // α = δ = 1 − x/2 + x²/24, β = −mω²h (1 − x/6), γ = h/m (1 − x/6), x = ω²h².
+  using Real = TypeParam;
+  for (const auto& par : test::parameter_cases<Real>()) {
+    const Real x = par.omega2_h2();
+    const Real w2 = par.omega() * par.omega();
+    const one_step_matrix<Real> expected{Real(1 - x / 2 + x * x / 24), Real(-par.m() * w2 * par.h() * (1 - x / 6)),
+                                         Real(par.h() / par.m() * (1 - x / 6)), Real(1 - x / 2 + x * x / 24)};
+    EXPECT_TRUE(same_map(partitioned_runge_kutta_map(par, classic_rk4_tableau<Real>(), classic_rk4_tableau<Real>()), expected, 64));
+  }
+}
+
+TEST(PartitionedRungeKutta, SolveLinearPivotsAndRefusesSingularSystems) {
+  // A zero leading entry needs a row exchange.
+  const std::vector<double> x = detail::solve_linear<double>({{0, 1}, {2, 0}}, {3, 4});
+  EXPECT_EQ(x[0], 2);
+  EXPECT_EQ(x[1], 3);
+  EXPECT_THROW(detail::solve_linear<double>({{1, 2}, {2, 4}}, {1, 1}), std::domain_error);
+  EXPECT_THROW(partitioned_runge_kutta_step(oscillator_parameters<double>{1, 1, 1}, implicit_midpoint_tableau<double>(),
+                                            classic_rk4_tableau<double>(), phase_point<double>{1, 0}),
+               std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace simpson
