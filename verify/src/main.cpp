@@ -144,6 +144,10 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  if (s.experiments.any()) {
+    fmt::print(stderr, "experiments: estimated cost {:.3g} units (budget {:.3g})\n", estimate_cost(s.experiments).units,
+               default_cost_budget);
+  }
   std::signal(SIGINT, record_signal);
   std::signal(SIGTERM, record_signal);
   try {
