@@ -12,7 +12,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
     const simpson::verify::scene s = simpson::verify::parse_scene(text, "fuzz");
-    if (s.name.empty() || s.claims.empty() || s.precisions.empty()) __builtin_trap();  // validation let a hole through
+    // Validation let a hole through: a scene must ask for something, and every experiment parameter is in range.
+    if (s.name.empty() || (s.claims.empty() && !s.experiments.any()) || s.precisions.empty()) __builtin_trap();
+    if (s.experiments.table1 && (s.experiments.table1->meshes.empty() || !(s.experiments.table1->m > 0))) __builtin_trap();
+    if (s.experiments.work_precision && s.experiments.work_precision->precisions.empty()) __builtin_trap();
+    if (s.experiments.stability) {
+      for (const double x : s.experiments.stability->omega_h) {
+        if (!(x > 0)) __builtin_trap();
+      }
+    }
   } catch (const std::invalid_argument&) {
   }
   return 0;

@@ -126,11 +126,16 @@ section_output run_long_time(const long_time_settings& s) {
   json rows = json::array();
   const std::vector<std::pair<std::string, std::string>> runs{{"simpson", "H_d"}, {"newmark", "H"}, {"rk4", "H"}};
   std::vector<std::string> blocks;
-  for (const auto& [prec, steps] : {std::pair{precision::parse("double"), s.steps_double},
-                                    std::pair{precision::mpfr_digits(s.mpfr_digits), s.steps_mpfr}}) {
+  // No structured bindings here: clang 14 cannot capture them in the lambdas below.
+  for (const std::pair<precision, long long>& run : {std::pair{precision::parse("double"), s.steps_double},
+                                                      std::pair{precision::mpfr_digits(s.mpfr_digits), s.steps_mpfr}}) {
+    const precision& prec = run.first;
+    const long long steps = run.second;
     std::string data = "# blocks: " + prec.name() + " simpson H_d, newmark H, rk4 H; columns t max_drift phase_measured phase_predicted\n";
-    for (const auto& [scheme, monitored] : runs) {
-      const long_run r = detail::visit_floating(prec, [&, &scheme = scheme, &monitored = monitored](auto tag) {
+    for (const auto& scheme_and_energy : runs) {
+      const std::string& scheme = scheme_and_energy.first;
+      const std::string& monitored = scheme_and_energy.second;
+      const long_run r = detail::visit_floating(prec, [&](auto tag) {
         using Real = typename decltype(tag)::type;
         return run_long<Real>(scheme, monitored, prec, steps, s.windows, s.omega_h);
       });
