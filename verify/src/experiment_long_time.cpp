@@ -58,6 +58,7 @@ long_run run_long(const std::string& scheme, const std::string& monitored, const
   std::string data;
   Real measured_phase_error(0), predicted_phase_error(0);
   for (long long j = 1; j <= steps; ++j) {
+    if ((j & 0xFFFFF) == 0) throw_if_interrupted();  // every ~1e6 steps: a few ms in double
     y = phi * y;
     window_max = std::max(window_max, Real(abs(Real(monitor(y) - E0)) / E0));
     // Unwrap the angle of (q, p): it advances by about θ per step (< π), so steps of the branch are detected.
@@ -68,7 +69,6 @@ long_run run_long(const std::string& scheme, const std::string& monitored, const
     unwrapped += delta;
     angle_previous = angle;
     if (j % window == 0 || j == steps) {
-      if ((j / window) % 16 == 0) throw_if_interrupted();
       const Real t = Real(theta) * Real(j);
       measured_phase_error = unwrapped - t;
       predicted_phase_error = Real(j) * phase_per_step - t;

@@ -78,7 +78,7 @@ section_output run_stability(const stability_settings& s) {
   md += "### Exact stability region of Φ₃ (ωh > 0)\n\nFrom the exact discriminant Δ(x), x = ω²h², by Sturm sequences "
         "(the ledger's stability claims): stable where Δ < 0 (two simple roots on the unit circle).\n\n"
         "| ωh from | ωh to | x from | x to | Δ | stable |\n|---|---|---|---|---|---|\n";
-  std::vector<double> endpoints;
+  std::vector<rational> endpoints;  // x = ω²h² at each finite endpoint, exact
   for (const json& band : report.evidence["bands"]) {
     intervals.push_back(band);
     md += fmt::format("| {} | {} | {} | {} | {} | {} |\n", band["omega_h_from"].get<std::string>(),
@@ -92,8 +92,10 @@ section_output run_stability(const stability_settings& s) {
       out.data["stable_intervals_omega_h"].push_back({band["omega_h_from"], band["omega_h_to"]});
     }
     if (band["omega_h_to"] != "infinity") {
+      // An exact root prints as a rational ("8"); an inexact one as an interval, which has no exact endpoint to run at.
       const std::string x_text = band["x_to"].get<std::string>();
-      endpoints.push_back(std::stod(x_text));  // the roots are integers here (8, 12, 24); see x_to
+      if (x_text.find('[') != std::string::npos) throw std::logic_error("stability: endpoint x = " + x_text + " is not exact");
+      endpoints.push_back(rational(x_text));
     }
   }
 
@@ -107,19 +109,26 @@ section_output run_stability(const stability_settings& s) {
   detail::visit_floating(precision::mpfr_digits(50), [&](auto tag) {
     using Real = typename decltype(tag)::type;
     using std::sqrt;
-    for (const double x_end : endpoints) {
-      const Real theta_end = sqrt(Real(static_cast<long long>(x_end)));
+    for (const rational& x_end : endpoints) {
+      const std::string x_text = simpson::to_string(x_end);
+      const Real theta_end = sqrt(Real(detail::from_decimal<Real>(boost::multiprecision::numerator(x_end).str()) /
+                                       detail::from_decimal<Real>(boost::multiprecision::denominator(x_end).str())));
       for (const int side : {-1, 0, 1}) {
         throw_if_interrupted();
         const Real theta = theta_end * (1 + Real(side) / 1000000);
         const oscillator_parameters<Real> par{Real(1), Real(1), theta};
         const one_step_matrix<Real> phi = simpson_map(par);
         json row = eigen_description(phi);
-        row["omega_h"] = side == 0 ? fmt::format("sqrt({}) = {}", static_cast<long long>(x_end), simpson::to_string(theta, 8))
-                                   : fmt::format("sqrt({}) (1 {} 1e-6)", static_cast<long long>(x_end), side < 0 ? "-" : "+");
+        row["omega_h"] = side == 0 ? fmt::format("sqrt({}) = {}", x_text, simpson::to_string(theta, 8))
+                                   : fmt::format("sqrt({}) (1 {} 1e-6)", x_text, side < 0 ? "-" : "+");
         using std::abs;
+        // At the endpoint α = ±1 up to round-off: θ carries one rounding, and α(x) has slope
+        // |dα/dx| <= 1 on (0, 24], so |α − λ| <= 64 eps x covers θ², the formula's ~20 roundings and room.
+        // A Jordan block: the double root λ with Φ₃ − λI ≠ 0 (β or γ non-zero).
         const Real lambda = phi.alpha > 0 ? Real(1) : Real(-1);
-        row["jordan_block"] = side == 0 ? json(abs(phi.beta) + abs(phi.gamma) > 0 && abs(Real(phi.alpha - lambda)) < 1e-20)
+        const Real x = theta * theta;
+        row["jordan_block"] = side == 0 ? json(abs(phi.beta) + abs(phi.gamma) > 0 &&
+                                               abs(Real(phi.alpha - lambda)) <= 64 * eps<Real>() * x)
                                         : json("n/a");
         row["max_amplitude_ratio"] = growth_run(par, s.steps);
         const json& g = row["max_amplitude_ratio"];
@@ -233,8 +242,9 @@ section_output run_stability(const stability_settings& s) {
         Real drift(0);
         phase_point<Real> y = y0;
         std::string status = "ok";
+        const one_step_matrix<Real> phi = simpson_map(par);
         for (long long j = 0; j < s.steps; ++j) {
-          y = simpson_map(par) * y;
+          y = phi * y;
           drift = std::max(drift, Real(abs(Real(discrete_energy(par, y) - Hd0)) / abs(Hd0)));
         }
         const Real eq = abs(Real(y.q - exact_solution(par, y0, Real(s.steps)).q));

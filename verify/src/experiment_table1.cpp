@@ -18,9 +18,8 @@ using detail::figure_text;
 
 /// Published value of a row at N, when Table 1 has that column.
 std::optional<double> published_at(const detail::table_row& row, long long N) {
-  const std::array<long long, 3> columns{10, 20, 40};
-  for (std::size_t k = 0; k < columns.size(); ++k) {
-    if (columns[k] == N) return row.published[k];
+  for (std::size_t k = 0; k < detail::published_meshes.size(); ++k) {
+    if (detail::published_meshes[k] == N) return row.published[k];
   }
   return std::nullopt;
 }
@@ -36,7 +35,6 @@ section_output run_table1(const table1_settings& s) {
   for (const long long N : s.meshes) {
     runs[N] = {detail::run_table_experiment(false, N, s.m), detail::run_table_experiment(true, N, s.m)};
   }
-  const double eps = std::numeric_limits<double>::epsilon();
   json rows = json::array();
   std::string csv = "scheme,quantity,N,h,ours,published,published_over_ours\n";
   std::string md;
@@ -64,7 +62,7 @@ section_output run_table1(const table1_settings& s) {
       const double ours = runs[N][row.simpson_scheme ? 1 : 0].*row.field;
       h.push_back(1.0 / static_cast<double>(N));
       e.push_back(ours);
-      use.push_back(ours > 64 * eps * static_cast<double>(N) * H0);
+      use.push_back(!detail::at_round_off_floor(ours, N, H0));
       json entry{{"N", N}, {"ours", figure(ours)}};
       std::string cell = figure_text(ours);
       const auto published = published_at(row, N);
@@ -117,11 +115,8 @@ section_output run_table1(const table1_settings& s) {
   } else {
     md += "**Not reproduced** (outside ±5%): ";
     for (std::size_t k = 0; k < not_reproduced.size(); ++k) md += (k ? "; " : "") + not_reproduced[k];
-    md += ".\n\nTried without tuning: the stated conventions above; starting the two-step recurrences from exact q₀, q₁ and "
-          "taking p_j from (moment) and (moment-ordre-3), which moves the momentum errors by less than 3%. The Simpson state "
-          "row agrees within 2%; the momentum rows are about 2× ours, the Newmark state row about 1.2×, the two "
-          "non-conserved energy rows about 2.46× (close to π²/4). The orders and the 'exact' entries are reproduced. See the "
-          "ledger claims table-values, table-orders and table-conservation.\n\n";
+    md += fmt::format(".\n\n{} Also tried: {}. See the ledger claims table-values, table-orders and table-conservation.\n\n",
+                      detail::table_not_reproduced, detail::table_also_tried);
   }
   out.data["conventions"] = {{"m", s.m}, {"omega", "2 pi"}, {"T", 1}, {"start", "y_0 = (m omega, 0) exact"},
                              {"errors", "maximum over t_j = j h, j = 0..N"}, {"precision", "double"},

@@ -186,9 +186,9 @@ section_output run_work_precision(const work_precision_settings& s) {
           data += fmt::format("{} {} {}\n", N, m.seconds == m.seconds ? simpson::to_string(m.seconds, 6) : "NaN",
                               m.error == m.error ? simpson::to_string(m.error, 6) : "NaN");
           // At the round-off floor: within 100 N eps of zero (N steps, each rounding a few times).
-          const double floor = 100.0 * static_cast<double>(steps) * static_cast<double>(eps<Real>());
+          const double floor_level = 100.0 * static_cast<double>(steps) * static_cast<double>(eps<Real>());
           json row = r;
-          row["at_round_off_floor"] = m.error == m.error && m.error <= floor;
+          row["at_round_off_floor"] = m.error == m.error && m.error <= floor_level;
           rows.push_back(row);
         }
         data += "\n\n";

@@ -83,6 +83,7 @@ int main(int argc, char** argv) {
 
   scene s;
   std::filesystem::path out;
+  cost_estimate cost;
   try {
     if (want_claims) return list_claims();
     if (want_scenes) return list_scenes();
@@ -126,7 +127,7 @@ int main(int argc, char** argv) {
       s.experiments.long_time->steps_double = 1'000'000'000;
       allow_expensive = true;
     }
-    const cost_estimate cost = estimate_cost(s.experiments);
+    cost = estimate_cost(s.experiments);
     if (cost.units > default_cost_budget && !allow_expensive) {
       std::string parts;
       for (const std::string& line : cost.lines) parts += (parts.empty() ? "" : "; ") + line;
@@ -145,7 +146,7 @@ int main(int argc, char** argv) {
   }
 
   if (s.experiments.any()) {
-    fmt::print(stderr, "experiments: estimated cost {:.3g} units (budget {:.3g})\n", estimate_cost(s.experiments).units,
+    fmt::print(stderr, "experiments: estimated cost {:.3g} units (budget {:.3g})\n", cost.units,
                default_cost_budget);
   }
   std::signal(SIGINT, record_signal);

@@ -17,7 +17,14 @@ namespace simpson::verify::detail {
 template <class Real>
 class scheme_runner {
  public:
-  scheme_runner(const std::string& name, const oscillator_parameters<Real>& par) : name_(name), par_(par) {
+  /// Resolves the name once, so that step() does no string work on the timed path.
+  scheme_runner(const std::string& name, const oscillator_parameters<Real>& par) : par_(par) {
+    kind_ = name == "simpson"               ? kind::simpson
+            : name == "simpson-elimination" ? kind::simpson_elimination
+            : name == "stormer-verlet"      ? kind::stormer_verlet
+            : name == "yoshida"             ? kind::yoshida
+            : name == "newmark"             ? kind::newmark
+                                            : kind::runge_kutta;
     if (name == "newmark") {
       for_q_ = for_p_ = implicit_midpoint_tableau<Real>();
     } else if (name == "gauss-legendre-2") {
@@ -41,25 +48,34 @@ class scheme_runner {
   /// node at every step; Newmark as the implicit midpoint rule, Störmer–Verlet and Yoshida by their kicks and drifts,
   /// the Runge–Kutta peers by their stage equations.
   phase_point<Real> step(const phase_point<Real>& y) const {
-    if (name_ == "simpson") return phi3_ * y;
-    if (name_ == "simpson-elimination") return simpson_step_by_elimination(par_, y);
-    if (name_ == "stormer-verlet") return stormer_verlet_step(par_, y, par_.h());
-    if (name_ == "yoshida") return yoshida_step(par_, weights_, y);
+    switch (kind_) {
+      case kind::simpson: return phi3_ * y;
+      case kind::simpson_elimination: return simpson_step_by_elimination(par_, y);
+      case kind::stormer_verlet: return stormer_verlet_step(par_, y, par_.h());
+      case kind::yoshida: return yoshida_step(par_, weights_, y);
+      case kind::newmark:
+      case kind::runge_kutta: break;
+    }
     return partitioned_runge_kutta_step(par_, for_q_, for_p_, y);
   }
 
   /// The one-step matrix: (Phi3) and (matrice-symplectique-ordre-2) for the paper's schemes, the
   /// step applied to unit vectors for the peers.
   one_step_matrix<Real> matrix() const {
-    if (name_ == "simpson" || name_ == "simpson-elimination") return simpson_map(par_);
-    if (name_ == "newmark") return newmark_map(par_);
-    if (name_ == "stormer-verlet") return stormer_verlet_map(par_);
-    if (name_ == "yoshida") return yoshida_map(par_, weights_);
+    switch (kind_) {
+      case kind::simpson: return phi3_;
+      case kind::simpson_elimination: return simpson_map(par_);
+      case kind::stormer_verlet: return stormer_verlet_map(par_);
+      case kind::yoshida: return yoshida_map(par_, weights_);
+      case kind::newmark: return newmark_map(par_);
+      case kind::runge_kutta: break;
+    }
     return partitioned_runge_kutta_map(par_, for_q_, for_p_);
   }
 
  private:
-  std::string name_;
+  enum class kind { simpson, simpson_elimination, stormer_verlet, yoshida, newmark, runge_kutta };
+  kind kind_;
   oscillator_parameters<Real> par_;
   butcher_tableau<Real> for_q_, for_p_;
   std::array<Real, 3> weights_{};
