@@ -4,7 +4,6 @@
 
 #include <simpson/verify/experiments.hpp>
 
-#include "schemes.hpp"
 
 #include <fmt/format.h>
 
@@ -40,12 +39,12 @@ cost_estimate estimate_cost(const experiment_settings& e) {
     const work_precision_settings& w = *e.work_precision;
     double units = 0;
     for (const precision& p : w.precisions) {
-      for (const std::string& scheme : w.schemes) {
+      for (const scheme_id scheme : w.schemes) {
         for (const long long N : w.meshes) {
           // The error run and the exact solution (cos, sin: ~10 steps' worth), then up to max_runs + 1
           // timed runs; each step of a step algorithm costs ~10 matrix steps per stage.
           const double steps = static_cast<double>(N) * static_cast<double>(w.periods);
-          units += steps * precision_factor(p) * (10 + 10 * detail::stages_of(scheme) * (2 + w.timing.max_runs));
+          units += steps * precision_factor(p) * (10 + 10 * traits_of(scheme).stages * (2 + w.timing.max_runs));
         }
       }
     }
@@ -73,6 +72,13 @@ cost_estimate estimate_cost(const experiment_settings& e) {
     c.lines.push_back(fmt::format("long_time: {:.3g} units", units));
   }
   return c;
+}
+
+std::string seconds_text(double units) {
+  const double seconds = units * seconds_per_cost_unit;
+  if (seconds < 120) return fmt::format("{:.2g} s", seconds);
+  if (seconds < 7200) return fmt::format("{:.2g} min", seconds / 60);
+  return fmt::format("{:.2g} h", seconds / 3600);
 }
 
 }  // namespace simpson::verify

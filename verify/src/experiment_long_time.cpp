@@ -1,11 +1,14 @@
 // The long_time section: energy drift over 1e7 steps in double (1e5 in mpfr), bounded oscillation
 // against drift, and the phase error against the frequency predicted by the exact characteristic roots.
+// Every figure, including the fitted slope, is computed in the run's precision.
 
 #include <simpson/verify/experiments.hpp>
 #include <simpson/verify/interruption.hpp>
+#include <simpson/verify/progress.hpp>
+#include <simpson/verify/scheme_style.hpp>
 
 #include "figures.hpp"
-#include "schemes.hpp"
+#include "guarded_run.hpp"  // growth_limit
 
 #include <simpson/energy.hpp>
 
@@ -17,12 +20,24 @@
 namespace simpson::verify {
 namespace {
 
-using detail::figure;
-using detail::figure_text;
+enum class monitored_energy { hamiltonian, discrete };
+
+struct long_run_case {
+  scheme_id scheme;
+  monitored_energy monitored;
+};
+
+/// Simpson watched through H_d (hamiltonien-discret), which it conserves; Newmark through H
+/// (HH-exact), which it conserves; RK4 through H, which it does not.
+constexpr std::array<long_run_case, 3> long_run_cases{{{scheme_id::simpson, monitored_energy::discrete},
+                                                       {scheme_id::newmark, monitored_energy::hamiltonian},
+                                                       {scheme_id::rk4, monitored_energy::hamiltonian}}};
+
+const char* energy_name(monitored_energy e) { return e == monitored_energy::discrete ? "H_d" : "H"; }
 
 struct long_run {
-  json row;
-  std::string data;  // window end time, window max drift, phase error measured, phase error predicted
+  table_row row;
+  series drift, phase_measured, phase_predicted;  // against t, one point per window
 };
 
 /// Runs `steps` steps of a scheme's matrix from y_0 = (mω, 0), m = 1, ω = 1, h = θ, in windows:
@@ -30,16 +45,14 @@ struct long_run {
 /// error (unwrapped angle of (q, p/(mω)) minus t) against the prediction j (φ − θ) with φ the
 /// argument of the eigenvalue of Φ (the exact characteristic roots).
 template <class Real>
-long_run run_long(const std::string& scheme, const std::string& monitored, const precision& prec, long long steps,
-                  long long windows, double theta) {
+long_run run_long(const long_run_case& c, const precision& prec, long long steps, long long windows, double theta) {
   using std::abs;
   using std::atan2;
-  using std::log;
   using std::sqrt;
   const oscillator_parameters<Real> par{Real(1), Real(1), Real(theta)};
-  const one_step_matrix<Real> phi = detail::scheme_runner<Real>(scheme, par).matrix();
+  const one_step_matrix<Real> phi = stepper<Real>(c.scheme, par).matrix();
   const auto monitor = [&](const phase_point<Real>& y) -> Real {
-    return monitored == "H_d" ? discrete_energy(par, y) : energy(par, y);
+    return c.monitored == monitored_energy::discrete ? discrete_energy(par, y) : energy(par, y);
   };
   // Eigenvalues of Φ: (tr ± sqrt(tr² − 4 det))/2; on the oscillator, complex with argument φ.
   const Real tr = phi.alpha + phi.delta, det = determinant(phi);
@@ -48,132 +61,140 @@ long_run run_long(const std::string& scheme, const std::string& monitored, const
   // invariant by det, so rounding alone makes the energy drift linearly by about |det − 1| per step.
   const rational exact_det_minus_one = detail::to_rational(phi.alpha) * detail::to_rational(phi.delta) -
                                        detail::to_rational(phi.beta) * detail::to_rational(phi.gamma) - 1;
+  const Real det_minus_one = detail::to_real<Real>(exact_det_minus_one);
   const phase_point<Real> y0{Real(1), Real(0)};
-  const Real E0 = monitor(y0);
   const long long window = std::max<long long>(1, steps / windows);
+  const std::string name = fmt::format("{}-{}", traits_of(c.scheme).name, energy_name(c.monitored));
+  const scheme_style style = style_of(c.scheme);
+  long_run out{{}, series(name, line_style::lines, style.color, style.point),
+               series(name + " measured", line_style::lines, style.color, style.point),
+               series(name + " predicted", line_style::dashed, style.color, style.point)};
   phase_point<Real> y = y0;
-  Real window_max(0), overall(0), angle_previous(0), unwrapped(0);
+  Real angle_previous(0), unwrapped(0), overall(0), measured_phase_error(0), predicted_phase_error(0);
   const Real two_pi = 2 * boost::math::constants::pi<Real>();
-  std::vector<double> times, maxima;
-  std::string data;
-  Real measured_phase_error(0), predicted_phase_error(0);
-  for (long long j = 1; j <= steps; ++j) {
-    if ((j & 0xFFFFF) == 0) throw_if_interrupted();  // every ~1e6 steps: a few ms in double
-    y = phi * y;
-    window_max = std::max(window_max, Real(abs(Real(monitor(y) - E0)) / E0));
-    // Unwrap the angle of (q, p): it advances by about θ per step (< π), so steps of the branch are detected.
-    const Real angle = atan2(y.q, y.p);
-    Real delta = angle - angle_previous;
-    while (delta > two_pi / 2) delta -= two_pi;
-    while (delta < -two_pi / 2) delta += two_pi;
-    unwrapped += delta;
-    angle_previous = angle;
-    if (j % window == 0 || j == steps) {
-      const Real t = Real(theta) * Real(j);
-      measured_phase_error = unwrapped - t;
-      predicted_phase_error = Real(j) * phase_per_step - t;
-      overall = std::max(overall, window_max);
-      times.push_back(static_cast<double>(t));
-      maxima.push_back(static_cast<double>(window_max));
-      data += fmt::format("{} {} {} {}\n", simpson::to_string(static_cast<double>(t), 6),
-                          detail::plot_value(figure(window_max)), detail::plot_value(figure(measured_phase_error)),
-                          detail::plot_value(figure(predicted_phase_error)));
-      window_max = 0;
+  std::vector<Real> times, maxima;
+  figure status = figure::text("ok");
+  const Real E0 = monitor(y0);
+  for (long long start = 0; start < steps && !status.is_fault(); start += window) {
+    const long long length = std::min(window, steps - start);
+    // The window's steps: the energy's largest change against E(y_0), the unwrapped angle, and
+    // growth past growth_limit times the amplitude (|q| + |p|/(mω) = 1 at y_0), where the run stops.
+    Real window_max(0);
+    phase_point<Real> z = y;
+    for (long long j = 1; j <= length; ++j) {
+      if ((j & 0xFFFFF) == 0) throw_if_interrupted();
+      z = phi * z;
+      if (abs(z.q) + abs(z.p) > detail::growth_limit) {
+        status = unstable_at(start + j);
+        break;
+      }
+      window_max = std::max(window_max, Real(abs(Real(monitor(z) - E0)) / E0));
+      // Unwrap the angle of (q, p): it advances by about θ per step (< π), so steps of the branch are detected.
+      const Real angle = atan2(z.q, z.p);
+      Real delta = angle - angle_previous;
+      while (delta > two_pi / 2) delta -= two_pi;
+      while (delta < -two_pi / 2) delta += two_pi;
+      unwrapped += delta;
+      angle_previous = angle;
     }
+    if (status.is_fault()) break;
+    y = z;
+    const long long j = start + length;
+    const Real t = Real(theta) * Real(j);
+    measured_phase_error = unwrapped - t;
+    predicted_phase_error = Real(j) * phase_per_step - t;
+    overall = std::max(overall, window_max);
+    times.push_back(t);
+    maxima.push_back(window_max);
+    out.drift.add(figure::of(t), figure::of(window_max));
+    out.phase_measured.add(figure::of(t), figure::of(Real(abs(measured_phase_error))));
+    out.phase_predicted.add(figure::of(t), figure::of(Real(abs(predicted_phase_error))));
+    progress_step("long_time", fmt::format("{} {} step {}", name, prec.name(), j), static_cast<double>(j) / static_cast<double>(steps));
   }
   // Drift: log-log slope of the per-window maxima against time over the second half (0: bounded,
   // 1: linear drift, 0.5: a random walk of round-off).
   std::vector<bool> use(times.size(), false);
   for (std::size_t k = times.size() / 2; k < times.size(); ++k) use[k] = true;
-  const double slope = detail::log_log_slope(times, maxima, use);
-  const double ratio = static_cast<double>(measured_phase_error / predicted_phase_error);
-  long_run out;
-  out.row = {{"scheme", scheme},
-             {"monitored", monitored},
-             {"precision", prec.name()},
-             {"steps", steps},
-             {"omega_h", theta},
-             {"max_relative_energy_change", figure(overall)},
-             {"last_window_max", figure(Real(maxima.empty() ? 0.0 : maxima.back()))},
-             {"drift_slope_log_log", figure(slope)},
-             {"rounded_matrix_det_minus_one", figure(static_cast<double>(exact_det_minus_one))},
-             {"drift_predicted_by_rounded_det", figure(std::abs(static_cast<double>(exact_det_minus_one)) * static_cast<double>(steps))},
-             {"numerical_frequency_over_omega", figure(Real(phase_per_step / Real(theta)))},
-             {"phase_error_measured", figure(measured_phase_error)},
-             {"phase_error_predicted", figure(predicted_phase_error)},
-             {"measured_over_predicted", figure(ratio)}};
-  out.data = data;
+  const bool ran = !status.is_fault();
+  out.row = {figure::text(std::string(traits_of(c.scheme).name)),
+             figure::text(energy_name(c.monitored)),
+             figure::text(prec.name()),
+             figure::integer(steps),
+             ran ? figure::of(overall) : status,
+             ran ? figure::of(maxima.empty() ? Real(0) : maxima.back()) : figure{},
+             ran ? figure::of(detail::log_log_slope(times, maxima, use)) : figure{},
+             figure::of(det_minus_one),
+             figure::of(Real(abs(det_minus_one) * Real(steps))),
+             figure::of(Real(phase_per_step / Real(theta))),
+             ran ? figure::of(measured_phase_error) : figure{},
+             ran ? figure::of(predicted_phase_error) : figure{},
+             ran ? figure::of(Real(measured_phase_error / predicted_phase_error)) : figure{},
+             status};
   return out;
 }
 
 }  // namespace
 
-section_output run_long_time(const long_time_settings& s) {
-  section_output out;
+section_result run_long_time(const long_time_settings& s) {
+  section_result out;
   out.name = "long_time";
-  std::string md = fmt::format(
-      "## Long runs: energy drift and phase error\n\nm = ω = 1, ωh = {}, y₀ = (mω, 0), steps of each scheme's one-step "
-      "matrix; {} windows. Drift slope: least-squares slope of log(per-window maximum of |E(y_j) − E(y₀)|/E(y₀)) against "
-      "log t over the second half (≈ 0 bounded oscillation, 1 linear drift, 0.5 round-off random walk). Phase error: the "
-      "unwrapped angle of (q, p/(mω)) minus ωt at the end, against (φ/h − ω)t with φ the argument of the exact "
-      "characteristic root of Φ.\n\n"
-      "The matrices are rounded to the working precision, so det Φ (computed exactly from the rounded entries) is 1 "
-      "only to within round-off: each step multiplies every quadratic invariant by det Φ, a drift of about "
-      "|det Φ − 1| per step that the table compares with the measured one. RK4's own det is 1 − θ⁶/72 + …\n\n"
-      "| scheme | energy | precision | steps | max rel. change | drift slope | det Φ − 1 (rounded Φ, exact) | "
-      "drift from det | ω_h/ω | phase error | predicted | ratio |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n",
-      simpson::to_string(s.omega_h, 3), s.windows);
-  json rows = json::array();
-  const std::vector<std::pair<std::string, std::string>> runs{{"simpson", "H_d"}, {"newmark", "H"}, {"rk4", "H"}};
-  std::vector<std::string> blocks;
+  out.title = "Long runs: energy drift and phase error";
+  out.conventions = {{"m", 1}, {"omega", 1}, {"omega_h", s.omega_h}, {"windows", s.windows}};
+  table rows{"rows", "",
+             fmt::format(
+                 "m = ω = 1, ωh = {}, y₀ = (mω, 0), steps of each scheme's one-step matrix; {} windows. Drift slope: "
+                 "least-squares slope of log(per-window maximum of |E(y_j) − E(y₀)|/E(y₀)) against log t over the second "
+                 "half (≈ 0 bounded oscillation, 1 linear drift, 0.5 round-off random walk). Phase error: the unwrapped "
+                 "angle of (q, p/(mω)) minus ωt at the end, against (φ/h − ω)t with φ the argument of the exact "
+                 "characteristic root of Φ.\n\n"
+                 "The matrices are rounded to the working precision, so det Φ (computed exactly from the rounded entries, "
+                 "then shown in the run's precision) is 1 only to within round-off: each step multiplies every quadratic "
+                 "invariant by det Φ, a drift of about |det Φ − 1| per step that the table compares with the measured one. "
+                 "RK4's own det is 1 − θ⁶/72 + …",
+                 simpson::to_string(s.omega_h, 3), s.windows),
+             {{"scheme", "scheme"},
+              {"monitored", "energy"},
+              {"precision", "precision"},
+              {"steps", "steps"},
+              {"max_relative_energy_change", "max rel. change"},
+              {"last_window_max", "last window max"},
+              {"drift_slope_log_log", "drift slope"},
+              {"rounded_matrix_det_minus_one", "det Φ − 1 (rounded Φ, exact)"},
+              {"drift_predicted_by_rounded_det", "drift from det"},
+              {"numerical_frequency_over_omega", "ω_h/ω", "", 8},
+              {"phase_error_measured", "phase error"},
+              {"phase_error_predicted", "predicted"},
+              {"measured_over_predicted", "ratio"},
+              {"status", "status"}}};
+  std::vector<panel> energy_panels, phase_panels;
   // No structured bindings here: clang 14 cannot capture them in the lambdas below.
   for (const std::pair<precision, long long>& run : {std::pair{precision::parse("double"), s.steps_double},
                                                       std::pair{precision::mpfr_digits(s.mpfr_digits), s.steps_mpfr}}) {
     const precision& prec = run.first;
     const long long steps = run.second;
-    std::string data = "# blocks: " + prec.name() + " simpson H_d, newmark H, rk4 H; columns t max_drift phase_measured phase_predicted\n";
-    for (const auto& scheme_and_energy : runs) {
-      const std::string& scheme = scheme_and_energy.first;
-      const std::string& monitored = scheme_and_energy.second;
-      const long_run r = detail::visit_floating(prec, [&](auto tag) {
+    panel energy_panel{"Energy drift, " + prec.name(), {"t (units of 1/omega)", true}, {"per-window max |E - E_0|/E_0", true}, {},
+                       "bottom right"};
+    panel phase_panel{"Phase error, " + prec.name(), {"t (units of 1/omega)", true}, {"|phase error| (rad)", true}, {},
+                      "top left"};
+    for (const long_run_case& c : long_run_cases) {
+      long_run r = detail::visit_floating(prec, [&](auto tag) {
         using Real = typename decltype(tag)::type;
-        return run_long<Real>(scheme, monitored, prec, steps, s.windows, s.omega_h);
+        return run_long<Real>(c, prec, steps, s.windows, s.omega_h);
       });
-      rows.push_back(r.row);
-      data += r.data + "\n\n";
-      const json& w = r.row;
-      md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", scheme, monitored, prec.name(), steps,
-                        figure_text(w["max_relative_energy_change"]), figure_text(w["drift_slope_log_log"]),
-                        figure_text(w["rounded_matrix_det_minus_one"]), figure_text(w["drift_predicted_by_rounded_det"]), figure_text(w["numerical_frequency_over_omega"]),
-                        figure_text(w["phase_error_measured"]), figure_text(w["phase_error_predicted"]),
-                        figure_text(w["measured_over_predicted"]));
+      rows.add(std::move(r.row));
+      energy_panel.curves.push_back(std::move(r.drift));
+      phase_panel.curves.push_back(std::move(r.phase_measured));
+      phase_panel.curves.push_back(std::move(r.phase_predicted));
     }
-    std::string tag = prec.name();
-    tag.erase(std::remove(tag.begin(), tag.end(), ':'), tag.end());
-    out.files.push_back({"long_time_" + tag + ".dat", data});
-    blocks.push_back(tag);
+    energy_panels.push_back(std::move(energy_panel));
+    phase_panels.push_back(std::move(phase_panel));
   }
-  out.data["conventions"] = {{"m", 1}, {"omega", 1}, {"omega_h", s.omega_h}, {"windows", s.windows}};
-  out.data["rows"] = rows;
-  const std::string names = "'Simpson-H_d Newmark-H RK4-H'";
-  std::string energy_plot = "names = " + names +
-                            "\nset multiplot layout 1,2\nset logscale xy\nset format y '10^{%L}'\nset format x '10^{%L}'\n"
-                            "set xlabel 't (units of 1/omega)'\nset ylabel 'per-window max |E - E_0|/E_0'\nset key bottom right\n";
-  std::string phase_plot = "names = " + names +
-                           "\nset multiplot layout 1,2\nset logscale x\nset format x '10^{%L}'\nset xlabel 't (units of 1/omega)'\n"
-                           "set ylabel 'phase error (rad)'\nset key top left\n";
-  for (const std::string& b : blocks) {
-    energy_plot += fmt::format("set title 'Energy drift, {}'\nplot for [i=0:2] 'long_time_{}.dat' index i u 1:($2 > 0 ? $2 : NaN) "
-                               "w l lc i+1 t word(names, i+1)\n", b, b);
-    phase_plot += fmt::format("set title 'Phase error, {}'\nplot for [i=0:2] 'long_time_{}.dat' index i u 1:3 w l lc i+1 "
-                              "t word(names, i+1).' measured', for [i=0:2] '' index i u 1:4 w l dt 2 lc i+1 "
-                              "t word(names, i+1).' predicted'\n", b, b);
-  }
-  out.plots.push_back({"long_time_energy", "Per-window maximum relative energy change against time (log-log)",
-                       energy_plot + "unset multiplot\n", 1100, 450});
-  out.plots.push_back({"long_time_phase", "Phase error against time, measured (solid) and predicted by the characteristic roots (dashed)",
-                       phase_plot + "unset multiplot\n", 1100, 450});
-  out.markdown = md + "\n![energy drift](long_time_energy.svg)\n\n![phase error](long_time_phase.svg)\n\n";
+  out.add(std::move(rows));
+  out.add(plot_description{"long_time_energy", "Per-window maximum relative energy change against time (log-log)",
+                           energy_panels, 2, 1100, 450});
+  out.add(plot_description{"long_time_phase",
+                           "|Phase error| against time (log-log), measured (solid) and predicted by the characteristic roots (dashed)",
+                           phase_panels, 2, 1100, 450});
   return out;
 }
 

@@ -3,9 +3,10 @@
 
 #include <simpson/verify/experiments.hpp>
 #include <simpson/verify/interruption.hpp>
+#include <simpson/verify/progress.hpp>
+#include <simpson/verify/scheme_style.hpp>
 
 #include "figures.hpp"
-#include "schemes.hpp"
 
 #include <simpson/energy.hpp>
 #include <simpson/exact_solution.hpp>
@@ -21,27 +22,14 @@
 namespace simpson::verify {
 namespace {
 
-using detail::figure;
-using detail::figure_text;
-
-/// A file-name form of a precision: "long double" → "long-double", "mpfr:50" → "mpfr50".
-std::string file_tag(const precision& p) {
-  std::string name;
-  for (const char c : p.name()) {
-    if (c == ' ') name += '-';
-    else if (c != ':') name += c;
-  }
-  return name;
-}
-
 struct measured_run {
-  json row;
-  double error = 0;   // max of the q error and the scaled p error, for the plots (NaN on a fault)
-  double seconds = 0; // minimum run time
+  table_row row;
+  figure error;    // max of the q error and the scaled p error (a fault when the run has one)
+  figure seconds;  // minimum run time
 };
 
 template <class Real>
-measured_run measure(const std::string& scheme, const precision& prec, long long N, long long periods,
+measured_run measure(scheme_id scheme, const precision& prec, long long N, long long periods,
                      const timing_policy& timing, const std::vector<phase_point<Real>>& exact) {
   using std::abs;
   using clock = std::chrono::steady_clock;
@@ -49,16 +37,12 @@ measured_run measure(const std::string& scheme, const precision& prec, long long
   const long long steps = N * periods;
   const oscillator_parameters<Real> par{Real(1), omega, step_size(Real(periods), steps)};
   const phase_point<Real> y0{Real(par.m() * omega), Real(0)};
-  const detail::scheme_runner<Real> runner(scheme, par);
-  json row{{"scheme", scheme}, {"precision", prec.name()}, {"N_per_period", N}, {"steps", steps}};
-  measured_run out;
-  out.error = std::numeric_limits<double>::quiet_NaN();
-  out.seconds = std::numeric_limits<double>::quiet_NaN();
+  const stepper<Real> runner(scheme, par);
 
   // The error run (not timed): maxima over every t_j against the exact solution.
   Real error_q(0), error_p(0);
   phase_point<Real> y = y0;
-  std::string status = "ok";
+  figure status = figure::text("ok");
   const Real amplitude = abs(y0.p) / (par.m() * omega);
   try {
     for (long long j = 1; j <= steps; ++j) {
@@ -67,33 +51,39 @@ measured_run measure(const std::string& scheme, const precision& prec, long long
       const Real eq = abs(Real(y.q - exact[static_cast<std::size_t>(j)].q));
       const Real ep = abs(Real(y.p - exact[static_cast<std::size_t>(j)].p)) / (par.m() * omega);
       if (!(eq == eq) || !(ep == ep)) {
-        status = "non-finite";
+        status = figure::fault("non-finite");
         break;
       }
-      if (eq > 1e6 * amplitude) {
-        status = "unstable";
+      if (eq > 1000000 * amplitude) {
+        status = unstable_at(j);
         break;
       }
       error_q = std::max(error_q, eq);
       error_p = std::max(error_p, ep);
     }
   } catch (const std::domain_error& e) {
-    status = std::string("failed: ") + e.what();
+    status = figure::fault(std::string("failed: ") + e.what());
   }
-  row["status"] = status;
-  if (status != "ok") {
-    out.row = row;
+  // At the round-off floor: within 100 N eps of zero (N steps, each rounding a few times).
+  const Real floor_level = 100 * Real(steps) * eps<Real>();
+  measured_run out{{figure::text(std::string(traits_of(scheme).name)), figure::text(prec.name()), figure::integer(N), figure::integer(steps), status},
+                   status, status};
+  if (status.is_fault()) {
+    for (int k = 0; k < 8; ++k) out.row.push_back(figure{});
     return out;
   }
-  const Real H0 = energy(par, y0);
-  row["error_q_max"] = figure(error_q);
-  row["error_p_max_over_m_omega"] = figure(error_p);
-  row["error_H_end_relative"] = figure(Real(abs(Real(energy(par, y) - H0)) / H0));
-  if (scheme == "simpson" || scheme == "simpson-elimination") {
+  const Real H0 = energy(par, y0), error = std::max(error_q, error_p);
+  out.row.push_back(figure::of(error_q));
+  out.row.push_back(figure::of(error_p));
+  out.row.push_back(figure::of(Real(abs(Real(energy(par, y) - H0)) / H0)));
+  if (scheme == scheme_id::simpson || scheme == scheme_id::simpson_elimination) {
     const Real Hd0 = discrete_energy(par, y0);
-    row["error_Hd_end_relative"] = figure(Real(abs(Real(discrete_energy(par, y) - Hd0)) / abs(Hd0)));
+    out.row.push_back(figure::of(Real(abs(Real(discrete_energy(par, y) - Hd0)) / abs(Hd0))));
+  } else {
+    out.row.push_back(figure{});
   }
-  out.error = static_cast<double>(std::max(error_q, error_p));
+  out.row.push_back(figure::flag(error <= floor_level));
+  out.error = figure::of(error);
 
   // Timing: one warm-up run, then runs until max_runs or max_seconds; each run is `steps` steps.
   const auto one_run = [&] {
@@ -114,40 +104,53 @@ measured_run measure(const std::string& scheme, const precision& prec, long long
   std::sort(seconds.begin(), seconds.end());
   const double median = seconds.size() % 2 ? seconds[seconds.size() / 2]
                                            : (seconds[seconds.size() / 2 - 1] + seconds[seconds.size() / 2]) / 2;
-  row["timing"] = {{"runs", seconds.size()}, {"min_seconds", seconds.front()}, {"median_seconds", median}};
-  out.seconds = seconds.front();
-  out.row = row;
+  out.row.push_back(figure::integer(static_cast<long long>(seconds.size())));
+  out.row.push_back(figure::of(seconds.front()));
+  out.row.push_back(figure::of(median));
+  out.seconds = figure::of(seconds.front());
   return out;
 }
 
 }  // namespace
 
-section_output run_work_precision(const work_precision_settings& s) {
-  section_output out;
+section_result run_work_precision(const work_precision_settings& s) {
+  section_result out;
   out.name = "work_precision";
-  json rows = json::array();
-  std::string csv =
-      "scheme,precision,N_per_period,steps,status,error_q_max,error_p_max_over_m_omega,error_H_end_relative,"
-      "error_Hd_end_relative,runs,min_seconds,median_seconds\n";
-  std::string md = "## Work against precision: error and run time\n\n";
-  md += fmt::format(
-      "m = 1, ω = 2π, {} period(s), y₀ = (mω, 0); N steps per period. Each scheme advances by its own step algorithm: "
-      "Simpson by its explicit map Φ₃ (the paper's form for the oscillator: one 2 × 2 product per step), "
-      "simpson-elimination by Section 6's elimination of the internal node at every step, Newmark as the implicit midpoint rule, "
-      "Gauss–Legendre and Lobatto IIIA–IIIB by solving their (linear) stage equations at every step, Störmer–Verlet, "
-      "Yoshida and RK4 explicitly. Errors: maxima over all t_j of |q_j − q(t_j)| and |p_j − p(t_j)|/(mω); the relative "
-      "error of H (and of H_d for Simpson) at the end. Time: one warm-up run, then runs until {} runs or {} s, "
-      "steady_clock; minimum and median per run. A run whose state is not finite, grows past 10⁶ times the amplitude, "
-      "or throws is recorded with its status. On this linear problem every scheme could be reduced to a 2 × 2 "
-      "matrix and cost the same per step; the peers run their general algorithms, as for any force.\n\n",
-      s.periods, s.timing.max_runs, simpson::to_string(s.timing.max_seconds, 3));
-  md += "| scheme | precision | N | error q | error p/(mω) | H rel. (end) | H_d rel. (end) | status | min time | median time |\n"
-        "|---|---|---|---|---|---|---|---|---|---|\n";
-  std::vector<std::string> panels_time, panels_n;
+  out.title = "Work against precision: error and run time";
+  out.conventions = {{"m", 1}, {"omega", "2 pi"}, {"periods", s.periods}, {"start", "y_0 = (m omega, 0)"},
+                     {"timing", {{"warm_up_runs", 1}, {"max_runs", s.timing.max_runs}, {"max_seconds", s.timing.max_seconds}}}};
+  table rows{"rows", "",
+             fmt::format(
+                 "m = 1, ω = 2π, {} period(s), y₀ = (mω, 0); N steps per period. Each scheme advances by its own step "
+                 "algorithm: Simpson by its explicit map Φ₃ (the paper's form for the oscillator: one 2 × 2 product per "
+                 "step), simpson-elimination by Section 6's elimination of the internal node at every step, Newmark as the "
+                 "implicit midpoint rule, Gauss–Legendre and Lobatto IIIA–IIIB by solving their (linear) stage equations at "
+                 "every step, Störmer–Verlet, Yoshida and RK4 explicitly. Errors: maxima over all t_j of |q_j − q(t_j)| and "
+                 "|p_j − p(t_j)|/(mω), computed in the run's precision; the relative error of H (and of H_d for Simpson) at "
+                 "the end. Time: one warm-up run, then runs until {} runs or {} s, steady_clock; minimum and median per run. "
+                 "A run whose state is not finite, grows past 10⁶ times the amplitude (unstable, with the step), or throws "
+                 "is recorded with its status. At the round-off floor: error ≤ 100 N eps. On this linear problem every "
+                 "scheme could be reduced to a 2 × 2 matrix and cost the same per step; the peers run their general "
+                 "algorithms, as for any force.",
+                 s.periods, s.timing.max_runs, simpson::to_string(s.timing.max_seconds, 3)),
+             {{"scheme", "scheme"},
+              {"precision", "precision"},
+              {"N_per_period", "N"},
+              {"steps", "steps"},
+              {"status", "status"},
+              {"error_q_max", "error q"},
+              {"error_p_max_over_m_omega", "error p/(mω)"},
+              {"error_H_end_relative", "H rel. (end)"},
+              {"error_Hd_end_relative", "H_d rel. (end)"},
+              {"at_round_off_floor", "at floor"},
+              {"runs", "runs", "runs", 3, true},
+              {"min_seconds", "min time", "s", 3, true},
+              {"median_seconds", "median time", "s", 3, true}}};
+  rows.csv_file = "work_precision.csv";
+  std::vector<panel> by_time, by_n;
   for (const precision& prec : s.precisions) {
-    const std::string tag = file_tag(prec);
-    std::string data = fmt::format("# {}: one block per scheme ({}); columns N min_seconds error\n", prec.name(),
-                                   fmt::join(s.schemes, ", "));
+    panel time_panel{prec.name(), {"run time (s, minimum of repeats)", true}, {"max error", true}, {}, "bottom left"};
+    panel n_panel{prec.name(), {"N (steps per period)", true}, {"max error", true}, {}, "bottom left"};
     detail::visit_floating(prec, [&](auto precision_tag) {
       using Real = typename decltype(precision_tag)::type;
       // The exact solution at every t_j of each N, shared by the schemes.
@@ -161,71 +164,39 @@ section_output run_work_precision(const work_precision_settings& s) {
         exact.reserve(static_cast<std::size_t>(steps) + 1);
         for (long long j = 0; j <= steps; ++j) exact.push_back(exact_solution(par, y0, Real(par.h() * Real(j))));
       }
-      for (const std::string& scheme : s.schemes) {
+      for (std::size_t k = 0; k < s.schemes.size(); ++k) {
+        const scheme_id scheme = s.schemes[k];
+        const scheme_style style = style_of(scheme);
+        series by_seconds{std::string(traits_of(scheme).name), style.line, style.color, style.point};
+        series by_mesh = by_seconds;
         for (const long long N : s.meshes) {
-          const long long steps = N * s.periods;
-          const std::vector<phase_point<Real>>& exact = exact_by_N[N];
-          const measured_run m =
-              measure<Real>(scheme, prec, N, s.periods, s.timing, exact);
-          const json& r = m.row;
-          const auto get = [&](const char* key) { return r.contains(key) ? r[key] : json(""); };
-          const json t = r.contains("timing") ? r["timing"] : json::object();
-          csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{}\n", scheme, prec.name(), N, r["steps"].get<long long>(),
-                             r["status"].get<std::string>(), detail::figure_text(get("error_q_max")),
-                             detail::figure_text(get("error_p_max_over_m_omega")), detail::figure_text(get("error_H_end_relative")),
-                             detail::figure_text(get("error_Hd_end_relative")), t.value("runs", 0),
-                             t.contains("min_seconds") ? simpson::to_string(t["min_seconds"].get<double>(), 3) : "",
-                             t.contains("median_seconds") ? simpson::to_string(t["median_seconds"].get<double>(), 3) : "");
-          md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", scheme, prec.name(), N,
-                            detail::figure_text(get("error_q_max")), detail::figure_text(get("error_p_max_over_m_omega")),
-                            detail::figure_text(get("error_H_end_relative")),
-                            r.contains("error_Hd_end_relative") ? detail::figure_text(r["error_Hd_end_relative"]) : "",
-                            r["status"].get<std::string>(),
-                            t.contains("min_seconds") ? simpson::to_string(t["min_seconds"].get<double>(), 3) + " s" : "",
-                            t.contains("median_seconds") ? simpson::to_string(t["median_seconds"].get<double>(), 3) + " s" : "");
-          data += fmt::format("{} {} {}\n", N, m.seconds == m.seconds ? simpson::to_string(m.seconds, 6) : "NaN",
-                              m.error == m.error ? simpson::to_string(m.error, 6) : "NaN");
-          // At the round-off floor: within 100 N eps of zero (N steps, each rounding a few times).
-          const double floor_level = 100.0 * static_cast<double>(steps) * static_cast<double>(eps<Real>());
-          json row = r;
-          row["at_round_off_floor"] = m.error == m.error && m.error <= floor_level;
-          rows.push_back(row);
+          measured_run m = measure<Real>(scheme, prec, N, s.periods, s.timing, exact_by_N[N]);
+          progress_step("work_precision", fmt::format("{} {} N = {}", traits_of(scheme).name, prec.name(), N));
+          by_seconds.add(m.seconds, m.error);
+          by_mesh.add(figure::integer(N), m.error);
+          rows.add(std::move(m.row));
         }
-        data += "\n\n";
+        time_panel.curves.push_back(by_seconds);
+        n_panel.curves.push_back(by_mesh);
       }
+      series floor_line{"round-off floor 100 N eps", line_style::dashed, 8};
+      floor_line.reference = true;
+      for (const long long N : s.meshes) {
+        floor_line.add(figure::integer(N), figure::of(Real(100 * Real(N * s.periods) * eps<Real>())));
+      }
+      n_panel.curves.push_back(floor_line);
     });
-    out.files.push_back({"work_precision_" + tag + ".dat", data});
-    const std::string floor_line =
-        fmt::format("100*x*{}", simpson::to_string(std::stod(prec.epsilon()), 3));  // 100 N eps
-    panels_time.push_back(fmt::format(
-        "set title '{}'\nset xlabel 'run time (s, minimum of repeats)'\nset ylabel 'max error'\n"
-        "plot for [i=0:{}] 'work_precision_{}.dat' index i u 2:3 w lp lc i+1 pt 7 t word(names, i+1)\n",
-        prec.name(), s.schemes.size() - 1, tag));
-    panels_n.push_back(fmt::format(
-        "set title '{}'\nset xlabel 'N (steps per period)'\nset ylabel 'max error'\n"
-        "plot for [i=0:{}] 'work_precision_{}.dat' index i u 1:3 w lp lc i+1 pt 7 t word(names, i+1), "
-        "{} w l dt 2 lc rgb 'gray' t 'round-off floor 100 N eps'\n",
-        prec.name(), s.schemes.size() - 1, tag, floor_line));
+    by_time.push_back(time_panel);
+    by_n.push_back(n_panel);
   }
-  out.files.push_back({"work_precision.csv", csv});
-  const std::size_t columns = std::min<std::size_t>(3, s.precisions.size());
-  const std::size_t rows_of_panels = (s.precisions.size() + columns - 1) / columns;
-  const std::string common = fmt::format(
-      "names = '{}'\nset logscale xy\nset format y '10^{{%L}}'\nset format x '10^{{%L}}'\nset key bottom left font ',8'\n"
-      "set multiplot layout {},{}\n",
-      fmt::join(s.schemes, " "), rows_of_panels, columns);
-  const int width = 420 * static_cast<int>(columns), height = 340 * static_cast<int>(rows_of_panels);
-  out.plots.push_back({"work_precision_time", "Maximum error against run time (log-log), one panel per precision",
-                       common + fmt::format("{}", fmt::join(panels_time, "")) + "unset multiplot\n", width, height});
-  out.plots.push_back({"work_precision_n",
-                       "Maximum error against N, one panel per precision; dashed: the round-off floor 100 N eps",
-                       common + "set format x '%g'\n" + fmt::format("{}", fmt::join(panels_n, "")) + "unset multiplot\n",
-                       width, height});
-  out.data["conventions"] = {{"m", 1}, {"omega", "2 pi"}, {"periods", s.periods}, {"start", "y_0 = (m omega, 0)"},
-                             {"timing", {{"warm_up_runs", 1}, {"max_runs", s.timing.max_runs}, {"max_seconds", s.timing.max_seconds}}}};
-  out.data["rows"] = rows;
-  out.markdown = md + "\n![error against run time](work_precision_time.svg)\n\n![error against N](work_precision_n.svg)\n\n" +
-                 "Data: work_precision.csv (every metric, one row per scheme, precision and N).\n\n";
+  out.add(std::move(rows));
+  const int columns = static_cast<int>(std::min<std::size_t>(3, s.precisions.size()));
+  const int panel_rows = static_cast<int>((s.precisions.size() + static_cast<std::size_t>(columns) - 1) / static_cast<std::size_t>(columns));
+  out.add(plot_description{"work_precision_time", "Maximum error against run time (log-log), one panel per precision", by_time,
+                           columns, 440 * columns, 360 * panel_rows});
+  out.add(plot_description{"work_precision_n",
+                           "Maximum error against N, one panel per precision; dashed: the round-off floor 100 N eps", by_n,
+                           columns, 440 * columns, 360 * panel_rows});
   return out;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
-// Figures of the experiments as they enter a report: checked finite first, so that an overflow or a
-// NaN becomes a named entry and never a bare nan in a normal-looking table.
+// Numerical helpers the experiment sections share: a log-log slope, the floating precisions, exact
+// rationals of floating values, decimal strings into a Real. Figures themselves are figure.hpp's.
 
 #include <simpson/precision.hpp>
 #include <simpson/verify/claim.hpp>
@@ -14,59 +14,22 @@
 
 namespace simpson::verify::detail {
 
-/// "ok", or the fault of a value: "overflow" (±inf, or beyond double's range), "non-finite" (NaN),
-/// "underflow" (non-zero but below double's smallest normal number, so not reportable as a double).
+/// A least-squares slope of log(y) against log(x) over the points flagged `use` (NaN when fewer
+/// than 2), computed in Real: the logarithms of values far below double's range are ordinary numbers.
 template <class Real>
-std::string fault_of(const Real& v) {
-  using std::isinf;
-  using std::isnan;
-  using std::abs;
-  if (isnan(v)) return "non-finite";
-  if (isinf(v)) return "overflow";
-  if (abs(v) > Real(std::numeric_limits<double>::max())) return "overflow";
-  if (v != 0 && abs(v) < Real(std::numeric_limits<double>::min())) return "underflow";
-  return "ok";
-}
-
-/// A JSON number when the value is finite and within double's range, else its fault as a string.
-template <class Real>
-json figure(const Real& v) {
-  const std::string fault = fault_of(v);
-  if (fault != "ok") return fault;
-  return static_cast<double>(v);
-}
-
-/// The same for tables: 3 significant digits, or the fault.
-template <class Real>
-std::string figure_text(const Real& v) {
-  const std::string fault = fault_of(v);
-  return fault == "ok" ? simpson::to_string(static_cast<double>(v), 3) : fault;
-}
-
-inline std::string figure_text(const json& v) {
-  if (v.is_number()) return simpson::to_string(v.get<double>(), 3);
-  if (v.is_string()) return v.get<std::string>();
-  return v.dump();
-}
-
-/// Text for a data file read by gnuplot: the number, or "NaN" (gnuplot skips it) for a fault.
-inline std::string plot_value(const json& v) {
-  return v.is_number() ? simpson::to_string(v.get<double>(), 6) : std::string("NaN");
-}
-
-/// A least-squares slope of log(y) against log(x) over the points flagged `use` (NaN when fewer than 2).
-inline double log_log_slope(const std::vector<double>& x, const std::vector<double>& y, const std::vector<bool>& use) {
-  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+Real log_log_slope(const std::vector<Real>& x, const std::vector<Real>& y, const std::vector<bool>& use) {
+  using std::log;
+  Real n(0), sx(0), sy(0), sxx(0), sxy(0);
   for (std::size_t k = 0; k < x.size(); ++k) {
     if (!use[k] || !(x[k] > 0) || !(y[k] > 0)) continue;
-    const double lx = std::log(x[k]), ly = std::log(y[k]);
+    const Real lx = log(x[k]), ly = log(y[k]);
     n += 1;
     sx += lx;
     sy += ly;
     sxx += lx * lx;
     sxy += lx * ly;
   }
-  if (n < 2) return std::numeric_limits<double>::quiet_NaN();
+  if (n < 2) return std::numeric_limits<Real>::quiet_NaN();
   return (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
 
@@ -102,6 +65,18 @@ rational to_rational(const Real& v) {
     return r;
   } else {
     return v.template convert_to<rational>();
+  }
+}
+
+/// A rational rounded to Real at the working precision: numerator and denominator are each rounded
+/// once and divided (Boost's convert_to would give a variable-precision mpfr the precision needed
+/// to hold the rational exactly, which for a long run's det − 1 is millions of digits).
+template <class Real>
+Real to_real(const rational& r) {
+  if constexpr (std::is_floating_point_v<Real>) {
+    return r.template convert_to<Real>();
+  } else {
+    return Real(boost::multiprecision::numerator(r).str()) / Real(boost::multiprecision::denominator(r).str());
   }
 }
 

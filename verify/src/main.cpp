@@ -4,6 +4,7 @@
 
 #include <simpson/verify/interruption.hpp>
 #include <simpson/verify/ledger.hpp>
+#include <simpson/verify/progress.hpp>
 #include <simpson/verify/report.hpp>
 #include <simpson/verify/scene.hpp>
 
@@ -12,6 +13,8 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <memory>
+#include <unistd.h>
 #include <csignal>
 #include <cstdio>
 #include <exception>
@@ -23,6 +26,26 @@ namespace {
 using namespace simpson::verify;
 
 extern "C" void record_signal(int signal) { interruption_signal().store(signal); }
+
+/// Progress of long sections on stderr, at most two updates a second: on a terminal one line
+/// rewritten in place with a percentage, otherwise plain lines.
+void install_progress() {
+  using clock = std::chrono::steady_clock;
+  const bool terminal = ::isatty(STDERR_FILENO) != 0;
+  auto last = std::make_shared<clock::time_point>(clock::now());
+  set_progress_sink([terminal, last](const std::string& section, const std::string& what, double fraction) {
+    const auto now = clock::now();
+    if (now - *last < std::chrono::milliseconds(500)) return;
+    *last = now;
+    const std::string percent = fraction >= 0 ? fmt::format(" {:3.0f}%", 100 * fraction) : "";
+    if (terminal) {
+      fmt::print(stderr, "\r\033[K[{}]{} {}", section, percent, what);
+    } else {
+      fmt::print(stderr, "[{}]{} {}\n", section, percent, what);
+    }
+    std::fflush(stderr);
+  });
+}
 
 /// The exit code of a run stopped by a signal: 128 + its number (130 for SIGINT, 143 for SIGTERM).
 int interrupted_exit(const interrupted& e) {
@@ -68,7 +91,7 @@ int main(int argc, char** argv) {
   app.add_option("--seed", seed_text, "seed of the random samples (default: the scene's, printed in the report)");
   app.add_option("--samples", samples_text, "random samples per numeric recheck and precision, 1..10000");
   app.add_flag("--allow-expensive", allow_expensive,
-               fmt::format("run a scene whose estimated cost exceeds the budget ({:.0e} double-step units)", default_cost_budget));
+               fmt::format("run a scene whose estimated cost exceeds the budget ({:.3g} double-step units, about {})", default_cost_budget, seconds_text(default_cost_budget)));
   app.add_flag("--long", long_run, "long_time section: 1e9 steps in double instead of the scene's (implies --allow-expensive)");
   app.add_flag("--list-claims", want_claims, "list the claims of the ledger and exit");
   app.add_flag("--list-scenes", want_scenes, "list the embedded scenes and exit");
@@ -131,9 +154,10 @@ int main(int argc, char** argv) {
     if (cost.units > default_cost_budget && !allow_expensive) {
       std::string parts;
       for (const std::string& line : cost.lines) parts += (parts.empty() ? "" : "; ") + line;
-      throw std::invalid_argument(fmt::format("scene '{}': estimated cost {:.3g} units exceeds the budget {:.3g} ({}); "
-                                              "pass --allow-expensive to run it anyway",
-                                              s.name, cost.units, default_cost_budget, parts));
+      throw std::invalid_argument(fmt::format("scene '{}': estimated cost {:.3g} units (about {}) exceeds the budget {:.3g} "
+                                              "units (about {}) ({}); pass --allow-expensive to run it anyway",
+                                              s.name, cost.units, seconds_text(cost.units), default_cost_budget,
+                                              seconds_text(default_cost_budget), parts));
     }
     out = out_dir.empty() ? std::filesystem::path("reports/out") / s.name : std::filesystem::path(out_dir);
     prepare_output_directory(out);
@@ -146,8 +170,9 @@ int main(int argc, char** argv) {
   }
 
   if (s.experiments.any()) {
-    fmt::print(stderr, "experiments: estimated cost {:.3g} units (budget {:.3g})\n", cost.units,
-               default_cost_budget);
+    fmt::print(stderr, "experiments: estimated cost {:.3g} units, about {} (budget {:.3g} units, about {})\n", cost.units,
+               seconds_text(cost.units), default_cost_budget, seconds_text(default_cost_budget));
+    install_progress();
   }
   std::signal(SIGINT, record_signal);
   std::signal(SIGTERM, record_signal);
@@ -156,7 +181,10 @@ int main(int argc, char** argv) {
     const run_record record = run(s, [&](std::size_t k, std::size_t n, const claim& c, const claim_outcome* done) {
       if (!done) return;
       fmt::print(stderr, "[{:>2}/{}] {:<34} {:<8} {:.2f} s\n", k + 1, n, c.id, to_string(done->result.outcome), done->seconds);
-    }, [](const std::string& section, double seconds) { fmt::print(stderr, "[section] {:<34} {:.2f} s\n", section, seconds); });
+    }, [](const std::string& section, double seconds) {
+      if (::isatty(STDERR_FILENO)) fmt::print(stderr, "\r\033[K");
+      fmt::print(stderr, "[section] {:<34} {:.2f} s\n", section, seconds);
+    });
     throw_if_interrupted();
     const plot_outcome plots = write_report_files(out, record);
     for (const std::string& failure : plots.failures) fmt::print(stderr, "simpson-verify: warning: plot not drawn: {}\n", failure);

@@ -24,14 +24,6 @@ std::vector<std::string> precision_names(const std::vector<precision>& precision
   return names;
 }
 
-/// Markdown table cells must not contain '|' or newlines.
-std::string cell(std::string text) {
-  for (char& c : text) {
-    if (c == '|') c = '/';
-    if (c == '\n') c = ' ';
-  }
-  return text;
-}
 
 }  // namespace
 
@@ -51,8 +43,8 @@ std::string summary_line(const run_record& r) {
 
 plot_outcome all_plots_drawn(const run_record& r) {
   plot_outcome p;
-  for (const section_output& section : r.sections) {
-    for (const plot_spec& plot : section.plots) p.drawn.push_back(plot.name);
+  for (const section_result& section : r.sections) {
+    for (const plot_spec& plot : section_plots(section)) p.drawn.push_back(plot.name);
   }
   return p;
 }
@@ -80,13 +72,10 @@ json report_json(const run_record& r, const plot_outcome& plots) {
   }
   json experiments = json::object(), section_timing = json::object(), plot_list = json::array();
   for (std::size_t k = 0; k < r.sections.size(); ++k) {
-    const section_output& section = r.sections[k];
-    experiments[section.name] = section.data;
-    json files = json::array();
-    for (const data_file& f : section.files) files.push_back(f.name);
-    experiments[section.name]["files"] = files;
+    const section_result& section = r.sections[k];
+    experiments[section.name] = section_json(section);
     section_timing[section.name] = r.section_seconds[k];
-    for (const plot_spec& plot : section.plots) {
+    for (const plot_spec& plot : section_plots(section)) {
       const bool drawn = std::find(plots.drawn.begin(), plots.drawn.end(), plot.name) != plots.drawn.end();
       plot_list.push_back({{"name", plot.name},
                            {"section", section.name},
@@ -108,6 +97,7 @@ json report_json(const run_record& r, const plot_outcome& plots) {
               {"experiments", experiments},
               {"plots", plot_list},
               {"plots_not_drawn", plots.failures},
+              {"files", report_file_names(r, plots)},
               {"paper_configuration", r.paper_configuration},
               {"environment", r.environment},
               {"timing", {{"unit", "seconds"}, {"claims", timing}, {"sections", section_timing}}}};
@@ -130,7 +120,7 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
   for (const claim_outcome& o : r.outcomes) {
     const claim& c = *o.checked;
     const std::string verdict_text = to_string(o.result.outcome) + (o.result.outcome == o.expected ? "" : " **(unexpected)**");
-    md += fmt::format("| [{}](#{}) | {} | {} | {} | {} | {} |\n", c.id, c.id, c.section, cell(c.equation), verdict_text,
+    md += fmt::format("| [{}](#{}) | {} | {} | {} | {} | {} |\n", c.id, c.id, c.section, markdown_cell(c.equation), verdict_text,
                       to_string(o.expected), join(c.methods, ", "));
   }
 
@@ -166,10 +156,10 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
   if (!r.sections.empty()) {
     md += "\n# Experiments\n\n";
     std::vector<std::string> names;
-    for (const section_output& section : r.sections) names.push_back(section.name);
+    for (const section_result& section : r.sections) names.push_back(section.name);
     md += "Sections computed for this scene: " + join(names, ", ") +
           ". Data files (CSV, .dat) and gnuplot scripts (.gp) are beside this report; each plot is an SVG and a PNG.\n\n";
-    for (const section_output& section : r.sections) md += section.markdown;
+    for (const section_result& section : r.sections) md += section_markdown(section);
     if (!plots.failures.empty()) {
       md += "**Plots not drawn:** " + join(plots.failures, "; ") + "\n\n";
     }
@@ -187,21 +177,75 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
   return md;
 }
 
+bool holds_only_a_report(const std::filesystem::path& dir) {
+  std::vector<std::string> listed;
+  std::ifstream in(dir / "report.json");
+  bool has_list = false;
+  if (in) {
+    try {
+      const json j = json::parse(in);
+      if (j.value("tool", "") != "simpson-verify") return false;
+      if (j.contains("files")) {
+        has_list = true;
+        for (const json& f : j["files"]) listed.push_back(f.get<std::string>());
+      }
+    } catch (const json::exception&) {
+      return false;
+    }
+  }
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    if (!entry.is_regular_file()) return false;
+    if (has_list) {
+      if (std::find(listed.begin(), listed.end(), name) == listed.end() && name != "report.json") return false;
+      continue;
+    }
+    // A report from before the file list: report.* and section files only.
+    const std::string ext = entry.path().extension().string();
+    const bool report_file = name.rfind("report.", 0) == 0;
+    if (!in || !(report_file || ext == ".csv" || ext == ".dat" || ext == ".gp" || ext == ".svg" || ext == ".png")) return false;
+  }
+  return true;
+}
+
 void prepare_output_directory(const std::filesystem::path& dir) {
   std::error_code error;
-  std::filesystem::create_directories(dir, error);
-  if (error || !std::filesystem::is_directory(dir)) {
-    throw std::invalid_argument("--out '" + dir.string() + "': cannot create the directory" +
-                                (error ? " (" + error.message() + ")" : std::string()));
+  const auto refuse = [&](const std::string& why) {
+    throw std::invalid_argument("--out '" + dir.string() + "': " + why);
+  };
+  if (std::filesystem::exists(dir, error)) {
+    if (!std::filesystem::is_directory(dir)) refuse("cannot create the directory (Not a directory)");
+    if (!std::filesystem::is_empty(dir, error) && !holds_only_a_report(dir)) {
+      refuse("holds files that are not a simpson-verify report; choose an empty or new directory (nothing was deleted)");
+    }
   }
-  const std::filesystem::path probe = dir / (".write-test." + std::to_string(::getpid()));
-  std::ofstream out(probe);
-  if (!out) {
-    throw std::invalid_argument("--out '" + dir.string() + "': cannot write there (" + std::strerror(errno) + ")");
+  // The report is staged beside `dir`: its parent must exist (or be creatable) and be writable.
+  std::filesystem::path parent = std::filesystem::absolute(dir, error).parent_path();
+  while (!parent.empty() && !std::filesystem::exists(parent, error)) parent = parent.parent_path();
+  if (parent.empty() || !std::filesystem::is_directory(parent, error)) {
+    refuse("cannot create the directory (Not a directory)");
   }
-  out.close();
+  // A probe directory, created and removed: permission bits alone do not tell (root, /proc).
+  const std::filesystem::path probe = parent / (".simpson-verify-probe." + std::to_string(::getpid()));
+  if (!std::filesystem::create_directory(probe, error)) {
+    refuse("cannot create the directory (" + (error ? error.message() : std::string("exists")) + ")");
+  }
   std::filesystem::remove(probe, error);
 }
 
+std::vector<std::string> report_file_names(const run_record& r, const plot_outcome& plots) {
+  std::vector<std::string> names{"report.json", "report.md", "report.html"};
+  for (const section_result& section : r.sections) {
+    for (const data_file& f : section_files(section)) names.push_back(f.name);
+    for (const plot_spec& plot : section_plots(section)) {
+      names.push_back(plot.name + ".gp");
+      if (std::find(plots.drawn.begin(), plots.drawn.end(), plot.name) != plots.drawn.end()) {
+        names.push_back(plot.name + ".svg");
+        names.push_back(plot.name + ".png");
+      }
+    }
+  }
+  return names;
+}
 
 }  // namespace simpson::verify

@@ -130,28 +130,25 @@ std::string render_html(const std::string& markdown, const std::filesystem::path
 }  // namespace
 
 plot_outcome write_report_files(const std::filesystem::path& dir, const run_record& r) {
-  const std::filesystem::path staging = dir / (".staging." + std::to_string(::getpid()));
+  std::filesystem::path target = std::filesystem::absolute(dir).lexically_normal();
+  if (target.filename().empty()) target = target.parent_path();
+  const std::string tag = "." + target.filename().string() + "." + std::to_string(::getpid());
+  const std::filesystem::path staging = target.parent_path() / (tag + ".staging"), previous = target.parent_path() / (tag + ".old");
   std::error_code ignored;
+  std::filesystem::create_directories(target.parent_path());
   std::filesystem::remove_all(staging, ignored);
   std::filesystem::create_directories(staging);
   plot_outcome plots;
   try {
-    std::vector<std::string> names;
-    for (const section_output& section : r.sections) {
-      for (const data_file& f : section.files) {
-        write_file(staging / f.name, f.content);
-        names.push_back(f.name);
-      }
+    for (const section_result& section : r.sections) {
+      for (const data_file& f : section_files(section)) write_file(staging / f.name, f.content);
     }
-    for (const section_output& section : r.sections) {
-      for (const plot_spec& plot : section.plots) {
+    for (const section_result& section : r.sections) {
+      for (const plot_spec& plot : section_plots(section)) {
         throw_if_interrupted();
         const std::string failure = draw(staging, plot);
-        names.push_back(plot.name + ".gp");
         if (failure.empty()) {
           plots.drawn.push_back(plot.name);
-          names.push_back(plot.name + ".svg");
-          names.push_back(plot.name + ".png");
         } else {
           plots.failures.push_back(failure);
           for (const char* ext : {".svg", ".png"}) std::filesystem::remove(staging / (plot.name + ext), ignored);
@@ -162,13 +159,19 @@ plot_outcome write_report_files(const std::filesystem::path& dir, const run_reco
     write_file(staging / "report.json", report_json(r, plots).dump(2) + "\n");
     write_file(staging / "report.md", md);
     write_file(staging / "report.html", render_html(md, staging, "simpson-verify report: scene " + r.run_scene.name));
-    names.insert(names.end(), {"report.json", "report.md", "report.html"});
     throw_if_interrupted();
-    // Everything is written: move it into place (renames within one directory tree).
-    for (const std::string& name : names) {
-      if (std::filesystem::exists(staging / name)) std::filesystem::rename(staging / name, dir / name);
+    // Everything is written: the staged directory replaces the previous report whole.
+    if (std::filesystem::exists(target)) {
+      if (!std::filesystem::is_empty(target) && !holds_only_a_report(target)) {
+        throw std::invalid_argument("--out '" + dir.string() +
+                                    "': files that are not a simpson-verify report appeared during the run; nothing was replaced");
+      }
+      std::filesystem::rename(target, previous);
+      std::filesystem::rename(staging, target);
+      std::filesystem::remove_all(previous, ignored);
+    } else {
+      std::filesystem::rename(staging, target);
     }
-    std::filesystem::remove_all(staging, ignored);
   } catch (...) {
     std::filesystem::remove_all(staging, ignored);
     throw;

@@ -112,21 +112,19 @@ class section_reader {
     }
     return out;
   }
-  std::vector<std::string> schemes(const std::string& key) const {
+  std::vector<scheme_id> schemes(const std::string& key) const {
     const nlohmann::json& v = object_[key];
-    if (v.is_string() && v.get<std::string>() == "all") return scheme_names();
+    if (v.is_string() && v.get<std::string>() == "all") return all_schemes();
     if (!v.is_array() || v.empty()) fail(origin_, field(key) + " must be \"all\" or a non-empty list of scheme names");
-    std::vector<std::string> out;
+    std::vector<scheme_id> out;
     for (std::size_t k = 0; k < v.size(); ++k) {
       const std::string name = field(key) + "[" + std::to_string(k) + "]";
       if (!v[k].is_string()) fail(origin_, name + " must be a string");
-      const std::string scheme = v[k].get<std::string>();
-      if (std::find(scheme_names().begin(), scheme_names().end(), scheme) == scheme_names().end()) {
-        std::string known;
-        for (const std::string& n : scheme_names()) known += (known.empty() ? "" : ", ") + n;
-        fail(origin_, name + ": unknown scheme '" + scheme + "' (expected " + known + ")");
+      try {
+        out.push_back(find_scheme(v[k].get<std::string>()).id);
+      } catch (const std::invalid_argument& e) {
+        fail(origin_, name + ": " + e.what());
       }
-      out.push_back(scheme);
     }
     return out;
   }

@@ -6,6 +6,7 @@
 
 #include "claim_support.hpp"
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -114,8 +115,19 @@ inline std::string omega_h_text(const positive_root& r) {
   return (outer == 1 ? "" : std::to_string(outer) + " ") + "sqrt(" + std::to_string(inner) + ")";
 }
 
+/// An interval of x = ω²h² between consecutive positive roots of Δ (the last one unbounded).
+struct stability_band {
+  rational x_from;                  // 0, or an exact root
+  std::optional<positive_root> to;  // the next root; none for +infinity
+  std::string omega_h_from, omega_h_to;
+  bool discriminant_negative = false;
+  bool stable = false;
+};
+
 struct stability_report {
   json evidence = json::object();
+  std::vector<positive_root> roots;  // positive roots of Δ in x, increasing
+  std::vector<stability_band> bands;
   /// Open intervals of x > 0 on which Δ < 0 (two simple roots on the unit circle); an empty
   /// upper end means +infinity.
   std::vector<std::pair<std::string, std::string>> stable_intervals;
@@ -171,7 +183,10 @@ stability_report analyse_three_term_scheme(Residual&& residual) {
                      {"sign_of_discriminant", value < 0 ? "negative" : "positive"},
                      {"stable", stable}});
     if (stable) report.stable_intervals.emplace_back(lo_text, hi);
+    report.bands.push_back({lo, k + 1 < cuts.size() ? std::optional<positive_root>(roots[k]) : std::nullopt,
+                            bands.back()["omega_h_from"], bands.back()["omega_h_to"], value < 0, stable});
   }
+  report.roots = roots;
   e["bands"] = bands;
   e["at_each_root"] = roots.empty() ? "no positive root"
                                     : "double root r = -b/(2a) of modulus 1: q_j = (A + B j) r^j grows linearly, unstable";

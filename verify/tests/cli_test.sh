@@ -87,7 +87,7 @@ for sig in INT TERM; do
   wait "$pid"
   got=$?
   want=$([ "$sig" = INT ] && echo 130 || echo 143)
-  if [ "$got" != "$want" ] || ! grep -q "interrupted (SIG$sig)" "$work/err" || [ -n "$(ls -A "$work/stopped-$sig")" ]; then
+  if [ "$got" != "$want" ] || ! grep -q "interrupted (SIG$sig)" "$work/err" || [ -n "$(ls -A "$work/stopped-$sig" 2>/dev/null)" ]; then
     echo "FAIL SIG$sig: exit $got (expected $want), stderr: $(tail -1 "$work/err"), files: $(ls -A "$work/stopped-$sig")"
     failures=$((failures + 1))
   else
@@ -113,6 +113,31 @@ fi
 for f in report.json report.md report.html table1.csv work_precision.csv figure1.svg figure1.png work_precision_time.svg; do
   [ -s "$work/quick/$f" ] || { echo "FAIL quick: $f missing or empty"; failures=$((failures + 1)); }
 done
+fail() { echo "FAIL $1"; failures=$((failures + 1)); }
+# --out: a second, smaller run into the same directory replaces the report whole, so no file of
+# the first run survives; no staging directory is left beside it.
+echo '{"name": "small", "stability": {"precisions": ["double"], "omega_h": [1], "masses": [1], "stiff_omegas": [1], "steps": 10}}' >"$work/small.json"
+check "second run into the same --out" 0 --scene "$work/small.json" --out "$work/quick"
+for f in figure1.png work_precision.csv table1.csv long_time_energy.svg; do
+  [ -e "$work/quick/$f" ] && fail "second run: $f of the first run survived"
+done
+[ -f "$work/quick/stability_extreme.png" ] || fail "second run: its own plot missing"
+ls -A "$work" | grep -q 'staging\|\.old$' && fail "second run: staging left behind: $(ls -A "$work" | grep 'staging\|old')"
+# A directory holding files that are not a report is refused, and nothing in it is touched.
+mkdir "$work/notes" && echo keep >"$work/notes/notes.txt"
+check "--out holding other files" 2 --scene "$work/small.json" --out "$work/notes"
+grep -q "not a simpson-verify report" "$work/err" || fail "--out holding other files: reason not given"
+[ "$(ls -A "$work/notes")" = notes.txt ] && [ "$(cat "$work/notes/notes.txt")" = keep ] || fail "--out holding other files: touched"
+# ωh = 3 lies between 2√2 and 2√3: every run there leaves its orbit and is reported unstable, with its step.
+echo '{"name": "unstable", "stability": {"precisions": ["double", "mpfr:40"], "stiff_omega_h": 3.0, "stiff_omegas": [1, 1e4], "omega_h": [1, 3.0], "masses": [1], "steps": 1000}}' >"$work/unstable.json"
+check "omega h = 3 is unstable" 0 --scene "$work/unstable.json" --out "$work/unstable"
+[ "$(grep -c 'unstable (step' "$work/unstable/report.md")" -ge 6 ] || fail "omega h = 3: not reported unstable: $(grep -c 'unstable (step' "$work/unstable/report.md")"
+# No bare NaN, infinity or null in any file of any report this script wrote.
+# A JSON value, a Markdown table cell or a CSV field that is nan, inf or null; prose may name them.
+bad=$( (grep -rliE ': (null|-?nan|-?inf|NaN|-?Infinity)\b|"-?(nan|inf)"' --include='report.json' "$work"
+        grep -rliE '\| *-?(nan|inf|null) *\|' --include='*.md' "$work"
+        grep -rliE '(^|,)-?(nan|inf|null)(,|$)' --include='*.csv' "$work") 2>/dev/null)
+[ -z "$bad" ] || fail "bare NaN/inf/null in: $bad"
 check "list claims" 0 --list-claims
 check "version" 0 --version
 

@@ -1,5 +1,5 @@
-// The experiment sections: computed only when asked, with finite figures or named faults, and
-// results that agree with the ledger's exact algebra.
+// The experiment sections: computed only when asked, with figures in their own precision or named
+// faults, and results that agree with the ledger's exact algebra.
 
 #include <simpson/verify/experiments.hpp>
 #include <simpson/verify/report.hpp>
@@ -14,30 +14,62 @@
 namespace simpson::verify {
 namespace {
 
-/// Every number in a JSON tree is finite (nlohmann writes NaN and inf as null, so none may be null).
-void expect_no_bare_non_finite(const json& j, const std::string& path) {
-  if (j.is_null()) ADD_FAILURE() << "null (a NaN or inf) at " << path;
-  if (j.is_number_float()) {
-    EXPECT_TRUE(std::isfinite(j.get<double>())) << path;
+/// The figure of `key` in a table row, by the column's key.
+const figure& cell(const table& t, std::size_t row, const std::string& key) {
+  for (std::size_t k = 0; k < t.columns.size(); ++k) {
+    if (t.columns[k].key == key) return t.rows.at(row).at(k);
   }
-  if (j.is_object()) {
-    for (const auto& item : j.items()) expect_no_bare_non_finite(item.value(), path + "." + item.key());
-  }
-  if (j.is_array()) {
-    for (std::size_t k = 0; k < j.size(); ++k) expect_no_bare_non_finite(j[k], path + "[" + std::to_string(k) + "]");
-  }
+  throw std::out_of_range("no column " + key);
 }
 
-TEST(Experiments, FiguresNameTheirFaults) {
-  EXPECT_EQ(detail::figure(std::numeric_limits<double>::infinity()), json("overflow"));
-  EXPECT_EQ(detail::figure(std::numeric_limits<double>::quiet_NaN()), json("non-finite"));
-  EXPECT_EQ(detail::figure(bin100("1e-400")), json("underflow"));
-  EXPECT_EQ(detail::figure(bin100("1e400")), json("overflow"));
-  EXPECT_EQ(detail::figure(0.25), json(0.25));
-  EXPECT_EQ(detail::figure_text(std::numeric_limits<double>::infinity()), "overflow");
+double number(const figure& f) {
+  EXPECT_EQ(f.what(), figure::kind::number) << f.value();
+  return std::stod(f.value());
+}
+
+const table& get(const section_result& s, const std::string& key) {
+  const table* t = s.find_table(key);
+  if (!t) throw std::out_of_range("no table " + key);
+  return *t;
+}
+
+TEST(Figures, NameTheirFaultsInTheirOwnPrecision) {
+  EXPECT_EQ(figure::of(std::numeric_limits<double>::infinity()), figure::fault("overflow"));
+  EXPECT_EQ(figure::of(std::numeric_limits<double>::quiet_NaN()), figure::fault("non-finite"));
+  EXPECT_EQ(figure::of(std::numeric_limits<double>::denorm_min()), figure::fault("underflow"));
+  // Far below double's range is an ordinary number in bin100 and in mpfr: no fault, every digit kept.
+  const figure tiny = figure::of(bin100("3.25e-400"));
+  EXPECT_EQ(tiny.what(), figure::kind::number);
+  EXPECT_EQ(round_decimal(tiny.value(), 3), "3.25e-400");
+  EXPECT_FALSE(tiny.plottable());
+  {
+    const scoped_mpfr_digits digits(3000);
+    const mpfr v = mpfr(1) / mpfr(3) * pow(mpfr(10), -2987);
+    const figure f = figure::of(v);
+    EXPECT_EQ(display(f, 2), "3.3e-2988");
+    EXPECT_GE(f.value().size(), 3000u);  // the digits the precision carries
+  }
+  EXPECT_EQ(figure::of(0.25).as_computed_double(), std::optional<double>(0.25));
+  EXPECT_EQ(figure_json(figure::of(0.25)), json(0.25));
+  EXPECT_EQ(figure_json(figure::of(bin100("3.25e-400"))).get<std::string>().substr(0, 6), "3.2500");
   EXPECT_EQ(detail::to_rational(0.375), rational(3, 8));
   // long double's 64-bit mantissa: 1 + 2^-63 is exact, and converts exactly.
   EXPECT_EQ(detail::to_rational(std::ldexp(1.0L, -63) + 1), rational(1) + rational(1) / rational(pow(boost::multiprecision::cpp_int(2), 63)));
+}
+
+TEST(Figures, RoundDecimalRoundsTheDigitsThemselves) {
+  EXPECT_EQ(round_decimal("1.4449e-14", 3), "1.44e-14");
+  EXPECT_EQ(round_decimal("1.4450e-14", 3), "1.45e-14");
+  EXPECT_EQ(round_decimal("9.996e+02", 3), "1.00e+03");
+  EXPECT_EQ(round_decimal("-0.000123456", 2), "-1.2e-04");
+  EXPECT_EQ(round_decimal("123", 5), "1.2300e+02");
+  EXPECT_EQ(round_decimal("-0.0000e+00", 3), "0.00e+00");
+  EXPECT_EQ(round_decimal("1e+300", 1), "1e+300");
+  EXPECT_THROW(round_decimal("nan", 3), std::invalid_argument);
+}
+
+TEST(Figures, MarkdownCellsEscapePipes) {
+  EXPECT_EQ(markdown_cell("max |y|/A"), "max \\|y\\|/A");
 }
 
 TEST(Experiments, OnlyTheSectionsAskedForAreComputed) {
@@ -49,46 +81,67 @@ TEST(Experiments, OnlyTheSectionsAskedForAreComputed) {
 }
 
 TEST(Experiments, Table1ReproducesTheSimpsonStateRowAndTheOrders) {
-  const section_output t = run_table1(table1_settings{});
-  expect_no_bare_non_finite(t.data, "table1");
-  const json& simpson_state = t.data["rows"][3];
-  ASSERT_EQ(simpson_state["quantity"], "state");
-  for (const json& e : simpson_state["entries"]) {
-    EXPECT_GT(e["published_over_ours"].get<double>(), 0.98);
-    EXPECT_LT(e["published_over_ours"].get<double>(), 1.02);
+  const section_result t = run_table1(table1_settings{});
+  const table& entries = get(t, "entries");
+  ASSERT_EQ(entries.rows.size(), 24u);  // 8 rows × 3 meshes
+  for (std::size_t r = 9; r < 12; ++r) {  // Simpson state at N = 10, 20, 40
+    ASSERT_EQ(cell(entries, r, "quantity").value(), "state");
+    ASSERT_EQ(cell(entries, r, "scheme").value(), "Symplectic Simpson");
+    EXPECT_GT(number(cell(entries, r, "published_over_ours")), 0.98);
+    EXPECT_LT(number(cell(entries, r, "published_over_ours")), 1.02);
   }
-  EXPECT_NEAR(simpson_state["order_least_squares"].get<double>(), 4, 0.05);
-  EXPECT_NEAR(t.data["rows"][0]["order_least_squares"].get<double>(), 2, 0.05);  // Newmark momentum
-  EXPECT_EQ(t.data["rows"][7]["order_least_squares"], "exact");                   // Simpson H_d
-  EXPECT_EQ(t.data["figure1"]["points"].size(), 16u);
+  const table& orders = get(t, "orders");
+  EXPECT_NEAR(number(cell(orders, 3, "order_least_squares")), 4, 0.05);
+  EXPECT_NEAR(number(cell(orders, 0, "order_least_squares")), 2, 0.05);  // Newmark momentum
+  EXPECT_EQ(cell(orders, 7, "order_least_squares").value(), "exact");       // Simpson H_d
 }
 
-TEST(Experiments, StabilityFindsTheLedgersIntervalsAndNamesOverflow) {
+TEST(Experiments, StabilityFindsTheLedgersIntervalsAndDecidesFaultsInItsPrecision) {
   stability_settings s;
   s.precisions = {precision::parse("double"), precision::mpfr_digits(50)};
   s.stiff_omegas = {1, 1e8};
-  s.omega_h = {1e-6, 1};
+  s.omega_h = {1e-6, 1, 3.0, 4.5};  // 3.0: the unstable band (2√2, 2√3); 4.5: the second stable band
   s.masses = {1e-300, 1, 1e300};
   s.steps = 100;
-  const section_output out = run_stability(s);
-  expect_no_bare_non_finite(out.data, "stability");
-  const json& stable = out.data["stable_intervals_omega_h"];
-  ASSERT_EQ(stable.size(), 2u);
-  EXPECT_EQ(stable[0], json::array({"0", "2 sqrt(2)"}));
-  EXPECT_EQ(stable[1], json::array({"2 sqrt(3)", "2 sqrt(6)"}));
+  const section_result out = run_stability(s);
+  std::vector<std::pair<std::string, std::string>> stable;
+  const table& intervals = get(out, "intervals");
+  for (std::size_t r = 0; r < intervals.rows.size(); ++r) {
+    if (cell(intervals, r, "stable").value() == "yes") {
+      stable.emplace_back(cell(intervals, r, "omega_h_from").value(), cell(intervals, r, "omega_h_to").value());
+    }
+  }
+  const std::vector<std::pair<std::string, std::string>> expected{{"0", "2 sqrt(2)"}, {"2 sqrt(3)", "2 sqrt(6)"}};
+  EXPECT_EQ(stable, expected);
   std::map<std::string, std::string> status;
-  for (const json& row : out.data["extreme_masses"]) {
-    status[row["precision"].get<std::string>() + " " + simpson::to_string(row["m"].get<double>(), 1)] = row["status"];
+  const table& masses = get(out, "extreme_masses");
+  for (std::size_t r = 0; r < masses.rows.size(); ++r) {
+    status[cell(masses, r, "precision").value() + " " + display(cell(masses, r, "m"), 1)] = cell(masses, r, "status").value();
   }
   EXPECT_EQ(status["double 1e+300"], "overflow");
   EXPECT_EQ(status["double 1e-300"], "underflow");
   EXPECT_EQ(status["double 1e+00"], "ok");
   EXPECT_EQ(status["mpfr:50 1e+300"], "ok");
   EXPECT_EQ(status["mpfr:50 1e-300"], "ok");
-  for (const json& row : out.data["endpoints"]) {
-    if (row["jordan_block"].is_boolean()) {
-      EXPECT_TRUE(row["jordan_block"].get<bool>()) << row["omega_h"];
+  const table& endpoints = get(out, "endpoints");
+  for (std::size_t r = 0; r < endpoints.rows.size(); ++r) {
+    const figure& j = cell(endpoints, r, "jordan_block");
+    if (j.what() == figure::kind::flag) {
+      EXPECT_EQ(j.value(), "yes") << cell(endpoints, r, "omega_h").value();
     }
+  }
+  const table& extreme = get(out, "extreme_omega_h");
+  for (std::size_t r = 0; r < extreme.rows.size(); ++r) {
+    const double th = std::stod(cell(extreme, r, "omega_h").value());
+    const figure& st = cell(extreme, r, "status");
+    // ωh = 3 lies in (2√2, 2√3): the run leaves its orbit and stops, reported as unstable with its step.
+    if (th == 3.0) {
+      EXPECT_TRUE(is_unstable(st)) << st.value();
+    } else {
+      EXPECT_EQ(st.value(), "ok") << th;
+    }
+    // The digits of c are a number everywhere, including the second band where c < 0.
+    EXPECT_EQ(cell(extreme, r, "digits_of_c").what(), figure::kind::number) << th;
   }
 }
 
@@ -97,38 +150,40 @@ TEST(Experiments, LongRunDriftIsExplainedByTheRoundedDeterminant) {
   s.steps_double = 200000;
   s.steps_mpfr = 2000;
   s.windows = 20;
-  const section_output out = run_long_time(s);
-  expect_no_bare_non_finite(out.data, "long_time");
-  for (const json& row : out.data["rows"]) {
+  const section_result out = run_long_time(s);
+  const table& rows = get(out, "rows");
+  for (std::size_t r = 0; r < rows.rows.size(); ++r) {
     // The measured phase error is the one the characteristic roots predict (to the ellipse's O(θ²) wobble).
-    EXPECT_NEAR(row["measured_over_predicted"].get<double>(), 1, 0.05) << row["scheme"] << " " << row["precision"];
+    EXPECT_NEAR(number(cell(rows, r, "measured_over_predicted")), 1, 0.05) << cell(rows, r, "scheme").value();
   }
 }
 
 TEST(Experiments, WorkPrecisionRecordsEveryRunWithItsStatus) {
   work_precision_settings w;
-  w.schemes = {"simpson", "rk4", "gauss-legendre-2"};
+  w.schemes = {scheme_id::simpson, scheme_id::rk4, scheme_id::gauss_legendre_2};
   w.precisions = {precision::parse("double")};
   w.meshes = {8, 32};
   w.timing = {2, 0.1};
-  const section_output out = run_work_precision(w);
-  ASSERT_EQ(out.data["rows"].size(), 6u);
-  for (const json& row : out.data["rows"]) {
-    EXPECT_EQ(row["status"], "ok");
-    EXPECT_LE(row["timing"]["runs"].get<unsigned>(), 2u);
+  const section_result out = run_work_precision(w);
+  const table& rows = get(out, "rows");
+  ASSERT_EQ(rows.rows.size(), 6u);
+  for (std::size_t r = 0; r < rows.rows.size(); ++r) {
+    EXPECT_EQ(cell(rows, r, "status").value(), "ok");
+    EXPECT_LE(std::stoi(cell(rows, r, "runs").value()), 2);
   }
   // 4th order: the error falls by about 4^4 from N = 8 to 32.
-  const double ratio = out.data["rows"][0]["error_q_max"].get<double>() / out.data["rows"][1]["error_q_max"].get<double>();
+  const double ratio = number(cell(rows, 0, "error_q_max")) / number(cell(rows, 1, "error_q_max"));
   EXPECT_GT(ratio, 200);
   EXPECT_LT(ratio, 300);
-  // At ωh beyond the stable region the run is recorded as unstable, not dropped.
-  w.schemes = {"simpson"};
+  // At ωh beyond the stable region the run is recorded as unstable, with its step, not dropped.
+  w.schemes = {scheme_id::simpson};
   w.meshes = {2};  // ωh = π, inside the unstable band (2√2, 2√3)
   w.periods = 100;
-  const section_output unstable = run_work_precision(w);
-  ASSERT_EQ(unstable.data["rows"].size(), 1u);
-  EXPECT_EQ(unstable.data["rows"][0]["status"], "unstable");
-  EXPECT_FALSE(unstable.data["rows"][0].contains("error_q_max"));
+  const section_result unstable = run_work_precision(w);
+  const table& u = get(unstable, "rows");
+  ASSERT_EQ(u.rows.size(), 1u);
+  EXPECT_TRUE(is_unstable(cell(u, 0, "status"))) << cell(u, 0, "status").value();
+  EXPECT_EQ(cell(u, 0, "error_q_max").what(), figure::kind::empty);
 }
 
 TEST(Experiments, CostEstimateGrowsWithStepsAndPrecision) {

@@ -1,9 +1,11 @@
 #include <simpson/verify/report.hpp>
 
 #include "report_comparison.hpp"
+#include "report_tree.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -50,6 +52,7 @@ TEST(Report, WritesEveryFileAtomically) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "simpson-report-test";
   std::filesystem::remove_all(dir);
   prepare_output_directory(dir);
+  EXPECT_FALSE(std::filesystem::exists(dir)) << "checking the directory creates nothing";
   write_report_files(dir, run(load_scene("quick")));
   std::vector<std::string> names;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) names.push_back(entry.path().filename().string());
@@ -64,6 +67,31 @@ TEST(Report, WritesEveryFileAtomically) {
   std::ifstream in(dir / "report.json");
   const json parsed = json::parse(in);
   EXPECT_EQ(parsed["scene"], "quick");
+  // report.json lists every file of the directory, and nothing else is there.
+  std::vector<std::string> listed = parsed["files"].get<std::vector<std::string>>();
+  std::sort(listed.begin(), listed.end());
+  EXPECT_EQ(listed, names);
+  test::expect_no_bare_non_finite(dir);
+  test::expect_html_tables_rendered(dir);
+  // A second, smaller run replaces the report whole: nothing of the first survives, nothing staged is left.
+  write_report_files(dir, run(parse_scene(R"({"name": "t", "table1": {"N": [10]}})", "t")));
+  EXPECT_FALSE(std::filesystem::exists(dir / "work_precision.csv"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "table1.csv"));
+  for (const auto& entry : std::filesystem::directory_iterator(dir.parent_path())) {
+    EXPECT_EQ(entry.path().filename().string().find(".simpson-report-test."), std::string::npos) << entry.path();
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Report, ADirectoryHoldingOtherFilesIsRefusedAndKept) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "simpson-report-foreign";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "notes.txt") << "keep";
+  EXPECT_THROW(prepare_output_directory(dir), std::invalid_argument);
+  EXPECT_THROW(write_report_files(dir, run(parse_scene(R"({"name": "t", "table1": {"N": [10]}})", "t"))), std::invalid_argument);
+  EXPECT_TRUE(std::filesystem::exists(dir / "notes.txt"));
+  EXPECT_FALSE(holds_only_a_report(dir));
   std::filesystem::remove_all(dir);
 }
 

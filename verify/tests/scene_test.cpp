@@ -91,7 +91,7 @@ TEST(Scene, ExperimentSectionsParseWithDefaultsAndOnlyWhenAsked) {
   const scene paper = load_scene("paper");
   EXPECT_TRUE(paper.experiments.table1 && paper.experiments.work_precision && paper.experiments.stability &&
               paper.experiments.long_time);
-  EXPECT_EQ(paper.experiments.work_precision->schemes, scheme_names());
+  EXPECT_EQ(paper.experiments.work_precision->schemes, all_schemes());
 }
 
 TEST(Scene, RejectsEveryBadExperimentParameter) {

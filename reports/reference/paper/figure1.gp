@@ -1,21 +1,41 @@
 # Figure 1 redrawn: exact and computed p and q over one period, N = 15
 # Redraw with: gnuplot figure1.gp (in this directory)
-set terminal svg size 800,500 dynamic enhanced font 'Sans,10' background rgb 'white'
+set terminal svg size 900,500 dynamic enhanced font 'Sans,10' background rgb 'white'
 set output 'figure1.svg'
 set title 'Figure 1: harmonic oscillator, one period, N = 15'
 set xlabel 't (periods)'
 set ylabel 'q and p/(m omega) (dimensionless)'
-set key outside right
-plot 'figure1_exact.dat' u 1:2 w l lc rgb 'black' t 'q exact', '' u 1:3 w l dt 2 lc rgb 'black' t 'p/(m omega) exact', 'figure1_schemes.dat' u 1:2 w lp pt 6 lc rgb '#1f77b4' t 'q Newmark', '' u 1:3 w lp pt 4 lc rgb '#1f77b4' t 'p/(m omega) Newmark', '' u 1:4 w lp pt 7 lc rgb '#d62728' t 'q Simpson', '' u 1:5 w lp pt 5 lc rgb '#d62728' t 'p/(m omega) Simpson'
+unset logscale x
+set format x '%g'
+unset logscale y
+set format y '%g'
+set key outside right font ',8'
+set yrange [-1.1:1.1]
+plot 'figure1.dat' index 0 u 1:2 w l lw 1.5 lc rgb '#000000' t 'q exact', \
+     'figure1.dat' index 1 u 1:2 w l dt 2 lc rgb '#000000' t 'p/(m omega) exact', \
+     'figure1.dat' index 2 u 1:2 w lp pt 6 lc rgb '#1f77b4' t 'q Newmark', \
+     'figure1.dat' index 3 u 1:2 w lp pt 4 lc rgb '#1f77b4' t 'p/(m omega) Newmark', \
+     'figure1.dat' index 4 u 1:2 w lp pt 7 lc rgb '#d62728' t 'q Simpson', \
+     'figure1.dat' index 5 u 1:2 w lp pt 5 lc rgb '#d62728' t 'p/(m omega) Simpson'
 
 unset output
 reset
-set terminal pngcairo size 800,500 enhanced font 'Sans,10' background rgb 'white'
+set terminal pngcairo size 900,500 enhanced font 'Sans,10' background rgb 'white'
 set output 'figure1.png'
 set title 'Figure 1: harmonic oscillator, one period, N = 15'
 set xlabel 't (periods)'
 set ylabel 'q and p/(m omega) (dimensionless)'
-set key outside right
-plot 'figure1_exact.dat' u 1:2 w l lc rgb 'black' t 'q exact', '' u 1:3 w l dt 2 lc rgb 'black' t 'p/(m omega) exact', 'figure1_schemes.dat' u 1:2 w lp pt 6 lc rgb '#1f77b4' t 'q Newmark', '' u 1:3 w lp pt 4 lc rgb '#1f77b4' t 'p/(m omega) Newmark', '' u 1:4 w lp pt 7 lc rgb '#d62728' t 'q Simpson', '' u 1:5 w lp pt 5 lc rgb '#d62728' t 'p/(m omega) Simpson'
+unset logscale x
+set format x '%g'
+unset logscale y
+set format y '%g'
+set key outside right font ',8'
+set yrange [-1.1:1.1]
+plot 'figure1.dat' index 0 u 1:2 w l lw 1.5 lc rgb '#000000' t 'q exact', \
+     'figure1.dat' index 1 u 1:2 w l dt 2 lc rgb '#000000' t 'p/(m omega) exact', \
+     'figure1.dat' index 2 u 1:2 w lp pt 6 lc rgb '#1f77b4' t 'q Newmark', \
+     'figure1.dat' index 3 u 1:2 w lp pt 4 lc rgb '#1f77b4' t 'p/(m omega) Newmark', \
+     'figure1.dat' index 4 u 1:2 w lp pt 7 lc rgb '#d62728' t 'q Simpson', \
+     'figure1.dat' index 5 u 1:2 w lp pt 5 lc rgb '#d62728' t 'p/(m omega) Simpson'
 
 unset output

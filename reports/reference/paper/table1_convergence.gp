@@ -1,27 +1,49 @@
-# Table 1: maximum errors of p and q against N, ours (lines) and published (open points)
+# Table 1: maximum errors of p and q against N, ours (lines) and published (open points), with slopes h² and h⁴ (dashed)
 # Redraw with: gnuplot table1_convergence.gp (in this directory)
-set terminal svg size 800,500 dynamic enhanced font 'Sans,10' background rgb 'white'
+set terminal svg size 900,500 dynamic enhanced font 'Sans,10' background rgb 'white'
 set output 'table1_convergence.svg'
 set title 'Table 1: maximum errors against N (one period)'
 set xlabel 'N (steps per period)'
 set ylabel 'maximum error (p in m omega units, q dimensionless)'
-set logscale xy
+set logscale x
+set format x '10^{%L}'
+set logscale y
 set format y '10^{%L}'
-set key outside right
-names = 'Newmark-p Simpson-p Newmark-q Simpson-q'
-plot for [i=0:3] 'table1_convergence.dat' index i u 1:2 w lp lc i+1 pt 7 t word(names, i+1).' ours', for [i=0:3] '' index i u 1:3 w p lc i+1 pt 6 ps 2 t word(names, i+1).' paper'
+set key outside right font ',8'
+set yrange [3.97747e-07:7.64]
+plot 'table1_convergence.dat' index 0 u 1:2 w lp pt 7 lc rgb '#1f77b4' t 'Newmark p ours', \
+     'table1_convergence.dat' index 1 u 1:2 w p pt 6 ps 1.5 lc rgb '#1f77b4' t 'Newmark p paper', \
+     'table1_convergence.dat' index 2 u 1:2 w lp pt 7 lc rgb '#d62728' t 'Simpson p ours', \
+     'table1_convergence.dat' index 3 u 1:2 w p pt 6 ps 1.5 lc rgb '#d62728' t 'Simpson p paper', \
+     'table1_convergence.dat' index 4 u 1:2 w lp pt 7 lc rgb '#2ca02c' t 'Newmark q ours', \
+     'table1_convergence.dat' index 5 u 1:2 w p pt 6 ps 1.5 lc rgb '#2ca02c' t 'Newmark q paper', \
+     'table1_convergence.dat' index 6 u 1:2 w lp pt 7 lc rgb '#9467bd' t 'Simpson q ours', \
+     'table1_convergence.dat' index 7 u 1:2 w p pt 6 ps 1.5 lc rgb '#9467bd' t 'Simpson q paper', \
+     'table1_convergence.dat' index 8 u 1:2 w l dt 2 lc rgb '#7f7f7f' t 'slope h^2', \
+     'table1_convergence.dat' index 9 u 1:2 w l dt 2 lc rgb '#7f7f7f' t 'slope h^4'
 
 unset output
 reset
-set terminal pngcairo size 800,500 enhanced font 'Sans,10' background rgb 'white'
+set terminal pngcairo size 900,500 enhanced font 'Sans,10' background rgb 'white'
 set output 'table1_convergence.png'
 set title 'Table 1: maximum errors against N (one period)'
 set xlabel 'N (steps per period)'
 set ylabel 'maximum error (p in m omega units, q dimensionless)'
-set logscale xy
+set logscale x
+set format x '10^{%L}'
+set logscale y
 set format y '10^{%L}'
-set key outside right
-names = 'Newmark-p Simpson-p Newmark-q Simpson-q'
-plot for [i=0:3] 'table1_convergence.dat' index i u 1:2 w lp lc i+1 pt 7 t word(names, i+1).' ours', for [i=0:3] '' index i u 1:3 w p lc i+1 pt 6 ps 2 t word(names, i+1).' paper'
+set key outside right font ',8'
+set yrange [3.97747e-07:7.64]
+plot 'table1_convergence.dat' index 0 u 1:2 w lp pt 7 lc rgb '#1f77b4' t 'Newmark p ours', \
+     'table1_convergence.dat' index 1 u 1:2 w p pt 6 ps 1.5 lc rgb '#1f77b4' t 'Newmark p paper', \
+     'table1_convergence.dat' index 2 u 1:2 w lp pt 7 lc rgb '#d62728' t 'Simpson p ours', \
+     'table1_convergence.dat' index 3 u 1:2 w p pt 6 ps 1.5 lc rgb '#d62728' t 'Simpson p paper', \
+     'table1_convergence.dat' index 4 u 1:2 w lp pt 7 lc rgb '#2ca02c' t 'Newmark q ours', \
+     'table1_convergence.dat' index 5 u 1:2 w p pt 6 ps 1.5 lc rgb '#2ca02c' t 'Newmark q paper', \
+     'table1_convergence.dat' index 6 u 1:2 w lp pt 7 lc rgb '#9467bd' t 'Simpson q ours', \
+     'table1_convergence.dat' index 7 u 1:2 w p pt 6 ps 1.5 lc rgb '#9467bd' t 'Simpson q paper', \
+     'table1_convergence.dat' index 8 u 1:2 w l dt 2 lc rgb '#7f7f7f' t 'slope h^2', \
+     'table1_convergence.dat' index 9 u 1:2 w l dt 2 lc rgb '#7f7f7f' t 'slope h^4'
 
 unset output

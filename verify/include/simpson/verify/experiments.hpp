@@ -1,11 +1,14 @@
 #pragma once
 // The scene sections beside the claims: the paper's experiment (table1), error against run time
 // (work_precision), stiff and extreme cases (stability) and long runs (long_time). Each is
-// computed only when its scene asks for it, and returns its JSON, its Markdown, its CSV files and
-// its plots. Run times live in members named "timing" (left out when reports are compared).
+// computed only when its scene asks for it, and returns a section_result: its tables and plots as
+// data (result_model.hpp), rendered by section_render.hpp. Run times are timing columns, which
+// report.json keeps in members named "timing" (left out when reports are compared).
 
 #include <simpson/precision.hpp>
+#include <simpson/scheme.hpp>
 #include <simpson/verify/claim.hpp>
+#include <simpson/verify/result_model.hpp>
 
 #include <cstdint>
 #include <optional>
@@ -14,11 +17,11 @@
 
 namespace simpson::verify {
 
-/// The schemes of the experiments (work_precision uses any of them).
-inline const std::vector<std::string>& scheme_names() {
-  static const std::vector<std::string> names{"newmark", "simpson", "simpson-elimination", "stormer-verlet", "yoshida",
-                                              "gauss-legendre-2", "lobatto-iiia-iiib-3", "rk4"};
-  return names;
+/// Every scheme of scheme_list, in its order (work_precision's "all").
+inline std::vector<scheme_id> all_schemes() {
+  std::vector<scheme_id> ids;
+  for (const scheme_traits& s : scheme_list) ids.push_back(s.id);
+  return ids;
 }
 
 struct table1_settings {
@@ -33,7 +36,7 @@ struct timing_policy {
 };
 
 struct work_precision_settings {
-  std::vector<std::string> schemes = scheme_names();
+  std::vector<scheme_id> schemes = all_schemes();
   std::vector<precision> precisions;
   std::vector<long long> meshes{16, 64, 256, 1024, 4096};  // N per period
   long long periods = 1;
@@ -66,29 +69,6 @@ struct experiment_settings {
   bool any() const { return table1 || work_precision || stability || long_time; }
 };
 
-/// A plot: gnuplot commands drawing from data files of the section; rendered to <name>.svg and
-/// <name>.png by the report writer (the terminal and output lines are added there).
-struct plot_spec {
-  std::string name;
-  std::string caption;
-  std::string commands;
-  int width = 800;   // pixels of the PNG (and the SVG's size)
-  int height = 500;
-};
-
-struct data_file {
-  std::string name;  // e.g. "work_precision.csv"
-  std::string content;
-};
-
-struct section_output {
-  std::string name;  // "table1", ...
-  json data = json::object();
-  std::string markdown;
-  std::vector<data_file> files;
-  std::vector<plot_spec> plots;
-};
-
 /// Estimated cost of a scene's experiments in double-step equivalents (one step of Φ₃ in double
 /// = 1), with a line per section; compared with the budget before anything runs.
 struct cost_estimate {
@@ -98,9 +78,14 @@ struct cost_estimate {
 inline constexpr double default_cost_budget = 2.5e10;  // about 2 minutes on the 2-core machine (~5 ns per unit)
 cost_estimate estimate_cost(const experiment_settings& e);
 
-section_output run_table1(const table1_settings& s);
-section_output run_work_precision(const work_precision_settings& s);
-section_output run_stability(const stability_settings& s);
-section_output run_long_time(const long_time_settings& s);
+/// Seconds one cost unit takes on the 2-core machine the costs were calibrated on.
+inline constexpr double seconds_per_cost_unit = 5e-9;
+/// "about 15 s", "about 2.1 min", "about 3.5 h": an estimate in calibrated wall time.
+std::string seconds_text(double units);
+
+section_result run_table1(const table1_settings& s);
+section_result run_work_precision(const work_precision_settings& s);
+section_result run_stability(const stability_settings& s);
+section_result run_long_time(const long_time_settings& s);
 
 }  // namespace simpson::verify

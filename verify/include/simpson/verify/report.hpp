@@ -5,6 +5,7 @@
 
 #include <simpson/verify/claim.hpp>
 #include <simpson/verify/experiments.hpp>
+#include <simpson/verify/section_render.hpp>
 #include <simpson/verify/scene.hpp>
 
 #include <filesystem>
@@ -26,7 +27,7 @@ struct run_record {
   std::vector<claim_outcome> outcomes;
   json paper_configuration;
   json environment;
-  std::vector<section_output> sections;  // the experiment sections the scene asked for, in order
+  std::vector<section_result> sections;  // the experiment sections the scene asked for, in order
   std::vector<double> section_seconds;
   double seconds = 0;
 };
@@ -56,9 +57,16 @@ std::string report_markdown(const run_record& r);
 /// One line: "48 claims: 42 held, 5 errata, 1 failed; all as expected".
 std::string summary_line(const run_record& r);
 
-/// Creates `dir` if needed and checks that a file can be written there; throws
-/// std::invalid_argument naming the directory otherwise.
+/// Checks, before anything runs, that `dir` can take a report: it does not exist yet (its parent
+/// can be created and written), or it is empty, or it holds a previous simpson-verify report and
+/// nothing else. Creates nothing. Throws std::invalid_argument naming the directory otherwise (a
+/// directory with other files is refused, never cleared).
 void prepare_output_directory(const std::filesystem::path& dir);
+
+/// True when every entry of `dir` belongs to a simpson-verify report: the files its report.json
+/// lists, or for a report written before that list existed, report.* and the section files
+/// (.csv, .dat, .gp, .svg, .png).
+bool holds_only_a_report(const std::filesystem::path& dir);
 
 /// Plots drawn and plots that could not be drawn (gnuplot missing or failing), by the writer.
 struct plot_outcome {
@@ -67,9 +75,14 @@ struct plot_outcome {
 };
 
 /// Writes report.json, report.md, report.html, the sections' data files (CSV, .dat), the gnuplot
-/// scripts (<plot>.gp) and the plots (SVG, PNG). Everything is made in a staging directory inside
-/// `dir` and renamed into place at the end, so an error or an interruption leaves no partial files.
+/// scripts (<plot>.gp) and the plots (SVG, PNG). Everything is made in a staging directory beside
+/// `dir`, which then replaces `dir` whole (the previous report is removed only after the new one is
+/// complete): no stale file of an earlier run survives, and an error or an interruption leaves the
+/// previous report as it was and no partial files.
 plot_outcome write_report_files(const std::filesystem::path& dir, const run_record& r);
+
+/// Every file of the report directory, report.json first (its "files" member).
+std::vector<std::string> report_file_names(const run_record& r, const plot_outcome& plots);
 
 /// report.md with the outcome of the plots (a list of those not drawn, if any).
 std::string report_markdown(const run_record& r, const plot_outcome& plots);

@@ -1,0 +1,19 @@
+#pragma once
+// Progress of long sections on stderr: a section calls progress_step() after each unit of work
+// (a work_precision configuration, a long_time window); the CLI installs the sink, which decides
+// how often to print (a few lines a second at most). Without a sink nothing is printed.
+
+#include <functional>
+#include <string>
+
+namespace simpson::verify {
+
+/// (section, what was just done, fraction of the section done in [0, 1], or negative when unknown)
+using progress_sink = std::function<void(const std::string&, const std::string&, double)>;
+
+/// Installs the sink (an empty function removes it); returns the previous one.
+progress_sink set_progress_sink(progress_sink sink);
+
+void progress_step(const std::string& section, const std::string& what, double fraction = -1);
+
+}  // namespace simpson::verify

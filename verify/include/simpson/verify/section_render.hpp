@@ -1,0 +1,51 @@
+#pragma once
+// The one writer of the result model: report.json members, report.md text, CSV files, gnuplot
+// data files and scripts, all from a section_result. Figures keep every digit in JSON and CSV and
+// are rounded only for Markdown; faults print as their words everywhere (gnuplot skips them).
+
+#include <simpson/verify/result_model.hpp>
+
+#include <string>
+#include <vector>
+
+namespace simpson::verify {
+
+struct data_file {
+  std::string name;  // e.g. "work_precision.csv"
+  std::string content;
+};
+
+/// A plot ready for gnuplot: commands that read the section's data files; the writer adds the
+/// terminal and output lines and draws <name>.svg and <name>.png.
+struct plot_spec {
+  std::string name;
+  std::string caption;
+  std::string commands;
+  int width = 800;
+  int height = 500;
+};
+
+/// A figure in report.json: a number when it was computed in double or is an integer, the decimal
+/// text (every digit of its precision) otherwise, true/false for a flag, the word for a fault.
+json figure_json(const figure& f);
+
+/// A Markdown table cell: '|' escaped, newlines folded.
+std::string markdown_cell(const std::string& text);
+
+/// The section's member of report.json: its conventions, each table as a list of row objects,
+/// and the files it writes.
+json section_json(const section_result& s);
+
+/// The section in report.md: its title, prose, tables and plot links, in order.
+std::string section_markdown(const section_result& s);
+
+/// CSV files of its tables, and one .dat file per plot.
+std::vector<data_file> section_files(const section_result& s);
+
+/// The gnuplot script of each plot.
+std::vector<plot_spec> section_plots(const section_result& s);
+
+/// Points of a plot left out because they are faults or outside double's range (gnuplot's).
+std::size_t points_not_drawn(const plot_description& p);
+
+}  // namespace simpson::verify

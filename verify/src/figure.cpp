@@ -1,0 +1,118 @@
+#include <simpson/verify/figure.hpp>
+
+#include <cstdlib>
+#include <stdexcept>
+
+namespace simpson::verify {
+
+std::string round_decimal(const std::string& text, int digits) {
+  // Split [-]int[.frac][e±exp] into its significant digits and a decimal exponent.
+  std::size_t k = 0;
+  const bool negative = !text.empty() && text[0] == '-';
+  if (negative || (!text.empty() && text[0] == '+')) ++k;
+  std::string mantissa;
+  long long point = -1;  // digits before the decimal point
+  for (; k < text.size() && text[k] != 'e' && text[k] != 'E'; ++k) {
+    if (text[k] == '.') {
+      point = static_cast<long long>(mantissa.size());
+    } else if (text[k] >= '0' && text[k] <= '9') {
+      mantissa += text[k];
+    } else {
+      throw std::invalid_argument("round_decimal: not a decimal number: '" + text + "'");
+    }
+  }
+  if (mantissa.empty()) throw std::invalid_argument("round_decimal: not a decimal number: '" + text + "'");
+  if (point < 0) point = static_cast<long long>(mantissa.size());
+  long long exponent = 0;
+  if (k < text.size()) exponent = std::stoll(text.substr(k + 1));
+  // value = 0.mantissa × 10^(point + exponent); drop leading zeros.
+  const std::size_t first = mantissa.find_first_not_of('0');
+  if (digits < 1) digits = 1;
+  if (first == std::string::npos) {
+    return digits > 1 ? "0." + std::string(static_cast<std::size_t>(digits - 1), '0') + "e+00" : "0e+00";
+  }
+  long long decimal_exponent = point + exponent - static_cast<long long>(first) - 1;  // of the leading digit
+  std::string sig = mantissa.substr(first);
+  if (static_cast<int>(sig.size()) > digits) {
+    const bool round_up = sig[static_cast<std::size_t>(digits)] >= '5';
+    sig.resize(static_cast<std::size_t>(digits));
+    if (round_up) {
+      int j = digits - 1;
+      for (; j >= 0 && sig[static_cast<std::size_t>(j)] == '9'; --j) sig[static_cast<std::size_t>(j)] = '0';
+      if (j >= 0) {
+        ++sig[static_cast<std::size_t>(j)];
+      } else {
+        sig.insert(sig.begin(), '1');
+        sig.pop_back();
+        ++decimal_exponent;
+      }
+    }
+  }
+  sig.resize(static_cast<std::size_t>(digits), '0');
+  std::string out = negative ? "-" : "";
+  out += sig[0];
+  if (digits > 1) out += "." + sig.substr(1);
+  const long long magnitude = decimal_exponent < 0 ? -decimal_exponent : decimal_exponent;
+  out += decimal_exponent < 0 ? "e-" : "e+";
+  out += (magnitude < 10 ? "0" : "") + std::to_string(magnitude);
+  return out;
+}
+
+std::string fixed_decimal(const std::string& text, int decimals) {
+  // The decimal exponent of the leading digit, then that many digits before the point.
+  const std::string probe = round_decimal(text, 1);
+  if (probe.find_first_not_of("-0.e+") == std::string::npos) return decimals > 0 ? "0." + std::string(static_cast<std::size_t>(decimals), '0') : "0";
+  long long exponent = std::stoll(probe.substr(probe.find('e') + 1));
+  long long significant = exponent + 1 + decimals;
+  if (significant < 1) return decimals > 0 ? "0." + std::string(static_cast<std::size_t>(decimals), '0') : "0";
+  std::string rounded = round_decimal(text, static_cast<int>(significant));
+  const long long new_exponent = std::stoll(rounded.substr(rounded.find('e') + 1));
+  if (new_exponent != exponent) {  // rounding carried into a new leading digit (9.96 → 10.0)
+    exponent = new_exponent;
+    significant = exponent + 1 + decimals;
+    rounded = round_decimal(text, static_cast<int>(significant));
+  }
+  const bool negative = rounded[0] == '-';
+  std::string digits;
+  for (const char c : rounded.substr(0, rounded.find('e'))) {
+    if (c >= '0' && c <= '9') digits += c;
+  }
+  std::string out;
+  if (exponent < 0) {
+    out = "0." + std::string(static_cast<std::size_t>(-exponent - 1), '0') + digits;
+  } else {
+    const std::size_t whole = static_cast<std::size_t>(exponent + 1);
+    out = digits.substr(0, whole) + (decimals > 0 ? "." + digits.substr(whole) : "");
+  }
+  return (negative ? "-" : "") + out;
+}
+
+std::string display(const figure& f, int digits, bool fixed) {
+  if (f.what() != figure::kind::number) return f.value();
+  return fixed ? fixed_decimal(f.value(), digits) : round_decimal(f.value(), digits);
+}
+
+std::optional<double> figure::plottable() const {
+  if (double_) return std::isfinite(*double_) && (*double_ == 0 || std::abs(*double_) >= std::numeric_limits<double>::min())
+                          ? double_
+                          : std::nullopt;
+  if (kind_ != kind::number && kind_ != kind::integer) return std::nullopt;
+  // Only to draw: strtod's rounding is harmless there, and values beyond double's range are left out.
+  char* end = nullptr;
+  const double v = std::strtod(text_.c_str(), &end);
+  if (end == text_.c_str() || !std::isfinite(v)) return std::nullopt;
+  if (v == 0 && round_decimal(text_, 1) != "0e+00") return std::nullopt;  // lost below double's range
+  if (v != 0 && std::abs(v) < std::numeric_limits<double>::min()) return std::nullopt;
+  return v;
+}
+
+std::optional<double> figure::log10_magnitude() const {
+  if (kind_ != kind::number && kind_ != kind::integer) return std::nullopt;
+  const std::string r = round_decimal(text_, 17);
+  const std::size_t e = r.find('e');
+  const double mantissa = std::abs(std::strtod(r.substr(0, e).c_str(), nullptr));
+  if (!(mantissa > 0)) return std::nullopt;
+  return static_cast<double>(std::stoll(r.substr(e + 1))) + std::log10(mantissa);
+}
+
+}  // namespace simpson::verify
