@@ -1,3 +1,4 @@
+#include <simpson/precision.hpp>
 #include <simpson/runge_kutta_tableaux.hpp>
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // The exact arithmetic of the peer comparison: Q(r) with r^n = d, and truncated power series.
 
-#include "algebraic_series.hpp"
+#include <simpson/verify/algebraic_series.hpp>
 
 #include <gtest/gtest.h>
 

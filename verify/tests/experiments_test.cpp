@@ -1,10 +1,11 @@
 // The experiment sections: computed only when asked, with figures in their own precision or named
 // faults, and results that agree with the ledger's exact algebra.
 
+#include <simpson/verify/experiment_cost.hpp>
 #include <simpson/verify/experiments.hpp>
 #include <simpson/verify/report.hpp>
 
-#include "figures.hpp"
+#include <simpson/verify/floating_tools.hpp>
 
 #include <gtest/gtest.h>
 
@@ -52,9 +53,9 @@ TEST(Figures, NameTheirFaultsInTheirOwnPrecision) {
   EXPECT_EQ(figure::of(0.25).as_computed_double(), std::optional<double>(0.25));
   EXPECT_EQ(figure_json(figure::of(0.25)), json(0.25));
   EXPECT_EQ(figure_json(figure::of(bin100("3.25e-400"))).get<std::string>().substr(0, 6), "3.2500");
-  EXPECT_EQ(detail::to_rational(0.375), rational(3, 8));
+  EXPECT_EQ(to_rational(0.375), rational(3, 8));
   // long double's 64-bit mantissa: 1 + 2^-63 is exact, and converts exactly.
-  EXPECT_EQ(detail::to_rational(std::ldexp(1.0L, -63) + 1), rational(1) + rational(1) / rational(pow(boost::multiprecision::cpp_int(2), 63)));
+  EXPECT_EQ(to_rational(std::ldexp(1.0L, -63) + 1), rational(1) + rational(1) / rational(pow(boost::multiprecision::cpp_int(2), 63)));
 }
 
 TEST(Figures, RoundDecimalRoundsTheDigitsThemselves) {

@@ -2,7 +2,7 @@
 // Linear one-step maps on the state y = (p, q): y_{j+1} = Φ y_j, written with the paper's
 // entry names of Section 7, Φ = ((α, β), (γ, δ)).
 
-#include <simpson/precision.hpp>
+#include <simpson/scalar_traits.hpp>
 #include <simpson/residual.hpp>
 
 #include <cmath>

@@ -1,7 +1,9 @@
 #pragma once
 // The harmonic oscillator m q'' + m ω² q = 0 and its time step h, validated once.
 
-#include <simpson/precision.hpp>
+#include <simpson/scalar_traits.hpp>
+
+#include <boost/multiprecision/number.hpp>
 
 #include <cmath>
 #include <limits>

@@ -22,8 +22,6 @@ struct butcher_tableau {
   std::size_t stages() const noexcept { return b.size(); }
 };
 
-namespace detail {
-
 /// Solves M x = r by Gaussian elimination. Pivot: the largest |entry| for ordered numbers, the
 /// first non-zero for symbolic scalars (exact, so any non-zero pivot is as good). Throws
 /// std::domain_error when M is singular.
@@ -33,7 +31,7 @@ std::vector<Real> solve_linear(std::vector<std::vector<Real>> M, std::vector<Rea
   for (std::size_t k = 0; k < n; ++k) {
     std::size_t pivot = n;
     for (std::size_t i = k; i < n; ++i) {
-      if constexpr (is_ordered_number_v<Real>) {
+      if constexpr (detail::is_ordered_number_v<Real>) {
         using std::abs;
         if (M[i][k] != 0 && (pivot == n || abs(M[i][k]) > abs(M[pivot][k]))) pivot = i;
       } else {
@@ -58,7 +56,6 @@ std::vector<Real> solve_linear(std::vector<std::vector<Real>> M, std::vector<Rea
   return x;
 }
 
-}  // namespace detail
 
 /// One step of the partitioned Runge–Kutta method with tableau `for_q` for q' = p/m and `for_p`
 /// for p' = −m ω² q (both with s stages):
@@ -90,7 +87,7 @@ phase_point<Real> partitioned_runge_kutta_step(const oscillator_parameters<Real>
     }
     rhs[i] += h / m * y.p * row_sum;
   }
-  const std::vector<Real> Q = detail::solve_linear(std::move(M), std::move(rhs));
+  const std::vector<Real> Q = solve_linear(std::move(M), std::move(rhs));
   phase_point<Real> next = y;
   for (std::size_t i = 0; i < s; ++i) {
     Real P_i = y.p;

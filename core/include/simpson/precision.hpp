@@ -1,6 +1,9 @@
 #pragma once
 // The one list of precisions: name, epsilon, and a way to run generic code in each by name.
-// Used alike by the core's tests, the claims ledger, the property tests and the reports.
+// Used alike by the core's tests, the claims ledger, the property tests and the reports. The
+// traits of a scalar (eps, is_exact_v, to_string) are scalar_traits.hpp's: formulas need only those.
+
+#include <simpson/scalar_traits.hpp>
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <boost/multiprecision/cpp_int.hpp>
@@ -28,27 +31,6 @@ using mpfr = boost::multiprecision::mpfr_float;
 /// Exact rationals: every formula that is rational in its inputs evaluates without rounding.
 using rational = boost::multiprecision::cpp_rational;
 
-/// Carries a scalar type into a generic lambda: `[](auto tag) { using Real = typename decltype(tag)::type; }`.
-template <class Real>
-struct precision_tag {
-  using type = Real;
-};
-
-/// True when arithmetic in Real never rounds (rational): its epsilon is zero and checks are equalities.
-template <class Real>
-inline constexpr bool is_exact_v = std::numeric_limits<Real>::is_exact;
-
-/// Unit round-off of Real at the current working precision; zero for exact types.
-/// For `mpfr` it follows the digits set by the innermost scoped_mpfr_digits.
-template <class Real>
-Real eps() {
-  if constexpr (is_exact_v<Real>) {
-    return Real(0);
-  } else {
-    return std::numeric_limits<Real>::epsilon();
-  }
-}
-
 /// Sets the working precision of newly created `mpfr` values for the lifetime of the object,
 /// then restores the previous one. Values keep the precision they were created with.
 class scoped_mpfr_digits {
@@ -63,18 +45,6 @@ class scoped_mpfr_digits {
  private:
   unsigned saved_;
 };
-
-/// Decimal text of a value: `digits` significant digits in scientific notation; exact for rational
-/// (numerator/denominator).
-template <class Real>
-std::string to_string(const Real& value, int digits = std::numeric_limits<double>::max_digits10) {
-  std::ostringstream out;
-  if constexpr (!is_exact_v<Real>) {
-    out << std::scientific << std::setprecision(digits > 1 ? digits - 1 : 0);
-  }
-  out << value;
-  return out.str();
-}
 
 enum class precision_kind { float64, extended, float128, bin50, bin100, mpfr, rational };
 

@@ -1,0 +1,46 @@
+#pragma once
+// Running a scene: its claims, then the experiment sections it asks for, into one run record.
+
+#include <simpson/verify/claim.hpp>
+#include <simpson/verify/experiments.hpp>
+#include <simpson/verify/result_model.hpp>
+#include <simpson/verify/scene.hpp>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace simpson::verify {
+
+struct claim_outcome {
+  const claim* checked = nullptr;
+  verdict expected = verdict::holds;
+  claim_result result;
+  double seconds = 0;
+};
+
+struct run_record {
+  scene run_scene;
+  std::vector<claim_outcome> outcomes;
+  json paper_configuration;
+  json environment;
+  std::vector<section_result> sections;  // the experiment sections the scene asked for, in order
+  std::vector<double> section_seconds;
+  double seconds = 0;
+};
+
+/// Called before and after each claim: (index, count, claim, outcome or nullptr).
+using progress_callback = std::function<void(std::size_t, std::size_t, const claim&, const claim_outcome*)>;
+
+/// Runs every claim of the scene; a check that throws is recorded as `fails` with the message.
+/// Throws simpson::verify::interrupted when interruption_signal() is set (checked between claims
+/// and between numeric samples).
+/// Then runs the experiment sections the scene asks for (table1, work_precision, stability,
+/// long_time), calling `section_progress(name, seconds)` after each.
+run_record run(const scene& s, const progress_callback& progress = {},
+               const std::function<void(const std::string&, double)>& section_progress = {});
+
+/// True when every verdict equals its expected verdict.
+bool all_as_expected(const run_record& r);
+
+}  // namespace simpson::verify

@@ -1,0 +1,225 @@
+// simpson-verify: runs a scene of the claims ledger and writes its report.
+// Exit codes: 0 every verdict as expected; 1 some verdict differs (each named on stderr);
+// 2 bad input or usage (one line on stderr, nothing written).
+
+#include <simpson/verify/experiment_cost.hpp>
+#include <simpson/verify/interruption.hpp>
+#include <simpson/verify/ledger.hpp>
+#include <simpson/verify/progress.hpp>
+#include <simpson/verify/report.hpp>
+#include <simpson/verify/scene.hpp>
+
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+#include <fmt/format.h>
+
+#include <chrono>
+#include <memory>
+#include <unistd.h>
+#include <csignal>
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace simpson::verify;
+
+extern "C" void record_signal(int signal) { interruption_signal().store(signal); }
+
+/// Progress of long sections on stderr, at most two updates a second: on a terminal one line
+/// rewritten in place with a percentage, otherwise plain lines.
+void install_progress() {
+  using clock = std::chrono::steady_clock;
+  const bool terminal = ::isatty(STDERR_FILENO) != 0;
+  auto last = std::make_shared<clock::time_point>(clock::now());
+  set_progress_sink([terminal, last](const std::string& section, const std::string& what, double fraction) {
+    const auto now = clock::now();
+    if (now - *last < std::chrono::milliseconds(500)) return;
+    *last = now;
+    const std::string percent = fraction >= 0 ? fmt::format(" {:3.0f}%", 100 * fraction) : "";
+    if (terminal) {
+      fmt::print(stderr, "\r\033[K[{}]{} {}", section, percent, what);
+    } else {
+      fmt::print(stderr, "[{}]{} {}\n", section, percent, what);
+    }
+    std::fflush(stderr);
+  });
+}
+
+/// The exit code of a run stopped by a signal: 128 + its number (130 for SIGINT, 143 for SIGTERM).
+int interrupted_exit(const interrupted& e) {
+  std::fprintf(stderr, "simpson-verify: interrupted (%s); stopped, no report written\n",
+               e.signal() == SIGINT ? "SIGINT" : e.signal() == SIGTERM ? "SIGTERM" : "signal");
+  return 128 + e.signal();
+}
+
+int list_claims() {
+  for (const claim& c : ledger()) {
+    fmt::print("{:<34} §{:<8} {:<8} {}\n", c.id, c.section, to_string(c.expected), c.equation);
+  }
+  return 0;
+}
+
+int list_scenes() {
+  for (const auto& [name, text] : embedded_scenes()) {
+    const scene s = parse_scene(text, name);
+    fmt::print("{:<8} {} claims, {} precisions: {}\n", name, s.claims.size(), s.precisions.size(), s.description);
+  }
+  return 0;
+}
+
+int list_precisions() {
+  fmt::print("double, long double (or long-double), float128, bin50, bin100, mpfr:D ({} <= D <= {}), rational\n",
+             simpson::precision::min_mpfr_digits, simpson::precision::max_mpfr_digits);
+  for (const simpson::precision& p : simpson::default_precisions()) fmt::print("{:<12} epsilon {}\n", p.name(), p.epsilon());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"simpson-verify: proves, rechecks and reports every claim of the symplectic Simpson paper"};
+  app.set_version_flag("--version", std::string("simpson-verify ") + SIMPSON_VERSION);
+  std::string scene_name = "paper", out_dir, seed_text, samples_text;
+  std::vector<std::string> claim_ids, precision_names;
+  bool want_claims = false, want_scenes = false, want_precisions = false, allow_expensive = false, long_run = false;
+  app.add_option("--scene", scene_name, "embedded scene name (paper, quick) or a scene JSON file")->capture_default_str();
+  app.add_option("--out", out_dir, "report directory (default: reports/out/<scene>)");
+  app.add_option("--claims", claim_ids, "comma-separated claim ids (default: the scene's)")->delimiter(',');
+  app.add_option("--precisions", precision_names, "comma-separated precisions (default: the scene's)")->delimiter(',');
+  app.add_option("--seed", seed_text, "seed of the random samples (default: the scene's, printed in the report)");
+  app.add_option("--samples", samples_text, "random samples per numeric recheck and precision, 1..10000");
+  app.add_flag("--allow-expensive", allow_expensive,
+               fmt::format("run a scene whose estimated cost exceeds the budget ({:.3g} double-step units, about {})", default_cost_budget, seconds_text(default_cost_budget)));
+  app.add_flag("--long", long_run, "long_time section: 1e9 steps in double instead of the scene's (implies --allow-expensive)");
+  app.add_flag("--list-claims", want_claims, "list the claims of the ledger and exit");
+  app.add_flag("--list-scenes", want_scenes, "list the embedded scenes and exit");
+  app.add_flag("--list-precisions", want_precisions, "list the precisions and exit");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    std::fprintf(stderr, "simpson-verify: %s\n", e.what());
+    return 2;
+  }
+
+  scene s;
+  std::filesystem::path out;
+  cost_estimate cost;
+  try {
+    if (want_claims) return list_claims();
+    if (want_scenes) return list_scenes();
+    if (want_precisions) return list_precisions();
+    s = load_scene(scene_name);
+    if (!claim_ids.empty()) {
+      std::vector<std::string> ids;
+      for (const claim& c : ledger()) {
+        for (const std::string& id : claim_ids) {
+          if (find_claim(id).id == c.id && (ids.empty() || ids.back() != c.id)) ids.push_back(c.id);
+        }
+      }
+      s.claims = ids;
+    }
+    if (!precision_names.empty()) {
+      s.precisions.clear();
+      for (const std::string& name : precision_names) s.precisions.push_back(simpson::precision::parse(name));
+    }
+    const auto parse_count = [](const std::string& flag, const std::string& text, unsigned long long max) {
+      std::size_t used = 0;
+      unsigned long long v = 0;
+      try {
+        if (text.empty() || text.front() == '-') throw std::invalid_argument("");
+        v = std::stoull(text, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used != text.size() || used == 0 || v > max) {
+        throw std::invalid_argument(flag + " '" + text + "': expected an integer from 0 to " + std::to_string(max));
+      }
+      return v;
+    };
+    if (!seed_text.empty()) s.seed = parse_count("--seed", seed_text, ~0ULL);
+    if (!samples_text.empty()) {
+      const unsigned long long n = parse_count("--samples", samples_text, 10000);
+      if (n < 1) throw std::invalid_argument("--samples '" + samples_text + "': expected an integer from 1 to 10000");
+      s.samples = static_cast<unsigned>(n);
+    }
+    if (long_run) {
+      if (!s.experiments.long_time) s.experiments.long_time = long_time_settings{};
+      s.experiments.long_time->steps_double = 1'000'000'000;
+      allow_expensive = true;
+    }
+    cost = estimate_cost(s.experiments);
+    if (cost.units > default_cost_budget && !allow_expensive) {
+      std::string parts;
+      for (const std::string& line : cost.lines) parts += (parts.empty() ? "" : "; ") + line;
+      throw std::invalid_argument(fmt::format("scene '{}': estimated cost {:.3g} units (about {}) exceeds the budget {:.3g} "
+                                              "units (about {}) ({}); pass --allow-expensive to run it anyway",
+                                              s.name, cost.units, seconds_text(cost.units), default_cost_budget,
+                                              seconds_text(default_cost_budget), parts));
+    }
+    out = out_dir.empty() ? std::filesystem::path("reports/out") / s.name : std::filesystem::path(out_dir);
+    prepare_output_directory(out);
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "simpson-verify: %s\n", e.what());
+    return 2;
+  } catch (const std::domain_error& e) {
+    std::fprintf(stderr, "simpson-verify: %s\n", e.what());
+    return 2;
+  }
+
+  if (s.experiments.any()) {
+    fmt::print(stderr, "experiments: estimated cost {:.3g} units, about {} (budget {:.3g} units, about {})\n", cost.units,
+               seconds_text(cost.units), default_cost_budget, seconds_text(default_cost_budget));
+    install_progress();
+  }
+  std::signal(SIGINT, record_signal);
+  std::signal(SIGTERM, record_signal);
+  try {
+    const auto start = std::chrono::steady_clock::now();
+    const run_record record = run(s, [&](std::size_t k, std::size_t n, const claim& c, const claim_outcome* done) {
+      if (!done) return;
+      fmt::print(stderr, "[{:>2}/{}] {:<34} {:<8} {:.2f} s\n", k + 1, n, c.id, to_string(done->result.outcome), done->seconds);
+    }, [](const std::string& section, double seconds) {
+      if (::isatty(STDERR_FILENO)) fmt::print(stderr, "\r\033[K");
+      fmt::print(stderr, "[section] {:<34} {:.2f} s\n", section, seconds);
+    });
+    throw_if_interrupted();
+    const plot_outcome plots = write_report_files(out, record);
+    for (const std::string& failure : plots.failures) fmt::print(stderr, "simpson-verify: warning: plot not drawn: {}\n", failure);
+    for (const claim_outcome& o : record.outcomes) {
+      const bool as_expected = o.result.outcome == o.expected;
+      fmt::print("  {:<8} {:<34}{}\n", to_string(o.result.outcome), o.checked->id,
+                 as_expected ? "" : "  <- expected " + to_string(o.expected));
+      if (!as_expected) {
+        fmt::print(stderr, "simpson-verify: {}: verdict {}, expected {}\n", o.checked->id, to_string(o.result.outcome),
+                   to_string(o.expected));
+      }
+    }
+    fmt::print("\nPhi3 at the paper's configuration ({})\n{:<12} {:<10} {:<27} {:<11} {:<13} {}\n",
+               record.paper_configuration["parameters"].get<std::string>(), "precision", "epsilon", "alpha = delta",
+               "det-1", "Delta", "Hd(Phi3 y)-Hd(y)");
+    for (const auto& row : record.paper_configuration["rows"]) {
+      fmt::print("{:<12} {:<10} {:<27} {:<11} {:<13} {}\n", row["precision"].get<std::string>(),
+                 row["epsilon"].get<std::string>(), row["alpha_equals_delta"].get<std::string>(),
+                 row["det_minus_one"].get<std::string>(), row["discriminant"].get<std::string>(),
+                 row["hd_change_one_step"].get<std::string>());
+    }
+    fmt::print("\n{} (scene {}, seed {}, {:.1f} s)\nreport: {}, {}\n", summary_line(record), s.name, s.seed,
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+               (out / "report.md").string(), (out / "report.json").string());
+    if (!record.sections.empty()) {
+      fmt::print("sections: ");
+      for (std::size_t k = 0; k < record.sections.size(); ++k) fmt::print("{}{}", k ? ", " : "", record.sections[k].name);
+      fmt::print(" ({} plots drawn); html: {}\n", plots.drawn.size(), (out / "report.html").string());
+    }
+    return all_as_expected(record) ? 0 : 1;
+  } catch (const interrupted& e) {
+    return interrupted_exit(e);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "simpson-verify: error: %s\n", e.what());
+    return 2;
+  }
+}

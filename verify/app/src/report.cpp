@@ -1,0 +1,201 @@
+#include <simpson/verify/report.hpp>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace simpson::verify {
+namespace {
+
+std::string join(const std::vector<std::string>& parts, const std::string& separator) {
+  std::string out;
+  for (const std::string& p : parts) out += (out.empty() ? "" : separator) + p;
+  return out;
+}
+
+std::vector<std::string> precision_names(const std::vector<precision>& precisions) {
+  std::vector<std::string> names;
+  for (const precision& p : precisions) names.push_back(p.name());
+  return names;
+}
+
+
+}  // namespace
+
+std::string summary_line(const run_record& r) {
+  std::size_t held = 0, errata = 0, failed = 0;
+  std::vector<std::string> unexpected;
+  for (const claim_outcome& o : r.outcomes) {
+    held += o.result.outcome == verdict::holds;
+    errata += o.result.outcome == verdict::erratum;
+    failed += o.result.outcome == verdict::fails;
+    if (o.result.outcome != o.expected) unexpected.push_back(o.checked->id);
+  }
+  return fmt::format("{} claims: {} held, {} errata, {} failed; {}", r.outcomes.size(), held, errata, failed,
+                     unexpected.empty() ? std::string("all verdicts as expected")
+                                        : fmt::format("{} not as expected ({})", unexpected.size(), join(unexpected, ", ")));
+}
+
+plot_outcome all_plots_drawn(const run_record& r) {
+  plot_outcome p;
+  for (const section_result& section : r.sections) {
+    for (const plot_spec& plot : section_plots(section)) p.drawn.push_back(plot.name);
+  }
+  return p;
+}
+
+json report_json(const run_record& r) { return report_json(r, all_plots_drawn(r)); }
+
+json report_json(const run_record& r, const plot_outcome& plots) {
+  json claims = json::array();
+  json timing = json::object();
+  for (const claim_outcome& o : r.outcomes) {
+    const claim& c = *o.checked;
+    json entry{{"id", c.id},
+               {"section", c.section},
+               {"equation", c.equation},
+               {"statement", c.statement},
+               {"methods", c.methods},
+               {"verdict", to_string(o.result.outcome)},
+               {"expected", to_string(o.expected)},
+               {"as_expected", o.result.outcome == o.expected}};
+    if (!o.result.correction.empty()) entry["correction"] = o.result.correction;
+    if (!o.result.note.empty()) entry["note"] = o.result.note;
+    entry["evidence"] = o.result.evidence;
+    claims.push_back(std::move(entry));
+    timing[c.id] = o.seconds;
+  }
+  json experiments = json::object(), section_timing = json::object(), plot_list = json::array();
+  for (std::size_t k = 0; k < r.sections.size(); ++k) {
+    const section_result& section = r.sections[k];
+    experiments[section.name] = section_json(section);
+    section_timing[section.name] = r.section_seconds[k];
+    for (const plot_spec& plot : section_plots(section)) {
+      const bool drawn = std::find(plots.drawn.begin(), plots.drawn.end(), plot.name) != plots.drawn.end();
+      plot_list.push_back({{"name", plot.name},
+                           {"section", section.name},
+                           {"caption", plot.caption},
+                           {"script", plot.name + ".gp"},
+                           {"files", drawn ? json::array({plot.name + ".svg", plot.name + ".png"}) : json::array()}});
+    }
+  }
+  timing["total"] = r.seconds;
+  return json{{"tool", "simpson-verify"},
+              {"scene", r.run_scene.name},
+              {"description", r.run_scene.description},
+              {"seed", r.run_scene.seed},
+              {"samples", r.run_scene.samples},
+              {"precisions", precision_names(r.run_scene.precisions)},
+              {"summary", summary_line(r)},
+              {"all_as_expected", all_as_expected(r)},
+              {"claims", claims},
+              {"experiments", experiments},
+              {"plots", plot_list},
+              {"plots_not_drawn", plots.failures},
+              {"files", report_file_names(r, plots)},
+              {"paper_configuration", r.paper_configuration},
+              {"environment", r.environment},
+              {"timing", {{"unit", "seconds"}, {"claims", timing}, {"sections", section_timing}}}};
+}
+
+std::string report_markdown(const run_record& r) { return report_markdown(r, all_plots_drawn(r)); }
+
+std::string report_markdown(const run_record& r, const plot_outcome& plots) {
+  std::string md;
+  md += fmt::format("# simpson-verify report: scene `{}`\n\n", r.run_scene.name);
+  if (!r.run_scene.description.empty()) md += r.run_scene.description + "\n\n";
+  md += fmt::format("**{}**\n\n", summary_line(r));
+  md += fmt::format("Seed {} · {} random samples per numeric recheck and precision · precisions: {}\n\n", r.run_scene.seed,
+                    r.run_scene.samples, join(precision_names(r.run_scene.precisions), ", "));
+  md += "Paper: F. Dubois, J. A. Rojas-Quintero, *A variational symplectic scheme based on Simpson's quadrature*, GSI 2023. "
+        "Verdicts: **holds** (true as printed), **erratum** (false as printed; a corrected statement is proved), **fails** "
+        "(false, no correction found).\n\n";
+
+  md += "## Claims\n\n| id | § | equation | verdict | expected | methods |\n|---|---|---|---|---|---|\n";
+  for (const claim_outcome& o : r.outcomes) {
+    const claim& c = *o.checked;
+    const std::string verdict_text = to_string(o.result.outcome) + (o.result.outcome == o.expected ? "" : " **(unexpected)**");
+    md += fmt::format("| [{}](#{}) | {} | {} | {} | {} | {} |\n", c.id, c.id, c.section, markdown_cell(c.equation), verdict_text,
+                      to_string(o.expected), join(c.methods, ", "));
+  }
+
+  md += "\n## Errata\n\n";
+  bool any_erratum = false;
+  for (const claim_outcome& o : r.outcomes) {
+    if (o.result.outcome != verdict::erratum) continue;
+    any_erratum = true;
+    const claim& c = *o.checked;
+    md += fmt::format("### {} (§{}, {})\n\n- Printed: {}\n- Corrected: {}\n", c.id, c.section, c.equation, c.statement,
+                      o.result.correction);
+    if (!o.result.note.empty()) md += "- Note: " + o.result.note + "\n";
+    md += "\n";
+  }
+  if (!any_erratum) md += "None in this run.\n\n";
+
+  md += "## Notes on claims that hold\n\n";
+  for (const claim_outcome& o : r.outcomes) {
+    if (o.result.outcome == verdict::erratum || o.result.note.empty()) continue;
+    md += fmt::format("- **{}**: {}\n", o.checked->id, o.result.note);
+  }
+
+  md += "\n## Φ₃ at the paper's configuration\n\n";
+  md += r.paper_configuration.value("parameters", "") + "\n\n";
+  md += "| precision | epsilon | α = δ | β | γ | det Φ₃ − 1 | Δ | H_d(Φ₃y) − H_d(y) |\n|---|---|---|---|---|---|---|---|\n";
+  for (const json& row : r.paper_configuration["rows"]) {
+    md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |\n", row["precision"].get<std::string>(),
+                      row["epsilon"].get<std::string>(), row["alpha_equals_delta"].get<std::string>(),
+                      row["beta"].get<std::string>(), row["gamma"].get<std::string>(), row["det_minus_one"].get<std::string>(),
+                      row["discriminant"].get<std::string>(), row["hd_change_one_step"].get<std::string>());
+  }
+
+  if (!r.sections.empty()) {
+    md += "\n# Experiments\n\n";
+    std::vector<std::string> names;
+    for (const section_result& section : r.sections) names.push_back(section.name);
+    md += "Sections computed for this scene: " + join(names, ", ") +
+          ". Data files (CSV, .dat) and gnuplot scripts (.gp) are beside this report; each plot is an SVG and a PNG.\n\n";
+    for (const section_result& section : r.sections) md += section_markdown(section);
+    if (!plots.failures.empty()) {
+      md += "**Plots not drawn:** " + join(plots.failures, "; ") + "\n\n";
+    }
+  }
+
+  md += "\n## Evidence\n\n";
+  for (const claim_outcome& o : r.outcomes) {
+    const claim& c = *o.checked;
+    md += fmt::format("### {}\n\n§{}, {} — **{}** (expected {})\n\n> {}\n\n", c.id, c.section, c.equation,
+                      to_string(o.result.outcome), to_string(o.expected), c.statement);
+    if (!o.result.correction.empty()) md += "Corrected: " + o.result.correction + "\n\n";
+    if (!o.result.note.empty()) md += "Note: " + o.result.note + "\n\n";
+    md += "```json\n" + o.result.evidence.dump(2) + "\n```\n\n";
+  }
+  return md;
+}
+
+std::vector<std::string> report_file_names(const run_record& r, const plot_outcome& plots) {
+  std::vector<std::string> names{"report.json", "report.md", "report.html"};
+  for (const section_result& section : r.sections) {
+    for (const data_file& f : section_files(section)) names.push_back(f.name);
+    for (const plot_spec& plot : section_plots(section)) {
+      names.push_back(plot.name + ".gp");
+      if (std::find(plots.drawn.begin(), plots.drawn.end(), plot.name) != plots.drawn.end()) {
+        names.push_back(plot.name + ".svg");
+        names.push_back(plot.name + ".png");
+      }
+    }
+  }
+  return names;
+}
+
+plot_outcome write_report_files(const std::filesystem::path& dir, const run_record& r) {
+  return write_report_directory(dir, r.sections, [&](const plot_outcome& plots) {
+    return report_documents{report_json(r, plots), report_markdown(r, plots), "simpson-verify report: scene " + r.run_scene.name};
+  });
+}
+
+}  // namespace simpson::verify

@@ -1,0 +1,66 @@
+#include <simpson/verify/interruption.hpp>
+#include <simpson/verify/ledger.hpp>
+#include <simpson/verify/environment.hpp>
+#include <simpson/verify/paper_configuration.hpp>
+#include <simpson/verify/run.hpp>
+
+#include <chrono>
+#include <exception>
+
+namespace simpson::verify {
+
+run_record run(const scene& s, const progress_callback& progress,
+               const std::function<void(const std::string&, double)>& section_progress) {
+  using clock = std::chrono::steady_clock;
+  const auto start = clock::now();
+  run_record r;
+  r.run_scene = s;
+  const run_context ctx{s.precisions, s.seed, s.samples};
+  for (std::size_t k = 0; k < s.claims.size(); ++k) {
+    throw_if_interrupted();
+    const claim& c = find_claim(s.claims[k]);
+    if (progress) progress(k, s.claims.size(), c, nullptr);
+    claim_outcome outcome;
+    outcome.checked = &c;
+    const auto override_it = s.expected_overrides.find(c.id);
+    outcome.expected = override_it == s.expected_overrides.end() ? c.expected : override_it->second;
+    const auto claim_start = clock::now();
+    try {
+      outcome.result = c.check(ctx);
+    } catch (const interrupted&) {
+      throw;
+    } catch (const std::exception& e) {
+      outcome.result = claim_result{};
+      outcome.result.outcome = verdict::fails;
+      outcome.result.evidence["error"] = std::string("the check threw: ") + e.what();
+    }
+    outcome.seconds = std::chrono::duration<double>(clock::now() - claim_start).count();
+    r.outcomes.push_back(std::move(outcome));
+    if (progress) progress(k, s.claims.size(), c, &r.outcomes.back());
+  }
+  const experiment_settings& e = s.experiments;
+  const auto section = [&](auto&& compute) {
+    throw_if_interrupted();
+    const auto section_start = clock::now();
+    r.sections.push_back(compute());
+    r.section_seconds.push_back(std::chrono::duration<double>(clock::now() - section_start).count());
+    if (section_progress) section_progress(r.sections.back().name, r.section_seconds.back());
+  };
+  if (e.table1) section([&] { return run_table1(*e.table1); });
+  if (e.work_precision) section([&] { return run_work_precision(*e.work_precision); });
+  if (e.stability) section([&] { return run_stability(*e.stability); });
+  if (e.long_time) section([&] { return run_long_time(*e.long_time); });
+  r.paper_configuration = paper_configuration(s.precisions);
+  r.environment = build_environment();
+  r.seconds = std::chrono::duration<double>(clock::now() - start).count();
+  return r;
+}
+
+bool all_as_expected(const run_record& r) {
+  for (const claim_outcome& o : r.outcomes) {
+    if (o.result.outcome != o.expected) return false;
+  }
+  return true;
+}
+
+}  // namespace simpson::verify

@@ -1,0 +1,28 @@
+#pragma once
+// The scene sections beside the claims: the paper's experiment (table1), error against run time
+// (work_precision), stiff and extreme cases (stability) and long runs (long_time). Each is
+// computed only when its scene asks for it, and returns a section_result: its tables and plots as
+// data (result_model.hpp), rendered by section_render.hpp. Run times are timing columns, which
+// report.json keeps in members named "timing" (left out when reports are compared).
+
+#include <simpson/verify/long_time_section.hpp>
+#include <simpson/verify/stability_section.hpp>
+#include <simpson/verify/table1_section.hpp>
+#include <simpson/verify/work_precision_section.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace simpson::verify {
+
+/// The sections a scene asks for (each absent section is not computed).
+struct experiment_settings {
+  std::optional<table1_settings> table1;
+  std::optional<work_precision_settings> work_precision;
+  std::optional<stability_settings> stability;
+  std::optional<long_time_settings> long_time;
+  bool any() const { return table1 || work_precision || stability || long_time; }
+};
+
+}  // namespace simpson::verify

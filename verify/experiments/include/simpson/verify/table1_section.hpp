@@ -1,0 +1,19 @@
+#pragma once
+// The table1 section: the paper's experiment (Section 8) for any list of N, beside Table 1's
+// published values, with estimated orders and Figure 1 redrawn.
+
+#include <simpson/verify/result_model.hpp>
+
+#include <vector>
+
+namespace simpson::verify {
+
+struct table1_settings {
+  std::vector<long long> meshes{10, 20, 40};  // N, one period each
+  long long figure_meshes = 15;               // N of Figure 1
+  double m = 1;
+};
+
+section_result run_table1(const table1_settings& s);
+
+}  // namespace simpson::verify

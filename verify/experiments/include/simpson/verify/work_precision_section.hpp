@@ -1,0 +1,35 @@
+#pragma once
+// The work_precision section: error against run time for the Simpson scheme and its peers, in
+// several precisions, each scheme advancing by its own step algorithm.
+
+#include <simpson/precision.hpp>
+#include <simpson/scheme.hpp>
+#include <simpson/verify/result_model.hpp>
+
+#include <vector>
+
+namespace simpson::verify {
+
+/// Every scheme of scheme_list, in its order (work_precision's "all").
+inline std::vector<scheme_id> all_schemes() {
+  std::vector<scheme_id> ids;
+  for (const scheme_traits& s : scheme_list) ids.push_back(s.id);
+  return ids;
+}
+
+struct timing_policy {
+  unsigned max_runs = 20;    // after one warm-up
+  double max_seconds = 2;    // stop repeating once this much time is spent
+};
+
+struct work_precision_settings {
+  std::vector<scheme_id> schemes = all_schemes();
+  std::vector<precision> precisions;
+  std::vector<long long> meshes{16, 64, 256, 1024, 4096};  // N per period
+  long long periods = 1;
+  timing_policy timing;
+};
+
+section_result run_work_precision(const work_precision_settings& s);
+
+}  // namespace simpson::verify

@@ -1,0 +1,84 @@
+// The cost estimate that guards a scene against running for days: steps times the cost of a step
+// in each precision, in units of one step of Φ₃ in double. Calibrated on the 2-core machine:
+// the paper scene's experiments, estimated at ~3e9 units, take ~13 s (about 5 ns per unit).
+
+#include <simpson/verify/experiment_cost.hpp>
+
+
+#include <fmt/format.h>
+
+namespace simpson::verify {
+namespace {
+
+/// Cost of one arithmetic-heavy step in a precision relative to double, measured on the 2-core
+/// machine (Φ₃ iteration with the energy monitor): software float128 and multiprecision are slower.
+double precision_factor(const precision& p) {
+  switch (p.kind()) {
+    case precision_kind::float64: return 1;
+    case precision_kind::extended: return 2;
+    case precision_kind::float128: return 20;
+    case precision_kind::bin50: return 60;
+    case precision_kind::bin100: return 120;
+    case precision_kind::mpfr: return 30 + static_cast<double>(p.digits10()) / 5;
+    case precision_kind::rational: return 1e6;
+  }
+  return 1;
+}
+
+}  // namespace
+
+cost_estimate estimate_cost(const experiment_settings& e) {
+  cost_estimate c;
+  if (e.table1) {
+    double steps = 0;
+    for (const long long N : e.table1->meshes) steps += 2.0 * static_cast<double>(N);
+    c.units += steps;
+    c.lines.push_back(fmt::format("table1: {:.3g} steps in double", steps));
+  }
+  if (e.work_precision) {
+    const work_precision_settings& w = *e.work_precision;
+    double units = 0;
+    for (const precision& p : w.precisions) {
+      for (const scheme_id scheme : w.schemes) {
+        for (const long long N : w.meshes) {
+          // The error run and the exact solution (cos, sin: ~10 steps' worth), then up to max_runs + 1
+          // timed runs; each step of a step algorithm costs ~10 matrix steps per stage.
+          const double steps = static_cast<double>(N) * static_cast<double>(w.periods);
+          units += steps * precision_factor(p) * (10 + 10 * traits_of(scheme).stages * (2 + w.timing.max_runs));
+        }
+      }
+    }
+    c.units += units;
+    c.lines.push_back(fmt::format("work_precision: {:.3g} units (timing capped at {} s per configuration)", units,
+                                  w.timing.max_seconds));
+  }
+  if (e.stability) {
+    const stability_settings& s = *e.stability;
+    double units = 9 * static_cast<double>(s.steps) * precision_factor(precision::mpfr_digits(50));
+    for (const precision& p : s.precisions) {
+      units += static_cast<double>(s.stiff_omegas.size() + s.omega_h.size() + s.masses.size()) *
+               static_cast<double>(s.steps) * precision_factor(p) * 2;
+    }
+    c.units += units;
+    c.lines.push_back(fmt::format("stability: {:.3g} units", units));
+  }
+  if (e.long_time) {
+    const long_time_settings& l = *e.long_time;
+    // Each step also evaluates an energy and an angle (atan2): about 12 units in double (measured:
+    // 1e7 steps of the three schemes take ~2 s).
+    const double units = 3 * 12 * static_cast<double>(l.steps_double) +
+                         3 * 12 * static_cast<double>(l.steps_mpfr) * precision_factor(precision::mpfr_digits(l.mpfr_digits));
+    c.units += units;
+    c.lines.push_back(fmt::format("long_time: {:.3g} units", units));
+  }
+  return c;
+}
+
+std::string seconds_text(double units) {
+  const double seconds = units * seconds_per_cost_unit;
+  if (seconds < 120) return fmt::format("{:.2g} s", seconds);
+  if (seconds < 7200) return fmt::format("{:.2g} min", seconds / 60);
+  return fmt::format("{:.2g} h", seconds / 3600);
+}
+
+}  // namespace simpson::verify

@@ -1,0 +1,305 @@
+// The stability section: the exact stability region of Φ₃, the behaviour at and around each
+// endpoint, stiff ω at fixed ωh, extreme ωh in each precision, and extreme masses. Every figure is
+// computed, and every fault decided, in the precision of its row.
+
+#include <simpson/verify/stability_section.hpp>
+#include <simpson/verify/interruption.hpp>
+#include <simpson/verify/progress.hpp>
+
+#include <simpson/verify/floating_tools.hpp>
+#include "guarded_run.hpp"
+#include <simpson/verify/stability_analysis.hpp>
+
+#include <simpson/energy.hpp>
+#include <simpson/exact_solution.hpp>
+#include <simpson/iterate.hpp>
+#include <simpson/simpson_map.hpp>
+#include <simpson/three_term_scheme.hpp>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace simpson::verify {
+namespace {
+
+/// The exact region of Φ₃ from the Sturm-sequence analysis of its discriminant (the ledger's).
+stability_report exact_region() {
+  return analyse_three_term_scheme([](const symbolic& qp, const symbolic& q, const symbolic& qn) {
+    const oscillator_parameters<symbolic> unit{symbolic(1), symbolic(1), symbolic::variable()};
+    return three_term_residual(unit, qp, q, qn);
+  });
+}
+
+table region_table(const stability_report& report) {
+  table t{"intervals", "Exact stability region of Φ₃ (ωh > 0)",
+          "From the exact discriminant Δ(x), x = ω²h², by Sturm sequences (the ledger's stability claims): stable where "
+          "Δ < 0 (two simple roots on the unit circle).",
+          {{"omega_h_from", "ωh from"}, {"omega_h_to", "ωh to"}, {"x_from", "x from"}, {"x_to", "x to"},
+           {"sign_of_discriminant", "Δ"}, {"stable", "stable"}}};
+  for (const stability_band& b : report.bands) {
+    t.add({figure::text(b.omega_h_from), figure::text(b.omega_h_to), figure::exact(b.x_from),
+           b.to ? (b.to->exact() ? figure::exact(b.to->low) : figure::text(root_text(*b.to))) : figure::text("infinity"),
+           figure::text(b.discriminant_negative ? "negative" : "positive"), figure::flag(b.stable)});
+  }
+  return t;
+}
+
+/// At and around each exact endpoint x_e, in mpfr:50: the eigenvalues of Φ₃, the Jordan block at
+/// x_e itself, and the growth of |y_j| from a start off every eigenvector.
+table endpoint_table(const stability_report& report, long long steps) {
+  table t{"endpoints",
+          fmt::format("At and around each endpoint (mpfr:50, m = ω = 1, {} steps from y₀ = (0.6 mω, 0.8), amplitude "
+                      "A = |q| + |p|/(mω))",
+                      steps),
+          "At an endpoint Φ₃ has a double eigenvalue ±1 with a Jordan block (Φ₃ ∓ I ≠ 0), so |y_j| grows linearly; inside "
+          "a stable interval it stays bounded; outside it grows like the growth factor^j.",
+          {{"omega_h", "ωh"}, {"eigenvalues", "eigenvalues"}, {"growth_factor", "growth factor", "", 8},
+           {"jordan_block", "Jordan block (Φ₃ − λI ≠ 0)"}}};
+  // max |y_j|/A sampled at j = 10, 100, 1000 and the last step, those within the run.
+  std::vector<long long> sampled;
+  for (const long long j : {10LL, 100LL, 1000LL, steps}) {
+    if (j <= steps && std::find(sampled.begin(), sampled.end(), j) == sampled.end()) sampled.push_back(j);
+  }
+  for (const long long j : sampled) {
+    t.columns.push_back({fmt::format("max_amplitude_ratio_{}", j), fmt::format("max |y|/A by j = {}", j)});
+  }
+  visit_floating(precision::mpfr_digits(50), [&](auto tag) {
+    using Real = typename decltype(tag)::type;
+    using std::abs;
+    using std::sqrt;
+    for (const positive_root& root : report.roots) {
+      if (!root.exact()) throw std::logic_error("stability: endpoint x = " + root_text(root) + " is not exact");
+      const rational& x_end = root.low;
+      const Real theta_end = sqrt(Real(from_decimal<Real>(boost::multiprecision::numerator(x_end).str()) /
+                                       from_decimal<Real>(boost::multiprecision::denominator(x_end).str())));
+      for (const int side : {-1, 0, 1}) {
+        throw_if_interrupted();
+        const Real theta = theta_end * (1 + Real(side) / 1000000);
+        const oscillator_parameters<Real> par{Real(1), Real(1), theta};
+        const one_step_matrix<Real> phi = simpson_map(par);
+        // Eigenvalues of Φ₃ = ((α, β), (γ, α)) with det 1: α ± sqrt(α² − 1), on the unit circle when |α| <= 1.
+        const Real a = phi.alpha, d = a * a - 1;
+        figure eigenvalues, growth;
+        if (d <= 0) {
+          eigenvalues = figure::text(fmt::format("{} ± {} i", simpson::to_string(a, 8), simpson::to_string(Real(sqrt(Real(-d))), 8)));
+          growth = figure::exact(rational(1));
+        } else {
+          const Real r = sqrt(d);
+          eigenvalues = figure::text(fmt::format("{}, {}", simpson::to_string(Real(a + r), 8), simpson::to_string(Real(a - r), 8)));
+          growth = figure::of(Real(abs(a) + r));
+        }
+        // At the endpoint α = ±1 up to round-off: θ carries one rounding, and α(x) has slope
+        // |dα/dx| <= 1 on (0, 24], so |α − λ| <= 64 eps x covers θ², the formula's ~20 roundings and room.
+        // A Jordan block: the double root λ with Φ₃ − λI ≠ 0 (β or γ non-zero).
+        const Real lambda = a > 0 ? Real(1) : Real(-1), x = theta * theta;
+        const figure jordan = side == 0 ? figure::flag(abs(phi.beta) + abs(phi.gamma) > 0 &&
+                                                       abs(Real(a - lambda)) <= 64 * eps<Real>() * x)
+                                        : figure::text("n/a");
+        // max_j (|q_j| + |p_j|/(mω)) / A from y_0 = (0.6 mω, 0.8), A = 1, sampled at j = 10, 100, 1000 and the end.
+        const phase_point<Real> y0{Real(par.m() * par.omega() * 6 / 10), Real(Real(8) / 10)};
+        phase_point<Real> y = y0;
+        Real largest(0);
+        std::vector<figure> samples(sampled.size());
+        for (long long j = 1; j <= steps; ++j) {
+          y = phi * y;
+          largest = std::max(largest, Real(abs(y.q) + abs(y.p) / (par.m() * par.omega())));
+          const bool unstable = largest > detail::growth_limit;
+          for (std::size_t k = 0; k < sampled.size(); ++k) {
+            if (sampled[k] == j || (unstable && sampled[k] > j)) samples[k] = unstable ? unstable_at(j) : figure::of(largest);
+          }
+          if (unstable) break;
+        }
+        const std::string x_text = simpson::to_string(x_end);
+        table_row row{figure::text(side == 0 ? fmt::format("sqrt({}) = {}", x_text, simpson::to_string(theta, 8))
+                                             : fmt::format("sqrt({}) (1 {} 1e-6)", x_text, side < 0 ? "-" : "+")),
+                      eigenvalues, growth, jordan};
+        row.insert(row.end(), samples.begin(), samples.end());
+        t.add(std::move(row));
+      }
+    }
+  });
+  return t;
+}
+
+/// Exact truncation coefficients F(θ)/θ⁴, F(θ) = (2 cos θ − 2)/θ² + (2 cos θ + 22)/24 − θ²/24 (the
+/// scheme's residual on q = cos, divided by q), as decimal strings with more digits than any
+/// precision of the run: F/θ⁴ cancels about 4 log10(1/θ) digits, and the reference keeps 40 more.
+std::vector<std::string> exact_truncation_coefficients(const std::vector<double>& omega_h, unsigned run_digits) {
+  double smallest = 1;
+  for (const double th : omega_h) smallest = std::min(smallest, th);
+  const unsigned digits = std::max(200u, run_digits + 40 + static_cast<unsigned>(std::ceil(4 * std::max(0.0, -std::log10(smallest)))));
+  std::vector<std::string> out;
+  visit_floating(precision::mpfr_digits(std::min(digits, precision::max_mpfr_digits)), [&](auto tag) {
+    using Real = typename decltype(tag)::type;
+    using std::cos;
+    for (const double th : omega_h) {
+      const Real t(th), c = cos(t);
+      const Real F = (2 * c - 2) / (t * t) + (2 * c + 22) / 24 - t * t / 24;
+      out.push_back(simpson::to_string(Real(F / (t * t * t * t)), static_cast<int>(digits)));
+    }
+  });
+  return out;
+}
+
+/// Correct significant digits of a value whose relative error is `rel`, at most what the precision carries.
+template <class Real>
+figure digits_kept(const Real& rel, double carried) {
+  using std::log10;
+  if (rel == 0) return figure::of(carried);
+  const double d = std::clamp(-static_cast<double>(log10(rel)), 0.0, carried);
+  return figure::of(std::round(d * 10) / 10);  // a count of digits, rounded to 0.1: double carries it whole
+}
+
+/// Stiff ω at fixed ωh, in each precision: errors at the end and the drift of H_d.
+table stiff_table(const stability_settings& s) {
+  table stiff{"stiff",
+              fmt::format("Stiff: ω up to {} at ωh = {} ({} steps, m = 1)",
+                          simpson::to_string(s.stiff_omegas.empty() ? 0.0 : s.stiff_omegas.back(), 1),
+                          simpson::to_string(s.stiff_omega_h, 3), s.steps),
+              "Relative errors at the end against the exact solution and the largest relative change of H_d; by the "
+              "scaling lemma they depend on ωh alone, so each column should be constant down the precision's round-off.",
+              {{"precision", "precision"}, {"omega", "ω", "", 1}, {"error_q", "error q"}, {"error_p_over_m_omega", "error p/(mω)"},
+               {"max_Hd_drift_relative", "max H_d drift (relative)"}, {"status", "status"}}};
+  for (const precision& prec : s.precisions) {
+    visit_floating(prec, [&](auto tag) {
+      using Real = typename decltype(tag)::type;
+      using std::abs;
+      for (const double w : s.stiff_omegas) {
+        throw_if_interrupted();
+        const oscillator_parameters<Real> par{Real(1), Real(w), Real(Real(s.stiff_omega_h) / Real(w))};
+        const phase_point<Real> y0{Real(w), Real(0)};
+        const auto run = detail::guarded_iterate(simpson_map(par), par, y0, s.steps,
+                                                 [&](const phase_point<Real>& y) { return discrete_energy(par, y); });
+        if (!run.ok()) {
+          stiff.add({figure::text(prec.name()), figure::of(w), figure{}, figure{}, figure{}, run.status});
+          continue;
+        }
+        const phase_point<Real> exact = exact_solution(par, y0, Real(par.h() * Real(s.steps)));
+        stiff.add({figure::text(prec.name()), figure::of(w), figure::of(Real(abs(Real(run.end.q - exact.q)))),
+                   figure::of(Real(abs(Real(run.end.p - exact.p)) / Real(w))), figure::of(run.max_relative_drift), run.status});
+      }
+    });
+  }
+  return stiff;
+}
+
+/// Extreme ωh in each precision: the digits of the truncation coefficient c against its exact
+/// value, and of H_d over a run; one panel of the digits plot per precision.
+std::pair<table, plot_description> extreme_omega_h(const stability_settings& s) {
+  table extreme{"extreme_omega_h", "Extreme ωh in each precision",
+                "Truncation coefficient: c = T_h(q_j)/(ω⁶h⁴q_j) computed from the scheme's own formula (schema-ordre-3) on "
+                "exact values, against its exact value F(θ)/θ⁴ (closed form, in mpfr with more digits than the run), which "
+                "tends to 1/1440; 'digits' = correct significant digits of c. H_d: the largest relative change over the run, "
+                "and the digits it keeps. A precision 'loses 1/1440' where c has no correct digit.",
+                {{"precision", "precision"}, {"omega_h", "ωh", "", 2}, {"c", "c"}, {"c_exact", "exact c", "", 6},
+                 column::fixed_point("digits_of_c", "digits of c", 1), {"max_Hd_drift_relative", "max H_d drift"},
+                 column::fixed_point("digits_of_Hd", "digits of H_d", 1), {"status", "status"}}};
+  unsigned run_digits = 0;
+  for (const precision& p : s.precisions) run_digits = std::max(run_digits, p.digits10());
+  const std::vector<std::string> exact_c = exact_truncation_coefficients(s.omega_h, run_digits);
+  std::vector<panel> digit_panels;
+  for (const precision& prec : s.precisions) {
+    panel digits_panel{prec.name(), {"omega h (dimensionless)", true}, {"correct significant digits"}, {}, "bottom right"};
+    series c_digits{"c (truncation coefficient)", line_style::lines_points, 0, 7};
+    series hd_digits{"H_d", line_style::lines_points, 1, 6};
+    visit_floating(prec, [&](auto tag) {
+      using Real = typename decltype(tag)::type;
+      using std::abs;
+      using std::cos;
+      using std::sin;
+      const double carried = static_cast<double>(prec.digits10());
+      for (std::size_t k = 0; k < s.omega_h.size(); ++k) {
+        throw_if_interrupted();
+        const double th = s.omega_h[k];
+        const oscillator_parameters<Real> par{Real(1), Real(1), Real(th)};
+        // c from the scheme's residual at t = 0.3 on the exact solution q = sin t.
+        const phase_point<Real> at{Real(cos(Real(3) / 10)), Real(sin(Real(3) / 10))};
+        const Real q_prev = exact_solution(par, at, Real(-par.h())).q, q_next = exact_solution(par, at, par.h()).q;
+        const Real t4 = Real(th) * Real(th) * Real(th) * Real(th);
+        const Real c = three_term_residual(par, q_prev, at.q, q_next) / (t4 * at.q);
+        const Real c_exact = from_decimal<Real>(exact_c[k]);
+        // |c_exact|: F/θ⁴ changes sign in the second stable band.
+        const figure c_digits_kept = digits_kept(Real(abs(Real(c - c_exact)) / abs(c_exact)), carried);
+        const auto run = detail::guarded_iterate(simpson_map(par), par, phase_point<Real>{Real(1), Real(0)}, s.steps,
+                                                 [&](const phase_point<Real>& y) { return discrete_energy(par, y); });
+        const figure hd_digits_kept = run.ok() ? digits_kept(run.max_relative_drift, carried) : figure{};
+        extreme.add({figure::text(prec.name()), figure::of(th), figure::of(c), figure::of(c_exact), c_digits_kept,
+                     run.ok() ? figure::of(run.max_relative_drift) : run.status, hd_digits_kept, run.status});
+        c_digits.add(figure::of(th), c_digits_kept);
+        hd_digits.add(figure::of(th), hd_digits_kept);
+      }
+    });
+    progress_step("stability", prec.name());
+    digits_panel.curves = {c_digits, hd_digits};
+    digit_panels.push_back(digits_panel);
+  }
+  const int columns = static_cast<int>(std::min<std::size_t>(3, std::max<std::size_t>(1, s.precisions.size())));
+  const int rows = static_cast<int>((s.precisions.size() + static_cast<std::size_t>(columns) - 1) / static_cast<std::size_t>(columns));
+  return {std::move(extreme),
+          plot_description{"stability_extreme",
+                           "Correct significant digits of the truncation coefficient c and of H_d against ωh, one panel per "
+                           "precision (each with its own digits axis)",
+                           digit_panels, columns, 400 * columns, 330 * std::max(1, rows)}};
+}
+
+/// Extreme masses in each precision: every figure and fault decided in the precision.
+table mass_table(const stability_settings& s) {
+  table masses{"extreme_masses", "Extreme masses (ω = 1, ωh = 1, y₀ = (mω, 0))",
+               "Every figure is decided in its precision: a value beyond the precision's range is 'overflow', an energy "
+               "lost to zero or a value below its smallest normal number 'underflow', a NaN 'non-finite'.",
+               {{"precision", "precision"}, {"m", "m", "", 1}, {"H0", "H(y₀)"}, {"Hd0", "H_d(y₀)"},
+                {"max_Hd_drift_relative", "max H_d drift (relative)"}, {"error_q_end", "error q (end)"}, {"status", "status"}}};
+
+  for (const precision& prec : s.precisions) {
+    visit_floating(prec, [&](auto tag) {
+      using Real = typename decltype(tag)::type;
+      using std::abs;
+      for (const double mass : s.masses) {
+        throw_if_interrupted();
+        // The mass is converted to Real first: 1e300 is finite in every precision here, its square not in double.
+        const oscillator_parameters<Real> par{Real(mass), Real(1), Real(1)};
+        const phase_point<Real> y0{par.m(), Real(0)};
+        const Real H0 = energy(par, y0), Hd0 = discrete_energy(par, y0);
+        const auto run = detail::guarded_iterate(simpson_map(par), par, y0, s.steps,
+                                                 [&](const phase_point<Real>& y) { return discrete_energy(par, y); });
+        const figure h0 = H0 == 0 ? figure::fault("underflow") : figure::of(H0);
+        const figure hd0 = Hd0 == 0 ? figure::fault("underflow") : figure::of(Hd0);
+        const figure drift = run.ok() ? figure::of(run.max_relative_drift) : run.status;
+        // The state's error stays meaningful when only the energy faults (it under- or overflows, the state does not).
+        const phase_point<Real> end = run.steps_done == s.steps || is_unstable(run.status)
+                                          ? run.end
+                                          : iterate(simpson_map(par), y0, static_cast<std::size_t>(s.steps), [](std::size_t, const phase_point<Real>&) {});
+        const figure error = is_unstable(run.status) ? figure{}
+                                                     : figure::of(Real(abs(Real(end.q - exact_solution(par, y0, Real(s.steps)).q))));
+        // The row's status: the run's, else the first fault among its figures.
+        figure status = run.status;
+        for (const figure& f : {h0, hd0, drift, error}) {
+          if (!status.is_fault() && f.is_fault()) status = f;
+        }
+        masses.add({figure::text(prec.name()), figure::of(mass), h0, hd0, drift, error, status});
+      }
+    });
+  }
+  return masses;
+}
+
+}  // namespace
+
+section_result run_stability(const stability_settings& s) {
+  section_result out;
+  out.name = "stability";
+  out.title = "Stability: exact region, endpoints, stiff and extreme cases";
+  out.conventions = {{"steps", s.steps}, {"stiff_omega_h", s.stiff_omega_h}};
+  const stability_report report = exact_region();
+  out.add(region_table(report));
+  out.add(endpoint_table(report, s.steps));
+  progress_step("stability", "exact region and endpoints");
+  out.add(stiff_table(s));
+  auto [extreme, digits_plot] = extreme_omega_h(s);
+  out.add(std::move(extreme)).add(mass_table(s)).add(std::move(digits_plot));
+  return out;
+}
+
+}  // namespace simpson::verify

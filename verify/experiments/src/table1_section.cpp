@@ -1,0 +1,193 @@
+// The table1 section: the paper's experiment (Section 8) for any list of N, beside Table 1's
+// published values, with estimated orders and Figure 1 redrawn. Computed in double, as the paper.
+
+#include <simpson/verify/table1_section.hpp>
+
+#include <simpson/verify/floating_tools.hpp>
+#include <simpson/verify/paper_table.hpp>
+
+#include <fmt/format.h>
+
+#include <map>
+
+namespace simpson::verify {
+namespace {
+
+/// Published value of a row at N, when Table 1 has that column.
+std::optional<double> published_at(const published_row& row, long long N) {
+  for (std::size_t k = 0; k < published_meshes.size(); ++k) {
+    if (published_meshes[k] == N) return row.published[k];
+  }
+  return std::nullopt;
+}
+
+using runs_by_mesh = std::map<long long, std::array<table_errors, 2>>;  // [newmark, simpson]
+
+double ours(const runs_by_mesh& runs, const published_row& row, long long N) {
+  return runs.at(N)[row.simpson_scheme ? 1 : 0].*row.field;
+}
+
+/// Figure 1: exact and computed p/(mω) and q over one period with N steps.
+plot_description figure1_plot(double m, long long N) {
+  const double omega = boost::math::constants::two_pi<double>();
+  const oscillator_parameters<double> par{m, omega, step_size(1.0, N)};
+  const phase_point<double> y0{m * omega, 0.0};
+  series q_exact{"q exact", line_style::lines, 9}, p_exact{"p/(m omega) exact", line_style::dashed, 9};
+  for (int k = 0; k <= 400; ++k) {
+    const double t = k / 400.0;
+    const phase_point<double> y = exact_solution(par, y0, t);
+    q_exact.add(figure::of(t), figure::of(y.q));
+    p_exact.add(figure::of(t), figure::of(y.p / (m * omega)));
+  }
+  panel pan{fmt::format("Figure 1: harmonic oscillator, one period, N = {}", N),
+            {"t (periods)"}, {"q and p/(m omega) (dimensionless)"}, {q_exact, p_exact}, "outside right"};
+  const std::array<std::pair<const char*, one_step_matrix<double>>, 2> schemes{
+      {{"Newmark", newmark_map(par)}, {"Simpson", simpson_map(par)}}};
+  for (std::size_t s = 0; s < schemes.size(); ++s) {
+    const auto path = trajectory(schemes[s].second, y0, static_cast<std::size_t>(N));
+    series q{fmt::format("q {}", schemes[s].first), line_style::lines_points, static_cast<int>(s), s ? 7 : 6};
+    series p{fmt::format("p/(m omega) {}", schemes[s].first), line_style::lines_points, static_cast<int>(s), s ? 5 : 4};
+    for (std::size_t j = 0; j < path.size(); ++j) {
+      const double t = static_cast<double>(j) * par.h();
+      q.add(figure::of(t), figure::of(path[j].q));
+      p.add(figure::of(t), figure::of(path[j].p / (m * omega)));
+    }
+    pan.curves.push_back(q);
+    pan.curves.push_back(p);
+  }
+  return {"figure1", fmt::format("Figure 1 redrawn: exact and computed p and q over one period, N = {}", N), {pan}, 1, 900, 500};
+}
+
+}  // namespace
+
+section_result run_table1(const table1_settings& s) {
+  const double omega = boost::math::constants::two_pi<double>(), H0 = s.m * omega * omega / 2;  // (mω)²/(2m) for y_0 = (mω, 0)
+  runs_by_mesh runs;
+  for (const long long N : s.meshes) {
+    runs[N] = {run_table_experiment(false, N, s.m), run_table_experiment(true, N, s.m)};
+  }
+  section_result out;
+  out.name = "table1";
+  out.title = "Table 1: the paper's experiment";
+  out.conventions = {{"m", s.m}, {"omega", "2 pi"}, {"T", 1}, {"start", "y_0 = (m omega, 0) exact"},
+                     {"errors", "maximum over t_j = j h, j = 0..N"}, {"precision", "double"},
+                     {"round_off_floor", "error <= 64 eps N H_0 is masked in orders"}, {"figure_N", s.figure_meshes}};
+  out.text(fmt::format(
+      "Conventions: m = {}, ω = 2π, T = 1 (one period), h = T/N; y₀ = (mω, 0) exactly, so q(t) = sin ωt and "
+      "p(t) = mω cos ωt; then y_(j+1) = Φ y_j with Φ₃ (Simpson) or (matrice-symplectique-ordre-2) (Newmark), in double. "
+      "Errors are maxima over t_j = jh, j = 0..N, of |p_j − p(t_j)|, |q_j − q(t_j)|, |H(y_j) − H(y₀)| and "
+      "|H_d(y_j) − H_d(y₀)|. Orders: least-squares slope of log error against log h, and the pairwise "
+      "log₂(e_k/e_(k+1))/log₂(N_(k+1)/N_k); points at the round-off floor (error ≤ 64 eps N H₀) are masked, and a row "
+      "whose every point is masked is 'exact'. Published values are Table 1's; the ratio is published/ours.",
+      simpson::to_string(s.m, 3)));
+
+  table entries{"entries", "", "", {{"scheme", "scheme"}, {"quantity", "quantity"}, {"N", "N"}, {"h", "h", "", 6},
+                                    {"ours", "ours"}, {"published", "published"}, {"published_over_ours", "published/ours"},
+                                    {"at_round_off_floor", "at round-off floor"}}};
+  entries.csv_file = "table1.csv";
+  entries.markdown = false;
+  std::vector<column> wide{{"scheme", "scheme"}, {"quantity", "quantity"}};
+  for (const long long N : s.meshes) {
+    wide.push_back({fmt::format("ours_{}", N), fmt::format("N = {}", N)});
+    wide.push_back({fmt::format("paper_{}", N), "paper"});
+    wide.push_back({fmt::format("ratio_{}", N), "ratio"});
+  }
+  std::vector<column> order_columns{{"scheme", "scheme"}, {"quantity", "quantity"}, {"order_least_squares", "order (least squares)"}};
+  for (std::size_t k = 0; k + 1 < s.meshes.size(); ++k) {
+    order_columns.push_back({fmt::format("order_{}_{}", s.meshes[k], s.meshes[k + 1]),
+                             fmt::format("order {}→{}", s.meshes[k], s.meshes[k + 1])});
+  }
+  order_columns.push_back({"order_published", "published order"});
+  table overview{"overview", "", "Ours, the paper's value and the ratio paper/ours at each N ('round-off' where ours is at the floor):",
+                 wide};
+  overview.json = false;
+  table orders{"orders", "", "", order_columns};
+
+  std::vector<std::string> not_reproduced;
+  for (const published_row& row : published_rows()) {
+    std::vector<double> h, e;
+    std::vector<bool> use;
+    table_row wide_row{figure::text(row.scheme), figure::text(row.quantity)};
+    for (const long long N : s.meshes) {
+      const double error = ours(runs, row, N);
+      h.push_back(1.0 / static_cast<double>(N));
+      e.push_back(error);
+      use.push_back(!at_round_off_floor(error, N, H0));
+      const auto published = published_at(row, N);
+      const figure ratio = published ? figure::of(*published / error) : figure{};
+      entries.add({figure::text(row.scheme), figure::text(row.quantity), figure::integer(N), figure::of(h.back()),
+                   figure::of(error), published ? figure::of(*published) : figure{}, ratio, figure::flag(!use.back())});
+      wide_row.push_back(figure::of(error));
+      wide_row.push_back(published ? figure::of(*published) : figure{});
+      wide_row.push_back(published && !use.back() ? figure::text("round-off") : ratio);
+      if (published && use.back()) {
+        const double r = *published / error;
+        if (r < 0.95 || r > 1.05) {
+          not_reproduced.push_back(fmt::format("{} {} at N = {}: paper {}, ours {} (ratio {})", row.scheme, row.quantity, N,
+                                               display(figure::of(*published), 3), display(figure::of(error), 3),
+                                               display(ratio, 3)));
+        }
+      }
+    }
+    overview.add(std::move(wide_row));
+    const bool all_masked = std::none_of(use.begin(), use.end(), [](bool u) { return u; });
+    table_row order_row{figure::text(row.scheme), figure::text(row.quantity),
+                        all_masked ? figure::text("exact") : figure::of(log_log_slope(h, e, use))};
+    for (std::size_t k = 0; k + 1 < e.size(); ++k) {
+      order_row.push_back(!use[k] || !use[k + 1] ? figure::text("masked")
+                                                 : figure::of(std::log2(e[k] / e[k + 1]) / std::log2(h[k] / h[k + 1])));
+    }
+    order_row.push_back(figure::text(row.published_order));
+    orders.add(std::move(order_row));
+  }
+  out.add(std::move(entries)).add(std::move(overview)).add(std::move(orders));
+  if (not_reproduced.empty()) {
+    out.text("Every published entry with a counterpart here is reproduced within 5%.");
+  } else {
+    out.text(fmt::format("**Not reproduced** (outside ±5%): {}.\n\n{} Also tried: {}. See the ledger claims table-values, "
+                         "table-orders and table-conservation.",
+                         fmt::join(not_reproduced, "; "), table_not_reproduced, table_also_tried));
+  }
+  table not_reproduced_list{"not_reproduced", "", "", {{"entry", "entry"}}};
+  not_reproduced_list.markdown = false;
+  for (const std::string& n : not_reproduced) not_reproduced_list.add({figure::text(n)});
+  out.add(std::move(not_reproduced_list));
+
+  out.add(figure1_plot(s.m, s.figure_meshes));
+
+  // Errors of p and q against N: ours (lines), published (open points), and slopes h² and h⁴ through
+  // the first Newmark and Simpson momentum errors.
+  panel convergence{"Table 1: maximum errors against N (one period)", {"N (steps per period)", true},
+                    {"maximum error (p in m omega units, q dimensionless)", true}, {}, "outside right"};
+  for (std::size_t r = 0; r < 4; ++r) {
+    const published_row& row = published_rows()[r];
+    const std::string name = fmt::format("{} {}", row.simpson_scheme ? "Simpson" : "Newmark", r < 2 ? "p" : "q");
+    series mine{name + " ours", line_style::lines_points, static_cast<int>(r), 7};
+    series paper{name + " paper", line_style::points, static_cast<int>(r), 6};
+    for (const long long N : s.meshes) {
+      mine.add(figure::integer(N), figure::of(ours(runs, row, N)));
+      if (const auto published = published_at(row, N)) paper.add(figure::integer(N), figure::of(*published));
+    }
+    convergence.curves.push_back(mine);
+    convergence.curves.push_back(paper);
+  }
+  if (!s.meshes.empty()) {
+    const long long N0 = s.meshes.front();
+    for (const int order : {2, 4}) {
+      const double e0 = ours(runs, published_rows()[order == 2 ? 0 : 1], N0);
+      series slope{fmt::format("slope h^{}", order), line_style::dashed, 8};
+      slope.reference = true;
+      for (const long long N : s.meshes) {
+        slope.add(figure::integer(N), figure::of(e0 * std::pow(static_cast<double>(N0) / static_cast<double>(N), order)));
+      }
+      convergence.curves.push_back(slope);
+    }
+  }
+  out.add(plot_description{"table1_convergence",
+                           "Table 1: maximum errors of p and q against N, ours (lines) and published (open points), "
+                           "with slopes h² and h⁴ (dashed)",
+                           {convergence}, 1, 900, 500});
+  return out;
+}
+
+}  // namespace simpson::verify

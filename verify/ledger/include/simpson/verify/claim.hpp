@@ -1,0 +1,54 @@
+#pragma once
+// One checkable statement of the paper, how it is checked, and what the check found.
+
+#include <simpson/precision.hpp>
+
+#include <simpson/verify/json.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace simpson::verify {
+
+/// holds: true as printed; erratum: false as printed, with a proved correction; fails: false,
+/// no correction found.
+enum class verdict { holds, erratum, fails };
+
+inline std::string to_string(verdict v) {
+  switch (v) {
+    case verdict::holds: return "holds";
+    case verdict::erratum: return "erratum";
+    case verdict::fails: return "fails";
+  }
+  return "?";
+}
+
+/// What a check is given: the precisions of the numeric rechecks, the seed and how many random
+/// samples each recheck draws per precision.
+struct run_context {
+  std::vector<precision> precisions;
+  std::uint64_t seed = 0;
+  unsigned samples = 0;
+};
+
+/// What a check found. `evidence` has one member per method ("exact", "numeric", ...).
+struct claim_result {
+  verdict outcome = verdict::fails;
+  json evidence = json::object();
+  std::string correction;  // the corrected statement, for errata
+  std::string note;        // conditions not stated in the paper, sufficiency, caveats
+};
+
+struct claim {
+  std::string id;         // stable kebab-case
+  std::string section;    // section of the paper
+  std::string equation;   // the paper's equation label, or "prose"
+  std::string statement;  // as printed
+  std::vector<std::string> methods;
+  verdict expected;
+  std::function<claim_result(const run_context&)> check;
+};
+
+}  // namespace simpson::verify

@@ -1,0 +1,204 @@
+// Section 2: the classical variational scheme and the Newmark map.
+
+#include "claim_support.hpp"
+#include "claims_section2.hpp"
+#include <simpson/verify/stability_analysis.hpp>
+
+#include <simpson/classical_lagrangian.hpp>
+#include <simpson/energy.hpp>
+#include <simpson/newmark_map.hpp>
+
+namespace simpson::verify::detail {
+namespace {
+
+const char* const unit_reduction = "m = omega = 1, h = theta (lemma-dimensional-scaling)";
+
+/// ∂/∂q_1 of Σ_{j=first}^{N−1} L(q_j, q_{j+1}) for N = 3, by exact differences.
+template <class Lagrangian>
+symbolic action_derivative_at_q1(Lagrangian&& L, int first, const std::vector<symbolic>& q) {
+  const auto action = [&](const symbolic& q1) {
+    std::vector<symbolic> nodes = q;
+    nodes[1] = q1;
+    symbolic sum(0);
+    for (int j = first; j <= 2; ++j) sum += L(nodes[static_cast<std::size_t>(j)], nodes[static_cast<std::size_t>(j) + 1]);
+    return sum;
+  };
+  return exact_derivative(action, q[1]);
+}
+
+claim_result check_action_range(const run_context&) {
+  const auto par = unit_oscillator_in_theta();
+  const auto L = [&](const symbolic& l, const symbolic& r) {
+    return classical_lagrangian(par.m(), par.h(), [&](const symbolic& v) { return par.potential(v); }, l, r);
+  };
+  const auto gradient = [&](const symbolic& v) { return par.force_gradient(v); };
+  const auto euler_lagrange_gap = [&](int first) {
+    return [&, first](const std::vector<rational>& v) {
+      const std::vector<symbolic> q{symbolic(v[0]), symbolic(v[1]), symbolic(v[2]), symbolic(v[3])};
+      return action_derivative_at_q1(L, first, q) + par.h() * classical_scheme_residual(par.m(), par.h(), gradient, q[0], q[1], q[2]);
+    };
+  };
+  const std::vector<std::string> vars{"q0", "q1", "q2", "q3"};
+  const std::string reduction = std::string(unit_reduction) +
+                                "; N = 3; dS_d/dq_1 + h (schema-ordre-deux) at j = 1, which must vanish for the discrete "
+                                "Euler-Lagrange equation to hold at the first interior node";
+  const proof printed = prove_zero_on_grid(reduction + "; S_d summed over j = 1..N-1 as printed", vars, 1, euler_lagrange_gap(1));
+  const proof corrected = prove_zero_on_grid(reduction + "; S_d summed over j = 0..N-1", vars, 1, euler_lagrange_gap(0));
+  return erratum(printed, corrected, "S_d = sum_{j=0}^{N-1} L_d(q_j, q_{j+1}): N elements give N terms",
+                 "The printed range has N-1 terms and leaves out the first element [t_0, t_1]; the scheme "
+                 "(schema-ordre-deux) then fails at j = 1. Typographical; the later sections do not depend on it.");
+}
+
+claim_result check_classical_euler_lagrange(const run_context&) {
+  // dL_d/dq_r(q_{j-1}, q_j) + dL_d/dq_l(q_j, q_{j+1}) + h (schema-ordre-deux) = 0: a polynomial of
+  // degree <= 4 in each q and of degree 1 in m.
+  const symbolic h = symbolic::variable();
+  return identity_for_quartic_potentials(
+      "h = theta; dL_d/dq_r(q_{j-1},q_j) + dL_d/dq_l(q_j,q_{j+1}) (exact differences) + h (schema-ordre-deux)",
+      {"m", "q_{j-1}", "q_j", "q_{j+1}"}, {1, 4, 4, 4},
+      [&](const monomial_potential& V, const std::vector<rational>& v) {
+        const symbolic m(v[0]), qp(v[1]), q(v[2]), qn(v[3]);
+        const auto dV = [&](const symbolic& x) { return V.derivative(x); };
+        return exact_derivative([&](const symbolic& x) { return classical_lagrangian(m, h, V, qp, x); }, q) +
+               exact_derivative([&](const symbolic& x) { return classical_lagrangian(m, h, V, x, qn); }, q) +
+               h * classical_scheme_residual(m, h, dV, qp, q, qn);
+      },
+      "Proved for every polynomial V of degree <= 4 (the identity is linear in V); for a general smooth V it is the "
+      "chain rule on V((q_l + q_r)/2).");
+}
+
+claim_result check_classical_consistency(const run_context&) {
+  // Truncation error of (schema-ordre-deux)/m for V = m w^2 q^2/2 at the exact solution q = cos t:
+  // q_{j+-1} = cos(theta), q_j = 1; cos through theta^14 leaves the series exact below theta^12.
+  const auto par = unit_oscillator_in_theta();
+  const symbolic c(cos_taylor(14), make_polynomial({rational(1)}));
+  const auto gradient = [&](const symbolic& v) { return par.force_gradient(v); };
+  const symbolic T = classical_scheme_residual(par.m(), par.h(), gradient, c, symbolic(1), c);
+  const auto series = laurent_coefficients(T, 8);
+  json evidence;
+  evidence["exact"] = {{"method", "exact series"},
+                       {"reduction", std::string(unit_reduction) + "; exact solution q(t) = cos t, q_j = 1"},
+                       {"truncation_error_over_q_j", series_to_string(series, "θ") + " + O(θ^8)"}};
+  const bool consistent = !series.empty() && series.front().first == 2;
+  return confirmed_if(consistent, evidence,
+                      "Checked for the harmonic potential: the truncation error is -(omega h)^2 omega^2/6 q_j + O(h^4), "
+                      "second order.");
+}
+
+claim_result check_newmark_momentum(const run_context&) {
+  const auto par = unit_oscillator_in_theta();
+  const auto V = [&](const symbolic& v) { return par.potential(v); };
+  const auto gradient = [&](const symbolic& v) { return par.force_gradient(v); };
+  const proof p = prove_zero_on_grid(
+      std::string(unit_reduction) + "; printed p_{j+1} - dL_d/dq_r(q_j, q_{j+1}) (exact difference) and - (moment) of the core",
+      {"q_j", "q_{j+1}"}, 1, [&](const std::vector<rational>& v) {
+        const symbolic q(v[0]), qn(v[1]);
+        const symbolic printed = par.m() * (qn - q) / par.h() - par.m() * par.omega() * par.omega() * par.h() / 4 * (qn + q);
+        const symbolic by_difference =
+            exact_derivative([&](const symbolic& x) { return classical_lagrangian(par.m(), par.h(), V, q, x); }, qn);
+        const symbolic by_core = classical_momentum(par.m(), par.h(), gradient, q, qn);
+        return std::vector<symbolic>{printed - by_difference, printed - by_core};
+      });
+  return identity(p);
+}
+
+/// y_{j+1} from Φ, with p_j = −∂L_d/∂q_l(q_j, q_{j+1}) and p_{j+1} = ∂L_d/∂q_r(q_j, q_{j+1}).
+claim_result check_newmark_discrete_system(const run_context&) {
+  const auto par = unit_oscillator_in_theta();
+  const auto V = [&](const symbolic& v) { return par.potential(v); };
+  const proof p = prove_zero_on_grid(
+      std::string(unit_reduction) +
+          "; p_j = -dL_d/dq_l(q_j,q_{j+1}), p_{j+1} = dL_d/dq_r(q_j,q_{j+1}) (exact differences) put into both relations",
+      {"q_j", "q_{j+1}"}, 1, [&](const std::vector<rational>& v) {
+        const symbolic q(v[0]), qn(v[1]);
+        const symbolic p_next =
+            exact_derivative([&](const symbolic& x) { return classical_lagrangian(par.m(), par.h(), V, q, x); }, qn);
+        const symbolic p_now =
+            -exact_derivative([&](const symbolic& x) { return classical_lagrangian(par.m(), par.h(), V, x, qn); }, q);
+        const phase_point<symbolic> r = newmark_system_residual(par, phase_point<symbolic>{p_now, q}, phase_point<symbolic>{p_next, qn});
+        return std::vector<symbolic>{r.p, r.q};
+      });
+  return identity(p, "On a solution, p_j = dL_d/dq_r(q_{j-1}, q_j) equals -dL_d/dq_l(q_j, q_{j+1}) by (Euler-Lagrange-discret).");
+}
+
+claim_result check_newmark_matrix(const run_context&) {
+  const auto par = unit_oscillator_in_theta();
+  const one_step_matrix<symbolic> phi = newmark_map(par);
+  const proof p = prove_zero_on_grid(std::string(unit_reduction) + "; (systeme-dynamique-discret-ordre-2) at (p_{j+1}, q_{j+1}) = Phi (p_j, q_j)",
+                                     {"p_j", "q_j"}, 1, [&](const std::vector<rational>& v) {
+                                       const phase_point<symbolic> y{symbolic(v[0]), symbolic(v[1])};
+                                       const phase_point<symbolic> r = newmark_system_residual(par, y, phi * y);
+                                       return std::vector<symbolic>{r.p, r.q};
+                                     });
+  return identity(p);
+}
+
+claim_result check_newmark_det(const run_context& ctx) {
+  const proof exact = prove_zero(std::string(unit_reduction) + "; det Phi - 1", determinant(newmark_map(unit_oscillator_in_theta())) - 1);
+  bool within = false;
+  const json numeric = recheck_with(ctx, "newmark-det", [](const auto& par, const auto&) { return newmark_map_determinant_check(par); }, within);
+  return identity(exact, within, numeric);
+}
+
+claim_result check_newmark_energy(const run_context& ctx) {
+  const auto par = unit_oscillator_in_theta();
+  const one_step_matrix<symbolic> phi = newmark_map(par);
+  const proof exact = prove_zero_on_grid(std::string(unit_reduction) + "; H(Phi y) - H(y), a quadratic form in y",
+                                         {"p", "q"}, 2, [&](const std::vector<rational>& v) {
+                                           const phase_point<symbolic> y{symbolic(v[0]), symbolic(v[1])};
+                                           return energy(par, phi * y) - energy(par, y);
+                                         });
+  bool within = false;
+  const json numeric = recheck_with(ctx, "newmark-energy", [](const auto& par, const auto& y) { return newmark_energy_step_check(par, y); }, within);
+  return identity(exact, within, numeric);
+}
+
+claim_result check_newmark_stability(const run_context&) {
+  const auto par = unit_oscillator_in_theta();
+  const auto gradient = [&](const symbolic& v) { return par.force_gradient(v); };
+  const stability_report report = analyse_three_term_scheme([&](const symbolic& qp, const symbolic& q, const symbolic& qn) {
+    return classical_scheme_residual(par.m(), par.h(), gradient, qp, q, qn);
+  });
+  json evidence;
+  evidence["exact"] = report.evidence;
+  const bool unconditional = report.stable_intervals.size() == 1 && report.stable_intervals[0].second.empty();
+  return confirmed_if(unconditional, evidence);
+}
+
+}  // namespace
+
+void add_section2_claims(std::vector<claim>& claims) {
+  claims.push_back({"classical-action-range", "2", "prose (S_d)",
+                    "Splitting [0, T] into N elements, S_d = sum_{j=1}^{N-1} L_d(q_j, q_{j+1}).", {"exact"},
+                    verdict::erratum, check_action_range});
+  claims.push_back({"classical-euler-lagrange", "2", "schema-ordre-deux",
+                    "The discrete Euler-Lagrange equation dL_d/dq_r(q_{j-1}, q_j) + dL_d/dq_l(q_j, q_{j+1}) = 0 "
+                    "with (lagrangien-discret) gives m (q_{j+1} - 2 q_j + q_{j-1})/h^2 + 1/2 [V'((q_j + q_{j+1})/2) "
+                    "+ V'((q_{j-1} + q_j)/2)] = 0.",
+                    {"exact"}, verdict::holds, check_classical_euler_lagrange});
+  claims.push_back({"classical-consistency", "2", "schema-ordre-deux, oscillateur-nonlineaire",
+                    "This numerical scheme is clearly consistent with m q'' + dV/dq = 0.", {"exact series"},
+                    verdict::holds, check_classical_consistency});
+  claims.push_back({"newmark-momentum", "2", "moment",
+                    "p_{j+1} = m (q_{j+1} - q_j)/h - m omega^2 h (q_{j+1} + q_j)/4, with p_r = dL_d/dq_r.", {"exact"},
+                    verdict::holds, check_newmark_momentum});
+  claims.push_back({"newmark-discrete-system", "2", "systeme-dynamique-discret-ordre-2",
+                    "p_{j+1} - p_j = -m omega^2 h (q_{j+1} + q_j)/2 and (q_{j+1} - q_j)/h = (p_{j+1} + p_j)/(2m).",
+                    {"exact"}, verdict::holds, check_newmark_discrete_system});
+  claims.push_back({"newmark-matrix", "2", "matrice-symplectique-ordre-2",
+                    "The system is (p_{j+1}, q_{j+1}) = Phi (p_j, q_j) with Phi = 1/(1 + omega^2 h^2/4) "
+                    "((1 - omega^2 h^2/4, -m omega^2 h), (h/m, 1 - omega^2 h^2/4)).",
+                    {"exact"}, verdict::holds, check_newmark_matrix});
+  claims.push_back({"newmark-det", "2", "matrice-symplectique-ordre-2",
+                    "det Phi = 1: the discrete flow is symplectic.", {"exact", "numeric"}, verdict::holds,
+                    check_newmark_det});
+  claims.push_back({"newmark-unconditional-stability", "2", "prose",
+                    "For V = m omega^2 q^2/2 the scheme (schema-ordre-deux) is linearly stable; it is an "
+                    "unconditionally stable version of the Newmark scheme.",
+                    {"exact"}, verdict::holds, check_newmark_stability});
+  claims.push_back({"newmark-energy", "2", "HH-exact",
+                    "H_j = p_j^2/(2m) + m omega^2 q_j^2/2 is conserved: H_{j+1} = H_j.", {"exact", "numeric"},
+                    verdict::holds, check_newmark_energy});
+}
+
+}  // namespace simpson::verify::detail

@@ -1,0 +1,185 @@
+// Sections 3 and 4: quadratic interpolation, Simpson's rule, the Simpson Lagrangian and action.
+
+#include "claim_support.hpp"
+#include "claims_section3_4.hpp"
+
+#include <simpson/internal_node.hpp>
+#include <simpson/quadratic_interpolation.hpp>
+#include <simpson/reduced_lagrangian.hpp>
+#include <simpson/simpson_lagrangian.hpp>
+#include <simpson/simpson_rule.hpp>
+#include <simpson/three_term_scheme.hpp>
+
+namespace simpson::verify::detail {
+namespace {
+
+/// Symbolic in the local coordinate s = t/h (the paper's θ of Section 3), h = 1/3.
+const rational local_h(1, 3);
+
+claim_result check_basis_nodal(const run_context&) {
+  const proof p = prove_zero_on_grid("q(t) of (q2t) at t = 0, h/2, h minus q_l, q_m, q_r", {"q_l", "q_m", "q_r"}, 1,
+                                     [&](const std::vector<rational>& v) {
+                                       const symbolic ql(v[0]), qm(v[1]), qr(v[2]);
+                                       return std::vector<symbolic>{quadratic_interpolant(ql, qm, qr, symbolic(0)) - ql,
+                                                                    quadratic_interpolant(ql, qm, qr, symbolic(rational(1, 2))) - qm,
+                                                                    quadratic_interpolant(ql, qm, qr, symbolic(1)) - qr};
+                                     });
+  return identity(p);
+}
+
+claim_result check_interpolant_derivative(const run_context&) {
+  const symbolic s = symbolic::variable();
+  const symbolic h(local_h);
+  const proof p = prove_zero_on_grid(
+      "theta = s = t/h symbolic, h = 1/3; dq/dt by exact differences of (q2t) in s, divided by h, against the printed "
+      "(1/h)[q_l (4s - 3) + 4 q_m (1 - 2s) + q_r (4s - 1)] and against g_l (1 - s) + g_r s",
+      {"q_l", "q_m", "q_r"}, 1, [&](const std::vector<rational>& v) {
+        const symbolic ql(v[0]), qm(v[1]), qr(v[2]);
+        const symbolic by_difference =
+            exact_derivative([&](const symbolic& u) { return quadratic_interpolant(ql, qm, qr, u); }, s) / h;
+        const symbolic printed = quadratic_interpolant_derivative(ql, qm, qr, h, s);
+        const symbolic affine = gear_left(ql, qm, qr, h) * (1 - s) + gear_right(ql, qm, qr, h) * s;
+        return std::vector<symbolic>{by_difference - printed, printed - affine};
+      });
+  return identity(p);
+}
+
+claim_result check_gear(const run_context&) {
+  const symbolic h = symbolic::variable();
+  const proof p = prove_zero_on_grid("h = theta symbolic; g_l - q'(0), g_r - q'(h) with q' by exact differences of (q2t)",
+                                     {"q_l", "q_m", "q_r"}, 1, [&](const std::vector<rational>& v) {
+                                       const symbolic ql(v[0]), qm(v[1]), qr(v[2]);
+                                       const auto q_of_s = [&](const symbolic& u) { return quadratic_interpolant(ql, qm, qr, u); };
+                                       return std::vector<symbolic>{gear_left(ql, qm, qr, h) - exact_derivative(q_of_s, symbolic(0)) / h,
+                                                                    gear_right(ql, qm, qr, h) - exact_derivative(q_of_s, symbolic(1)) / h};
+                                     });
+  return identity(p);
+}
+
+claim_result check_centred(const run_context&) {
+  const symbolic h = symbolic::variable();
+  const proof p = prove_zero_on_grid(
+      "h = theta symbolic; g_m - q'(h/2), g_m - (g_l + g_r)/2 with q' by exact differences of (q2t)", {"q_l", "q_m", "q_r"}, 1,
+      [&](const std::vector<rational>& v) {
+        const symbolic ql(v[0]), qm(v[1]), qr(v[2]);
+        const auto q_of_s = [&](const symbolic& u) { return quadratic_interpolant(ql, qm, qr, u); };
+        const symbolic gm = centred_derivative(ql, qr, h);
+        return std::vector<symbolic>{gm - exact_derivative(q_of_s, symbolic(rational(1, 2))) / h,
+                                     gm - (gear_left(ql, qm, qr, h) + gear_right(ql, qm, qr, h)) / 2};
+      });
+  return identity(p);
+}
+
+/// ∫_0^1 s^k ds against a rule, for k = 0..top: the degrees it integrates exactly.
+template <class Rule>
+json exactness_by_degree(Rule&& rule, int top, int& exact_up_to) {
+  json rows = json::array();
+  exact_up_to = -1;
+  bool still_exact = true;
+  for (int k = 0; k <= top; ++k) {
+    const auto monomial = [k](const rational& s) -> rational {
+      rational v = 1;
+      for (int i = 0; i < k; ++i) v *= s;
+      return v;
+    };
+    const rational rule_value = rule(monomial);
+    const rational integral = rational(1, k + 1);
+    const bool exact = rule_value == integral;
+    if (exact && still_exact) exact_up_to = k;
+    still_exact = still_exact && exact;
+    rows.push_back({{"degree", k}, {"rule", simpson::to_string(rule_value)}, {"integral", simpson::to_string(integral)}, {"exact", exact}});
+  }
+  return rows;
+}
+
+claim_result check_midpoint_exactness(const run_context&) {
+  int exact_up_to = -1;
+  const json rows = exactness_by_degree([](auto&& psi) { return psi(rational(1, 2)); }, 3, exact_up_to);
+  json evidence;
+  evidence["exact"] = {{"method", "exact"}, {"rule", "psi(1/2)"}, {"monomials", rows}, {"exact_up_to_degree", exact_up_to}};
+  return confirmed_if(exact_up_to == 1, evidence);
+}
+
+claim_result check_simpson_exactness(const run_context&) {
+  int exact_up_to = -1;
+  const json rows = exactness_by_degree([](auto&& psi) { return simpson_rule<rational>(psi); }, 5, exact_up_to);
+  json evidence;
+  evidence["exact"] = {{"method", "exact"}, {"rule", "(simpson) of the core"}, {"monomials", rows}, {"exact_up_to_degree", exact_up_to}};
+  return confirmed_if(exact_up_to == 3, evidence, "Exact for degree <= 3 and not for degree 4 (error 1/120 on s^4).");
+}
+
+claim_result check_simpson_lagrangian(const run_context&) {
+  // (LLhh) against h * simpson(m/2 q'^2 - V(q)) along (q2t): degree <= 4 in each q, 1 in m.
+  const symbolic h = symbolic::variable();
+  return identity_for_quartic_potentials(
+      "h = theta; (LLhh) - h (simpson)[m/2 (dq/dt)^2 - V(q)] along (q2t)", {"m", "q_l", "q_m", "q_r"}, {1, 4, 4, 4},
+      [&](const monomial_potential& V, const std::vector<rational>& v) {
+        const symbolic m(v[0]), ql(v[1]), qm(v[2]), qr(v[3]);
+        const auto integrand = [&](const symbolic& s) {
+          const symbolic velocity = quadratic_interpolant_derivative(ql, qm, qr, h, s);
+          return m / 2 * velocity * velocity - V(quadratic_interpolant(ql, qm, qr, s));
+        };
+        return simpson_lagrangian(m, h, V, ql, qm, qr) - h * simpson_rule<symbolic>(integrand);
+      },
+      "Proved for every polynomial V of degree <= 4 (the identity is linear in V).");
+}
+
+/// dS/dq_1 + (factor) × scheme at j = 1 for N = 3, summing L over j = first..N−1.
+claim_result check_simpson_action_range(const run_context&) {
+  const oscillator_parameters<symbolic> par{symbolic(1), symbolic(1), symbolic::variable()};
+  const auto gap = [&](int first) {
+    return [&, first](const std::vector<rational>& v) {
+      std::vector<symbolic> q{symbolic(v[0]), symbolic(v[1]), symbolic(v[2]), symbolic(v[3])};
+      const auto action = [&](const symbolic& q1) {
+        std::vector<symbolic> nodes = q;
+        nodes[1] = q1;
+        symbolic sum(0);
+        for (int j = first; j <= 2; ++j) {
+          sum += reduced_lagrangian(par, nodes[static_cast<std::size_t>(j)], nodes[static_cast<std::size_t>(j) + 1]);
+        }
+        return sum;
+      };
+      // On the discrete Euler-Lagrange equation dSigma/dq_1 = -(m h/(1 - x/8)) (schema-ordre-3).
+      return exact_derivative(action, q[1]) +
+             par.m() * par.h() / (1 - par.omega2_h2() / 8) * three_term_residual(par, q[0], q[1], q[2]);
+    };
+  };
+  const std::vector<std::string> vars{"q0", "q1", "q2", "q3"};
+  const std::string reduction =
+      "m = omega = 1, h = theta; q_m eliminated (Lagrangien-reduit); N = 3; dSigma_d/dq_1 + (m h/(1 - x/8)) (schema-ordre-3) "
+      "at j = 1";
+  const proof printed = prove_zero_on_grid(reduction + "; summed over j = 1..N-1 as printed", vars, 1, gap(1));
+  const proof corrected = prove_zero_on_grid(reduction + "; summed over j = 0..N-1", vars, 1, gap(0));
+  return erratum(printed, corrected, "Sigma_d = sum_{j=0}^{N-1} L_h(q_j, q_{j+1/2}, q_{j+1}): N intervals give N terms",
+                 "Same range slip as S_d in Section 2: the first interval [t_0, t_1] is left out.");
+}
+
+}  // namespace
+
+void add_section3_4_claims(std::vector<claim>& claims) {
+  claims.push_back({"interpolant-nodal", "3", "fonctions-de-base, q2t",
+                    "q(0) = q_l, q(h/2) = q_m and q(h) = q_r.", {"exact"}, verdict::holds, check_basis_nodal});
+  claims.push_back({"interpolant-derivative", "3", "display after q2t",
+                    "dq/dt = (1/h)[q_l (4 theta - 3) + 4 q_m (1 - 2 theta) + q_r (4 theta - 1)] = g_l (1 - theta) + g_r theta.",
+                    {"exact"}, verdict::holds, check_interpolant_derivative});
+  claims.push_back({"gear-derivatives", "3", "derivees-gear",
+                    "g_l = dq/dt(0) = (-3 q_l + 4 q_m - q_r)/h, g_r = dq/dt(h) = (q_l - 4 q_m + 3 q_r)/h.", {"exact"},
+                    verdict::holds, check_gear});
+  claims.push_back({"centred-derivative", "3", "derivee-centree",
+                    "g_m = dq/dt(h/2) = (g_l + g_r)/2 = (q_r - q_l)/h.", {"exact"}, verdict::holds, check_centred});
+  claims.push_back({"midpoint-exactness", "4", "prose",
+                    "The midpoint rule int_0^1 psi = psi(1/2) is exact for polynomials of degree <= 1.", {"exact"},
+                    verdict::holds, check_midpoint_exactness});
+  claims.push_back({"simpson-exactness", "4", "simpson",
+                    "Simpson's formula is accurate up to polynomials of degree three.", {"exact"}, verdict::holds,
+                    check_simpson_exactness});
+  claims.push_back({"simpson-lagrangian", "4", "LLhh",
+                    "With Simpson's formula and the quadratic interpolant, L_h = (m h/12)(g_l^2 + 4 g_m^2 + g_r^2) - "
+                    "(h/6)(V(q_l) + 4 V(q_m) + V(q_r)).",
+                    {"exact"}, verdict::holds, check_simpson_lagrangian});
+  claims.push_back({"simpson-action-range", "4", "SSdd",
+                    "With N regular intervals, Sigma_d = sum_{j=1}^{N-1} L_h(q_j, q_{j+1/2}, q_{j+1}).", {"exact"},
+                    verdict::erratum, check_simpson_action_range});
+}
+
+}  // namespace simpson::verify::detail

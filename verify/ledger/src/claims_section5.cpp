@@ -1,0 +1,437 @@
+// Section 5: the discrete Euler-Lagrange equations of the Simpson Lagrangian, the internal node,
+// the three-term scheme, its truncation error and its stability.
+
+#include "claim_support.hpp"
+#include "claims_section5.hpp"
+#include <simpson/verify/stability_analysis.hpp>
+
+#include <simpson/exact_solution.hpp>
+#include <simpson/internal_node.hpp>
+#include <simpson/quadratic_interpolation.hpp>
+#include <simpson/reduced_lagrangian.hpp>
+#include <simpson/simpson_lagrangian.hpp>
+#include <simpson/three_term_scheme.hpp>
+
+namespace simpson::verify::detail {
+namespace {
+
+const char* const unit_reduction = "m = omega = 1, h = theta (lemma-dimensional-scaling)";
+
+claim_result check_gear_partials(const run_context&) {
+  const symbolic h = symbolic::variable();
+  const proof p = prove_zero_on_grid(
+      "h = theta; d g_l/dq_m - 4/h, d g_m/dq_m, d g_r/dq_m + 4/h, by exact differences of (derivees-gear), (derivee-centree)",
+      {"q_l", "q_m", "q_r"}, 1, [&](const std::vector<rational>& v) {
+        const symbolic ql(v[0]), qm(v[1]), qr(v[2]);
+        return std::vector<symbolic>{
+            exact_derivative([&](const symbolic& x) { return gear_left(ql, x, qr, h); }, qm) - 4 / h,
+            exact_derivative([&](const symbolic& x) { return centred_derivative(ql, qr, h) + 0 * x; }, qm),
+            exact_derivative([&](const symbolic& x) { return gear_right(ql, x, qr, h); }, qm) + 4 / h};
+      });
+  return identity(p);
+}
+
+claim_result check_lh_dqm(const run_context&) {
+  const symbolic h = symbolic::variable();
+  return identity_for_quartic_potentials(
+      "h = theta; printed dL_h/dq_m minus the exact difference of (LLhh) in q_m", {"m", "q_l", "q_m", "q_r"}, {1, 4, 4, 4},
+      [&](const monomial_potential& V, const std::vector<rational>& v) {
+        const symbolic m(v[0]), ql(v[1]), qm(v[2]), qr(v[3]);
+        const auto dV = [&](const symbolic& x) { return V.derivative(x); };
+        return simpson_lagrangian_dq_mid(m, h, dV, ql, qm, qr) -
+               exact_derivative([&](const symbolic& x) { return simpson_lagrangian(m, h, V, ql, x, qr); }, qm);
+      },
+      "Proved for every polynomial V of degree <= 4 (the identity is linear in V).");
+}
+
+claim_result check_gr_minus_gl(const run_context&) {
+  const symbolic h = symbolic::variable();
+  const proof p = prove_zero_on_grid("h = theta; g_r - g_l - (4/h)(q_l - 2 q_m + q_r)", {"q_l", "q_m", "q_r"}, 1,
+                                     [&](const std::vector<rational>& v) {
+                                       const symbolic ql(v[0]), qm(v[1]), qr(v[2]);
+                                       return gear_right(ql, qm, qr, h) - gear_left(ql, qm, qr, h) - 4 / h * (ql - 2 * qm + qr);
+                                     });
+  return identity(p);
+}
+
+claim_result check_internal_equation(const run_context&) {
+  const symbolic h = symbolic::variable();
+  return identity_for_quartic_potentials(
+      "h = theta; dL_h/dq_m + (2h/3) (equation-milieu-intervalle): the two vanish together", {"m", "q_l", "q_m", "q_r"},
+      {1, 3, 3, 3},
+      [&](const monomial_potential& V, const std::vector<rational>& v) {
+        const symbolic m(v[0]), ql(v[1]), qm(v[2]), qr(v[3]);
+        const auto dV = [&](const symbolic& x) { return V.derivative(x); };
+        return simpson_lagrangian_dq_mid(m, h, dV, ql, qm, qr) + 2 * h / 3 * internal_equation_residual(m, h, dV, ql, qm, qr);
+      },
+      "Proved for every polynomial V of degree <= 4 (the identity is linear in V).");
+}
+
+claim_result check_internal_second_order(const run_context&) {
+  // (equation-milieu-intervalle)/m for V = m w^2 q^2/2 at the exact solution q = cos(t - h/2):
+  // q_l = q_r = cos(theta/2), q_m = 1; cos through theta^16 leaves the series exact below theta^14.
+  const auto par = unit_oscillator_in_theta();
+  const polynomial c = cos_taylor(16);
+  // cos(theta/2): scale the coefficients by 2^-k.
+  std::vector<rational> half;
+  rational scale = 1;
+  for (std::size_t k = 0; k < c.size(); ++k, scale /= 2) half.push_back(c[k] * scale);
+  const symbolic cos_half(polynomial(half.begin(), half.end()), make_polynomial({rational(1)}));
+  const auto gradient = [&](const symbolic& v) { return par.force_gradient(v); };
+  const symbolic T = internal_equation_residual(par.m(), par.h(), gradient, cos_half, symbolic(1), cos_half);
+  const auto series = laurent_coefficients(T, 8);
+  json evidence;
+  evidence["exact"] = {{"method", "exact series"},
+                       {"reduction", std::string(unit_reduction) + "; exact solution centred on the internal node, q_m = 1"},
+                       {"residual_over_q_m", series_to_string(series, "θ") + " + O(θ^8)"}};
+  const bool second_order = !series.empty() && series.front().first == 2;
+  return confirmed_if(second_order, evidence, "The truncation error is (omega h)^2 omega^2/48 q_m + O(h^4): second order.");
+}
+
+claim_result check_qm_harmonic(const run_context& ctx) {
+  const auto par = unit_oscillator_in_theta();
+  const auto gradient = [&](const symbolic& v) { return par.force_gradient(v); };
+  const proof exact = prove_zero_on_grid(std::string(unit_reduction) + "; (equation-milieu-intervalle) at q_m of (qm-oscillateur-harmonique)",
+                                         {"q_l", "q_r"}, 1, [&](const std::vector<rational>& v) {
+                                           const symbolic ql(v[0]), qr(v[1]);
+                                           return internal_equation_residual(par.m(), par.h(), gradient, ql,
+                                                                             harmonic_internal_node(par, ql, qr), qr);
+                                         });
+  bool within = false;
+  // q_l = q, q_r = p/(m omega): two states of the same scale.
+  const json numeric = recheck_with(ctx, "qm-harmonic", [](const auto& par, const auto& y) {
+    return harmonic_internal_node_check(par, y.q, decltype(y.p)(y.p / (par.m() * par.omega())));
+  }, within);
+  return identity(exact, within, numeric);
+}
+
+claim_result check_qm_not_affine(const run_context&) {
+  const auto par = unit_oscillator_in_theta();
+  const symbolic x = par.omega2_h2();
+  const proof p = prove_zero_on_grid(std::string(unit_reduction) +
+                                         "; q_m - (q_l + q_r)/2 - ((q_l + q_r)/2) (x/8)/(1 - x/8), x = theta^2",
+                                     {"q_l", "q_r"}, 1, [&](const std::vector<rational>& v) {
+                                       const symbolic ql(v[0]), qr(v[1]);
+                                       return harmonic_internal_node(par, ql, qr) - (ql + qr) / 2 - (ql + qr) / 2 * (x / 8) / (1 - x / 8);
+                                     });
+  return identity(p, "q_m differs from the affine midpoint (q_l + q_r)/2 by ((q_l + q_r)/2)(omega^2 h^2/8)/(1 - omega^2 h^2/8), "
+                     "which is nonzero for h > 0 unless q_l + q_r = 0.");
+}
+
+stability_report simpson_stability() {
+  const auto par = unit_oscillator_in_theta();
+  return analyse_three_term_scheme([&](const symbolic& qp, const symbolic& q, const symbolic& qn) {
+    return three_term_residual(par, qp, q, qn);
+  });
+}
+
+bool has_interval(const stability_report& r, const std::string& lo, const std::string& hi) {
+  for (const auto& [a, b] : r.stable_intervals) {
+    if (a == lo && b == hi) return true;
+  }
+  return false;
+}
+
+claim_result check_stability_condition(const run_context&) {
+  const stability_report report = simpson_stability();
+  json evidence;
+  evidence["exact"] = report.evidence;
+  const bool first_band = has_interval(report, "0", "8");
+  std::string bands;
+  for (const auto& [lo, hi] : report.stable_intervals) {
+    bands += (bands.empty() ? "" : " and ") + std::string("(") + lo + ", " + (hi.empty() ? "infinity" : hi) + ")";
+  }
+  return confirmed_if(first_band, evidence,
+                      "Sufficient, not necessary: the scheme (schema-ordre-3) is stable exactly for omega^2 h^2 in " + bands +
+                          ", i.e. 0 < omega h < 2 sqrt(2) and also 2 sqrt(3) < omega h < 2 sqrt(6). At omega h = 2 sqrt(2), "
+                          "2 sqrt(3), 2 sqrt(6) the characteristic roots are double (-1, -1, +1) and solutions grow linearly. "
+                          "The condition emerges from q_m, which is undefined at omega h = 2 sqrt(2) only.");
+}
+
+claim_result check_reduced_lagrangian(const run_context& ctx) {
+  const auto par = unit_oscillator_in_theta();
+  const auto V = [&](const symbolic& v) { return par.potential(v); };
+  const proof exact = prove_zero_on_grid(std::string(unit_reduction) + "; (Lagrangien-reduit) - (LLhh) at q_m of (qm-oscillateur-harmonique)",
+                                         {"q_l", "q_r"}, 2, [&](const std::vector<rational>& v) {
+                                           const symbolic ql(v[0]), qr(v[1]);
+                                           return reduced_lagrangian(par, ql, qr) -
+                                                  simpson_lagrangian(par.m(), par.h(), V, ql, harmonic_internal_node(par, ql, qr), qr);
+                                         });
+  bool within = false;
+  const json numeric = recheck_with(ctx, "reduced-lagrangian", [](const auto& par, const auto& y) {
+    return reduced_lagrangian_check(par, y.q, decltype(y.p)(y.p / (par.m() * par.omega())));
+  }, within);
+  return identity(exact, within, numeric);
+}
+
+claim_result check_scheme_order3(const run_context&) {
+  const auto par = unit_oscillator_in_theta();
+  const proof p = prove_zero_on_grid(
+      std::string(unit_reduction) +
+          "; dL^r/dq_r(q_{j-1},q_j) + dL^r/dq_l(q_j,q_{j+1}) (exact differences of Lagrangien-reduit) + (m h/(1 - x/8)) (schema-ordre-3)",
+      {"q_{j-1}", "q_j", "q_{j+1}"}, 1, [&](const std::vector<rational>& v) {
+        const symbolic qp(v[0]), q(v[1]), qn(v[2]);
+        const symbolic euler_lagrange =
+            exact_derivative([&](const symbolic& x) { return reduced_lagrangian(par, qp, x); }, q) +
+            exact_derivative([&](const symbolic& x) { return reduced_lagrangian(par, x, qn); }, q);
+        return euler_lagrange + par.m() * par.h() / (1 - par.omega2_h2() / 8) * three_term_residual(par, qp, q, qn);
+      });
+  return identity(p, "The discrete Euler-Lagrange equation equals -(m h/(1 - omega^2 h^2/8)) times (schema-ordre-3): the same "
+                     "scheme for omega h != 2 sqrt(2).");
+}
+
+/// T_h(q_j)/q_j for m = ω = 1 as an exact series in θ, from the core's residual at the exact
+/// solution q(t) = cos t (q_{j±1} = cos θ, q_j = 1); cos through θ^20 makes every coefficient below
+/// θ^18 exact. For any exact solution q_{j+1} + q_{j−1} = 2 cos(θ) q_j, so T_h(q_j) = ω² F(ωh) q_j.
+std::vector<std::pair<long, rational>> truncation_series(long below) {
+  const auto par = unit_oscillator_in_theta();
+  const symbolic c(cos_taylor(20), make_polynomial({rational(1)}));
+  return laurent_coefficients(three_term_residual(par, c, symbolic(1), c), below);
+}
+
+rational coefficient(const std::vector<std::pair<long, rational>>& series, long power) {
+  for (const auto& [k, c] : series) {
+    if (k == power) return c;
+  }
+  return 0;
+}
+
+claim_result check_scheme_consistency(const run_context&) {
+  const auto series = truncation_series(10);
+  json evidence;
+  evidence["exact"] = {{"method", "exact series"},
+                       {"reduction", std::string(unit_reduction) + "; exact solution q = cos t"},
+                       {"truncation_error_over_q_j", series_to_string(series, "θ") + " + O(θ^10)"}};
+  return confirmed_if(!series.empty() && series.front().first > 0, evidence);
+}
+
+claim_result check_taylor_display(const run_context&) {
+  // q(t) = t^k about t_j, k = 0..6: q(t_j ± h) against the printed and the corrected sixth term.
+  const symbolic h = symbolic::variable();
+  const auto derivative_at = [](int k, int order, const rational& t) -> rational {
+    if (order > k) return rational(0);
+    rational v = 1;
+    for (int i = 0; i < order; ++i) v *= k - i;
+    for (int i = 0; i < k - order; ++i) v *= t;
+    return v;
+  };
+  const auto taylor_gap = [&](bool printed, const rational& t_j) {
+    return [&, printed, t_j](const std::vector<rational>& v) {
+      const int k = static_cast<int>(boost::multiprecision::numerator(v[0])) - 1;
+      std::vector<symbolic> gaps;
+      for (const int sign : {1, -1}) {
+        symbolic sum(0), hk(1);
+        rational factorial = 1;
+        for (int order = 0; order <= 6; ++order) {
+          if (order > 0) {
+            factorial *= order;
+            hk = hk * h * sign;
+          }
+          const int used = (printed && order == 6) ? 5 : order;  // printed: d^6q/dt^5 in the h^6 term
+          sum += hk * derivative_at(k, used, t_j) / factorial;
+        }
+        gaps.push_back(monomial_potential::power(symbolic(t_j) + sign * h, k) - sum);
+      }
+      return gaps;
+    };
+  };
+  const std::string reduction =
+      "q(t) = t^k, k = 0..6, expanded about t_j = 1: q(t_j +- h) minus the displayed expansion through h^6 (zero when the "
+      "expansion is exact for polynomials of degree <= 6)";
+  const proof printed = prove_zero_on_grid(reduction + ", with d^6q/dt^5 in the h^6 term as printed", {"k + 1"}, 6,
+                                           taylor_gap(true, rational(1)));
+  const proof corrected = prove_zero_on_grid(reduction + ", with d^6q/dt^6", {"k + 1"}, 6, taylor_gap(false, rational(1)));
+  return erratum(printed, corrected, "q_{j+-1} = q_j +- h q' + ... +- h^5/120 q^(5) + h^6/720 d^6q/dt^6 + O(h^7)",
+                 "Typographical: the h^6 term of both expansions is printed with d^6q/dt^5. The truncation error below uses "
+                 "the correct sixth derivative.");
+}
+
+claim_result check_truncation_1440(const run_context& ctx) {
+  const auto series = truncation_series(14);
+  const rational c4 = coefficient(series, 4), c6 = coefficient(series, 6), c8 = coefficient(series, 8);
+  const rational c10 = coefficient(series, 10), c12 = coefficient(series, 12);
+  bool lower_vanish = true;
+  for (const auto& [k, c] : series) lower_vanish = lower_vanish && (k >= 4 || c == 0);
+  const bool holds = lower_vanish && c4 == rational(1, 1440);
+  json exact = {{"method", "exact series"},
+                {"reduction", std::string(unit_reduction) +
+                                  "; T_h(q_j)/q_j = omega^2 F(omega h) for every exact solution, since q_{j+1} + q_{j-1} = 2 cos(omega h) q_j"},
+                {"F_theta", series_to_string(series, "θ") + " + O(θ^14)"},
+                {"T_h_over_q_j", "omega^6 h^4 " + simpson::to_string(c4) + " + omega^8 h^6 (" + simpson::to_string(c6) +
+                                     ") + omega^10 h^8 " + simpson::to_string(c8) + " + O(h^10)"},
+                {"leading_coefficient", simpson::to_string(c4)}};
+  // Numeric: T_h against omega^2 (c4 θ^4 + c6 θ^6 + c8 θ^8) q_j for θ in (0, 0.5], where the tail after
+  // θ^8 is at most |c10| θ^10 + |c12| θ^12 (alternating, decreasing terms), doubled for safety.
+  bool within = false;
+  const json numeric = numeric_recheck<false>(ctx, "truncation-1440", [&](auto tag, const sample& s) {
+    using Real = typename decltype(tag)::type;
+    const double theta = s.omega * s.h * (0.5 / 2.7);
+    const oscillator_parameters<Real> par{Real(s.m), Real(s.omega), Real(theta / s.omega)};
+    const phase_point<Real> y{Real(s.p), Real(s.q)};
+    const Real q_prev = exact_solution(par, y, Real(-par.h())).q;
+    const Real q_next = exact_solution(par, y, par.h()).q;
+    const Real T = three_term_residual(par, q_prev, y.q, q_next);
+    const Real th = par.omega_h(), x = th * th;
+    const Real series_value = par.omega() * par.omega() * x * x *
+                              (Real(boost::multiprecision::numerator(c4)) / Real(boost::multiprecision::denominator(c4)) + x * (Real(boost::multiprecision::numerator(c6)) / Real(boost::multiprecision::denominator(c6)) +
+                                                                                    x * Real(boost::multiprecision::numerator(c8)) / Real(boost::multiprecision::denominator(c8)))) *
+                              y.q;
+    using std::abs;
+    const Real omega2 = par.omega() * par.omega();
+    const Real tail = 2 * omega2 * x * x * x * x * x * (abs(Real(boost::multiprecision::numerator(c10)) / Real(boost::multiprecision::denominator(c10))) +
+                                                       x * abs(Real(boost::multiprecision::numerator(c12)) / Real(boost::multiprecision::denominator(c12)))) * abs(y.q);
+    // Round-off: q_{j+-1} carry ~8 roundings of the amplitude A = |q| + |p|/(m omega); the second
+    // difference divides them by h^2, the other terms by 1/omega^2: 64 eps A (4/h^2 + omega^2 (2 + x)).
+    const Real amplitude = abs(y.q) + abs(y.p) / (par.m() * par.omega());
+    const Real round_off = 64 * eps<Real>() * amplitude * (4 / (par.h() * par.h()) + omega2 * (2 + x));
+    return residual_and_bound<Real>{Real(T - series_value), Real(tail + round_off)};
+  }, within);
+  json evidence;
+  evidence["exact"] = exact;
+  evidence["numeric"] = numeric;
+  return confirmed_if(holds && within, evidence,
+                      "The next terms are -omega^8 h^6/15120 q_j and +11 omega^10 h^8/7257600 q_j. In double the round-off "
+                      "bound 64 eps A/h^2 exceeds the h^4 term once omega h < ~1e-3: the coefficient 1/1440 is then "
+                      "invisible in double and needs a finer precision.");
+}
+
+claim_result check_fourth_order_truncation(const run_context&) {
+  const auto series = truncation_series(10);
+  const long leading = series.empty() ? 0 : series.front().first;
+  json evidence;
+  evidence["exact"] = {{"method", "exact series"},
+                       {"reduction", "T_h(q_j)/q_j = omega^2 F(omega h), (schema-ordre-3) normalised as q'' + omega^2 q"},
+                       {"leading_power_of_h", leading}};
+  return confirmed_if(leading == 4, evidence);
+}
+
+claim_result check_characteristic_equation(const run_context&) {
+  // (schema-ordre-3) times h^2 at (1, r, r^2) against a r^2 + b r + c of the core, for r = 0, 1, -1, 2
+  // (a quadratic in r is fixed by three values; the fourth is a check), and c = a.
+  const auto par = unit_oscillator_in_theta();
+  const characteristic_coefficients<symbolic> k = characteristic_polynomial(par.omega2_h2());
+  std::vector<symbolic> gaps;
+  for (const int r : {0, 1, -1, 2}) {
+    const symbolic rr(r);
+    gaps.push_back(par.h() * par.h() * three_term_residual(par, symbolic(1), rr, rr * rr) - (k.a * rr * rr + k.b * rr + k.c));
+  }
+  gaps.push_back(k.a - 1 - par.omega2_h2() / 24);
+  gaps.push_back(k.c - k.a);
+  symbolic worst(0);
+  for (const symbolic& g : gaps) {
+    if (!g.is_zero()) worst = g;
+  }
+  return identity(prove_zero(std::string(unit_reduction) +
+                                 "; h^2 (schema-ordre-3) at (1, r, r^2) - (a r^2 + b r + c), r = 0, 1, -1, 2; a - 1 - x/24; c - a",
+                             worst),
+                  "c = 1 + omega^2 h^2/24 = a is not printed; it is the coefficient of q_{j-1}.");
+}
+
+claim_result check_root_modulus(const run_context&) {
+  const stability_report report = simpson_stability();
+  proof printed;
+  printed.proved = false;  // with r1 r2 = c/a = 1, both |r| < 1 is impossible
+  printed.evidence = {{"method", "exact"},
+                      {"reduction", "product of the roots c/a of a r^2 + b r + c"},
+                      {"product_of_roots", report.evidence["product_of_roots_c_over_a"]},
+                      {"result", report.product_of_roots_is_one
+                                     ? "c/a = 1 identically: the two roots can never both have modulus < 1, so the printed "
+                                       "criterion declares the scheme unstable for every h, contradicting the conclusion drawn"
+                                     : "c/a is not identically 1"}};
+  printed.proved = !report.product_of_roots_is_one;
+  proof corrected;
+  corrected.proved = report.product_of_roots_is_one && has_interval(report, "0", "8");
+  corrected.evidence = report.evidence;
+  return erratum(printed, corrected,
+                 "The scheme is stable when the roots have modulus <= 1 and the roots of modulus 1 are simple (root "
+                 "condition); here they are simple, conjugate and of modulus 1 for 0 < omega^2 h^2 < 8 and 12 < omega^2 h^2 < 24.",
+                 "The following sentences use modulus 1 correctly; only the stated criterion is wrong.");
+}
+
+claim_result check_discriminant_factorization(const run_context& ctx) {
+  const auto par = unit_oscillator_in_theta();
+  const proof exact = prove_zero("x = theta^2; (b^2 - 4ac) - x/576 (x - 24)(x - 12)(x - 8), a, b, c from the core",
+                                 discriminant(par.omega2_h2()) - discriminant_factorized(par.omega2_h2()));
+  bool within = false;
+  const json numeric = recheck_with(ctx, "discriminant-factorization", [](const auto& par, const auto&) {
+    return discriminant_factorization_check(par.omega2_h2());
+  }, within);
+  return identity(exact, within, numeric);
+}
+
+claim_result check_discriminant_negative(const run_context&) {
+  const stability_report report = simpson_stability();
+  json evidence;
+  evidence["exact"] = report.evidence;
+  return confirmed_if(has_interval(report, "0", "8"), evidence,
+                      "The factor omega^2 h^2/576 is positive; 'all the factors' means the three factors (omega^2 h^2 - 24), "
+                      "(omega^2 h^2 - 12), (omega^2 h^2 - 8), whose product is negative on (0, 8).");
+}
+
+claim_result check_roots_product(const run_context&) {
+  const stability_report report = simpson_stability();
+  json evidence;
+  evidence["exact"] = report.evidence;
+  return confirmed_if(report.product_of_roots_is_one && has_interval(report, "0", "8"), evidence);
+}
+
+}  // namespace
+
+void add_section5_claims(std::vector<claim>& claims) {
+  claims.push_back({"gear-partials", "5", "prose", "dg_l/dq_m = 4/h, dg_m/dq_m = 0 and dg_r/dq_m = -4/h.", {"exact"},
+                    verdict::holds, check_gear_partials});
+  claims.push_back({"lh-dqm", "5", "prose",
+                    "dL_h/dq_m = (h/12) [(8m/h) g_l - (8m/h) g_r - 8 dV/dq(q_m)].", {"exact"}, verdict::holds, check_lh_dqm});
+  claims.push_back({"gr-minus-gl", "5", "prose", "g_r - g_l = (4/h)(q_l - 2 q_m + q_r).", {"exact"}, verdict::holds,
+                    check_gr_minus_gl});
+  claims.push_back({"internal-equation", "5", "equation-milieu-intervalle",
+                    "dL_h/dq_m = 0 is m (4/h^2)(q_l - 2 q_m + q_r) + dV/dq(q_m) = 0.", {"exact"}, verdict::holds,
+                    check_internal_equation});
+  claims.push_back({"internal-equation-second-order", "5", "equation-milieu-intervalle",
+                    "This is a second order discretization of the continuous Euler-Lagrange equation.", {"exact series"},
+                    verdict::holds, check_internal_second_order});
+  claims.push_back({"qm-harmonic", "5", "qm-oscillateur-harmonique",
+                    "For the harmonic oscillator, q_m = (q_l + q_r)/(2 (1 - omega^2 h^2/8)).", {"exact", "numeric"},
+                    verdict::holds, check_qm_harmonic});
+  claims.push_back({"qm-not-affine", "5", "qm-oscillateur-harmonique",
+                    "This interpolation is not linear if h > 0.", {"exact"}, verdict::holds, check_qm_not_affine});
+  claims.push_back({"stability-condition", "5", "stabilite", "A stability condition is naturally emerging: 0 < omega h < 2 sqrt(2).",
+                    {"exact"}, verdict::holds, check_stability_condition});
+  claims.push_back({"reduced-lagrangian", "5", "Lagrangien-reduit",
+                    "With q_m eliminated, L_h^r = 1/(1 - omega^2 h^2/8) [m h/2 ((q_r - q_l)/h)^2 - (h/2) m omega^2 "
+                    "((22 - h^2 omega^2)/48 (q_l^2 + q_r^2) + q_l q_r/12)].",
+                    {"exact", "numeric"}, verdict::holds, check_reduced_lagrangian});
+  claims.push_back({"scheme-order-3", "5", "schema-ordre-3",
+                    "The discrete Euler-Lagrange equation of L_h^r is (q_{j+1} - 2 q_j + q_{j-1})/h^2 + (omega^2/24)(q_{j+1} "
+                    "+ 22 q_j + q_{j-1}) - (omega^4 h^2/24) q_j = 0.",
+                    {"exact"}, verdict::holds, check_scheme_order3});
+  claims.push_back({"scheme-consistency", "5", "schema-ordre-3",
+                    "The scheme is consistent with q'' + omega^2 q = 0.", {"exact series"}, verdict::holds,
+                    check_scheme_consistency});
+  claims.push_back({"taylor-display", "5", "prose (display)",
+                    "q_{j+-1} = q_j +- h q' + h^2/2 q'' +- ... +- h^5/120 q^(5) + h^6/720 d^6q/dt^5 + O(h^7).", {"exact"},
+                    verdict::erratum, check_taylor_display});
+  claims.push_back({"truncation-1440", "5", "prose (display)", "T_h(q_j) = omega^6 h^4 q_j/1440 + O(h^6).",
+                    {"exact series", "numeric"}, verdict::holds, check_truncation_1440});
+  claims.push_back({"fourth-order-truncation", "5", "schema-ordre-3",
+                    "The numerical scheme is fourth order accurate in the sense of the truncation error.", {"exact series"},
+                    verdict::holds, check_fourth_order_truncation});
+  claims.push_back({"characteristic-equation", "5", "prose",
+                    "With q_{j-1} = 1, q_j = r, q_{j+1} = r^2: a r^2 + b r + c = 0 with a = 1 + h^2 omega^2/24 and "
+                    "b = -(48 - 22 h^2 omega^2 + h^4 omega^4)/24.",
+                    {"exact"}, verdict::holds, check_characteristic_equation});
+  claims.push_back({"root-modulus-criterion", "5", "prose",
+                    "The scheme is stable when the roots of the corresponding equation are of modulus smaller than 1.",
+                    {"exact"}, verdict::erratum, check_root_modulus});
+  claims.push_back({"discriminant-factorization", "5", "prose (display)",
+                    "Delta = b^2 - 4ac = (omega^2 h^2/576)(omega^2 h^2 - 24)(omega^2 h^2 - 12)(omega^2 h^2 - 8).",
+                    {"exact", "numeric"}, verdict::holds, check_discriminant_factorization});
+  claims.push_back({"discriminant-negative", "5", "stabilite",
+                    "Under the stability condition all the factors of Delta are negative and Delta < 0.", {"exact"},
+                    verdict::holds, check_discriminant_negative});
+  claims.push_back({"roots-product-one", "5", "prose",
+                    "The two roots are complex conjugate, their product |r|^2 is 1, and the scheme is stable.", {"exact"},
+                    verdict::holds, check_roots_product});
+}
+
+}  // namespace simpson::verify::detail

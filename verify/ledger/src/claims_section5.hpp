@@ -1,0 +1,12 @@
+#pragma once
+// Section 5: the internal node, the reduced Lagrangian, the three-term scheme, truncation and stability.
+
+#include <simpson/verify/claim.hpp>
+
+#include <vector>
+
+namespace simpson::verify::detail {
+
+void add_section5_claims(std::vector<claim>& claims);
+
+}  // namespace simpson::verify::detail

@@ -1,0 +1,264 @@
+// Sections 6 and 7: the momentum, the one-step map Φ_3, symplecticity, and the conserved energy.
+
+#include "claim_support.hpp"
+#include "claims_section6_7.hpp"
+
+#include <simpson/energy.hpp>
+#include <simpson/quadratic_invariant.hpp>
+#include <simpson/simpson_elimination.hpp>
+#include <simpson/reduced_lagrangian.hpp>
+#include <simpson/simpson_map.hpp>
+#include <simpson/simpson_momentum.hpp>
+#include <simpson/three_term_scheme.hpp>
+
+namespace simpson::verify::detail {
+namespace {
+
+const char* const unit_reduction = "m = omega = 1, h = theta (lemma-dimensional-scaling)";
+
+claim_result check_momentum_order3(const run_context&) {
+  const auto par = unit_oscillator_in_theta();
+  const proof p = prove_zero_on_grid(std::string(unit_reduction) + "; (moment-ordre-3) - dL_h^r/dq_r by exact differences",
+                                     {"q_l", "q_r"}, 1, [&](const std::vector<rational>& v) {
+                                       const symbolic ql(v[0]), qr(v[1]);
+                                       return simpson_momentum(par, ql, qr) -
+                                              exact_derivative([&](const symbolic& x) { return reduced_lagrangian(par, ql, x); }, qr);
+                                     });
+  return identity(p);
+}
+
+claim_result check_phi3_elimination(const run_context& ctx) {
+  const auto par = unit_oscillator_in_theta();
+  const one_step_matrix<symbolic> phi = simpson_map(par);
+  const proof exact = prove_zero_on_grid(
+      std::string(unit_reduction) + "; (Phi3) y minus the state obtained by eliminating q_{j-1}", {"p_j", "q_j"}, 1,
+      [&](const std::vector<rational>& v) {
+        const phase_point<symbolic> y{symbolic(v[0]), symbolic(v[1])};
+        const phase_point<symbolic> by_formula = phi * y, by_elimination = simpson_step_by_elimination(par, y);
+        return std::vector<symbolic>{by_formula.p - by_elimination.p, by_formula.q - by_elimination.q};
+      });
+  bool within = false;
+  const json numeric = recheck_with(ctx, "phi3-elimination", [](const auto& par, const auto& y) { return elimination_check(par, y); }, within);
+  return identity(exact, within, numeric);
+}
+
+claim_result check_phi3_explicit(const run_context&) {
+  const one_step_matrix<symbolic> phi = simpson_map(unit_oscillator_in_theta());
+  bool regular = true;
+  json denominators = json::array();
+  for (const symbolic* entry : {&phi.alpha, &phi.beta, &phi.gamma, &phi.delta}) {
+    const polynomial& d = entry->denominator();
+    const std::size_t real_roots = degree(d) < 1 ? 0 : count_real_roots(d, -cauchy_root_bound(d), cauchy_root_bound(d));
+    regular = regular && real_roots == 0 && d.evaluate(-cauchy_root_bound(d)) != 0;
+    denominators.push_back({{"denominator", to_string(d, "θ")}, {"real_roots", real_roots}});
+  }
+  json evidence;
+  evidence["exact"] = {{"method", "exact (Sturm sequences)"},
+                       {"reduction", std::string(unit_reduction) + "; the denominators of the entries of (Phi3)"},
+                       {"entries", denominators}};
+  return confirmed_if(regular, evidence,
+                      "Each entry of Phi_3 is a rational function of h whose denominator has no real root: y_{j+1} is "
+                      "computed from y_j with no equation to solve, for every h, including omega h = 2 sqrt(2).");
+}
+
+claim_result check_phi3_det(const run_context& ctx) {
+  const proof exact = prove_zero(std::string(unit_reduction) + "; det Phi_3 - 1", determinant(simpson_map(unit_oscillator_in_theta())) - 1);
+  bool within = false;
+  const json numeric = recheck_with(ctx, "phi3-det", [](const auto& par, const auto&) { return simpson_map_determinant_check(par); }, within);
+  return identity(exact, within, numeric);
+}
+
+claim_result check_phi3_symplectic(const run_context&) {
+  // For any 2x2 Φ: Φ^T J Φ = det(Φ) J with J = ((0, 1), (-1, 0)); degree <= 2 in each entry.
+  const proof generic = prove_zero_on_grid("Phi^T J Phi - det(Phi) J for a general 2x2 Phi", {"alpha", "beta", "gamma", "delta"}, 2,
+                                           [](const std::vector<rational>& v) {
+                                             const one_step_matrix<rational> phi{v[0], v[1], v[2], v[3]};
+                                             // (Φ^T J Φ)_{12} = αδ − γβ, (Φ^T J Φ)_{11} = (Φ^T J Φ)_{22} = 0 (antisymmetric).
+                                             const rational m11 = phi.alpha * phi.gamma - phi.gamma * phi.alpha;
+                                             const rational m12 = phi.alpha * phi.delta - phi.gamma * phi.beta;
+                                             const rational m22 = phi.beta * phi.delta - phi.delta * phi.beta;
+                                             return std::vector<symbolic>{symbolic(m11), symbolic(m12 - determinant(phi)), symbolic(m22)};
+                                           });
+  const proof det = prove_zero(std::string(unit_reduction) + "; det Phi_3 - 1", determinant(simpson_map(unit_oscillator_in_theta())) - 1);
+  json evidence;
+  evidence["exact"] = json::array({generic.evidence, det.evidence});
+  return confirmed_if(generic.proved && det.proved, evidence,
+                      "With one degree of freedom, a linear map is symplectic exactly when its determinant is 1.");
+}
+
+/// The coefficients of p², pq, q² of Q(Φy) − Q(y) for Q = (ξ, η, ζ), read off at (1,0), (1,1), (0,1).
+std::array<rational, 3> invariance_defect(const one_step_matrix<rational>& phi, const rational& xi, const rational& eta,
+                                          const rational& zeta) {
+  const auto defect = [&](const phase_point<rational>& y) -> rational {
+    return quadratic_form(xi, eta, zeta, phi * y) - quadratic_form(xi, eta, zeta, y);
+  };
+  const rational pp = defect({rational(1), rational(0)});
+  const rational qq = defect({rational(0), rational(1)});
+  return {pp, defect({rational(1), rational(1)}) - pp - qq, qq};
+}
+
+claim_result check_gamma_system(const run_context&) {
+  const std::vector<std::string> vars{"alpha", "beta", "gamma", "delta", "xi", "eta", "zeta"};
+  const std::vector<int> bounds{2, 2, 2, 2, 1, 1, 1};
+  const auto gap = [](bool printed) {
+    return [printed](const std::vector<rational>& v) {
+      const one_step_matrix<rational> phi{v[0], v[1], v[2], v[3]};
+      auto gamma = invariance_system(phi);
+      if (printed) gamma[2][2] = (phi.gamma * phi.gamma - 1) / 2;  // as printed in Section 7
+      const std::array<rational, 3> defect = invariance_defect(phi, v[4], v[5], v[6]);
+      std::vector<symbolic> gaps;
+      for (std::size_t row = 0; row < 3; ++row) {
+        gaps.push_back(symbolic(rational(gamma[row][0] * v[4] + gamma[row][1] * v[5] + gamma[row][2] * v[6] - defect[row])));
+      }
+      return gaps;
+    };
+  };
+  const std::string reduction =
+      "Gamma (xi, eta, zeta)^T minus the coefficients of p^2, pq, q^2 in Q(Phi y) - Q(y) (forme-quadratique), for general "
+      "alpha, beta, gamma, delta";
+  const proof printed = prove_zero_on_grid(reduction + "; Gamma as printed, last entry (gamma^2 - 1)/2", vars, bounds, gap(true));
+  const proof corrected = prove_zero_on_grid(reduction + "; last entry (delta^2 - 1)/2", vars, bounds, gap(false));
+  return erratum(printed, corrected,
+                 "Gamma = ((alpha^2-1)/2, alpha gamma, gamma^2/2; alpha beta, alpha delta + beta gamma - 1, gamma delta; "
+                 "beta^2/2, beta delta, (delta^2-1)/2): the last entry is (delta^2 - 1)/2, not (gamma^2 - 1)/2",
+                 "The q^2 coefficient of Q(Phi y) - Q(y) is zeta (delta^2 - 1)/2. For alpha = delta (the case used next) "
+                 "the conclusion Q_c is unaffected.");
+}
+
+claim_result check_gamma_determinant(const run_context&) {
+  const std::vector<std::string> vars{"alpha", "beta", "gamma", "delta"};
+  const auto det3 = [](const std::array<std::array<rational, 3>, 3>& g) -> rational {
+    return g[0][0] * (g[1][1] * g[2][2] - g[1][2] * g[2][1]) - g[0][1] * (g[1][0] * g[2][2] - g[1][2] * g[2][0]) +
+           g[0][2] * (g[1][0] * g[2][1] - g[1][1] * g[2][0]);
+  };
+  const auto printed_product = [](const one_step_matrix<rational>& phi) -> rational {
+    const rational det = determinant(phi), trace = phi.alpha + phi.delta;
+    return (det - 1) * (1 - trace + det) * (1 + trace + det);
+  };
+  // det Γ has degree <= 6 in each entry of Φ (each row of Γ is of degree <= 2).
+  const proof printed = prove_zero_on_grid("det Gamma (corrected Gamma) - (ad - bc - 1)(1 - a - d + ad - bc)(1 + a + d + ad - bc) as printed",
+                                           vars, 6, [&](const std::vector<rational>& v) {
+                                             const one_step_matrix<rational> phi{v[0], v[1], v[2], v[3]};
+                                             return symbolic(rational(det3(invariance_system(phi)) - printed_product(phi)));
+                                           });
+  const proof corrected = prove_zero_on_grid("det Gamma (corrected Gamma) - the product / 4 (invariance_system_determinant of the core)",
+                                             vars, 6, [&](const std::vector<rational>& v) {
+                                               const one_step_matrix<rational> phi{v[0], v[1], v[2], v[3]};
+                                               return symbolic(rational(det3(invariance_system(phi)) - invariance_system_determinant(phi)));
+                                             });
+  // With the printed Γ the printed product fails as well: at the identity-like point below.
+  const one_step_matrix<rational> sample{rational(2), rational(0), rational(0), rational(3)};
+  auto printed_gamma = invariance_system(sample);
+  printed_gamma[2][2] = (sample.gamma * sample.gamma - 1) / 2;
+  claim_result r = erratum(printed, corrected,
+                           "det Gamma = (1/4)(alpha delta - beta gamma - 1)(1 - alpha - delta + alpha delta - beta gamma)"
+                           "(1 + alpha + delta + alpha delta - beta gamma)",
+                           "The printed product lacks the factor 1/4 (rows 1 and 3 of Gamma carry a 1/2). The conclusion, that "
+                           "det Gamma vanishes when alpha delta - beta gamma = 1, is unaffected.");
+  r.evidence["printed_gamma_at_alpha_2_delta_3"] = {{"det_printed_gamma", simpson::to_string(det3(printed_gamma))},
+                                                    {"det_corrected_gamma", simpson::to_string(det3(invariance_system(sample)))},
+                                                    {"printed_product", simpson::to_string(printed_product(sample))}};
+  return r;
+}
+
+claim_result check_gamma_singular(const run_context&) {
+  // On det Φ = 1, parametrised by δ = (1 + βγ)/α (α ≠ 0): α^6 det Γ is a polynomial of degree <= 12.
+  const proof p = prove_zero_on_grid("det Gamma with delta = (1 + beta gamma)/alpha, i.e. on alpha delta - beta gamma = 1",
+                                     {"alpha", "beta", "gamma"}, 12, [](const std::vector<rational>& v) {
+                                       const one_step_matrix<rational> phi{v[0], v[1], v[2], (1 + v[1] * v[2]) / v[0]};
+                                       const auto g = invariance_system(phi);
+                                       const rational det = g[0][0] * (g[1][1] * g[2][2] - g[1][2] * g[2][1]) -
+                                                            g[0][1] * (g[1][0] * g[2][2] - g[1][2] * g[2][0]) +
+                                                            g[0][2] * (g[1][0] * g[2][1] - g[1][1] * g[2][0]);
+                                       return symbolic(det);
+                                     });
+  return identity(p, "The grid uses alpha, beta, gamma in {1..13}; alpha^6 det Gamma is a polynomial of degree <= 12 in "
+                     "each, so it vanishes identically on the determinant-one set with alpha != 0 (and by continuity "
+                     "everywhere on it).");
+}
+
+claim_result check_conserved_form(const run_context&) {
+  // α = δ and βγ = α² − 1: γ = (α² − 1)/β with α symbolic and β on a grid (β⁴ Γ Q_c is a polynomial
+  // of degree <= 4 in β).
+  const symbolic a = symbolic::variable();
+  const proof p = prove_zero_on_grid("Gamma (gamma, 0, -beta)^T with delta = alpha (symbolic) and gamma = (alpha^2 - 1)/beta",
+                                     {"beta"}, 4, [&](const std::vector<rational>& v) {
+                                       const symbolic b(v[0]);
+                                       const one_step_matrix<symbolic> phi{a, b, (a * a - 1) / b, a};
+                                       const auto g = invariance_system(phi);
+                                       const auto c = conserved_form_coefficients(phi);
+                                       std::vector<symbolic> rows;
+                                       for (std::size_t r = 0; r < 3; ++r) rows.push_back(g[r][0] * c[0] + g[r][1] * c[1] + g[r][2] * c[2]);
+                                       return rows;
+                                     });
+  return identity(p, "eta = 0 is forced when Gamma has rank 2, i.e. when Phi is not +-I (for Phi = +-I every quadratic form "
+                     "is conserved). Checked with beta != 0; beta = 0 follows by continuity.");
+}
+
+claim_result check_hd_proportional(const run_context&) {
+  const auto par = unit_oscillator_in_theta();
+  const one_step_matrix<symbolic> phi = simpson_map(par);
+  const auto qc = conserved_form_coefficients(phi);
+  const symbolic x = par.omega2_h2();
+  const symbolic scale = (1 + x / 24) / (par.h() * (1 - x / 8));
+  const proof p = prove_zero_on_grid(std::string(unit_reduction) + "; H_d - ((1 + x/24)/(h (1 - x/8))) Q_c with Q_c from Phi_3",
+                                     {"p", "q"}, 2, [&](const std::vector<rational>& v) {
+                                       const phase_point<symbolic> y{symbolic(v[0]), symbolic(v[1])};
+                                       return discrete_energy(par, y) - scale * quadratic_form(qc[0], qc[1], qc[2], y);
+                                     });
+  return identity(p, "H_d is Q_c of Phi_3 up to the constant (1 + omega^2 h^2/24)/(h (1 - omega^2 h^2/8)), which makes its "
+                     "momentum part p^2/(2m).");
+}
+
+claim_result check_hd_invariance(const run_context& ctx) {
+  const auto par = unit_oscillator_in_theta();
+  const one_step_matrix<symbolic> phi = simpson_map(par);
+  const proof exact = prove_zero_on_grid(std::string(unit_reduction) + "; H_d(Phi_3 y) - H_d(y), a quadratic form in y", {"p", "q"}, 2,
+                                         [&](const std::vector<rational>& v) {
+                                           const phase_point<symbolic> y{symbolic(v[0]), symbolic(v[1])};
+                                           return discrete_energy(par, phi * y) - discrete_energy(par, y);
+                                         });
+  bool within = false;
+  const json numeric = recheck_with(ctx, "hd-invariance", [](const auto& par, const auto& y) { return discrete_energy_step_check(par, y); }, within);
+  return identity(exact, within, numeric);
+}
+
+}  // namespace
+
+void add_section6_7_claims(std::vector<claim>& claims) {
+  claims.push_back({"momentum-order-3", "6", "moment-ordre-3",
+                    "p_r = dL_h^r/dq_r = m (q_r - q_l)/h - h (m omega^2/6)(q_l + 2 q_r)/(1 - omega^2 h^2/8) + h^3 (m omega^4/48) "
+                    "q_r/(1 - omega^2 h^2/8).",
+                    {"exact"}, verdict::holds, check_momentum_order3});
+  claims.push_back({"phi3-elimination", "6", "Phi3",
+                    "Eliminating q_{j-1} between the two momentum relations with (schema-ordre-3) gives y_{j+1} = Phi_3 y_j "
+                    "with Phi_3 as printed.",
+                    {"exact", "numeric"}, verdict::holds, check_phi3_elimination});
+  claims.push_back({"phi3-explicit", "6", "prose", "The symplectic Simpson scheme defined by Phi_3 is an explicit scheme.",
+                    {"exact"}, verdict::holds, check_phi3_explicit});
+  claims.push_back({"phi3-det", "6", "Phi3", "det Phi_3 = 1.", {"exact", "numeric"}, verdict::holds, check_phi3_det});
+  claims.push_back({"phi3-symplectic", "6", "prose", "In consequence (det Phi_3 = 1) the scheme is symplectic.", {"exact"},
+                    verdict::holds, check_phi3_symplectic});
+  claims.push_back({"gamma-system", "7", "prose (display)",
+                    "Q(Phi y) = Q(y) for all y iff Gamma (xi, eta, zeta)^T = 0 with Gamma = ((alpha^2-1)/2, alpha gamma, "
+                    "gamma^2/2; alpha beta, alpha delta + beta gamma - 1, gamma delta; beta^2/2, beta delta, (gamma^2-1)/2).",
+                    {"exact"}, verdict::erratum, check_gamma_system});
+  claims.push_back({"gamma-determinant", "7", "prose",
+                    "det Gamma = (alpha delta - beta gamma - 1)(1 - alpha - delta + alpha delta - beta gamma)(1 + alpha + "
+                    "delta + alpha delta - beta gamma).",
+                    {"exact"}, verdict::erratum, check_gamma_determinant});
+  claims.push_back({"gamma-singular", "7", "prose", "det Gamma vanishes when alpha delta - beta gamma = 1.", {"exact"},
+                    verdict::holds, check_gamma_singular});
+  claims.push_back({"conserved-form", "7", "prose",
+                    "When alpha = delta, eta = 0 and Q_c(p, q) = gamma p^2/2 - beta q^2/2 is conserved, up to a "
+                    "multiplicative constant.",
+                    {"exact"}, verdict::holds, check_conserved_form});
+  claims.push_back({"hd-proportional", "7", "hamiltonien-discret",
+                    "H_d = p^2/(2m) + m omega^2 (1 - omega^2 h^2/12)(1 - omega^2 h^2/24) q^2/(2 (1 - omega^2 h^2/8)) is the "
+                    "conserved form Q_c of Phi_3 up to a constant.",
+                    {"exact"}, verdict::holds, check_hd_proportional});
+  claims.push_back({"hd-invariance", "7", "hamiltonien-discret", "H_d(p_{j+1}, q_{j+1}) = H_d(p_j, q_j).", {"exact", "numeric"},
+                    verdict::holds, check_hd_invariance});
+}
+
+}  // namespace simpson::verify::detail

@@ -1,0 +1,12 @@
+#pragma once
+// Sections 6 and 7: the momentum p_r, Φ₃, its determinant, the quadratic invariant and H_d.
+
+#include <simpson/verify/claim.hpp>
+
+#include <vector>
+
+namespace simpson::verify::detail {
+
+void add_section6_7_claims(std::vector<claim>& claims);
+
+}  // namespace simpson::verify::detail

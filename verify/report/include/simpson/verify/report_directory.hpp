@@ -1,0 +1,45 @@
+#pragma once
+// A report directory on disk: report.json, report.md, report.html, and the sections' CSV, data
+// files, gnuplot scripts and plots. Written in a staging directory beside the target, which then
+// replaces the target whole: no stale file of an earlier run survives, and an error or an
+// interruption leaves the previous report as it was. A directory that holds anything but a
+// simpson-verify report is refused, never cleared.
+
+#include <simpson/verify/json.hpp>
+#include <simpson/verify/section_render.hpp>
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace simpson::verify {
+
+/// Plots drawn and plots that could not be drawn (gnuplot missing or failing).
+struct plot_outcome {
+  std::vector<std::string> drawn;     // plot names, each with <name>.svg and <name>.png
+  std::vector<std::string> failures;  // "<name>: <reason>"
+};
+
+/// The documents of a report, made once the plots are drawn (they say which were).
+struct report_documents {
+  json report;           // report.json
+  std::string markdown;  // report.md, rendered to report.html
+  std::string title;     // of report.html
+};
+
+/// Checks, before anything runs, that `dir` can take a report: it does not exist yet (its parent
+/// can be created and written), or it is empty, or it holds a previous simpson-verify report and
+/// nothing else. Creates nothing. Throws std::invalid_argument naming the directory otherwise.
+void prepare_output_directory(const std::filesystem::path& dir);
+
+/// True when every entry of `dir` belongs to a simpson-verify report: the files its report.json
+/// lists, or for a report written before that list existed, report.* and the section files
+/// (.csv, .dat, .gp, .svg, .png).
+bool holds_only_a_report(const std::filesystem::path& dir);
+
+/// Writes the sections' files and plots, then the documents, and swaps the directory into place.
+plot_outcome write_report_directory(const std::filesystem::path& dir, const std::vector<section_result>& sections,
+                                    const std::function<report_documents(const plot_outcome&)>& documents);
+
+}  // namespace simpson::verify

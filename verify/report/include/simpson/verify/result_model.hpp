@@ -1,0 +1,134 @@
+#pragma once
+// What an experiment section returns: typed tables and plots described as data, with prose between
+// them. One writer (section_render.hpp) renders JSON, Markdown, CSV, the gnuplot data and scripts
+// from it; a section computes numbers and describes them, and never formats a file itself.
+
+#include <simpson/verify/json.hpp>
+#include <simpson/verify/figure.hpp>
+
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+namespace simpson::verify {
+
+/// A column of a table. `key` names it in JSON and CSV, `header` (with `unit`) in Markdown;
+/// numbers are shown to `digits` significant digits in Markdown, or with `digits` decimals when
+/// `fixed` (counts of digits, percentages); JSON and CSV keep every digit.
+/// A timing column goes into the row's "timing" member in JSON (left out when reports are compared).
+struct column {
+  column(std::string key_, std::string header_, std::string unit_ = {}, int digits_ = 3, bool timing_ = false)
+      : key(std::move(key_)), header(std::move(header_)), unit(std::move(unit_)), digits(digits_), timing(timing_) {}
+  /// A column shown in fixed notation with `decimals` decimals.
+  static column fixed_point(std::string key_, std::string header_, int decimals) {
+    column c(std::move(key_), std::move(header_), {}, decimals);
+    c.fixed = true;
+    return c;
+  }
+  std::string key;
+  std::string header;
+  std::string unit;
+  int digits = 3;
+  bool timing = false;
+  bool fixed = false;
+};
+
+using table_row = std::vector<figure>;
+
+/// Where a table is rendered: report.json and report.md always; a CSV file when `csv_file` is set.
+/// `markdown = false` keeps a long-format table out of report.md (a wide table shows it there).
+struct table {
+  table(std::string key_, std::string title_, std::string intro_, std::vector<column> columns_)
+      : key(std::move(key_)), title(std::move(title_)), intro(std::move(intro_)), columns(std::move(columns_)) {}
+  std::string key;    // member of the section in report.json ("rows", "stiff", ...)
+  std::string title;  // "### title" in report.md; empty for none
+  std::string intro;  // Markdown before the table: the conventions a reader needs
+  std::vector<column> columns;
+  std::vector<table_row> rows;
+  std::string csv_file;
+  bool markdown = true;
+  bool json = true;
+
+  /// Appends a row; throws std::logic_error when its size differs from the columns'.
+  void add(table_row row);
+};
+
+enum class line_style { lines, points, lines_points, dashed };
+
+/// One curve: its points (figures as computed; points outside double's range are not drawn, and the
+/// plot's caption says how many), a title, and a style. `color` indexes a fixed palette, so that one
+/// scheme keeps its colour across panels; `point` is a gnuplot point type.
+struct series {
+  explicit series(std::string title_, line_style style_ = line_style::lines_points, int color_ = 0, int point_ = 7)
+      : title(std::move(title_)), style(style_), color(color_), point(point_) {}
+  std::string title;
+  std::vector<figure> x, y;
+  line_style style = line_style::lines_points;
+  int color = 0;
+  int point = 7;
+  /// A guide (a slope, a round-off floor): drawn, but the y range is fitted to the data alone.
+  bool reference = false;
+  void add(figure xv, figure yv) {
+    x.push_back(std::move(xv));
+    y.push_back(std::move(yv));
+  }
+};
+
+struct axis {
+  axis(std::string label_ = {}, bool log_ = false) : label(std::move(label_)), log(log_) {}
+  std::string label;
+  bool log = false;
+};
+
+struct panel {
+  panel(std::string title_, axis x_, axis y_, std::vector<series> curves_ = {}, std::string key_ = "top right")
+      : title(std::move(title_)), x(std::move(x_)), y(std::move(y_)), curves(std::move(curves_)), key(std::move(key_)) {}
+  std::string title;
+  axis x, y;
+  std::vector<series> curves;
+  std::string key = "top right";  // gnuplot legend position
+};
+
+struct plot_description {
+  plot_description(std::string name_, std::string caption_, std::vector<panel> panels_, int columns_ = 1, int width_ = 800,
+                   int height_ = 500)
+      : name(std::move(name_)), caption(std::move(caption_)), panels(std::move(panels_)), columns(columns_), width(width_),
+        height(height_) {}
+  std::string name;     // files <name>.dat, <name>.gp, <name>.svg, <name>.png
+  std::string caption;
+  std::vector<panel> panels;
+  int columns = 1;      // panels per row
+  int width = 800;      // pixels
+  int height = 500;
+};
+
+struct prose {
+  std::string markdown;
+};
+
+using section_block = std::variant<prose, table, plot_description>;
+
+/// An experiment section as data.
+struct section_result {
+  std::string name;   // scene key: "table1", "work_precision", "stability", "long_time"
+  std::string title;  // "## title" in report.md
+  json conventions = json::object();  // the settings the numbers depend on, as the scene gave them
+  std::vector<section_block> blocks;
+
+  section_result& text(std::string markdown) {
+    blocks.emplace_back(prose{std::move(markdown)});
+    return *this;
+  }
+  section_result& add(table t) {
+    blocks.emplace_back(std::move(t));
+    return *this;
+  }
+  section_result& add(plot_description p) {
+    blocks.emplace_back(std::move(p));
+    return *this;
+  }
+  const table* find_table(const std::string& key) const;
+};
+
+}  // namespace simpson::verify
