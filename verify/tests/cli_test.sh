@@ -138,6 +138,26 @@ bad=$( (grep -rliE ': (null|-?nan|-?inf|NaN|-?Infinity)\b|"-?(nan|inf)"' --inclu
         grep -rliE '\| *-?(nan|inf|null) *\|' --include='*.md' "$work"
         grep -rliE '(^|,)-?(nan|inf|null)(,|$)' --include='*.csv' "$work") 2>/dev/null)
 [ -z "$bad" ] || fail "bare NaN/inf/null in: $bad"
+# The paper's source as an input (--paper, or the scene key "paper"): bad sources are bad input.
+paper_src="$(dirname "$0")/../paper/text/simpson-symplectic-gsi2023.tex"
+check "paper missing" 2 --claims phi3-det --paper "$work/no-such.tex" --out "$work/none-paper1"
+grep -q "paper '$work/no-such.tex': missing or unreadable" "$work/err" || fail "paper missing: not named"
+echo 'Some other paper.' >"$work/other.tex"
+check "not the paper" 2 --claims phi3-det --paper "$work/other.tex" --out "$work/none-paper2"
+sed 's/\\label{moment-ordre-3}/\\label{moment-3}/' "$paper_src" >"$work/nolabel.tex"
+check "label missing" 2 --claims phi3-det --paper "$work/nolabel.tex" --out "$work/none-paper3"
+grep -q "label 'moment-ordre-3'" "$work/err" || fail "label missing: not named: $(cat "$work/err")"
+sed 's/{11\\over24} \\,  \\omega^2  h^2 +  {{\\omega^4  h^4}\\over48}  $/{11\\over24} \\foo/' "$paper_src" >"$work/unparsable.tex"
+check "formula does not parse" 2 --claims phi3-det --paper "$work/unparsable.tex" --out "$work/none-paper4"
+grep -qF "label Phi3 (line 488): cannot parse the formula: unsupported token at token '\\foo'" "$work/err" || fail "formula does not parse: label, line, token not named: $(cat "$work/err")"
+for k in 1 2 3 4; do [ -e "$work/none-paper$k" ] && fail "bad paper wrote $work/none-paper$k"; done
+# A copy with one coefficient of p_r changed (omega^4 -> omega^6) turns momentum-order-3 into an erratum: exit 1.
+sed 's/{{m \\, \\omega^4}\\over48}/{{m \\, \\omega^6}\\over48}/' "$paper_src" >"$work/altered.tex"
+cmp -s "$paper_src" "$work/altered.tex" && fail "altered copy: sed changed nothing"
+check "altered paper" 1 --claims momentum-order-3,phi3-det --precisions double,rational --paper "$work/altered.tex" --out "$work/altered"
+grep -q "momentum-order-3: verdict erratum, expected holds" "$work/err" || fail "altered paper: claim not named: $(cat "$work/err")"
+echo "{\"name\": \"altered\", \"claims\": [\"momentum-order-3\"], \"precisions\": [\"double\"], \"paper\": \"$work/altered.tex\"}" >"$work/altered.json"
+check "scene key paper" 1 --scene "$work/altered.json" --out "$work/altered-scene"
 check "list claims" 0 --list-claims
 check "version" 0 --version
 

@@ -7,6 +7,7 @@
 #include <simpson/verify/report.hpp>
 
 #include "report_comparison.hpp"
+#include "report_tree.hpp"
 
 #include <gtest/gtest.h>
 
@@ -44,6 +45,9 @@ TEST(ReferenceReport, PaperSceneReproducesTheCommittedReport) {
   }
   EXPECT_TRUE(std::filesystem::exists(dir / "report.html"));
   EXPECT_NE(read(dir / "report.html").find("data:image/svg+xml;base64,"), std::string::npos);
+  // Every table of the committed page is a table (a '|' left unescaped once made one a paragraph).
+  test::expect_html_tables_rendered(dir);
+  test::expect_no_bare_non_finite(dir);
 }
 
 }  // namespace

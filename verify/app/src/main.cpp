@@ -15,6 +15,7 @@
 
 #include <chrono>
 #include <memory>
+#include <optional>
 #include <unistd.h>
 #include <csignal>
 #include <cstdio>
@@ -82,10 +83,11 @@ int list_precisions() {
 int main(int argc, char** argv) {
   CLI::App app{"simpson-verify: proves, rechecks and reports every claim of the symplectic Simpson paper"};
   app.set_version_flag("--version", std::string("simpson-verify ") + SIMPSON_VERSION);
-  std::string scene_name = "paper", out_dir, seed_text, samples_text;
+  std::string scene_name = "paper", out_dir, seed_text, samples_text, paper_file;
   std::vector<std::string> claim_ids, precision_names;
   bool want_claims = false, want_scenes = false, want_precisions = false, allow_expensive = false, long_run = false;
   app.add_option("--scene", scene_name, "embedded scene name (paper, quick) or a scene JSON file")->capture_default_str();
+  app.add_option("--paper", paper_file, "the paper's LaTeX source to check (default: the embedded GSI 2023 text)");
   app.add_option("--out", out_dir, "report directory (default: reports/out/<scene>)");
   app.add_option("--claims", claim_ids, "comma-separated claim ids (default: the scene's)")->delimiter(',');
   app.add_option("--precisions", precision_names, "comma-separated precisions (default: the scene's)")->delimiter(',');
@@ -106,6 +108,7 @@ int main(int argc, char** argv) {
   }
 
   scene s;
+  std::optional<simpson::verify::paper_reading> paper;
   std::filesystem::path out;
   cost_estimate cost;
   try {
@@ -113,6 +116,8 @@ int main(int argc, char** argv) {
     if (want_scenes) return list_scenes();
     if (want_precisions) return list_precisions();
     s = load_scene(scene_name);
+    if (!paper_file.empty()) s.paper_file = paper_file;
+    paper = read_scene_paper(s);  // a paper that is missing or does not parse is bad input: nothing runs
     if (!claim_ids.empty()) {
       std::vector<std::string> ids;
       for (const claim& c : ledger()) {
@@ -179,7 +184,7 @@ int main(int argc, char** argv) {
   std::signal(SIGTERM, record_signal);
   try {
     const auto start = std::chrono::steady_clock::now();
-    const run_record record = run(s, [&](std::size_t k, std::size_t n, const claim& c, const claim_outcome* done) {
+    const run_record record = run(s, *paper, [&](std::size_t k, std::size_t n, const claim& c, const claim_outcome* done) {
       if (!done) return;
       fmt::print(stderr, "[{:>2}/{}] {:<34} {:<8} {:.2f} s\n", k + 1, n, c.id, to_string(done->result.outcome), done->seconds);
     }, [](const std::string& section, double seconds) {

@@ -41,6 +41,12 @@ std::string summary_line(const run_record& r) {
                                         : fmt::format("{} not as expected ({})", unexpected.size(), join(unexpected, ", ")));
 }
 
+std::size_t machine_read(const run_record& r) {
+  std::size_t n = 0;
+  for (const claim_outcome& o : r.outcomes) n += !o.result.printed.is_null();
+  return n;
+}
+
 plot_outcome all_plots_drawn(const run_record& r) {
   plot_outcome p;
   for (const section_result& section : r.sections) {
@@ -53,7 +59,7 @@ json report_json(const run_record& r) { return report_json(r, all_plots_drawn(r)
 
 json report_json(const run_record& r, const plot_outcome& plots) {
   json claims = json::array();
-  json timing = json::object();
+  json timing = json::object(), ginac_timing = json::object();
   for (const claim_outcome& o : r.outcomes) {
     const claim& c = *o.checked;
     json entry{{"id", c.id},
@@ -66,9 +72,11 @@ json report_json(const run_record& r, const plot_outcome& plots) {
                {"as_expected", o.result.outcome == o.expected}};
     if (!o.result.correction.empty()) entry["correction"] = o.result.correction;
     if (!o.result.note.empty()) entry["note"] = o.result.note;
+    if (!o.result.printed.is_null()) entry["printed"] = o.result.printed;
     entry["evidence"] = o.result.evidence;
     claims.push_back(std::move(entry));
     timing[c.id] = o.seconds;
+    if (!o.result.printed.is_null()) ginac_timing[c.id] = o.result.printed_seconds;
   }
   json experiments = json::object(), section_timing = json::object(), plot_list = json::array();
   for (std::size_t k = 0; k < r.sections.size(); ++k) {
@@ -91,7 +99,9 @@ json report_json(const run_record& r, const plot_outcome& plots) {
               {"seed", r.run_scene.seed},
               {"samples", r.run_scene.samples},
               {"precisions", precision_names(r.run_scene.precisions)},
+              {"paper", r.paper_origin},
               {"summary", summary_line(r)},
+              {"machine_read", machine_read(r)},
               {"all_as_expected", all_as_expected(r)},
               {"claims", claims},
               {"experiments", experiments},
@@ -100,7 +110,7 @@ json report_json(const run_record& r, const plot_outcome& plots) {
               {"files", report_file_names(r, plots)},
               {"paper_configuration", r.paper_configuration},
               {"environment", r.environment},
-              {"timing", {{"unit", "seconds"}, {"claims", timing}, {"sections", section_timing}}}};
+              {"timing", {{"unit", "seconds"}, {"claims", timing}, {"printed_formulas_in_ginac", ginac_timing}, {"sections", section_timing}}}};
 }
 
 std::string report_markdown(const run_record& r) { return report_markdown(r, all_plots_drawn(r)); }
@@ -110,6 +120,9 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
   md += fmt::format("# simpson-verify report: scene `{}`\n\n", r.run_scene.name);
   if (!r.run_scene.description.empty()) md += r.run_scene.description + "\n\n";
   md += fmt::format("**{}**\n\n", summary_line(r));
+  md += fmt::format("{} of {} claims read their formula from the paper's LaTeX source ({}) and prove it in GiNaC against "
+                    "the derived one, beside our own kernel; the others check a statement typed from the prose.\n\n",
+                    machine_read(r), r.outcomes.size(), r.paper_origin);
   md += fmt::format("Seed {} · {} random samples per numeric recheck and precision · precisions: {}\n\n", r.run_scene.seed,
                     r.run_scene.samples, join(precision_names(r.run_scene.precisions), ", "));
   md += "Paper: F. Dubois, J. A. Rojas-Quintero, *A variational symplectic scheme based on Simpson's quadrature*, GSI 2023. "
@@ -170,6 +183,16 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
     const claim& c = *o.checked;
     md += fmt::format("### {}\n\n§{}, {} — **{}** (expected {})\n\n> {}\n\n", c.id, c.section, c.equation,
                       to_string(o.result.outcome), to_string(o.expected), c.statement);
+    if (!o.result.printed.is_null()) {
+      md += fmt::format("Read from the paper ({}):\n\n", o.result.printed["source"].get<std::string>());
+      for (const json& f : o.result.printed["formulas"]) {
+        md += fmt::format("- {} (line {}): `{}`\n  parsed: `{}`\n", f["label"].get<std::string>(), f["line"].get<int>(),
+                          f["tex"].get<std::string>(), f["parsed"].get<std::string>());
+      }
+      md += "\n";
+    } else {
+      md += "Statement typed from the paper's prose (not machine-read).\n\n";
+    }
     if (!o.result.correction.empty()) md += "Corrected: " + o.result.correction + "\n\n";
     if (!o.result.note.empty()) md += "Note: " + o.result.note + "\n\n";
     md += "```json\n" + o.result.evidence.dump(2) + "\n```\n\n";

@@ -2,6 +2,7 @@
 #include <simpson/verify/ledger.hpp>
 #include <simpson/verify/environment.hpp>
 #include <simpson/verify/paper_configuration.hpp>
+#include <simpson/verify/printed_checks.hpp>
 #include <simpson/verify/run.hpp>
 
 #include <chrono>
@@ -9,13 +10,23 @@
 
 namespace simpson::verify {
 
+paper_reading read_scene_paper(const scene& s) {
+  return read_paper(s.paper_file.empty() ? embedded_paper() : load_paper(s.paper_file));
+}
+
 run_record run(const scene& s, const progress_callback& progress,
+               const std::function<void(const std::string&, double)>& section_progress) {
+  return run(s, read_scene_paper(s), progress, section_progress);
+}
+
+run_record run(const scene& s, const paper_reading& paper, const progress_callback& progress,
                const std::function<void(const std::string&, double)>& section_progress) {
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
   run_record r;
   r.run_scene = s;
-  const run_context ctx{s.precisions, s.seed, s.samples};
+  r.paper_origin = paper.origin;
+  const run_context ctx{s.precisions, s.seed, s.samples, &paper};
   for (std::size_t k = 0; k < s.claims.size(); ++k) {
     throw_if_interrupted();
     const claim& c = find_claim(s.claims[k]);
@@ -26,7 +37,7 @@ run_record run(const scene& s, const progress_callback& progress,
     outcome.expected = override_it == s.expected_overrides.end() ? c.expected : override_it->second;
     const auto claim_start = clock::now();
     try {
-      outcome.result = c.check(ctx);
+      outcome.result = check_claim(c, ctx);
     } catch (const interrupted&) {
       throw;
     } catch (const std::exception& e) {

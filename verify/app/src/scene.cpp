@@ -216,7 +216,7 @@ scene parse_scene(const std::string& text, const std::string& origin) {
   }
   if (!doc.is_object()) fail(origin, "the top level must be an object");
   static const std::set<std::string> known{"name", "description", "claims", "precisions", "samples", "seed", "expected_overrides",
-                                         "table1", "work_precision", "stability", "long_time"};
+                                         "paper", "table1", "work_precision", "stability", "long_time"};
   for (const auto& item : doc.items()) {
     if (!known.count(item.key())) fail(origin, "unknown key '" + item.key() + "'");
   }
@@ -282,6 +282,12 @@ scene parse_scene(const std::string& text, const std::string& origin) {
       fail(origin, "'seed' must be a non-negative integer, got " + n.dump());
     }
     s.seed = n.get<std::uint64_t>();
+  }
+  if (doc.contains("paper")) {
+    if (!doc["paper"].is_string() || doc["paper"].get<std::string>().empty()) {
+      fail(origin, "'paper' must be the path of the paper's LaTeX source, got " + doc["paper"].dump());
+    }
+    s.paper_file = doc["paper"].get<std::string>();
   }
   if (doc.contains("expected_overrides")) {
     const nlohmann::json& o = doc["expected_overrides"];

@@ -2,6 +2,7 @@
 // Running a scene: its claims, then the experiment sections it asks for, into one run record.
 
 #include <simpson/verify/claim.hpp>
+#include <simpson/verify/paper_reading.hpp>
 #include <simpson/verify/experiments.hpp>
 #include <simpson/verify/result_model.hpp>
 #include <simpson/verify/scene.hpp>
@@ -21,6 +22,7 @@ struct claim_outcome {
 
 struct run_record {
   scene run_scene;
+  std::string paper_origin;  // the paper's source the formula claims read
   std::vector<claim_outcome> outcomes;
   json paper_configuration;
   json environment;
@@ -37,8 +39,16 @@ using progress_callback = std::function<void(std::size_t, std::size_t, const cla
 /// and between numeric samples).
 /// Then runs the experiment sections the scene asks for (table1, work_precision, stability,
 /// long_time), calling `section_progress(name, seconds)` after each.
+run_record run(const scene& s, const paper_reading& paper, const progress_callback& progress = {},
+               const std::function<void(const std::string&, double)>& section_progress = {});
+
+/// The same, reading the scene's paper first (the embedded one unless the scene names a file).
 run_record run(const scene& s, const progress_callback& progress = {},
                const std::function<void(const std::string&, double)>& section_progress = {});
+
+/// The paper a scene names, read: embedded, or its `paper` file. Throws std::invalid_argument
+/// (one line: the file, the label, the line, the token) when it is missing or does not parse.
+paper_reading read_scene_paper(const scene& s);
 
 /// True when every verdict equals its expected verdict.
 bool all_as_expected(const run_record& r);

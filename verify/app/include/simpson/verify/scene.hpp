@@ -37,6 +37,8 @@ struct scene {
   std::uint64_t seed = default_seed;
   std::map<std::string, verdict> expected_overrides;
   experiment_settings experiments;
+  /// The paper's source the formula claims read: empty for the embedded copy, else a file.
+  std::string paper_file;
 };
 
 /// Parses and validates a scene; `origin` names it in errors. Throws std::invalid_argument with a

@@ -27,10 +27,15 @@ inline std::string to_string(verdict v) {
 
 /// What a check is given: the precisions of the numeric rechecks, the seed and how many random
 /// samples each recheck draws per precision.
+struct paper_reading;
+
 struct run_context {
   std::vector<precision> precisions;
   std::uint64_t seed = 0;
   unsigned samples = 0;
+  /// The formulas read from the paper's source; without it, formula claims check our
+  /// transcription only.
+  const paper_reading* paper = nullptr;
 };
 
 /// What a check found. `evidence` has one member per method ("exact", "numeric", ...).
@@ -39,6 +44,11 @@ struct claim_result {
   json evidence = json::object();
   std::string correction;  // the corrected statement, for errata
   std::string note;        // conditions not stated in the paper, sufficiency, caveats
+  /// For a claim whose formula is read from the paper: where ({label, line, tex, parsed}) and
+  /// what GiNaC proved of it; null for a claim typed from prose.
+  json printed;
+  /// Seconds the GiNaC proof of the printed formula took (reported under "timing", never in evidence).
+  double printed_seconds = 0;
 };
 
 struct claim {

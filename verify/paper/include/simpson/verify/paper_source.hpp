@@ -1,0 +1,41 @@
+#pragma once
+// The paper's LaTeX source as an input: the embedded copy of the GSI 2023 text, or another version
+// given by --paper (a revised preprint, a corrected copy). Displays are found by their \label, or,
+// when unlabelled, by a stable anchor in the prose just before them. Comment lines (%, including
+// the older Φ₃ the source keeps in comments) are not part of the text.
+
+#include <string>
+
+namespace simpson::verify {
+
+struct paper_source {
+  std::string origin;  // "embedded" or the file's path
+  std::string text;    // with comments blanked out (line numbers kept)
+};
+
+/// One display of the paper: where it was found and its TeX, from after its \label to its end.
+struct tex_display {
+  std::string locator;  // "label Phi3" or "anchor 'can be factorized'"
+  int line = 0;         // 1-based line of the display's first math line
+  std::string tex;      // the math, on one line, comments removed
+};
+
+/// The embedded copy (verify/paper/text/simpson-symplectic-gsi2023.tex, compiled in).
+paper_source embedded_paper();
+
+/// A paper read from a file. Throws std::invalid_argument naming the file when it is missing,
+/// unreadable, or not this paper (it must carry the title and the \label of Φ₃).
+paper_source load_paper(const std::string& path);
+
+/// The display carrying \label{label}. Throws std::invalid_argument naming the paper and the label
+/// when there is none.
+tex_display find_labelled(const paper_source& paper, const std::string& label);
+
+/// The first display after the prose `anchor`. Throws std::invalid_argument when the anchor or a
+/// display after it is missing.
+tex_display find_anchored(const paper_source& paper, const std::string& anchor);
+
+/// The source with every comment (from an unescaped % to the end of its line) blanked out.
+std::string without_comments(const std::string& tex);
+
+}  // namespace simpson::verify

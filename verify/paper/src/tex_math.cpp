@@ -1,0 +1,389 @@
+#include <simpson/verify/tex_math.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <sstream>
+#include <set>
+
+namespace simpson::verify {
+
+const GiNaC::symbol& tex_symbols::operator[](const std::string& name) {
+  auto it = symbols_.find(name);
+  if (it == symbols_.end()) it = symbols_.emplace(name, GiNaC::symbol(name)).first;
+  return it->second;
+}
+
+namespace {
+
+struct token {
+  enum class kind { command, character, end } what;
+  std::string text;  // "\omega", "(", "4", "q"
+  std::size_t offset;
+};
+
+std::vector<token> tokenize(const std::string& tex) {
+  std::vector<token> out;
+  for (std::size_t k = 0; k < tex.size();) {
+    const char c = tex[k];
+    if (std::isspace(static_cast<unsigned char>(c)) || c == '~') {
+      ++k;
+    } else if (c == '\\') {
+      std::size_t j = k + 1;
+      while (j < tex.size() && std::isalpha(static_cast<unsigned char>(tex[j]))) ++j;
+      if (j == k + 1 && j < tex.size()) ++j;  // a one-character command: \, \! \; \\ \{
+      out.push_back({token::kind::command, tex.substr(k, j - k), k});
+      k = j;
+    } else {
+      out.push_back({token::kind::character, std::string(1, c), k});
+      ++k;
+    }
+  }
+  out.push_back({token::kind::end, "end of formula", tex.size()});
+  return out;
+}
+
+// The tables of the subset.
+const std::set<std::string>& ignored_commands() {
+  static const std::set<std::string> names{"\\,", "\\!", "\\;", "\\:", "\\ ", "\\quad", "\\qquad", "\\displaystyle",
+                                           "\\big", "\\Big", "\\bigg", "\\Bigg", "\\bigl", "\\bigr", "\\Bigl", "\\Bigr",
+                                           "\\left", "\\right", "\\textstyle", "\\limits"};
+  return names;
+}
+
+const std::map<std::string, std::string>& greek() {
+  static const std::map<std::string, std::string> names{
+      {"\\omega", "omega"}, {"\\theta", "theta"}, {"\\alpha", "alpha"}, {"\\beta", "beta"},     {"\\gamma", "gamma"},
+      {"\\delta", "delta"}, {"\\xi", "xi"},       {"\\eta", "eta"},     {"\\zeta", "zeta"},     {"\\varphi", "varphi"},
+      {"\\phi", "phi"},     {"\\psi", "psi"},     {"\\Delta", "Delta"}, {"\\Phi", "Phi"},       {"\\Gamma", "Gamma"},
+      {"\\Sigma", "Sigma"}, {"\\ell", "l"},       {"\\pi", "pi"}};
+  return names;
+}
+
+class parser {
+ public:
+  parser(const std::string& tex, tex_symbols& symbols) : tokens_(tokenize(tex)), symbols_(symbols) {}
+
+  GiNaC::ex parse_all() {
+    GiNaC::ex e = expression();
+    if (peek().what != token::kind::end) fail("unexpected token");
+    return e;
+  }
+
+ private:
+  const token& peek() {
+    while (tokens_[at_].what == token::kind::command && ignored_commands().count(tokens_[at_].text)) ++at_;
+    return tokens_[at_];
+  }
+  token next() {
+    const token t = peek();
+    if (t.what != token::kind::end) ++at_;
+    return t;
+  }
+  bool accept(const std::string& text) {
+    if (peek().text == text && peek().what != token::kind::end) {
+      ++at_;
+      return true;
+    }
+    return false;
+  }
+  void expect(const std::string& text) {
+    if (!accept(text)) fail("expected '" + text + "'");
+  }
+  [[noreturn]] void fail(const std::string& why) {
+    const token& t = peek();
+    throw tex_parse_error(why + " at token '" + t.text + "'", t.text, t.offset);
+  }
+
+  static bool ends_product(const token& t) {
+    if (t.what == token::kind::end) return true;
+    static const std::set<std::string> stops{"+", "-", ")", "]", "}", "&", "\\\\", "\\over", ",", ".", "=", "<",
+                                             "\\equiv", "\\end"};
+    return stops.count(t.text) > 0;
+  }
+
+  // expression := [±] product {± product}
+  GiNaC::ex expression() {
+    GiNaC::ex sum = 0;
+    bool negative = false;
+    if (accept("-")) negative = true;
+    else accept("+");
+    sum = negative ? -product() : product();
+    for (;;) {
+      if (accept("+")) {
+        sum += product();
+      } else if (accept("-")) {
+        sum -= product();
+      } else {
+        return sum;
+      }
+    }
+  }
+
+  // product := power {power | \cdot power}: implicit multiplication
+  GiNaC::ex product() {
+    GiNaC::ex p = power();
+    while (!ends_product(peek())) {
+      if (accept("\\cdot") || accept("\\times")) continue;
+      p = p * power();
+    }
+    return p;
+  }
+
+  // power := atom [^ script]
+  GiNaC::ex power() {
+    GiNaC::ex base = atom();
+    if (accept("^")) base = GiNaC::pow(base, script());
+    return base;
+  }
+
+  // A script takes one token, or a group: h^24 is h² · 4, as in TeX.
+  GiNaC::ex script() {
+    if (accept("{")) {
+      GiNaC::ex e = group_body();
+      expect("}");
+      return e;
+    }
+    const token t = next();
+    if (t.what == token::kind::character && std::isdigit(static_cast<unsigned char>(t.text[0]))) return GiNaC::numeric(t.text[0] - '0');
+    if (t.what == token::kind::character && std::isalpha(static_cast<unsigned char>(t.text[0]))) return symbols_[t.text];
+    if (greek().count(t.text)) return symbols_[greek().at(t.text)];
+    --at_;
+    fail("expected a one-token script");
+  }
+
+  // The text of a subscript: q_\ell → "l", q_{j+1} → "j+1".
+  std::string subscript_text() {
+    if (accept("{")) {
+      std::string text;
+      int depth = 1;
+      for (;;) {
+        const token t = next();
+        if (t.what == token::kind::end) fail("unclosed subscript");
+        if (t.text == "{") ++depth;
+        if (t.text == "}" && --depth == 0) break;
+        text += greek().count(t.text) ? greek().at(t.text) : t.text;
+      }
+      return text;
+    }
+    const token t = next();
+    if (greek().count(t.text)) return greek().at(t.text);
+    if (t.what == token::kind::character) return t.text;
+    --at_;
+    fail("expected a subscript");
+  }
+
+  // A group's body: an expression, or a fraction {a \over b}.
+  GiNaC::ex group_body() {
+    GiNaC::ex e = peek().text == "}" ? GiNaC::ex(1) : expression();
+    if (accept("\\over")) e = e / expression();
+    return e;
+  }
+
+  GiNaC::ex symbol_with_subscript(std::string name) {
+    if (accept("_")) name += "_" + subscript_text();
+    return symbols_[name];
+  }
+
+  GiNaC::ex atom() {
+    const token t = next();
+    if (t.what == token::kind::end) fail("unexpected end of formula");
+    if (t.what == token::kind::character) {
+      const char c = t.text[0];
+      if (std::isdigit(static_cast<unsigned char>(c))) {
+        std::string digits = t.text;
+        while (peek().what == token::kind::character && std::isdigit(static_cast<unsigned char>(peek().text[0]))) digits += next().text;
+        return GiNaC::numeric(digits.c_str());
+      }
+      if (std::isalpha(static_cast<unsigned char>(c))) return symbol_with_subscript(t.text);
+      if (c == '(' || c == '[') {
+        GiNaC::ex e = expression();
+        expect(c == '(' ? ")" : "]");
+        return e;
+      }
+      if (c == '{') {
+        GiNaC::ex e = group_body();
+        expect("}");
+        // {\Phi}_3: a subscript on a braced symbol.
+        if (peek().text == "_" && GiNaC::is_a<GiNaC::symbol>(e)) return symbol_with_subscript(GiNaC::ex_to<GiNaC::symbol>(e).get_name());
+        return e;
+      }
+    }
+    if (greek().count(t.text)) return symbol_with_subscript(greek().at(t.text));
+    if (t.text == "\\frac") {
+      expect("{");
+      GiNaC::ex num = group_body();
+      expect("}");
+      expect("{");
+      GiNaC::ex den = group_body();
+      expect("}");
+      return num / den;
+    }
+    if (t.text == "\\sqrt") {
+      expect("{");
+      GiNaC::ex e = group_body();
+      expect("}");
+      return GiNaC::sqrt(e);
+    }
+    if (t.text == "\\begin") return matrix_environment();
+    --at_;
+    fail("unsupported token");
+  }
+
+  // \begin{array}{cc} a & b \\ c & d \end{array}, or pmatrix.
+  GiNaC::ex matrix_environment() {
+    expect("{");
+    std::string name;
+    while (peek().text != "}" && peek().what != token::kind::end) name += next().text;
+    expect("}");
+    if (name != "array" && name != "pmatrix") fail("unsupported environment '" + name + "'");
+    if (name == "array") {  // the column specification
+      expect("{");
+      while (peek().text != "}" && peek().what != token::kind::end) next();
+      expect("}");
+    }
+    std::vector<std::vector<GiNaC::ex>> rows(1);
+    for (;;) {
+      rows.back().push_back(expression());
+      if (accept("&")) continue;
+      if (accept("\\\\")) {
+        if (peek().text == "\\end") break;
+        rows.emplace_back();
+        continue;
+      }
+      break;
+    }
+    expect("\\end");
+    expect("{");
+    while (peek().text != "}" && peek().what != token::kind::end) next();
+    expect("}");
+    const std::size_t columns = rows.front().size();
+    GiNaC::matrix m(static_cast<unsigned>(rows.size()), static_cast<unsigned>(columns));
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+      if (rows[r].size() != columns) fail("rows of different lengths");
+      for (std::size_t c = 0; c < columns; ++c) m(static_cast<unsigned>(r), static_cast<unsigned>(c)) = rows[r][c];
+    }
+    return m;
+  }
+
+  std::vector<token> tokens_;
+  std::size_t at_ = 0;
+  tex_symbols& symbols_;
+};
+
+}  // namespace
+
+std::vector<std::string> relation_sides(const std::string& tex) {
+  std::vector<std::string> sides(1);
+  int depth = 0;
+  for (std::size_t k = 0; k < tex.size(); ++k) {
+    const char c = tex[k];
+    if (c == '{' || c == '(' || c == '[') ++depth;
+    if (c == '}' || c == ')' || c == ']') --depth;
+    if (depth == 0 && (c == '=' || c == '<')) {
+      sides.emplace_back();
+      continue;
+    }
+    if (depth == 0 && tex.compare(k, 6, "\\equiv") == 0) {
+      sides.emplace_back();
+      k += 5;
+      continue;
+    }
+    sides.back() += c;
+  }
+  for (std::string& s : sides) {
+    // Trailing punctuation and spacing of the display: "... \, ." or "... :".
+    for (;;) {
+      while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.pop_back();
+      if (s.size() >= 2 && s[s.size() - 2] == '\\' && (s.back() == ',' || s.back() == ';' || s.back() == '!')) {
+        s.resize(s.size() - 2);  // spacing: \, \; \! (before the punctuation test, which would take its comma)
+      } else if (!s.empty() && (s.back() == '.' || s.back() == ',' || s.back() == ':')) {
+        s.pop_back();
+      } else {
+        break;
+      }
+    }
+  }
+  return sides;
+}
+
+GiNaC::ex parse_tex_math(const std::string& tex, tex_symbols& symbols) { return parser(tex, symbols).parse_all(); }
+
+namespace {
+
+std::string numeric_text(const GiNaC::numeric& n) {
+  std::ostringstream out;
+  out << n;
+  return out.str();
+}
+
+/// A polynomial (expanded) as a sum of monomials: coefficients exact, symbols in name order,
+/// terms by decreasing total degree, then by text.
+std::string polynomial_text(const GiNaC::ex& poly, const std::vector<GiNaC::symbol>& symbols) {
+  const GiNaC::ex expanded = GiNaC::expand(poly);
+  std::vector<GiNaC::ex> terms;
+  if (GiNaC::is_a<GiNaC::add>(expanded)) {
+    for (std::size_t k = 0; k < expanded.nops(); ++k) terms.push_back(expanded.op(k));
+  } else {
+    terms.push_back(expanded);
+  }
+  std::vector<std::pair<int, std::string>> texts;
+  for (const GiNaC::ex& term : terms) {
+    GiNaC::ex rest = term;
+    std::string monomial;
+    int total = 0;
+    for (const GiNaC::symbol& x : symbols) {
+      const int d = term.degree(x);
+      if (d == 0) continue;
+      rest = rest / GiNaC::pow(x, d);
+      total += d;
+      monomial += "*" + x.get_name() + (d == 1 ? "" : "^" + std::to_string(d));
+    }
+    rest = GiNaC::normal(rest);
+    std::string coefficient = GiNaC::is_a<GiNaC::numeric>(rest) ? numeric_text(GiNaC::ex_to<GiNaC::numeric>(rest)) : "(?)";
+    std::string text;
+    if (monomial.empty()) {
+      text = coefficient;
+    } else if (coefficient == "1") {
+      text = monomial.substr(1);
+    } else if (coefficient == "-1") {
+      text = "-" + monomial.substr(1);
+    } else {
+      text = coefficient + monomial;
+    }
+    texts.emplace_back(-total, text);
+  }
+  std::sort(texts.begin(), texts.end());
+  std::string out;
+  for (const auto& t : texts) out += (out.empty() || t.second[0] == '-' ? "" : "+") + t.second;
+  return out.empty() ? "0" : out;
+}
+
+}  // namespace
+
+std::string canonical_text(const GiNaC::ex& e) {
+  if (GiNaC::is_a<GiNaC::matrix>(e)) {
+    const GiNaC::matrix& m = GiNaC::ex_to<GiNaC::matrix>(e);
+    std::string out = "[";
+    for (unsigned r = 0; r < m.rows(); ++r) {
+      out += r ? ", [" : "[";
+      for (unsigned c = 0; c < m.cols(); ++c) out += (c ? ", " : "") + canonical_text(m(r, c));
+      out += "]";
+    }
+    return out + "]";
+  }
+  std::vector<GiNaC::symbol> symbols;
+  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (GiNaC::is_a<GiNaC::symbol>(*it)) symbols.push_back(GiNaC::ex_to<GiNaC::symbol>(*it));
+  }
+  std::sort(symbols.begin(), symbols.end(), [](const GiNaC::symbol& a, const GiNaC::symbol& b) { return a.get_name() < b.get_name(); });
+  symbols.erase(std::unique(symbols.begin(), symbols.end(),
+                            [](const GiNaC::symbol& a, const GiNaC::symbol& b) { return a.get_name() == b.get_name(); }),
+                symbols.end());
+  const GiNaC::ex n = GiNaC::normal(e);
+  const std::string numerator = polynomial_text(GiNaC::numer(n), symbols);
+  const GiNaC::ex den = GiNaC::denom(n);
+  if (den.is_equal(GiNaC::ex(1))) return numerator;
+  return "(" + numerator + ")/(" + polynomial_text(den, symbols) + ")";
+}
+
+}  // namespace simpson::verify
