@@ -36,7 +36,7 @@ TEST(PaperReading, EveryFormulaOfTheEmbeddedPaperParsesAndHolds) {
   const paper_reading paper = read_paper(embedded_paper());
   EXPECT_EQ(paper.formulas.size(), ledger_formulas().size());
   for (const char* id : {"qm-harmonic", "reduced-lagrangian", "discriminant-factorization", "momentum-order-3",
-                         "phi3-elimination", "phi3-det", "hd-invariance"}) {
+                         "phi3-elimination", "phi3-det", "hd-invariance", "truncation-1440"}) {
     EXPECT_TRUE(reads_printed_formula(id)) << id;
     EXPECT_EQ(verdict_of(id, paper), verdict::holds) << id;
   }
@@ -58,6 +58,8 @@ TEST(PaperReading, AChangedCoefficientInTheTextChangesTheVerdict) {
       {"\\label{hamiltonien-discret}", "\\over12} \\Big)", "\\over13} \\Big)", {"hd-invariance"}},
       {"\\label{qm-oscillateur-harmonique}", "{{q_\\ell + q_r}\\over2}", "{{q_\\ell + q_r}\\over3}", {"qm-harmonic"}},
       {"\\label{Lagrangien-reduit}", "{{22-h^2", "{{21-h^2", {"reduced-lagrangian"}},
+      {"one obtains without difficulty", "{1\\over1440}", "{1\\over1441}", {"truncation-1440"}},
+      {"one obtains without difficulty", "h^4", "h^3", {"truncation-1440"}},
       // ω⁴ → ω⁶ in p_r: invisible once m = ω = 1, caught with every symbol free.
       {"\\label{moment-ordre-3}", "\\omega^4}\\over48}", "\\omega^6}\\over48}", {"momentum-order-3"}},
   };

@@ -114,8 +114,10 @@ claim_result check_qm_not_affine(const run_context&) {
                                        const symbolic ql(v[0]), qr(v[1]);
                                        return harmonic_internal_node(par, ql, qr) - (ql + qr) / 2 - (ql + qr) / 2 * (x / 8) / (1 - x / 8);
                                      });
-  return identity(p, "q_m differs from the affine midpoint (q_l + q_r)/2 by ((q_l + q_r)/2)(omega^2 h^2/8)/(1 - omega^2 h^2/8), "
-                     "which is nonzero for h > 0 unless q_l + q_r = 0.");
+  return identity(p, "Wording (a finding): q_m = (q_l + q_r)/(2 (1 - omega^2 h^2/8)) is linear in (q_l, q_r), so 'not linear' "
+                     "cannot mean that. What was proved: q_m is not the linear (affine) interpolant's midpoint (q_l + q_r)/2; it "
+                     "differs from it by ((q_l + q_r)/2)(omega^2 h^2/8)/(1 - omega^2 h^2/8), nonzero for h > 0 unless "
+                     "q_l + q_r = 0.");
 }
 
 stability_report simpson_stability() {
@@ -125,9 +127,10 @@ stability_report simpson_stability() {
   });
 }
 
-bool has_interval(const stability_report& r, const std::string& lo, const std::string& hi) {
-  for (const auto& [a, b] : r.stable_intervals) {
-    if (a == lo && b == hi) return true;
+/// True when (lo, hi) of x = ω²h² is a stable band of the exact analysis, hi an exact root.
+bool has_stable_band(const stability_report& r, const rational& lo, const rational& hi) {
+  for (const stability_band& b : r.bands) {
+    if (b.stable && b.x_from == lo && b.to && b.to->exact() && b.to->low == hi) return true;
   }
   return false;
 }
@@ -136,7 +139,7 @@ claim_result check_stability_condition(const run_context&) {
   const stability_report report = simpson_stability();
   json evidence;
   evidence["exact"] = report.evidence;
-  const bool first_band = has_interval(report, "0", "8");
+  const bool first_band = has_stable_band(report, rational(0), rational(8));
   std::string bands;
   for (const auto& [lo, hi] : report.stable_intervals) {
     bands += (bands.empty() ? "" : " and ") + std::string("(") + lo + ", " + (hi.empty() ? "infinity" : hi) + ")";
@@ -340,7 +343,7 @@ claim_result check_root_modulus(const run_context&) {
                                      : "c/a is not identically 1"}};
   printed.proved = !report.product_of_roots_is_one;
   proof corrected;
-  corrected.proved = report.product_of_roots_is_one && has_interval(report, "0", "8");
+  corrected.proved = report.product_of_roots_is_one && has_stable_band(report, rational(0), rational(8));
   corrected.evidence = report.evidence;
   return erratum(printed, corrected,
                  "The scheme is stable when the roots have modulus <= 1 and the roots of modulus 1 are simple (root "
@@ -363,16 +366,17 @@ claim_result check_discriminant_negative(const run_context&) {
   const stability_report report = simpson_stability();
   json evidence;
   evidence["exact"] = report.evidence;
-  return confirmed_if(has_interval(report, "0", "8"), evidence,
-                      "The factor omega^2 h^2/576 is positive; 'all the factors' means the three factors (omega^2 h^2 - 24), "
-                      "(omega^2 h^2 - 12), (omega^2 h^2 - 8), whose product is negative on (0, 8).");
+  return confirmed_if(has_stable_band(report, rational(0), rational(8)), evidence,
+                      "Wording (a finding): 'all the factors ... are negative' is not so, since omega^2 h^2/576 > 0. What was "
+                      "proved: on 0 < omega^2 h^2 < 8 the three factors (omega^2 h^2 - 24), (omega^2 h^2 - 12), (omega^2 h^2 - 8) "
+                      "are negative, their product is negative, and so Delta < 0 (Sturm sequences on the exact Delta).");
 }
 
 claim_result check_roots_product(const run_context&) {
   const stability_report report = simpson_stability();
   json evidence;
   evidence["exact"] = report.evidence;
-  return confirmed_if(report.product_of_roots_is_one && has_interval(report, "0", "8"), evidence);
+  return confirmed_if(report.product_of_roots_is_one && has_stable_band(report, rational(0), rational(8)), evidence);
 }
 
 }  // namespace

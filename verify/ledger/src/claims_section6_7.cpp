@@ -4,6 +4,14 @@
 #include "claims_section6_7.hpp"
 
 #include <simpson/energy.hpp>
+
+#include <simpson/verify/tex_math.hpp>  // canonical_text
+
+#include <ginac/ginac.h>
+
+#include <sstream>
+
+#include <simpson/energy.hpp>
 #include <simpson/quadratic_invariant.hpp>
 #include <simpson/simpson_elimination.hpp>
 #include <simpson/reduced_lagrangian.hpp>
@@ -191,8 +199,48 @@ claim_result check_conserved_form(const run_context&) {
                                        for (std::size_t r = 0; r < 3; ++r) rows.push_back(g[r][0] * c[0] + g[r][1] * c[1] + g[r][2] * c[2]);
                                        return rows;
                                      });
-  return identity(p, "eta = 0 is forced when Gamma has rank 2, i.e. when Phi is not +-I (for Phi = +-I every quadratic form "
-                     "is conserved). Checked with beta != 0; beta = 0 follows by continuity.");
+  // The kernel of Γ is one-dimensional, so (γ, 0, −β) spans it and η = 0 is forced: in GiNaC, with α
+  // and β symbolic, det Γ = 0 and the 2 × 2 minors of Γ have no common zero (with β ≠ 0) except where
+  // the gcd of their numerators vanishes, which must be a power product of β, α − 1, α + 1.
+  const GiNaC::symbol alpha("alpha"), beta("beta");
+  const GiNaC::ex gamma_entry = (alpha * alpha - 1) / beta;
+  const auto gamma_matrix = invariance_system(one_step_matrix<GiNaC::ex>{alpha, beta, gamma_entry, alpha});
+  GiNaC::matrix g(3, 3);
+  for (unsigned r = 0; r < 3; ++r) {
+    for (unsigned c = 0; c < 3; ++c) g(r, c) = gamma_matrix[r][c];
+  }
+  const bool singular = GiNaC::normal(g.determinant()).is_zero();
+  GiNaC::ex common = 0;  // gcd of the numerators of every 2 × 2 minor
+  for (unsigned r1 = 0; r1 < 3; ++r1) {
+    for (unsigned r2 = r1 + 1; r2 < 3; ++r2) {
+      for (unsigned c1 = 0; c1 < 3; ++c1) {
+        for (unsigned c2 = c1 + 1; c2 < 3; ++c2) {
+          const GiNaC::ex minor = GiNaC::numer(GiNaC::normal(g(r1, c1) * g(r2, c2) - g(r1, c2) * g(r2, c1)));
+          common = common.is_zero() ? minor : GiNaC::gcd(common, minor);
+        }
+      }
+    }
+  }
+  // The rank drops only where `common` vanishes; it must be a product of powers of β and (α² − 1).
+  GiNaC::ex rest = GiNaC::expand(common);
+  for (const GiNaC::ex& factor : {GiNaC::ex(beta), GiNaC::ex(alpha - 1), GiNaC::ex(alpha + 1)}) {
+    GiNaC::ex q;
+    while (GiNaC::divide(rest, factor, q)) rest = q;
+  }
+  const bool rank_two = singular && GiNaC::is_a<GiNaC::numeric>(GiNaC::normal(rest)) && !GiNaC::normal(rest).is_zero();
+  const std::string gcd_string = canonical_text(common);
+  claim_result result = identity(p, "eta = 0 is forced: with beta != 0 the kernel of Gamma is one-dimensional (proved in GiNaC, "
+                                    "alpha and beta symbolic, delta = alpha, gamma = (alpha^2 - 1)/beta: det Gamma = 0, and the gcd "
+                                    "of the numerators of the 2 x 2 minors of Gamma is " + gcd_string +
+                                    ", so Gamma has rank 2 wherever that does not vanish), and (gamma, 0, -beta) spans it. "
+                                    "Showing that (gamma, 0, -beta) is in the kernel alone would not force eta = 0. Phi = +-I "
+                                    "(beta = gamma = 0) conserves every quadratic form.");
+  result.evidence["kernel_dimension"] = {{"kernel", "GiNaC"},
+                                         {"det_gamma_is_zero", singular},
+                                         {"gcd_of_2x2_minor_numerators", gcd_string},
+                                         {"rank_two_wherever_the_gcd_is_nonzero", rank_two}};
+  if (!rank_two) result.outcome = verdict::fails;
+  return result;
 }
 
 claim_result check_hd_proportional(const run_context&) {

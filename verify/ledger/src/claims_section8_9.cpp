@@ -139,11 +139,15 @@ claim_result check_conclusion_symplectic_stable(const run_context&) {
   const stability_report report = analyse_three_term_scheme([&](const symbolic& qp, const symbolic& q, const symbolic& qn) {
     return three_term_residual(par, qp, q, qn);
   });
-  bool bounded = false;
-  for (const auto& [lo, hi] : report.stable_intervals) bounded = bounded || !hi.empty();
+  // Conditionally stable: some band is stable, and a stable band ends at a finite root.
+  bool bounded = false, any_stable = false;
+  for (const stability_band& b : report.bands) {
+    any_stable = any_stable || b.stable;
+    bounded = bounded || (b.stable && b.to);
+  }
   json evidence;
   evidence["exact"] = json::array({det.evidence, report.evidence});
-  return confirmed_if(det.proved && bounded && !report.stable_intervals.empty(), evidence,
+  return confirmed_if(det.proved && bounded && any_stable, evidence,
                       "Conditionally stable: stable for omega h in (0, 2 sqrt(2)) and (2 sqrt(3), 2 sqrt(6)), unstable "
                       "elsewhere.");
 }

@@ -109,7 +109,42 @@ printed_outcome check_hd_invariance(const paper_reading& r, symbolic_oscillator&
   return {true, true, "printed H_d(printed Φ₃ y) − H_d(y) = 0 and printed H_d − derived H_d = 0 (normal forms, symbolic m, omega, h, p, q)", ""};
 }
 
-using printed_check = std::function<printed_outcome(const paper_reading&, symbolic_oscillator&)>;
+/// T_h(q_j): the left side of (schema-ordre-3) on the exact solution through (p_j, q_j), q(t ± h) =
+/// q_j cos ωh ± p_j/(mω) sin ωh, expanded by GiNaC in h. The printed display claims it is
+/// ω⁶h⁴q_j/1440 + O(h⁶): the difference of the two must have no term below h⁶.
+printed_outcome check_truncation(const paper_reading& r, symbolic_oscillator& o, tex_symbols& symbols) {
+  const ex printed = r.at("truncation-error").value;
+  const ex q = symbols["q_j"], p = symbols["p_j"];
+  const ex c = GiNaC::cos(o.omega * o.h), s = GiNaC::sin(o.omega * o.h);
+  const ex shift = p / (o.m * o.omega) * s;
+  const ex residual = three_term_residual(o.par, ex(q * c - shift), q, ex(q * c + shift));
+  // The printed order term O(h^k) says up to which power the two must agree.
+  int order = 0;
+  ex printed_terms = 0;
+  const ex expanded = GiNaC::expand(printed);
+  for (std::size_t k = 0; k < (GiNaC::is_a<GiNaC::add>(expanded) ? expanded.nops() : 1); ++k) {
+    const ex term = GiNaC::is_a<GiNaC::add>(expanded) ? expanded.op(k) : expanded;
+    if (GiNaC::is_a<GiNaC::function>(term) && GiNaC::ex_to<GiNaC::function>(term).get_name() == "Order") {
+      order = term.op(0).degree(o.h);
+    } else {
+      printed_terms += term;
+    }
+  }
+  if (order == 0) return {false, true, "the printed truncation error has no order term O(h^k)", ""};
+  const ex difference = GiNaC::series_to_poly(GiNaC::series(residual - printed_terms, o.h == 0, order));
+  const ex low = GiNaC::normal(difference);
+  if (low.is_zero()) {
+    return {true, false,
+            "T_h(q_j) − printed terms = O(h^" + std::to_string(order) + ") (GiNaC series in h of the scheme's residual on the "
+            "exact solution, symbolic m, omega, p_j, q_j)", ""};
+  }
+  const ex derived = GiNaC::series_to_poly(GiNaC::series(residual, o.h == 0, order));
+  return {false, false, "T_h(q_j) − printed terms = " + text_of(low) + " + O(h^" + std::to_string(order) + ")",
+          "as derived: T_h(q_j) = " + text_of(derived) + " + O(h^" + std::to_string(order) + ")"};
+}
+
+/// A reading is the claim's own copy: a check may add symbols (q_j, p_j) to it.
+using printed_check = std::function<printed_outcome(paper_reading&, symbolic_oscillator&)>;
 
 struct formula_claim {
   std::vector<std::string> formulas;  // the printed formulas the claim reads
@@ -142,6 +177,9 @@ const std::map<std::string, formula_claim>& formula_claims() {
       {"phi3-elimination", {{"Phi3"}, [](const paper_reading& r, symbolic_oscillator& o) { return check_phi3(r, o, false); }}},
       {"phi3-det", {{"Phi3"}, [](const paper_reading& r, symbolic_oscillator& o) { return check_phi3(r, o, true); }}},
       {"hd-invariance", {{"hamiltonien-discret", "Phi3"}, check_hd_invariance}},
+      {"truncation-1440",
+       {{"truncation-error"},
+        [](paper_reading& r, symbolic_oscillator& o) { return check_truncation(r, o, r.symbols); }}},
   };
   return claims;
 }

@@ -8,6 +8,7 @@ const std::vector<formula_location>& ledger_formulas() {
   static const std::vector<formula_location> formulas{
       {"qm-oscillateur-harmonique", "qm-oscillateur-harmonique", ""},
       {"Lagrangien-reduit", "Lagrangien-reduit", ""},
+      {"truncation-error", "", "one obtains without difficulty the relation"},
       {"discriminant-factorized", "", "can be factorized"},
       {"moment-ordre-3", "moment-ordre-3", ""},
       {"Phi3", "Phi3", ""},

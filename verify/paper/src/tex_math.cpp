@@ -200,6 +200,19 @@ class parser {
         expect(c == '(' ? ")" : "]");
         return e;
       }
+      if (c == '{' && peek().text == "\\rm") {  // {\rm O}(h^k): the order term; {\rm d}: upright letters
+        next();
+        std::string name;
+        while (peek().what == token::kind::character && std::isalpha(static_cast<unsigned char>(peek().text[0]))) name += next().text;
+        expect("}");
+        if (name == "O") {
+          expect("(");
+          GiNaC::ex e = expression();
+          expect(")");
+          return GiNaC::Order(e);
+        }
+        return symbols_[name];
+      }
       if (c == '{') {
         GiNaC::ex e = group_body();
         expect("}");
@@ -339,7 +352,10 @@ std::string polynomial_text(const GiNaC::ex& poly, const std::vector<GiNaC::symb
       monomial += "*" + x.get_name() + (d == 1 ? "" : "^" + std::to_string(d));
     }
     rest = GiNaC::normal(rest);
-    std::string coefficient = GiNaC::is_a<GiNaC::numeric>(rest) ? numeric_text(GiNaC::ex_to<GiNaC::numeric>(rest)) : "(?)";
+    // A numeric coefficient, or a function of one symbol such as Order(h^6), whose printing is fixed.
+    std::ostringstream other;
+    other << rest;
+    std::string coefficient = GiNaC::is_a<GiNaC::numeric>(rest) ? numeric_text(GiNaC::ex_to<GiNaC::numeric>(rest)) : other.str();
     std::string text;
     if (monomial.empty()) {
       text = coefficient;
