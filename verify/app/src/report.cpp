@@ -186,7 +186,7 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
     if (!o.result.printed.is_null()) {
       md += fmt::format("Read from the paper ({}):\n\n", o.result.printed["source"].get<std::string>());
       for (const json& f : o.result.printed["formulas"]) {
-        md += fmt::format("- {} (line {}): `{}`\n  parsed: `{}`\n", f["label"].get<std::string>(), f["line"].get<int>(),
+        md += fmt::format("- {} (line {}): `{}`\n  - parsed: `{}`\n", f["label"].get<std::string>(), f["line"].get<int>(),
                           f["tex"].get<std::string>(), f["parsed"].get<std::string>());
       }
       md += "\n";
