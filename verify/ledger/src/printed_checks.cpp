@@ -211,8 +211,10 @@ claim_result check_claim(const claim& c, const run_context& ctx) {
   result.printed_seconds = seconds;
   if (!outcome.holds) {
     const bool was_holding = result.outcome == verdict::holds;
-    result.outcome = outcome.property || outcome.correction.empty() ? verdict::fails : verdict::erratum;
-    if (result.outcome == verdict::erratum) result.correction = outcome.correction;
+    const verdict printed = outcome.property || outcome.correction.empty() ? verdict::fails : verdict::erratum;
+    // The weaker of the two: an own-kernel `fails` is never softened to an erratum.
+    result.outcome = result.outcome == verdict::fails ? verdict::fails : printed;
+    if (result.outcome == verdict::erratum && was_holding) result.correction = outcome.correction;
     result.note = (was_holding ? "The formula as printed in the paper's source differs from the derived one: "
                                : "Also, as printed: ") + outcome.proved + (result.note.empty() ? "" : " " + result.note);
   }
