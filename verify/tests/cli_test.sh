@@ -158,6 +158,17 @@ check "altered paper" 1 --claims momentum-order-3,phi3-det --precisions double,r
 grep -q "momentum-order-3: verdict erratum, expected holds" "$work/err" || fail "altered paper: claim not named: $(cat "$work/err")"
 echo "{\"name\": \"altered\", \"claims\": [\"momentum-order-3\"], \"precisions\": [\"double\"], \"paper\": \"$work/altered.tex\"}" >"$work/altered.json"
 check "scene key paper" 1 --scene "$work/altered.json" --out "$work/altered-scene"
+# A copy with the errata corrected: those claims now hold, so they differ from their expected verdicts (exit 1, named).
+sed -e 's/{{\\dd^6 q}\\over{\\dd t^5}}/{{\\dd^6 q}\\over{\\dd t^6}}/g' -e 's/\\sum_{j=1}^{N-1}/\\sum_{j=0}^{N-1}/' \
+    -e 's/{{\\gamma^2-1}\\over2}   \\end{pmatrix}/{{\\delta^2-1}\\over2} \\end{pmatrix}/' \
+    -e 's/{\\rm det} \\, \\Gamma = /{\\rm det} \\, \\Gamma = {1\\over4} \\, /' "$paper_src" >"$work/corrected.tex"
+[ "$(diff "$paper_src" "$work/corrected.tex" | grep -c "^>")" = 6 ] || fail "corrected copy: sed did not change six lines"
+check "corrected paper" 1 --claims taylor-display,classical-action-range,simpson-action-range,gamma-system,gamma-determinant,phi3-det \
+    --precisions double,rational --paper "$work/corrected.tex" --out "$work/corrected"
+for id in taylor-display classical-action-range simpson-action-range gamma-system gamma-determinant; do
+  grep -q "$id: verdict holds, expected erratum" "$work/err" || fail "corrected paper: $id not named: $(cat "$work/err")"
+done
+grep -q "phi3-det: verdict" "$work/err" && fail "corrected paper: phi3-det named"
 check "list claims" 0 --list-claims
 check "version" 0 --version
 

@@ -27,25 +27,72 @@ std::vector<std::string> precision_names(const std::vector<precision>& precision
 
 }  // namespace
 
-std::string summary_line(const run_record& r) {
-  std::size_t held = 0, errata = 0, failed = 0;
+namespace {
+
+struct verdict_counts {
+  std::size_t held = 0, errata = 0, failed = 0, disagreed = 0, machine_read = 0;
   std::vector<std::string> unexpected;
+};
+
+verdict_counts count_verdicts(const run_record& r) {
+  verdict_counts c;
   for (const claim_outcome& o : r.outcomes) {
-    held += o.result.outcome == verdict::holds;
-    errata += o.result.outcome == verdict::erratum;
-    failed += o.result.outcome == verdict::fails;
-    if (o.result.outcome != o.expected) unexpected.push_back(o.checked->id);
+    c.held += o.result.outcome == verdict::holds;
+    c.errata += o.result.outcome == verdict::erratum;
+    c.failed += o.result.outcome == verdict::fails;
+    c.disagreed += o.result.outcome == verdict::kernels_disagree;
+    c.machine_read += !o.result.printed.is_null();
+    if (o.result.outcome != o.expected) c.unexpected.push_back(o.checked->id);
   }
-  return fmt::format("{} claims: {} held, {} errata, {} failed; {}", r.outcomes.size(), held, errata, failed,
-                     unexpected.empty() ? std::string("all verdicts as expected")
-                                        : fmt::format("{} not as expected ({})", unexpected.size(), join(unexpected, ", ")));
+  return c;
 }
 
-std::size_t machine_read(const run_record& r) {
-  std::size_t n = 0;
-  for (const claim_outcome& o : r.outcomes) n += !o.result.printed.is_null();
-  return n;
+}  // namespace
+
+std::string summary_line(const run_record& r) {
+  const verdict_counts c = count_verdicts(r);
+  return fmt::format("{} {}: {} held, {} errata, {} failed{}; {}", r.outcomes.size(), r.outcomes.size() == 1 ? "claim" : "claims",
+                     c.held, c.errata, c.failed, c.disagreed ? fmt::format(", {} with the kernels in disagreement", c.disagreed) : "",
+                     c.unexpected.empty() ? std::string("all verdicts as expected")
+                                          : fmt::format("{} not as expected ({})", c.unexpected.size(), join(c.unexpected, ", ")));
 }
+
+json summary_json(const run_record& r) {
+  const verdict_counts c = count_verdicts(r);
+  return {{"line", summary_line(r)},     {"claims", r.outcomes.size()},
+          {"held", c.held},              {"errata", c.errata},
+          {"failed", c.failed},          {"kernels_disagree", c.disagreed},
+          {"machine_read", c.machine_read}, {"typed", r.outcomes.size() - c.machine_read},
+          {"unexpected", c.unexpected}};
+}
+
+std::size_t machine_read(const run_record& r) { return count_verdicts(r).machine_read; }
+
+namespace {
+
+/// The speed figures issue 11 asks for: the four headline claims in GiNaC (with the derivation
+/// they share) and every claim in both kernels (exact proofs and numeric rechecks together).
+struct speed_figures {
+  double headline = 0, claims_total = 0;
+  std::vector<std::string> headline_ids;
+};
+
+speed_figures speed_of(const run_record& r) {
+  speed_figures s;
+  s.headline = r.ginac_derivation_seconds;
+  for (const claim_outcome& o : r.outcomes) {
+    s.claims_total += o.seconds;
+    const std::string& id = o.checked->id;
+    if (!o.result.printed.is_null() &&
+        (id == "phi3-det" || id == "discriminant-factorization" || id == "hd-invariance" || id == "truncation-1440")) {
+      s.headline += o.result.printed_seconds;
+      s.headline_ids.push_back(id);
+    }
+  }
+  return s;
+}
+
+}  // namespace
 
 plot_outcome all_plots_drawn(const run_record& r) {
   plot_outcome p;
@@ -93,6 +140,7 @@ json report_json(const run_record& r, const plot_outcome& plots) {
     }
   }
   timing["total"] = r.seconds;
+  const speed_figures speed = speed_of(r);
   return json{{"tool", "simpson-verify"},
               {"scene", r.run_scene.name},
               {"description", r.run_scene.description},
@@ -100,8 +148,7 @@ json report_json(const run_record& r, const plot_outcome& plots) {
               {"samples", r.run_scene.samples},
               {"precisions", precision_names(r.run_scene.precisions)},
               {"paper", r.paper_origin},
-              {"summary", summary_line(r)},
-              {"machine_read", machine_read(r)},
+              {"summary", summary_json(r)},
               {"all_as_expected", all_as_expected(r)},
               {"claims", claims},
               {"experiments", experiments},
@@ -110,7 +157,10 @@ json report_json(const run_record& r, const plot_outcome& plots) {
               {"files", report_file_names(r, plots)},
               {"paper_configuration", r.paper_configuration},
               {"environment", r.environment},
-              {"timing", {{"unit", "seconds"}, {"claims", timing}, {"printed_formulas_in_ginac", ginac_timing}, {"sections", section_timing}}}};
+              {"timing", {{"unit", "seconds"}, {"claims", timing}, {"printed_formulas_in_ginac", ginac_timing},
+                          {"ginac_derivation", r.ginac_derivation_seconds}, {"headline_in_ginac", speed.headline},
+                          {"headline_claims", speed.headline_ids}, {"claims_total", speed.claims_total},
+                          {"sections", section_timing}}}};
 }
 
 std::string report_markdown(const run_record& r) { return report_markdown(r, all_plots_drawn(r)); }
@@ -123,11 +173,17 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
   md += fmt::format("{} of {} claims read their formula from the paper's LaTeX source ({}) and prove it in GiNaC against "
                     "the derived one, beside our own kernel; the others check a statement typed from the prose.\n\n",
                     machine_read(r), r.outcomes.size(), r.paper_origin);
+  if (machine_read(r) > 0) {
+    const speed_figures speed = speed_of(r);
+    md += fmt::format("Speed (timing in report.json): the GiNaC derivation from first principles {:.2e} s; the headline claims ({}) "
+                      "in GiNaC, with that derivation, {:.2e} s; every claim in both kernels, numeric rechecks included, {:.2e} s.\n\n",
+                      r.ginac_derivation_seconds, join(speed.headline_ids, ", "), speed.headline, speed.claims_total);
+  }
   md += fmt::format("Seed {} · {} random samples per numeric recheck and precision · precisions: {}\n\n", r.run_scene.seed,
                     r.run_scene.samples, join(precision_names(r.run_scene.precisions), ", "));
   md += "Paper: F. Dubois, J. A. Rojas-Quintero, *A variational symplectic scheme based on Simpson's quadrature*, GSI 2023. "
         "Verdicts: **holds** (true as printed), **erratum** (false as printed; a corrected statement is proved), **fails** "
-        "(false, no correction found).\n\n";
+        "(false, no correction found), **kernels-disagree** (our kernel and GiNaC reached different conclusions on the derived statement: a bug, never expected).\n\n";
 
   md += "## Claims\n\n| id | § | equation | verdict | expected | methods |\n|---|---|---|---|---|---|\n";
   for (const claim_outcome& o : r.outcomes) {
@@ -186,10 +242,17 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
     if (!o.result.printed.is_null()) {
       md += fmt::format("Read from the paper ({}):\n\n", o.result.printed["source"].get<std::string>());
       for (const json& f : o.result.printed["formulas"]) {
+        std::vector<std::string> sides;
+        for (const json& side : f["parsed"]) sides.push_back(side.get<std::string>());
         md += fmt::format("- {} (line {}): `{}`\n  - parsed: `{}`\n", f["label"].get<std::string>(), f["line"].get<int>(),
-                          f["tex"].get<std::string>(), f["parsed"].get<std::string>());
+                          f["tex"].get<std::string>(), join(sides, "` and `"));
       }
       md += "\n";
+      const json& kernels = o.result.evidence["kernels"];
+      md += fmt::format("What each kernel proved:\n\n- ours: {} ({})\n- GiNaC, printed side: {}\n- GiNaC, derived side: {}\n\n",
+                        kernels["own"]["derived_holds"].get<bool>() ? "the derived statement" : "not the derived statement",
+                        kernels["own"]["statement"].get<std::string>(), kernels["ginac"]["printed"].get<std::string>(),
+                        kernels["ginac"]["derived"].get<std::string>());
     } else {
       md += "Statement typed from the paper's prose (not machine-read).\n\n";
     }

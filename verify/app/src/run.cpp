@@ -49,6 +49,12 @@ run_record run(const scene& s, const paper_reading& paper, const progress_callba
     r.outcomes.push_back(std::move(outcome));
     if (progress) progress(k, s.claims.size(), c, &r.outcomes.back());
   }
+  for (const claim_outcome& o : r.outcomes) {
+    if (!o.result.printed.is_null()) {
+      r.ginac_derivation_seconds = ginac_derivation_seconds();
+      break;
+    }
+  }
   const experiment_settings& e = s.experiments;
   const auto section = [&](auto&& compute) {
     throw_if_interrupted();

@@ -1,26 +1,91 @@
 #include <simpson/verify/printed_checks.hpp>
 
-#include <simpson/verify/paper_reading.hpp>
+#include "printed_check_support.hpp"
 
-#include <simpson/energy.hpp>
-#include <simpson/internal_node.hpp>
-#include <simpson/reduced_lagrangian.hpp>
-#include <simpson/simpson_map.hpp>
-#include <simpson/simpson_momentum.hpp>
-#include <simpson/three_term_scheme.hpp>
+#include <simpson/verify/paper_reading.hpp>
 
 #include <cctype>
 #include <chrono>
-#include <functional>
-#include <map>
-#include <sstream>
 
 namespace simpson::verify {
-namespace {
+namespace detail {
 
 using GiNaC::ex;
 
 std::string text_of(const ex& e) { return canonical_text(e); }
+
+ex normal_difference(const ex& a, const ex& b) {
+  const ex difference = (a - b).evalm();
+  if (!GiNaC::is_a<GiNaC::matrix>(difference)) return GiNaC::normal(difference);
+  GiNaC::matrix m = GiNaC::ex_to<GiNaC::matrix>(difference);
+  for (unsigned r = 0; r < m.rows(); ++r) {
+    for (unsigned c = 0; c < m.cols(); ++c) m(r, c) = GiNaC::normal(m(r, c));
+  }
+  return m;
+}
+
+bool is_zero_expression(const ex& e) {
+  if (!GiNaC::is_a<GiNaC::matrix>(e)) return GiNaC::normal(e).is_zero();
+  const GiNaC::matrix& m = GiNaC::ex_to<GiNaC::matrix>(e);
+  for (unsigned r = 0; r < m.rows(); ++r) {
+    for (unsigned c = 0; c < m.cols(); ++c) {
+      if (!GiNaC::normal(m(r, c)).is_zero()) return false;
+    }
+  }
+  return true;
+}
+
+const ex& printed_side(const paper_reading& r, const std::string& name, std::size_t side) { return r.at(name).sides.at(side); }
+
+void compare_core(printed_outcome& o, const std::string& what, const ex& derived, const ex& core) {
+  const ex d = normal_difference(core, derived);
+  o.derived_holds = is_zero_expression(d);
+  o.derived = o.derived_holds ? "core " + what + " − derived = 0 (normal form, all symbols free)"
+                              : "core " + what + " − derived = " + text_of(d) + " ≠ 0";
+}
+
+printed_outcome compare(const std::string& what, const ex& printed, const ex& derived, const ex& core) {
+  printed_outcome o;
+  const ex d = normal_difference(printed, derived);
+  o.holds = is_zero_expression(d);
+  o.proved = o.holds ? "printed " + what + " − derived = 0 (normal form, all symbols free)"
+                     : "printed " + what + " − derived = " + text_of(d) + " ≠ 0";
+  if (!o.holds) o.correction = "as derived: " + what + " = " + text_of(derived);
+  compare_core(o, what, derived, core);
+  return o;
+}
+
+std::optional<ex> equation_factor(const ex& e1, const ex& e2, const std::vector<ex>& unknowns) {
+  if (GiNaC::normal(e1).is_zero() || GiNaC::normal(e2).is_zero()) return std::nullopt;
+  const ex ratio = GiNaC::normal(e2 / e1);
+  for (const ex& x : unknowns) {
+    if (!GiNaC::normal(ratio.diff(GiNaC::ex_to<GiNaC::symbol>(x))).is_zero()) return std::nullopt;
+  }
+  return ratio;
+}
+
+printed_outcome both(const printed_outcome& a, const printed_outcome& b) {
+  printed_outcome o;
+  o.holds = a.holds && b.holds;
+  o.property = (!a.holds && a.property) || (!b.holds && b.property);
+  o.proved = a.proved + "; " + b.proved;
+  o.correction = a.correction.empty() ? b.correction : b.correction.empty() ? a.correction : a.correction + "; " + b.correction;
+  o.derived_holds = a.derived_holds && b.derived_holds;
+  o.derived = a.derived.empty() ? b.derived : b.derived.empty() ? a.derived : a.derived + "; " + b.derived;
+  return o;
+}
+
+ex general_force(const ex& x) {
+  const GiNaC::symbol y("force_variable");
+  return GiNaC::diff(apply_function("V", {y}), y).subs(y == x);
+}
+
+}  // namespace detail
+
+namespace {
+
+using detail::formula_claim_table;
+using detail::printed_outcome;
 
 /// TeX with its runs of white space folded to one space, for reports.
 std::string folded(const std::string& tex) {
@@ -31,193 +96,86 @@ std::string folded(const std::string& tex) {
     out += space ? ' ' : c;
   }
   while (!out.empty() && out.back() == ' ') out.pop_back();
+  while (!out.empty() && out.front() == ' ') out.erase(out.begin());
   return out;
 }
 
-/// What the GiNaC kernel found for one printed formula.
-struct printed_outcome {
-  bool holds = false;
-  bool property = false;   // a property of the printed formula (det = 1, conservation): fails, not erratum
-  std::string proved;      // what was shown, in words and formulas
-  std::string correction;  // the derived formula, when the printed one differs
-};
-
-/// The oscillator's parameters and states as GiNaC symbols shared with the reader.
-struct symbolic_oscillator {
-  explicit symbolic_oscillator(tex_symbols& s)
-      : m(s["m"]), omega(s["omega"]), h(s["h"]), q_l(s["q_l"]), q_r(s["q_r"]), p(s["p"]), q(s["q"]), par{m, omega, h} {}
-  ex m, omega, h, q_l, q_r, p, q;
-  oscillator_parameters<ex> par;
-};
-
-/// printed − derived normalised: zero proves the identity as rational functions of every symbol.
-printed_outcome compare(const std::string& what, const ex& printed, const ex& derived) {
-  const ex difference = GiNaC::normal(printed - derived);
-  if (difference.is_zero()) return {true, false, "printed " + what + " − derived = 0 (normal form, all symbols free)", ""};
-  return {false, false, "printed " + what + " − derived = " + text_of((difference)) + " ≠ 0",
-          "as derived: " + text_of((GiNaC::normal(derived)))};
-}
-
-one_step_matrix<ex> as_map(const ex& m) {
-  const GiNaC::matrix& M = GiNaC::ex_to<GiNaC::matrix>(m);
-  return {M(0, 0), M(0, 1), M(1, 0), M(1, 1)};
-}
-
-printed_outcome check_phi3(const paper_reading& r, symbolic_oscillator& o, bool property) {
-  const ex printed = r.at("Phi3").value;
-  if (!GiNaC::is_a<GiNaC::matrix>(printed) || GiNaC::ex_to<GiNaC::matrix>(printed).rows() != 2 ||
-      GiNaC::ex_to<GiNaC::matrix>(printed).cols() != 2) {
-    return {false, true, "the printed Φ₃ is not a 2 × 2 matrix: " + text_of(printed), ""};
-  }
-  const one_step_matrix<ex> phi = as_map(printed);
-  if (property) {
-    const ex det = GiNaC::normal(phi.alpha * phi.delta - phi.beta * phi.gamma - 1);
-    if (det.is_zero()) return {true, true, "det(printed Φ₃) − 1 = 0 (normal form, symbolic m, omega, h)", ""};
-    return {false, true, "det(printed Φ₃) − 1 = " + text_of((det)) + " ≠ 0", ""};
-  }
-  const one_step_matrix<ex> derived = simpson_map(o.par);
-  const ex diff = GiNaC::normal(phi.alpha - derived.alpha) + GiNaC::normal(phi.beta - derived.beta) * o.p +
-                  GiNaC::normal(phi.gamma - derived.gamma) * o.q + GiNaC::normal(phi.delta - derived.delta) * o.p * o.q;
-  if (GiNaC::normal(diff).is_zero()) return {true, false, "printed Φ₃ − derived Φ₃ = 0, entry by entry (normal form)", ""};
-  std::string entries;
-  const char* names[] = {"alpha", "beta", "gamma", "delta"};
-  const ex printed_entries[] = {phi.alpha, phi.beta, phi.gamma, phi.delta};
-  const ex derived_entries[] = {derived.alpha, derived.beta, derived.gamma, derived.delta};
-  std::string correction = "as derived: ";
-  for (int k = 0; k < 4; ++k) {
-    const ex d = GiNaC::normal(printed_entries[k] - derived_entries[k]);
-    if (!d.is_zero()) entries += std::string(entries.empty() ? "" : "; ") + names[k] + ": printed − derived = " + text_of((d));
-    correction += std::string(k ? ", " : "") + names[k] + " = " + text_of((GiNaC::normal(derived_entries[k])));
-  }
-  return {false, false, entries, correction};
-}
-
-printed_outcome check_hd_invariance(const paper_reading& r, symbolic_oscillator& o) {
-  // H_d as printed, with Φ₃ as printed: H_d(Φ₃ y) − H_d(y) for symbolic p, q.
-  const ex hd = r.at("hamiltonien-discret").value;
-  const ex printed_phi = r.at("Phi3").value;
-  if (!GiNaC::is_a<GiNaC::matrix>(printed_phi)) return {false, true, "the printed Φ₃ is not a matrix", ""};
-  const one_step_matrix<ex> phi = as_map(printed_phi);
-  const ex p1 = phi.alpha * o.p + phi.beta * o.q, q1 = phi.gamma * o.p + phi.delta * o.q;
-  const ex change = GiNaC::normal(hd.subs(GiNaC::lst{o.p == p1, o.q == q1}) - hd);
-  if (!change.is_zero()) {
-    return {false, true, "printed H_d(printed Φ₃ y) − H_d(y) = " + text_of((change)) + " ≠ 0", ""};
-  }
-  // And it is the H_d the core defines (hamiltonien-discret), not merely some conserved form.
-  const printed_outcome same = compare("H_d", hd, discrete_energy(o.par, phase_point<ex>{o.p, o.q}));
-  if (!same.holds) return {false, true, same.proved, ""};
-  return {true, true, "printed H_d(printed Φ₃ y) − H_d(y) = 0 and printed H_d − derived H_d = 0 (normal forms, symbolic m, omega, h, p, q)", ""};
-}
-
-/// T_h(q_j): the left side of (schema-ordre-3) on the exact solution through (p_j, q_j), q(t ± h) =
-/// q_j cos ωh ± p_j/(mω) sin ωh, expanded by GiNaC in h. The printed display claims it is
-/// ω⁶h⁴q_j/1440 + O(h⁶): the difference of the two must have no term below h⁶.
-printed_outcome check_truncation(const paper_reading& r, symbolic_oscillator& o, tex_symbols& symbols) {
-  const ex printed = r.at("truncation-error").value;
-  const ex q = symbols["q_j"], p = symbols["p_j"];
-  const ex c = GiNaC::cos(o.omega * o.h), s = GiNaC::sin(o.omega * o.h);
-  const ex shift = p / (o.m * o.omega) * s;
-  const ex residual = three_term_residual(o.par, ex(q * c - shift), q, ex(q * c + shift));
-  // The printed order term O(h^k) says up to which power the two must agree.
-  int order = 0;
-  ex printed_terms = 0;
-  const ex expanded = GiNaC::expand(printed);
-  for (std::size_t k = 0; k < (GiNaC::is_a<GiNaC::add>(expanded) ? expanded.nops() : 1); ++k) {
-    const ex term = GiNaC::is_a<GiNaC::add>(expanded) ? expanded.op(k) : expanded;
-    if (GiNaC::is_a<GiNaC::function>(term) && GiNaC::ex_to<GiNaC::function>(term).get_name() == "Order") {
-      order = term.op(0).degree(o.h);
-    } else {
-      printed_terms += term;
-    }
-  }
-  if (order == 0) return {false, true, "the printed truncation error has no order term O(h^k)", ""};
-  const ex difference = GiNaC::series_to_poly(GiNaC::series(residual - printed_terms, o.h == 0, order));
-  const ex low = GiNaC::normal(difference);
-  if (low.is_zero()) {
-    return {true, false,
-            "T_h(q_j) − printed terms = O(h^" + std::to_string(order) + ") (GiNaC series in h of the scheme's residual on the "
-            "exact solution, symbolic m, omega, p_j, q_j)", ""};
-  }
-  const ex derived = GiNaC::series_to_poly(GiNaC::series(residual, o.h == 0, order));
-  return {false, false, "T_h(q_j) − printed terms = " + text_of(low) + " + O(h^" + std::to_string(order) + ")",
-          "as derived: T_h(q_j) = " + text_of(derived) + " + O(h^" + std::to_string(order) + ")"};
-}
-
-/// A reading is the claim's own copy: a check may add symbols (q_j, p_j) to it.
-using printed_check = std::function<printed_outcome(paper_reading&, symbolic_oscillator&)>;
-
-struct formula_claim {
-  std::vector<std::string> formulas;  // the printed formulas the claim reads
-  printed_check check;
-};
-
-const std::map<std::string, formula_claim>& formula_claims() {
-  static const std::map<std::string, formula_claim> claims{
-      {"qm-harmonic",
-       {{"qm-oscillateur-harmonique"},
-        [](const paper_reading& r, symbolic_oscillator& o) {
-          return compare("q_m", r.at("qm-oscillateur-harmonique").value, harmonic_internal_node(o.par, o.q_l, o.q_r));
-        }}},
-      {"reduced-lagrangian",
-       {{"Lagrangien-reduit"},
-        [](const paper_reading& r, symbolic_oscillator& o) {
-          return compare("L_h^r", r.at("Lagrangien-reduit").value, reduced_lagrangian(o.par, o.q_l, o.q_r));
-        }}},
-      {"discriminant-factorization",
-       {{"discriminant-factorized"},
-        [](const paper_reading& r, symbolic_oscillator& o) {
-          // Δ = b² − 4ac of the characteristic equation of (schema-ordre-3), at x = ω²h².
-          return compare("Δ", r.at("discriminant-factorized").value, discriminant(ex(o.omega * o.omega * o.h * o.h)));
-        }}},
-      {"momentum-order-3",
-       {{"moment-ordre-3"},
-        [](const paper_reading& r, symbolic_oscillator& o) {
-          return compare("p_r", r.at("moment-ordre-3").value, simpson_momentum(o.par, o.q_l, o.q_r));
-        }}},
-      {"phi3-elimination", {{"Phi3"}, [](const paper_reading& r, symbolic_oscillator& o) { return check_phi3(r, o, false); }}},
-      {"phi3-det", {{"Phi3"}, [](const paper_reading& r, symbolic_oscillator& o) { return check_phi3(r, o, true); }}},
-      {"hd-invariance", {{"hamiltonien-discret", "Phi3"}, check_hd_invariance}},
-      {"truncation-1440",
-       {{"truncation-error"},
-        [](paper_reading& r, symbolic_oscillator& o) { return check_truncation(r, o, r.symbols); }}},
-  };
+const formula_claim_table& formula_claims() {
+  static const formula_claim_table claims = [] {
+    formula_claim_table t;
+    detail::add_printed_checks_section2_4(t);
+    detail::add_printed_checks_section5(t);
+    detail::add_printed_checks_section6_7(t);
+    return t;
+  }();
   return claims;
+}
+
+/// The verdict from the two kernels. Each proves the derived statement (ours on our
+/// transcription, in θ with the grid lemma; GiNaC from first principles, every symbol free); they
+/// must agree, or the verdict is kernels-disagree. When they agree that it holds, the printed side
+/// decides: holds, erratum (the derived formula is the correction) or fails (a printed property).
+void decide(claim_result& result, const printed_outcome& g, const std::string& claim_id) {
+  const bool own_derived = result.outcome != verdict::fails;
+  const verdict own = result.outcome;
+  if (own_derived != g.derived_holds) {
+    result.outcome = verdict::kernels_disagree;
+    result.note = "The two kernels disagree on '" + claim_id + "': ours " + (own_derived ? "proved" : "did not prove") +
+                  " the derived statement, GiNaC " + (g.derived_holds ? "proved" : "did not prove") + " it (" + g.derived + ")." +
+                  (result.note.empty() ? "" : " " + result.note);
+    return;
+  }
+  if (!g.derived_holds) {
+    result.outcome = verdict::fails;
+    return;
+  }
+  if (g.holds) {
+    result.outcome = verdict::holds;
+    if (own == verdict::erratum) {
+      result.note = "This copy of the paper prints the derived formula: " + g.proved +
+                    ". (Our kernel's transcription of the printed formula, typed from the GSI 2023 text, is the erratum it refutes.)";
+      result.correction.clear();
+    }
+    return;
+  }
+  result.outcome = g.property || g.correction.empty() ? verdict::fails : verdict::erratum;
+  if (result.outcome == verdict::erratum && own != verdict::erratum) result.correction = g.correction;
+  result.note = (own == verdict::erratum ? "As printed: " : "The formula as printed in the paper's source differs from the derived one: ") +
+                g.proved + (result.note.empty() ? "" : " " + result.note);
 }
 
 }  // namespace
 
 bool reads_printed_formula(const std::string& claim_id) { return formula_claims().count(claim_id) > 0; }
 
+double ginac_derivation_seconds() { return detail::derivation().seconds; }
+
+std::size_t printed_formula_claim_count() { return formula_claims().size(); }
+
 claim_result check_claim(const claim& c, const run_context& ctx) {
   claim_result result = c.check(ctx);
   const auto it = formula_claims().find(c.id);
   if (!ctx.paper || it == formula_claims().end()) return result;
-  // The reader's symbols are shared: a copy of the reading keeps the parsed formulas and their symbols.
-  paper_reading reading = *ctx.paper;
-  symbolic_oscillator oscillator(reading.symbols);
+  const paper_reading& reading = *ctx.paper;
   const auto start = std::chrono::steady_clock::now();
-  const printed_outcome outcome = it->second.check(reading, oscillator);
+  const printed_outcome outcome = it->second.check(reading);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   json printed = json::array();
   for (const std::string& name : it->second.formulas) {
     const printed_formula& f = reading.at(name);
-    printed.push_back({{"label", f.source.locator}, {"line", f.source.line}, {"tex", folded(f.source.tex)},
-                       {"parsed", text_of(f.value)}});
+    json parsed = json::array();
+    for (const GiNaC::ex& side : f.sides) parsed.push_back(detail::text_of(side));
+    printed.push_back({{"label", f.source.locator}, {"line", f.source.line}, {"tex", folded(f.tex)},
+                       {"parsed", parsed}});
   }
   result.printed = {{"source", reading.origin}, {"formulas", printed}};
   result.evidence["kernels"] = {
-      {"own", "the claim's check above: our transcription, rational functions of theta with the grid lemma"},
-      {"ginac", {{"statement", outcome.proved}, {"holds", outcome.holds}}}};
+      {"own", {{"statement", "the claim's check above: our transcription, rational functions of theta with the grid lemma"},
+               {"derived_holds", result.outcome != verdict::fails}}},
+      {"ginac", {{"printed", outcome.proved}, {"printed_holds", outcome.holds}, {"derived", outcome.derived},
+                 {"derived_holds", outcome.derived_holds}}}};
   result.printed_seconds = seconds;
-  if (!outcome.holds) {
-    const bool was_holding = result.outcome == verdict::holds;
-    const verdict printed = outcome.property || outcome.correction.empty() ? verdict::fails : verdict::erratum;
-    // The weaker of the two: an own-kernel `fails` is never softened to an erratum.
-    result.outcome = result.outcome == verdict::fails ? verdict::fails : printed;
-    if (result.outcome == verdict::erratum && was_holding) result.correction = outcome.correction;
-    result.note = (was_holding ? "The formula as printed in the paper's source differs from the derived one: "
-                               : "Also, as printed: ") + outcome.proved + (result.note.empty() ? "" : " " + result.note);
-  }
+  decide(result, outcome, c.id);
   return result;
 }
 

@@ -5,14 +5,51 @@
 namespace simpson::verify {
 
 const std::vector<formula_location>& ledger_formulas() {
+  using k = formula_location::kind;
   static const std::vector<formula_location> formulas{
-      {"qm-oscillateur-harmonique", "qm-oscillateur-harmonique", ""},
-      {"Lagrangien-reduit", "Lagrangien-reduit", ""},
-      {"truncation-error", "", "one obtains without difficulty the relation"},
-      {"discriminant-factorized", "", "can be factorized"},
-      {"moment-ordre-3", "moment-ordre-3", ""},
-      {"Phi3", "Phi3", ""},
-      {"hamiltonien-discret", "hamiltonien-discret", ""},
+      // §2
+      {"S_d", k::anchored_display, "can be defined according to"},
+      {"lagrangien-discret", k::labelled, "lagrangien-discret"},
+      {"schema-ordre-deux", k::labelled, "schema-ordre-deux", 0, {0}},
+      {"oscillateur harmonique", k::labelled, "oscillateur harmonique"},
+      {"p_{j+1} (Newmark)", k::inline_formula, "p_{j+1} = m \\, {{q_{j+1} - q_j}\\over{h}}"},
+      {"systeme-dynamique-discret-ordre-2#0", k::labelled, "systeme-dynamique-discret-ordre-2", 0, {0, 1}},
+      {"systeme-dynamique-discret-ordre-2#1", k::labelled, "systeme-dynamique-discret-ordre-2", 1, {0, 1}},
+      {"matrice-symplectique-ordre-2", k::labelled, "matrice-symplectique-ordre-2"},
+      {"HH-exact", k::labelled, "HH-exact"},
+      // §3
+      {"dq/dt", k::anchored_display, "We have also", 0, {-2, -1}},
+      {"derivees-gear#0", k::labelled, "derivees-gear", 0},
+      {"derivees-gear#1", k::labelled, "derivees-gear", 1},
+      {"derivee-centree", k::labelled, "derivee-centree", 0, {-2, -1}},
+      // §4
+      {"LLhh", k::labelled, "LLhh"},
+      {"SSdd", k::labelled, "SSdd"},
+      // §5
+      {"dg_l/dq_m", k::inline_formula, "{{\\partial g_\\ell}\\over{\\partial q_m}} ="},
+      {"dg_m/dq_m", k::inline_formula, "{{\\partial g_m}\\over{\\partial q_m}} ="},
+      {"dg_r/dq_m", k::inline_formula, "{{\\partial g_r}\\over{\\partial q_m}} ="},
+      {"dL_h/dq_m", k::inline_formula, "{{\\partial L_h}\\over{\\partial q_m}} = {{h}\\over{12}}"},
+      {"g_r - g_l", k::inline_formula, "g_r - g_\\ell = {{4}\\over{h}}"},
+      {"equation-milieu-intervalle", k::labelled, "equation-milieu-intervalle", 0, {0}},
+      {"qm-oscillateur-harmonique", k::labelled, "qm-oscillateur-harmonique"},
+      {"stabilite", k::labelled, "stabilite", 0, {0, 1, 2}},
+      {"Lagrangien-reduit", k::labelled, "Lagrangien-reduit"},
+      {"schema-ordre-3", k::labelled, "schema-ordre-3", 0, {0}},
+      {"Taylor q_{j+1}", k::anchored_display, "at the precise points", 0},
+      {"Taylor q_{j-1}", k::anchored_display, "at the precise points", 1},
+      {"truncation-error", k::anchored_display, "one obtains without difficulty the relation"},
+      {"a", k::inline_formula, "a = 1 + {{h^2"},
+      {"b", k::inline_formula, "b = -{1\\over24}"},
+      {"discriminant-factorized", k::anchored_display, "can be factorized"},
+      // §6
+      {"moment-ordre-3", k::labelled, "moment-ordre-3"},
+      {"Phi3", k::labelled, "Phi3"},
+      // §7
+      {"Gamma", k::anchored_display, "must satisfy the following homogeneous linear system", 0, {1}},
+      {"det Gamma", k::inline_formula, "{\\rm det} \\, \\Gamma ="},
+      {"Q_c", k::inline_formula, "Q_c(p,\\, q) ="},
+      {"hamiltonien-discret", k::labelled, "hamiltonien-discret"},
   };
   return formulas;
 }
@@ -23,26 +60,53 @@ const printed_formula& paper_reading::at(const std::string& name) const {
   return it->second;
 }
 
+namespace {
+
+tex_display locate(const paper_source& paper, const formula_location& where) {
+  switch (where.where) {
+    case formula_location::kind::labelled: return find_labelled(paper, where.key);
+    case formula_location::kind::anchored_display: return find_anchored(paper, where.key);
+    case formula_location::kind::inline_formula: return find_inline(paper, where.key);
+  }
+  throw std::logic_error("locate: unknown kind");
+}
+
+printed_formula read_formula(const paper_source& paper, const formula_location& where) {
+  const tex_display display = locate(paper, where);
+  const std::string at = "paper '" + paper.origin + "', " + display.locator + " (line " + std::to_string(display.line) + ")";
+  const std::vector<std::string> equations = display_equations(display.tex);
+  if (where.equation >= static_cast<int>(equations.size())) {
+    throw std::invalid_argument(at + ": equation " + std::to_string(where.equation + 1) + " of the display is not there (it has " +
+                                std::to_string(equations.size()) + ")");
+  }
+  const std::string& tex = equations[static_cast<std::size_t>(where.equation)];
+  const std::vector<std::string> sides = relation_sides(tex);
+  if (sides.size() < 2) throw std::invalid_argument(at + ": no '=', '<' or '\\equiv' in the formula");
+  printed_formula f{where.name, display, tex, sides.front(), {}, {}};
+  for (const int wanted : where.sides) {
+    const int index = wanted < 0 ? static_cast<int>(sides.size()) + wanted : wanted;
+    if (index < 0 || index >= static_cast<int>(sides.size())) {
+      throw std::invalid_argument(at + ": the formula has " + std::to_string(sides.size()) + " sides, not " +
+                                  std::to_string(std::abs(wanted) + (wanted < 0 ? 0 : 1)));
+    }
+    try {
+      GiNaC::ex side = parse_tex_math(sides[static_cast<std::size_t>(index)], paper_symbols());
+      if (GiNaC::is_a<GiNaC::matrix>(side.evalm())) side = side.evalm();
+      f.sides.push_back(side);
+    } catch (const tex_parse_error& e) {
+      throw std::invalid_argument(at + ": cannot parse the formula: " + e.what());
+    }
+  }
+  f.value = f.sides.back();
+  return f;
+}
+
+}  // namespace
+
 paper_reading read_paper(const paper_source& paper) {
   paper_reading reading;
   reading.origin = paper.origin;
-  for (const formula_location& where : ledger_formulas()) {
-    const tex_display display = where.label.empty() ? find_anchored(paper, where.anchor) : find_labelled(paper, where.label);
-    const std::vector<std::string> sides = relation_sides(display.tex);
-    if (sides.size() < 2) {
-      throw std::invalid_argument("paper '" + paper.origin + "', " + display.locator + " (line " + std::to_string(display.line) +
-                                  "): no '=' or '\\equiv' in the formula");
-    }
-    printed_formula f{where.name, display, sides.front(), sides.back(), {}};
-    try {
-      f.value = parse_tex_math(f.rhs, reading.symbols);
-      if (GiNaC::is_a<GiNaC::matrix>(f.value.evalm())) f.value = f.value.evalm();
-    } catch (const tex_parse_error& e) {
-      throw std::invalid_argument("paper '" + paper.origin + "', " + display.locator + " (line " + std::to_string(display.line) +
-                                  "): cannot parse the formula: " + e.what());
-    }
-    reading.formulas.emplace(where.name, std::move(f));
-  }
+  for (const formula_location& where : ledger_formulas()) reading.formulas.emplace(where.name, read_formula(paper, where));
   return reading;
 }
 

@@ -29,6 +29,41 @@ tex_display display_from(const paper_source& paper, std::size_t from, const std:
   return {locator, line_of(paper.text, first), tex};
 }
 
+/// The first place at or after `from` where `needle` occurs, white space ignored on both sides
+/// (the source breaks lines where it likes); npos when none.
+std::size_t find_loose(const std::string& text, const std::string& needle, std::size_t from = 0) {
+  std::string key;
+  for (const char c : needle) {
+    if (!std::isspace(static_cast<unsigned char>(c))) key += c;
+  }
+  if (key.empty()) return std::string::npos;
+  for (std::size_t start = text.find(key[0], from); start != std::string::npos; start = text.find(key[0], start + 1)) {
+    std::size_t t = start, k = 0;
+    while (k < key.size() && t < text.size()) {
+      if (std::isspace(static_cast<unsigned char>(text[t]))) {
+        ++t;
+      } else if (text[t] == key[k]) {
+        ++t;
+        ++k;
+      } else {
+        break;
+      }
+    }
+    if (k == key.size()) return start;
+  }
+  return std::string::npos;
+}
+
+std::size_t anchor_position(const paper_source& paper, const std::string& anchor) {
+  const std::size_t at = find_loose(paper.text, anchor);
+  if (at == std::string::npos) {
+    throw std::invalid_argument("paper '" + paper.origin + "': the anchor '" + anchor + "' the ledger needs is not there");
+  }
+  return at;
+}
+
+bool is_dollar(const std::string& text, std::size_t k) { return text[k] == '$' && (k == 0 || text[k - 1] != '\\'); }
+
 }  // namespace
 
 std::string without_comments(const std::string& tex) {
@@ -73,10 +108,7 @@ tex_display find_labelled(const paper_source& paper, const std::string& label) {
 }
 
 tex_display find_anchored(const paper_source& paper, const std::string& anchor) {
-  const std::size_t at = paper.text.find(anchor);
-  if (at == std::string::npos) {
-    throw std::invalid_argument("paper '" + paper.origin + "': the anchor '" + anchor + "' the ledger needs is not there");
-  }
+  const std::size_t at = anchor_position(paper, anchor);
   static const char* starts[] = {"\\moneqstar", "\\moneq", "\\begin{equation"};
   std::size_t start = std::string::npos, length = 0;
   for (const char* s : starts) {
@@ -90,6 +122,34 @@ tex_display find_anchored(const paper_source& paper, const std::string& anchor) 
     throw std::invalid_argument("paper '" + paper.origin + "': no display after the anchor '" + anchor + "'");
   }
   return display_from(paper, start + length, "anchor '" + anchor + "'");
+}
+
+}  // namespace simpson::verify
+
+namespace simpson::verify {
+
+tex_display find_inline(const paper_source& paper, const std::string& anchor) {
+  const std::size_t at = anchor_position(paper, anchor);
+  std::size_t dollars = 0, last = std::string::npos;
+  for (std::size_t k = 0; k < at; ++k) {
+    if (is_dollar(paper.text, k)) {
+      ++dollars;
+      last = k;
+    }
+  }
+  std::size_t open = last;
+  if (dollars % 2 == 0) {  // the anchor is prose: the first inline formula after it
+    open = at;
+    while (open < paper.text.size() && !is_dollar(paper.text, open)) ++open;
+  }
+  std::size_t close = open + 1;
+  while (close < paper.text.size() && !is_dollar(paper.text, close)) ++close;
+  if (open >= paper.text.size() || close >= paper.text.size()) {
+    throw std::invalid_argument("paper '" + paper.origin + "': no inline formula at the anchor '" + anchor + "'");
+  }
+  std::string tex = paper.text.substr(open + 1, close - open - 1);
+  std::replace(tex.begin(), tex.end(), '\n', ' ');
+  return {"inline formula at '" + anchor + "'", line_of(paper.text, open), tex};
 }
 
 }  // namespace simpson::verify

@@ -13,6 +13,36 @@ const GiNaC::symbol& tex_symbols::operator[](const std::string& name) {
   return it->second;
 }
 
+tex_symbols& paper_symbols() {
+  static tex_symbols symbols;
+  return symbols;
+}
+
+const std::vector<std::string>& function_names() {
+  static const std::vector<std::string> names{"V", "L_d", "L_h", "H_d", "Q", "Q_c"};
+  return names;
+}
+
+GiNaC::ex apply_function(const std::string& name, const GiNaC::exvector& args) {
+  static std::map<std::pair<std::string, std::size_t>, unsigned> serials;
+  const auto key = std::make_pair(name, args.size());
+  auto it = serials.find(key);
+  if (it == serials.end()) {
+    it = serials.emplace(key, GiNaC::function::register_new(GiNaC::function_options(name, static_cast<unsigned>(args.size()))))
+             .first;
+  }
+  return GiNaC::function(it->second, args);
+}
+
+std::string derivative_name(const std::string& of, const std::string& by, int k, int n) {
+  const auto power = [](int e) { return e == 1 ? std::string() : "^" + std::to_string(e); };
+  return "d" + power(k) + of + "/d" + by + power(n);
+}
+
+bool is_sum(const GiNaC::ex& e) {
+  return GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "sum" && e.nops() == 4;
+}
+
 namespace {
 
 struct token {
@@ -181,7 +211,84 @@ class parser {
 
   GiNaC::ex symbol_with_subscript(std::string name) {
     if (accept("_")) name += "_" + subscript_text();
+    const auto& functions = function_names();
+    if (peek().text == "(" && std::find(functions.begin(), functions.end(), name) != functions.end()) {
+      return apply_function(name, arguments());
+    }
     return symbols_[name];
+  }
+
+  // ( a, b, ... ) after a function name.
+  GiNaC::exvector arguments() {
+    expect("(");
+    GiNaC::exvector args{expression()};
+    while (accept(",")) args.push_back(expression());
+    expect(")");
+    return args;
+  }
+
+  // A name in a derivative: a letter or a Greek letter, with its subscript.
+  std::string derivative_operand() {
+    const token t = next();
+    std::string name;
+    if (t.what == token::kind::character && std::isalpha(static_cast<unsigned char>(t.text[0]))) name = t.text;
+    else if (greek().count(t.text)) name = greek().at(t.text);
+    else fail("expected a name in the derivative");
+    if (accept("_")) name += "_" + subscript_text();
+    return name;
+  }
+
+  int derivative_order() {
+    if (!accept("^")) return 1;
+    const token t = next();
+    if (t.what != token::kind::character || !std::isdigit(static_cast<unsigned char>(t.text[0]))) fail("expected an order");
+    return t.text[0] - '0';
+  }
+
+  // After the outer '{': {\dd^k x}\over{\dd t^n}} (or \partial). Only when the group starts so;
+  // otherwise nothing is consumed.
+  bool starts_derivative() {
+    const std::size_t saved = at_;
+    const bool is = accept("{") && (peek().text == "\\dd" || peek().text == "\\partial");
+    at_ = saved;
+    return is;
+  }
+  GiNaC::ex derivative() {
+    expect("{");
+    next();  // \dd or \partial
+    const int k = derivative_order();
+    const std::string of = derivative_operand();
+    expect("}");
+    expect("\\over");
+    expect("{");
+    if (!accept("\\dd") && !accept("\\partial")) fail("expected \\dd in the denominator of a derivative");
+    const std::string by = derivative_operand();
+    const int n = derivative_order();
+    expect("}");
+    expect("}");
+    const auto& functions = function_names();
+    if (std::find(functions.begin(), functions.end(), of) != functions.end()) {
+      if (k != n) fail("derivative of " + of + " of order " + std::to_string(k) + " over d" + by + "^" + std::to_string(n));
+      const GiNaC::exvector args = arguments();
+      if (args.size() != 1) fail("a derivative of a function of one argument");
+      const GiNaC::symbol x("derivative_variable");
+      return GiNaC::diff(apply_function(of, {x}), x, static_cast<unsigned>(k)).subs(x == args.front());
+    }
+    return symbols_[derivative_name(of, by, k, n)];
+  }
+
+  // \sum_{j=a}^{b} s: the summand is the product that follows.
+  GiNaC::ex sum() {
+    expect("_");
+    expect("{");
+    const GiNaC::ex index = symbols_[derivative_operand()];
+    expect("=");
+    const GiNaC::ex lower = expression();
+    expect("}");
+    expect("^");
+    const GiNaC::ex upper = script();
+    const GiNaC::ex summand = product();
+    return apply_function("sum", {summand, index, lower, upper});
   }
 
   GiNaC::ex atom() {
@@ -213,6 +320,7 @@ class parser {
         }
         return symbols_[name];
       }
+      if (c == '{' && starts_derivative()) return derivative();
       if (c == '{') {
         GiNaC::ex e = group_body();
         expect("}");
@@ -238,6 +346,7 @@ class parser {
       return GiNaC::sqrt(e);
     }
     if (t.text == "\\begin") return matrix_environment();
+    if (t.text == "\\sum") return sum();
     --at_;
     fail("unsupported token");
   }
@@ -319,6 +428,98 @@ std::vector<std::string> relation_sides(const std::string& tex) {
   return sides;
 }
 
+namespace {
+
+/// `tex` without \vspace{...} and \vspace*{...}.
+std::string without_vspace(std::string tex) {
+  for (std::size_t at; (at = tex.find("\\vspace")) != std::string::npos;) {
+    const std::size_t close = tex.find('}', at);
+    tex.erase(at, close == std::string::npos ? std::string::npos : close + 1 - at);
+  }
+  return tex;
+}
+
+/// True when `tex` holds nothing but spacing commands and white space.
+bool only_spacing(const std::string& tex) {
+  std::size_t k = 0;
+  while (k < tex.size()) {
+    if (std::isspace(static_cast<unsigned char>(tex[k]))) {
+      ++k;
+    } else if (tex[k] == '\\' && k + 1 < tex.size() && std::string(",;!: ").find(tex[k + 1]) != std::string::npos) {
+      k += 2;
+    } else if (tex.compare(k, 6, "\\quad") == 0) {
+      k += 5;
+    } else if (tex.compare(k, 13, "\\displaystyle") == 0) {
+      k += 13;
+    } else {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// `tex` with leading spacing commands removed.
+std::string trimmed(const std::string& tex) {
+  std::size_t k = 0;
+  for (;;) {
+    while (k < tex.size() && std::isspace(static_cast<unsigned char>(tex[k]))) ++k;
+    std::size_t next = k;
+    for (const char* s : {"\\displaystyle", "\\quad", "\\,", "\\;", "\\!", "\\left\\{"}) {
+      if (tex.compare(k, std::string(s).size(), s) == 0) next = k + std::string(s).size();
+    }
+    if (next == k) return tex.substr(k);
+    k = next;
+  }
+}
+
+/// Splits at `separator` where it is outside every group; escaped braces \{ \} are not groups.
+std::vector<std::string> split_top_level(const std::string& tex, const std::string& separator) {
+  std::vector<std::string> parts(1);
+  int depth = 0;
+  for (std::size_t k = 0; k < tex.size(); ++k) {
+    const char c = tex[k];
+    if (c == '\\' && k + 1 < tex.size() && !(depth == 0 && tex.compare(k, separator.size(), separator) == 0)) {
+      parts.back() += tex.substr(k, 2);  // \, \{ \} and the first letter of a command are never separators or groups
+      ++k;
+      continue;
+    }
+    if (c == '{' || c == '(' || c == '[') ++depth;
+    if (c == '}' || c == ')' || c == ']') --depth;
+    if (depth == 0 && tex.compare(k, separator.size(), separator) == 0) {
+      parts.emplace_back();
+      k += separator.size() - 1;
+      continue;
+    }
+    parts.back() += c;
+  }
+  return parts;
+}
+
+}  // namespace
+
+std::vector<std::string> display_equations(const std::string& display) {
+  const std::string tex = trimmed(without_vspace(display));
+  std::vector<std::string> equations;
+  if (tex.compare(0, 13, "\\begin{array}") == 0) {
+    const std::size_t body = tex.find('}', 13);  // the end of the column specification
+    const std::size_t end = tex.rfind("\\end{array}");
+    const std::string rows = tex.substr(body + 1, end == std::string::npos ? std::string::npos : end - body - 1);
+    for (const std::string& row : split_top_level(rows, "\\\\")) {
+      if (only_spacing(row)) continue;
+      if (!equations.empty() && trimmed(row).compare(0, 1, "=") == 0) {
+        equations.back() += " " + row;  // "\quad = ..." continues the equation above
+      } else {
+        equations.push_back(row);
+      }
+    }
+    return equations;
+  }
+  for (const std::string& part : split_top_level(tex, ",")) {
+    if (!only_spacing(part) && trimmed(part) != ".") equations.push_back(part);
+  }
+  return equations;
+}
+
 GiNaC::ex parse_tex_math(const std::string& tex, tex_symbols& symbols) { return parser(tex, symbols).parse_all(); }
 
 namespace {
@@ -374,9 +575,37 @@ std::string polynomial_text(const GiNaC::ex& poly, const std::vector<GiNaC::symb
   return out.empty() ? "0" : out;
 }
 
+/// Every function application (V(x), D[0](V)(x), Order(h^6), sum(...)) replaced by a symbol named
+/// by its canonical text, so that its arguments print in name order and equal applications are one
+/// symbol: GiNaC orders the terms of an argument by serial numbers, which depend on the process.
+struct functions_as_symbols : GiNaC::map_function {
+  std::map<std::string, GiNaC::symbol> named;
+  GiNaC::ex operator()(const GiNaC::ex& e) override {
+    if (!GiNaC::is_a<GiNaC::function>(e) && !GiNaC::is_a<GiNaC::fderivative>(e)) return e.map(*this);
+    GiNaC::ex shape = e;
+    std::vector<std::string> arguments;
+    for (std::size_t k = 0; k < e.nops(); ++k) {
+      arguments.push_back(canonical_text(e.op(k)));
+      shape.let_op(k) = GiNaC::symbol("#" + std::to_string(k) + "#");
+    }
+    std::ostringstream out;
+    out << shape;
+    std::string name = out.str();
+    for (std::size_t k = 0; k < arguments.size(); ++k) {
+      const std::string mark = "#" + std::to_string(k) + "#";
+      for (std::size_t at; (at = name.find(mark)) != std::string::npos;) name.replace(at, mark.size(), arguments[k]);
+    }
+    auto it = named.find(name);
+    if (it == named.end()) it = named.emplace(name, GiNaC::symbol(name)).first;
+    return it->second;
+  }
+};
+
 }  // namespace
 
-std::string canonical_text(const GiNaC::ex& e) {
+std::string canonical_text(const GiNaC::ex& given) {
+  functions_as_symbols rename;
+  const GiNaC::ex e = rename(given);
   if (GiNaC::is_a<GiNaC::matrix>(e)) {
     const GiNaC::matrix& m = GiNaC::ex_to<GiNaC::matrix>(e);
     std::string out = "[";

@@ -24,6 +24,7 @@ struct run_record {
   scene run_scene;
   std::string paper_origin;  // the paper's source the formula claims read
   std::vector<claim_outcome> outcomes;
+  double ginac_derivation_seconds = 0;  // the GiNaC derivation the formula claims share, once per process (0 when none ran)
   json paper_configuration;
   json environment;
   std::vector<section_result> sections;  // the experiment sections the scene asked for, in order

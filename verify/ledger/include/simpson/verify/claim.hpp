@@ -13,14 +13,16 @@
 namespace simpson::verify {
 
 /// holds: true as printed; erratum: false as printed, with a proved correction; fails: false,
-/// no correction found.
-enum class verdict { holds, erratum, fails };
+/// no correction found; kernels-disagree: the two exact kernels reached different conclusions on
+/// the derived statement (a bug in one of them, never expected).
+enum class verdict { holds, erratum, fails, kernels_disagree };
 
 inline std::string to_string(verdict v) {
   switch (v) {
     case verdict::holds: return "holds";
     case verdict::erratum: return "erratum";
     case verdict::fails: return "fails";
+    case verdict::kernels_disagree: return "kernels-disagree";
   }
   return "?";
 }

@@ -1,13 +1,14 @@
 #pragma once
 // The claims whose statement is a formula take their printed side from the paper's source (the
 // paper layer's reader) and compare it, in GiNaC, with the side our core derives, for symbolic m,
-// ω, h, q_ℓ, q_r, p, q: no scaling reduction and no sampling. The claim's own check (our kernel,
-// on our transcription) and this one must both hold; a printed formula that differs from the
-// derived one makes the claim an erratum (the derived formula is its correction), and a printed
-// property that fails (det Φ₃ ≠ 1, H_d not conserved) makes it fail.
+// ω, h, q_ℓ, q_r, p, q (and V uninterpreted): no scaling reduction and no sampling. The claim's own
+// check (our kernel) and GiNaC must agree on the derived statement; a printed formula that differs
+// from the derived one makes the claim an erratum (the derived formula is its correction), and a
+// printed property that fails (det Φ₃ ≠ 1, H_d not conserved) makes it fail.
 
 #include <simpson/verify/claim.hpp>
 
+#include <cstddef>
 #include <string>
 
 namespace simpson::verify {
@@ -15,8 +16,15 @@ namespace simpson::verify {
 /// True when `claim_id` reads its formula from the paper.
 bool reads_printed_formula(const std::string& claim_id);
 
+/// Seconds the GiNaC derivation from first principles took (performed once per process, on first use).
+double ginac_derivation_seconds();
+
+/// How many claims read a formula from the paper.
+std::size_t printed_formula_claim_count();
+
 /// Runs the claim's check, then, when the run has a paper and the claim reads a formula, the
-/// printed-against-derived check; the verdict is the weaker of the two.
+/// GiNaC check. Both kernels must prove the derived statement (else kernels-disagree); the printed
+/// side then decides holds, erratum or fails.
 claim_result check_claim(const claim& c, const run_context& ctx);
 
 }  // namespace simpson::verify

@@ -15,18 +15,23 @@
 namespace simpson::verify {
 
 struct printed_formula {
-  std::string name;    // the paper's label, or the name given to an unlabelled display
-  tex_display source;  // where it was read
-  std::string lhs;     // the TeX of the defined side ("p_r", "{\Phi}_3")
-  std::string rhs;     // the TeX parsed
-  GiNaC::ex value;     // the parsed right side (a GiNaC matrix for Φ₃)
+  std::string name;    // the paper's label (with "#k" for its k-th equation), or a name for an unlabelled one
+  tex_display source;  // where it was read (the whole display)
+  std::string tex;     // the equation read, when the display holds several
+  std::string lhs;     // the TeX of the first side ("p_r", "{\Phi}_3")
+  std::vector<GiNaC::ex> sides;  // the sides parsed, in the order of formula_location::sides
+  GiNaC::ex value;     // the last of them (a GiNaC matrix for Φ₃)
 };
 
-/// Where a formula is, in the paper: a \label, or an anchor in the prose before an unlabelled display.
+/// Where a formula is, in the paper: a \label, or an anchor (in the prose before an unlabelled
+/// display, or in an inline formula); which equation of the display; which of its sides to parse.
 struct formula_location {
+  enum class kind { labelled, anchored_display, inline_formula };
   std::string name;
-  std::string label;   // empty when anchored
-  std::string anchor;
+  kind where = kind::labelled;
+  std::string key;               // the label or the anchor
+  int equation = 0;              // of display_equations(), 0-based
+  std::vector<int> sides{-1};    // indices of relation_sides(); negative counts from the end
 };
 
 /// The formulas the ledger reads, in the order of the paper.
@@ -34,14 +39,13 @@ const std::vector<formula_location>& ledger_formulas();
 
 struct paper_reading {
   std::string origin;  // "embedded" or the file read
-  tex_symbols symbols; // m, omega, h, q_l, q_r, p, q: shared with the derived formulas
   std::map<std::string, printed_formula> formulas;
   const printed_formula& at(const std::string& name) const;
 };
 
-/// Reads every formula of ledger_formulas() from the paper. Throws std::invalid_argument with one
-/// line naming the paper, the label (or anchor), the line and the token when one is missing or
-/// does not parse.
+/// Reads every formula of ledger_formulas() from the paper, in paper_symbols(). Throws
+/// std::invalid_argument with one line naming the paper, the label (or anchor), the line and the
+/// token when one is missing or does not parse.
 paper_reading read_paper(const paper_source& paper);
 
 }  // namespace simpson::verify

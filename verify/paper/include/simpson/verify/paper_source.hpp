@@ -31,9 +31,14 @@ paper_source load_paper(const std::string& path);
 /// when there is none.
 tex_display find_labelled(const paper_source& paper, const std::string& label);
 
-/// The first display after the prose `anchor`. Throws std::invalid_argument when the anchor or a
+/// The first display after the prose `anchor` (white space in it matches any white space). Throws std::invalid_argument when the anchor or a
 /// display after it is missing.
 tex_display find_anchored(const paper_source& paper, const std::string& anchor);
+
+/// The inline formula ($...$) that contains the anchor, or, when the anchor is prose, the first one
+/// after it. White space in the anchor matches any white space in the text. Throws
+/// std::invalid_argument when the anchor or the formula is missing.
+tex_display find_inline(const paper_source& paper, const std::string& anchor);
 
 /// The source with every comment (from an unescaped % to the end of its line) blanked out.
 std::string without_comments(const std::string& tex);

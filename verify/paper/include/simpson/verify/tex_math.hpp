@@ -6,8 +6,10 @@
 // \Phi_3); implicit products, + and −, \cdot; ^ with TeX's one-token argument (h^24 is h²·4);
 // {a \over b} and \frac{a}{b}; \sqrt{a}; ( ) [ ] and { } groups with \big \Big \left \right and
 // friends; spacing (\, \! \; \quad) and \displaystyle ignored; array and pmatrix matrices; the
-// relations =, \equiv and <, of which the last side is the formula. Anything else is an error
-// naming the token.
+// relations =, \equiv and <; derivatives {{\dd^k q}\over{\dd t^n}} (a symbol named d^kq/dt^n, so
+// that a misprinted order stays visible) and {{\dd V}\over{\dd q}}(x) (the derivative of an
+// uninterpreted function at x); function application V(x), L_d(a, b) for the names of
+// function_names(); \sum_{j=a}^{b} s as sum(s, j, a, b). Anything else is an error naming the token.
 
 #include <ginac/ginac.h>
 
@@ -27,6 +29,29 @@ class tex_symbols {
  private:
   std::map<std::string, GiNaC::symbol> symbols_;
 };
+
+/// The one table of the paper's symbols in this process: every reading of every copy of the paper,
+/// and every derivation, use it, so that a name is one symbol everywhere.
+tex_symbols& paper_symbols();
+
+/// The names the reader applies as functions when followed by parentheses: V, L_d, L_h, H_d, Q, Q_c.
+const std::vector<std::string>& function_names();
+
+/// The uninterpreted function `name` of `args.size()` arguments applied to `args` (GiNaC
+/// differentiates it to D[k](name)(args)). One function per name and arity in the process.
+GiNaC::ex apply_function(const std::string& name, const GiNaC::exvector& args);
+
+/// The symbol the reader makes of {{\dd^k x}\over{\dd t^n}}: "dq/dt", "d^2q/dt^2", and for a
+/// misprint such as k = 6, n = 5, "d^6q/dt^5".
+std::string derivative_name(const std::string& of, const std::string& by, int k, int n);
+
+/// \sum_{j=a}^{b} s as read: sum(s, j, a, b).
+bool is_sum(const GiNaC::ex& e);
+
+/// The equations of a display: an array's rows (a row that starts with '=' continues the one
+/// before it; rows of spacing only are dropped), or the parts separated by top-level commas
+/// ("g_l = ... \,,\,\, g_r = ..."). \vspace is dropped.
+std::vector<std::string> display_equations(const std::string& tex);
 
 /// A formula the reader could not parse: the offending token and its offset in the TeX.
 class tex_parse_error : public std::invalid_argument {

@@ -1,0 +1,75 @@
+#pragma once
+// What the GiNaC kernel checks for one claim whose statement is a formula: the printed side read
+// from the paper against the side derived from first principles (symbolic_derivation), and the
+// core's formula against the same derived side. Helpers shared by the per-section tables.
+
+#include "symbolic_derivation.hpp"
+
+#include <simpson/verify/paper_reading.hpp>
+
+#include <ginac/ginac.h>
+
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace simpson::verify::detail {
+
+/// What the GiNaC kernel found for one claim.
+struct printed_outcome {
+  bool holds = false;         // the printed formula is the derived one, or its printed property holds
+  bool property = false;      // a property of the printed formula (det = 1, conservation): fails, not erratum
+  std::string proved;         // what was shown of the printed side, in words and formulas
+  std::string correction;     // the derived formula, when the printed one differs
+  bool derived_holds = true;  // the derived statement holds and the core's formula is the derived one
+  std::string derived;        // what was shown of the derived side
+};
+
+using printed_check = std::function<printed_outcome(const paper_reading&)>;
+
+struct formula_claim {
+  std::vector<std::string> formulas;  // the printed formulas the claim reads (names of ledger_formulas())
+  printed_check check;
+};
+
+using formula_claim_table = std::map<std::string, formula_claim>;
+
+void add_printed_checks_section2_4(formula_claim_table& claims);
+void add_printed_checks_section5(formula_claim_table& claims);
+void add_printed_checks_section6_7(formula_claim_table& claims);
+
+// ---- helpers ----
+
+std::string text_of(const GiNaC::ex& e);
+
+/// normal(a − b), entry by entry for matrices.
+GiNaC::ex normal_difference(const GiNaC::ex& a, const GiNaC::ex& b);
+bool is_zero_expression(const GiNaC::ex& e);
+
+/// The printed side `side` (index into formula_location::sides) of formula `name`.
+const GiNaC::ex& printed_side(const paper_reading& r, const std::string& name, std::size_t side = 0);
+
+/// printed − derived = 0 decides holds (else erratum, the derived one its correction), and
+/// core − derived = 0 decides derived_holds.
+printed_outcome compare(const std::string& what, const GiNaC::ex& printed, const GiNaC::ex& derived, const GiNaC::ex& core);
+
+/// The derived side alone: core − derived = 0.
+void compare_core(printed_outcome& o, const std::string& what, const GiNaC::ex& derived, const GiNaC::ex& core);
+
+/// Two equations E₁ = 0 and E₂ = 0 are the same when E₂/E₁ is a nonzero factor free of the
+/// unknowns (checked by differentiating the normal form). Returns the factor, or nothing.
+std::optional<GiNaC::ex> equation_factor(const GiNaC::ex& e1, const GiNaC::ex& e2, const std::vector<GiNaC::ex>& unknowns);
+
+/// Merges two outcomes of the same claim: holds when both hold; texts joined.
+printed_outcome both(const printed_outcome& a, const printed_outcome& b);
+
+/// T_h(q_j) of the derived scheme, normalised as `normalised_like` (a scheme whose q_{j+1}
+/// coefficient fixes the scale, the core's (schema-ordre-3)), on the exact solution, to O(h^order).
+GiNaC::ex truncation_series(const symbolic_derivation& d, const GiNaC::ex& normalised_like, int order);
+
+/// V′ as a function of the point, for the core's templates: x ↦ D[0](V)(x).
+GiNaC::ex general_force(const GiNaC::ex& x);
+
+}  // namespace simpson::verify::detail

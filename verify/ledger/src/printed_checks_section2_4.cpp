@@ -1,0 +1,183 @@
+// §2–4 as printed: the discrete action's range, L_d and its scheme, Newmark's momentum, system,
+// matrix and energy; the Gear derivatives and the interpolant's velocity; Simpson's L_h.
+
+#include "printed_check_support.hpp"
+
+#include <simpson/classical_lagrangian.hpp>
+#include <simpson/energy.hpp>
+#include <simpson/newmark_map.hpp>
+#include <simpson/quadratic_interpolation.hpp>
+#include <simpson/simpson_lagrangian.hpp>
+
+namespace simpson::verify::detail {
+namespace {
+
+using GiNaC::ex;
+
+ex sym(const std::string& name) { return paper_symbols()[name]; }
+
+oscillator_parameters<ex> parameters(const symbolic_derivation& d) { return {d.m, d.omega, d.h}; }
+
+GiNaC::matrix as_matrix(const one_step_matrix<ex>& phi) { return GiNaC::matrix{{phi.alpha, phi.beta}, {phi.gamma, phi.delta}}; }
+
+/// S_d and Σ_d: N elements [t_j, t_{j+1}] of [0, T] are j = 0 … N − 1, so the sum runs over them.
+printed_outcome action_range(const paper_reading& r, const std::string& name, const std::string& what) {
+  const ex& sum = printed_side(r, name);
+  printed_outcome o;
+  o.derived = "the elements [t_j, t_{j+1}] inside [0, T = N h] are j = 0, ..., N-1: N terms";
+  if (!is_sum(sum)) {
+    o.proved = "the printed " + what + " is not a sum: " + text_of(sum);
+    return o;
+  }
+  const ex lower = sum.op(2), upper = sum.op(3), N = sym("N");
+  const ex terms = GiNaC::normal(upper - lower + 1);
+  o.holds = GiNaC::normal(lower).is_zero() && GiNaC::normal(upper - (N - 1)).is_zero();
+  o.proved = "printed " + what + " sums j = " + text_of(lower) + ", ..., " + text_of(upper) + ": " + text_of(terms) +
+             " terms for N elements";
+  if (!o.holds) o.correction = what + " = sum_{j=0}^{N-1} " + text_of(sum.op(0)) + ": N elements give N terms";
+  return o;
+}
+
+printed_outcome classical_euler_lagrange(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  const potential_function V = [&d](const ex& x) { return d.general_V(x); };
+  // L_d as printed against L_d derived (affine interpolant, midpoint rule), V uninterpreted.
+  const ex derived_L = d.classical_lagrangian(V, d.q_l, d.q_r);
+  printed_outcome o = compare("L_d", printed_side(r, "lagrangien-discret"), derived_L,
+                              classical_lagrangian(d.m, d.h, V, d.q_l, d.q_r));
+  // The printed scheme against the Euler-Lagrange equation of the printed L_d.
+  const GiNaC::symbol& l = GiNaC::ex_to<GiNaC::symbol>(d.q_l);
+  const GiNaC::symbol& rr = GiNaC::ex_to<GiNaC::symbol>(d.q_r);
+  const auto euler_lagrange_of = [&](const ex& L) {
+    return L.diff(rr).subs(GiNaC::lst{d.q_l == d.q_prev, d.q_r == d.q_j}) + L.diff(l).subs(GiNaC::lst{d.q_l == d.q_j, d.q_r == d.q_next});
+  };
+  const ex euler_lagrange = euler_lagrange_of(printed_side(r, "lagrangien-discret"));
+  const auto factor = equation_factor(printed_side(r, "schema-ordre-deux"), euler_lagrange, {d.q_prev, d.q_j, d.q_next});
+  printed_outcome scheme;
+  scheme.holds = factor.has_value();
+  scheme.proved = factor ? "dL_d/dq_r(q_{j-1}, q_j) + dL_d/dq_l(q_j, q_{j+1}) of the printed L_d = (" + text_of(*factor) +
+                               ") x printed (schema-ordre-deux), V uninterpreted"
+                         : "the Euler-Lagrange equation of the printed L_d is not a multiple of the printed (schema-ordre-deux)";
+  if (!scheme.holds) scheme.correction = "as derived: " + text_of(euler_lagrange) + " = 0";
+  const auto core = equation_factor(classical_scheme_residual(d.m, d.h, general_force, d.q_prev, d.q_j, d.q_next),
+                                    euler_lagrange_of(derived_L), {d.q_prev, d.q_j, d.q_next});
+  scheme.derived_holds = core.has_value();
+  scheme.derived = core ? "core classical_scheme_residual = derived Euler-Lagrange equation / (" + text_of(*core) + ")"
+                        : "core classical_scheme_residual is not the derived Euler-Lagrange equation";
+  return both(o, scheme);
+}
+
+printed_outcome newmark_momentum(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  const auto par = parameters(d);
+  return compare("p_{j+1}", printed_side(r, "p_{j+1} (Newmark)"), d.classical_momentum_right,
+                 classical_momentum(d.m, d.h, [&par](const ex& x) { return par.force_gradient(x); }, d.q_j, d.q_next));
+}
+
+printed_outcome newmark_system(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  // p_{j+1} = dL_d/dq_r (q_j, q_{j+1}) and p_j = -dL_d/dq_l (q_j, q_{j+1}), as derived.
+  const GiNaC::lst momenta{d.p_next == d.classical_momentum_right, d.p_j == d.classical_momentum_left};
+  printed_outcome o;
+  o.holds = true;
+  for (const char* name : {"systeme-dynamique-discret-ordre-2#0", "systeme-dynamique-discret-ordre-2#1"}) {
+    const ex gap = GiNaC::normal((printed_side(r, name, 0) - printed_side(r, name, 1)).subs(momenta));
+    o.holds = o.holds && gap.is_zero();
+    o.proved += std::string(o.proved.empty() ? "" : "; ") + "printed " + name + ", left − right with the derived momenta = " + text_of(gap);
+  }
+  if (!o.holds) o.correction = "as derived: p_{j+1} = " + text_of(d.classical_momentum_right) + ", p_j = " + text_of(d.classical_momentum_left);
+  o.derived = "the momenta are derived from L_d (no core formula to compare)";
+  return o;
+}
+
+printed_outcome newmark_matrix(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  return compare("Phi", printed_side(r, "matrice-symplectique-ordre-2"), d.newmark_phi, as_matrix(newmark_map(parameters(d))));
+}
+
+printed_outcome newmark_det(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  const ex& phi = printed_side(r, "matrice-symplectique-ordre-2");
+  printed_outcome o;
+  o.property = true;
+  if (!GiNaC::is_a<GiNaC::matrix>(phi)) {
+    o.proved = "the printed Phi is not a matrix";
+    return o;
+  }
+  const ex det = GiNaC::normal(GiNaC::ex_to<GiNaC::matrix>(phi).determinant() - 1);
+  o.holds = det.is_zero();
+  o.proved = "det(printed Phi) − 1 = " + text_of(det);
+  const ex derived_det = GiNaC::normal(d.newmark_phi.determinant() - 1);
+  o.derived_holds = derived_det.is_zero();
+  o.derived = "det(derived Phi) − 1 = " + text_of(derived_det);
+  return o;
+}
+
+printed_outcome newmark_energy(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  const ex H = printed_side(r, "HH-exact");
+  const ex& phi_printed = printed_side(r, "matrice-symplectique-ordre-2");
+  printed_outcome o = compare("H_j", H, d.p_j * d.p_j / (2 * d.m) + d.harmonic_V(d.q_j),
+                              energy(parameters(d), phase_point<ex>{d.p_j, d.q_j}));
+  if (!GiNaC::is_a<GiNaC::matrix>(phi_printed)) return o;
+  const GiNaC::matrix& phi = GiNaC::ex_to<GiNaC::matrix>(phi_printed);
+  const ex change = GiNaC::normal(
+      H.subs(GiNaC::lst{d.p_j == phi(0, 0) * d.p_j + phi(0, 1) * d.q_j, d.q_j == phi(1, 0) * d.p_j + phi(1, 1) * d.q_j}) - H);
+  o.property = !change.is_zero() && o.holds;
+  o.holds = o.holds && change.is_zero();
+  o.proved += "; printed H_j(printed Phi y) − H_j(y) = " + text_of(change);
+  return o;
+}
+
+/// The printed formula with g_l, g_m, g_r replaced by the derived Gear values.
+ex with_gear(const ex& e, const symbolic_derivation& d) {
+  return e.subs(GiNaC::lst{sym("g_l") == d.g_l, sym("g_m") == d.g_m, sym("g_r") == d.g_r});
+}
+
+printed_outcome gear_derivatives(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  return both(compare("g_l", printed_side(r, "derivees-gear#0"), d.g_l, gear_left(d.q_l, d.q_m, d.q_r, d.h)),
+              compare("g_r", printed_side(r, "derivees-gear#1"), d.g_r, gear_right(d.q_l, d.q_m, d.q_r, d.h)));
+}
+
+printed_outcome centred_derivative_check(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  const ex core = centred_derivative(d.q_l, d.q_r, d.h);
+  return both(compare("(g_l + g_r)/2", with_gear(printed_side(r, "derivee-centree", 0), d), d.g_m, core),
+              compare("g_m", printed_side(r, "derivee-centree", 1), d.g_m, core));
+}
+
+printed_outcome interpolant_derivative(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  // dq/dt at t = h theta, for symbolic h.
+  const ex derived = GiNaC::normal(d.velocity.subs(d.t == d.h * d.theta));
+  const ex core = quadratic_interpolant_derivative(d.q_l, d.q_m, d.q_r, d.h, d.theta);
+  return both(compare("dq/dt", printed_side(r, "dq/dt", 0), derived, core),
+              compare("g_l (1 - theta) + g_r theta", with_gear(printed_side(r, "dq/dt", 1), d), derived, core));
+}
+
+printed_outcome simpson_lagrangian_check(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  const potential_function V = [&d](const ex& x) { return d.general_V(x); };
+  return compare("L_h", with_gear(printed_side(r, "LLhh"), d), d.simpson_lagrangian(V),
+                 simpson_lagrangian(d.m, d.h, V, d.q_l, d.q_m, d.q_r));
+}
+
+}  // namespace
+
+void add_printed_checks_section2_4(formula_claim_table& claims) {
+  claims["classical-action-range"] = {{"S_d"}, [](const paper_reading& r) { return action_range(r, "S_d", "S_d"); }};
+  claims["classical-euler-lagrange"] = {{"lagrangien-discret", "schema-ordre-deux"}, classical_euler_lagrange};
+  claims["newmark-momentum"] = {{"p_{j+1} (Newmark)"}, newmark_momentum};
+  claims["newmark-discrete-system"] = {{"systeme-dynamique-discret-ordre-2#0", "systeme-dynamique-discret-ordre-2#1"}, newmark_system};
+  claims["newmark-matrix"] = {{"matrice-symplectique-ordre-2"}, newmark_matrix};
+  claims["newmark-det"] = {{"matrice-symplectique-ordre-2"}, newmark_det};
+  claims["newmark-energy"] = {{"HH-exact", "matrice-symplectique-ordre-2"}, newmark_energy};
+  claims["gear-derivatives"] = {{"derivees-gear#0", "derivees-gear#1"}, gear_derivatives};
+  claims["centred-derivative"] = {{"derivee-centree"}, centred_derivative_check};
+  claims["interpolant-derivative"] = {{"dq/dt"}, interpolant_derivative};
+  claims["simpson-lagrangian"] = {{"LLhh"}, simpson_lagrangian_check};
+  claims["simpson-action-range"] = {{"SSdd"}, [](const paper_reading& r) { return action_range(r, "SSdd", "Sigma_d"); }};
+}
+
+}  // namespace simpson::verify::detail

@@ -1,0 +1,241 @@
+// §5 as printed: the partial derivatives in q_m, the internal equation, q_m, the stability bound,
+// L_hʳ, the three-term scheme, the Taylor display, the truncation error, the characteristic
+// equation and the discriminant.
+
+#include "printed_check_support.hpp"
+
+#include <simpson/internal_node.hpp>
+#include <simpson/quadratic_interpolation.hpp>
+#include <simpson/reduced_lagrangian.hpp>
+#include <simpson/simpson_lagrangian.hpp>
+#include <simpson/three_term_scheme.hpp>
+
+namespace simpson::verify::detail {
+namespace {
+
+using GiNaC::ex;
+
+ex sym(const std::string& name) { return paper_symbols()[name]; }
+
+oscillator_parameters<ex> parameters(const symbolic_derivation& d) { return {d.m, d.omega, d.h}; }
+
+ex with_gear(const ex& e, const symbolic_derivation& d) {
+  return e.subs(GiNaC::lst{sym("g_l") == d.g_l, sym("g_m") == d.g_m, sym("g_r") == d.g_r});
+}
+
+const GiNaC::symbol& as_symbol(const ex& e) { return GiNaC::ex_to<GiNaC::symbol>(e); }
+
+printed_outcome gear_partials(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  const GiNaC::symbol& qm = as_symbol(d.q_m);
+  return both(both(compare("dg_l/dq_m", printed_side(r, "dg_l/dq_m"), d.g_l.diff(qm), gear_left(d.q_l, d.q_m, d.q_r, d.h).diff(qm)),
+                   compare("dg_m/dq_m", printed_side(r, "dg_m/dq_m"), d.g_m.diff(qm), centred_derivative(d.q_l, d.q_r, d.h).diff(qm))),
+              compare("dg_r/dq_m", printed_side(r, "dg_r/dq_m"), d.g_r.diff(qm), gear_right(d.q_l, d.q_m, d.q_r, d.h).diff(qm)));
+}
+
+printed_outcome lh_dqm(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  return compare("dL_h/dq_m", with_gear(printed_side(r, "dL_h/dq_m"), d), d.lh_dqm,
+                 simpson_lagrangian_dq_mid(d.m, d.h, general_force, d.q_l, d.q_m, d.q_r));
+}
+
+printed_outcome gr_minus_gl(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  return compare("g_r - g_l", printed_side(r, "g_r - g_l"), d.g_r - d.g_l,
+                 gear_right(d.q_l, d.q_m, d.q_r, d.h) - gear_left(d.q_l, d.q_m, d.q_r, d.h));
+}
+
+/// An equation E = 0 as printed against the derived one: the same when their ratio is free of the unknowns.
+printed_outcome same_equation(const std::string& what, const ex& printed, const ex& derived, const ex& core,
+                              const std::vector<ex>& unknowns) {
+  printed_outcome o;
+  const auto factor = equation_factor(printed, derived, unknowns);
+  o.holds = factor.has_value();
+  o.proved = factor ? "derived " + what + " = (" + text_of(*factor) + ") x printed " + what
+                    : "printed " + what + " is not a multiple of the derived one";
+  if (!o.holds) o.correction = "as derived: " + text_of(derived) + " = 0";
+  const auto core_factor = equation_factor(core, derived, unknowns);
+  o.derived_holds = core_factor.has_value();
+  o.derived = core_factor ? "derived " + what + " = (" + text_of(*core_factor) + ") x core " + what
+                          : "the core's " + what + " is not a multiple of the derived one";
+  return o;
+}
+
+printed_outcome internal_equation(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  return same_equation("internal equation", printed_side(r, "equation-milieu-intervalle"), d.lh_dqm,
+                       internal_equation_residual(d.m, d.h, general_force, d.q_l, d.q_m, d.q_r), {d.q_l, d.q_m, d.q_r});
+}
+
+printed_outcome qm_harmonic(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  return compare("q_m", printed_side(r, "qm-oscillateur-harmonique"), d.harmonic_qm, harmonic_internal_node(parameters(d), d.q_l, d.q_r));
+}
+
+/// 0 < omega h < bound: the derived q_m is defined while its denominator, a polynomial in h that is
+/// positive at h = 0, has not vanished; the printed bound must be its first positive root in omega h.
+printed_outcome stability_condition(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  const ex lower = printed_side(r, "stabilite", 0), middle = printed_side(r, "stabilite", 1), upper = printed_side(r, "stabilite", 2);
+  const ex denominator = GiNaC::denom(GiNaC::normal(d.harmonic_qm / (d.q_l + d.q_r)));
+  const GiNaC::symbol x("x");  // omega h
+  const ex in_x = GiNaC::normal(denominator.subs(d.h == x / d.omega));
+  printed_outcome o;
+  const bool variable = GiNaC::normal(middle - d.omega * d.h).is_zero() && GiNaC::normal(lower).is_zero();
+  const ex at_bound = GiNaC::normal(in_x.subs(x == upper));
+  // The first positive root: in_x is even in x; with y = x², its roots in y are checked by the
+  // discriminant-free route: in_x at x = bound is 0 and in_x has no root in (0, bound²) as a polynomial of degree 1 in y.
+  const ex in_y = GiNaC::normal(in_x.subs(x == GiNaC::sqrt(sym("y"))));
+  const bool linear_in_y = in_y.is_polynomial(sym("y")) && in_y.degree(sym("y")) == 1;
+  o.holds = variable && at_bound.is_zero() && linear_in_y;
+  o.proved = "the derived q_m has denominator " + text_of(in_x) + " in x = omega h (degree 1 in x^2); at the printed bound x = " +
+             text_of(upper) + " it is " + text_of(at_bound) + (variable ? "" : "; the printed variable or lower bound is not 0 < omega h");
+  if (!o.holds) o.correction = "0 < omega h < the positive root of " + text_of(in_x);
+  o.derived = "q_m derived by solving dL_h/dq_m = 0 (lsolve)";
+  return o;
+}
+
+printed_outcome reduced_lagrangian_check(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  return compare("L_h^r", printed_side(r, "Lagrangien-reduit"), d.reduced_lagrangian, reduced_lagrangian(parameters(d), d.q_l, d.q_r));
+}
+
+printed_outcome scheme_order_3(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  return same_equation("scheme (schema-ordre-3)", printed_side(r, "schema-ordre-3"), d.scheme(d.q_prev, d.q_j, d.q_next),
+                       three_term_residual(parameters(d), d.q_prev, d.q_j, d.q_next), {d.q_prev, d.q_j, d.q_next});
+}
+
+/// The polynomial part of e (its Order terms dropped) and the order k of its O(h^k), 0 when none.
+std::pair<ex, int> split_order(const ex& e, const ex& h) {
+  const ex expanded = GiNaC::expand(e);
+  ex terms = 0;
+  int order = 0;
+  for (std::size_t k = 0; k < (GiNaC::is_a<GiNaC::add>(expanded) ? expanded.nops() : 1); ++k) {
+    const ex term = GiNaC::is_a<GiNaC::add>(expanded) ? expanded.op(k) : expanded;
+    if (GiNaC::is_a<GiNaC::function>(term) && GiNaC::ex_to<GiNaC::function>(term).get_name() == "Order") {
+      order = term.op(0).degree(h);
+    } else {
+      terms += term;
+    }
+  }
+  return {terms, order};
+}
+
+/// q(t_j ± h) by GiNaC's series of an uninterpreted q, to O(h^order), the k-th derivative at t_j
+/// named as the reader names d^kq/dt^k.
+ex taylor_expansion(const symbolic_derivation& d, int sign, int order) {
+  const GiNaC::symbol tj("t_j");
+  const ex series = GiNaC::series_to_poly(GiNaC::series(apply_function("q", {tj + sign * d.h}), d.h == 0, order));
+  ex named = series;
+  for (int k = order - 1; k >= 1; --k) {
+    named = named.subs(GiNaC::diff(apply_function("q", {tj}), tj, static_cast<unsigned>(k)) == sym(derivative_name("q", "t", k, k)));
+  }
+  return GiNaC::expand(named.subs(apply_function("q", {tj}) == d.q_j));
+}
+
+printed_outcome taylor_display(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  printed_outcome o;
+  o.holds = true;
+  std::string corrections;
+  for (const auto& [name, sign] : {std::pair<const char*, int>{"Taylor q_{j+1}", 1}, {"Taylor q_{j-1}", -1}}) {
+    const auto [terms, order] = split_order(printed_side(r, name), d.h);
+    const ex derived = taylor_expansion(d, sign, order > 0 ? order : 7);
+    const ex gap = GiNaC::normal(terms - derived);
+    const bool same = order > 0 && gap.is_zero();
+    o.holds = o.holds && same;
+    o.proved += std::string(o.proved.empty() ? "" : "; ") + "printed " + name + " − series of q(t_j " + (sign > 0 ? "+" : "-") +
+                " h) (GiNaC, q uninterpreted) = " + text_of(gap) + " + O(h^" + std::to_string(order) + ")";
+    if (!same) corrections += std::string(corrections.empty() ? "" : "; ") + name + " = " + text_of(derived) + " + O(h^7)";
+  }
+  if (!o.holds) o.correction = "as derived: " + corrections;
+  o.derived = "Taylor's series of an uninterpreted function (GiNaC series)";
+  return o;
+}
+
+/// `scheme` (in q_{j-1}, q_j, q_{j+1}) on the exact solution through (p_j, q_j), q(t_j ± h) =
+/// q_j cos ωh ± p_j/(mω) sin ωh, as a series in h to O(h^order).
+ex exact_solution_series(const symbolic_derivation& d, const ex& scheme, int order) {
+  const ex shift = d.p_j / (d.m * d.omega) * GiNaC::sin(d.omega * d.h);
+  const ex c = GiNaC::cos(d.omega * d.h);
+  const ex on_solution = scheme.subs(GiNaC::lst{d.q_prev == d.q_j * c - shift, d.q_next == d.q_j * c + shift});
+  return GiNaC::expand(GiNaC::series_to_poly(GiNaC::series(on_solution, d.h == 0, order)));
+}
+
+/// a r² + b r + c from h² × the printed scheme at q_{j-1} = 1, q_j = r, q_{j+1} = r²; c = a.
+printed_outcome characteristic_equation(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  const ex rr = sym("r");
+  const ex polynomial = GiNaC::expand(d.h * d.h * printed_side(r, "schema-ordre-3").subs(
+                                                      GiNaC::lst{d.q_prev == 1, d.q_j == rr, d.q_next == rr * rr}));
+  const ex a = polynomial.coeff(rr, 2), b = polynomial.coeff(rr, 1), c = polynomial.coeff(rr, 0);
+  const auto k = characteristic_polynomial(ex(d.omega * d.omega * d.h * d.h));
+  printed_outcome o = both(compare("a", printed_side(r, "a"), a, k.a), compare("b", printed_side(r, "b"), b, k.b));
+  const bool symmetric = GiNaC::normal(a - c).is_zero();
+  o.derived += symmetric ? "; c = a" : "; c ≠ a: " + text_of(c);
+  o.derived_holds = o.derived_holds && symmetric;
+  return o;
+}
+
+/// Δ = b² − 4ac with a and b as printed (and c = a), against the printed factorisation.
+printed_outcome discriminant_factorization(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  const ex a = printed_side(r, "a"), b = printed_side(r, "b");
+  const ex x = d.omega * d.omega * d.h * d.h;
+  return compare("Delta", printed_side(r, "discriminant-factorized"), b * b - 4 * a * a, discriminant(x));
+}
+
+/// T_h(q_j): the left side of (schema-ordre-3) on the exact solution through (p_j, q_j), with the
+/// derived scheme normalised as (schema-ordre-3) is (the core's coefficient of q_{j+1}, 1/h² + ω²/24).
+/// The printed display claims ω⁶h⁴q_j/1440 + O(h⁶).
+printed_outcome truncation(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  const ex core_scheme = three_term_residual(parameters(d), d.q_prev, d.q_j, d.q_next);
+  const auto [printed_terms, order] = split_order(printed_side(r, "truncation-error"), d.h);
+  printed_outcome o;
+  if (order == 0) {
+    o.proved = "the printed truncation error has no order term O(h^k)";
+    o.property = true;
+    return o;
+  }
+  const ex derived = truncation_series(d, core_scheme, order);
+  const ex low = GiNaC::normal(derived - printed_terms);
+  o.holds = low.is_zero();
+  o.proved = "T_h(q_j) − printed terms = " + text_of(low) + " + O(h^" + std::to_string(order) +
+             ") (GiNaC series in h of the derived scheme on the exact solution, symbolic m, omega, p_j, q_j)";
+  if (!o.holds) o.correction = "as derived: T_h(q_j) = " + text_of(derived) + " + O(h^" + std::to_string(order) + ")";
+  const ex core = exact_solution_series(d, core_scheme, order);
+  const ex core_gap = GiNaC::normal(core - derived);
+  o.derived_holds = core_gap.is_zero();
+  o.derived = "series of the core's three_term_residual − series of the derived scheme = " + text_of(core_gap) + " + O(h^" +
+              std::to_string(order) + ")";
+  return o;
+}
+
+}  // namespace
+
+GiNaC::ex truncation_series(const symbolic_derivation& d, const GiNaC::ex& normalised_like, int order) {
+  const ex derived = d.scheme(d.q_prev, d.q_j, d.q_next);
+  const GiNaC::symbol& next = as_symbol(d.q_next);
+  const ex scale = GiNaC::normal(GiNaC::expand(normalised_like).coeff(next, 1) / GiNaC::expand(GiNaC::numer(derived)).coeff(next, 1) *
+                                 GiNaC::denom(derived));
+  return exact_solution_series(d, GiNaC::normal(derived * scale), order);
+}
+
+void add_printed_checks_section5(formula_claim_table& claims) {
+  claims["gear-partials"] = {{"dg_l/dq_m", "dg_m/dq_m", "dg_r/dq_m"}, gear_partials};
+  claims["lh-dqm"] = {{"dL_h/dq_m"}, lh_dqm};
+  claims["gr-minus-gl"] = {{"g_r - g_l"}, gr_minus_gl};
+  claims["internal-equation"] = {{"equation-milieu-intervalle"}, internal_equation};
+  claims["qm-harmonic"] = {{"qm-oscillateur-harmonique"}, qm_harmonic};
+  claims["stability-condition"] = {{"stabilite"}, stability_condition};
+  claims["reduced-lagrangian"] = {{"Lagrangien-reduit"}, reduced_lagrangian_check};
+  claims["scheme-order-3"] = {{"schema-ordre-3"}, scheme_order_3};
+  claims["taylor-display"] = {{"Taylor q_{j+1}", "Taylor q_{j-1}"}, taylor_display};
+  claims["truncation-1440"] = {{"truncation-error", "schema-ordre-3"}, truncation};
+  claims["characteristic-equation"] = {{"a", "b", "schema-ordre-3"}, characteristic_equation};
+  claims["discriminant-factorization"] = {{"discriminant-factorized", "a", "b"}, discriminant_factorization};
+}
+
+}  // namespace simpson::verify::detail

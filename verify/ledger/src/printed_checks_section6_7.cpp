@@ -1,0 +1,204 @@
+// §6–7 as printed: p_r, Φ₃ (against the end-to-end derivation), det Φ₃, Γ, det Γ, Q_c and H_d.
+
+#include "printed_check_support.hpp"
+
+#include <simpson/energy.hpp>
+#include <simpson/quadratic_invariant.hpp>
+#include <simpson/simpson_map.hpp>
+#include <simpson/simpson_momentum.hpp>
+#include <simpson/three_term_scheme.hpp>
+
+namespace simpson::verify::detail {
+namespace {
+
+using GiNaC::ex;
+
+ex sym(const std::string& name) { return paper_symbols()[name]; }
+
+oscillator_parameters<ex> parameters(const symbolic_derivation& d) { return {d.m, d.omega, d.h}; }
+
+GiNaC::matrix as_matrix(const one_step_matrix<ex>& phi) { return GiNaC::matrix{{phi.alpha, phi.beta}, {phi.gamma, phi.delta}}; }
+
+bool is_square(const ex& e, unsigned n) {
+  return GiNaC::is_a<GiNaC::matrix>(e) && GiNaC::ex_to<GiNaC::matrix>(e).rows() == n && GiNaC::ex_to<GiNaC::matrix>(e).cols() == n;
+}
+
+printed_outcome momentum_order_3(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  return compare("p_r", printed_side(r, "moment-ordre-3"), d.momentum, simpson_momentum(parameters(d), d.q_l, d.q_r));
+}
+
+printed_outcome phi3_elimination(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  return compare("Phi_3", printed_side(r, "Phi3"), d.phi3, as_matrix(simpson_map(parameters(d))));
+}
+
+printed_outcome phi3_det(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  const ex& printed = printed_side(r, "Phi3");
+  printed_outcome o;
+  o.property = true;
+  const ex derived_det = GiNaC::normal(d.phi3.determinant() - 1);
+  const ex core_det = GiNaC::normal(as_matrix(simpson_map(parameters(d))).determinant() - 1);
+  o.derived_holds = derived_det.is_zero() && core_det.is_zero();
+  o.derived = "det(derived Phi_3) − 1 = " + text_of(derived_det) + ", det(core Phi_3) − 1 = " + text_of(core_det);
+  if (!is_square(printed, 2)) {
+    o.proved = "the printed Phi_3 is not a 2 x 2 matrix: " + text_of(printed);
+    return o;
+  }
+  const ex det = GiNaC::normal(GiNaC::ex_to<GiNaC::matrix>(printed).determinant() - 1);
+  o.holds = det.is_zero();
+  o.proved = "det(printed Phi_3) − 1 = " + text_of(det) + " (normal form, symbolic m, omega, h)";
+  return o;
+}
+
+/// H(Φ y) − H(y) for a quadratic form H in p, q and a 2 × 2 matrix Φ.
+ex change_under(const ex& H, const ex& phi, const ex& p, const ex& q) {
+  const GiNaC::matrix& M = GiNaC::ex_to<GiNaC::matrix>(phi);
+  return GiNaC::normal(H.subs(GiNaC::lst{p == M(0, 0) * p + M(0, 1) * q, q == M(1, 0) * p + M(1, 1) * q}) - H);
+}
+
+printed_outcome hd_invariance(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  const ex H = printed_side(r, "hamiltonien-discret");
+  const ex& printed_phi = printed_side(r, "Phi3");
+  printed_outcome o;
+  o.property = true;
+  const ex derived_change = change_under(discrete_energy(parameters(d), phase_point<ex>{d.p, d.q}), d.phi3, d.p, d.q);
+  o.derived_holds = derived_change.is_zero();
+  o.derived = "core H_d(derived Phi_3 y) − H_d(y) = " + text_of(derived_change);
+  if (!is_square(printed_phi, 2)) {
+    o.proved = "the printed Phi_3 is not a 2 x 2 matrix";
+    return o;
+  }
+  const ex change = change_under(H, printed_phi, d.p, d.q);
+  o.holds = change.is_zero();
+  o.proved = "printed H_d(printed Phi_3 y) − H_d(y) = " + text_of(change) + " (normal form, symbolic m, omega, h, p, q)";
+  return o;
+}
+
+/// Γ derived: the coefficients of p², pq, q² in Q(Φy) − Q(y), Φ = ((α, β), (γ, δ)), as a matrix acting on (ξ, η, ζ).
+GiNaC::matrix derived_gamma() {
+  const ex a = sym("alpha"), b = sym("beta"), c = sym("gamma"), dd = sym("delta"), p = sym("p"), q = sym("q");
+  const ex xi = sym("xi"), eta = sym("eta"), zeta = sym("zeta");
+  const auto Q = [&](const ex& pp, const ex& qq) { return xi * pp * pp / 2 + eta * pp * qq + zeta * qq * qq / 2; };
+  const ex change = GiNaC::expand(Q(a * p + b * q, c * p + dd * q) - Q(p, q));
+  const ex rows[] = {change.coeff(p, 2).coeff(q, 0), change.coeff(p, 1).coeff(q, 1), change.coeff(p, 0).coeff(q, 2)};
+  const ex unknowns[] = {xi, eta, zeta};
+  GiNaC::matrix g(3, 3);
+  for (unsigned i = 0; i < 3; ++i) {
+    for (unsigned j = 0; j < 3; ++j) g(i, j) = GiNaC::expand(rows[i]).coeff(unknowns[j], 1);
+  }
+  return g;
+}
+
+GiNaC::matrix core_gamma() {
+  const auto g = invariance_system(one_step_matrix<ex>{sym("alpha"), sym("beta"), sym("gamma"), sym("delta")});
+  GiNaC::matrix m(3, 3);
+  for (unsigned i = 0; i < 3; ++i) {
+    for (unsigned j = 0; j < 3; ++j) m(i, j) = g[i][j];
+  }
+  return m;
+}
+
+printed_outcome gamma_system(const paper_reading& r) {
+  const GiNaC::matrix v{{sym("xi")}, {sym("eta")}, {sym("zeta")}};
+  return compare("Gamma (xi, eta, zeta)^T", printed_side(r, "Gamma"), derived_gamma().mul(v), core_gamma().mul(v));
+}
+
+printed_outcome gamma_determinant(const paper_reading& r) {
+  const ex derived = GiNaC::factor(GiNaC::normal(derived_gamma().determinant()));
+  const one_step_matrix<ex> phi{sym("alpha"), sym("beta"), sym("gamma"), sym("delta")};
+  printed_outcome o = compare("det Gamma", printed_side(r, "det Gamma"), derived, invariance_system_determinant(phi));
+  if (!o.holds) {
+    const ex ratio = GiNaC::normal(derived / printed_side(r, "det Gamma"));
+    o.proved += "; derived / printed = " + text_of(ratio);
+  }
+  return o;
+}
+
+/// det Γ as printed vanishes on αδ − βγ = 1 (δ = (1 + βγ)/α).
+printed_outcome gamma_singular(const paper_reading& r) {
+  const ex on_unit = sym("delta") == (1 + sym("beta") * sym("gamma")) / sym("alpha");
+  const ex printed = GiNaC::normal(printed_side(r, "det Gamma").subs(on_unit));
+  const ex derived = GiNaC::normal(derived_gamma().determinant().subs(on_unit));
+  printed_outcome o;
+  o.property = true;
+  o.holds = printed.is_zero();
+  o.proved = "printed det Gamma at delta = (1 + beta gamma)/alpha: " + text_of(printed);
+  o.derived_holds = derived.is_zero();
+  o.derived = "derived det Gamma at delta = (1 + beta gamma)/alpha: " + text_of(derived);
+  return o;
+}
+
+/// Q_c as printed is conserved by Φ = ((α, β), (γ, α)) of unit determinant (γ = (α² − 1)/β).
+printed_outcome conserved_form(const paper_reading& r) {
+  const ex a = sym("alpha"), b = sym("beta");
+  const GiNaC::matrix phi{{a, b}, {(a * a - 1) / b, a}};
+  const ex printed = printed_side(r, "Q_c").subs(sym("gamma") == (a * a - 1) / b).subs(sym("delta") == a);
+  const ex change = change_under(printed, phi, sym("p"), sym("q"));
+  printed_outcome o;
+  o.property = true;
+  o.holds = change.is_zero();
+  o.proved = "printed Q_c(Phi y) − Q_c(y) with delta = alpha, gamma = (alpha^2 - 1)/beta: " + text_of(change);
+  const auto c = conserved_form_coefficients(one_step_matrix<ex>{a, b, (a * a - 1) / b, a});
+  const GiNaC::matrix coefficients{{c[0]}, {c[1]}, {c[2]}};
+  const ex in_kernel = normal_difference(ex(derived_gamma()).subs(GiNaC::lst{sym("gamma") == (a * a - 1) / b, sym("delta") == a}).evalm() *
+                                             coefficients,
+                                         GiNaC::matrix(3, 1));
+  o.derived_holds = is_zero_expression(in_kernel);
+  o.derived = "derived Gamma x core (gamma, 0, -beta)^T = " + text_of(in_kernel);
+  return o;
+}
+
+/// H_d as printed is Q_c of the printed Φ₃ up to a constant factor (free of p and q).
+printed_outcome hd_proportional(const paper_reading& r) {
+  const ex& phi = printed_side(r, "Phi3");
+  printed_outcome o;
+  o.property = true;
+  if (!is_square(phi, 2)) {
+    o.proved = "the printed Phi_3 is not a 2 x 2 matrix";
+    return o;
+  }
+  const GiNaC::matrix& M = GiNaC::ex_to<GiNaC::matrix>(phi);
+  const ex Qc = printed_side(r, "Q_c").subs(GiNaC::lst{sym("gamma") == M(1, 0), sym("beta") == M(0, 1)});
+  const auto factor = equation_factor(Qc, printed_side(r, "hamiltonien-discret"), {sym("p"), sym("q")});
+  o.holds = factor.has_value();
+  o.proved = factor ? "printed H_d = (" + text_of(*factor) + ") x printed Q_c of the printed Phi_3"
+                    : "printed H_d is not a multiple of printed Q_c of the printed Phi_3";
+  const symbolic_derivation& d = derivation();
+  const ex Qc_derived = d.phi3(1, 0) * d.p * d.p / 2 - d.phi3(0, 1) * d.q * d.q / 2;
+  const auto core = equation_factor(Qc_derived, discrete_energy(parameters(d), phase_point<ex>{d.p, d.q}), {d.p, d.q});
+  o.derived_holds = core.has_value();
+  o.derived = core ? "core H_d = (" + text_of(*core) + ") x Q_c of the derived Phi_3" : "core H_d is not a multiple of Q_c of the derived Phi_3";
+  return o;
+}
+
+/// The end-to-end derivation: Φ₃ as derived (each step in GiNaC) against the printed and the core's,
+/// and T_h(q_j) of the derived scheme to O(h¹⁰).
+printed_outcome derivation_phi3(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  printed_outcome o = compare("Phi_3", printed_side(r, "Phi3"), d.phi3, as_matrix(simpson_map(parameters(d))));
+  std::string steps;
+  for (std::size_t k = 0; k < d.steps.size(); ++k) steps += (k ? "; " : "") + std::to_string(k + 1) + ") " + d.steps[k];
+  const ex series = truncation_series(d, three_term_residual(parameters(d), d.q_prev, d.q_j, d.q_next), 10);
+  o.derived += ". Steps: " + steps + ". T_h(q_j) of the derived scheme, normalised as (schema-ordre-3): " + text_of(series) + " + O(h^10)";
+  return o;
+}
+
+}  // namespace
+
+void add_printed_checks_section6_7(formula_claim_table& claims) {
+  claims["momentum-order-3"] = {{"moment-ordre-3"}, momentum_order_3};
+  claims["phi3-elimination"] = {{"Phi3"}, phi3_elimination};
+  claims["phi3-det"] = {{"Phi3"}, phi3_det};
+  claims["derivation-phi3"] = {{"Phi3"}, derivation_phi3};
+  claims["gamma-system"] = {{"Gamma"}, gamma_system};
+  claims["gamma-determinant"] = {{"det Gamma"}, gamma_determinant};
+  claims["gamma-singular"] = {{"det Gamma"}, gamma_singular};
+  claims["conserved-form"] = {{"Q_c"}, conserved_form};
+  claims["hd-proportional"] = {{"hamiltonien-discret", "Q_c", "Phi3"}, hd_proportional};
+  claims["hd-invariance"] = {{"hamiltonien-discret", "Phi3"}, hd_invariance};
+}
+
+}  // namespace simpson::verify::detail
