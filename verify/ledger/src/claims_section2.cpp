@@ -205,6 +205,33 @@ claim_result check_newmark_identification(const run_context&) {
                       "Over the whole family det - 1 = " + det_string + ", which vanishes for gamma = 1/2 and any beta.");
 }
 
+/// (systeme-dynamique-discret-ordre-2), the first relation divided by h, on the exact solutions
+/// (q, p) = (cos t, -sin t) and (sin t, cos t) at m = omega = 1: both residuals are O(theta^2) and
+/// O(theta^3), so the relations tend to dp/dt + m omega^2 q = 0 and dq/dt = p/m.
+claim_result check_hamilton_consistency(const run_context&) {
+  const auto par = unit_oscillator_in_theta();
+  const symbolic c(cos_taylor(14), make_polynomial({rational(1)})), s(sin_taylor(14), make_polynomial({rational(1)}));
+  json runs = json::array();
+  bool consistent = true;
+  for (const bool cosine : {true, false}) {
+    const phase_point<symbolic> y = cosine ? phase_point<symbolic>{symbolic(0), symbolic(1)} : phase_point<symbolic>{symbolic(1), symbolic(0)};
+    const phase_point<symbolic> next = cosine ? phase_point<symbolic>{symbolic(0) - s, c} : phase_point<symbolic>{c, s};
+    const phase_point<symbolic> r = newmark_system_residual(par, y, next);
+    const auto first = laurent_coefficients(r.p / par.h(), 8), second = laurent_coefficients(r.q, 8);
+    consistent = consistent && !first.empty() && first.front().first >= 1 && !second.empty() && second.front().first >= 1;
+    runs.push_back({{"solution", cosine ? "q = cos t, p = -sin t" : "q = sin t, p = cos t"},
+                    {"first_over_h", series_to_string(first, "θ") + " + O(θ^8)"},
+                    {"second", series_to_string(second, "θ") + " + O(θ^8)"}});
+  }
+  json evidence;
+  evidence["exact"] = {{"method", "exact series"},
+                       {"reduction", std::string(unit_reduction) + "; the two relations on two exact solutions (Taylor through theta^14)"},
+                       {"residuals", runs}};
+  return confirmed_if(consistent, evidence,
+                      "Both residuals vanish as h -> 0 (the first, divided by h, is O(h^2); the second O(h^2) as well): the "
+                      "system is a consistent, second-order discretization of dp/dt + m omega^2 q = 0, dq/dt = p/m.");
+}
+
 }  // namespace
 
 void add_section2_claims(std::vector<claim>& claims) {
@@ -225,6 +252,10 @@ void add_section2_claims(std::vector<claim>& claims) {
   claims.push_back({"newmark-discrete-system", "2", "systeme-dynamique-discret-ordre-2",
                     "p_{j+1} - p_j = -m omega^2 h (q_{j+1} + q_j)/2 and (q_{j+1} - q_j)/h = (p_{j+1} + p_j)/(2m).",
                     {"exact"}, verdict::holds, check_newmark_discrete_system});
+  claims.push_back({"hamilton-consistency", "2", "systeme-dynamique-discret-ordre-2",
+                    "These relations are consistent with the first order Hamilton version dp/dt + m omega^2 q = 0, dq/dt = p/m of "
+                    "the equations of an harmonic oscillator.",
+                    {"exact series"}, verdict::holds, check_hamilton_consistency});
   claims.push_back({"newmark-matrix", "2", "matrice-symplectique-ordre-2",
                     "The system is (p_{j+1}, q_{j+1}) = Phi (p_j, q_j) with Phi = 1/(1 + omega^2 h^2/4) "
                     "((1 - omega^2 h^2/4, -m omega^2 h), (h/m, 1 - omega^2 h^2/4)).",

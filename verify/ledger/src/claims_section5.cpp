@@ -10,6 +10,7 @@
 #include <simpson/quadratic_interpolation.hpp>
 #include <simpson/reduced_lagrangian.hpp>
 #include <simpson/simpson_lagrangian.hpp>
+#include <simpson/simpson_rule.hpp>
 #include <simpson/three_term_scheme.hpp>
 
 namespace simpson::verify::detail {
@@ -379,9 +380,44 @@ claim_result check_roots_product(const run_context&) {
   return confirmed_if(report.product_of_roots_is_one && has_stable_band(report, rational(0), rational(8)), evidence);
 }
 
+/// "Maupertuis's stationary-action principle delta Sigma_d = 0": Sigma_d sums L_h, Simpson's rule on
+/// the Lagrangian m q'^2/2 - V along the interpolant, at fixed times: Hamilton's action. Maupertuis's
+/// principle varies the abbreviated action, the integral of p q' = m q'^2, at fixed energy. Shown: L_h
+/// is Simpson's rule on L (corrected), and differs from Simpson's rule on p q' by Simpson's rule on
+/// H = m q'^2/2 + V, which is not zero (printed).
+claim_result check_maupertuis_naming(const run_context&) {
+  const auto par = unit_oscillator_in_theta();
+  const auto V = [&](const symbolic& v) { return par.potential(v); };
+  const auto along = [&](const std::vector<rational>& v, bool abbreviated) {
+    const symbolic ql(v[0]), qm(v[1]), qr(v[2]);
+    const symbolic rule = simpson_rule<symbolic>([&](const symbolic& s) {
+      const symbolic velocity = quadratic_interpolant_derivative(ql, qm, qr, par.h(), s);
+      return abbreviated ? par.h() * par.m() * velocity * velocity
+                         : par.h() * (par.m() / 2 * velocity * velocity - V(quadratic_interpolant(ql, qm, qr, s)));
+    });
+    return simpson_lagrangian(par.m(), par.h(), V, ql, qm, qr) - rule;
+  };
+  const proof printed = prove_zero_on_grid(std::string(unit_reduction) +
+                                               "; L_h (LLhh) minus Simpson's rule on the abbreviated action's integrand p dq/dt = m (dq/dt)^2",
+                                           {"q_l", "q_m", "q_r"}, 2, [&](const std::vector<rational>& v) { return along(v, true); });
+  const proof corrected = prove_zero_on_grid(std::string(unit_reduction) +
+                                                 "; L_h (LLhh) minus Simpson's rule on Hamilton's integrand L = m (dq/dt)^2/2 - V(q)",
+                                             {"q_l", "q_m", "q_r"}, 2, [&](const std::vector<rational>& v) { return along(v, false); });
+  return erratum(printed, corrected,
+                 "delta Sigma_d = 0 (variations of the nodes, times fixed) is the discrete form of Hamilton's stationary-action "
+                 "principle: Sigma_d approximates the integral of L dt",
+                 "A naming finding, not a formula: Maupertuis's principle makes the abbreviated action (the integral of p dq) "
+                 "stationary among motions of fixed energy; the equations derived from delta Sigma_d = 0 (internal-equation, "
+                 "scheme-order-3) are unaffected.");
+}
+
 }  // namespace
 
 void add_section5_claims(std::vector<claim>& claims) {
+  claims.push_back({"maupertuis-naming", "5", "prose",
+                    "We first write the Maupertuis's stationary-action principle delta Sigma_d = 0 with a variation of the internal "
+                    "degree of freedom.",
+                    {"exact"}, verdict::erratum, check_maupertuis_naming});
   claims.push_back({"gear-partials", "5", "prose", "dg_l/dq_m = 4/h, dg_m/dq_m = 0 and dg_r/dq_m = -4/h.", {"exact"},
                     verdict::holds, check_gear_partials});
   claims.push_back({"lh-dqm", "5", "prose",

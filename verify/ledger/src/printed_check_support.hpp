@@ -69,6 +69,28 @@ printed_outcome both(const printed_outcome& a, const printed_outcome& b);
 /// coefficient fixes the scale, the core's (schema-ordre-3)), on the exact solution, to O(h^order).
 GiNaC::ex truncation_series(const symbolic_derivation& d, const GiNaC::ex& normalised_like, int order);
 
+/// A state replaced by a smooth function of time: `state` becomes function(t + shift).
+struct smooth_state {
+  GiNaC::ex state;
+  std::string function;  // "q" or "p"
+  GiNaC::ex shift;       // 0, h, -h, h/2 ...
+};
+
+/// `e` with its states replaced by smooth functions, expanded by GiNaC in h: the lowest power of h
+/// and its coefficient, with function(t) renamed to the paper's symbol (q, p) and its derivatives
+/// to derivative_name(function, "t", k, k), as the reader names {{\dd^k q}\over{\dd t^k}}.
+struct smooth_expansion {
+  int lowest_power = 0;
+  GiNaC::ex leading;  // the coefficient of h^lowest_power
+  GiNaC::ex series;   // the whole expansion through h^(lowest_power + 3), renamed
+};
+smooth_expansion expand_on_smooth(const GiNaC::ex& e, const std::vector<smooth_state>& states, const GiNaC::ex& h);
+
+/// A consistency claim: the leading term of a printed scheme on smooth states is (a nonzero
+/// multiple of) the printed differential equation, and so is the core's.
+printed_outcome consistent_with(const std::string& what, const GiNaC::ex& printed_scheme, const GiNaC::ex& core_scheme,
+                                const GiNaC::ex& printed_equation, const std::vector<smooth_state>& states, const GiNaC::ex& h);
+
 /// V′ as a function of the point, for the core's templates: x ↦ D[0](V)(x).
 GiNaC::ex general_force(const GiNaC::ex& x);
 

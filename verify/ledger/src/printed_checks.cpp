@@ -4,6 +4,7 @@
 
 #include <simpson/verify/paper_reading.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <chrono>
 
@@ -72,6 +73,57 @@ printed_outcome both(const printed_outcome& a, const printed_outcome& b) {
   o.correction = a.correction.empty() ? b.correction : b.correction.empty() ? a.correction : a.correction + "; " + b.correction;
   o.derived_holds = a.derived_holds && b.derived_holds;
   o.derived = a.derived.empty() ? b.derived : b.derived.empty() ? a.derived : a.derived + "; " + b.derived;
+  return o;
+}
+
+smooth_expansion expand_on_smooth(const ex& e, const std::vector<smooth_state>& states, const ex& h) {
+  const GiNaC::symbol t("t_smooth");
+  GiNaC::exmap on_solution;
+  std::vector<std::string> functions;
+  for (const smooth_state& s : states) {
+    on_solution[s.state] = apply_function(s.function, {t + s.shift});
+    if (std::find(functions.begin(), functions.end(), s.function) == functions.end()) functions.push_back(s.function);
+  }
+  const auto rename = [&](ex x) {
+    for (const std::string& f : functions) {
+      for (int k = 8; k >= 1; --k) {
+        x = x.subs(GiNaC::diff(apply_function(f, {t}), t, static_cast<unsigned>(k)) == paper_symbols()[derivative_name(f, "t", k, k)]);
+      }
+      x = x.subs(apply_function(f, {t}) == paper_symbols()[f]);
+    }
+    return x;
+  };
+  const GiNaC::symbol& hs = GiNaC::ex_to<GiNaC::symbol>(h);
+  // Laurent series: at most h^-2 in the paper's schemes; expand to four powers past the lowest.
+  const ex series = GiNaC::expand(GiNaC::series_to_poly(GiNaC::series(e.subs(on_solution), h == 0, 4)));
+  smooth_expansion out;
+  out.lowest_power = series.ldegree(hs);
+  out.leading = GiNaC::normal(rename(series.coeff(hs, out.lowest_power)));
+  out.series = rename(series);
+  return out;
+}
+
+printed_outcome consistent_with(const std::string& what, const ex& printed_scheme, const ex& core_scheme, const ex& printed_equation,
+                                const std::vector<smooth_state>& states, const ex& h) {
+  std::vector<ex> unknowns;
+  for (const char* name : {"q", "p"}) {
+    unknowns.push_back(paper_symbols()[name]);
+    for (int k = 1; k <= 4; ++k) unknowns.push_back(paper_symbols()[derivative_name(name, "t", k, k)]);
+  }
+  const smooth_expansion printed = expand_on_smooth(printed_scheme, states, h);
+  const smooth_expansion core = expand_on_smooth(core_scheme, states, h);
+  const auto factor = equation_factor(printed_equation, printed.leading, unknowns);
+  printed_outcome o;
+  o.holds = factor.has_value();
+  o.proved = "printed " + what + " on smooth states (GiNaC series, V and the solution uninterpreted) = h^" +
+             std::to_string(printed.lowest_power) + " (" + text_of(printed.leading) + ") + ...; " +
+             (factor ? "that leading term is (" + text_of(*factor) + ") x the printed equation"
+                     : "that leading term is not a multiple of the printed equation " + text_of(printed_equation));
+  if (!o.holds) o.correction = "as derived: the scheme is consistent with " + text_of(printed.leading) + " = 0";
+  const auto core_factor = equation_factor(printed.leading, core.leading, unknowns);
+  o.derived_holds = core_factor.has_value();
+  o.derived = "core " + what + " on smooth states: h^" + std::to_string(core.lowest_power) + " (" + text_of(core.leading) + ")" +
+              (core_factor ? ", the same equation" : ", not the printed scheme's leading term");
   return o;
 }
 

@@ -67,6 +67,26 @@ printed_outcome classical_euler_lagrange(const paper_reading& r) {
   return both(o, scheme);
 }
 
+/// (systeme-dynamique-discret-ordre-2) on smooth p(t), q(t): its leading terms are the printed
+/// first-order Hamilton equations.
+printed_outcome hamilton_consistency(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  const std::vector<smooth_state> states{{d.p_j, "p", 0}, {d.p_next, "p", d.h}, {d.q_j, "q", 0}, {d.q_next, "q", d.h}};
+  const auto relation = [&r](const char* name) { return printed_side(r, name, 0) - printed_side(r, name, 1); };
+  const phase_point<ex> core = newmark_system_residual(parameters(d), phase_point<ex>{d.p_j, d.q_j}, phase_point<ex>{d.p_next, d.q_next});
+  return both(consistent_with("first relation", relation("systeme-dynamique-discret-ordre-2#0"), core.p, relation("Hamilton dp/dt"), states, d.h),
+              consistent_with("second relation", relation("systeme-dynamique-discret-ordre-2#1"), core.q, relation("Hamilton dq/dt"), states, d.h));
+}
+
+/// (schema-ordre-deux) on a smooth q(t), V uninterpreted: its leading term is (oscillateur-nonlineaire).
+printed_outcome classical_consistency(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  const std::vector<smooth_state> states{{d.q_prev, "q", -d.h}, {d.q_j, "q", 0}, {d.q_next, "q", d.h}};
+  return consistent_with("(schema-ordre-deux)", printed_side(r, "schema-ordre-deux"),
+                         classical_scheme_residual(d.m, d.h, general_force, d.q_prev, d.q_j, d.q_next),
+                         printed_side(r, "oscillateur-nonlineaire", 0) - printed_side(r, "oscillateur-nonlineaire", 1), states, d.h);
+}
+
 printed_outcome newmark_momentum(const paper_reading& r) {
   const symbolic_derivation& d = derivation();
   const auto par = parameters(d);
@@ -168,6 +188,10 @@ printed_outcome simpson_lagrangian_check(const paper_reading& r) {
 void add_printed_checks_section2_4(formula_claim_table& claims) {
   claims["classical-action-range"] = {{"S_d"}, [](const paper_reading& r) { return action_range(r, "S_d", "S_d"); }};
   claims["classical-euler-lagrange"] = {{"lagrangien-discret", "schema-ordre-deux"}, classical_euler_lagrange};
+  claims["classical-consistency"] = {{"schema-ordre-deux", "oscillateur-nonlineaire"}, classical_consistency};
+  claims["hamilton-consistency"] = {{"systeme-dynamique-discret-ordre-2#0", "systeme-dynamique-discret-ordre-2#1", "Hamilton dp/dt",
+                                     "Hamilton dq/dt"},
+                                    hamilton_consistency};
   claims["newmark-momentum"] = {{"p_{j+1} (Newmark)"}, newmark_momentum};
   claims["newmark-discrete-system"] = {{"systeme-dynamique-discret-ordre-2#0", "systeme-dynamique-discret-ordre-2#1"}, newmark_system};
   claims["newmark-matrix"] = {{"matrice-symplectique-ordre-2"}, newmark_matrix};

@@ -67,6 +67,26 @@ printed_outcome internal_equation(const paper_reading& r) {
                        internal_equation_residual(d.m, d.h, general_force, d.q_l, d.q_m, d.q_r), {d.q_l, d.q_m, d.q_r});
 }
 
+/// (equation-milieu-intervalle) on a smooth q(t) at t - h/2, t, t + h/2, V uninterpreted: its leading
+/// term is (oscillateur-nonlineaire).
+printed_outcome internal_equation_second_order(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  const std::vector<smooth_state> states{{d.q_l, "q", -d.h / 2}, {d.q_m, "q", 0}, {d.q_r, "q", d.h / 2}};
+  return consistent_with("(equation-milieu-intervalle)", printed_side(r, "equation-milieu-intervalle"),
+                         internal_equation_residual(d.m, d.h, general_force, d.q_l, d.q_m, d.q_r),
+                         printed_side(r, "oscillateur-nonlineaire", 0) - printed_side(r, "oscillateur-nonlineaire", 1), states, d.h);
+}
+
+/// (schema-ordre-3) on a smooth q(t): its leading term is q'' + omega^2 q as printed.
+printed_outcome scheme_consistency(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  const std::vector<smooth_state> states{{d.q_prev, "q", -d.h}, {d.q_j, "q", 0}, {d.q_next, "q", d.h}};
+  const ex equation = (printed_side(r, "harmonic equation", 0) - printed_side(r, "harmonic equation", 1))
+                          .subs(apply_function("q", {d.t}) == sym("q"));
+  return consistent_with("(schema-ordre-3)", printed_side(r, "schema-ordre-3"),
+                         three_term_residual(parameters(d), d.q_prev, d.q_j, d.q_next), equation, states, d.h);
+}
+
 printed_outcome qm_harmonic(const paper_reading& r) {
   const symbolic_derivation& d = derivation();
   return compare("q_m", printed_side(r, "qm-oscillateur-harmonique"), d.harmonic_qm, harmonic_internal_node(parameters(d), d.q_l, d.q_r));
@@ -228,6 +248,8 @@ void add_printed_checks_section5(formula_claim_table& claims) {
   claims["lh-dqm"] = {{"dL_h/dq_m"}, lh_dqm};
   claims["gr-minus-gl"] = {{"g_r - g_l"}, gr_minus_gl};
   claims["internal-equation"] = {{"equation-milieu-intervalle"}, internal_equation};
+  claims["internal-equation-second-order"] = {{"equation-milieu-intervalle", "oscillateur-nonlineaire"}, internal_equation_second_order};
+  claims["scheme-consistency"] = {{"schema-ordre-3", "harmonic equation"}, scheme_consistency};
   claims["qm-harmonic"] = {{"qm-oscillateur-harmonique"}, qm_harmonic};
   claims["stability-condition"] = {{"stabilite"}, stability_condition};
   claims["reduced-lagrangian"] = {{"Lagrangien-reduit"}, reduced_lagrangian_check};

@@ -19,7 +19,7 @@ tex_symbols& paper_symbols() {
 }
 
 const std::vector<std::string>& function_names() {
-  static const std::vector<std::string> names{"V", "L_d", "L_h", "H_d", "Q", "Q_c"};
+  static const std::vector<std::string> names{"V", "L_d", "L_h", "H_d", "Q", "Q_c", "q"};
   return names;
 }
 
@@ -267,9 +267,13 @@ class parser {
     expect("}");
     expect("}");
     const auto& functions = function_names();
-    if (std::find(functions.begin(), functions.end(), of) != functions.end()) {
+    // The state q is a function of t whose derivatives the paper writes without an argument:
+    // {{\dd^k q}\over{\dd t^n}} stays a named symbol (a misprinted order stays visible).
+    const bool state = of == "q" && peek().text != "(";
+    if (!state && std::find(functions.begin(), functions.end(), of) != functions.end()) {
       if (k != n) fail("derivative of " + of + " of order " + std::to_string(k) + " over d" + by + "^" + std::to_string(n));
-      const GiNaC::exvector args = arguments();
+      // {{\dd V}\over{\dd q}} alone is V' at q; followed by (x), at x.
+      const GiNaC::exvector args = peek().text == "(" ? arguments() : GiNaC::exvector{symbols_[by]};
       if (args.size() != 1) fail("a derivative of a function of one argument");
       const GiNaC::symbol x("derivative_variable");
       return GiNaC::diff(apply_function(of, {x}), x, static_cast<unsigned>(k)).subs(x == args.front());
