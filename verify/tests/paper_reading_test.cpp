@@ -93,6 +93,7 @@ TEST(PaperReading, AChangedCoefficientInTheTextChangesTheVerdict) {
       {"\\label{matrice-symplectique-ordre-2}", "- m \\, \\omega^2 \\, h", "- m \\, \\omega^2 \\, h^2", {"newmark-matrix", "newmark-det"}},
       {"\\label{stabilite}", "2 \\, \\sqrt{2}", "2 \\, \\sqrt{3}", {"stability-condition"}},
       {"We have also", "4 \\, \\theta - 3", "4 \\, \\theta - 2", {"interpolant-derivative"}},
+      {"\\label{fonctions-de-base}", "4 \\, \\theta", "3 \\, \\theta", {"interpolant-nodal"}},
       {"Due to the relations", "-{{4}\\over{h}}", "{{4}\\over{h}}", {"gear-partials"}},
       {"a conserved quadratic form", "\\gamma \\, p^2", "\\delta \\, p^2", {"conserved-form", "hd-proportional"}},
   };

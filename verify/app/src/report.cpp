@@ -185,12 +185,15 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
         "Verdicts: **holds** (true as printed), **erratum** (false as printed; a corrected statement is proved), **fails** "
         "(false, no correction found), **kernels-disagree** (our kernel and GiNaC reached different conclusions on the derived statement: a bug, never expected).\n\n";
 
-  md += "## Claims\n\n| id | § | equation | verdict | expected | methods |\n|---|---|---|---|---|---|\n";
+  md += "## Claims\n\nStatement: *read* when its formulas are read from the paper's source and proved in both kernels "
+        "(our kernel and GiNaC), *typed* when it is a prose statement typed into the ledger.\n\n"
+        "| id | § | equation | statement | verdict | expected | methods |\n|---|---|---|---|---|---|---|\n";
   for (const claim_outcome& o : r.outcomes) {
     const claim& c = *o.checked;
     const std::string verdict_text = to_string(o.result.outcome) + (o.result.outcome == o.expected ? "" : " **(unexpected)**");
-    md += fmt::format("| [{}](#{}) | {} | {} | {} | {} | {} |\n", c.id, c.id, c.section, markdown_cell(c.equation), verdict_text,
-                      to_string(o.expected), join(c.methods, ", "));
+    md += fmt::format("| [{}](#{}) | {} | {} | {} | {} | {} | {} |\n", c.id, c.id, c.section, markdown_cell(c.equation),
+                      o.result.printed.is_null() ? "typed" : "read", verdict_text, to_string(o.expected),
+                      join(c.methods, ", ") + (o.result.printed.is_null() ? "" : ", GiNaC"));
   }
 
   md += "\n## Errata\n\n";

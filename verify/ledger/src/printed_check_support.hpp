@@ -7,6 +7,9 @@
 
 #include <simpson/verify/paper_reading.hpp>
 
+#include <simpson/one_step_map.hpp>
+#include <simpson/oscillator_parameters.hpp>
+
 #include <ginac/ginac.h>
 
 #include <functional>
@@ -41,6 +44,18 @@ void add_printed_checks_section5(formula_claim_table& claims);
 void add_printed_checks_section6_7(formula_claim_table& claims);
 
 // ---- helpers ----
+
+/// The paper's symbol `name` (paper_symbols()).
+GiNaC::ex sym(const std::string& name);
+
+/// The oscillator's parameters (m, ω, h) of the derivation, for the core's templates.
+oscillator_parameters<GiNaC::ex> parameters(const symbolic_derivation& d);
+
+/// A one-step matrix of the core as a GiNaC matrix.
+GiNaC::matrix as_matrix(const one_step_matrix<GiNaC::ex>& phi);
+
+/// A printed formula with g_l, g_m, g_r replaced by the derived Gear values.
+GiNaC::ex with_gear(const GiNaC::ex& e, const symbolic_derivation& d);
 
 std::string text_of(const GiNaC::ex& e);
 

@@ -15,6 +15,16 @@ using GiNaC::ex;
 
 std::string text_of(const ex& e) { return canonical_text(e); }
 
+ex sym(const std::string& name) { return paper_symbols()[name]; }
+
+oscillator_parameters<ex> parameters(const symbolic_derivation& d) { return {d.m, d.omega, d.h}; }
+
+GiNaC::matrix as_matrix(const one_step_matrix<ex>& phi) { return GiNaC::matrix{{phi.alpha, phi.beta}, {phi.gamma, phi.delta}}; }
+
+ex with_gear(const ex& e, const symbolic_derivation& d) {
+  return e.subs(GiNaC::lst{sym("g_l") == d.g_l, sym("g_m") == d.g_m, sym("g_r") == d.g_r});
+}
+
 ex normal_difference(const ex& a, const ex& b) {
   const ex difference = (a - b).evalm();
   if (!GiNaC::is_a<GiNaC::matrix>(difference)) return GiNaC::normal(difference);

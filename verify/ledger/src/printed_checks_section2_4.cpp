@@ -14,12 +14,6 @@ namespace {
 
 using GiNaC::ex;
 
-ex sym(const std::string& name) { return paper_symbols()[name]; }
-
-oscillator_parameters<ex> parameters(const symbolic_derivation& d) { return {d.m, d.omega, d.h}; }
-
-GiNaC::matrix as_matrix(const one_step_matrix<ex>& phi) { return GiNaC::matrix{{phi.alpha, phi.beta}, {phi.gamma, phi.delta}}; }
-
 /// S_d and Σ_d: N elements [t_j, t_{j+1}] of [0, T] are j = 0 … N − 1, so the sum runs over them.
 printed_outcome action_range(const paper_reading& r, const std::string& name, const std::string& what) {
   const ex& sum = printed_side(r, name);
@@ -149,9 +143,31 @@ printed_outcome newmark_energy(const paper_reading& r) {
   return o;
 }
 
-/// The printed formula with g_l, g_m, g_r replaced by the derived Gear values.
-ex with_gear(const ex& e, const symbolic_derivation& d) {
-  return e.subs(GiNaC::lst{sym("g_l") == d.g_l, sym("g_m") == d.g_m, sym("g_r") == d.g_r});
+/// (q2t) with the printed basis functions (fonctions-de-base), t = h theta: at the printed points it
+/// takes the printed values. The core's interpolant is the derived one (solved through the nodes).
+printed_outcome interpolant_nodal(const paper_reading& r) {
+  const symbolic_derivation& d = derivation();
+  const char* basis[] = {"varphi_0", "varphi_1/2", "varphi_1"};
+  ex q_of_theta = printed_side(r, "q2t");
+  for (int k = 0; k < 3; ++k) {
+    q_of_theta = q_of_theta.subs(apply_function(basis[k], {d.theta}) == printed_side(r, "fonctions-de-base#" + std::to_string(k)));
+  }
+  printed_outcome o;
+  o.property = true;
+  o.holds = true;
+  for (const char* name : {"q(0)", "q(h/2)", "q(h)"}) {
+    const ex& at = printed_side(r, name, 0);  // q(t_0), as read
+    const ex t0 = GiNaC::is_a<GiNaC::function>(at) && at.nops() == 1 ? at.op(0) : ex(GiNaC::symbol("not_q_of_t"));
+    const ex gap = GiNaC::normal(q_of_theta.subs(d.theta == t0 / d.h) - printed_side(r, name, 1));
+    o.holds = o.holds && gap.is_zero();
+    o.proved += std::string(o.proved.empty() ? "" : "; ") + "printed (q2t) at t = " + text_of(t0) + " minus the printed value = " + text_of(gap);
+  }
+  const ex core = quadratic_interpolant(d.q_l, d.q_m, d.q_r, d.theta);
+  compare_core(o, "q(h theta)", GiNaC::normal(d.interpolant.subs(d.t == d.h * d.theta)), core);
+  const ex printed_gap = GiNaC::normal(q_of_theta - core);
+  o.derived += "; printed (q2t) with (fonctions-de-base) − core = " + text_of(printed_gap);
+  o.holds = o.holds && printed_gap.is_zero();
+  return o;
 }
 
 printed_outcome gear_derivatives(const paper_reading& r) {
@@ -197,6 +213,8 @@ void add_printed_checks_section2_4(formula_claim_table& claims) {
   claims["newmark-matrix"] = {{"matrice-symplectique-ordre-2"}, newmark_matrix};
   claims["newmark-det"] = {{"matrice-symplectique-ordre-2"}, newmark_det};
   claims["newmark-energy"] = {{"HH-exact", "matrice-symplectique-ordre-2"}, newmark_energy};
+  claims["interpolant-nodal"] = {{"fonctions-de-base#0", "fonctions-de-base#1", "fonctions-de-base#2", "q2t", "q(0)", "q(h/2)", "q(h)"},
+                                 interpolant_nodal};
   claims["gear-derivatives"] = {{"derivees-gear#0", "derivees-gear#1"}, gear_derivatives};
   claims["centred-derivative"] = {{"derivee-centree"}, centred_derivative_check};
   claims["interpolant-derivative"] = {{"dq/dt"}, interpolant_derivative};

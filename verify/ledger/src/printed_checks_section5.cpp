@@ -15,14 +15,6 @@ namespace {
 
 using GiNaC::ex;
 
-ex sym(const std::string& name) { return paper_symbols()[name]; }
-
-oscillator_parameters<ex> parameters(const symbolic_derivation& d) { return {d.m, d.omega, d.h}; }
-
-ex with_gear(const ex& e, const symbolic_derivation& d) {
-  return e.subs(GiNaC::lst{sym("g_l") == d.g_l, sym("g_m") == d.g_m, sym("g_r") == d.g_r});
-}
-
 const GiNaC::symbol& as_symbol(const ex& e) { return GiNaC::ex_to<GiNaC::symbol>(e); }
 
 printed_outcome gear_partials(const paper_reading& r) {

@@ -13,12 +13,6 @@ namespace {
 
 using GiNaC::ex;
 
-ex sym(const std::string& name) { return paper_symbols()[name]; }
-
-oscillator_parameters<ex> parameters(const symbolic_derivation& d) { return {d.m, d.omega, d.h}; }
-
-GiNaC::matrix as_matrix(const one_step_matrix<ex>& phi) { return GiNaC::matrix{{phi.alpha, phi.beta}, {phi.gamma, phi.delta}}; }
-
 bool is_square(const ex& e, unsigned n) {
   return GiNaC::is_a<GiNaC::matrix>(e) && GiNaC::ex_to<GiNaC::matrix>(e).rows() == n && GiNaC::ex_to<GiNaC::matrix>(e).cols() == n;
 }

@@ -21,6 +21,13 @@ const std::vector<formula_location>& ledger_formulas() {
       {"matrice-symplectique-ordre-2", k::labelled, "matrice-symplectique-ordre-2"},
       {"HH-exact", k::labelled, "HH-exact"},
       // §3
+      {"fonctions-de-base#0", k::labelled, "fonctions-de-base", 0},
+      {"fonctions-de-base#1", k::labelled, "fonctions-de-base", 1},
+      {"fonctions-de-base#2", k::labelled, "fonctions-de-base", 2},
+      {"q2t", k::labelled, "q2t"},
+      {"q(0)", k::inline_formula, "q(0) = q_\\ell", 0, {0, 1}},
+      {"q(h/2)", k::inline_formula, "q({{h}\\over2}) = q_m", 0, {0, 1}},
+      {"q(h)", k::inline_formula, "q(h) = q_r", 0, {0, 1}},
       {"dq/dt", k::anchored_display, "We have also", 0, {-2, -1}},
       {"derivees-gear#0", k::labelled, "derivees-gear", 0},
       {"derivees-gear#1", k::labelled, "derivees-gear", 1},

@@ -19,7 +19,7 @@ tex_symbols& paper_symbols() {
 }
 
 const std::vector<std::string>& function_names() {
-  static const std::vector<std::string> names{"V", "L_d", "L_h", "H_d", "Q", "Q_c", "q"};
+  static const std::vector<std::string> names{"V", "L_d", "L_h", "H_d", "Q", "Q_c", "q", "varphi_0", "varphi_1/2", "varphi_1"};
   return names;
 }
 

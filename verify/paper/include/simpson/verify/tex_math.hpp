@@ -34,8 +34,8 @@ class tex_symbols {
 /// and every derivation, use it, so that a name is one symbol everywhere.
 tex_symbols& paper_symbols();
 
-/// The names the reader applies as functions when followed by parentheses: V, L_d, L_h, H_d, Q, Q_c
-/// and q (q(t); q_\ell and q_j are other names).
+/// The names the reader applies as functions when followed by parentheses: V, L_d, L_h, H_d, Q, Q_c,
+/// q (q(t); q_\ell and q_j are other names) and the basis functions varphi_0, varphi_1/2, varphi_1.
 const std::vector<std::string>& function_names();
 
 /// The uninterpreted function `name` of `args.size()` arguments applied to `args` (GiNaC
