@@ -84,14 +84,14 @@ printed_outcome classical_consistency(const paper_reading& r) {
 printed_outcome newmark_momentum(const paper_reading& r) {
   const symbolic_derivation& d = derivation();
   const auto par = parameters(d);
-  return compare("p_{j+1}", printed_side(r, "p_{j+1} (Newmark)"), d.classical_momentum_right,
+  return compare("p_{j+1}", printed_side(r, "p_{j+1} (Newmark)"), newmark_derivation().momentum_right,
                  classical_momentum(d.m, d.h, [&par](const ex& x) { return par.force_gradient(x); }, d.q_j, d.q_next));
 }
 
 printed_outcome newmark_system(const paper_reading& r) {
   const symbolic_derivation& d = derivation();
   // p_{j+1} = dL_d/dq_r (q_j, q_{j+1}) and p_j = -dL_d/dq_l (q_j, q_{j+1}), as derived.
-  const GiNaC::lst momenta{d.p_next == d.classical_momentum_right, d.p_j == d.classical_momentum_left};
+  const GiNaC::lst momenta{d.p_next == newmark_derivation().momentum_right, d.p_j == newmark_derivation().momentum_left};
   printed_outcome o;
   o.holds = true;
   for (const char* name : {"systeme-dynamique-discret-ordre-2#0", "systeme-dynamique-discret-ordre-2#1"}) {
@@ -99,18 +99,17 @@ printed_outcome newmark_system(const paper_reading& r) {
     o.holds = o.holds && gap.is_zero();
     o.proved += std::string(o.proved.empty() ? "" : "; ") + "printed " + name + ", left − right with the derived momenta = " + text_of(gap);
   }
-  if (!o.holds) o.correction = "as derived: p_{j+1} = " + text_of(d.classical_momentum_right) + ", p_j = " + text_of(d.classical_momentum_left);
+  if (!o.holds) o.correction = "as derived: p_{j+1} = " + text_of(newmark_derivation().momentum_right) + ", p_j = " + text_of(newmark_derivation().momentum_left);
   o.derived = "the momenta are derived from L_d (no core formula to compare)";
   return o;
 }
 
 printed_outcome newmark_matrix(const paper_reading& r) {
   const symbolic_derivation& d = derivation();
-  return compare("Phi", printed_side(r, "matrice-symplectique-ordre-2"), d.newmark_phi, as_matrix(newmark_map(parameters(d))));
+  return compare("Phi", printed_side(r, "matrice-symplectique-ordre-2"), newmark_derivation().newmark_phi, as_matrix(newmark_map(parameters(d))));
 }
 
 printed_outcome newmark_det(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
   const ex& phi = printed_side(r, "matrice-symplectique-ordre-2");
   printed_outcome o;
   o.property = true;
@@ -121,7 +120,7 @@ printed_outcome newmark_det(const paper_reading& r) {
   const ex det = GiNaC::normal(GiNaC::ex_to<GiNaC::matrix>(phi).determinant() - 1);
   o.holds = det.is_zero();
   o.proved = "det(printed Phi) − 1 = " + text_of(det);
-  const ex derived_det = GiNaC::normal(d.newmark_phi.determinant() - 1);
+  const ex derived_det = GiNaC::normal(newmark_derivation().newmark_phi.determinant() - 1);
   o.derived_holds = derived_det.is_zero();
   o.derived = "det(derived Phi) − 1 = " + text_of(derived_det);
   return o;

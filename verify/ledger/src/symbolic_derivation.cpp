@@ -79,20 +79,10 @@ const symbolic_derivation& derivation() {
     r.q_l = s["q_l"], r.q_m = s["q_m"], r.q_r = s["q_r"], r.p = s["p"], r.q = s["q"];
     r.q_prev = s["q_j-1"], r.q_j = s["q_j"], r.q_next = s["q_j+1"], r.p_j = s["p_j"], r.p_next = s["p_j+1"];
     const GiNaC::symbol& t = GiNaC::ex_to<GiNaC::symbol>(r.t);
-    const GiNaC::symbol& l = GiNaC::ex_to<GiNaC::symbol>(r.q_l);
     const GiNaC::symbol& mid = GiNaC::ex_to<GiNaC::symbol>(r.q_m);
     const GiNaC::symbol& right = GiNaC::ex_to<GiNaC::symbol>(r.q_r);
     const potential_function harmonic = [&r](const ex& x) { return r.harmonic_V(x); };
     const potential_function general = [&r](const ex& x) { return r.general_V(x); };
-
-    // §2, V harmonic: L_d, its momenta, and Newmark's Φ by eliminating q_{j-1}.
-    const ex L_d = r.classical_lagrangian(harmonic, r.q_l, r.q_r);
-    const auto classical_p = [&](const ex& a, const ex& b) { return L_d.diff(right).subs(GiNaC::lst{r.q_l == a, r.q_r == b}); };
-    r.classical_momentum_right = GiNaC::normal(classical_p(r.q_j, r.q_next));
-    r.classical_momentum_left = GiNaC::normal(-L_d.diff(l).subs(GiNaC::lst{r.q_l == r.q_j, r.q_r == r.q_next}));
-    const ex classical_scheme = L_d.diff(right).subs(GiNaC::lst{r.q_l == r.q_prev, r.q_r == r.q_j}) +
-                                L_d.diff(l).subs(GiNaC::lst{r.q_l == r.q_j, r.q_r == r.q_next});
-    r.newmark_phi = eliminate(r, classical_p, classical_scheme);
 
     // §3: the quadratic interpolant and its velocity at 0, h/2, h.
     r.interpolant = interpolating_polynomial(r.t, {{0, r.q_l}, {r.h / 2, r.q_m}, {r.h, r.q_r}});
@@ -126,6 +116,24 @@ const symbolic_derivation& derivation() {
     return r;
   }();
   return d;
+}
+
+const classical_derivation& newmark_derivation() {
+  static const classical_derivation n = [] {
+    const symbolic_derivation& d = derivation();
+    const GiNaC::symbol& l = GiNaC::ex_to<GiNaC::symbol>(d.q_l);
+    const GiNaC::symbol& right = GiNaC::ex_to<GiNaC::symbol>(d.q_r);
+    const ex L_d = d.classical_lagrangian([&d](const ex& x) { return d.harmonic_V(x); }, d.q_l, d.q_r);
+    const auto momentum = [&](const ex& a, const ex& b) { return L_d.diff(right).subs(GiNaC::lst{d.q_l == a, d.q_r == b}); };
+    const ex scheme = L_d.diff(right).subs(GiNaC::lst{d.q_l == d.q_prev, d.q_r == d.q_j}) +
+                      L_d.diff(l).subs(GiNaC::lst{d.q_l == d.q_j, d.q_r == d.q_next});
+    classical_derivation c;
+    c.momentum_right = GiNaC::normal(momentum(d.q_j, d.q_next));
+    c.momentum_left = GiNaC::normal(-L_d.diff(l).subs(GiNaC::lst{d.q_l == d.q_j, d.q_r == d.q_next}));
+    c.newmark_phi = eliminate(d, momentum, scheme);
+    return c;
+  }();
+  return n;
 }
 
 }  // namespace simpson::verify::detail

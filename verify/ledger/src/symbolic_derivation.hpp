@@ -23,11 +23,8 @@ struct symbolic_derivation {
   GiNaC::ex general_V(const GiNaC::ex& x) const;   // V, uninterpreted
   GiNaC::ex harmonic_V(const GiNaC::ex& x) const;  // (oscillateur harmonique): m ω² x²/2
 
-  // §2: L_d from the affine interpolant and the midpoint rule; its momentum and scheme; Newmark's Φ.
+  // §2: L_d from the affine interpolant and the midpoint rule (its momenta and Φ: newmark_derivation()).
   GiNaC::ex classical_lagrangian(const potential_function& V, const GiNaC::ex& l, const GiNaC::ex& r) const;
-  GiNaC::ex classical_momentum_right;  // ∂L_d/∂q_r (q_j, q_{j+1}), V harmonic: p_{j+1}
-  GiNaC::ex classical_momentum_left;   // −∂L_d/∂q_l (q_j, q_{j+1}), V harmonic: p_j by the Euler–Lagrange equation
-  GiNaC::matrix newmark_phi{2, 2};
 
   // §3: the quadratic through (0, q_l), (h/2, q_m), (h, q_r), solved for; its velocity.
   GiNaC::ex interpolant, velocity, g_l, g_m, g_r;
@@ -49,6 +46,14 @@ struct symbolic_derivation {
 
 /// The derivation, performed once per process in paper_symbols().
 const symbolic_derivation& derivation();
+
+/// §2, V harmonic: L_d's momenta and Newmark's Φ by eliminating q_{j-1}; once per process, on first use.
+struct classical_derivation {
+  GiNaC::ex momentum_right;  // ∂L_d/∂q_r (q_j, q_{j+1}): p_{j+1}
+  GiNaC::ex momentum_left;   // −∂L_d/∂q_l (q_j, q_{j+1}): p_j by the Euler–Lagrange equation
+  GiNaC::matrix newmark_phi{2, 2};
+};
+const classical_derivation& newmark_derivation();
 
 /// The one-step matrix of a linear map (p_j, q_j) → (p', q'): the coefficients of p_j and q_j.
 GiNaC::matrix one_step_matrix_of(const GiNaC::ex& p_next, const GiNaC::ex& q_next, const GiNaC::ex& p, const GiNaC::ex& q);
