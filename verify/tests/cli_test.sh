@@ -169,6 +169,22 @@ for id in taylor-display classical-action-range simpson-action-range gamma-syste
   grep -q "$id: verdict holds, expected erratum" "$work/err" || fail "corrected paper: $id not named: $(cat "$work/err")"
 done
 grep -q "phi3-det: verdict" "$work/err" && fail "corrected paper: phi3-det named"
+# Selection: --claims alone runs no section, --sections alone no claim; the title and report.json say so.
+check "claims only" 0 --claims "phi3-det, hd-invariance" --out "$work/claims-only"
+grep -q '"sections": \[\]' "$work/claims-only/report.json" || fail "claims only: overrides.sections not empty"
+grep -q '^# simpson-verify report: scene `paper`: claims phi3-det, hd-invariance only; no sections' "$work/claims-only/report.md" \
+  || fail "claims only: title does not say so"
+ls "$work/claims-only"/*.csv >/dev/null 2>&1 && fail "claims only: a section ran"
+check "sections only" 0 --scene quick --sections stability --out "$work/sections-only"
+grep -q '^0 claims' "$work/out" || fail "sections only: claims ran"
+[ -f "$work/sections-only/stability_extreme.dat" ] || fail "sections only: no stability files"
+check "unknown section" 2 --sections bogus --out "$work/none-section"
+check "quiet" 0 --claims phi3-det --precisions double --quiet --out "$work/quiet"
+[ "$(wc -l <"$work/out")" = 1 ] && [ ! -s "$work/err" ] || fail "quiet: more than the summary line: $(cat "$work/out" "$work/err")"
+# An internal error (a check that throws) is exit 3, named, with the report still written.
+SIMPSON_VERIFY_INJECT_FAULT=phi3-det check "internal error" 3 --claims phi3-det,hd-invariance --precisions double --out "$work/fault"
+grep -q 'internal error (a bug in the harness) in phi3-det: injected fault' "$work/err" || fail "internal error: not named: $(cat "$work/err")"
+[ -f "$work/fault/report.json" ] || fail "internal error: no report"
 check "list claims" 0 --list-claims
 check "version" 0 --version
 

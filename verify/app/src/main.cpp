@@ -1,6 +1,7 @@
 // simpson-verify: runs a scene of the claims ledger and writes its report.
 // Exit codes: 0 every verdict as expected; 1 some verdict differs (each named on stderr);
-// 2 bad input or usage (one line on stderr, nothing written).
+// 2 bad input or usage (one line on stderr, nothing written); 3 an internal error (a bug in the
+// harness: a check that threw, or an unexpected exception); 128 + n when stopped by signal n.
 
 #include <simpson/verify/experiment_cost.hpp>
 #include <simpson/verify/interruption.hpp>
@@ -8,6 +9,7 @@
 #include <simpson/verify/progress.hpp>
 #include <simpson/verify/report.hpp>
 #include <simpson/verify/scene.hpp>
+#include <simpson/verify/selection.hpp>
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
@@ -84,12 +86,20 @@ int main(int argc, char** argv) {
   CLI::App app{"simpson-verify: proves, rechecks and reports every claim of the symplectic Simpson paper"};
   app.set_version_flag("--version", std::string("simpson-verify ") + SIMPSON_VERSION);
   std::string scene_name = "paper", out_dir, seed_text, samples_text, paper_file;
-  std::vector<std::string> claim_ids, precision_names;
-  bool want_claims = false, want_scenes = false, want_precisions = false, allow_expensive = false, long_run = false;
+  std::vector<std::string> claim_ids, section_list, precision_names;
+  bool want_claims = false, want_scenes = false, want_precisions = false, allow_expensive = false, long_run = false,
+       quiet = false;
   app.add_option("--scene", scene_name, "embedded scene name (paper, quick) or a scene JSON file")->capture_default_str();
   app.add_option("--paper", paper_file, "the paper's LaTeX source to check (default: the embedded GSI 2023 text)");
   app.add_option("--out", out_dir, "report directory (default: reports/out/<scene>)");
-  app.add_option("--claims", claim_ids, "comma-separated claim ids (default: the scene's)")->delimiter(',');
+  app.add_option("--claims", claim_ids,
+                 "comma-separated claim ids; alone, runs these claims and no section (default: the scene's)")
+      ->delimiter(',');
+  app.add_option("--sections", section_list,
+                 "comma-separated sections (table1, work_precision, stability, long_time) or none; alone, runs these "
+                 "sections and no claim (default: the scene's)")
+      ->delimiter(',');
+  app.add_flag("--quiet", quiet, "print only the summary line and errors");
   app.add_option("--precisions", precision_names, "comma-separated precisions (default: the scene's)")->delimiter(',');
   app.add_option("--seed", seed_text, "seed of the random samples (default: the scene's, printed in the report)");
   app.add_option("--samples", samples_text, "random samples per numeric recheck and precision, 1..10000");
@@ -118,20 +128,17 @@ int main(int argc, char** argv) {
     s = load_scene(scene_name);
     if (!paper_file.empty()) s.paper_file = paper_file;
     paper = read_scene_paper(s);  // a paper that is missing or does not parse is bad input: nothing runs
-    if (!claim_ids.empty()) {
-      std::vector<std::string> ids;
-      for (const claim& c : ledger()) {
-        for (const std::string& id : claim_ids) {
-          if (find_claim(id).id == c.id && (ids.empty() || ids.back() != c.id)) ids.push_back(c.id);
-        }
-      }
-      s.claims = ids;
-    }
+    scene_selection selection;
+    if (app.count("--claims") > 0) selection.claims = claim_ids;
+    if (app.count("--sections") > 0) selection.sections = section_list;
+    apply_selection(s, selection);
+    if (!paper_file.empty()) s.overrides["paper"] = paper_file;
     if (!precision_names.empty()) {
       s.precisions.clear();
       for (const std::string& name : precision_names) s.precisions.push_back(simpson::precision::parse(name));
+      s.overrides["precisions"] = precision_names;
     }
-    const auto parse_count = [](const std::string& flag, const std::string& text, unsigned long long max) {
+    const auto parse_count = [](const std::string& flag, const std::string& text, unsigned long long min, unsigned long long max) {
       std::size_t used = 0;
       unsigned long long v = 0;
       try {
@@ -140,21 +147,25 @@ int main(int argc, char** argv) {
       } catch (const std::exception&) {
         used = 0;
       }
-      if (used != text.size() || used == 0 || v > max) {
-        throw std::invalid_argument(flag + " '" + text + "': expected an integer from 0 to " + std::to_string(max));
+      if (used != text.size() || used == 0 || v < min || v > max) {
+        throw std::invalid_argument(flag + " '" + text + "': expected an integer from " + std::to_string(min) + " to " +
+                                    std::to_string(max));
       }
       return v;
     };
-    if (!seed_text.empty()) s.seed = parse_count("--seed", seed_text, ~0ULL);
+    if (!seed_text.empty()) {
+      s.seed = parse_count("--seed", seed_text, 0, ~0ULL);
+      s.overrides["seed"] = s.seed;
+    }
     if (!samples_text.empty()) {
-      const unsigned long long n = parse_count("--samples", samples_text, 10000);
-      if (n < 1) throw std::invalid_argument("--samples '" + samples_text + "': expected an integer from 1 to 10000");
-      s.samples = static_cast<unsigned>(n);
+      s.samples = static_cast<unsigned>(parse_count("--samples", samples_text, 1, 10000));
+      s.overrides["samples"] = s.samples;
     }
     if (long_run) {
       if (!s.experiments.long_time) s.experiments.long_time = long_time_settings{};
       s.experiments.long_time->steps_double = 1'000'000'000;
       allow_expensive = true;
+      s.overrides["long"] = true;
     }
     cost = estimate_cost(s.experiments);
     if (cost.units > default_cost_budget && !allow_expensive) {
@@ -175,7 +186,7 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  if (s.experiments.any()) {
+  if (s.experiments.any() && !quiet) {
     fmt::print(stderr, "experiments: estimated cost {:.3g} units, about {} (budget {:.3g} units, about {})\n", cost.units,
                seconds_text(cost.units), default_cost_budget, seconds_text(default_cost_budget));
     install_progress();
@@ -185,9 +196,10 @@ int main(int argc, char** argv) {
   try {
     const auto start = std::chrono::steady_clock::now();
     const run_record record = run(s, *paper, [&](std::size_t k, std::size_t n, const claim& c, const claim_outcome* done) {
-      if (!done) return;
+      if (!done || quiet) return;
       fmt::print(stderr, "[{:>2}/{}] {:<34} {:<8} {:.2f} s\n", k + 1, n, c.id, to_string(done->result.outcome), done->seconds);
-    }, [](const std::string& section, double seconds) {
+    }, [quiet](const std::string& section, double seconds) {
+      if (quiet) return;
       if (::isatty(STDERR_FILENO)) fmt::print(stderr, "\r\033[K");
       fmt::print(stderr, "[section] {:<34} {:.2f} s\n", section, seconds);
     });
@@ -196,12 +208,24 @@ int main(int argc, char** argv) {
     for (const std::string& failure : plots.failures) fmt::print(stderr, "simpson-verify: warning: plot not drawn: {}\n", failure);
     for (const claim_outcome& o : record.outcomes) {
       const bool as_expected = o.result.outcome == o.expected;
-      fmt::print("  {:<8} {:<34}{}\n", to_string(o.result.outcome), o.checked->id,
-                 as_expected ? "" : "  <- expected " + to_string(o.expected));
+      if (!quiet) {
+        fmt::print("  {:<8} {:<34}{}\n", to_string(o.result.outcome), o.checked->id,
+                   as_expected ? "" : "  <- expected " + to_string(o.expected));
+      }
       if (!as_expected) {
         fmt::print(stderr, "simpson-verify: {}: verdict {}, expected {}\n", o.checked->id, to_string(o.result.outcome),
                    to_string(o.expected));
       }
+    }
+    for (const std::string& error : record.internal_errors) {
+      fmt::print(stderr, "simpson-verify: internal error (a bug in the harness) in {}\n", error);
+    }
+    const std::string scene_text = s.name + (s.selection.empty() ? "" : ": " + s.selection);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const int code = !record.internal_errors.empty() ? 3 : all_as_expected(record) ? 0 : 1;
+    if (quiet) {
+      fmt::print("{} (scene {}, seed {}, {:.1f} s)\n", summary_line(record), scene_text, s.seed, seconds);
+      return code;
     }
     fmt::print("\nPhi3 at the paper's configuration ({})\n{:<12} {:<10} {:<27} {:<11} {:<13} {}\n",
                record.paper_configuration["parameters"].get<std::string>(), "precision", "epsilon", "alpha = delta",
@@ -212,19 +236,21 @@ int main(int argc, char** argv) {
                  row["det_minus_one"].get<std::string>(), row["discriminant"].get<std::string>(),
                  row["hd_change_one_step"].get<std::string>());
     }
-    fmt::print("\n{} (scene {}, seed {}, {:.1f} s)\nreport: {}, {}\n", summary_line(record), s.name, s.seed,
-               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+    fmt::print("\n{} (scene {}, seed {}, {:.1f} s)\nreport: {}, {}\n", summary_line(record), scene_text, s.seed, seconds,
                (out / "report.md").string(), (out / "report.json").string());
     if (!record.sections.empty()) {
       fmt::print("sections: ");
       for (std::size_t k = 0; k < record.sections.size(); ++k) fmt::print("{}{}", k ? ", " : "", record.sections[k].name);
       fmt::print(" ({} plots drawn); html: {}\n", plots.drawn.size(), (out / "report.html").string());
     }
-    return all_as_expected(record) ? 0 : 1;
+    return code;
   } catch (const interrupted& e) {
     return interrupted_exit(e);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "simpson-verify: error: %s\n", e.what());
+  } catch (const std::filesystem::filesystem_error& e) {  // writing the report: the output directory
+    std::fprintf(stderr, "simpson-verify: cannot write the report: %s\n", e.what());
     return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "simpson-verify: internal error (a bug in the harness): %s\n", e.what());
+    return 3;
   }
 }

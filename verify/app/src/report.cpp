@@ -148,6 +148,7 @@ json report_json(const run_record& r, const plot_outcome& plots) {
               {"samples", r.run_scene.samples},
               {"precisions", precision_names(r.run_scene.precisions)},
               {"paper", r.paper_origin},
+              {"overrides", r.run_scene.overrides},
               {"summary", summary_json(r)},
               {"all_as_expected", all_as_expected(r)},
               {"claims", claims},
@@ -167,7 +168,8 @@ std::string report_markdown(const run_record& r) { return report_markdown(r, all
 
 std::string report_markdown(const run_record& r, const plot_outcome& plots) {
   std::string md;
-  md += fmt::format("# simpson-verify report: scene `{}`\n\n", r.run_scene.name);
+  md += fmt::format("# simpson-verify report: scene `{}`{}\n\n", r.run_scene.name,
+                    r.run_scene.selection.empty() ? "" : ": " + r.run_scene.selection);
   if (!r.run_scene.description.empty()) md += r.run_scene.description + "\n\n";
   md += fmt::format("**{}**\n\n", summary_line(r));
   md += fmt::format("{} of {} claims read their formula from the paper's LaTeX source ({}) and prove it in GiNaC against "

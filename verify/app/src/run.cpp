@@ -6,6 +6,7 @@
 #include <simpson/verify/run.hpp>
 
 #include <chrono>
+#include <cstdlib>
 #include <exception>
 
 namespace simpson::verify {
@@ -37,6 +38,9 @@ run_record run(const scene& s, const paper_reading& paper, const progress_callba
     outcome.expected = override_it == s.expected_overrides.end() ? c.expected : override_it->second;
     const auto claim_start = clock::now();
     try {
+      // A test hook for the exit code of an internal error: the named claim's check throws.
+      const char* fault = std::getenv("SIMPSON_VERIFY_INJECT_FAULT");
+      if (fault != nullptr && c.id == fault) throw std::logic_error("injected fault (SIMPSON_VERIFY_INJECT_FAULT)");
       outcome.result = check_claim(c, ctx);
     } catch (const interrupted&) {
       throw;
@@ -44,6 +48,7 @@ run_record run(const scene& s, const paper_reading& paper, const progress_callba
       outcome.result = claim_result{};
       outcome.result.outcome = verdict::fails;
       outcome.result.evidence["error"] = std::string("the check threw: ") + e.what();
+      r.internal_errors.push_back(c.id + ": " + e.what());
     }
     outcome.seconds = std::chrono::duration<double>(clock::now() - claim_start).count();
     r.outcomes.push_back(std::move(outcome));

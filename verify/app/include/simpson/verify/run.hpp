@@ -24,7 +24,9 @@ struct run_record {
   scene run_scene;
   std::string paper_origin;  // the paper's source the formula claims read
   std::vector<claim_outcome> outcomes;
-  double ginac_derivation_seconds = 0;  // the GiNaC derivation the formula claims share, once per process (0 when none ran)
+  double ginac_derivation_seconds = 0;
+  /// Claims whose check threw ("id: message"): a bug in the harness, exit code 3.
+  std::vector<std::string> internal_errors;  // the GiNaC derivation the formula claims share, once per process (0 when none ran)
   json paper_configuration;
   json environment;
   std::vector<section_result> sections;  // the experiment sections the scene asked for, in order
@@ -35,7 +37,8 @@ struct run_record {
 /// Called before and after each claim: (index, count, claim, outcome or nullptr).
 using progress_callback = std::function<void(std::size_t, std::size_t, const claim&, const claim_outcome*)>;
 
-/// Runs every claim of the scene; a check that throws is recorded as `fails` with the message.
+/// Runs every claim of the scene; a check that throws is recorded as `fails` with the message, and
+/// in `internal_errors`.
 /// Throws simpson::verify::interrupted when interruption_signal() is set (checked between claims
 /// and between numeric samples).
 /// Then runs the experiment sections the scene asks for (table1, work_precision, stability,

@@ -39,6 +39,10 @@ struct scene {
   experiment_settings experiments;
   /// The paper's source the formula claims read: empty for the embedded copy, else a file.
   std::string paper_file;
+  /// What the command line changed in the scene (report.json "overrides"), and the selection in
+  /// words for the title ("claims phi3-det only; no sections"; empty when the scene runs whole).
+  json overrides = json::object();
+  std::string selection;
 };
 
 /// Parses and validates a scene; `origin` names it in errors. Throws std::invalid_argument with a

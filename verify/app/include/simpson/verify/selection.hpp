@@ -1,0 +1,28 @@
+#pragma once
+// What a command line selects from a scene: its claims and its experiment sections. A CI job asks
+// for one claim and gets that claim only, with the run's title and report.json saying so.
+
+#include <simpson/verify/scene.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace simpson::verify {
+
+/// The experiment sections by name, in the order a run computes them.
+const std::vector<std::string>& section_names();
+
+struct scene_selection {
+  std::optional<std::vector<std::string>> claims;    // --claims: ids (spaces around them ignored)
+  std::optional<std::vector<std::string>> sections;  // --sections: names, or {"none"}
+};
+
+/// Applies the selection to the scene: --claims alone runs those claims and no section, --sections
+/// alone those sections and no claim, both both. A section the scene does not define runs with its
+/// defaults. Records what changed in `s.overrides` ("claims", "sections") and in `s.selection` (for
+/// the title: "claims phi3-det only; no sections"). Throws std::invalid_argument naming an unknown
+/// claim or section.
+void apply_selection(scene& s, const scene_selection& selection);
+
+}  // namespace simpson::verify

@@ -1,0 +1,87 @@
+#include <simpson/verify/selection.hpp>
+
+#include <simpson/verify/ledger.hpp>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace simpson::verify {
+namespace {
+
+std::string trimmed(const std::string& text) {
+  const auto first = text.find_first_not_of(" \t");
+  if (first == std::string::npos) return "";
+  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
+}
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string out;
+  for (const std::string& item : items) out += (out.empty() ? "" : ", ") + item;
+  return out;
+}
+
+void keep_sections(experiment_settings& e, const std::vector<std::string>& names) {
+  const auto wanted = [&names](const char* name) { return std::find(names.begin(), names.end(), name) != names.end(); };
+  if (!wanted("table1")) e.table1.reset();
+  else if (!e.table1) e.table1 = table1_settings{};
+  if (!wanted("work_precision")) e.work_precision.reset();
+  else if (!e.work_precision) e.work_precision = work_precision_settings{};
+  if (!wanted("stability")) e.stability.reset();
+  else if (!e.stability) e.stability = stability_settings{};
+  if (!wanted("long_time")) e.long_time.reset();
+  else if (!e.long_time) e.long_time = long_time_settings{};
+}
+
+}  // namespace
+
+const std::vector<std::string>& section_names() {
+  static const std::vector<std::string> names{"table1", "work_precision", "stability", "long_time"};
+  return names;
+}
+
+void apply_selection(scene& s, const scene_selection& selection) {
+  if (!selection.claims && !selection.sections) return;
+  std::vector<std::string> parts;
+  if (selection.claims) {
+    std::vector<std::string> ids;
+    for (const std::string& given : *selection.claims) {
+      const std::string id = trimmed(given);
+      if (id.empty()) continue;
+      const std::string& known = find_claim(id).id;  // throws std::invalid_argument naming an unknown id
+      if (std::find(ids.begin(), ids.end(), known) == ids.end()) ids.push_back(known);
+    }
+    if (ids.empty()) throw std::invalid_argument("--claims: no claim id given");
+    std::vector<std::string> ordered;  // in ledger order
+    for (const claim& c : ledger()) {
+      if (std::find(ids.begin(), ids.end(), c.id) != ids.end()) ordered.push_back(c.id);
+    }
+    s.claims = ordered;
+    s.overrides["claims"] = ordered;
+    parts.push_back("claims " + joined(ordered) + " only");
+  } else {
+    s.claims.clear();
+    s.overrides["claims"] = json::array();
+    parts.push_back("no claims");
+  }
+  std::vector<std::string> sections;
+  if (selection.sections) {
+    for (const std::string& given : *selection.sections) {
+      const std::string name = trimmed(given);
+      if (name.empty() || name == "none") continue;
+      if (std::find(section_names().begin(), section_names().end(), name) == section_names().end()) {
+        throw std::invalid_argument("--sections: unknown section '" + name + "' (known: " + joined(section_names()) + ", or none)");
+      }
+      if (std::find(sections.begin(), sections.end(), name) == sections.end()) sections.push_back(name);
+    }
+  }
+  keep_sections(s.experiments, sections);
+  std::vector<std::string> ordered;
+  for (const std::string& name : section_names()) {
+    if (std::find(sections.begin(), sections.end(), name) != sections.end()) ordered.push_back(name);
+  }
+  s.overrides["sections"] = ordered;
+  parts.push_back(ordered.empty() ? "no sections" : "sections " + joined(ordered) + " only");
+  s.selection = parts.front() + "; " + parts.back();
+}
+
+}  // namespace simpson::verify
