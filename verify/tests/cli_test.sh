@@ -185,6 +185,15 @@ check "quiet" 0 --claims phi3-det --precisions double --quiet --out "$work/quiet
 SIMPSON_VERIFY_INJECT_FAULT=phi3-det check "internal error" 3 --claims phi3-det,hd-invariance --precisions double --out "$work/fault"
 grep -q 'internal error (a bug in the harness) in phi3-det: injected fault' "$work/err" || fail "internal error: not named: $(cat "$work/err")"
 [ -f "$work/fault/report.json" ] || fail "internal error: no report"
+# compare: the committed reference against itself, against an altered copy, and bad input.
+reference="$(dirname "$0")/../../reports/reference/paper"
+check "compare equal" 0 compare "$reference" "$reference"
+grep -q '^the reports agree$' "$work/out" || fail "compare equal: no agreement line"
+mkdir -p "$work/altered-report"
+sed 's/"verdict": "erratum"/"verdict": "holds"/' "$reference/report.json" >"$work/altered-report/report.json"
+check "compare altered" 1 compare "$reference" "$work/altered-report"
+grep -q '^claim gamma-system: verdict: "erratum" → "holds"$' "$work/out" || fail "compare altered: claim not named: $(head -12 "$work/out")"
+check "compare missing" 2 compare "$reference" "$work/no-such-report"
 check "list claims" 0 --list-claims
 check "version" 0 --version
 

@@ -5,6 +5,7 @@
 // To accept a deliberate change: build/bin/simpson-verify --out reports/reference/paper
 
 #include <simpson/verify/report.hpp>
+#include <simpson/verify/report_compare.hpp>
 
 #include "report_comparison.hpp"
 #include "report_tree.hpp"
@@ -30,6 +31,10 @@ TEST(ReferenceReport, PaperSceneReproducesTheCommittedReport) {
   scene s = load_scene("paper");
   s.experiments.work_precision->timing = timing_policy{1, 0.01};
   const run_record r = run(s);
+  // `simpson-verify compare` finds no difference (its tolerances: README, report_compare.hpp) ...
+  const std::vector<std::string> differences = compare_reports(load_report(dir), report_json(r));
+  for (const std::string& line : differences) ADD_FAILURE() << line;
+  // ... and, on this machine, the two agree byte for byte apart from timing and environment.
   const json expected = test::without_volatile(json::parse(read(dir / "report.json")));
   const json actual = test::without_volatile(report_json(r));
   ASSERT_EQ(expected["claims"].size(), actual["claims"].size());
@@ -48,6 +53,34 @@ TEST(ReferenceReport, PaperSceneReproducesTheCommittedReport) {
   // Every table of the committed page is a table (a '|' left unescaped once made one a paragraph).
   test::expect_html_tables_rendered(dir);
   test::expect_no_bare_non_finite(dir);
+}
+
+TEST(ReferenceReport, CompareFindsAChangedFigureAndNamesIt) {
+  const std::filesystem::path dir = std::filesystem::path(SIMPSON_SOURCE_DIR) / "reports" / "reference" / "paper";
+  const json reference = load_report(dir);
+  EXPECT_TRUE(compare_reports(reference, reference).empty());
+  json altered = reference;
+  for (json& c : altered["claims"]) {
+    if (c["id"] == "phi3-det") c["verdict"] = "fails";
+  }
+  altered["experiments"]["table1"]["entries"][0]["ours"] = "9.99e-01";
+  altered["timing"]["total"] = 1e9;                                              // ignored
+  altered["claims"][0]["evidence"]["exact"][0]["points_evaluated"] = 1;          // an integer: compared
+  const std::vector<std::string> lines = compare_reports(reference, altered);
+  ASSERT_EQ(lines.size(), 3u) << ::testing::PrintToString(lines);
+  EXPECT_NE(lines[0].find("claim lemma-dimensional-scaling: evidence.exact[0].points_evaluated: 225 → 1"), std::string::npos) << lines[0];
+  EXPECT_NE(lines[1].find("claim phi3-det: verdict: \"holds\" → \"fails\""), std::string::npos) << lines[1];
+  EXPECT_NE(lines[2].find("section table1, entries row 0, column ours"), std::string::npos) << lines[2];
+  // A residual's digits may change; leaving its bound may not.
+  json residual = reference;
+  for (json& c : residual["claims"]) {
+    if (c["id"] == "phi3-det") {
+      c["evidence"]["numeric"]["ladder"][0]["max_residual"] = "3.00e-16";
+      EXPECT_TRUE(compare_reports(reference, residual).empty());
+      c["evidence"]["numeric"]["ladder"][0]["within_bound"] = false;
+    }
+  }
+  EXPECT_EQ(compare_reports(reference, residual).size(), 1u);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <simpson/verify/ledger.hpp>
 #include <simpson/verify/progress.hpp>
 #include <simpson/verify/report.hpp>
+#include <simpson/verify/report_compare.hpp>
 #include <simpson/verify/scene.hpp>
 #include <simpson/verify/selection.hpp>
 
@@ -80,6 +81,28 @@ int list_precisions() {
   return 0;
 }
 
+/// `simpson-verify compare OLD NEW`: 0 when the reports agree, 1 on a difference (one line each), 2
+/// on bad input.
+int compare_report_directories(const std::string& old_dir, const std::string& new_dir, bool quiet) {
+  json old_report, new_report;
+  try {
+    old_report = load_report(old_dir);
+    new_report = load_report(new_dir);
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "simpson-verify: %s\n", e.what());
+    return 2;
+  }
+  const std::vector<std::string> differences = compare_reports(old_report, new_report);
+  if (!quiet) {
+    fmt::print("compare {} (old) with {} (new); tolerances:\n", old_dir, new_dir);
+    for (const std::string& line : comparison_tolerances()) fmt::print("  - {}\n", line);
+  }
+  for (const std::string& line : differences) fmt::print("{}\n", line);
+  fmt::print("{}\n", differences.empty() ? std::string("the reports agree")
+                                          : fmt::format("{} {}", differences.size(), differences.size() == 1 ? "difference" : "differences"));
+  return differences.empty() ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -100,6 +123,13 @@ int main(int argc, char** argv) {
                  "sections and no claim (default: the scene's)")
       ->delimiter(',');
   app.add_flag("--quiet", quiet, "print only the summary line and errors");
+  std::string compare_old, compare_new;
+  CLI::App* compare = app.add_subcommand(
+      "compare", "compare two report directories (a run against reports/reference/paper): exit 0 when they agree, 1 on a "
+                 "difference (one line each), 2 on bad input");
+  compare->add_option("old", compare_old, "the reference report directory (or its report.json)")->required();
+  compare->add_option("new", compare_new, "the report directory to check (or its report.json)")->required();
+  compare->fallthrough();
   app.add_option("--precisions", precision_names, "comma-separated precisions (default: the scene's)")->delimiter(',');
   app.add_option("--seed", seed_text, "seed of the random samples (default: the scene's, printed in the report)");
   app.add_option("--samples", samples_text, "random samples per numeric recheck and precision, 1..10000");
@@ -116,6 +146,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "simpson-verify: %s\n", e.what());
     return 2;
   }
+
+  if (*compare) return compare_report_directories(compare_old, compare_new, quiet);
 
   scene s;
   std::optional<simpson::verify::paper_reading> paper;

@@ -1,5 +1,7 @@
 #include <simpson/verify/report.hpp>
 
+#include <simpson/verify/junit.hpp>
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -269,7 +271,7 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
 }
 
 std::vector<std::string> report_file_names(const run_record& r, const plot_outcome& plots) {
-  std::vector<std::string> names{"report.json", "report.md", "report.html"};
+  std::vector<std::string> names{"report.json", "report.md", "report.html", "report.junit.xml"};
   for (const section_result& section : r.sections) {
     for (const data_file& f : section_files(section)) names.push_back(f.name);
     for (const plot_spec& plot : section_plots(section)) {
@@ -285,7 +287,8 @@ std::vector<std::string> report_file_names(const run_record& r, const plot_outco
 
 plot_outcome write_report_files(const std::filesystem::path& dir, const run_record& r) {
   return write_report_directory(dir, r.sections, [&](const plot_outcome& plots) {
-    return report_documents{report_json(r, plots), report_markdown(r, plots), "simpson-verify report: scene " + r.run_scene.name};
+    return report_documents{report_json(r, plots), report_markdown(r, plots), "simpson-verify report: scene " + r.run_scene.name,
+                            report_junit(r)};
   });
 }
 

@@ -163,6 +163,7 @@ plot_outcome write_report_directory(const std::filesystem::path& dir, const std:
     write_file(staging / "report.json", docs.report.dump(2) + "\n");
     write_file(staging / "report.md", docs.markdown);
     write_file(staging / "report.html", render_html(docs.markdown, staging, docs.title));
+    if (!docs.junit.empty()) write_file(staging / "report.junit.xml", docs.junit);
     throw_if_interrupted();
     // Everything is written: the staged directory replaces the previous report whole.
     if (std::filesystem::exists(target)) {

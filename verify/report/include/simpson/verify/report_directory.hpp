@@ -26,6 +26,7 @@ struct report_documents {
   json report;           // report.json
   std::string markdown;  // report.md, rendered to report.html
   std::string title;     // of report.html
+  std::string junit;     // report.junit.xml (not written when empty)
 };
 
 /// Checks, before anything runs, that `dir` can take a report: it does not exist yet (its parent

@@ -1,0 +1,31 @@
+#pragma once
+// Comparing two reports (report.json of two report directories), for CI: a run against the
+// committed reference. One line per difference, naming the claim (or the section, table, row and
+// column), the old and the new value.
+//
+// Tolerances, by kind of figure (also printed by `simpson-verify compare`):
+// - verdicts, expected verdicts, exact values, integers, words and flags: equal;
+// - figures computed in floating point (decimal strings, JSON numbers): equal to the digits printed;
+// - numeric residuals of the rechecks (max_residual, bound_at_that_sample, max_residual_over_bound):
+//   their digits may differ, but within_bound must stay true;
+// - timings (every member named "timing") and the build environment: ignored.
+
+#include <simpson/verify/json.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace simpson::verify {
+
+/// The tolerances above, one line each.
+const std::vector<std::string>& comparison_tolerances();
+
+/// The differences between two report.json documents, one line each; empty when they agree.
+std::vector<std::string> compare_reports(const json& old_report, const json& new_report);
+
+/// report.json of a report directory (or the file itself). Throws std::invalid_argument naming the
+/// path when it is missing or is not a simpson-verify report.
+json load_report(const std::filesystem::path& dir_or_file);
+
+}  // namespace simpson::verify
