@@ -312,8 +312,7 @@ claim_result check_nonlinear_internal_node(const run_context&) {
                       "fixed-point equation q_m = (q_l + q_r)/2 + h^2 V'(q_m)/(8m), whose map has derivative h^2 V''/(8m); when "
                       "h^2 sup|V''|/(8m) < 1 it is a contraction, so q_m is unique and the limit of the fixed-point iteration "
                       "(Banach), and the internal node is eliminated implicitly. For the pendulum this condition is omega h < "
-                      "2 sqrt(2), the harmonic stability bound. The authors' later work (Rojas-Quintero, Dubois et al.) solves it "
-                      "so.");
+                      "2 sqrt(2), the harmonic stability bound.");
   return r;
 }
 

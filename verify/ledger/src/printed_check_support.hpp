@@ -97,9 +97,9 @@ struct smooth_state {
 struct smooth_expansion {
   int lowest_power = 0;
   GiNaC::ex leading;  // the coefficient of h^lowest_power
-  GiNaC::ex series;   // the whole expansion through h^(lowest_power + 3), renamed
+  GiNaC::ex series;   // the whole expansion up to O(h^order), renamed
 };
-smooth_expansion expand_on_smooth(const GiNaC::ex& e, const std::vector<smooth_state>& states, const GiNaC::ex& h);
+smooth_expansion expand_on_smooth(const GiNaC::ex& e, const std::vector<smooth_state>& states, const GiNaC::ex& h, int order = 4);
 
 /// A consistency claim: the leading term of a printed scheme on smooth states is (a nonzero
 /// multiple of) the printed differential equation, and so is the core's.

@@ -86,7 +86,7 @@ printed_outcome both(const printed_outcome& a, const printed_outcome& b) {
   return o;
 }
 
-smooth_expansion expand_on_smooth(const ex& e, const std::vector<smooth_state>& states, const ex& h) {
+smooth_expansion expand_on_smooth(const ex& e, const std::vector<smooth_state>& states, const ex& h, int order) {
   const GiNaC::symbol t("t_smooth");
   GiNaC::exmap on_solution;
   std::vector<std::string> functions;
@@ -104,8 +104,8 @@ smooth_expansion expand_on_smooth(const ex& e, const std::vector<smooth_state>& 
     return x;
   };
   const GiNaC::symbol& hs = GiNaC::ex_to<GiNaC::symbol>(h);
-  // Laurent series: at most h^-2 in the paper's schemes; expand to four powers past the lowest.
-  const ex series = GiNaC::expand(GiNaC::series_to_poly(GiNaC::series(e.subs(on_solution), h == 0, 4)));
+  // A Laurent series (at most h^-2 in the paper's schemes), up to O(h^order).
+  const ex series = GiNaC::expand(GiNaC::series_to_poly(GiNaC::series(e.subs(on_solution), h == 0, order)));
   smooth_expansion out;
   out.lowest_power = series.ldegree(hs);
   out.leading = GiNaC::normal(rename(series.coeff(hs, out.lowest_power)));

@@ -100,7 +100,10 @@ printed_outcome newmark_system(const paper_reading& r) {
     o.proved += std::string(o.proved.empty() ? "" : "; ") + "printed " + name + ", left − right with the derived momenta = " + text_of(gap);
   }
   if (!o.holds) o.correction = "as derived: p_{j+1} = " + text_of(newmark_derivation().momentum_right) + ", p_j = " + text_of(newmark_derivation().momentum_left);
-  o.derived = "the momenta are derived from L_d (no core formula to compare)";
+  const phase_point<ex> core = newmark_system_residual(parameters(d), phase_point<ex>{d.p_j, d.q_j}, phase_point<ex>{d.p_next, d.q_next});
+  const ex first = GiNaC::normal(core.p.subs(momenta)), second = GiNaC::normal(core.q.subs(momenta));
+  o.derived_holds = first.is_zero() && second.is_zero();
+  o.derived = "core newmark_system_residual with the momenta derived from L_d: " + text_of(first) + ", " + text_of(second);
   return o;
 }
 

@@ -95,8 +95,8 @@ printed_outcome stability_condition(const paper_reading& r) {
   printed_outcome o;
   const bool variable = GiNaC::normal(middle - d.omega * d.h).is_zero() && GiNaC::normal(lower).is_zero();
   const ex at_bound = GiNaC::normal(in_x.subs(x == upper));
-  // The first positive root: in_x is even in x; with y = x², its roots in y are checked by the
-  // discriminant-free route: in_x at x = bound is 0 and in_x has no root in (0, bound²) as a polynomial of degree 1 in y.
+  // The bound is the first positive root: in_x vanishes there, and in_x is a polynomial of degree 1
+  // in y = x², so it has no other positive root.
   const ex in_y = GiNaC::normal(in_x.subs(x == GiNaC::sqrt(sym("y"))));
   const bool linear_in_y = in_y.is_polynomial(sym("y")) && in_y.degree(sym("y")) == 1;
   o.holds = variable && at_bound.is_zero() && linear_in_y;
@@ -135,15 +135,10 @@ std::pair<ex, int> split_order(const ex& e, const ex& h) {
 }
 
 /// q(t_j ± h) by GiNaC's series of an uninterpreted q, to O(h^order), the k-th derivative at t_j
-/// named as the reader names d^kq/dt^k.
+/// named as the reader names d^kq/dt^k and q(t_j) as q_j.
 ex taylor_expansion(const symbolic_derivation& d, int sign, int order) {
-  const GiNaC::symbol tj("t_j");
-  const ex series = GiNaC::series_to_poly(GiNaC::series(apply_function("q", {tj + sign * d.h}), d.h == 0, order));
-  ex named = series;
-  for (int k = order - 1; k >= 1; --k) {
-    named = named.subs(GiNaC::diff(apply_function("q", {tj}), tj, static_cast<unsigned>(k)) == sym(derivative_name("q", "t", k, k)));
-  }
-  return GiNaC::expand(named.subs(apply_function("q", {tj}) == d.q_j));
+  const smooth_expansion e = expand_on_smooth(d.q_next, {{d.q_next, "q", sign * d.h}}, d.h, order);
+  return GiNaC::expand(e.series.subs(sym("q") == d.q_j));
 }
 
 printed_outcome taylor_display(const paper_reading& r) {
