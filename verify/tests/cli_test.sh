@@ -196,6 +196,23 @@ grep -q '^claim gamma-system: verdict: "erratum" → "holds"$' "$work/out" || fa
 check "compare missing" 2 compare "$reference" "$work/no-such-report"
 check "list claims" 0 --list-claims
 check "version" 0 --version
+grep -Eq '^simpson-verify [0-9]+\.[0-9]+\.[0-9]+ \(commit ([0-9a-f]{40}|unknown), ' "$work/out" || fail "version: no commit: $(cat "$work/out")"
+
+# --precisions reaches the sections that have precisions, or is refused with the reason.
+check "precisions to sections" 0 --scene quick --sections work_precision,stability --precisions double,mpfr:30 --no-timing --out "$work/prec"
+grep -q '"precisions_applied_to": \[' "$work/prec/report.json" && grep -q '"precision": "mpfr:30"' "$work/prec/report.json" ||
+  fail "precisions to sections: not applied or not recorded"
+grep -q '"precision": "float128"' "$work/prec/report.json" && fail "precisions to sections: a scene precision survived"
+check "precisions with long_time" 2 --scene quick --precisions double --out "$work/none-prec1"
+grep -q 'long_time' "$work/err" || fail "precisions with long_time: the section is not named"
+check "rational in a section" 2 --scene quick --sections stability --precisions rational --out "$work/none-prec2"
+check "bad precision" 2 --claims phi3-det --precisions double,mpfr:3 --out "$work/none-prec3"
+# Timing: --timing-runs N, --no-timing, never both.
+check "timing runs" 0 --scene quick --sections work_precision --timing-runs 1 --out "$work/runs"
+grep -q '"max_runs": 1' "$work/runs/timing.json" || fail "timing runs: not in timing.json"
+check "timing runs 0" 2 --scene quick --timing-runs 0 --out "$work/none-t1"
+check "timing both" 2 --scene quick --timing-runs 3 --no-timing --out "$work/none-t2"
+for d in none-prec1 none-prec2 none-prec3 none-t1 none-t2; do [ -e "$work/$d" ] && fail "$d: written"; done
 
 echo "$passes passed, $failures failed"
 [ "$failures" = 0 ]

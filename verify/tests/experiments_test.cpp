@@ -167,11 +167,24 @@ TEST(Experiments, WorkPrecisionRecordsEveryRunWithItsStatus) {
   w.timing = {2, 0.1};
   const section_result out = run_work_precision(w);
   const table& rows = get(out, "rows");
+  const table& times = get(out, "timing_rows");
   ASSERT_EQ(rows.rows.size(), 6u);
+  ASSERT_EQ(times.rows.size(), 6u);
+  EXPECT_TRUE(times.timing);
+  EXPECT_FALSE(rows.timing);
   for (std::size_t r = 0; r < rows.rows.size(); ++r) {
     EXPECT_EQ(cell(rows, r, "status").value(), "ok");
-    EXPECT_LE(std::stoi(cell(rows, r, "runs").value()), 2);
+    EXPECT_LE(std::stoi(cell(times, r, "runs").value()), 2);
+    EXPECT_GT(number(cell(times, r, "min_seconds")), 0);
   }
+  // Untimed (--no-timing): the same errors, and no timing table or time plot.
+  work_precision_settings untimed = w;
+  untimed.timing.max_runs = 0;
+  const section_result plain = run_work_precision(untimed);
+  EXPECT_EQ(plain.find_table("timing_rows"), nullptr);
+  EXPECT_FALSE(has_timing(plain));
+  EXPECT_EQ(section_json(plain)["rows"].dump(), section_json(out)["rows"].dump());
+  EXPECT_EQ(section_files(plain).size(), 1u + 1u);  // work_precision.csv and work_precision_n.dat
   // 4th order: the error falls by about 4^4 from N = 8 to 32.
   const double ratio = number(cell(rows, 0, "error_q_max")) / number(cell(rows, 1, "error_q_max"));
   EXPECT_GT(ratio, 200);

@@ -10,13 +10,14 @@ set format x '%g'
 unset logscale y
 set format y '%g'
 set key outside right font ',8'
+set xrange [-0.05:1.05]
 set yrange [-1.1:1.1]
-plot 'figure1.dat' index 0 u 1:2 w l lw 1.5 lc rgb '#000000' t 'q exact', \
-     'figure1.dat' index 1 u 1:2 w l dt 2 lc rgb '#000000' t 'p/(m omega) exact', \
-     'figure1.dat' index 2 u 1:2 w lp pt 6 lc rgb '#1f77b4' t 'q Newmark', \
-     'figure1.dat' index 3 u 1:2 w lp pt 4 lc rgb '#1f77b4' t 'p/(m omega) Newmark', \
-     'figure1.dat' index 4 u 1:2 w lp pt 7 lc rgb '#d62728' t 'q Simpson', \
-     'figure1.dat' index 5 u 1:2 w lp pt 5 lc rgb '#d62728' t 'p/(m omega) Simpson'
+plot 'figure1.dat' index 0 u 1:2 w l lw 2 dt 1 lc rgb '#000000' t 'q exact', \
+     'figure1.dat' index 1 u 1:2 w l lw 1.2 dt 2 lc rgb '#000000' t 'p/(m omega) exact', \
+     'figure1.dat' index 2 u 1:2 w lp pt 6 lw 1.2 dt 1 lc rgb '#1f77b4' t 'q Newmark', \
+     'figure1.dat' index 3 u 1:2 w lp pt 4 lw 1.2 dt 1 lc rgb '#1f77b4' t 'p/(m omega) Newmark', \
+     'figure1.dat' index 4 u 1:2 w lp pt 7 lw 1.2 dt 1 lc rgb '#d62728' t 'q Simpson', \
+     'figure1.dat' index 5 u 1:2 w lp pt 5 lw 1.2 dt 1 lc rgb '#d62728' t 'p/(m omega) Simpson'
 
 unset output
 reset
@@ -30,12 +31,13 @@ set format x '%g'
 unset logscale y
 set format y '%g'
 set key outside right font ',8'
+set xrange [-0.05:1.05]
 set yrange [-1.1:1.1]
-plot 'figure1.dat' index 0 u 1:2 w l lw 1.5 lc rgb '#000000' t 'q exact', \
-     'figure1.dat' index 1 u 1:2 w l dt 2 lc rgb '#000000' t 'p/(m omega) exact', \
-     'figure1.dat' index 2 u 1:2 w lp pt 6 lc rgb '#1f77b4' t 'q Newmark', \
-     'figure1.dat' index 3 u 1:2 w lp pt 4 lc rgb '#1f77b4' t 'p/(m omega) Newmark', \
-     'figure1.dat' index 4 u 1:2 w lp pt 7 lc rgb '#d62728' t 'q Simpson', \
-     'figure1.dat' index 5 u 1:2 w lp pt 5 lc rgb '#d62728' t 'p/(m omega) Simpson'
+plot 'figure1.dat' index 0 u 1:2 w l lw 2 dt 1 lc rgb '#000000' t 'q exact', \
+     'figure1.dat' index 1 u 1:2 w l lw 1.2 dt 2 lc rgb '#000000' t 'p/(m omega) exact', \
+     'figure1.dat' index 2 u 1:2 w lp pt 6 lw 1.2 dt 1 lc rgb '#1f77b4' t 'q Newmark', \
+     'figure1.dat' index 3 u 1:2 w lp pt 4 lw 1.2 dt 1 lc rgb '#1f77b4' t 'p/(m omega) Newmark', \
+     'figure1.dat' index 4 u 1:2 w lp pt 7 lw 1.2 dt 1 lc rgb '#d62728' t 'q Simpson', \
+     'figure1.dat' index 5 u 1:2 w lp pt 5 lw 1.2 dt 1 lc rgb '#d62728' t 'p/(m omega) Simpson'
 
 unset output

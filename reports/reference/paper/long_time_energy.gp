@@ -1,8 +1,10 @@
 # Per-window maximum relative energy change against time (log-log)
 # Redraw with: gnuplot long_time_energy.gp (in this directory)
-set terminal svg size 1100,450 dynamic enhanced font 'Sans,10' background rgb 'white'
+set terminal svg size 1370,450 dynamic enhanced font 'Sans,10' background rgb 'white'
 set output 'long_time_energy.svg'
-set multiplot layout 1,2
+set multiplot
+set origin 0.0000,0.0000
+set size 0.4015,1.0000
 set title 'Energy drift, double'
 set xlabel 't (units of 1/omega)'
 set ylabel 'per-window max |E - E_0|/E_0'
@@ -10,11 +12,18 @@ set logscale x
 set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
-set key bottom right font ',8'
-set yrange [4.42574e-12:0.518097]
-plot 'long_time_energy.dat' index 0 u 1:2 w l lw 1.5 lc rgb '#d62728' t 'simpson-H_d', \
-     'long_time_energy.dat' index 1 u 1:2 w l lw 1.5 lc rgb '#1f77b4' t 'newmark-H', \
-     'long_time_energy.dat' index 2 u 1:2 w l lw 1.5 lc rgb '#17becf' t 'rk4-H'
+unset key
+set xrange [7943.28:1.25893e+06]
+set xtics autofreq
+set mxtics default
+set yrange [5.68631e-12:0.403242]
+set ytics autofreq
+set mytics default
+plot 'long_time_energy.dat' index 0 u 1:2 w l lw 2 dt 1 lc rgb '#d62728' t 'simpson-H_d', \
+     'long_time_energy.dat' index 1 u 1:2 w l lw 2 dt 1 lc rgb '#1f77b4' t 'newmark-H', \
+     'long_time_energy.dat' index 2 u 1:2 w l lw 2 dt 4 lc rgb '#17becf' t 'rk4-H'
+set origin 0.4015,0.0000
+set size 0.4015,1.0000
 set title 'Energy drift, mpfr:50'
 set xlabel 't (units of 1/omega)'
 set ylabel 'per-window max |E - E_0|/E_0'
@@ -22,18 +31,39 @@ set logscale x
 set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
-set key bottom right font ',8'
-set yrange [4.85107e-49:0.00554476]
-plot 'long_time_energy.dat' index 3 u 1:2 w l lw 1.5 lc rgb '#d62728' t 'simpson-H_d', \
-     'long_time_energy.dat' index 4 u 1:2 w l lw 1.5 lc rgb '#1f77b4' t 'newmark-H', \
-     'long_time_energy.dat' index 5 u 1:2 w l lw 1.5 lc rgb '#17becf' t 'rk4-H'
+unset key
+set xrange [79.4328:12589.3]
+set xtics autofreq
+set mxtics default
+set yrange [1.10969e-50:0.242393]
+set ytics 1e6
+set mytics 1
+plot 'long_time_energy.dat' index 3 u 1:2 w l lw 2 dt 1 lc rgb '#d62728' t 'simpson-H_d', \
+     'long_time_energy.dat' index 4 u 1:2 w l lw 2 dt 1 lc rgb '#1f77b4' t 'newmark-H', \
+     'long_time_energy.dat' index 5 u 1:2 w l lw 2 dt 4 lc rgb '#17becf' t 'rk4-H'
+set origin 0.8029,0
+set size 0.1971,1
+unset title
+unset xlabel
+unset ylabel
+unset logscale xy
+unset border
+unset tics
+set xrange [0:1]
+set yrange [0:1]
+set key at screen 0.8129,0.97 left top Left reverse samplen 3 spacing 1.3 font ',9'
+plot NaN w l lw 2 dt 1 lc rgb '#d62728' t 'simpson-H_d', \
+     NaN w l lw 2 dt 1 lc rgb '#1f77b4' t 'newmark-H', \
+     NaN w l lw 2 dt 4 lc rgb '#17becf' t 'rk4-H'
 unset multiplot
 
 unset output
 reset
-set terminal pngcairo size 1100,450 enhanced font 'Sans,10' background rgb 'white'
+set terminal pngcairo size 1370,450 enhanced font 'Sans,10' background rgb 'white'
 set output 'long_time_energy.png'
-set multiplot layout 1,2
+set multiplot
+set origin 0.0000,0.0000
+set size 0.4015,1.0000
 set title 'Energy drift, double'
 set xlabel 't (units of 1/omega)'
 set ylabel 'per-window max |E - E_0|/E_0'
@@ -41,11 +71,18 @@ set logscale x
 set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
-set key bottom right font ',8'
-set yrange [4.42574e-12:0.518097]
-plot 'long_time_energy.dat' index 0 u 1:2 w l lw 1.5 lc rgb '#d62728' t 'simpson-H_d', \
-     'long_time_energy.dat' index 1 u 1:2 w l lw 1.5 lc rgb '#1f77b4' t 'newmark-H', \
-     'long_time_energy.dat' index 2 u 1:2 w l lw 1.5 lc rgb '#17becf' t 'rk4-H'
+unset key
+set xrange [7943.28:1.25893e+06]
+set xtics autofreq
+set mxtics default
+set yrange [5.68631e-12:0.403242]
+set ytics autofreq
+set mytics default
+plot 'long_time_energy.dat' index 0 u 1:2 w l lw 2 dt 1 lc rgb '#d62728' t 'simpson-H_d', \
+     'long_time_energy.dat' index 1 u 1:2 w l lw 2 dt 1 lc rgb '#1f77b4' t 'newmark-H', \
+     'long_time_energy.dat' index 2 u 1:2 w l lw 2 dt 4 lc rgb '#17becf' t 'rk4-H'
+set origin 0.4015,0.0000
+set size 0.4015,1.0000
 set title 'Energy drift, mpfr:50'
 set xlabel 't (units of 1/omega)'
 set ylabel 'per-window max |E - E_0|/E_0'
@@ -53,11 +90,30 @@ set logscale x
 set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
-set key bottom right font ',8'
-set yrange [4.85107e-49:0.00554476]
-plot 'long_time_energy.dat' index 3 u 1:2 w l lw 1.5 lc rgb '#d62728' t 'simpson-H_d', \
-     'long_time_energy.dat' index 4 u 1:2 w l lw 1.5 lc rgb '#1f77b4' t 'newmark-H', \
-     'long_time_energy.dat' index 5 u 1:2 w l lw 1.5 lc rgb '#17becf' t 'rk4-H'
+unset key
+set xrange [79.4328:12589.3]
+set xtics autofreq
+set mxtics default
+set yrange [1.10969e-50:0.242393]
+set ytics 1e6
+set mytics 1
+plot 'long_time_energy.dat' index 3 u 1:2 w l lw 2 dt 1 lc rgb '#d62728' t 'simpson-H_d', \
+     'long_time_energy.dat' index 4 u 1:2 w l lw 2 dt 1 lc rgb '#1f77b4' t 'newmark-H', \
+     'long_time_energy.dat' index 5 u 1:2 w l lw 2 dt 4 lc rgb '#17becf' t 'rk4-H'
+set origin 0.8029,0
+set size 0.1971,1
+unset title
+unset xlabel
+unset ylabel
+unset logscale xy
+unset border
+unset tics
+set xrange [0:1]
+set yrange [0:1]
+set key at screen 0.8129,0.97 left top Left reverse samplen 3 spacing 1.3 font ',9'
+plot NaN w l lw 2 dt 1 lc rgb '#d62728' t 'simpson-H_d', \
+     NaN w l lw 2 dt 1 lc rgb '#1f77b4' t 'newmark-H', \
+     NaN w l lw 2 dt 4 lc rgb '#17becf' t 'rk4-H'
 unset multiplot
 
 unset output

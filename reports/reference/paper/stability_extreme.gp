@@ -1,8 +1,10 @@
 # Correct significant digits of the truncation coefficient c and of H_d against ωh, one panel per precision (each with its own digits axis)
 # Redraw with: gnuplot stability_extreme.gp (in this directory)
-set terminal svg size 1200,660 dynamic enhanced font 'Sans,10' background rgb 'white'
+set terminal svg size 1470,660 dynamic enhanced font 'Sans,10' background rgb 'white'
 set output 'stability_extreme.svg'
-set multiplot layout 2,3
+set multiplot
+set origin 0.0000,0.5000
+set size 0.2721,0.5000
 set title 'double'
 set xlabel 'omega h (dimensionless)'
 set ylabel 'correct significant digits'
@@ -10,10 +12,16 @@ set logscale x
 set format x '10^{%L}'
 unset logscale y
 set format y '%g'
-set key bottom right font ',8'
-set yrange [-0.735:15.435]
-plot 'stability_extreme.dat' index 0 u 1:2 w lp pt 7 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
-     'stability_extreme.dat' index 1 u 1:2 w lp pt 6 lc rgb '#d62728' t 'H_d'
+unset key
+set xrange [3.78131e-09:7.40484]
+set xtics autofreq
+set mxtics default
+set yrange [0:16.2]
+plot 'stability_extreme.dat' index 0 u 1:2 w lp pt 7 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
+     'stability_extreme.dat' index 1 u 1:2 w lp pt 6 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
+     'stability_extreme.dat' index 2 u 1:2 w l lw 1.2 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
+set origin 0.2721,0.5000
+set size 0.2721,0.5000
 set title 'long double'
 set xlabel 'omega h (dimensionless)'
 set ylabel 'correct significant digits'
@@ -21,10 +29,16 @@ set logscale x
 set format x '10^{%L}'
 unset logscale y
 set format y '%g'
-set key bottom right font ',8'
-set yrange [-0.9:18.9]
-plot 'stability_extreme.dat' index 2 u 1:2 w lp pt 7 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
-     'stability_extreme.dat' index 3 u 1:2 w lp pt 6 lc rgb '#d62728' t 'H_d'
+unset key
+set xrange [3.78131e-09:7.40484]
+set xtics autofreq
+set mxtics default
+set yrange [0:19.44]
+plot 'stability_extreme.dat' index 3 u 1:2 w lp pt 7 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
+     'stability_extreme.dat' index 4 u 1:2 w lp pt 6 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
+     'stability_extreme.dat' index 5 u 1:2 w l lw 1.2 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
+set origin 0.5442,0.5000
+set size 0.2721,0.5000
 set title 'float128'
 set xlabel 'omega h (dimensionless)'
 set ylabel 'correct significant digits'
@@ -32,10 +46,16 @@ set logscale x
 set format x '10^{%L}'
 unset logscale y
 set format y '%g'
-set key bottom right font ',8'
-set yrange [-1.64:34.44]
-plot 'stability_extreme.dat' index 4 u 1:2 w lp pt 7 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
-     'stability_extreme.dat' index 5 u 1:2 w lp pt 6 lc rgb '#d62728' t 'H_d'
+unset key
+set xrange [3.78131e-09:7.40484]
+set xtics autofreq
+set mxtics default
+set yrange [0:35.64]
+plot 'stability_extreme.dat' index 6 u 1:2 w lp pt 7 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
+     'stability_extreme.dat' index 7 u 1:2 w lp pt 6 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
+     'stability_extreme.dat' index 8 u 1:2 w l lw 1.2 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
+set origin 0.0000,0.0000
+set size 0.2721,0.5000
 set title 'mpfr:50'
 set xlabel 'omega h (dimensionless)'
 set ylabel 'correct significant digits'
@@ -43,10 +63,16 @@ set logscale x
 set format x '10^{%L}'
 unset logscale y
 set format y '%g'
-set key bottom right font ',8'
-set yrange [-2.485:52.185]
-plot 'stability_extreme.dat' index 6 u 1:2 w lp pt 7 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
-     'stability_extreme.dat' index 7 u 1:2 w lp pt 6 lc rgb '#d62728' t 'H_d'
+unset key
+set xrange [3.78131e-09:7.40484]
+set xtics autofreq
+set mxtics default
+set yrange [0:54]
+plot 'stability_extreme.dat' index 9 u 1:2 w lp pt 7 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
+     'stability_extreme.dat' index 10 u 1:2 w lp pt 6 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
+     'stability_extreme.dat' index 11 u 1:2 w l lw 1.2 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
+set origin 0.2721,0.0000
+set size 0.2721,0.5000
 set title 'mpfr:100'
 set xlabel 'omega h (dimensionless)'
 set ylabel 'correct significant digits'
@@ -54,17 +80,37 @@ set logscale x
 set format x '10^{%L}'
 unset logscale y
 set format y '%g'
-set key bottom right font ',8'
-set yrange [46.815:101.485]
-plot 'stability_extreme.dat' index 8 u 1:2 w lp pt 7 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
-     'stability_extreme.dat' index 9 u 1:2 w lp pt 6 lc rgb '#d62728' t 'H_d'
+unset key
+set xrange [3.78131e-09:7.40484]
+set xtics autofreq
+set mxtics default
+set yrange [0:108]
+plot 'stability_extreme.dat' index 12 u 1:2 w lp pt 7 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
+     'stability_extreme.dat' index 13 u 1:2 w lp pt 6 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
+     'stability_extreme.dat' index 14 u 1:2 w l lw 1.2 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
+set origin 0.8163,0
+set size 0.1837,1
+unset title
+unset xlabel
+unset ylabel
+unset logscale xy
+unset border
+unset tics
+set xrange [0:1]
+set yrange [0:1]
+set key at screen 0.8263,0.97 left top Left reverse samplen 3 spacing 1.3 font ',9'
+plot NaN w lp pt 7 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
+     NaN w lp pt 6 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
+     NaN w l lw 1.2 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
 unset multiplot
 
 unset output
 reset
-set terminal pngcairo size 1200,660 enhanced font 'Sans,10' background rgb 'white'
+set terminal pngcairo size 1470,660 enhanced font 'Sans,10' background rgb 'white'
 set output 'stability_extreme.png'
-set multiplot layout 2,3
+set multiplot
+set origin 0.0000,0.5000
+set size 0.2721,0.5000
 set title 'double'
 set xlabel 'omega h (dimensionless)'
 set ylabel 'correct significant digits'
@@ -72,10 +118,16 @@ set logscale x
 set format x '10^{%L}'
 unset logscale y
 set format y '%g'
-set key bottom right font ',8'
-set yrange [-0.735:15.435]
-plot 'stability_extreme.dat' index 0 u 1:2 w lp pt 7 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
-     'stability_extreme.dat' index 1 u 1:2 w lp pt 6 lc rgb '#d62728' t 'H_d'
+unset key
+set xrange [3.78131e-09:7.40484]
+set xtics autofreq
+set mxtics default
+set yrange [0:16.2]
+plot 'stability_extreme.dat' index 0 u 1:2 w lp pt 7 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
+     'stability_extreme.dat' index 1 u 1:2 w lp pt 6 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
+     'stability_extreme.dat' index 2 u 1:2 w l lw 1.2 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
+set origin 0.2721,0.5000
+set size 0.2721,0.5000
 set title 'long double'
 set xlabel 'omega h (dimensionless)'
 set ylabel 'correct significant digits'
@@ -83,10 +135,16 @@ set logscale x
 set format x '10^{%L}'
 unset logscale y
 set format y '%g'
-set key bottom right font ',8'
-set yrange [-0.9:18.9]
-plot 'stability_extreme.dat' index 2 u 1:2 w lp pt 7 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
-     'stability_extreme.dat' index 3 u 1:2 w lp pt 6 lc rgb '#d62728' t 'H_d'
+unset key
+set xrange [3.78131e-09:7.40484]
+set xtics autofreq
+set mxtics default
+set yrange [0:19.44]
+plot 'stability_extreme.dat' index 3 u 1:2 w lp pt 7 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
+     'stability_extreme.dat' index 4 u 1:2 w lp pt 6 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
+     'stability_extreme.dat' index 5 u 1:2 w l lw 1.2 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
+set origin 0.5442,0.5000
+set size 0.2721,0.5000
 set title 'float128'
 set xlabel 'omega h (dimensionless)'
 set ylabel 'correct significant digits'
@@ -94,10 +152,16 @@ set logscale x
 set format x '10^{%L}'
 unset logscale y
 set format y '%g'
-set key bottom right font ',8'
-set yrange [-1.64:34.44]
-plot 'stability_extreme.dat' index 4 u 1:2 w lp pt 7 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
-     'stability_extreme.dat' index 5 u 1:2 w lp pt 6 lc rgb '#d62728' t 'H_d'
+unset key
+set xrange [3.78131e-09:7.40484]
+set xtics autofreq
+set mxtics default
+set yrange [0:35.64]
+plot 'stability_extreme.dat' index 6 u 1:2 w lp pt 7 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
+     'stability_extreme.dat' index 7 u 1:2 w lp pt 6 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
+     'stability_extreme.dat' index 8 u 1:2 w l lw 1.2 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
+set origin 0.0000,0.0000
+set size 0.2721,0.5000
 set title 'mpfr:50'
 set xlabel 'omega h (dimensionless)'
 set ylabel 'correct significant digits'
@@ -105,10 +169,16 @@ set logscale x
 set format x '10^{%L}'
 unset logscale y
 set format y '%g'
-set key bottom right font ',8'
-set yrange [-2.485:52.185]
-plot 'stability_extreme.dat' index 6 u 1:2 w lp pt 7 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
-     'stability_extreme.dat' index 7 u 1:2 w lp pt 6 lc rgb '#d62728' t 'H_d'
+unset key
+set xrange [3.78131e-09:7.40484]
+set xtics autofreq
+set mxtics default
+set yrange [0:54]
+plot 'stability_extreme.dat' index 9 u 1:2 w lp pt 7 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
+     'stability_extreme.dat' index 10 u 1:2 w lp pt 6 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
+     'stability_extreme.dat' index 11 u 1:2 w l lw 1.2 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
+set origin 0.2721,0.0000
+set size 0.2721,0.5000
 set title 'mpfr:100'
 set xlabel 'omega h (dimensionless)'
 set ylabel 'correct significant digits'
@@ -116,10 +186,28 @@ set logscale x
 set format x '10^{%L}'
 unset logscale y
 set format y '%g'
-set key bottom right font ',8'
-set yrange [46.815:101.485]
-plot 'stability_extreme.dat' index 8 u 1:2 w lp pt 7 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
-     'stability_extreme.dat' index 9 u 1:2 w lp pt 6 lc rgb '#d62728' t 'H_d'
+unset key
+set xrange [3.78131e-09:7.40484]
+set xtics autofreq
+set mxtics default
+set yrange [0:108]
+plot 'stability_extreme.dat' index 12 u 1:2 w lp pt 7 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
+     'stability_extreme.dat' index 13 u 1:2 w lp pt 6 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
+     'stability_extreme.dat' index 14 u 1:2 w l lw 1.2 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
+set origin 0.8163,0
+set size 0.1837,1
+unset title
+unset xlabel
+unset ylabel
+unset logscale xy
+unset border
+unset tics
+set xrange [0:1]
+set yrange [0:1]
+set key at screen 0.8263,0.97 left top Left reverse samplen 3 spacing 1.3 font ',9'
+plot NaN w lp pt 7 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
+     NaN w lp pt 6 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
+     NaN w l lw 1.2 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
 unset multiplot
 
 unset output

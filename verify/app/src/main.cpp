@@ -3,6 +3,7 @@
 // 2 bad input or usage (one line on stderr, nothing written); 3 an internal error (a bug in the
 // harness: a check that threw, or an unexpected exception); 128 + n when stopped by signal n.
 
+#include <simpson/verify/environment.hpp>
 #include <simpson/verify/experiment_cost.hpp>
 #include <simpson/verify/interruption.hpp>
 #include <simpson/verify/ledger.hpp>
@@ -107,11 +108,11 @@ int compare_report_directories(const std::string& old_dir, const std::string& ne
 
 int main(int argc, char** argv) {
   CLI::App app{"simpson-verify: proves, rechecks and reports every claim of the symplectic Simpson paper"};
-  app.set_version_flag("--version", std::string("simpson-verify ") + SIMPSON_VERSION);
-  std::string scene_name = "paper", out_dir, seed_text, samples_text, paper_file;
+  app.set_version_flag("--version", version_line());
+  std::string scene_name = "paper", out_dir, seed_text, samples_text, paper_file, timing_runs_text;
   std::vector<std::string> claim_ids, section_list, precision_names;
   bool want_claims = false, want_scenes = false, want_precisions = false, allow_expensive = false, long_run = false,
-       quiet = false;
+       quiet = false, no_timing = false;
   app.add_option("--scene", scene_name, "embedded scene name (paper, quick) or a scene JSON file")->capture_default_str();
   app.add_option("--paper", paper_file, "the paper's LaTeX source to check (default: the embedded GSI 2023 text)");
   app.add_option("--out", out_dir, "report directory (default: reports/out/<scene>)");
@@ -130,12 +131,19 @@ int main(int argc, char** argv) {
   compare->add_option("old", compare_old, "the reference report directory (or its report.json)")->required();
   compare->add_option("new", compare_new, "the report directory to check (or its report.json)")->required();
   compare->fallthrough();
-  app.add_option("--precisions", precision_names, "comma-separated precisions (default: the scene's)")->delimiter(',');
+  app.add_option("--precisions", precision_names,
+                 "comma-separated precisions of the claims' rechecks and of the sections work_precision and stability "
+                 "(table1 runs in double; a run with long_time is refused: it compares double with mpfr by design)")
+      ->delimiter(',');
   app.add_option("--seed", seed_text, "seed of the random samples (default: the scene's, printed in the report)");
   app.add_option("--samples", samples_text, "random samples per numeric recheck and precision, 1..10000");
   app.add_flag("--allow-expensive", allow_expensive,
                fmt::format("run a scene whose estimated cost exceeds the budget ({:.3g} double-step units, about {})", default_cost_budget, seconds_text(default_cost_budget)));
   app.add_flag("--long", long_run, "long_time section: 1e9 steps in double instead of the scene's (implies --allow-expensive)");
+  app.add_option("--timing-runs", timing_runs_text,
+                 "work_precision: timed runs per configuration after one warm-up, 1..1000 (default: the scene's, 20)");
+  app.add_flag("--no-timing", no_timing,
+               "measure no run time: no timing.json, timing.md or time plot, and every file is the same from run to run");
   app.add_flag("--list-claims", want_claims, "list the claims of the ledger and exit");
   app.add_flag("--list-scenes", want_scenes, "list the embedded scenes and exit");
   app.add_flag("--list-precisions", want_precisions, "list the precisions and exit");
@@ -165,11 +173,7 @@ int main(int argc, char** argv) {
     if (app.count("--sections") > 0) selection.sections = section_list;
     apply_selection(s, selection);
     if (!paper_file.empty()) s.overrides["paper"] = paper_file;
-    if (!precision_names.empty()) {
-      s.precisions.clear();
-      for (const std::string& name : precision_names) s.precisions.push_back(simpson::precision::parse(name));
-      s.overrides["precisions"] = precision_names;
-    }
+    if (app.count("--precisions") > 0) apply_precisions(s, precision_names);
     const auto parse_count = [](const std::string& flag, const std::string& text, unsigned long long min, unsigned long long max) {
       std::size_t used = 0;
       unsigned long long v = 0;
@@ -193,6 +197,18 @@ int main(int argc, char** argv) {
       s.samples = static_cast<unsigned>(parse_count("--samples", samples_text, 1, 10000));
       s.overrides["samples"] = s.samples;
     }
+    if (!timing_runs_text.empty() && no_timing) throw std::invalid_argument("--timing-runs and --no-timing exclude each other");
+    if (!timing_runs_text.empty()) {
+      const auto runs = static_cast<unsigned>(parse_count("--timing-runs", timing_runs_text, 1, 1000));
+      if (s.experiments.work_precision) s.experiments.work_precision->timing.max_runs = runs;
+      s.overrides["timing_runs"] = runs;
+    }
+    if (no_timing) {
+      s.timing = false;
+      if (s.experiments.work_precision) s.experiments.work_precision->timing.max_runs = 0;
+      s.overrides["timing"] = false;
+    }
+    s.command_line.assign(argv, argv + argc);
     if (long_run) {
       if (!s.experiments.long_time) s.experiments.long_time = long_time_settings{};
       s.experiments.long_time->steps_double = 1'000'000'000;

@@ -108,7 +108,6 @@ json report_json(const run_record& r) { return report_json(r, all_plots_drawn(r)
 
 json report_json(const run_record& r, const plot_outcome& plots) {
   json claims = json::array();
-  json timing = json::object(), ginac_timing = json::object();
   for (const claim_outcome& o : r.outcomes) {
     const claim& c = *o.checked;
     json entry{{"id", c.id},
@@ -124,26 +123,22 @@ json report_json(const run_record& r, const plot_outcome& plots) {
     if (!o.result.printed.is_null()) entry["printed"] = o.result.printed;
     entry["evidence"] = o.result.evidence;
     claims.push_back(std::move(entry));
-    timing[c.id] = o.seconds;
-    if (!o.result.printed.is_null()) ginac_timing[c.id] = o.result.printed_seconds;
   }
-  json experiments = json::object(), section_timing = json::object(), plot_list = json::array();
-  for (std::size_t k = 0; k < r.sections.size(); ++k) {
-    const section_result& section = r.sections[k];
+  json experiments = json::object(), plot_list = json::array();
+  for (const section_result& section : r.sections) {
     experiments[section.name] = section_json(section);
-    section_timing[section.name] = r.section_seconds[k];
     for (const plot_spec& plot : section_plots(section)) {
       const bool drawn = std::find(plots.drawn.begin(), plots.drawn.end(), plot.name) != plots.drawn.end();
       plot_list.push_back({{"name", plot.name},
                            {"section", section.name},
                            {"caption", plot.caption},
                            {"script", plot.name + ".gp"},
+                           {"run_times", plot.timing},
                            {"files", drawn ? json::array({plot.name + ".svg", plot.name + ".png"}) : json::array()}});
     }
   }
-  timing["total"] = r.seconds;
-  const speed_figures speed = speed_of(r);
-  return json{{"tool", "simpson-verify"},
+  return json{{"schema_version", report_schema_version},
+              {"tool", "simpson-verify"},
               {"scene", r.run_scene.name},
               {"description", r.run_scene.description},
               {"seed", r.run_scene.seed},
@@ -158,12 +153,72 @@ json report_json(const run_record& r, const plot_outcome& plots) {
               {"plots", plot_list},
               {"plots_not_drawn", plots.failures},
               {"files", report_file_names(r, plots)},
+              {"timing_files", timing_file_names(r, plots)},
               {"paper_configuration", r.paper_configuration},
-              {"environment", r.environment},
-              {"timing", {{"unit", "seconds"}, {"claims", timing}, {"printed_formulas_in_ginac", ginac_timing},
-                          {"ginac_derivation", r.ginac_derivation_seconds}, {"headline_in_ginac", speed.headline},
-                          {"headline_claims", speed.headline_ids}, {"claims_total", speed.claims_total},
-                          {"sections", section_timing}}}};
+              {"environment", r.environment}};
+}
+
+json timing_json(const run_record& r) {
+  json claims = json::object(), ginac = json::object(), sections = json::object(), tables = json::object();
+  for (const claim_outcome& o : r.outcomes) {
+    claims[o.checked->id] = o.seconds;
+    if (!o.result.printed.is_null()) ginac[o.checked->id] = o.result.printed_seconds;
+  }
+  for (std::size_t k = 0; k < r.sections.size(); ++k) {
+    sections[r.sections[k].name] = r.section_seconds[k];
+    const json section_tables = section_timing_json(r.sections[k]);
+    if (!section_tables.empty()) tables[r.sections[k].name] = section_tables;
+  }
+  const speed_figures speed = speed_of(r);
+  return json{{"tool", "simpson-verify"},
+              {"scene", r.run_scene.name},
+              {"timestamp_utc", r.environment.value("timestamp_utc", "")},
+              {"unit", "seconds"},
+              {"total", r.seconds},
+              {"claims", claims},
+              {"claims_total", speed.claims_total},
+              {"printed_formulas_in_ginac", ginac},
+              {"ginac_derivation", r.ginac_derivation_seconds},
+              {"headline_in_ginac", speed.headline},
+              {"headline_claims", speed.headline_ids},
+              {"sections", sections},
+              {"experiments", tables}};
+}
+
+std::string timing_markdown(const run_record& r, const plot_outcome& plots) {
+  std::string md = fmt::format("# simpson-verify run times: scene `{}`{}\n\n", r.run_scene.name,
+                               r.run_scene.selection.empty() ? "" : ": " + r.run_scene.selection);
+  const json& env = r.environment;
+  md += fmt::format("Run at {} on {} ({}, {} hardware threads), {} {}, built {}. Every other file of the report is the same "
+                    "from run to run for the same scene, seed and build; this one and the files it links are not.\n\n",
+                    env.value("timestamp_utc", "?"), env.value("cpu", "?"), env.value("os", "?"),
+                    env.value("hardware_threads", 0u), env.value("tool", "simpson-verify"), env.value("version", "?"),
+                    env.value("flags", "?"));
+  md += fmt::format("Total: {:.2f} s. The verdicts and figures: [report.md](report.md).\n\n", r.seconds);
+  if (!r.outcomes.empty()) {
+    const speed_figures speed = speed_of(r);
+    if (machine_read(r) > 0) {
+      md += fmt::format("The GiNaC derivation from first principles took {:.2e} s; the headline claims ({}) in GiNaC, with that "
+                        "derivation, {:.2e} s.\n\n",
+                        r.ginac_derivation_seconds, join(speed.headline_ids, ", "), speed.headline);
+    }
+    md += fmt::format("## Claims\n\nEvery claim in both kernels, numeric rechecks included: {:.2e} s.\n\n"
+                      "| claim | seconds | of which GiNaC, printed formula |\n|---|---|---|\n",
+                      speed.claims_total);
+    for (const claim_outcome& o : r.outcomes) {
+      md += fmt::format("| {} | {:.2e} | {} |\n", o.checked->id, o.seconds,
+                        o.result.printed.is_null() ? std::string() : fmt::format("{:.2e}", o.result.printed_seconds));
+    }
+    md += "\n";
+  }
+  if (!r.sections.empty()) {
+    md += "## Sections\n\n| section | seconds |\n|---|---|\n";
+    for (std::size_t k = 0; k < r.sections.size(); ++k) md += fmt::format("| {} | {:.2f} |\n", r.sections[k].name, r.section_seconds[k]);
+    md += "\n";
+    for (const section_result& section : r.sections) md += section_timing_markdown(section);
+    if (!plots.failures.empty()) md += "**Plots not drawn:** " + join(plots.failures, "; ") + "\n\n";
+  }
+  return md;
 }
 
 std::string report_markdown(const run_record& r) { return report_markdown(r, all_plots_drawn(r)); }
@@ -177,12 +232,9 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
   md += fmt::format("{} of {} claims read their formula from the paper's LaTeX source ({}) and prove it in GiNaC against "
                     "the derived one, beside our own kernel; the others check a statement typed from the prose.\n\n",
                     machine_read(r), r.outcomes.size(), r.paper_origin);
-  if (machine_read(r) > 0) {
-    const speed_figures speed = speed_of(r);
-    md += fmt::format("Speed (timing in report.json): the GiNaC derivation from first principles {:.2e} s; the headline claims ({}) "
-                      "in GiNaC, with that derivation, {:.2e} s; every claim in both kernels, numeric rechecks included, {:.2e} s.\n\n",
-                      r.ginac_derivation_seconds, join(speed.headline_ids, ", "), speed.headline, speed.claims_total);
-  }
+  md += r.run_scene.timing ? "Run times: [timing.md](timing.md). " : "Not timed (--no-timing). ";
+  md += "The tool's version and commit, the machine, the command line and the SHA-256 of the scene and the paper are in "
+        "report.json (`environment`).\n\n";
   md += fmt::format("Seed {} · {} random samples per numeric recheck and precision · precisions: {}\n\n", r.run_scene.seed,
                     r.run_scene.samples, join(precision_names(r.run_scene.precisions), ", "));
   md += "Paper: F. Dubois, J. A. Rojas-Quintero, *A variational symplectic scheme based on Simpson's quadrature*, GSI 2023. "
@@ -270,11 +322,17 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
   return md;
 }
 
-std::vector<std::string> report_file_names(const run_record& r, const plot_outcome& plots) {
-  std::vector<std::string> names{"report.json", "report.md", "report.html", "report.junit.xml"};
+namespace {
+
+/// The sections' files that hold run times (`timing`) or those that do not, in section order.
+std::vector<std::string> section_file_names(const run_record& r, const plot_outcome& plots, bool timing) {
+  std::vector<std::string> names;
   for (const section_result& section : r.sections) {
-    for (const data_file& f : section_files(section)) names.push_back(f.name);
+    for (const data_file& f : section_files(section)) {
+      if (f.timing == timing) names.push_back(f.name);
+    }
     for (const plot_spec& plot : section_plots(section)) {
+      if (plot.timing != timing) continue;
       names.push_back(plot.name + ".gp");
       if (std::find(plots.drawn.begin(), plots.drawn.end(), plot.name) != plots.drawn.end()) {
         names.push_back(plot.name + ".svg");
@@ -285,10 +343,30 @@ std::vector<std::string> report_file_names(const run_record& r, const plot_outco
   return names;
 }
 
+}  // namespace
+
+std::vector<std::string> report_file_names(const run_record& r, const plot_outcome& plots) {
+  std::vector<std::string> names{"report.json", "report.md", "report.html", "report.junit.xml"};
+  for (std::string& name : section_file_names(r, plots, false)) names.push_back(std::move(name));
+  return names;
+}
+
+std::vector<std::string> timing_file_names(const run_record& r, const plot_outcome& plots) {
+  if (!r.run_scene.timing) return {};
+  std::vector<std::string> names{"timing.json", "timing.md", "timing.html"};
+  for (std::string& name : section_file_names(r, plots, true)) names.push_back(std::move(name));
+  return names;
+}
+
 plot_outcome write_report_files(const std::filesystem::path& dir, const run_record& r) {
   return write_report_directory(dir, r.sections, [&](const plot_outcome& plots) {
-    return report_documents{report_json(r, plots), report_markdown(r, plots), "simpson-verify report: scene " + r.run_scene.name,
-                            report_junit(r)};
+    report_documents docs{report_json(r, plots), report_markdown(r, plots), "simpson-verify report: scene " + r.run_scene.name,
+                          report_junit(r), json(), ""};
+    if (r.run_scene.timing) {
+      docs.timing = timing_json(r);
+      docs.timing_markdown = timing_markdown(r, plots);
+    }
+    return docs;
   });
 }
 

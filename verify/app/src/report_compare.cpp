@@ -15,7 +15,7 @@ const std::set<std::string>& residual_keys() {
 }
 
 const std::set<std::string>& ignored_keys() {
-  static const std::set<std::string> keys{"timing", "environment"};
+  static const std::set<std::string> keys{"environment"};
   return keys;
 }
 
@@ -120,7 +120,7 @@ const std::vector<std::string>& comparison_tolerances() {
       "figures computed in floating point: equal to the digits printed",
       "numeric residuals (max_residual, bound_at_that_sample, max_residual_over_bound): digits may differ; within_bound must "
       "stay true",
-      "timings (every member named timing) and the build environment: ignored"};
+      "run times (timing.json, not compared) and the environment (build, machine, timestamp, command line): ignored"};
   return lines;
 }
 

@@ -221,6 +221,7 @@ scene parse_scene(const std::string& text, const std::string& origin) {
     if (!known.count(item.key())) fail(origin, "unknown key '" + item.key() + "'");
   }
   scene s;
+  s.source_text = text;
   if (!doc.contains("name") || !doc["name"].is_string()) fail(origin, "'name' must be a string");
   s.name = doc["name"].get<std::string>();
   if (s.name.empty() || s.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_-") != std::string::npos) {

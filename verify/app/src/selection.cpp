@@ -20,14 +20,34 @@ std::string joined(const std::vector<std::string>& items) {
   return out;
 }
 
-void keep_sections(experiment_settings& e, const std::vector<std::string>& names) {
+/// The precisions a section the scene does not define runs in: the scene's floating precisions, or
+/// double.
+std::vector<precision> floating_precisions(const scene& s) {
+  std::vector<precision> out;
+  for (const precision& p : s.precisions) {
+    if (!p.exact()) out.push_back(p);
+  }
+  if (out.empty()) out.push_back(precision::parse("double"));
+  return out;
+}
+
+void keep_sections(scene& s, const std::vector<std::string>& names) {
+  experiment_settings& e = s.experiments;
   const auto wanted = [&names](const char* name) { return std::find(names.begin(), names.end(), name) != names.end(); };
   if (!wanted("table1")) e.table1.reset();
   else if (!e.table1) e.table1 = table1_settings{};
-  if (!wanted("work_precision")) e.work_precision.reset();
-  else if (!e.work_precision) e.work_precision = work_precision_settings{};
-  if (!wanted("stability")) e.stability.reset();
-  else if (!e.stability) e.stability = stability_settings{};
+  if (!wanted("work_precision")) {
+    e.work_precision.reset();
+  } else if (!e.work_precision) {
+    e.work_precision = work_precision_settings{};
+    e.work_precision->precisions = floating_precisions(s);
+  }
+  if (!wanted("stability")) {
+    e.stability.reset();
+  } else if (!e.stability) {
+    e.stability = stability_settings{};
+    e.stability->precisions = floating_precisions(s);
+  }
   if (!wanted("long_time")) e.long_time.reset();
   else if (!e.long_time) e.long_time = long_time_settings{};
 }
@@ -74,7 +94,7 @@ void apply_selection(scene& s, const scene_selection& selection) {
       if (std::find(sections.begin(), sections.end(), name) == sections.end()) sections.push_back(name);
     }
   }
-  keep_sections(s.experiments, sections);
+  keep_sections(s, sections);
   std::vector<std::string> ordered;
   for (const std::string& name : section_names()) {
     if (std::find(sections.begin(), sections.end(), name) != sections.end()) ordered.push_back(name);
@@ -82,6 +102,48 @@ void apply_selection(scene& s, const scene_selection& selection) {
   s.overrides["sections"] = ordered;
   parts.push_back(ordered.empty() ? "no sections" : "sections " + joined(ordered) + " only");
   s.selection = parts.front() + "; " + parts.back();
+}
+
+}  // namespace simpson::verify
+
+namespace simpson::verify {
+
+void apply_precisions(scene& s, const std::vector<std::string>& names) {
+  std::vector<precision> parsed;
+  std::vector<std::string> given;
+  for (const std::string& name : names) {
+    const std::string text = trimmed(name);
+    if (text.empty()) continue;
+    try {
+      parsed.push_back(precision::parse(text));
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(std::string("--precisions: ") + e.what());
+    }
+    given.push_back(text);
+  }
+  if (parsed.empty()) throw std::invalid_argument("--precisions: no precision given");
+  experiment_settings& e = s.experiments;
+  if (e.long_time) {
+    throw std::invalid_argument("--precisions: the long_time section compares double with mpfr:" +
+                                std::to_string(e.long_time->mpfr_digits) +
+                                " by design and takes no precision list; leave it out with --sections, or set "
+                                "long_time.mpfr_digits in a scene file");
+  }
+  std::vector<std::string> applied{"claims"};
+  if (e.work_precision) applied.push_back("work_precision");
+  if (e.stability) applied.push_back("stability");
+  for (const precision& p : parsed) {
+    if (p.exact() && applied.size() > 1) {
+      throw std::invalid_argument("--precisions: '" + p.name() + "' has no cos or sin, and the sections " +
+                                  joined(std::vector<std::string>(applied.begin() + 1, applied.end())) +
+                                  " need floating precisions; drop it, or run the claims alone (--sections none)");
+    }
+  }
+  s.precisions = parsed;
+  if (e.work_precision) e.work_precision->precisions = parsed;
+  if (e.stability) e.stability->precisions = parsed;
+  s.overrides["precisions"] = given;
+  s.overrides["precisions_applied_to"] = applied;
 }
 
 }  // namespace simpson::verify

@@ -44,13 +44,14 @@ cost_estimate estimate_cost(const experiment_settings& e) {
           // The error run and the exact solution (cos, sin: ~10 steps' worth), then up to max_runs + 1
           // timed runs; each step of a step algorithm costs ~10 matrix steps per stage.
           const double steps = static_cast<double>(N) * static_cast<double>(w.periods);
-          units += steps * precision_factor(p) * (10 + 10 * traits_of(scheme).stages * (2 + w.timing.max_runs));
+          units += steps * precision_factor(p) * (10 + 10 * traits_of(scheme).stages * (1 + (w.timing.max_runs > 0 ? 1 + w.timing.max_runs : 0)));
         }
       }
     }
     c.units += units;
-    c.lines.push_back(fmt::format("work_precision: {:.3g} units (timing capped at {} s per configuration)", units,
-                                  w.timing.max_seconds));
+    c.lines.push_back(w.timing.max_runs > 0 ? fmt::format("work_precision: {:.3g} units (timing capped at {} s per configuration)",
+                                                          units, w.timing.max_seconds)
+                                            : fmt::format("work_precision: {:.3g} units (no timing)", units));
   }
   if (e.stability) {
     const stability_settings& s = *e.stability;

@@ -66,8 +66,8 @@ long_run run_long(const long_run_case& c, const precision& prec, long long steps
   const long long window = std::max<long long>(1, steps / windows);
   const std::string name = fmt::format("{}-{}", traits_of(c.scheme).name, energy_name(c.monitored));
   const scheme_style style = style_of(c.scheme);
-  long_run out{{}, series(name, line_style::lines, style.color, style.point),
-               series(name + " measured", line_style::lines, style.color, style.point),
+  long_run out{{}, series(name, line_style::lines, style.color, style.point, style.dash),
+               series(name + " measured", line_style::lines, style.color, style.point, style.dash),
                series(name + " predicted", line_style::dashed, style.color, style.point)};
   phase_point<Real> y = y0;
   Real angle_previous(0), unwrapped(0), overall(0), measured_phase_error(0), predicted_phase_error(0);

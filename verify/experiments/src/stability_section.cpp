@@ -201,7 +201,10 @@ std::pair<table, plot_description> extreme_omega_h(const stability_settings& s) 
   const std::vector<std::string> exact_c = exact_truncation_coefficients(s.omega_h, run_digits);
   std::vector<panel> digit_panels;
   for (const precision& prec : s.precisions) {
+    // A digits axis per precision: from 0 to the digits the precision carries (-log10 eps), drawn as a guide.
     panel digits_panel{prec.name(), {"omega h (dimensionless)", true}, {"correct significant digits"}, {}, "bottom right"};
+    const double precision_digits = static_cast<double>(prec.digits10());
+    digits_panel.y.range = std::pair{0.0, precision_digits * 1.08};
     series c_digits{"c (truncation coefficient)", line_style::lines_points, 0, 7};
     series hd_digits{"H_d", line_style::lines_points, 1, 6};
     visit_floating(prec, [&](auto tag) {
@@ -232,7 +235,12 @@ std::pair<table, plot_description> extreme_omega_h(const stability_settings& s) 
       }
     });
     progress_step("stability", prec.name());
-    digits_panel.curves = {c_digits, hd_digits};
+    series carried{"digits the precision carries", line_style::dashed, 8};
+    carried.reference = true;
+    const auto [lowest, highest] = std::minmax_element(s.omega_h.begin(), s.omega_h.end());
+    carried.add(figure::of(*lowest), figure::of(precision_digits));
+    carried.add(figure::of(*highest), figure::of(precision_digits));
+    digits_panel.curves = {c_digits, hd_digits, carried};
     digit_panels.push_back(digits_panel);
   }
   const int columns = static_cast<int>(std::min<std::size_t>(3, std::max<std::size_t>(1, s.precisions.size())));

@@ -17,15 +17,17 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <map>
 
 namespace simpson::verify {
 namespace {
 
 struct measured_run {
-  table_row row;
-  figure error;    // max of the q error and the scaled p error (a fault when the run has one)
-  figure seconds;  // minimum run time
+  table_row row;         // the figures of the error run
+  table_row timing_row;  // runs, minimum and median time (empty when nothing is timed)
+  figure error;          // max of the q error and the scaled p error (a fault when the run has one)
+  figure seconds;        // minimum run time
 };
 
 template <class Real>
@@ -66,10 +68,13 @@ measured_run measure(scheme_id scheme, const precision& prec, long long N, long 
   }
   // At the round-off floor: within 100 N eps of zero (N steps, each rounding a few times).
   const Real floor_level = 100 * Real(steps) * eps<Real>();
-  measured_run out{{figure::text(std::string(traits_of(scheme).name)), figure::text(prec.name()), figure::integer(N), figure::integer(steps), status},
-                   status, status};
+  const table_row key{figure::text(std::string(traits_of(scheme).name)), figure::text(prec.name()), figure::integer(N)};
+  measured_run out{key, {}, status, status};
+  out.row.push_back(figure::integer(steps));
+  out.row.push_back(status);
   if (status.is_fault()) {
-    for (int k = 0; k < 8; ++k) out.row.push_back(figure{});
+    for (int k = 0; k < 5; ++k) out.row.push_back(figure{});
+    if (timing.max_runs > 0) out.timing_row = {key[0], key[1], key[2], figure{}, figure{}, figure{}};
     return out;
   }
   const Real H0 = energy(par, y0), error = std::max(error_q, error_p);
@@ -84,6 +89,7 @@ measured_run measure(scheme_id scheme, const precision& prec, long long N, long 
   }
   out.row.push_back(figure::flag(error <= floor_level));
   out.error = figure::of(error);
+  if (timing.max_runs == 0) return out;
 
   // Timing: one warm-up run, then runs until max_runs or max_seconds; each run is `steps` steps.
   const auto one_run = [&] {
@@ -104,9 +110,8 @@ measured_run measure(scheme_id scheme, const precision& prec, long long N, long 
   std::sort(seconds.begin(), seconds.end());
   const double median = seconds.size() % 2 ? seconds[seconds.size() / 2]
                                            : (seconds[seconds.size() / 2 - 1] + seconds[seconds.size() / 2]) / 2;
-  out.row.push_back(figure::integer(static_cast<long long>(seconds.size())));
-  out.row.push_back(figure::of(seconds.front()));
-  out.row.push_back(figure::of(median));
+  out.timing_row = {key[0], key[1], key[2], figure::integer(static_cast<long long>(seconds.size())), figure::of(seconds.front()),
+                    figure::of(median)};
   out.seconds = figure::of(seconds.front());
   return out;
 }
@@ -116,9 +121,10 @@ measured_run measure(scheme_id scheme, const precision& prec, long long N, long 
 section_result run_work_precision(const work_precision_settings& s) {
   section_result out;
   out.name = "work_precision";
-  out.title = "Work against precision: error and run time";
-  out.conventions = {{"m", 1}, {"omega", "2 pi"}, {"periods", s.periods}, {"start", "y_0 = (m omega, 0)"},
-                     {"timing", {{"warm_up_runs", 1}, {"max_runs", s.timing.max_runs}, {"max_seconds", s.timing.max_seconds}}}};
+  const bool timed = s.timing.max_runs > 0;
+  out.title = timed ? "Work against precision: error and run time" : "Work against precision: error (not timed)";
+  out.conventions = {{"m", 1}, {"omega", "2 pi"}, {"periods", s.periods}, {"start", "y_0 = (m omega, 0)"}};
+  out.timing_conventions = {{"warm_up_runs", 1}, {"max_runs", s.timing.max_runs}, {"max_seconds", s.timing.max_seconds}};
   table rows{"rows", "",
              fmt::format(
                  "m = 1, ω = 2π, {} period(s), y₀ = (mω, 0); N steps per period. Each scheme advances by its own step "
@@ -127,12 +133,13 @@ section_result run_work_precision(const work_precision_settings& s) {
                  "implicit midpoint rule, Gauss–Legendre and Lobatto IIIA–IIIB by solving their (linear) stage equations at "
                  "every step, Störmer–Verlet, Yoshida and RK4 explicitly. Errors: maxima over all t_j of |q_j − q(t_j)| and "
                  "|p_j − p(t_j)|/(mω), computed in the run's precision; the relative error of H (and of H_d for Simpson) at "
-                 "the end. Time: one warm-up run, then runs until {} runs or {} s, steady_clock; minimum and median per run. "
+                 "the end. {} "
                  "A run whose state is not finite, grows past 10⁶ times the amplitude (unstable, with the step), or throws "
                  "is recorded with its status. At the round-off floor: error ≤ 100 N eps. On this linear problem every "
                  "scheme could be reduced to a 2 × 2 matrix and cost the same per step; the peers run their general "
                  "algorithms, as for any force.",
-                 s.periods, s.timing.max_runs, simpson::to_string(s.timing.max_seconds, 3)),
+                 s.periods,
+                 timed ? "Run times, and how they are measured, are in timing.md." : "Not timed (--no-timing)."),
              {{"scheme", "scheme"},
               {"precision", "precision"},
               {"N_per_period", "N"},
@@ -142,11 +149,16 @@ section_result run_work_precision(const work_precision_settings& s) {
               {"error_p_max_over_m_omega", "error p/(mω)"},
               {"error_H_end_relative", "H rel. (end)"},
               {"error_Hd_end_relative", "H_d rel. (end)"},
-              {"at_round_off_floor", "at floor"},
-              {"runs", "runs", "runs", 3, true},
-              {"min_seconds", "min time", "s", 3, true},
-              {"median_seconds", "median time", "s", 3, true}}};
+              {"at_round_off_floor", "at floor"}}};
   rows.csv_file = "work_precision.csv";
+  table times{"timing_rows", "Run time of each configuration",
+              fmt::format("One warm-up run, then runs until {} runs or {} s (steady_clock); each run is the N × periods steps "
+                          "of the error run, without the error computation.",
+                          s.timing.max_runs, simpson::to_string(s.timing.max_seconds, 3)),
+              {{"scheme", "scheme"}, {"precision", "precision"}, {"N_per_period", "N"}, {"runs", "runs"},
+               {"min_seconds", "min time", "s"}, {"median_seconds", "median time", "s"}}};
+  times.csv_file = "work_precision_time.csv";
+  times.timing = true;
   std::vector<panel> by_time, by_n;
   for (const precision& prec : s.precisions) {
     panel time_panel{prec.name(), {"run time (s, minimum of repeats)", true}, {"max error", true}, {}, "bottom left"};
@@ -167,17 +179,34 @@ section_result run_work_precision(const work_precision_settings& s) {
       for (std::size_t k = 0; k < s.schemes.size(); ++k) {
         const scheme_id scheme = s.schemes[k];
         const scheme_style style = style_of(scheme);
-        series by_seconds{std::string(traits_of(scheme).name), style.line, style.color, style.point};
+        series by_seconds{std::string(traits_of(scheme).name), style.line, style.color, style.point, style.dash};
         series by_mesh = by_seconds;
         for (const long long N : s.meshes) {
           measured_run m = measure<Real>(scheme, prec, N, s.periods, s.timing, exact_by_N[N]);
           progress_step("work_precision", fmt::format("{} {} N = {}", traits_of(scheme).name, prec.name(), N));
-          by_seconds.add(m.seconds, m.error);
+          if (timed) by_seconds.add(m.seconds, m.error);
           by_mesh.add(figure::integer(N), m.error);
           rows.add(std::move(m.row));
+          if (timed) times.add(std::move(m.timing_row));
         }
         time_panel.curves.push_back(by_seconds);
         n_panel.curves.push_back(by_mesh);
+      }
+      // Guides: slopes N^-2 and N^-4, a factor 4 below the first Newmark and Simpson errors (so that
+      // they run beside the curves, not on them), and the round-off floor.
+      for (const auto& [order, anchor_scheme] : {std::pair{2, scheme_id::newmark}, std::pair{4, scheme_id::simpson}}) {
+        const auto anchor = std::find(s.schemes.begin(), s.schemes.end(), anchor_scheme);
+        if (anchor == s.schemes.end() || s.meshes.empty()) continue;
+        const series& anchored = n_panel.curves[static_cast<std::size_t>(anchor - s.schemes.begin())];
+        const auto e0 = anchored.y.front().plottable();
+        if (!e0 || !(*e0 > 0)) continue;
+        series slope{fmt::format("slope N^{{-{}}}", order), line_style::dashed, order == 2 ? 8 : 9};
+        slope.reference = true;
+        const double N0 = static_cast<double>(s.meshes.front());
+        for (const long long N : s.meshes) {
+          slope.add(figure::integer(N), figure::of(*e0 / 4 * std::pow(N0 / static_cast<double>(N), order)));
+        }
+        n_panel.curves.push_back(slope);
       }
       series floor_line{"round-off floor 100 N eps", line_style::dashed, 8};
       floor_line.reference = true;
@@ -190,12 +219,19 @@ section_result run_work_precision(const work_precision_settings& s) {
     by_n.push_back(n_panel);
   }
   out.add(std::move(rows));
+  if (timed) out.add(std::move(times));
   const int columns = static_cast<int>(std::min<std::size_t>(3, s.precisions.size()));
   const int panel_rows = static_cast<int>((s.precisions.size() + static_cast<std::size_t>(columns) - 1) / static_cast<std::size_t>(columns));
-  out.add(plot_description{"work_precision_time", "Maximum error against run time (log-log), one panel per precision", by_time,
-                           columns, 440 * columns, 360 * panel_rows});
+  if (timed) {
+    plot_description time_plot{"work_precision_time", "Maximum error against run time (log-log), one panel per precision",
+                               by_time, columns, 440 * columns, 360 * panel_rows};
+    time_plot.timing = true;
+    out.add(std::move(time_plot));
+  }
   out.add(plot_description{"work_precision_n",
-                           "Maximum error against N, one panel per precision; dashed: the round-off floor 100 N eps", by_n,
+                           "Maximum error against N, one panel per precision; dashed guides: slopes N⁻² and N⁻⁴ and the "
+                           "round-off floor 100 N eps",
+                           by_n,
                            columns, 440 * columns, 360 * panel_rows});
   return out;
 }

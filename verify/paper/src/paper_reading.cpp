@@ -117,6 +117,7 @@ printed_formula read_formula(const paper_source& paper, const formula_location& 
 paper_reading read_paper(const paper_source& paper) {
   paper_reading reading;
   reading.origin = paper.origin;
+  reading.sha256 = paper.sha256;
   for (const formula_location& where : ledger_formulas()) reading.formulas.emplace(where.name, read_formula(paper, where));
   return reading;
 }

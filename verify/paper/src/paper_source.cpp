@@ -2,6 +2,8 @@
 
 #include "embedded_paper.hpp"
 
+#include <simpson/verify/sha256.hpp>
+
 #include <algorithm>
 #include <fstream>
 #include <sstream>
@@ -82,7 +84,9 @@ std::string without_comments(const std::string& tex) {
   return out;
 }
 
-paper_source embedded_paper() { return {"embedded", without_comments(embedded_paper_text())}; }
+paper_source embedded_paper() {
+  return {"embedded", without_comments(embedded_paper_text()), sha256_hex(embedded_paper_text())};
+}
 
 paper_source load_paper(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -90,7 +94,7 @@ paper_source load_paper(const std::string& path) {
   std::ostringstream text;
   text << in.rdbuf();
   if (!in.good() && !in.eof()) throw std::invalid_argument("paper '" + path + "': cannot be read");
-  paper_source paper{path, without_comments(text.str())};
+  paper_source paper{path, without_comments(text.str()), sha256_hex(text.str())};
   if (paper.text.find("symplectic scheme") == std::string::npos || paper.text.find("\\label{Phi3}") == std::string::npos) {
     throw std::invalid_argument("paper '" + path +
                                 "': not the symplectic Simpson paper (no title 'symplectic scheme' or no \\label{Phi3})");

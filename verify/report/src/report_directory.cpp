@@ -123,6 +123,9 @@ std::string render_html(const std::string& markdown, const std::filesystem::path
     at = end;
   }
   out += body.substr(at);
+  // Links between the report's pages go to their HTML renderings.
+  for (std::size_t found; (found = out.find("href=\"timing.md\"")) != std::string::npos;) out.replace(found, 16, "href=\"timing.html\"");
+  for (std::size_t found; (found = out.find("href=\"report.md\"")) != std::string::npos;) out.replace(found, 16, "href=\"report.html\"");
   return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + title +
          "</title>\n<style>body{font-family:sans-serif;max-width:1200px;margin:2em auto;padding:0 1em;line-height:1.4}"
          "table{border-collapse:collapse;font-size:90%}td,th{border:1px solid #ccc;padding:2px 6px}"
@@ -131,6 +134,8 @@ std::string render_html(const std::string& markdown, const std::filesystem::path
 }
 
 }  // namespace
+
+std::string cmark_gfm_version() { return cmark_version_string(); }
 
 plot_outcome write_report_directory(const std::filesystem::path& dir, const std::vector<section_result>& sections,
                                     const std::function<report_documents(const plot_outcome&)>& documents) {
@@ -164,6 +169,11 @@ plot_outcome write_report_directory(const std::filesystem::path& dir, const std:
     write_file(staging / "report.md", docs.markdown);
     write_file(staging / "report.html", render_html(docs.markdown, staging, docs.title));
     if (!docs.junit.empty()) write_file(staging / "report.junit.xml", docs.junit);
+    if (!docs.timing.is_null()) {
+      write_file(staging / "timing.json", docs.timing.dump(2) + "\n");
+      write_file(staging / "timing.md", docs.timing_markdown);
+      write_file(staging / "timing.html", render_html(docs.timing_markdown, staging, docs.title + ": run times"));
+    }
     throw_if_interrupted();
     // Everything is written: the staged directory replaces the previous report whole.
     if (std::filesystem::exists(target)) {
@@ -194,7 +204,11 @@ bool holds_only_a_report(const std::filesystem::path& dir) {
       if (j.value("tool", "") != "simpson-verify") return false;
       if (j.contains("files")) {
         has_list = true;
-        for (const json& f : j["files"]) listed.push_back(f.get<std::string>());
+        for (const char* list : {"files", "timing_files"}) {
+          if (j.contains(list)) {
+            for (const json& f : j[list]) listed.push_back(f.get<std::string>());
+          }
+        }
       }
     } catch (const json::exception&) {
       return false;

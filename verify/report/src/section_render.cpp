@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace simpson::verify {
@@ -51,12 +52,7 @@ json table_json(const table& t) {
   for (const table_row& row : t.rows) {
     json r = json::object();
     for (std::size_t k = 0; k < t.columns.size(); ++k) {
-      if (row[k].what() == figure::kind::empty) continue;
-      if (t.columns[k].timing) {
-        r["timing"][t.columns[k].key] = figure_json(row[k]);
-      } else {
-        r[t.columns[k].key] = figure_json(row[k]);
-      }
+      if (row[k].what() != figure::kind::empty) r[t.columns[k].key] = figure_json(row[k]);
     }
     rows.push_back(std::move(r));
   }
@@ -68,22 +64,13 @@ std::string table_markdown(const table& t) {
   if (!t.title.empty()) md += "### " + t.title + "\n\n";
   if (!t.intro.empty()) md += t.intro + "\n\n";
   md += "|";
-  // A timing column carries its unit in each cell ("1.2e-03 s", "3 runs"), so that comparisons
-  // of reports can mask run times wherever they stand.
-  for (const column& c : t.columns) {
-    md += " " + markdown_cell(c.unit.empty() || c.timing ? c.header : c.header + " (" + c.unit + ")") + " |";
-  }
+  for (const column& c : t.columns) md += " " + markdown_cell(c.unit.empty() ? c.header : c.header + " (" + c.unit + ")") + " |";
   md += "\n|";
   for (std::size_t k = 0; k < t.columns.size(); ++k) md += "---|";
   md += "\n";
   for (const table_row& row : t.rows) {
     md += "|";
-    for (std::size_t k = 0; k < t.columns.size(); ++k) {
-      const column& c = t.columns[k];
-      std::string text = display(row[k], c.digits, c.fixed);
-      if (c.timing && !c.unit.empty() && row[k].what() != figure::kind::empty) text += " " + c.unit;
-      md += " " + markdown_cell(text) + " |";
-    }
+    for (std::size_t k = 0; k < t.columns.size(); ++k) md += " " + markdown_cell(display(row[k], t.columns[k].digits, t.columns[k].fixed)) + " |";
     md += "\n";
   }
   return md + "\n";
@@ -154,51 +141,97 @@ std::string gp_quote(const std::string& text) {
 constexpr const char* palette[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e",
                                    "#8c564b", "#e377c2", "#17becf", "#7f7f7f", "#000000"};
 
+/// The width in pixels of the legend column of a plot with several panels.
+constexpr int legend_width = 270;
+
+/// The gnuplot `with` clause of a curve: its style, colour, point type and dash type.
+std::string curve_style(const series& s) {
+  const char* color = palette[static_cast<std::size_t>(s.color) % std::size(palette)];
+  switch (s.style) {
+    case line_style::lines: return fmt::format("w l lw 2 dt {} lc rgb '{}'", s.dash, color);
+    case line_style::points: return fmt::format("w p pt {} ps 1.6 lc rgb '{}'", s.point, color);
+    case line_style::lines_points: return fmt::format("w lp pt {} lw 1.2 dt {} lc rgb '{}'", s.point, s.dash, color);
+    case line_style::dashed: return fmt::format("w l lw 1.2 dt 2 lc rgb '{}'", color);
+  }
+  return "w l";
+}
+
+/// Range commands for one axis: fixed when the axis has a range; otherwise fitted to the points
+/// given (the data curves, without guides), with a margin, and on a log axis spanning many decades,
+/// major tics every few decades and no minor tics, so that labels never crowd.
+std::string axis_range(const char* name, const axis& a, bool log, const std::vector<double>& values) {
+  if (a.range) return fmt::format("set {}range [{:.6g}:{:.6g}]\n", name, a.range->first, a.range->second);
+  if (values.empty()) return fmt::format("set autoscale {}\n", name);
+  const double low = *std::min_element(values.begin(), values.end()), high = *std::max_element(values.begin(), values.end());
+  std::string gp;
+  if (log) {
+    const double decades = std::log10(high / low);
+    const double margin = std::pow(10.0, std::max(0.04, 0.05 * decades));  // 5% of the span on each side
+    gp += fmt::format("set {}range [{:.6g}:{:.6g}]\n", name, low / margin, high * margin);
+    std::vector<double> distinct = values;
+    std::sort(distinct.begin(), distinct.end());
+    distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+    if (decades < 1.5 && distinct.size() <= 12) {
+      // Less than two decades: label the data's own values (N = 10, 20, 40), not a lone power of ten.
+      gp += fmt::format("set format {} '%g'\nset {}tics ({:.6g})\nset m{}tics default\n", name, name, fmt::join(distinct, ", "), name);
+    } else if (decades > 12) {
+      const int step = static_cast<int>(std::ceil(decades / 8));
+      gp += fmt::format("set {}tics 1e{}\nset m{}tics 1\n", name, step, name);
+    } else {
+      gp += fmt::format("set {}tics autofreq\nset m{}tics default\n", name, name);
+    }
+  } else if (high > low) {
+    const double margin = (high - low) / 20;
+    gp += fmt::format("set {}range [{:.6g}:{:.6g}]\n", name, low - margin, high + margin);
+  } else {
+    gp += fmt::format("set {}range [{:.6g}:{:.6g}]\n", name, low - 1, high + 1);
+  }
+  return gp;
+}
+
 std::string plot_commands(const plot_description& p) {
   std::string gp;
-  const std::size_t rows = (p.panels.size() + static_cast<std::size_t>(p.columns) - 1) / static_cast<std::size_t>(p.columns);
-  if (p.panels.size() > 1) gp += fmt::format("set multiplot layout {},{}\n", rows, p.columns);
+  const bool shared_legend = p.panels.size() > 1;
+  const std::size_t columns = static_cast<std::size_t>(std::max(1, p.columns));
+  const std::size_t rows = (p.panels.size() + columns - 1) / columns;
+  // Several panels: placed by hand in a grid left of a legend column (plot_width()).
+  const double legend_fraction = shared_legend ? static_cast<double>(legend_width) / plot_width(p) : 0;
+  const double panel_width = (1 - legend_fraction) / static_cast<double>(columns), panel_height = 1.0 / static_cast<double>(rows);
+  if (shared_legend) gp += "set multiplot\n";
   std::size_t block = 0;
-  for (const panel& pan : p.panels) {
+  std::vector<const series*> legend;  // each title once, in order of appearance
+  for (std::size_t k = 0; k < p.panels.size(); ++k) {
+    const panel& pan = p.panels[k];
+    if (shared_legend) {
+      gp += fmt::format("set origin {:.4f},{:.4f}\nset size {:.4f},{:.4f}\n", static_cast<double>(k % columns) * panel_width,
+                        1 - static_cast<double>(k / columns + 1) * panel_height, panel_width, panel_height);
+    }
     gp += "set title " + gp_quote(pan.title) + "\n";
     const bool log10_y = drawn_as_log10(pan);
     gp += "set xlabel " + gp_quote(pan.x.label) + "\nset ylabel " +
           gp_quote(log10_y ? "log10 of " + pan.y.label + " (beyond double's range)" : pan.y.label) + "\n";
     gp += pan.x.log ? "set logscale x\nset format x '10^{%L}'\n" : "unset logscale x\nset format x '%g'\n";
     gp += pan.y.log && !log10_y ? "set logscale y\nset format y '10^{%L}'\n" : "unset logscale y\nset format y '%g'\n";
-    gp += "set key " + pan.key + " font ',8'\n";
-    // The y range fitted to the data curves (references are clipped to it), with a margin.
-    double low = 0, high = 0;
-    bool any = false;
+    gp += shared_legend ? "unset key\n" : "set key " + pan.key + " font ',8'\n";
+    // Both ranges fitted to the data curves (guides such as slopes and floors are clipped to them).
+    std::vector<double> xs, ys;
     for (const series& s : pan.curves) {
       if (s.reference) continue;
-      for (const auto& point : drawable_points(pan, s)) {
-        low = any ? std::min(low, point.second) : point.second;
-        high = any ? std::max(high, point.second) : point.second;
-        any = true;
+      for (const auto& [x, y] : drawable_points(pan, s)) {
+        xs.push_back(x);
+        ys.push_back(y);
       }
     }
-    if (any && pan.y.log && !log10_y) {
-      gp += fmt::format("set yrange [{:.6g}:{:.6g}]\n", low / 4, high * 4);
-    } else if (any && high > low) {
-      const double margin = (high - low) / 20;
-      gp += fmt::format("set yrange [{:.6g}:{:.6g}]\n", low - margin, high + margin);
-    } else {
-      gp += "set autoscale y\n";
-    }
+    gp += axis_range("x", pan.x, pan.x.log, xs);
+    gp += axis_range("y", pan.y, pan.y.log && !log10_y, ys);
     std::vector<std::string> curves;
     for (const series& s : pan.curves) {
       if (drawable_points(pan, s).empty()) continue;
       const std::size_t index = block++;
-      const char* color = palette[static_cast<std::size_t>(s.color) % std::size(palette)];
-      std::string with;
-      switch (s.style) {
-        case line_style::lines: with = fmt::format("w l lw 1.5 lc rgb '{}'", color); break;
-        case line_style::points: with = fmt::format("w p pt {} ps 1.5 lc rgb '{}'", s.point, color); break;
-        case line_style::lines_points: with = fmt::format("w lp pt {} lc rgb '{}'", s.point, color); break;
-        case line_style::dashed: with = fmt::format("w l dt 2 lc rgb '{}'", color); break;
+      curves.push_back(fmt::format("'{}.dat' index {} u 1:2 {} t {}", p.name, index, curve_style(s), gp_quote(s.title)));
+      if (std::none_of(legend.begin(), legend.end(), [&](const series* seen) { return seen->title == s.title; })) {
+        legend.push_back(&s);
       }
-      curves.push_back(fmt::format("'{}.dat' index {} u 1:2 {} t {}", p.name, index, with, gp_quote(s.title)));
     }
     if (curves.empty()) {
       gp += "set label 1 'no point within double''s range' at graph 0.5, 0.5 center\nunset logscale xy\n"
@@ -207,7 +240,17 @@ std::string plot_commands(const plot_description& p) {
       gp += "plot " + fmt::format("{}", fmt::join(curves, ", \\\n     ")) + "\n";
     }
   }
-  if (p.panels.size() > 1) gp += "unset multiplot\n";
+  if (shared_legend) {
+    // The legend: an empty plot in the right-hand column, one key entry per curve title.
+    gp += fmt::format("set origin {:.4f},0\nset size {:.4f},1\nunset title\nunset xlabel\nunset ylabel\nunset logscale xy\n"
+                      "unset border\nunset tics\nset xrange [0:1]\nset yrange [0:1]\n"
+                      "set key at screen {:.4f},0.97 left top Left reverse samplen 3 spacing 1.3 font ',9'\n",
+                      1 - legend_fraction, legend_fraction, 1 - legend_fraction + 0.01);
+    std::vector<std::string> entries;
+    for (const series* s : legend) entries.push_back(fmt::format("NaN {} t {}", curve_style(*s), gp_quote(s->title)));
+    gp += "plot " + fmt::format("{}", fmt::join(entries, ", \\\n     ")) + "\n";
+    gp += "unset multiplot\n";
+  }
   return gp;
 }
 
@@ -233,24 +276,19 @@ static std::vector<std::string> panels_drawn_as_log10(const plot_description& p)
   return titles;
 }
 
-json section_json(const section_result& s) {
-  json j = json::object();
-  j["title"] = s.title;
-  if (!s.conventions.empty()) j["conventions"] = s.conventions;
-  json files = json::array();
-  for (const section_block& b : s.blocks) {
-    if (const table* t = std::get_if<table>(&b)) {
-      if (t->json) j[t->key] = table_json(*t);
-    }
-  }
-  for (const data_file& f : section_files(s)) files.push_back(f.name);
-  j["files"] = files;
-  return j;
+namespace {
+
+bool is_timing(const section_block& b) {
+  if (const table* t = std::get_if<table>(&b)) return t->timing;
+  if (const plot_description* p = std::get_if<plot_description>(&b)) return p->timing;
+  return false;
 }
 
-std::string section_markdown(const section_result& s) {
-  std::string md = "## " + s.title + "\n\n";
+/// The blocks of a section in Markdown: those that hold run times (`timing`) or the others.
+std::string blocks_markdown(const section_result& s, bool timing) {
+  std::string md;
   for (const section_block& b : s.blocks) {
+    if (is_timing(b) != timing) continue;
     if (const prose* p = std::get_if<prose>(&b)) {
       md += p->markdown + "\n\n";
     } else if (const table* t = std::get_if<table>(&b)) {
@@ -272,11 +310,56 @@ std::string section_markdown(const section_result& s) {
   return md;
 }
 
+}  // namespace
+
+bool has_timing(const section_result& s) {
+  return std::any_of(s.blocks.begin(), s.blocks.end(), is_timing);
+}
+
+json section_json(const section_result& s) {
+  json j = json::object();
+  j["title"] = s.title;
+  if (!s.conventions.empty()) j["conventions"] = s.conventions;
+  json files = json::array();
+  for (const section_block& b : s.blocks) {
+    if (const table* t = std::get_if<table>(&b)) {
+      if (t->json && !t->timing) j[t->key] = table_json(*t);
+    }
+  }
+  for (const data_file& f : section_files(s)) {
+    if (!f.timing) files.push_back(f.name);
+  }
+  j["files"] = files;
+  return j;
+}
+
+json section_timing_json(const section_result& s) {
+  json j = json::object();
+  if (!has_timing(s)) return j;
+  if (!s.timing_conventions.empty()) j["conventions"] = s.timing_conventions;
+  for (const section_block& b : s.blocks) {
+    if (const table* t = std::get_if<table>(&b); t && t->timing) j[t->key] = table_json(*t);
+  }
+  return j;
+}
+
+std::string section_markdown(const section_result& s) {
+  std::string md = "## " + s.title + "\n\n" + blocks_markdown(s, false);
+  if (has_timing(s)) md += "Run times of this section: [timing.md](timing.md) (kept apart, so that every other file of the report is the same from run to run).\n\n";
+  return md;
+}
+
+int plot_width(const plot_description& p) { return p.width + (p.panels.size() > 1 ? legend_width : 0); }
+
+std::string section_timing_markdown(const section_result& s) {
+  return has_timing(s) ? "## " + s.title + ": run times\n\n" + blocks_markdown(s, true) : std::string();
+}
+
 std::vector<data_file> section_files(const section_result& s) {
   std::vector<data_file> files;
   for (const section_block& b : s.blocks) {
-    if (const table* t = std::get_if<table>(&b); t && !t->csv_file.empty()) files.push_back({t->csv_file, table_csv(*t)});
-    if (const plot_description* p = std::get_if<plot_description>(&b)) files.push_back({p->name + ".dat", plot_data(*p)});
+    if (const table* t = std::get_if<table>(&b); t && !t->csv_file.empty()) files.push_back({t->csv_file, table_csv(*t), t->timing});
+    if (const plot_description* p = std::get_if<plot_description>(&b)) files.push_back({p->name + ".dat", plot_data(*p), p->timing});
   }
   return files;
 }
@@ -285,7 +368,7 @@ std::vector<plot_spec> section_plots(const section_result& s) {
   std::vector<plot_spec> plots;
   for (const section_block& b : s.blocks) {
     if (const plot_description* p = std::get_if<plot_description>(&b)) {
-      plots.push_back({p->name, p->caption, plot_commands(*p), p->width, p->height});
+      plots.push_back({p->name, p->caption, plot_commands(*p), plot_width(*p), p->height, p->timing});
     }
   }
   return plots;

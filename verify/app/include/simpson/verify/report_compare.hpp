@@ -8,7 +8,7 @@
 // - figures computed in floating point (decimal strings, JSON numbers): equal to the digits printed;
 // - numeric residuals of the rechecks (max_residual, bound_at_that_sample, max_residual_over_bound):
 //   their digits may differ, but within_bound must stay true;
-// - timings (every member named "timing") and the build environment: ignored.
+// - run times (in timing.json, which is not compared) and the environment: ignored.
 
 #include <simpson/verify/json.hpp>
 

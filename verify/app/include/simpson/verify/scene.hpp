@@ -43,6 +43,13 @@ struct scene {
   /// words for the title ("claims phi3-det only; no sections"; empty when the scene runs whole).
   json overrides = json::object();
   std::string selection;
+  /// The scene's JSON text as read (its SHA-256, with the overrides, is in report.json).
+  std::string source_text;
+  /// The command line of the run (report.json's environment); empty when run from a test.
+  std::vector<std::string> command_line;
+  /// False with --no-timing: no run time is measured or written, and every file of the report is
+  /// the same from run to run.
+  bool timing = true;
 };
 
 /// Parses and validates a scene; `origin` names it in errors. Throws std::invalid_argument with a

@@ -25,4 +25,12 @@ struct scene_selection {
 /// claim or section.
 void apply_selection(scene& s, const scene_selection& selection);
 
+/// --precisions (after apply_selection): replaces the precisions of the claims' numeric rechecks and
+/// of every section of the run that has a precision list (work_precision, stability). table1 runs
+/// in double, as the paper did, and has none. long_time compares double with mpfr:<mpfr_digits> by
+/// design: a run that includes it is refused, as is 'rational' for a run with sections (they need
+/// cos and sin). Records "precisions" and "precisions_applied_to" in `s.overrides`. Throws
+/// std::invalid_argument with a one-line message.
+void apply_precisions(scene& s, const std::vector<std::string>& names);
+
 }  // namespace simpson::verify

@@ -17,9 +17,12 @@ inline std::vector<scheme_id> all_schemes() {
   return ids;
 }
 
+/// How each configuration is timed: one warm-up run, then up to max_runs runs, stopping early once
+/// max_seconds are spent. max_runs = 0 times nothing (--no-timing): no run time is measured, and
+/// the section has no timing table or plot.
 struct timing_policy {
-  unsigned max_runs = 20;    // after one warm-up
-  double max_seconds = 2;    // stop repeating once this much time is spent
+  unsigned max_runs = 20;
+  double max_seconds = 2;
 };
 
 struct work_precision_settings {

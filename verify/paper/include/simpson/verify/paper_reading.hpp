@@ -39,6 +39,7 @@ const std::vector<formula_location>& ledger_formulas();
 
 struct paper_reading {
   std::string origin;  // "embedded" or the file read
+  std::string sha256;  // of the source's bytes
   std::map<std::string, printed_formula> formulas;
   const printed_formula& at(const std::string& name) const;
 };

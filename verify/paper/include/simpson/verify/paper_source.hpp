@@ -11,6 +11,7 @@ namespace simpson::verify {
 struct paper_source {
   std::string origin;  // "embedded" or the file's path
   std::string text;    // with comments blanked out (line numbers kept)
+  std::string sha256;  // of the source's bytes as read (report.json's environment)
 };
 
 /// One display of the paper: where it was found and its TeX, from after its \label to its end.

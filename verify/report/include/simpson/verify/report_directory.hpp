@@ -27,6 +27,8 @@ struct report_documents {
   std::string markdown;  // report.md, rendered to report.html
   std::string title;     // of report.html
   std::string junit;     // report.junit.xml (not written when empty)
+  json timing;                  // timing.json (null: not written, as with --no-timing)
+  std::string timing_markdown;  // timing.md, rendered to timing.html
 };
 
 /// Checks, before anything runs, that `dir` can take a report: it does not exist yet (its parent
@@ -38,6 +40,9 @@ void prepare_output_directory(const std::filesystem::path& dir);
 /// lists, or for a report written before that list existed, report.* and the section files
 /// (.csv, .dat, .gp, .svg, .png).
 bool holds_only_a_report(const std::filesystem::path& dir);
+
+/// The version of the cmark-gfm library that renders report.html ("0.29.0.gfm.6").
+std::string cmark_gfm_version();
 
 /// Writes the sections' files and plots, then the documents, and swaps the directory into place.
 plot_outcome write_report_directory(const std::filesystem::path& dir, const std::vector<section_result>& sections,

@@ -6,6 +6,7 @@
 #include <simpson/verify/json.hpp>
 #include <simpson/verify/figure.hpp>
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <variant>
@@ -16,10 +17,9 @@ namespace simpson::verify {
 /// A column of a table. `key` names it in JSON and CSV, `header` (with `unit`) in Markdown;
 /// numbers are shown to `digits` significant digits in Markdown, or with `digits` decimals when
 /// `fixed` (counts of digits, percentages); JSON and CSV keep every digit.
-/// A timing column goes into the row's "timing" member in JSON (left out when reports are compared).
 struct column {
-  column(std::string key_, std::string header_, std::string unit_ = {}, int digits_ = 3, bool timing_ = false)
-      : key(std::move(key_)), header(std::move(header_)), unit(std::move(unit_)), digits(digits_), timing(timing_) {}
+  column(std::string key_, std::string header_, std::string unit_ = {}, int digits_ = 3)
+      : key(std::move(key_)), header(std::move(header_)), unit(std::move(unit_)), digits(digits_) {}
   /// A column shown in fixed notation with `decimals` decimals.
   static column fixed_point(std::string key_, std::string header_, int decimals) {
     column c(std::move(key_), std::move(header_), {}, decimals);
@@ -30,7 +30,6 @@ struct column {
   std::string header;
   std::string unit;
   int digits = 3;
-  bool timing = false;
   bool fixed = false;
 };
 
@@ -38,6 +37,8 @@ using table_row = std::vector<figure>;
 
 /// Where a table is rendered: report.json and report.md always; a CSV file when `csv_file` is set.
 /// `markdown = false` keeps a long-format table out of report.md (a wide table shows it there).
+/// A `timing` table holds run times: it goes into timing.json and timing.md instead, so that every
+/// other file of a report is the same from run to run (section_render.hpp).
 struct table {
   table(std::string key_, std::string title_, std::string intro_, std::vector<column> columns_)
       : key(std::move(key_)), title(std::move(title_)), intro(std::move(intro_)), columns(std::move(columns_)) {}
@@ -49,6 +50,7 @@ struct table {
   std::string csv_file;
   bool markdown = true;
   bool json = true;
+  bool timing = false;
 
   /// Appends a row; throws std::logic_error when its size differs from the columns'.
   void add(table_row row);
@@ -60,13 +62,15 @@ enum class line_style { lines, points, lines_points, dashed };
 /// plot's caption says how many), a title, and a style. `color` indexes a fixed palette, so that one
 /// scheme keeps its colour across panels; `point` is a gnuplot point type.
 struct series {
-  explicit series(std::string title_, line_style style_ = line_style::lines_points, int color_ = 0, int point_ = 7)
-      : title(std::move(title_)), style(style_), color(color_), point(point_) {}
+  explicit series(std::string title_, line_style style_ = line_style::lines_points, int color_ = 0, int point_ = 7,
+                  int dash_ = 1)
+      : title(std::move(title_)), style(style_), color(color_), point(point_), dash(dash_) {}
   std::string title;
   std::vector<figure> x, y;
   line_style style = line_style::lines_points;
   int color = 0;
   int point = 7;
+  int dash = 1;  // gnuplot dash type of a line: 1 solid, 2 dashed, 3 short dashes, 4 dash-dot, 5 dash-dot-dot
   /// A guide (a slope, a round-off floor): drawn, but the y range is fitted to the data alone.
   bool reference = false;
   void add(figure xv, figure yv) {
@@ -79,6 +83,8 @@ struct axis {
   axis(std::string label_ = {}, bool log_ = false) : label(std::move(label_)), log(log_) {}
   std::string label;
   bool log = false;
+  /// A fixed range (a digits axis runs from 0 to its precision's digits); unset: fitted to the data.
+  std::optional<std::pair<double, double>> range;
 };
 
 struct panel {
@@ -87,9 +93,11 @@ struct panel {
   std::string title;
   axis x, y;
   std::vector<series> curves;
-  std::string key = "top right";  // gnuplot legend position
+  std::string key = "top right";  // gnuplot legend position of a single-panel plot
 };
 
+/// A plot of one or more panels. With several panels, their curves share one legend in a column to
+/// the right of the panels (each title once), so that no legend covers a curve.
 struct plot_description {
   plot_description(std::string name_, std::string caption_, std::vector<panel> panels_, int columns_ = 1, int width_ = 800,
                    int height_ = 500)
@@ -101,6 +109,7 @@ struct plot_description {
   int columns = 1;      // panels per row
   int width = 800;      // pixels
   int height = 500;
+  bool timing = false;  // a plot of run times: shown in timing.md, not report.md
 };
 
 struct prose {
@@ -114,6 +123,7 @@ struct section_result {
   std::string name;   // scene key: "table1", "work_precision", "stability", "long_time"
   std::string title;  // "## title" in report.md
   json conventions = json::object();  // the settings the numbers depend on, as the scene gave them
+  json timing_conventions = json::object();  // how its run times were measured (timing.json)
   std::vector<section_block> blocks;
 
   section_result& text(std::string markdown) {
