@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.63017e-08:0.00170759]
+set xrange [5.60151e-08:0.00190076]
 set xtics autofreq
 set mxtics default
 set yrange [4.29802e-15:0.337578]
@@ -37,7 +37,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [9.82648e-08:0.00446972]
+set xrange [1.37796e-07:0.00449452]
 set xtics autofreq
 set mxtics default
 set yrange [3.30044e-15:0.34185]
@@ -61,7 +61,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.00212e-06:0.0348881]
+set xrange [1.06716e-06:0.0354655]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -85,7 +85,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [3.00344e-06:0.046596]
+set xrange [2.822e-06:0.0624856]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -109,7 +109,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.82703e-06:0.0584932]
+set xrange [2.56536e-06:0.0611021]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -159,7 +159,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.63017e-08:0.00170759]
+set xrange [5.60151e-08:0.00190076]
 set xtics autofreq
 set mxtics default
 set yrange [4.29802e-15:0.337578]
@@ -183,7 +183,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [9.82648e-08:0.00446972]
+set xrange [1.37796e-07:0.00449452]
 set xtics autofreq
 set mxtics default
 set yrange [3.30044e-15:0.34185]
@@ -207,7 +207,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.00212e-06:0.0348881]
+set xrange [1.06716e-06:0.0354655]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -231,7 +231,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [3.00344e-06:0.046596]
+set xrange [2.822e-06:0.0624856]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -255,7 +255,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.82703e-06:0.0584932]
+set xrange [2.56536e-06:0.0611021]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
