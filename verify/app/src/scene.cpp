@@ -237,8 +237,12 @@ scene parse_scene(const std::string& text, const std::string& origin) {
   }
   const nlohmann::json claims = doc.contains("claims") ? doc["claims"] : nlohmann::json::array();
   std::set<std::string> wanted;
-  if (claims.is_string() && claims.get<std::string>() == "all") {
-    for (const claim& c : ledger()) wanted.insert(c.id);
+  if (claims.is_string() && (claims.get<std::string>() == "all" || claims.get<std::string>() == "beyond")) {
+    // "all": every claim of the paper; "beyond": the ledger's part beyond the paper (section "beyond").
+    const bool beyond = claims.get<std::string>() == "beyond";
+    for (const claim& c : ledger()) {
+      if ((c.section == "beyond") == beyond) wanted.insert(c.id);
+    }
   } else if (claims.is_array() && (!claims.empty() || !doc.contains("claims"))) {
     for (std::size_t k = 0; k < claims.size(); ++k) {
       if (!claims[k].is_string()) fail(origin, "'claims[" + std::to_string(k) + "]' must be a string");
@@ -249,7 +253,7 @@ scene parse_scene(const std::string& text, const std::string& origin) {
       }
     }
   } else {
-    fail(origin, "'claims' must be \"all\" or a non-empty list of claim ids");
+    fail(origin, "'claims' must be \"all\" (the paper's), \"beyond\" (beyond the paper) or a non-empty list of claim ids");
   }
   for (const claim& c : ledger()) {
     if (wanted.count(c.id)) s.claims.push_back(c.id);

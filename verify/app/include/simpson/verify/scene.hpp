@@ -4,7 +4,8 @@
 // {
 //   "name": "paper",                       required, [a-z0-9_-]+
 //   "description": "...",                  optional
-//   "claims": "all" | ["phi3-det", ...],   required
+//   "claims": "all" | "beyond" | ["phi3-det", ...],  required; "all": the paper's claims,
+//                                          "beyond": the part beyond the paper
 //   "precisions": ["double", "mpfr:100"],  required, names of the precision list
 //   "samples": 16,                         optional, random samples per numeric recheck, 1..10000
 //   "seed": 20230830,                      optional, the default seed (--seed overrides)
