@@ -196,7 +196,7 @@ grep -q '^claim gamma-system: verdict: "erratum" → "holds"$' "$work/out" || fa
 check "compare missing" 2 compare "$reference" "$work/no-such-report"
 check "list claims" 0 --list-claims
 check "beyond scene" 0 --scene beyond --quiet --out "$work/beyond"
-grep -q '^5 claims: 5 held, 0 errata, 0 failed; all verdicts as expected' "$work/out" || fail "beyond scene: $(cat "$work/out")"
+grep -q '^8 claims: 8 held, 0 errata, 0 failed; all verdicts as expected' "$work/out" || fail "beyond scene: $(cat "$work/out")"
 check "version" 0 --version
 grep -Eq '^simpson-verify [0-9]+\.[0-9]+\.[0-9]+ \(commit ([0-9a-f]{40}|unknown), ' "$work/out" || fail "version: no commit: $(cat "$work/out")"
 

@@ -10,5 +10,6 @@
 namespace simpson::verify::detail {
 
 void add_beyond_claims(std::vector<claim>& claims);
+void add_beyond_ndof_claims(std::vector<claim>& claims);
 
 }  // namespace simpson::verify::detail
