@@ -214,7 +214,8 @@ check "timing runs" 0 --scene quick --sections work_precision --timing-runs 1 --
 grep -q '"max_runs": 1' "$work/runs/timing.json" || fail "timing runs: not in timing.json"
 check "timing runs 0" 2 --scene quick --timing-runs 0 --out "$work/none-t1"
 check "timing both" 2 --scene quick --timing-runs 3 --no-timing --out "$work/none-t2"
-for d in none-prec1 none-prec2 none-prec3 none-t1 none-t2; do [ -e "$work/$d" ] && fail "$d: written"; done
+check "timing runs, nothing timed" 2 --claims phi3-det --timing-runs 3 --out "$work/none-t3"
+for d in none-prec1 none-prec2 none-prec3 none-t1 none-t2 none-t3; do [ -e "$work/$d" ] && fail "$d: written"; done
 
 echo "$passes passed, $failures failed"
 [ "$failures" = 0 ]

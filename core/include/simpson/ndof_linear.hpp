@@ -3,7 +3,10 @@
 // L = ½ q̇ᵀ M q̇ − ½ qᵀ K q (M symmetric positive definite, K symmetric), as in the authors' 2024
 // work on quadratic Lagrangians. The nonlinear step's equations (nonlinear_simpson_step.hpp) with
 // the matrix M for m and ∇V = K q are linear, so the step is a 2n × 2n matrix: Φ₃'s block analogue.
-// Generic over the scalar (Eigen with Boost.Multiprecision numbers, exact with rationals).
+// Generic over the floating scalars (Eigen with Boost.Multiprecision numbers). Not with
+// `rational`: Eigen 3.4's products do not compile with Boost 1.74's cpp_rational (Eigen's
+// scalar-product overload probes is_convertible<Matrix, number>, a hard error in cpp_int's
+// byte-container constructor); the exact proofs are GiNaC's (claims ndof-symplectic, ndof-energy).
 
 #include <Eigen/Dense>
 

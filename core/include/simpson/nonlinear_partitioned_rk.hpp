@@ -1,8 +1,7 @@
 #pragma once
-// Partitioned Runge–Kutta methods on H = p²/(2m) + V(q) for any smooth V, their stage equations
-// solved by Newton's method: Lobatto IIIA–IIIB (the Simpson scheme's twin, claim
-// nonlinear-lobatto-equivalence), Gauss–Legendre, and the explicit peers (whose Newton solve ends
-// after one iteration, the equations being triangular). Beyond the paper.
+// Partitioned Runge–Kutta methods on H = p²/(2m) + V(q) for any smooth V, any pair of tableaux
+// (runge_kutta_tableaux.hpp), their stage equations solved by Newton's method: Lobatto IIIA–IIIB is
+// the Simpson scheme's twin (claim nonlinear-lobatto-equivalence). Beyond the paper.
 
 #include <simpson/nonlinear_simpson_step.hpp>
 #include <simpson/partitioned_runge_kutta.hpp>
@@ -35,13 +34,12 @@ stage_coupling<Real> couple(const butcher_tableau<Real>& for_q, const butcher_ta
   return c;
 }
 
-/// The stage equations in the stage positions, the stage momenta P_j = p − h Σ_k â_jk V'(Q_k)
-/// substituted: R_i(Q) = Q_i − q − (h/m) c_i p + (h²/m) Σ_k (A Â)_ik V'(Q_k).
-template <class Real, class Force>
-std::vector<Real> prk_stage_residuals(const stage_coupling<Real>& c, const Real& m, const Real& h, Force&& force, const Real& q,
-                                      const Real& p, const std::vector<Real>& stages) {
-  std::vector<Real> forces, r;
-  for (const Real& Q : stages) forces.push_back(force(Q));
+/// The stage equations in the stage positions, given V'(Q_k), the stage momenta
+/// P_j = p − h Σ_k â_jk V'(Q_k) substituted: R_i(Q) = Q_i − q − (h/m) c_i p + (h²/m) Σ_k (A Â)_ik V'(Q_k).
+template <class Real>
+std::vector<Real> prk_stage_residuals(const stage_coupling<Real>& c, const Real& m, const Real& h, const Real& q, const Real& p,
+                                      const std::vector<Real>& stages, const std::vector<Real>& forces) {
+  std::vector<Real> r;
   for (std::size_t i = 0; i < stages.size(); ++i) {
     Real coupled(0);
     for (std::size_t k = 0; k < stages.size(); ++k) coupled += c.product[i][k] * forces[k];
@@ -50,13 +48,11 @@ std::vector<Real> prk_stage_residuals(const stage_coupling<Real>& c, const Real&
   return r;
 }
 
-/// The step from its stages: q' = q + (h/m) Σ_j b_j P_j, p' = p − h Σ_k b̂_k V'(Q_k).
-template <class Real, class Force>
+/// The step from V' at its stages: q' = q + (h/m) Σ_j b_j P_j, p' = p − h Σ_k b̂_k V'(Q_k).
+template <class Real>
 phase_point<Real> prk_update(const butcher_tableau<Real>& for_q, const butcher_tableau<Real>& for_p, const Real& m, const Real& h,
-                             Force&& force, const Real& q, const Real& p, const std::vector<Real>& stages) {
-  const std::size_t s = stages.size();
-  std::vector<Real> forces;
-  for (const Real& Q : stages) forces.push_back(force(Q));
+                             const Real& q, const Real& p, const std::vector<Real>& forces) {
+  const std::size_t s = forces.size();
   Real q_next = q, p_next = p;
   for (std::size_t j = 0; j < s; ++j) {
     Real P = p;
@@ -85,18 +81,20 @@ prk_step_result<Real> prk_nonlinear_step(const butcher_tableau<Real>& for_q, con
                                          const stage_coupling<Real>& c, const Real& m, const Real& h, const Potential& V,
                                          const phase_point<Real>& y) {
   using std::abs;
-  const auto force = [&V](const Real& v) { return V.derivative(v); };
   const std::size_t s = c.nodes.size();
   prk_step_result<Real> out{y, std::vector<Real>(s), 0, Real(0), Real(0)};
   for (std::size_t i = 0; i < s; ++i) out.stages[i] = y.q + c.nodes[i] * h * y.p / m;
+  std::vector<Real> forces(s);
   for (;;) {
-    const std::vector<Real> r = prk_stage_residuals(c, m, h, force, y.q, y.p, out.stages);
+    for (std::size_t k = 0; k < s; ++k) forces[k] = V.derivative(out.stages[k]);
+    const std::vector<Real> r = prk_stage_residuals(c, m, h, y.q, y.p, out.stages, forces);
     out.residual = Real(0);
     out.residual_bound = Real(0);
     bool within = true, finite = true;
     for (std::size_t i = 0; i < s; ++i) {
+      // The condition: the sum of the magnitudes of R_i's terms.
       Real terms = abs(out.stages[i]) + abs(y.q) + abs(h / m * c.nodes[i] * y.p);
-      for (std::size_t k = 0; k < s; ++k) terms += abs(h * h / m * c.product[i][k] * V.derivative(out.stages[k]));
+      for (std::size_t k = 0; k < s; ++k) terms += abs(h * h / m * c.product[i][k] * forces[k]);
       const Real bound = 16 * eps<Real>() * terms;
       finite = finite && detail::finite(r[i]) && detail::finite(bound);
       within = within && abs(r[i]) <= bound;
@@ -105,7 +103,7 @@ prk_step_result<Real> prk_nonlinear_step(const butcher_tableau<Real>& for_q, con
     }
     if (!finite) break;
     if (within) {
-      out.state = prk_update(for_q, for_p, m, h, force, y.q, y.p, out.stages);
+      out.state = prk_update(for_q, for_p, m, h, y.q, y.p, forces);
       return out;
     }
     if (out.newton_iterations == max_newton_iterations) break;

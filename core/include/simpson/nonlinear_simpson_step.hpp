@@ -16,19 +16,20 @@
 
 namespace simpson {
 
-/// The internal node's equation, scaled by the mass:
+/// The internal node's equation, scaled by the mass, given V'(q) and V'(x):
 /// F(x) = m (x − q) − (h/2) p + (h²/12) V'(q) + (h²/24) V'(x) = 0.
-template <class Real, class Force>
-Real simpson_internal_residual(const Real& m, const Real& h, Force&& force, const Real& q, const Real& p, const Real& x) {
-  return m * (x - q) - h / 2 * p + h * h / 12 * force(q) + h * h / 24 * force(x);
+template <class Real>
+Real simpson_internal_residual(const Real& m, const Real& h, const Real& q, const Real& p, const Real& x, const Real& force_q,
+                               const Real& force_x) {
+  return m * (x - q) - h / 2 * p + h * h / 12 * force_q + h * h / 24 * force_x;
 }
 
-/// The step given the internal node x:
+/// The step given V' at q and at the internal node x (`force` gives V' at the new position):
 /// q_{j+1} = q + (h/m) p − (h²/(6m)) (V'(q) + 2 V'(x)), p_{j+1} = p − (h/6) (V'(q) + 4 V'(x) + V'(q_{j+1})):
 /// Simpson's rule for the impulse of the force.
 template <class Real, class Force>
-phase_point<Real> simpson_update(const Real& m, const Real& h, Force&& force, const Real& q, const Real& p, const Real& x) {
-  const Real force_q = force(q), force_x = force(x);
+phase_point<Real> simpson_update(const Real& m, const Real& h, Force&& force, const Real& q, const Real& p, const Real& force_q,
+                                 const Real& force_x) {
   const Real q_next = q + h / m * p - h * h / (6 * m) * (force_q + 2 * force_x);
   return {p - h / 6 * (force_q + 4 * force_x + force(q_next)), q_next};
 }
@@ -39,10 +40,9 @@ phase_point<Real> simpson_update(const Real& m, const Real& h, Force&& force, co
 ///   q'_q = 1 − (h²/(6m))(V''(q) + 2 V''(x) x_q), q'_p = h/m − (h²/(3m)) V''(x) x_p;
 ///   p'_q = −(h/6)(V''(q) + 4 V''(x) x_q + V''(q') q'_q), p'_p = 1 − (h/6)(4 V''(x) x_p + V''(q') q'_p).
 /// Its determinant is 1 for every V (claim nonlinear-symplectic).
-template <class Real, class Curvature>
-one_step_matrix<Real> simpson_step_jacobian(const Real& m, const Real& h, Curvature&& curvature, const Real& q, const Real& x,
-                                            const Real& q_next) {
-  const Real c_q = curvature(q), c_x = curvature(x), c_next = curvature(q_next);
+/// `c_q`, `c_x`, `c_next` are V'' at q, x and q'.
+template <class Real>
+one_step_matrix<Real> simpson_step_jacobian(const Real& m, const Real& h, const Real& c_q, const Real& c_x, const Real& c_next) {
   const Real slope = m + h * h / 24 * c_x;
   const Real x_q = (m - h * h / 12 * c_q) / slope, x_p = h / 2 / slope;
   const Real qn_q = 1 - h * h / (6 * m) * (c_q + 2 * c_x * x_q), qn_p = h / m - h * h / (3 * m) * c_x * x_p;
@@ -82,7 +82,7 @@ inline constexpr int max_newton_iterations = 100;
 /// One step for a potential with derivative() and second_derivative(). Newton's method on F from
 /// x₀ = q + h p/(2m), in the working precision, until |F(x)| ≤ 16 eps Σ|terms of F| (each term
 /// is a few roundings; V'(x) is computed to about an ulp). Throws std::domain_error, naming the
-/// state and the last residual, when F' vanishes, a value is not finite, or Newton does not reach
+/// iterations and the last residual, when F' vanishes, a value is not finite, or Newton does not reach
 /// that bound in max_newton_iterations: never a silent result.
 template <class Real, class Potential>
 nonlinear_step_result<Real> simpson_nonlinear_step(const Real& m, const Real& h, const Potential& V, const phase_point<Real>& y) {
@@ -93,13 +93,14 @@ nonlinear_step_result<Real> simpson_nonlinear_step(const Real& m, const Real& h,
   Real& x = out.internal_node;
   for (;;) {
     const Real force_x = force(x);
-    const Real residual = m * (x - y.q) - h / 2 * y.p + h * h / 12 * force_q + h * h / 24 * force_x;
+    const Real residual = simpson_internal_residual(m, h, y.q, y.p, x, force_q, force_x);
     out.residual = abs(residual);
+    // The condition: the sum of the magnitudes of F's terms.
     out.residual_bound = 16 * eps<Real>() *
                          (m * (abs(x) + abs(y.q)) + abs(h / 2 * y.p) + h * h / 12 * abs(force_q) + h * h / 24 * abs(force_x));
     if (!detail::finite(out.residual) || !detail::finite(out.residual_bound)) break;
     if (out.residual <= out.residual_bound) {
-      out.state = simpson_update(m, h, force, y.q, y.p, x);
+      out.state = simpson_update(m, h, force, y.q, y.p, force_q, force_x);
       return out;
     }
     const Real slope = m + h * h / 24 * V.second_derivative(x);

@@ -65,18 +65,24 @@ std::string version_line() {
                      commit == "unknown" ? "not built from a git checkout" : dirty ? "with uncommitted changes" : "clean");
 }
 
-std::string run_timestamp_utc() {
+run_timestamp run_timestamp_utc() {
   std::time_t now = std::time(nullptr);
+  std::string source = "clock";
   if (const char* epoch = std::getenv("SOURCE_DATE_EPOCH"); epoch != nullptr && *epoch != '\0') {
     char* end = nullptr;
     const long long seconds = std::strtoll(epoch, &end, 10);
-    if (end != nullptr && *end == '\0' && seconds >= 0) now = static_cast<std::time_t>(seconds);
+    if (end != nullptr && *end == '\0' && seconds >= 0) {
+      now = static_cast<std::time_t>(seconds);
+      source = "SOURCE_DATE_EPOCH";
+    } else {
+      source = std::string("clock (SOURCE_DATE_EPOCH '") + epoch + "' ignored: not a non-negative integer)";
+    }
   }
   std::tm utc{};
   ::gmtime_r(&now, &utc);
   char text[32];
   std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
-  return text;
+  return {text, source};
 }
 
 std::string resolved_scene_sha256(const scene& s) {
@@ -93,7 +99,7 @@ json build_environment(const scene& s, const paper_reading& paper) {
   const auto [commit, dirty] = git_commit();
   ::utsname host{};
   const bool have_host = ::uname(&host) == 0;
-  const char* epoch = std::getenv("SOURCE_DATE_EPOCH");
+  const run_timestamp timestamp = run_timestamp_utc();
   return json{{"tool", "simpson-verify"},
               {"version", SIMPSON_VERSION},
               {"git_commit", commit},
@@ -111,8 +117,8 @@ json build_environment(const scene& s, const paper_reading& paper) {
               {"ginac", fmt::format("{}.{}.{}", GINACLIB_MAJOR_VERSION, GINACLIB_MINOR_VERSION, GINACLIB_MICRO_VERSION)},
               {"cmark_gfm", cmark_gfm_version()},
               {"gnuplot", gnuplot_version()},
-              {"timestamp_utc", run_timestamp_utc()},
-              {"timestamp_source", epoch != nullptr && *epoch != '\0' ? "SOURCE_DATE_EPOCH" : "clock"},
+              {"timestamp_utc", timestamp.utc},
+              {"timestamp_source", timestamp.source},
               {"command_line", s.command_line},
               {"scene_sha256", resolved_scene_sha256(s)},
               {"paper", paper.origin},

@@ -200,7 +200,10 @@ int main(int argc, char** argv) {
     if (!timing_runs_text.empty() && no_timing) throw std::invalid_argument("--timing-runs and --no-timing exclude each other");
     if (!timing_runs_text.empty()) {
       const auto runs = static_cast<unsigned>(parse_count("--timing-runs", timing_runs_text, 1, 1000));
-      if (s.experiments.work_precision) s.experiments.work_precision->timing.max_runs = runs;
+      if (!s.experiments.work_precision) {
+        throw std::invalid_argument("--timing-runs: the run has no work_precision section, the only one timed by repeats");
+      }
+      s.experiments.work_precision->timing.max_runs = runs;
       s.overrides["timing_runs"] = runs;
     }
     if (no_timing) {

@@ -175,11 +175,8 @@ section_result run_table1(const table1_settings& s) {
     const long long N0 = s.meshes.front();
     for (const int order : {2, 4}) {
       const double e0 = ours(runs, published_rows()[order == 2 ? 2 : 3], N0);  // the state rows, the lower curves
-      series slope{fmt::format("slope h^{}", order), line_style::dashed, order == 2 ? 8 : 9};
-      slope.reference = true;
-      for (const long long N : s.meshes) {
-        slope.add(figure::integer(N), figure::of(e0 / 4 * std::pow(static_cast<double>(N0) / static_cast<double>(N), order)));
-      }
+      const series slope = slope_guide(fmt::format("slope h^{}", order), order == 2 ? 8 : 9, static_cast<double>(N0), e0 / 4,
+                                       s.meshes, order);
       convergence.curves.push_back(slope);
     }
   }

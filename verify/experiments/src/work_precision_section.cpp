@@ -17,7 +17,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <map>
 
 namespace simpson::verify {
@@ -200,12 +199,8 @@ section_result run_work_precision(const work_precision_settings& s) {
         const series& anchored = n_panel.curves[static_cast<std::size_t>(anchor - s.schemes.begin())];
         const auto e0 = anchored.y.front().plottable();
         if (!e0 || !(*e0 > 0)) continue;
-        series slope{fmt::format("slope N^{{-{}}}", order), line_style::dashed, order == 2 ? 8 : 9};
-        slope.reference = true;
-        const double N0 = static_cast<double>(s.meshes.front());
-        for (const long long N : s.meshes) {
-          slope.add(figure::integer(N), figure::of(*e0 / 4 * std::pow(N0 / static_cast<double>(N), order)));
-        }
+        const series slope = slope_guide(fmt::format("slope N^{{-{}}}", order), order == 2 ? 8 : 9,
+                                         static_cast<double>(s.meshes.front()), *e0 / 4, s.meshes, order);
         n_panel.curves.push_back(slope);
       }
       series floor_line{"round-off floor 100 N eps", line_style::dashed, 8};

@@ -13,9 +13,15 @@ namespace simpson::verify {
 /// "simpson-verify 0.1.0 (commit 0123abc…, clean)": what --version prints.
 std::string version_line();
 
-/// The UTC time of the run as ISO 8601 ("2026-11-22T06:40:00Z"): SOURCE_DATE_EPOCH when set (the
-/// reproducible-builds convention, so that two runs can be compared byte for byte), else now.
-std::string run_timestamp_utc();
+/// The UTC time of the run as ISO 8601 ("2026-11-22T06:40:00Z") and where it came from:
+/// SOURCE_DATE_EPOCH when it is set to a non-negative integer (the reproducible-builds convention,
+/// so that two runs can be compared byte for byte), else the clock (saying so when the variable
+/// was set but not usable).
+struct run_timestamp {
+  std::string utc;
+  std::string source;
+};
+run_timestamp run_timestamp_utc();
 
 /// The SHA-256 of the scene as resolved: the canonical JSON (sorted keys, no spaces) of
 /// {"scene": its JSON as read, "overrides": what the command line changed}.

@@ -6,6 +6,7 @@
 #include <simpson/verify/json.hpp>
 #include <simpson/verify/figure.hpp>
 
+#include <cmath>
 #include <optional>
 #include <string>
 #include <utility>
@@ -78,6 +79,16 @@ struct series {
     y.push_back(std::move(yv));
   }
 };
+
+/// A guide y = y₀ (x₀/x)^order through (x₀, y₀) over the given x (a convergence slope): dashed, a
+/// reference (so the y range is fitted to the data alone). Anchor it a factor below the curve it
+/// compares with, so that it runs beside the curve instead of on it.
+inline series slope_guide(std::string title, int color, double x0, double y0, const std::vector<long long>& xs, int order) {
+  series guide(std::move(title), line_style::dashed, color);
+  guide.reference = true;
+  for (const long long x : xs) guide.add(figure::integer(x), figure::of(y0 * std::pow(x0 / static_cast<double>(x), order)));
+  return guide;
+}
 
 struct axis {
   axis(std::string label_ = {}, bool log_ = false) : label(std::move(label_)), log(log_) {}
