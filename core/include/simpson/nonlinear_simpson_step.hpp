@@ -11,6 +11,8 @@
 #include <simpson/scalar_traits.hpp>
 
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -60,9 +62,10 @@ bool finite(const Real& v) {
 /// The error of a Newton solve that did not reach its bound: never a silent result.
 template <class Real>
 [[noreturn]] void throw_newton_failure(const char* who, int iterations, const Real& residual, const Real& bound) {
-  throw std::domain_error(std::string(who) + ": Newton's method did not converge after " + std::to_string(iterations) +
-                          " iterations (last residual " + std::to_string(static_cast<double>(residual)) + ", bound " +
-                          std::to_string(static_cast<double>(bound)) + ")");
+  std::ostringstream what;
+  what << who << ": Newton's method did not converge after " << iterations << " iterations (last residual "
+       << std::setprecision(3) << std::scientific << static_cast<double>(residual) << ", bound " << static_cast<double>(bound) << ")";
+  throw std::domain_error(what.str());
 }
 }  // namespace detail
 

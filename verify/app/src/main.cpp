@@ -120,7 +120,7 @@ int main(int argc, char** argv) {
                  "comma-separated claim ids; alone, runs these claims and no section (default: the scene's)")
       ->delimiter(',');
   app.add_option("--sections", section_list,
-                 "comma-separated sections (table1, work_precision, stability, long_time) or none; alone, runs these "
+                 "comma-separated sections (table1, work_precision, stability, long_time, nonlinear) or none; alone, runs these "
                  "sections and no claim (default: the scene's)")
       ->delimiter(',');
   app.add_flag("--quiet", quiet, "print only the summary line and errors");
@@ -133,7 +133,7 @@ int main(int argc, char** argv) {
   compare->fallthrough();
   app.add_option("--precisions", precision_names,
                  "comma-separated precisions of the claims' rechecks and of the sections work_precision and stability "
-                 "(table1 runs in double; a run with long_time is refused: it compares double with mpfr by design)")
+                 "(table1 runs in double; a run with long_time or nonlinear is refused: they compare double with mpfr by design)")
       ->delimiter(',');
   app.add_option("--seed", seed_text, "seed of the random samples (default: the scene's, printed in the report)");
   app.add_option("--samples", samples_text, "random samples per numeric recheck and precision, 1..10000");
@@ -200,15 +200,17 @@ int main(int argc, char** argv) {
     if (!timing_runs_text.empty() && no_timing) throw std::invalid_argument("--timing-runs and --no-timing exclude each other");
     if (!timing_runs_text.empty()) {
       const auto runs = static_cast<unsigned>(parse_count("--timing-runs", timing_runs_text, 1, 1000));
-      if (!s.experiments.work_precision) {
-        throw std::invalid_argument("--timing-runs: the run has no work_precision section, the only one timed by repeats");
+      if (!s.experiments.work_precision && !s.experiments.nonlinear) {
+        throw std::invalid_argument("--timing-runs: the run has no work_precision or nonlinear section, the only ones timed by repeats");
       }
-      s.experiments.work_precision->timing.max_runs = runs;
+      if (s.experiments.work_precision) s.experiments.work_precision->timing.max_runs = runs;
+      if (s.experiments.nonlinear) s.experiments.nonlinear->timing.max_runs = runs;
       s.overrides["timing_runs"] = runs;
     }
     if (no_timing) {
       s.timing = false;
       if (s.experiments.work_precision) s.experiments.work_precision->timing.max_runs = 0;
+      if (s.experiments.nonlinear) s.experiments.nonlinear->timing.max_runs = 0;
       s.overrides["timing"] = false;
     }
     s.command_line.assign(argv, argv + argc);

@@ -72,6 +72,7 @@ run_record run(const scene& s, const paper_reading& paper, const progress_callba
   if (e.work_precision) section([&] { return run_work_precision(*e.work_precision); });
   if (e.stability) section([&] { return run_stability(*e.stability); });
   if (e.long_time) section([&] { return run_long_time(*e.long_time); });
+  if (e.nonlinear) section([&] { return run_nonlinear(*e.nonlinear); });
   r.paper_configuration = paper_configuration(s.precisions);
   r.environment = build_environment(s, paper);
   r.seconds = std::chrono::duration<double>(clock::now() - start).count();

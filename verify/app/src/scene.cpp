@@ -112,6 +112,25 @@ class section_reader {
     }
     return out;
   }
+  /// A non-empty list of distinct names from `known`, in the order given.
+  std::vector<std::string> names(const std::string& key, const std::vector<std::string>& known) const {
+    const nlohmann::json& v = object_[key];
+    if (!v.is_array() || v.empty()) fail(origin_, field(key) + " must be a non-empty list of names");
+    std::vector<std::string> out;
+    std::string choices;
+    for (const std::string& k : known) choices += (choices.empty() ? "" : ", ") + k;
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      const std::string name = field(key) + "[" + std::to_string(k) + "]";
+      if (!v[k].is_string()) fail(origin_, name + " must be a string");
+      const std::string given = v[k].get<std::string>();
+      if (std::find(known.begin(), known.end(), given) == known.end()) {
+        fail(origin_, name + ": unknown name '" + given + "' (known: " + choices + ")");
+      }
+      if (std::find(out.begin(), out.end(), given) != out.end()) fail(origin_, name + ": '" + given + "' is listed twice");
+      out.push_back(given);
+    }
+    return out;
+  }
   std::vector<scheme_id> schemes(const std::string& key) const {
     const nlohmann::json& v = object_[key];
     if (v.is_string() && v.get<std::string>() == "all") return all_schemes();
@@ -193,6 +212,33 @@ experiment_settings parse_experiments(const nlohmann::json& doc, const std::stri
     if (r.has("windows")) l.windows = r.integer("windows", 1, 100'000);
     e.long_time = l;
   }
+  if (doc.contains("nonlinear")) {
+    const section_reader r(origin, "nonlinear", doc["nonlinear"],
+                           {"pendulum_q0", "pendulum_T", "pendulum_N", "mpfr_digits", "energy_steps", "problems", "N",
+                            "eccentricity", "reference_digits", "max_runs", "max_seconds", "double_pendulum_N"});
+    nonlinear_settings n;
+    // q0 = π is the unstable equilibrium, where the exact solution (k = 1) has no period.
+    if (r.has("pendulum_q0")) n.pendulum_q0 = r.number("pendulum_q0", 0, 3.14159);
+    if (r.has("pendulum_T")) n.pendulum_T = r.number("pendulum_T", 0, 1e6);
+    if (r.has("pendulum_N")) n.pendulum_N = r.integers("pendulum_N", 1, 100'000'000);
+    if (r.has("mpfr_digits")) {
+      n.mpfr_digits = static_cast<unsigned>(r.integer("mpfr_digits", precision::min_mpfr_digits, precision::max_mpfr_digits));
+    }
+    if (r.has("energy_steps")) n.energy_steps = r.integer("energy_steps", 1, max_steps);
+    if (r.has("problems")) n.problems = r.names("problems", nonlinear_problem_names());
+    if (r.has("N")) n.N = r.integers("N", 1, 100'000'000);
+    if (r.has("eccentricity")) {
+      // 0 <= e < 1 is an ellipse; e near 1 needs steps far below the perihelion distance 1 − e.
+      n.eccentricity = r.number("eccentricity", -1e-300, 0.95);
+    }
+    if (r.has("reference_digits")) {
+      n.reference_digits = static_cast<unsigned>(r.integer("reference_digits", 20, precision::max_mpfr_digits));
+    }
+    if (r.has("max_runs")) n.timing.max_runs = static_cast<unsigned>(r.integer("max_runs", 1, 1000));
+    if (r.has("max_seconds")) n.timing.max_seconds = r.number("max_seconds", 0, 3600);
+    if (r.has("double_pendulum_N")) n.double_pendulum_N = r.integers("double_pendulum_N", 1, 100'000'000);
+    e.nonlinear = n;
+  }
   return e;
 }
 
@@ -216,7 +262,8 @@ scene parse_scene(const std::string& text, const std::string& origin) {
   }
   if (!doc.is_object()) fail(origin, "the top level must be an object");
   static const std::set<std::string> known{"name", "description", "claims", "precisions", "samples", "seed", "expected_overrides",
-                                         "paper", "table1", "work_precision", "stability", "long_time"};
+                                         "paper", "table1", "work_precision", "stability", "long_time",
+                                         "nonlinear"};
   for (const auto& item : doc.items()) {
     if (!known.count(item.key())) fail(origin, "unknown key '" + item.key() + "'");
   }

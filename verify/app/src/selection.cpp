@@ -50,12 +50,14 @@ void keep_sections(scene& s, const std::vector<std::string>& names) {
   }
   if (!wanted("long_time")) e.long_time.reset();
   else if (!e.long_time) e.long_time = long_time_settings{};
+  if (!wanted("nonlinear")) e.nonlinear.reset();
+  else if (!e.nonlinear) e.nonlinear = nonlinear_settings{};
 }
 
 }  // namespace
 
 const std::vector<std::string>& section_names() {
-  static const std::vector<std::string> names{"table1", "work_precision", "stability", "long_time"};
+  static const std::vector<std::string> names{"table1", "work_precision", "stability", "long_time", "nonlinear"};
   return names;
 }
 
@@ -128,6 +130,11 @@ void apply_precisions(scene& s, const std::vector<std::string>& names) {
                                 std::to_string(e.long_time->mpfr_digits) +
                                 " by design and takes no precision list; leave it out with --sections, or set "
                                 "long_time.mpfr_digits in a scene file");
+  }
+  if (e.nonlinear) {
+    throw std::invalid_argument("--precisions: the nonlinear section runs in mpfr:" + std::to_string(e.nonlinear->mpfr_digits) +
+                                " and double by design and takes no precision list; leave it out with --sections, or set "
+                                "nonlinear.mpfr_digits in a scene file");
   }
   std::vector<std::string> applied{"claims"};
   if (e.work_precision) applied.push_back("work_precision");

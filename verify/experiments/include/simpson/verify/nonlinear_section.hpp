@@ -1,0 +1,41 @@
+#pragma once
+// The nonlinear section (beyond the paper): the Simpson variational integrator for any potential
+// and several degrees of freedom. The pendulum's convergence table in multiprecision; error against
+// N and against run time on the pendulum, the Kepler problem and Hénon–Heiles for Simpson and its
+// peers, every implicit one solved by the same Newton rule; the linearized double pendulum of the
+// authors' 2024 work, with its discrete energy.
+
+#include <simpson/verify/result_model.hpp>
+#include <simpson/verify/work_precision_section.hpp>  // timing_policy
+
+#include <string>
+#include <vector>
+
+namespace simpson::verify {
+
+/// The problems of the error-against-run-time part, by scene name.
+inline const std::vector<std::string>& nonlinear_problem_names() {
+  static const std::vector<std::string> names{"pendulum", "kepler", "henon-heiles"};
+  return names;
+}
+
+struct nonlinear_settings {
+  // The pendulum V = m ω² (1 − cos q), m = ω = 1, released from rest at q0 (0 < q0 < π).
+  double pendulum_q0 = 1;
+  double pendulum_T = 10;
+  std::vector<long long> pendulum_N{10, 20, 40, 80, 160};
+  unsigned mpfr_digits = 50;        // the pendulum table's and the double pendulum's precision
+  long long energy_steps = 100'000;  // the runs in double that watch the energy
+  // Error against N and run time, in double.
+  std::vector<std::string> problems = nonlinear_problem_names();
+  std::vector<long long> N{64, 128, 256, 512, 1024, 2048, 4096};
+  double eccentricity = 0.6;      // Kepler
+  unsigned reference_digits = 32;  // the exact solutions and Hénon–Heiles' reference run
+  timing_policy timing{20, 0.25};
+  // The linearized double pendulum.
+  std::vector<long long> double_pendulum_N{10, 20, 40, 80, 160};
+};
+
+section_result run_nonlinear(const nonlinear_settings& s);
+
+}  // namespace simpson::verify

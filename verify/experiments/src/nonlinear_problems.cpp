@@ -1,0 +1,326 @@
+// The nonlinear section's error against N and run time: the pendulum, the Kepler problem and
+// Hénon–Heiles, for Simpson and its peers in double. The implicit methods (Simpson, Lobatto
+// IIIA–IIIB, Gauss–Legendre) solve their stage equations by the same rule: Newton's method to 16 eps
+// of the terms, from the same starting guess (each stage at q + c_i h M⁻¹ p), Jacobians solved
+// by Eigen's partial-pivoting LU; the explicit ones (Störmer–Verlet, Yoshida, RK4) evaluate forces.
+
+#include "nonlinear_parts.hpp"
+
+#include <simpson/verify/floating_tools.hpp>
+#include <simpson/verify/interruption.hpp>
+#include <simpson/verify/progress.hpp>
+#include <simpson/verify/scheme_style.hpp>
+
+#include <simpson/kepler_exact.hpp>
+#include <simpson/nonlinear_ndof_step.hpp>
+#include <simpson/pendulum_exact.hpp>
+#include <simpson/potential.hpp>
+#include <simpson/runge_kutta_tableaux.hpp>
+#include <simpson/scheme.hpp>
+#include <simpson/stormer_verlet.hpp>
+
+#include <boost/math/constants/constants.hpp>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+
+namespace simpson::verify::detail {
+namespace {
+
+constexpr std::array<scheme_id, 6> methods{scheme_id::simpson,        scheme_id::lobatto_iiia_iiib_3, scheme_id::gauss_legendre_2,
+                                           scheme_id::stormer_verlet, scheme_id::yoshida,             scheme_id::rk4};
+
+bool implicit(scheme_id id) {
+  return id == scheme_id::simpson || id == scheme_id::lobatto_iiia_iiib_3 || id == scheme_id::gauss_legendre_2;
+}
+
+/// A method's step on a system, in Real; counts Newton's iterations.
+template <class Real, class Potential>
+class ndof_method {
+ public:
+  ndof_method(scheme_id id, const separable_system<Real, Potential>& s)
+      : id_(id), system_(s), weights_(yoshida_weights<Real>()) {
+    if (id == scheme_id::lobatto_iiia_iiib_3) {
+      for_q_ = lobatto_iiia3_tableau<Real>();
+      for_p_ = lobatto_iiib3_tableau<Real>();
+    } else {
+      for_q_ = for_p_ = gauss_legendre2_tableau<Real>();
+    }
+    coupling_ = couple(for_q_, for_p_);
+  }
+  ndof_state<Real> step(const Real& h, const ndof_state<Real>& y, long long& iterations) const {
+    switch (id_) {
+      case scheme_id::simpson: return counted(simpson_ndof_step(system_, h, y), iterations);
+      case scheme_id::lobatto_iiia_iiib_3:
+      case scheme_id::gauss_legendre_2: return counted(prk_ndof_step(for_q_, for_p_, coupling_, system_, h, y), iterations);
+      case scheme_id::stormer_verlet: return stormer_verlet_ndof_step(system_, h, y);
+      case scheme_id::yoshida: return yoshida_ndof_step(system_, weights_, h, y);
+      default: return rk4_ndof_step(system_, h, y);
+    }
+  }
+
+ private:
+  static ndof_state<Real> counted(const ndof_step_result<Real>& r, long long& iterations) {
+    iterations += r.newton_iterations;
+    return r.state;
+  }
+  scheme_id id_;
+  const separable_system<Real, Potential>& system_;
+  butcher_tableau<Real> for_q_, for_p_;
+  stage_coupling<Real> coupling_;
+  std::array<Real, 3> weights_;
+};
+
+/// A problem: its system, start, end time and the state at T (rounded to double from a computation
+/// in mpfr), with a sentence saying where that state comes from.
+template <class Potential>
+struct problem {
+  std::string name;
+  separable_system<double, Potential> system;
+  ndof_state<double> start;
+  double T;
+  ndof_state<double> at_T;
+  std::string reference;
+};
+
+ndof_state<double> rounded(const ndof_state<mpfr>& y) {
+  ndof_state<double> out{dense_vector<double>(y.p.size()), dense_vector<double>(y.q.size())};
+  for (Eigen::Index i = 0; i < y.p.size(); ++i) {
+    out.p(i) = static_cast<double>(y.p(i));
+    out.q(i) = static_cast<double>(y.q(i));
+  }
+  return out;
+}
+
+ndof_state<mpfr> widened(const ndof_state<double>& y) {
+  ndof_state<mpfr> out{dense_vector<mpfr>(y.p.size()), dense_vector<mpfr>(y.q.size())};
+  for (Eigen::Index i = 0; i < y.p.size(); ++i) {
+    out.p(i) = y.p(i);
+    out.q(i) = y.q(i);
+  }
+  return out;
+}
+
+using pendulum_1d = one_dof_potential<double, pendulum_potential<double>>;
+
+problem<pendulum_1d> pendulum_problem(const nonlinear_settings& s) {
+  const scoped_mpfr_digits digits(s.reference_digits);
+  const pendulum_from_rest<mpfr> exact{mpfr(1), mpfr(1), mpfr(s.pendulum_q0)};
+  const phase_point<mpfr> start = exact.at(mpfr(0)), end = exact.at(mpfr(s.pendulum_T));
+  const auto one = [](const phase_point<mpfr>& y) {
+    return ndof_state<double>{dense_vector<double>::Constant(1, static_cast<double>(y.p)),
+                              dense_vector<double>::Constant(1, static_cast<double>(y.q))};
+  };
+  return {"pendulum", {dense_matrix<double>::Identity(1, 1), pendulum_1d{pendulum_potential<double>{1, 1}}}, one(start),
+          s.pendulum_T, one(end),
+          fmt::format("q(0) = {} rad, p(0) = 0, T = {}; exact solution by Jacobi functions in mpfr:{}",
+                      fmt::format("{:g}", s.pendulum_q0), fmt::format("{:g}", s.pendulum_T), s.reference_digits)};
+}
+
+problem<kepler_potential<double>> kepler_problem(const nonlinear_settings& s) {
+  const double T = 2 * boost::math::constants::pi<double>();
+  const scoped_mpfr_digits digits(s.reference_digits);
+  const kepler_orbit<mpfr> orbit{mpfr(s.eccentricity)};
+  return {"kepler", {dense_matrix<double>::Identity(2, 2), kepler_potential<double>{1}}, rounded(orbit.initial()), T,
+          rounded(orbit.at(mpfr(T))),
+          fmt::format("e = {}, q(0) = (1 − e, 0), p(0) = (0, √((1 + e)/(1 − e))), H = −1/2, T = 2π (one period, T rounded "
+                      "to double); exact solution from Kepler's equation in mpfr:{}",
+                      fmt::format("{:g}", s.eccentricity), s.reference_digits)};
+}
+
+problem<henon_heiles_potential<double>> henon_heiles_problem(const nonlinear_settings& s, long long finest) {
+  const double T = 20;
+  ndof_state<double> start{dense_vector<double>(2), dense_vector<double>(2)};
+  start.q << 0.1, 0;
+  start.p << 0, 0.5;
+  // The reference: 2-stage Gauss–Legendre (order 4, a method independent of Simpson's) in mpfr with
+  // 8 and 16 times the finest N; the difference of the two bounds its error (Richardson: e(N_ref) ≈
+  // |y(N_ref) − y(N_ref/2)|/15).
+  const scoped_mpfr_digits digits(s.reference_digits);
+  const separable_system<mpfr, henon_heiles_potential<mpfr>> exact_system(dense_matrix<mpfr>::Identity(2, 2), {});
+  const ndof_method<mpfr, henon_heiles_potential<mpfr>> gl2(scheme_id::gauss_legendre_2, exact_system);
+  const auto run = [&](long long N) {
+    ndof_state<mpfr> y = widened(start);
+    long long iterations = 0;
+    const mpfr h = mpfr(T) / N;
+    for (long long j = 1; j <= N; ++j) {
+      if ((j & 255) == 0) throw_if_interrupted();
+      y = gl2.step(h, y, iterations);
+    }
+    return y;
+  };
+  const long long N_ref = 16 * finest;
+  const ndof_state<mpfr> fine = run(N_ref), coarse = run(N_ref / 2);
+  const mpfr estimate = std::max(mpfr(dense_vector<mpfr>(fine.q - coarse.q).norm()), mpfr(dense_vector<mpfr>(fine.p - coarse.p).norm())) / 15;
+  const separable_system<double, henon_heiles_potential<double>> system(dense_matrix<double>::Identity(2, 2), {});
+  return {"henon-heiles", system, start, T, rounded(fine),
+          fmt::format("q(0) = (0.1, 0), p(0) = (0, 0.5), H = {} (below the escape energy 1/6), T = 20; reference: Gauss–Legendre 2 in mpfr:{} with N = {} "
+                      "(error estimated {} from the run with N/2)",
+                      fmt::format("{:g}", system.energy(start)), s.reference_digits, N_ref, simpson::to_string(estimate, 2))};
+}
+
+/// One (method, N) run: the error run, then timed runs without the error computation.
+struct problem_run {
+  table_row row, timing_row;
+  figure state_error, energy_error, seconds;
+};
+
+template <class Potential>
+problem_run run_one(const problem<Potential>& p, scheme_id id, long long N, const timing_policy& timing) {
+  using clock = std::chrono::steady_clock;
+  const ndof_method<double, Potential> method(id, p.system);
+  const double h = p.T / static_cast<double>(N), H0 = p.system.energy(p.start);
+  const table_row key{figure::text(p.name), figure::text(std::string(traits_of(id).name)), figure::integer(N)};
+  problem_run out{key, key, figure{}, figure{}, figure{}};
+  ndof_state<double> y = p.start;
+  long long iterations = 0;
+  double energy_error = 0;
+  figure status = figure::text("ok");
+  try {
+    for (long long j = 1; j <= N; ++j) {
+      if ((j & 255) == 0) throw_if_interrupted();
+      y = method.step(h, y, iterations);
+      const double e = std::abs(p.system.energy(y) - H0) / std::abs(H0);
+      if (!std::isfinite(e)) {
+        status = figure::fault("non-finite");
+        break;
+      }
+      energy_error = std::max(energy_error, e);
+    }
+  } catch (const std::domain_error& e) {
+    status = figure::fault(std::string("failed: ") + e.what());
+  }
+  out.row.push_back(status);
+  if (status.is_fault()) {
+    for (int k = 0; k < 4; ++k) out.row.push_back(figure{});
+    if (timing.max_runs > 0) out.timing_row.insert(out.timing_row.end(), {figure{}, figure{}, figure{}});
+    return out;
+  }
+  out.state_error = figure::of(dense_vector<double>(y.q - p.at_T.q).norm());
+  out.energy_error = figure::of(energy_error);
+  out.row.insert(out.row.end(), {out.state_error, figure::of(dense_vector<double>(y.p - p.at_T.p).norm()), out.energy_error,
+                                 implicit(id) ? figure::of(static_cast<double>(iterations) / static_cast<double>(N)) : figure{}});
+  if (timing.max_runs == 0) return out;
+  const auto one_run = [&] {
+    ndof_state<double> z = p.start;
+    long long ignored = 0;
+    for (long long j = 0; j < N; ++j) z = method.step(h, z, ignored);
+    return z.q(0);
+  };
+  volatile double sink = one_run();
+  std::vector<double> seconds;
+  const auto start = clock::now();
+  while (seconds.size() < timing.max_runs &&
+         (seconds.empty() || std::chrono::duration<double>(clock::now() - start).count() < timing.max_seconds)) {
+    throw_if_interrupted();
+    const auto t0 = clock::now();
+    sink = sink + one_run();
+    seconds.push_back(std::chrono::duration<double>(clock::now() - t0).count());
+  }
+  std::sort(seconds.begin(), seconds.end());
+  out.timing_row.insert(out.timing_row.end(), {figure::integer(static_cast<long long>(seconds.size())), figure::of(seconds.front()),
+                                               figure::of(seconds[seconds.size() / 2])});
+  out.seconds = figure::of(seconds.front());
+  return out;
+}
+
+struct problem_panels {
+  panel state, energy, time;
+};
+
+template <class Potential>
+problem_panels run_problem(const problem<Potential>& p, const nonlinear_settings& s, table& rows, table& times,
+                           std::vector<std::string>& references) {
+  references.push_back("**" + p.name + "**: " + p.reference);
+  problem_panels out{{p.name + ": state error", {"N", true}, {"|q_N - q(T)|", true}, {}, "bottom left"},
+                     {p.name + ": energy error", {"N", true}, {"max |H - H_0|/|H_0|", true}, {}, "bottom left"},
+                     {p.name, {"run time (s, minimum of repeats)", true}, {"|q_N - q(T)|", true}, {}, "bottom left"}};
+  for (const scheme_id id : methods) {
+    const scheme_style style = style_of(id);
+    series by_n(std::string(traits_of(id).name), style.line, style.color, style.point, style.dash);
+    series energy = by_n, by_time = by_n;
+    for (const long long N : s.N) {
+      problem_run r = run_one(p, id, N, s.timing);
+      progress_step("nonlinear", fmt::format("{} {} N = {}", p.name, traits_of(id).name, N));
+      by_n.add(figure::integer(N), r.state_error);
+      energy.add(figure::integer(N), r.energy_error);
+      if (s.timing.max_runs > 0) {
+        by_time.add(r.seconds, r.state_error);
+        times.add(std::move(r.timing_row));
+      }
+      rows.add(std::move(r.row));
+    }
+    out.state.curves.push_back(by_n);
+    out.energy.curves.push_back(energy);
+    out.time.curves.push_back(by_time);
+  }
+  return out;
+}
+
+}  // namespace
+
+void add_nonlinear_problems(const nonlinear_settings& s, section_result& out) {
+  if (s.problems.empty()) return;
+  const bool timed = s.timing.max_runs > 0;
+  table rows{"problems", "Error against N: pendulum, Kepler, Hénon–Heiles (double)", "",
+             {{"problem", "problem"},
+              {"method", "method"},
+              {"N", "N"},
+              {"status", "status"},
+              {"error_q", "‖q_N − q(T)‖"},
+              {"error_p", "‖p_N − p(T)‖"},
+              {"energy_error_max_relative", "max rel. H error"},
+              {"newton_iterations_mean", "Newton it./step"}}};
+  rows.csv_file = "nonlinear_problems.csv";
+  table times{"problems_timing", "Run time of each configuration (nonlinear problems)",
+              fmt::format("One warm-up run, then runs until {} runs or {} s (steady_clock); each run is the N steps of the "
+                          "error run, without the error computation.",
+                          s.timing.max_runs, simpson::to_string(s.timing.max_seconds, 3)),
+              {{"problem", "problem"}, {"method", "method"}, {"N", "N"}, {"runs", "runs"}, {"min_seconds", "min time", "s"},
+               {"median_seconds", "median time", "s"}}};
+  times.csv_file = "nonlinear_problems_time.csv";
+  times.timing = true;
+  std::vector<std::string> references;
+  std::vector<panel> state_panels, energy_panels, time_panels;
+  const auto collect = [&](const problem_panels& p) {
+    state_panels.push_back(p.state);
+    energy_panels.push_back(p.energy);
+    time_panels.push_back(p.time);
+  };
+  for (const std::string& name : s.problems) {
+    if (name == "pendulum") collect(run_problem(pendulum_problem(s), s, rows, times, references));
+    if (name == "kepler") collect(run_problem(kepler_problem(s), s, rows, times, references));
+    if (name == "henon-heiles") {
+      collect(run_problem(henon_heiles_problem(s, *std::max_element(s.N.begin(), s.N.end())), s, rows, times, references));
+    }
+  }
+  std::string intro =
+      "In double, h = T/N, m = 1 (M = I). Errors: the Euclidean norms ‖q_N − q(T)‖ and ‖p_N − p(T)‖ at T against the "
+      "state below (rounded to double), and the largest relative change of H over the run. Simpson, Lobatto IIIA–IIIB "
+      "and Gauss–Legendre 2 solve their stage equations by the same rule: Newton's method until every residual is within "
+      "16 eps of the sum of its terms' magnitudes, from each stage at q + c_i h M⁻¹p, the Jacobian solved by Eigen's "
+      "partial-pivoting LU (Simpson has n unknowns, Gauss–Legendre 2n, Lobatto 3n). Störmer–Verlet, Yoshida and RK4 are "
+      "explicit. A run whose Newton solve fails is `failed: <why>`, and the others go on.";
+  for (const std::string& r : references) intro += "\n\n- " + r;
+  intro += timed ? "\n\nRun times are in timing.md." : "\n\nNot timed (--no-timing).";
+  rows.intro = intro;
+  out.add(std::move(rows));
+  if (timed) out.add(std::move(times));
+  const int columns = static_cast<int>(state_panels.size());
+  std::vector<panel> panels = state_panels;
+  panels.insert(panels.end(), energy_panels.begin(), energy_panels.end());
+  out.add(plot_description{"nonlinear_problems_n",
+                           "Nonlinear problems in double: state error at T (top) and the largest relative energy error (bottom) "
+                           "against N, log-log",
+                           panels, columns, 440 * columns, 720});
+  if (timed) {
+    plot_description time_plot{"nonlinear_problems_time", "Nonlinear problems in double: state error at T against run time (log-log)",
+                               time_panels, columns, 440 * columns, 380};
+    time_plot.timing = true;
+    out.add(std::move(time_plot));
+  }
+}
+
+}  // namespace simpson::verify::detail

@@ -1,0 +1,36 @@
+// The nonlinear section (beyond the paper): its three parts in order, with the settings they
+// depend on.
+
+#include "nonlinear_parts.hpp"
+
+#include <simpson/verify/nonlinear_section.hpp>
+
+namespace simpson::verify {
+
+section_result run_nonlinear(const nonlinear_settings& s) {
+  section_result out;
+  out.name = "nonlinear";
+  out.title = "Beyond the paper: any potential, several degrees of freedom";
+  out.conventions = {{"pendulum_q0", s.pendulum_q0},
+                     {"pendulum_T", s.pendulum_T},
+                     {"pendulum_N", s.pendulum_N},
+                     {"mpfr_digits", s.mpfr_digits},
+                     {"energy_steps", s.energy_steps},
+                     {"problems", s.problems},
+                     {"N", s.N},
+                     {"eccentricity", s.eccentricity},
+                     {"reference_digits", s.reference_digits},
+                     {"double_pendulum_N", s.double_pendulum_N}};
+  out.timing_conventions = {{"warm_up_runs", 1}, {"max_runs", s.timing.max_runs}, {"max_seconds", s.timing.max_seconds}};
+  out.text(
+      "The Simpson variational integrator for any smooth V (nonlinear_simpson_step.hpp, nonlinear_ndof_step.hpp): "
+      "each step solves the discrete Euler–Lagrange equations of L_h for the internal node by Newton's method in the "
+      "working precision, then takes Simpson's rule for the impulse. The paper's §9 leaves this case open; the claims "
+      "of the ledger part \"beyond\" prove that the step is the 3-stage Lobatto IIIA–IIIB step and symplectic for every V.");
+  detail::add_nonlinear_pendulum(s, out);
+  detail::add_nonlinear_problems(s, out);
+  detail::add_double_pendulum(s, out);
+  return out;
+}
+
+}  // namespace simpson::verify
