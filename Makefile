@@ -2,7 +2,7 @@
 BUILD ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 
-.PHONY: all deps configure build verify test sanitize fuzz ci clean
+.PHONY: all deps configure build verify test bench sanitize fuzz ci clean
 
 all: build
 
@@ -20,6 +20,11 @@ verify: build
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# Google Benchmark (bench/), not part of `make test`: times measured side by side in one run; the last
+# lines printed are the ratios (`ratio <name> <value>`).
+bench: build
+	$(BUILD)/bin/simpson_bench --benchmark_min_time=0.5 --benchmark_color=false
 
 # The whole test suite under AddressSanitizer and UndefinedBehaviorSanitizer (-O1), in build-sanitize/.
 # Leak reports from third-party libraries are suppressed in scripts/lsan.supp, each with its reason.

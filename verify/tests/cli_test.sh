@@ -75,7 +75,10 @@ bad_section "digits > 100000" 21 '"long_time": {"mpfr_digits": 200000}' "'long_t
 bad_section "unknown section key" 22 '"long_time": {"step": 5}' "unknown key 'long_time.step'"
 bad_section "section wrong type" 23 '"stability": []' "'stability' must be an object"
 bad_section "run for days" 24 '"long_time": {"steps_double": 100000000000}' "estimated cost .* exceeds the budget .* --allow-expensive"
-for k in 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21 22 23 24; do
+bad_section "unknown problem" 25 '"nonlinear": {"problems": ["lorenz"]}' "'nonlinear.problems'\[0\]: unknown name 'lorenz' (known: pendulum, kepler, henon-heiles)"
+bad_section "pendulum over the top" 26 '"nonlinear": {"pendulum_q0": 4}' "'nonlinear.pendulum_q0' must be a number greater than 0 and at most 3.14159"
+bad_section "absurd nonlinear N" 27 '"nonlinear": {"N": [1e12]}' "'nonlinear.N'\[0\] must be an integer from 1 to 100000000"
+for k in 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21 22 23 24 25 26 27; do
   [ -e "$work/none$k" ] && { echo "FAIL: bad input wrote $work/none$k"; failures=$((failures + 1)); }
 done
 # Interruption: a long run (10000 samples per recheck) stopped after one second.
@@ -207,6 +210,8 @@ grep -q '"precisions_applied_to": \[' "$work/prec/report.json" && grep -q '"prec
 grep -q '"precision": "float128"' "$work/prec/report.json" && fail "precisions to sections: a scene precision survived"
 check "precisions with long_time" 2 --scene quick --precisions double --out "$work/none-prec1"
 grep -q 'long_time' "$work/err" || fail "precisions with long_time: the section is not named"
+check "precisions with nonlinear" 2 --scene beyond --precisions double --out "$work/none-prec4"
+grep -q 'nonlinear' "$work/err" || fail "precisions with nonlinear: the section is not named"
 check "rational in a section" 2 --scene quick --sections stability --precisions rational --out "$work/none-prec2"
 check "bad precision" 2 --claims phi3-det --precisions double,mpfr:3 --out "$work/none-prec3"
 # Timing: --timing-runs N, --no-timing, never both.

@@ -7,7 +7,14 @@
 
 #include <simpson/verify/floating_tools.hpp>
 
+#include <simpson/nonlinear_partitioned_rk.hpp>
+#include <simpson/pendulum_exact.hpp>
+#include <simpson/potential.hpp>
+#include <simpson/runge_kutta_tableaux.hpp>
+
 #include <gtest/gtest.h>
+
+#include <map>
 
 #include <cmath>
 #include <limits>
@@ -200,6 +207,82 @@ TEST(Experiments, WorkPrecisionRecordsEveryRunWithItsStatus) {
   EXPECT_EQ(cell(u, 0, "error_q_max").what(), figure::kind::empty);
 }
 
+/// A figure's digits (every digit computed, figure.hpp) read into mpfr at the current precision.
+mpfr digits_of(const figure& f) {
+  EXPECT_EQ(f.what(), figure::kind::number) << f.value();
+  return mpfr(f.value());
+}
+
+TEST(Experiments, NonlinearPendulumIsPinnedByLobattoInMpfr100AndTheExactSolution) {
+  nonlinear_settings s;
+  s.pendulum_N = {10, 20, 40};
+  s.energy_steps = 2000;
+  s.problems.clear();
+  s.double_pendulum_N = {10};
+  s.timing.max_runs = 0;
+  const section_result out = run_nonlinear(s);
+  const table& t = get(out, "pendulum");
+  ASSERT_EQ(t.rows.size(), 3u);
+  // The independent route: Lobatto IIIA–IIIB (the other formulation, claim nonlinear-lobatto-
+  // equivalence) in mpfr:100 against the exact solution in mpfr:100.
+  const scoped_mpfr_digits digits(100);
+  const pendulum_potential<mpfr> V{mpfr(1), mpfr(1)};
+  const pendulum_from_rest<mpfr> exact{mpfr(1), mpfr(1), mpfr(s.pendulum_q0)};
+  const auto for_q = lobatto_iiia3_tableau<mpfr>(), for_p = lobatto_iiib3_tableau<mpfr>();
+  const auto coupling = couple(for_q, for_p);
+  const mpfr eps50 = pow(mpfr(10), -49);  // mpfr:50's unit round-off is below 10^-49
+  for (std::size_t k = 0; k < s.pendulum_N.size(); ++k) {
+    const long long N = s.pendulum_N[k];
+    const mpfr h = mpfr(s.pendulum_T) / N;
+    phase_point<mpfr> y = exact.at(mpfr(0));
+    for (long long j = 0; j < N; ++j) y = prk_nonlinear_step(for_q, for_p, coupling, mpfr(1), h, V, y).state;
+    const phase_point<mpfr> end = exact.at(mpfr(s.pendulum_T));
+    // The table's run rounds in mpfr:50: N steps, each a Newton solve to 16 eps of terms ~1 and a few
+    // roundings, carried to T by the pendulum's flow, whose sensitivity to the state grows linearly
+    // in t (the period depends on the amplitude), below 100 over T = 10: 16 × 100 × N eps₅₀ < 1e4 N eps₅₀.
+    const mpfr bound = 10000 * N * eps50;
+    EXPECT_LE(abs(mpfr(digits_of(cell(t, k, "error_q")) - abs(mpfr(y.q - end.q)))), bound) << "N = " << N;
+    EXPECT_LE(abs(mpfr(digits_of(cell(t, k, "error_p")) - abs(mpfr(y.p - end.p)))), bound) << "N = " << N;
+    EXPECT_LE(digits_of(cell(t, k, "max_simpson_minus_lobatto")), bound) << "N = " << N;
+    if (k > 0) {
+      EXPECT_NEAR(number(cell(t, k, "order_q")), 4, 0.1) << "N = " << N;
+    }
+    EXPECT_EQ(cell(t, k, "status").value(), "ok");
+  }
+  // The double pendulum: fourth order, and H_d kept to mpfr:50's round-off while H moves by O(h⁴).
+  const table& d = get(out, "double_pendulum");
+  ASSERT_EQ(d.rows.size(), 1u);
+  EXPECT_LE(digits_of(cell(d, 0, "Hd_change_mpfr")), 10000 * 10 * eps50);
+  EXPECT_GT(number(cell(d, 0, "H_change_double")), 1e-3);
+}
+
+TEST(Experiments, NonlinearProblemsRecordAFailedNewtonSolveAndGoOn) {
+  nonlinear_settings s;
+  s.pendulum_N = {10};
+  s.energy_steps = 10;
+  s.problems = {"kepler"};
+  s.N = {8, 256, 512};
+  s.double_pendulum_N = {10};
+  s.timing.max_runs = 0;
+  const section_result out = run_nonlinear(s);
+  const table& t = get(out, "problems");
+  ASSERT_EQ(t.rows.size(), 6u * 3u);
+  std::map<std::string, std::vector<std::size_t>> by_method;
+  for (std::size_t k = 0; k < t.rows.size(); ++k) by_method[cell(t, k, "method").value()].push_back(k);
+  // At N = 8 (h ≈ 0.79, against a perihelion distance 0.4) Gauss–Legendre's Newton solve does not
+  // converge: the row says so, and every other row is computed.
+  const figure& failed = cell(t, by_method["gauss-legendre-2"][0], "status");
+  EXPECT_TRUE(failed.is_fault() && failed.value().rfind("failed: ", 0) == 0) << failed.value();
+  EXPECT_EQ(cell(t, by_method["gauss-legendre-2"][0], "error_q").what(), figure::kind::empty);
+  EXPECT_EQ(cell(t, by_method["gauss-legendre-2"][1], "status").value(), "ok");
+  // Simpson is Lobatto IIIA–IIIB: the two Newton solves agree far below the error (1e-5 here), and
+  // the error has order 4 against Kepler's equation.
+  const std::size_t simpson = by_method["simpson"][1], lobatto = by_method["lobatto-iiia-iiib-3"][1];
+  EXPECT_NEAR(number(cell(t, simpson, "error_q")), number(cell(t, lobatto, "error_q")), 1e-12);
+  EXPECT_NEAR(std::log2(number(cell(t, simpson, "error_q")) / number(cell(t, by_method["simpson"][2], "error_q"))), 4, 0.1);
+  EXPECT_EQ(cell(t, by_method["rk4"][0], "newton_iterations_mean").what(), figure::kind::empty);  // explicit
+}
+
 TEST(Experiments, CostEstimateGrowsWithStepsAndPrecision) {
   experiment_settings e;
   e.long_time = long_time_settings{};
@@ -208,6 +291,7 @@ TEST(Experiments, CostEstimateGrowsWithStepsAndPrecision) {
   EXPECT_GT(estimate_cost(e).units, default_cost_budget);
   EXPECT_LT(base, default_cost_budget);
   EXPECT_LT(estimate_cost(load_scene("paper").experiments).units, default_cost_budget);
+  EXPECT_LT(estimate_cost(load_scene("beyond").experiments).units, default_cost_budget);
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """report.json against its JSON Schema (verify/app/schema/report.schema.json), for the runs a CI job
-makes: a whole scene, claims only, sections only, untimed. Altered copies must be rejected, so
+makes: a whole scene, claims only, sections only, untimed, the nonlinear section. Altered copies must be rejected, so
 that the schema is shown to constrain what it documents. Needs python3-jsonschema (install-deps)."""
 import copy
 import json
@@ -31,6 +31,11 @@ runs = {
     "timing runs": ["--scene", "quick", "--sections", "work_precision", "--timing-runs", "2", "--precisions", "double,mpfr:30"],
 }
 with tempfile.TemporaryDirectory() as work:
+    # A small nonlinear section (the beyond scene's takes ~10 s): its tables, plots and timing.
+    small = {"name": "small-nonlinear", "nonlinear": {"pendulum_N": [10, 20], "energy_steps": 100, "problems": ["pendulum", "kepler"],
+                                                     "N": [64, 128], "double_pendulum_N": [10, 20], "max_runs": 1}}
+    json.dump(small, open(f"{work}/small-nonlinear.json", "w"))
+    runs["nonlinear section"] = ["--scene", f"{work}/small-nonlinear.json"]
     reports = {}
     for name, args in runs.items():
         out = f"{work}/{len(reports)}"

@@ -96,6 +96,12 @@ TEST(Scene, ExperimentSectionsParseWithDefaultsAndOnlyWhenAsked) {
   EXPECT_TRUE(paper.experiments.table1 && paper.experiments.work_precision && paper.experiments.stability &&
               paper.experiments.long_time);
   EXPECT_EQ(paper.experiments.work_precision->schemes, all_schemes());
+  EXPECT_FALSE(paper.experiments.nonlinear);  // the paper scene is the paper's
+  const scene beyond = load_scene("beyond");
+  ASSERT_TRUE(beyond.experiments.nonlinear);
+  EXPECT_EQ(beyond.experiments.nonlinear->problems, nonlinear_problem_names());
+  const scene zero_e = parse_scene(R"({"name": "e", "nonlinear": {"eccentricity": 0, "problems": ["kepler"]}})", "t");
+  EXPECT_EQ(zero_e.experiments.nonlinear->eccentricity, 0);  // a circle is an ellipse
 }
 
 TEST(Scene, RejectsEveryBadExperimentParameter) {
@@ -133,6 +139,17 @@ TEST(Scene, RejectsEveryBadExperimentParameter) {
   EXPECT_TRUE(mentions(section(R"("long_time": {"omega_h": 3})"), "'long_time.omega_h' must be a number greater than 0 and at most 2"));
   EXPECT_TRUE(mentions(section(R"("long_time": {"mpfr_digits": 5})"), "'long_time.mpfr_digits' must be an integer from 30"));
   EXPECT_TRUE(mentions(section(R"("long_time": {"steps_double": 1e19})"), "'long_time.steps_double' must be an integer"));
+  EXPECT_TRUE(mentions(section(R"("nonlinear": {"problems": ["pendulum", "lorenz"]})"),
+                       "'nonlinear.problems'[1]: unknown name 'lorenz' (known: pendulum, kepler, henon-heiles)"));
+  EXPECT_TRUE(mentions(section(R"("nonlinear": {"problems": ["kepler", "kepler"]})"), "'kepler' is listed twice"));
+  EXPECT_TRUE(mentions(section(R"("nonlinear": {"problems": []})"), "'nonlinear.problems' must be a non-empty list"));
+  EXPECT_TRUE(mentions(section(R"("nonlinear": {"pendulum_q0": 3.1416})"), "'nonlinear.pendulum_q0' must be a number greater than 0"));
+  EXPECT_TRUE(mentions(section(R"("nonlinear": {"pendulum_q0": 0})"), "'nonlinear.pendulum_q0' must be a number greater than 0"));
+  EXPECT_TRUE(mentions(section(R"("nonlinear": {"eccentricity": 0.99})"), "'nonlinear.eccentricity' must be a number"));
+  EXPECT_TRUE(mentions(section(R"("nonlinear": {"eccentricity": -0.1})"), "'nonlinear.eccentricity' must be a number"));
+  EXPECT_TRUE(mentions(section(R"("nonlinear": {"pendulum_N": [0]})"), "'nonlinear.pendulum_N'[0] must be an integer from 1"));
+  EXPECT_TRUE(mentions(section(R"("nonlinear": {"reference_digits": 10})"), "'nonlinear.reference_digits' must be an integer from 20"));
+  EXPECT_TRUE(mentions(section(R"("nonlinear": {"V": "x^3"})"), "unknown key 'nonlinear.V'"));
 }
 
 TEST(Scene, UnknownNameAndUnreadableFileAreNamed) {

@@ -165,6 +165,8 @@ problem<henon_heiles_potential<double>> henon_heiles_problem(const nonlinear_set
 struct problem_run {
   table_row row, timing_row;
   figure state_error, energy_error, seconds;
+  double error_q = 0, energy = 0, iterations = 0;  // when the run is ok
+  bool ok = false;
 };
 
 template <class Potential>
@@ -198,7 +200,11 @@ problem_run run_one(const problem<Potential>& p, scheme_id id, long long N, cons
     if (timing.max_runs > 0) out.timing_row.insert(out.timing_row.end(), {figure{}, figure{}, figure{}});
     return out;
   }
-  out.state_error = figure::of(dense_vector<double>(y.q - p.at_T.q).norm());
+  out.ok = true;
+  out.error_q = dense_vector<double>(y.q - p.at_T.q).norm();
+  out.energy = energy_error;
+  out.iterations = static_cast<double>(iterations) / static_cast<double>(N);
+  out.state_error = figure::of(out.error_q);
   out.energy_error = figure::of(energy_error);
   out.row.insert(out.row.end(), {out.state_error, figure::of(dense_vector<double>(y.p - p.at_T.p).norm()), out.energy_error,
                                  implicit(id) ? figure::of(static_cast<double>(iterations) / static_cast<double>(N)) : figure{}});
@@ -231,7 +237,7 @@ struct problem_panels {
 };
 
 template <class Potential>
-problem_panels run_problem(const problem<Potential>& p, const nonlinear_settings& s, table& rows, table& times,
+problem_panels run_problem(const problem<Potential>& p, const nonlinear_settings& s, table& rows, table& summary, table& times,
                            std::vector<std::string>& references) {
   references.push_back("**" + p.name + "**: " + p.reference);
   problem_panels out{{p.name + ": state error", {"N", true}, {"|q_N - q(T)|", true}, {}, "bottom left"},
@@ -241,8 +247,23 @@ problem_panels run_problem(const problem<Potential>& p, const nonlinear_settings
     const scheme_style style = style_of(id);
     series by_n(std::string(traits_of(id).name), style.line, style.color, style.point, style.dash);
     series energy = by_n, by_time = by_n;
+    std::vector<double> ok_N, ok_errors;
+    std::vector<bool> use;
+    problem_run finest;
+    long long finest_N = 0, failed = 0;
     for (const long long N : s.N) {
       problem_run r = run_one(p, id, N, s.timing);
+      if (r.ok) {
+        ok_N.push_back(static_cast<double>(N));
+        ok_errors.push_back(r.error_q);
+        use.push_back(true);
+        if (N > finest_N) {
+          finest_N = N;
+          finest = r;
+        }
+      } else {
+        ++failed;
+      }
       progress_step("nonlinear", fmt::format("{} {} N = {}", p.name, traits_of(id).name, N));
       by_n.add(figure::integer(N), r.state_error);
       energy.add(figure::integer(N), r.energy_error);
@@ -252,6 +273,11 @@ problem_panels run_problem(const problem<Potential>& p, const nonlinear_settings
       }
       rows.add(std::move(r.row));
     }
+    const double order = -log_log_slope(ok_N, ok_errors, use);
+    summary.add({figure::text(p.name), figure::text(std::string(traits_of(id).name)), figure::integer(static_cast<long long>(ok_N.size())),
+                 figure::integer(failed), ok_N.size() >= 2 ? figure::of(order) : figure{}, finest_N ? figure::integer(finest_N) : figure{},
+                 finest_N ? figure::of(finest.error_q) : figure{}, finest_N ? figure::of(finest.energy) : figure{},
+                 finest_N && implicit(id) ? figure::of(finest.iterations) : figure{}});
     out.state.curves.push_back(by_n);
     out.energy.curves.push_back(energy);
     out.time.curves.push_back(by_time);
@@ -264,7 +290,17 @@ problem_panels run_problem(const problem<Potential>& p, const nonlinear_settings
 void add_nonlinear_problems(const nonlinear_settings& s, section_result& out) {
   if (s.problems.empty()) return;
   const bool timed = s.timing.max_runs > 0;
-  table rows{"problems", "Error against N: pendulum, Kepler, Hénon–Heiles (double)", "",
+  table summary{"problems_summary", "Error against N: pendulum, Kepler, Hénon–Heiles (double)", "",
+                {{"problem", "problem"},
+                 {"method", "method"},
+                 {"runs_ok", "runs ok"},
+                 {"runs_failed", "failed"},
+                 {"order_q_least_squares", "order (q)"},
+                 {"finest_N", "finest N"},
+                 {"error_q_finest", "‖q_N − q(T)‖ there"},
+                 {"energy_error_finest", "max rel. H error there"},
+                 {"newton_iterations_finest", "Newton it./step there"}}};
+  table rows{"problems", "", "",
              {{"problem", "problem"},
               {"method", "method"},
               {"N", "N"},
@@ -274,6 +310,7 @@ void add_nonlinear_problems(const nonlinear_settings& s, section_result& out) {
               {"energy_error_max_relative", "max rel. H error"},
               {"newton_iterations_mean", "Newton it./step"}}};
   rows.csv_file = "nonlinear_problems.csv";
+  rows.markdown = false;  // every run in report.json and the CSV; the summary in report.md
   table times{"problems_timing", "Run time of each configuration (nonlinear problems)",
               fmt::format("One warm-up run, then runs until {} runs or {} s (steady_clock); each run is the N steps of the "
                           "error run, without the error computation.",
@@ -290,10 +327,10 @@ void add_nonlinear_problems(const nonlinear_settings& s, section_result& out) {
     time_panels.push_back(p.time);
   };
   for (const std::string& name : s.problems) {
-    if (name == "pendulum") collect(run_problem(pendulum_problem(s), s, rows, times, references));
-    if (name == "kepler") collect(run_problem(kepler_problem(s), s, rows, times, references));
+    if (name == "pendulum") collect(run_problem(pendulum_problem(s), s, rows, summary, times, references));
+    if (name == "kepler") collect(run_problem(kepler_problem(s), s, rows, summary, times, references));
     if (name == "henon-heiles") {
-      collect(run_problem(henon_heiles_problem(s, *std::max_element(s.N.begin(), s.N.end())), s, rows, times, references));
+      collect(run_problem(henon_heiles_problem(s, *std::max_element(s.N.begin(), s.N.end())), s, rows, summary, times, references));
     }
   }
   std::string intro =
@@ -302,10 +339,13 @@ void add_nonlinear_problems(const nonlinear_settings& s, section_result& out) {
       "and Gauss–Legendre 2 solve their stage equations by the same rule: Newton's method until every residual is within "
       "16 eps of the sum of its terms' magnitudes, from each stage at q + c_i h M⁻¹p, the Jacobian solved by Eigen's "
       "partial-pivoting LU (Simpson has n unknowns, Gauss–Legendre 2n, Lobatto 3n). Störmer–Verlet, Yoshida and RK4 are "
-      "explicit. A run whose Newton solve fails is `failed: <why>`, and the others go on.";
+      "explicit. A run whose Newton solve fails is `failed: <why>`, and the others go on. Order: least-squares slope "
+      "of log ‖q_N − q(T)‖ against log N over the runs that are ok (round-off flattens it where the errors reach it). "
+      "Every run is in nonlinear_problems.csv and report.json (`problems`).";
   for (const std::string& r : references) intro += "\n\n- " + r;
   intro += timed ? "\n\nRun times are in timing.md." : "\n\nNot timed (--no-timing).";
-  rows.intro = intro;
+  summary.intro = intro;
+  out.add(std::move(summary));
   out.add(std::move(rows));
   if (timed) out.add(std::move(times));
   const int columns = static_cast<int>(state_panels.size());
