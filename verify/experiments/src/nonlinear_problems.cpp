@@ -5,6 +5,7 @@
 // by Eigen's partial-pivoting LU; the explicit ones (Störmer–Verlet, Yoshida, RK4) evaluate forces.
 
 #include "nonlinear_parts.hpp"
+#include "timed_runs.hpp"
 
 #include <simpson/verify/floating_tools.hpp>
 #include <simpson/verify/interruption.hpp>
@@ -24,7 +25,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 
 namespace simpson::verify::detail {
 namespace {
@@ -171,7 +171,6 @@ struct problem_run {
 
 template <class Potential>
 problem_run run_one(const problem<Potential>& p, scheme_id id, long long N, const timing_policy& timing) {
-  using clock = std::chrono::steady_clock;
   const ndof_method<double, Potential> method(id, p.system);
   const double h = p.T / static_cast<double>(N), H0 = p.system.energy(p.start);
   const table_row key{figure::text(p.name), figure::text(std::string(traits_of(id).name)), figure::integer(N)};
@@ -209,26 +208,14 @@ problem_run run_one(const problem<Potential>& p, scheme_id id, long long N, cons
   out.row.insert(out.row.end(), {out.state_error, figure::of(dense_vector<double>(y.p - p.at_T.p).norm()), out.energy_error,
                                  implicit(id) ? figure::of(static_cast<double>(iterations) / static_cast<double>(N)) : figure{}});
   if (timing.max_runs == 0) return out;
-  const auto one_run = [&] {
+  const run_times times = time_runs(timing, [&] {
     ndof_state<double> z = p.start;
     long long ignored = 0;
     for (long long j = 0; j < N; ++j) z = method.step(h, z, ignored);
     return z.q(0);
-  };
-  volatile double sink = one_run();
-  std::vector<double> seconds;
-  const auto start = clock::now();
-  while (seconds.size() < timing.max_runs &&
-         (seconds.empty() || std::chrono::duration<double>(clock::now() - start).count() < timing.max_seconds)) {
-    throw_if_interrupted();
-    const auto t0 = clock::now();
-    sink = sink + one_run();
-    seconds.push_back(std::chrono::duration<double>(clock::now() - t0).count());
-  }
-  std::sort(seconds.begin(), seconds.end());
-  out.timing_row.insert(out.timing_row.end(), {figure::integer(static_cast<long long>(seconds.size())), figure::of(seconds.front()),
-                                               figure::of(seconds[seconds.size() / 2])});
-  out.seconds = figure::of(seconds.front());
+  });
+  out.timing_row.insert(out.timing_row.end(), {figure::integer(times.runs), figure::of(times.minimum), figure::of(times.median)});
+  out.seconds = figure::of(times.minimum);
   return out;
 }
 

@@ -7,6 +7,7 @@
 #include <simpson/verify/scheme_style.hpp>
 
 #include <simpson/verify/floating_tools.hpp>
+#include "timed_runs.hpp"
 
 #include <simpson/energy.hpp>
 #include <simpson/exact_solution.hpp>
@@ -16,7 +17,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <chrono>
 #include <map>
 
 namespace simpson::verify {
@@ -33,7 +33,6 @@ template <class Real>
 measured_run measure(scheme_id scheme, const precision& prec, long long N, long long periods,
                      const timing_policy& timing, const std::vector<phase_point<Real>>& exact) {
   using std::abs;
-  using clock = std::chrono::steady_clock;
   const Real omega = 2 * boost::math::constants::pi<Real>();
   const long long steps = N * periods;
   const oscillator_parameters<Real> par{Real(1), omega, step_size(Real(periods), steps)};
@@ -91,27 +90,13 @@ measured_run measure(scheme_id scheme, const precision& prec, long long N, long 
   if (timing.max_runs == 0) return out;
 
   // Timing: one warm-up run, then runs until max_runs or max_seconds; each run is `steps` steps.
-  const auto one_run = [&] {
+  const detail::run_times times = detail::time_runs(timing, [&] {
     phase_point<Real> z = y0;
     for (long long j = 0; j < steps; ++j) z = runner.step(z);
-    return z;
-  };
-  volatile double sink = static_cast<double>(one_run().q);
-  std::vector<double> seconds;
-  const auto start = clock::now();
-  while (seconds.size() < timing.max_runs &&
-         (seconds.empty() || std::chrono::duration<double>(clock::now() - start).count() < timing.max_seconds)) {
-    throw_if_interrupted();
-    const auto t0 = clock::now();
-    sink = sink + static_cast<double>(one_run().q);
-    seconds.push_back(std::chrono::duration<double>(clock::now() - t0).count());
-  }
-  std::sort(seconds.begin(), seconds.end());
-  const double median = seconds.size() % 2 ? seconds[seconds.size() / 2]
-                                           : (seconds[seconds.size() / 2 - 1] + seconds[seconds.size() / 2]) / 2;
-  out.timing_row = {key[0], key[1], key[2], figure::integer(static_cast<long long>(seconds.size())), figure::of(seconds.front()),
-                    figure::of(median)};
-  out.seconds = figure::of(seconds.front());
+    return static_cast<double>(z.q);
+  });
+  out.timing_row = {key[0], key[1], key[2], figure::integer(times.runs), figure::of(times.minimum), figure::of(times.median)};
+  out.seconds = figure::of(times.minimum);
   return out;
 }
 
