@@ -3,7 +3,8 @@
 // same starting guess, on the pendulum (m = ω = 1, h = 0.1, from q = 1 rad). Two implementations
 // of each: the scalar steps (nonlinear_simpson_step.hpp, nonlinear_partitioned_rk.hpp) and the
 // n-degree-of-freedom steps with Eigen at n = 1 (nonlinear_ndof_step.hpp). The last lines printed
-// are the ratios Simpson/Lobatto of the times per step, measured in this run.
+// are the ratios: Simpson/Lobatto of the times per step, then the core's loops against raw loops
+// (iterate_bench.cpp), measured in this run.
 
 #include "ratio_reporter.hpp"
 
@@ -17,6 +18,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
+#include <tuple>
 
 namespace simpson::bench {
 namespace {
@@ -92,7 +94,12 @@ BENCHMARK(lobatto_scalar_mpfr50)->Name("lobatto_scalar_mpfr50");
 }  // namespace
 }  // namespace simpson::bench
 
+namespace simpson::bench {
+void register_scheme_benchmarks();  // iterate_bench.cpp
+}
+
 int main(int argc, char** argv) {
+  simpson::bench::register_scheme_benchmarks();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
   simpson::bench::ratio_reporter reporter;
@@ -105,6 +112,15 @@ int main(int argc, char** argv) {
       std::printf("ratio simpson_vs_lobatto_step_%s %.3f\n", kind, reporter.seconds(simpson) / reporter.seconds(lobatto));
     } catch (const std::out_of_range&) {
       // filtered out with --benchmark_filter: no ratio
+    }
+  }
+  // Steps per second of the core's loop over a raw loop's (issue targets: at least 0.95 and 0.85):
+  // the last two lines.
+  for (const auto& [ours, raw, label] : {std::tuple{"iterate_double", "raw_c", "double_vs_raw_c"},
+                                         std::tuple{"iterate_mpfr50", "raw_mpfr", "mpfr50_vs_raw_mpfr"}}) {
+    try {
+      std::printf("ratio %s %.3f\n", label, reporter.seconds(raw) / reporter.seconds(ours));
+    } catch (const std::out_of_range&) {
     }
   }
   return 0;

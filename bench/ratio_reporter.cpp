@@ -11,7 +11,7 @@ void ratio_reporter::ReportRuns(const std::vector<Run>& runs) {
     if (run.run_type == Run::RT_Aggregate && run.aggregate_name != "median") continue;
     if (run.iterations == 0) continue;
     seconds_[run.run_name.function_name + (run.run_name.args.empty() ? "" : "/" + run.run_name.args)] =
-        run.real_accumulated_time / static_cast<double>(run.iterations);
+        run.cpu_accumulated_time / static_cast<double>(run.iterations);
   }
 }
 

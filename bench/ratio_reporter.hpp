@@ -12,8 +12,10 @@ namespace simpson::bench {
 
 class ratio_reporter : public benchmark::ConsoleReporter {
  public:
+  ratio_reporter() : benchmark::ConsoleReporter(OO_Tabular) {}  // no colour codes in logs
   void ReportRuns(const std::vector<Run>& runs) override;
-  /// Real seconds per iteration of the benchmark named `name` (its last aggregate, or its run).
+  /// CPU seconds per iteration of the benchmark named `name` (its median aggregate, or its run):
+  /// CPU time, so that another process on the machine disturbs a ratio less.
   double seconds(const std::string& name) const;
 
  private:

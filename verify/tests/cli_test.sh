@@ -210,6 +210,8 @@ grep -q '"precisions_applied_to": \[' "$work/prec/report.json" && grep -q '"prec
 grep -q '"precision": "float128"' "$work/prec/report.json" && fail "precisions to sections: a scene precision survived"
 check "precisions with long_time" 2 --scene quick --precisions double --out "$work/none-prec1"
 grep -q 'long_time' "$work/err" || fail "precisions with long_time: the section is not named"
+check "rechecks over the budget" 2 --claims phi3-det --precisions mpfr:100000 --samples 10000 --out "$work/none-prec5"
+grep -q 'numeric rechecks: .* (1 claim x 10000 samples x 1 precision)' "$work/err" || fail "rechecks over the budget: $(cat "$work/err")"
 check "precisions with nonlinear" 2 --scene beyond --precisions double --out "$work/none-prec4"
 grep -q 'nonlinear' "$work/err" || fail "precisions with nonlinear: the section is not named"
 check "rational in a section" 2 --scene quick --sections stability --precisions rational --out "$work/none-prec2"

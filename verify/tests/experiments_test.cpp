@@ -166,6 +166,30 @@ TEST(Experiments, LongRunDriftIsExplainedByTheRoundedDeterminant) {
   }
 }
 
+TEST(Experiments, TheShearFormsOfPhi3DoNotDrift) {
+  long_time_settings s;
+  s.steps_double = 1000000;
+  s.steps_mpfr = 100;
+  s.windows = 10;
+  const section_result out = run_long_time(s);
+  const table& forms = get(out, "forms");
+  std::map<std::string, std::pair<double, double>> at_end;  // form: (H_d error at 1e6 steps, growth exponent)
+  for (std::size_t r = 0; r < forms.rows.size(); ++r) {
+    if (cell(forms, r, "steps").value() != "1000000") continue;
+    at_end[cell(forms, r, "form").value()] = {number(cell(forms, r, "hd_error_relative")), number(cell(forms, r, "growth_exponent"))};
+  }
+  ASSERT_EQ(at_end.size(), 3u);
+  // The rounded matrix drifts linearly (det Φ − 1 ≈ −2.2e-16 a step: 2.2e-10 at 1e6 steps).
+  EXPECT_NEAR(at_end["matrix"].second, 1, 0.02);
+  EXPECT_NEAR(at_end["matrix"].first, 2.2e-10, 0.1e-10);
+  // The shear forms only random-walk: a growth exponent well below 1, and errors more than 100 times
+  // smaller; compensated summation below the plain shear form.
+  EXPECT_LT(at_end["shear"].second, 0.8);
+  EXPECT_LT(at_end["shear-compensated"].second, 0.8);
+  EXPECT_LT(at_end["shear"].first, at_end["matrix"].first / 100);
+  EXPECT_LT(at_end["shear-compensated"].first, at_end["shear"].first);
+}
+
 TEST(Experiments, WorkPrecisionRecordsEveryRunWithItsStatus) {
   work_precision_settings w;
   w.schemes = {scheme_id::simpson, scheme_id::rk4, scheme_id::gauss_legendre_2};
@@ -292,6 +316,13 @@ TEST(Experiments, CostEstimateGrowsWithStepsAndPrecision) {
   EXPECT_LT(base, default_cost_budget);
   EXPECT_LT(estimate_cost(load_scene("paper").experiments).units, default_cost_budget);
   EXPECT_LT(estimate_cost(load_scene("beyond").experiments).units, default_cost_budget);
+  // The numeric rechecks count too: 16 claims x 10000 samples in mpfr:100000 is far over the budget,
+  // the paper scene's 16 samples across its ladder far under it.
+  const recheck_load huge{16, 10000, {precision::mpfr_digits(100000)}};
+  EXPECT_GT(estimate_cost(experiment_settings{}, huge).units, default_cost_budget);
+  const scene paper = load_scene("paper");
+  const recheck_load usual{16, paper.samples, paper.precisions};
+  EXPECT_LT(estimate_cost(experiment_settings{}, usual).units, default_cost_budget / 100);
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include <fmt/core.h>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <memory>
 #include <optional>
@@ -220,7 +221,12 @@ int main(int argc, char** argv) {
       allow_expensive = true;
       s.overrides["long"] = true;
     }
-    cost = estimate_cost(s.experiments);
+    recheck_load rechecks{0, s.samples, s.precisions};
+    for (const std::string& id : s.claims) {
+      const std::vector<std::string>& methods = find_claim(id).methods;
+      if (std::find(methods.begin(), methods.end(), "numeric") != methods.end()) ++rechecks.numeric_claims;
+    }
+    cost = estimate_cost(s.experiments, rechecks);
     if (cost.units > default_cost_budget && !allow_expensive) {
       std::string parts;
       for (const std::string& line : cost.lines) parts += (parts.empty() ? "" : "; ") + line;

@@ -53,6 +53,11 @@ class section_reader {
     }
   }
   bool has(const std::string& key) const { return object_.contains(key); }
+  bool flag(const std::string& key) const {
+    const nlohmann::json& v = object_[key];
+    if (!v.is_boolean()) fail(origin_, field(key) + " must be true or false, got " + v.dump());
+    return v.get<bool>();
+  }
   /// A finite number with lo < v <= hi (JSON has no NaN or infinity; a number beyond double is
   /// refused by the parser).
   double number(const std::string& key, double lo, double hi) const {
@@ -169,7 +174,7 @@ experiment_settings parse_experiments(const nlohmann::json& doc, const std::stri
   }
   if (doc.contains("work_precision")) {
     const section_reader r(origin, "work_precision", doc["work_precision"],
-                           {"schemes", "precisions", "N", "periods", "max_runs", "max_seconds"});
+                           {"schemes", "precisions", "N", "periods", "max_runs", "max_seconds", "benchmark"});
     work_precision_settings w;
     if (r.has("schemes")) w.schemes = r.schemes("schemes");
     if (!r.has("precisions")) fail(origin, "'work_precision.precisions' is missing");
@@ -184,6 +189,7 @@ experiment_settings parse_experiments(const nlohmann::json& doc, const std::stri
     }
     if (r.has("max_runs")) w.timing.max_runs = static_cast<unsigned>(r.integer("max_runs", 1, 1000));
     if (r.has("max_seconds")) w.timing.max_seconds = r.number("max_seconds", 0, 3600);
+    if (r.has("benchmark")) w.benchmark = r.flag("benchmark");
     e.work_precision = w;
   }
   if (doc.contains("stability")) {

@@ -29,8 +29,23 @@ double precision_factor(const precision& p) {
 
 }  // namespace
 
-cost_estimate estimate_cost(const experiment_settings& e) {
+cost_estimate estimate_cost(const experiment_settings& e, const recheck_load& rechecks) {
   cost_estimate c;
+  if (rechecks.numeric_claims > 0 && rechecks.samples > 0) {
+    // Measured on the 2-core machine, one sample of one claim: ~1 µs in double, 2.6 ms in mpfr:10000,
+    // 8 ms in mpfr:30000 (cos, sin and the checks at that precision): 200 units times the precision's
+    // factor bounds these (within 2x at 10000 digits and more, generously below).
+    // Exact rationals, which no experiment runs, take ~0.13 ms a sample here (small numerators): factor 150.
+    double units = 0;
+    for (const precision& p : rechecks.precisions) {
+      const double factor = p.exact() ? 150 : precision_factor(p);
+      units += 200 * factor * static_cast<double>(rechecks.numeric_claims) * static_cast<double>(rechecks.samples);
+    }
+    c.units += units;
+    const auto count = [](std::size_t n, const char* what) { return fmt::format("{} {}{}", n, what, n == 1 ? "" : "s"); };
+    c.lines.push_back(fmt::format("numeric rechecks: {:.3g} units ({} x {} x {})", units, count(rechecks.numeric_claims, "claim"),
+                                  count(rechecks.samples, "sample"), count(rechecks.precisions.size(), "precision")));
+  }
   if (e.table1) {
     double steps = 0;
     for (const long long N : e.table1->meshes) steps += 2.0 * static_cast<double>(N);
@@ -69,7 +84,8 @@ cost_estimate estimate_cost(const experiment_settings& e) {
     const long_time_settings& l = *e.long_time;
     // Each step also evaluates an energy and an angle (atan2): about 12 units in double (measured:
     // 1e7 steps of the three schemes take ~2 s).
-    const double units = 3 * 12 * static_cast<double>(l.steps_double) +
+    // Φ₃'s three forms in double: about 2 units a step each.
+    const double units = 3 * 12 * static_cast<double>(l.steps_double) + 3 * 2 * static_cast<double>(l.steps_double) +
                          3 * 12 * static_cast<double>(l.steps_mpfr) * precision_factor(precision::mpfr_digits(l.mpfr_digits));
     c.units += units;
     c.lines.push_back(fmt::format("long_time: {:.3g} units", units));

@@ -9,6 +9,7 @@
 
 #include <simpson/verify/floating_tools.hpp>
 #include "guarded_run.hpp"  // growth_limit
+#include "long_time_parts.hpp"
 
 #include <simpson/energy.hpp>
 
@@ -195,6 +196,7 @@ section_result run_long_time(const long_time_settings& s) {
   out.add(plot_description{"long_time_phase",
                            "|Phase error| against time (log-log), measured (solid) and predicted by the characteristic roots (dashed)",
                            phase_panels, 2, 1100, 450});
+  detail::add_long_time_forms(s, out);
   return out;
 }
 

@@ -31,7 +31,7 @@ struct measured_run {
 
 template <class Real>
 measured_run measure(scheme_id scheme, const precision& prec, long long N, long long periods,
-                     const timing_policy& timing, const std::vector<phase_point<Real>>& exact) {
+                     const timing_policy& timing, bool benchmark, const std::vector<phase_point<Real>>& exact) {
   using std::abs;
   const Real omega = 2 * boost::math::constants::pi<Real>();
   const long long steps = N * periods;
@@ -73,6 +73,7 @@ measured_run measure(scheme_id scheme, const precision& prec, long long N, long 
   if (status.is_fault()) {
     for (int k = 0; k < 5; ++k) out.row.push_back(figure{});
     if (timing.max_runs > 0) out.timing_row = {key[0], key[1], key[2], figure{}, figure{}, figure{}};
+    if (timing.max_runs > 0 && benchmark) out.timing_row.push_back(figure{});
     return out;
   }
   const Real H0 = energy(par, y0), error = std::max(error_q, error_p);
@@ -96,6 +97,7 @@ measured_run measure(scheme_id scheme, const precision& prec, long long N, long 
     return static_cast<double>(z.q);
   });
   out.timing_row = {key[0], key[1], key[2], figure::integer(times.runs), figure::of(times.minimum), figure::of(times.median)};
+  if (benchmark) out.timing_row.push_back(figure::of(static_cast<double>(steps) / times.minimum));
   out.seconds = figure::of(times.minimum);
   return out;
 }
@@ -141,6 +143,7 @@ section_result run_work_precision(const work_precision_settings& s) {
                           s.timing.max_runs, simpson::to_string(s.timing.max_seconds, 3)),
               {{"scheme", "scheme"}, {"precision", "precision"}, {"N_per_period", "N"}, {"runs", "runs"},
                {"min_seconds", "min time", "s"}, {"median_seconds", "median time", "s"}}};
+  if (s.benchmark) times.columns.push_back({"steps_per_second", "steps/s"});
   times.csv_file = "work_precision_time.csv";
   times.timing = true;
   std::vector<panel> by_time, by_n;
@@ -166,7 +169,7 @@ section_result run_work_precision(const work_precision_settings& s) {
         series by_seconds{std::string(traits_of(scheme).name), style.line, style.color, style.point, style.dash};
         series by_mesh = by_seconds;
         for (const long long N : s.meshes) {
-          measured_run m = measure<Real>(scheme, prec, N, s.periods, s.timing, exact_by_N[N]);
+          measured_run m = measure<Real>(scheme, prec, N, s.periods, s.timing, s.benchmark, exact_by_N[N]);
           progress_step("work_precision", fmt::format("{} {} N = {}", traits_of(scheme).name, prec.name(), N));
           if (timed) by_seconds.add(m.seconds, m.error);
           by_mesh.add(figure::integer(N), m.error);

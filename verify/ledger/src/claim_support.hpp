@@ -14,6 +14,9 @@
 
 namespace simpson::verify::detail {
 
+/// The reduction of the exact proofs in θ (exact_proof.hpp's unit_oscillator_in_theta).
+inline constexpr const char* unit_reduction = "m = omega = 1, h = theta (lemma-dimensional-scaling)";
+
 /// The outcome of an exact proof attempt and its evidence.
 struct proof {
   bool proved = false;

@@ -1,5 +1,6 @@
 #pragma once
-// A finding the paper does not print: how Φ₃ relates to the schemes a user would pick instead.
+// Findings the paper does not print: how Φ₃ relates to the schemes a user would pick instead, and
+// Φ₃ as a product of shears.
 
 #include <simpson/verify/claim.hpp>
 
@@ -8,5 +9,7 @@
 namespace simpson::verify::detail {
 
 void add_peer_claims(std::vector<claim>& claims);
+/// Φ₃ as a product of shears (claims_shear.cpp).
+void add_shear_claims(std::vector<claim>& claims);
 
 }  // namespace simpson::verify::detail

@@ -17,8 +17,6 @@
 namespace simpson::verify::detail {
 namespace {
 
-const char* const unit_reduction = "m = omega = 1, h = theta (lemma-dimensional-scaling)";
-
 /// ∂/∂q_1 of Σ_{j=first}^{N−1} L(q_j, q_{j+1}) for N = 3, by exact differences.
 template <class Lagrangian>
 symbolic action_derivative_at_q1(Lagrangian&& L, int first, const std::vector<symbolic>& q) {

@@ -16,8 +16,6 @@
 namespace simpson::verify::detail {
 namespace {
 
-const char* const unit_reduction = "m = omega = 1, h = theta (lemma-dimensional-scaling)";
-
 claim_result check_gear_partials(const run_context&) {
   const symbolic h = symbolic::variable();
   const proof p = prove_zero_on_grid(

@@ -24,8 +24,6 @@
 namespace simpson::verify::detail {
 namespace {
 
-const char* const unit_reduction = "m = omega = 1, h = theta (lemma-dimensional-scaling)";
-
 claim_result check_momentum_order3(const run_context&) {
   const auto par = unit_oscillator_in_theta();
   const proof p = prove_zero_on_grid(std::string(unit_reduction) + "; (moment-ordre-3) - dL_h^r/dq_r by exact differences",

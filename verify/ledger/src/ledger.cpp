@@ -22,6 +22,7 @@ const std::vector<claim>& ledger() {
     detail::add_section6_7_claims(all);
     detail::add_section8_9_claims(all);
     detail::add_peer_claims(all);
+    detail::add_shear_claims(all);
     detail::add_beyond_claims(all);
     detail::add_beyond_ndof_claims(all);
     return all;

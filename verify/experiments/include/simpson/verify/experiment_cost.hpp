@@ -15,7 +15,16 @@ struct cost_estimate {
   std::vector<std::string> lines;
 };
 inline constexpr double default_cost_budget = 2.5e10;  // about 2 minutes on the 2-core machine (~5 ns per unit)
-cost_estimate estimate_cost(const experiment_settings& e);
+
+/// The claims' numeric rechecks a run makes: each claim with a numeric method draws `samples`
+/// samples in each precision.
+struct recheck_load {
+  std::size_t numeric_claims = 0;
+  unsigned samples = 0;
+  std::vector<precision> precisions;
+};
+
+cost_estimate estimate_cost(const experiment_settings& e, const recheck_load& rechecks = {});
 
 /// Seconds one cost unit takes on the 2-core machine the costs were calibrated on.
 inline constexpr double seconds_per_cost_unit = 5e-9;

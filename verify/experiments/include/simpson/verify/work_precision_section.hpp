@@ -31,6 +31,7 @@ struct work_precision_settings {
   std::vector<long long> meshes{16, 64, 256, 1024, 4096};  // N per period
   long long periods = 1;
   timing_policy timing;
+  bool benchmark = false;  // the timing table also shows steps per second
 };
 
 section_result run_work_precision(const work_precision_settings& s);
