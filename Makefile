@@ -24,7 +24,7 @@ test: build
 # Google Benchmark (bench/), not part of `make test`: times measured side by side in one run; the last
 # lines printed are the ratios (`ratio <name> <value>`).
 bench: build
-	$(BUILD)/bin/simpson_bench --benchmark_min_time=0.5 --benchmark_color=false
+	$(BUILD)/bin/simpson_bench --benchmark_min_time=0.5 --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 
 # The whole test suite under AddressSanitizer and UndefinedBehaviorSanitizer (-O1), in build-sanitize/.
 # Leak reports from third-party libraries are suppressed in scripts/lsan.supp, each with its reason.

@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.60151e-08:0.00190076]
+set xrange [5.0476e-08:0.0012682]
 set xtics autofreq
 set mxtics default
 set yrange [4.29802e-15:0.337578]
@@ -37,7 +37,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.37796e-07:0.00449452]
+set xrange [9.29287e-08:0.00349029]
 set xtics autofreq
 set mxtics default
 set yrange [3.30044e-15:0.34185]
@@ -61,7 +61,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.06716e-06:0.0354655]
+set xrange [9.38036e-07:0.0295208]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -85,7 +85,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [2.822e-06:0.0624856]
+set xrange [1.52948e-06:0.0460044]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -109,7 +109,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [2.56536e-06:0.0611021]
+set xrange [2.57664e-06:0.058823]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -159,7 +159,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.60151e-08:0.00190076]
+set xrange [5.0476e-08:0.0012682]
 set xtics autofreq
 set mxtics default
 set yrange [4.29802e-15:0.337578]
@@ -183,7 +183,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.37796e-07:0.00449452]
+set xrange [9.29287e-08:0.00349029]
 set xtics autofreq
 set mxtics default
 set yrange [3.30044e-15:0.34185]
@@ -207,7 +207,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.06716e-06:0.0354655]
+set xrange [9.38036e-07:0.0295208]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -231,7 +231,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [2.822e-06:0.0624856]
+set xrange [1.52948e-06:0.0460044]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -255,7 +255,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [2.56536e-06:0.0611021]
+set xrange [2.57664e-06:0.058823]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]

@@ -71,7 +71,10 @@ long_run run_long(const long_run_case& c, const precision& prec, long long steps
                series(name + " measured", line_style::lines, style.color, style.point, style.dash),
                series(name + " predicted", line_style::dashed, style.color, style.point)};
   phase_point<Real> y = y0;
-  Real angle_previous(0), unwrapped(0), overall(0), measured_phase_error(0), predicted_phase_error(0);
+  // The unwrapped angle is 2π·turns + angle: an integer count of branch crossings, not a running sum
+  // of ~θ per step (a sum of 1e9 increments in double errs by up to 1e9 ulp(1e8)/2 ≈ 7 rad).
+  Real angle(0), overall(0), measured_phase_error(0), predicted_phase_error(0);
+  long long turns = 0;
   const Real two_pi = 2 * boost::math::constants::pi<Real>();
   std::vector<Real> times, maxima;
   figure status = figure::text("ok");
@@ -90,19 +93,18 @@ long_run run_long(const long_run_case& c, const precision& prec, long long steps
         break;
       }
       window_max = std::max(window_max, Real(abs(Real(monitor(z) - E0)) / E0));
-      // Unwrap the angle of (q, p): it advances by about θ per step (< π), so steps of the branch are detected.
-      const Real angle = atan2(z.q, z.p);
-      Real delta = angle - angle_previous;
-      while (delta > two_pi / 2) delta -= two_pi;
-      while (delta < -two_pi / 2) delta += two_pi;
-      unwrapped += delta;
-      angle_previous = angle;
+      // Unwrap the angle of (q, p): it advances by about θ per step (< π), so a crossing of the branch
+      // cut is a jump by about ∓2π.
+      const Real next_angle = atan2(z.q, z.p);
+      if (next_angle - angle < -two_pi / 2) ++turns;
+      if (next_angle - angle > two_pi / 2) --turns;
+      angle = next_angle;
     }
     if (status.is_fault()) break;
     y = z;
     const long long j = start + length;
     const Real t = Real(theta) * Real(j);
-    measured_phase_error = unwrapped - t;
+    measured_phase_error = Real(two_pi * Real(turns) - t) + angle;
     predicted_phase_error = Real(j) * phase_per_step - t;
     overall = std::max(overall, window_max);
     times.push_back(t);
