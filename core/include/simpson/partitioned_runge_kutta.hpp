@@ -6,6 +6,7 @@
 #include <simpson/one_step_map.hpp>
 #include <simpson/oscillator_parameters.hpp>
 
+#include <array>
 #include <cstddef>
 #include <stdexcept>
 #include <string>
@@ -22,12 +23,13 @@ struct butcher_tableau {
   std::size_t stages() const noexcept { return b.size(); }
 };
 
-/// Solves M x = r by Gaussian elimination. Pivot: the largest |entry| for ordered numbers, the
-/// first non-zero for symbolic scalars (exact, so any non-zero pivot is as good). Throws
-/// std::domain_error when M is singular.
-template <class Real>
-std::vector<Real> solve_linear(std::vector<std::vector<Real>> M, std::vector<Real> r) {
-  const std::size_t n = r.size();
+namespace detail {
+/// Gaussian elimination on the leading n × n block of M (any row-indexable storage: vectors, or
+/// arrays for small systems). Pivot: the largest |entry| for ordered numbers, the first non-zero for
+/// symbolic scalars (exact, so any non-zero pivot is as good). Leaves the solution in x[0..n).
+/// Throws std::domain_error when M is singular.
+template <class Real, class Matrix, class Vector>
+void eliminate(Matrix& M, Vector& r, Vector& x, std::size_t n) {
   for (std::size_t k = 0; k < n; ++k) {
     std::size_t pivot = n;
     for (std::size_t i = k; i < n; ++i) {
@@ -47,15 +49,55 @@ std::vector<Real> solve_linear(std::vector<std::vector<Real>> M, std::vector<Rea
       r[i] -= factor * r[k];
     }
   }
-  std::vector<Real> x(n, Real(0));
   for (std::size_t k = n; k-- > 0;) {
     Real sum = r[k];
     for (std::size_t j = k + 1; j < n; ++j) sum -= M[k][j] * x[j];
     x[k] = sum / M[k][k];
   }
+}
+}  // namespace detail
+
+/// Solves M x = r by Gaussian elimination (detail::eliminate). Throws std::domain_error when M is
+/// singular.
+template <class Real>
+std::vector<Real> solve_linear(std::vector<std::vector<Real>> M, std::vector<Real> r) {
+  std::vector<Real> x(r.size(), Real(0));
+  detail::eliminate<Real>(M, r, x, r.size());
   return x;
 }
 
+namespace detail {
+/// The step below with its system in the given storage (at least s × s).
+template <class Real, class Matrix, class Vector>
+phase_point<Real> prk_linear_step(const oscillator_parameters<Real>& par, const butcher_tableau<Real>& for_q,
+                                  const butcher_tableau<Real>& for_p, const phase_point<Real>& y, Matrix& M, Vector& rhs, Vector& Q) {
+  const std::size_t s = for_q.stages();
+  const Real& m = par.m();
+  const Real& h = par.h();
+  const Real x = par.omega2_h2();
+  const Real stiffness = m * par.omega() * par.omega();
+  for (std::size_t i = 0; i < s; ++i) {
+    Real row_sum(0);
+    for (std::size_t k = 0; k < s; ++k) {
+      row_sum += for_q.a[i][k];
+      Real product(0);
+      for (std::size_t l = 0; l < s; ++l) product += for_q.a[i][l] * for_p.a[l][k];
+      M[i][k] = (i == k ? Real(1) : Real(0)) + x * product;
+    }
+    rhs[i] = y.q;
+    rhs[i] += h / m * y.p * row_sum;
+  }
+  eliminate<Real>(M, rhs, Q, s);
+  phase_point<Real> next = y;
+  for (std::size_t i = 0; i < s; ++i) {
+    Real P_i = y.p;
+    for (std::size_t k = 0; k < s; ++k) P_i -= h * for_p.a[i][k] * stiffness * Q[k];
+    next.q += h * for_q.b[i] * P_i / m;
+    next.p -= h * for_p.b[i] * stiffness * Q[i];
+  }
+  return next;
+}
+}  // namespace detail
 
 /// One step of the partitioned Runge–Kutta method with tableau `for_q` for q' = p/m and `for_p`
 /// for p' = −m ω² q (both with s stages):
@@ -71,31 +113,16 @@ phase_point<Real> partitioned_runge_kutta_step(const oscillator_parameters<Real>
   if (s == 0 || for_p.stages() != s) {
     throw std::invalid_argument("simpson::partitioned_runge_kutta_step: the tableaux must have the same number of stages");
   }
-  const Real& m = par.m();
-  const Real& h = par.h();
-  const Real x = par.omega2_h2();
-  const Real stiffness = m * par.omega() * par.omega();
+  // The system in fixed-size arrays up to 4 stages (every tableau of the project: no allocation per
+  // step in double), in vectors beyond; the same operations in the same order either way.
+  if (s <= 4) {
+    std::array<std::array<Real, 4>, 4> M{};
+    std::array<Real, 4> rhs{}, Q{};
+    return detail::prk_linear_step(par, for_q, for_p, y, M, rhs, Q);
+  }
   std::vector<std::vector<Real>> M(s, std::vector<Real>(s, Real(0)));
-  std::vector<Real> rhs(s, y.q);
-  for (std::size_t i = 0; i < s; ++i) {
-    Real row_sum(0);
-    for (std::size_t k = 0; k < s; ++k) {
-      row_sum += for_q.a[i][k];
-      Real product(0);
-      for (std::size_t l = 0; l < s; ++l) product += for_q.a[i][l] * for_p.a[l][k];
-      M[i][k] = (i == k ? Real(1) : Real(0)) + x * product;
-    }
-    rhs[i] += h / m * y.p * row_sum;
-  }
-  const std::vector<Real> Q = solve_linear(std::move(M), std::move(rhs));
-  phase_point<Real> next = y;
-  for (std::size_t i = 0; i < s; ++i) {
-    Real P_i = y.p;
-    for (std::size_t k = 0; k < s; ++k) P_i -= h * for_p.a[i][k] * stiffness * Q[k];
-    next.q += h * for_q.b[i] * P_i / m;
-    next.p -= h * for_p.b[i] * stiffness * Q[i];
-  }
-  return next;
+  std::vector<Real> rhs(s), Q(s);
+  return detail::prk_linear_step(par, for_q, for_p, y, M, rhs, Q);
 }
 
 /// The one-step matrix of the method: its step applied to (1, 0) and (0, 1) (exact for a linear map).
