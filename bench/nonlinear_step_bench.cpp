@@ -8,6 +8,7 @@
 
 #include "ratio_reporter.hpp"
 
+#include <simpson/nonlinear_brouwer_step.hpp>
 #include <simpson/nonlinear_ndof_step.hpp>
 #include <simpson/nonlinear_partitioned_rk.hpp>
 #include <simpson/nonlinear_simpson_step.hpp>
@@ -49,6 +50,19 @@ void lobatto_scalar(benchmark::State& state) {
   }
 }
 
+/// The Simpson step in Brouwer form with compensated summation (nonlinear_brouwer_step.hpp): what
+/// its exact coefficients, Newton to stagnation and Kahan's summation cost beside simpson_scalar.
+template <class Real>
+void brouwer_scalar(benchmark::State& state) {
+  const pendulum_potential<Real> V{Real(1), Real(1)};
+  const brouwer_coefficients<Real> k = simpson_brouwer_coefficients(Real(step_size));
+  compensated_point<Real> z{phase_point<Real>{Real(0), Real(1)}};
+  for (auto _ : state) {
+    simpson_brouwer_step_compensated(k, Real(1), V, z);
+    benchmark::DoNotOptimize(z);
+  }
+}
+
 using pendulum_1d = one_dof_potential<double, pendulum_potential<double>>;
 
 separable_system<double, pendulum_1d> pendulum_system() {
@@ -86,6 +100,7 @@ void lobatto_scalar_mpfr50(benchmark::State& state) {
 
 BENCHMARK(simpson_scalar<double>)->Name("simpson_scalar_double");
 BENCHMARK(lobatto_scalar<double>)->Name("lobatto_scalar_double");
+BENCHMARK(brouwer_scalar<double>)->Name("brouwer_compensated_scalar_double");
 BENCHMARK(simpson_ndof)->Name("simpson_ndof_double");
 BENCHMARK(lobatto_ndof)->Name("lobatto_ndof_double");
 BENCHMARK(simpson_scalar_mpfr50)->Name("simpson_scalar_mpfr50");

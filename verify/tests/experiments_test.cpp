@@ -7,6 +7,7 @@
 
 #include <simpson/verify/floating_tools.hpp>
 
+#include <simpson/nonlinear_brouwer_step.hpp>
 #include <simpson/nonlinear_partitioned_rk.hpp>
 #include <simpson/pendulum_exact.hpp>
 #include <simpson/potential.hpp>
@@ -14,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <map>
 
 #include <cmath>
@@ -241,6 +243,7 @@ TEST(Experiments, NonlinearPendulumIsPinnedByLobattoInMpfr100AndTheExactSolution
   nonlinear_settings s;
   s.pendulum_N = {10, 20, 40};
   s.energy_steps = 2000;
+  s.brouwer_steps = 1000;
   s.problems.clear();
   s.double_pendulum_N = {10};
   s.timing.max_runs = 0;
@@ -280,10 +283,68 @@ TEST(Experiments, NonlinearPendulumIsPinnedByLobattoInMpfr100AndTheExactSolution
   EXPECT_GT(number(cell(d, 0, "H_change_double")), 1e-3);
 }
 
+TEST(Experiments, NonlinearBrouwerFormsMatchAReferenceInMpfr) {
+  nonlinear_settings s;
+  s.pendulum_N = {10};
+  s.energy_steps = 10;
+  s.brouwer_steps = 20'000;
+  s.problems.clear();
+  s.double_pendulum_N = {10};
+  s.timing.max_runs = 0;
+  const section_result out = run_nonlinear(s);
+  const table& t = get(out, "pendulum_brouwer");
+  // Rows at 100, 1000, 10000 and the last step for each of the three forms.
+  ASSERT_EQ(t.rows.size(), 3u * 4u);
+  // The independent route: the same double runs (deterministic) against the same map in mpfr:40
+  // instead of long double. The table's running maxima differ from these by at most the largest
+  // |H(ref in long double) − H(ref in mpfr)|/H₀ over the run (triangle inequality), plus H's
+  // rounding in long double (a few eps of terms ≤ 1).
+  const scoped_mpfr_digits digits(40);
+  const double h = s.brouwer_h;
+  const brouwer_coefficients<double> k = simpson_brouwer_coefficients(h);
+  const brouwer_coefficients<mpfr> k_mpfr = k.cast<mpfr>();
+  const brouwer_coefficients<long double> k_long = k.cast<long double>();
+  const pendulum_potential<double> V{1, 1};
+  const pendulum_potential<mpfr> V_mpfr{mpfr(1), mpfr(1)};
+  const pendulum_potential<long double> V_long{1, 1};
+  phase_point<double> standard{0, s.pendulum_q0}, plain = standard;
+  compensated_point<double> compensated{standard};
+  phase_point<mpfr> reference{mpfr(0), mpfr(s.pendulum_q0)};
+  phase_point<long double> reference_long{0, s.pendulum_q0};
+  const auto H = [&V_mpfr](const mpfr& p, const mpfr& q) { return mpfr(p * p / 2 + V_mpfr.value(q)); };
+  const mpfr H0 = H(reference.p, reference.q);
+  std::array<mpfr, 3> running{mpfr(0), mpfr(0), mpfr(0)};
+  mpfr reference_gap(0);
+  for (long long j = 1; j <= s.brouwer_steps; ++j) {
+    standard = simpson_nonlinear_step(1.0, h, V, standard).state;
+    simpson_brouwer_step(k, 1.0, V, plain);
+    simpson_brouwer_step_compensated(k, 1.0, V, compensated);
+    simpson_brouwer_step(k_mpfr, mpfr(1), V_mpfr, reference);
+    simpson_brouwer_step(k_long, 1.0L, V_long, reference_long);
+    const mpfr Href = H(reference.p, reference.q);
+    running[0] = max(running[0], mpfr(abs(H(standard.p, standard.q) - Href) / H0));
+    running[1] = max(running[1], mpfr(abs(H(plain.p, plain.q) - Href) / H0));
+    running[2] = max(running[2], mpfr(abs(H(compensated.y.p, compensated.y.q) - Href) / H0));
+    reference_gap = max(reference_gap, mpfr(abs(H(mpfr(reference_long.p), mpfr(reference_long.q)) - Href) / H0));
+  }
+  const mpfr bound = reference_gap + 8 * std::numeric_limits<long double>::epsilon();
+  const std::array<std::string, 3> forms{"standard", "brouwer", "brouwer-compensated"};
+  for (std::size_t f = 0; f < 3; ++f) {
+    const std::size_t last = 4 * f + 3;
+    EXPECT_EQ(cell(t, last, "form").value(), forms[f]);
+    EXPECT_EQ(cell(t, last, "steps").value(), "20000");
+    EXPECT_LE(abs(mpfr(mpfr(cell(t, last, "energy_error_relative").value()) - running[f])), bound) << forms[f];
+    EXPECT_GT(running[f], 0) << forms[f];  // every form rounds: the comparison is not of zeros
+  }
+  // The reference is the same map rounded 2¹¹ times more finely: far below double's round-off.
+  EXPECT_LT(reference_gap, running[2] / 16);
+}
+
 TEST(Experiments, NonlinearProblemsRecordAFailedNewtonSolveAndGoOn) {
   nonlinear_settings s;
   s.pendulum_N = {10};
   s.energy_steps = 10;
+  s.brouwer_steps = 10;
   s.problems = {"kepler"};
   s.N = {8, 256, 512};
   s.double_pendulum_N = {10};

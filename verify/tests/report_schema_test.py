@@ -31,8 +31,9 @@ runs = {
     "timing runs": ["--scene", "quick", "--sections", "work_precision", "--timing-runs", "2", "--precisions", "double,mpfr:30"],
 }
 with tempfile.TemporaryDirectory() as work:
-    # A small nonlinear section (the beyond scene's takes ~10 s): its tables, plots and timing.
-    small = {"name": "small-nonlinear", "nonlinear": {"pendulum_N": [10, 20], "energy_steps": 100, "problems": ["pendulum", "kepler"],
+    # A small nonlinear section (the beyond scene's takes ~30 s): its tables, plots and timing.
+    small = {"name": "small-nonlinear", "nonlinear": {"pendulum_N": [10, 20], "energy_steps": 100, "brouwer_steps": 1000,
+                                                     "problems": ["pendulum", "kepler"],
                                                      "N": [64, 128], "double_pendulum_N": [10, 20], "max_runs": 1}}
     json.dump(small, open(f"{work}/small-nonlinear.json", "w"))
     runs["nonlinear section"] = ["--scene", f"{work}/small-nonlinear.json"]

@@ -149,6 +149,9 @@ TEST(Scene, RejectsEveryBadExperimentParameter) {
   EXPECT_TRUE(mentions(section(R"("nonlinear": {"eccentricity": -0.1})"), "'nonlinear.eccentricity' must be a number"));
   EXPECT_TRUE(mentions(section(R"("nonlinear": {"pendulum_N": [0]})"), "'nonlinear.pendulum_N'[0] must be an integer from 1"));
   EXPECT_TRUE(mentions(section(R"("nonlinear": {"reference_digits": 10})"), "'nonlinear.reference_digits' must be an integer from 20"));
+  EXPECT_TRUE(mentions(section(R"("nonlinear": {"brouwer_h": 0})"), "'nonlinear.brouwer_h' must be a number greater than 0"));
+  EXPECT_TRUE(mentions(section(R"("nonlinear": {"brouwer_h": 1.5})"), "'nonlinear.brouwer_h' must be a number greater than 0"));
+  EXPECT_TRUE(mentions(section(R"("nonlinear": {"brouwer_steps": 0})"), "'nonlinear.brouwer_steps' must be an integer from 1"));
   EXPECT_TRUE(mentions(section(R"("nonlinear": {"V": "x^3"})"), "unknown key 'nonlinear.V'"));
 }
 

@@ -220,7 +220,7 @@ experiment_settings parse_experiments(const nlohmann::json& doc, const std::stri
   }
   if (doc.contains("nonlinear")) {
     const section_reader r(origin, "nonlinear", doc["nonlinear"],
-                           {"pendulum_q0", "pendulum_T", "pendulum_N", "mpfr_digits", "energy_steps", "problems", "N",
+                           {"pendulum_q0", "pendulum_T", "pendulum_N", "mpfr_digits", "energy_steps", "brouwer_h", "brouwer_steps", "problems", "N",
                             "eccentricity", "reference_digits", "max_runs", "max_seconds", "double_pendulum_N"});
     nonlinear_settings n;
     // q0 = π is the unstable equilibrium, where the exact solution (k = 1) has no period.
@@ -231,6 +231,9 @@ experiment_settings parse_experiments(const nlohmann::json& doc, const std::stri
       n.mpfr_digits = static_cast<unsigned>(r.integer("mpfr_digits", precision::min_mpfr_digits, precision::max_mpfr_digits));
     }
     if (r.has("energy_steps")) n.energy_steps = r.integer("energy_steps", 1, max_steps);
+    // Up to h = 1 the Newton start q + hp/2 converges for the pendulum's |p| ≤ 2.
+    if (r.has("brouwer_h")) n.brouwer_h = r.number("brouwer_h", 0, 1);
+    if (r.has("brouwer_steps")) n.brouwer_steps = r.integer("brouwer_steps", 1, max_steps);
     if (r.has("problems")) n.problems = r.names("problems", nonlinear_problem_names());
     if (r.has("N")) n.N = r.integers("N", 1, 100'000'000);
     if (r.has("eccentricity")) {

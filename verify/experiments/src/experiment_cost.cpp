@@ -95,7 +95,8 @@ cost_estimate estimate_cost(const experiment_settings& e, const recheck_load& re
     // Measured on the 2-core machine: a Newton step of the pendulum in mpfr:50 beside its Lobatto
     // run ~3e4 units; a step of a nonlinear problem in double (Eigen, dynamic sizes) ~200 units for
     // the implicit methods, with up to max_runs + 1 timed runs; Hénon–Heiles' reference, 24 times the
-    // finest N of Gauss–Legendre steps in mpfr:32, ~2e4 units each (scaled by the precision's factor).
+    // finest N of Gauss–Legendre steps in mpfr:32, ~2e4 units each (scaled by the precision's factor);
+    // a step of the Brouwer part (three forms in double and the reference in long double) ~400 units.
     double pendulum = 0, problems = 0, finest = 0, double_pendulum = 0;
     const double mpfr_factor = precision_factor(precision::mpfr_digits(n.mpfr_digits)) / precision_factor(precision::mpfr_digits(50));
     for (const long long N : n.pendulum_N) pendulum += 3e4 * mpfr_factor * static_cast<double>(N) + 100 * static_cast<double>(n.energy_steps);
@@ -107,7 +108,9 @@ cost_estimate estimate_cost(const experiment_settings& e, const recheck_load& re
     const bool henon_heiles = std::find(n.problems.begin(), n.problems.end(), "henon-heiles") != n.problems.end();
     const double reference_factor =
         precision_factor(precision::mpfr_digits(n.reference_digits)) / precision_factor(precision::mpfr_digits(32));
-    const double units = pendulum + problems + double_pendulum + (henon_heiles ? 2e4 * reference_factor * 24 * finest : 0);
+    const double brouwer = 400 * static_cast<double>(n.brouwer_steps);
+    const double units =
+        pendulum + brouwer + problems + double_pendulum + (henon_heiles ? 2e4 * reference_factor * 24 * finest : 0);
     c.units += units;
     c.lines.push_back(fmt::format("nonlinear: {:.3g} units", units));
   }

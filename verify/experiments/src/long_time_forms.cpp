@@ -3,6 +3,7 @@
 // and the shear form with compensated summation. For each, the running maximum of the relative H_d
 // error at log-spaced step counts, its growth exponent, and the phase drift against Φ₃'s exact rotation.
 
+#include "growth_tools.hpp"
 #include "long_time_parts.hpp"
 
 #include <simpson/verify/floating_tools.hpp>
@@ -30,17 +31,6 @@ const char* name_of(form f) {
     case form::shear: return "shear";
     default: return "shear-compensated";
   }
-}
-
-/// Step counts at which a run is sampled: 10 per decade from 100, and the last step.
-std::vector<long long> checkpoints(long long steps) {
-  std::vector<long long> out;
-  for (double d = 2; d <= std::log10(static_cast<double>(steps)) + 1e-9; d += 0.1) {
-    const long long k = std::llround(std::pow(10.0, d));
-    if (k <= steps && (out.empty() || k > out.back())) out.push_back(k);
-  }
-  if (out.empty() || out.back() != steps) out.push_back(steps);
-  return out;
 }
 
 /// (x + π) mod 2π − π, in long double.
@@ -73,7 +63,7 @@ form_run run_form(form f, const long_time_settings& s) {
   compensated_point<double> z{{1, 0}};
   const double H0 = a;
   form_run out;
-  out.steps = checkpoints(s.steps_double);
+  out.steps = log_spaced_checkpoints(s.steps_double);
   double running = 0;
   std::size_t next = 0;
   for (long long j = 1; j <= s.steps_double; ++j) {
@@ -95,23 +85,8 @@ form_run run_form(form f, const long_time_settings& s) {
       ++next;
     }
   }
-  // Growth: least-squares slope of log(running maximum) against log(steps) from 1e5 steps (or the
-  // last two decades of a shorter run) to the end.
-  const double from = std::min(1e5, static_cast<double>(s.steps_double) / 100);
-  std::vector<double> xs, ys;
-  std::vector<bool> use;
-  for (std::size_t i = 0; i < out.steps.size(); ++i) {
-    xs.push_back(static_cast<double>(out.steps[i]));
-    ys.push_back(out.hd_error[i]);
-    use.push_back(static_cast<double>(out.steps[i]) >= from);
-  }
-  out.growth_exponent = log_log_slope(xs, ys, use);
+  out.growth_exponent = growth_exponent(out.steps, out.hd_error);
   return out;
-}
-
-bool decade(long long steps) {
-  const double d = std::log10(static_cast<double>(steps));
-  return std::abs(d - std::round(d)) < 1e-9;
 }
 
 }  // namespace
@@ -128,7 +103,7 @@ void add_long_time_forms(const long_time_settings& s, section_result& out) {
                  "steps to the end (1 a drift, 0.5 a random walk). Phase: the angle on the H_d ellipse minus j φ, φ the "
                  "exact rotation per step of Φ₃ (in long double): the phase drift that rounding adds.",
                  simpson::to_string(s.omega_h, 3), s.steps_double,
-                 static_cast<long long>(std::min(1e5, static_cast<double>(s.steps_double) / 100))),
+                 growth_fit_start(s.steps_double)),
              {{"form", "form"},
               {"steps", "steps"},
               {"hd_error_relative", "H_d error (rel.)"},
@@ -142,7 +117,7 @@ void add_long_time_forms(const long_time_settings& s, section_result& out) {
     series curve(name_of(forms[f]), line_style::lines, styles[f].first, styles[f].second, static_cast<int>(f) + 1);
     for (std::size_t i = 0; i < r.steps.size(); ++i) {
       curve.add(figure::integer(r.steps[i]), figure::of(r.hd_error[i]));
-      if (decade(r.steps[i]) || i + 1 == r.steps.size()) {
+      if (is_decade(r.steps[i]) || i + 1 == r.steps.size()) {
         rows.add({figure::text(name_of(forms[f])), figure::integer(r.steps[i]), figure::of(r.hd_error[i]), figure::of(r.growth_exponent),
                   figure::of(r.phase[i])});
       }
@@ -150,24 +125,10 @@ void add_long_time_forms(const long_time_settings& s, section_result& out) {
     growth.curves.push_back(curve);
     runs.push_back(std::move(r));
   }
-  // Guides through the matrix form's and the shear form's values at the first fitted step, a factor 4
-  // below: slope 1 (a drift) and 1/2 (a random walk).
-  const form_run& first = runs.front();
-  std::size_t anchor = 0;
-  while (anchor + 1 < first.steps.size() && static_cast<double>(first.steps[anchor]) < std::min(1e5, static_cast<double>(s.steps_double) / 100)) {
-    ++anchor;
-  }
-  for (const auto& [which, exponent, title] : {std::tuple{0, 1.0, "slope t"}, std::tuple{1, 0.5, "slope sqrt(t)"}}) {
-    const form_run& r = runs[static_cast<std::size_t>(which)];
-    if (!(r.hd_error[anchor] > 0)) continue;
-    series guide(title, line_style::dashed, 8);
-    guide.reference = true;
-    for (std::size_t i = anchor; i < r.steps.size(); ++i) {
-      guide.add(figure::integer(r.steps[i]),
-                figure::of(r.hd_error[anchor] / 4 * std::pow(static_cast<double>(r.steps[i]) / static_cast<double>(r.steps[anchor]), exponent)));
-    }
-    growth.curves.push_back(guide);
-  }
+  // Guides through the matrix form's and the shear form's values at the fit's first step: slope 1
+  // (a drift) and 1/2 (a random walk).
+  add_slope_guide(growth, "slope t", 1.0, runs[0].steps, runs[0].hd_error);
+  add_slope_guide(growth, "slope sqrt(t)", 0.5, runs[1].steps, runs[1].hd_error);
   out.add(std::move(rows));
   out.add(plot_description{"long_time_forms",
                            "Relative H_d error of Φ₃'s three forms in double against the step count (log-log), with guides of "

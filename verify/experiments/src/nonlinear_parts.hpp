@@ -10,6 +10,8 @@ namespace simpson::verify::detail {
 
 /// The pendulum's convergence table in mpfr, with its energy over long runs in double.
 void add_nonlinear_pendulum(const nonlinear_settings& s, section_result& out);
+/// Brouwer's law: the pendulum's energy round-off in the step's three forms over a long run in double.
+void add_nonlinear_brouwer(const nonlinear_settings& s, section_result& out);
 /// Error against N and run time on the pendulum, Kepler and Hénon–Heiles, in double.
 void add_nonlinear_problems(const nonlinear_settings& s, section_result& out);
 /// The linearized double pendulum: errors and the discrete energy.

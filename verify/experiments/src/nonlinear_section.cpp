@@ -1,4 +1,4 @@
-// The nonlinear section (beyond the paper): its three parts in order, with the settings they
+// The nonlinear section (beyond the paper): its four parts in order, with the settings they
 // depend on.
 
 #include "nonlinear_parts.hpp"
@@ -16,6 +16,8 @@ section_result run_nonlinear(const nonlinear_settings& s) {
                      {"pendulum_N", s.pendulum_N},
                      {"mpfr_digits", s.mpfr_digits},
                      {"energy_steps", s.energy_steps},
+                     {"brouwer_h", s.brouwer_h},
+                     {"brouwer_steps", s.brouwer_steps},
                      {"problems", s.problems},
                      {"N", s.N},
                      {"eccentricity", s.eccentricity},
@@ -28,6 +30,7 @@ section_result run_nonlinear(const nonlinear_settings& s) {
       "working precision, then takes Simpson's rule for the impulse. The paper's §9 leaves this case open; the claims "
       "of the ledger part \"beyond\" prove that the step is the 3-stage Lobatto IIIA–IIIB step and symplectic for every V.");
   detail::add_nonlinear_pendulum(s, out);
+  detail::add_nonlinear_brouwer(s, out);
   detail::add_nonlinear_problems(s, out);
   detail::add_double_pendulum(s, out);
   return out;

@@ -26,6 +26,9 @@ struct nonlinear_settings {
   std::vector<long long> pendulum_N{10, 20, 40, 80, 160};
   unsigned mpfr_digits = 50;        // the pendulum table's and the double pendulum's precision
   long long energy_steps = 100'000;  // the runs in double that watch the energy
+  // Brouwer's law: the pendulum's energy round-off in the step's three forms, in double.
+  double brouwer_h = 0.05;
+  long long brouwer_steps = 10'000'000;
   // Error against N and run time, in double.
   std::vector<std::string> problems = nonlinear_problem_names();
   std::vector<long long> N{64, 128, 256, 512, 1024, 2048, 4096};
