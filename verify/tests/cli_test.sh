@@ -212,6 +212,10 @@ check "precisions with long_time" 2 --scene quick --precisions double --out "$wo
 grep -q 'long_time' "$work/err" || fail "precisions with long_time: the section is not named"
 check "rechecks over the budget" 2 --claims phi3-det --precisions mpfr:100000 --samples 10000 --out "$work/none-prec5"
 grep -q 'numeric rechecks: .* (1 claim x 10000 samples x 1 precision)' "$work/err" || fail "rechecks over the budget: $(cat "$work/err")"
+# --certify without coqc on PATH: bad input, named, nothing written.
+PATH=/nonexistent check "certify without coqc" 2 --claims phi3-det --certify --out "$work/none-coq"
+grep -q -- "--certify: coqc was not found" "$work/err" || fail "certify without coqc: not named"
+[ -e "$work/none-coq" ] && fail "certify without coqc wrote $work/none-coq"
 check "precisions with nonlinear" 2 --scene beyond --precisions double --out "$work/none-prec4"
 grep -q 'nonlinear' "$work/err" || fail "precisions with nonlinear: the section is not named"
 check "rational in a section" 2 --scene quick --sections stability --precisions rational --out "$work/none-prec2"

@@ -56,8 +56,10 @@ TEST(Report, WritesEveryFileAtomically) {
   prepare_output_directory(dir);
   EXPECT_FALSE(std::filesystem::exists(dir)) << "checking the directory creates nothing";
   write_report_files(dir, run(load_scene("quick")));
-  std::vector<std::string> names;
-  for (const auto& entry : std::filesystem::directory_iterator(dir)) names.push_back(entry.path().filename().string());
+  std::vector<std::string> names;  // report-relative paths of the files, a directory's as <directory>/<file>
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
+    if (entry.is_regular_file()) names.push_back(entry.path().lexically_relative(dir).generic_string());
+  }
   std::sort(names.begin(), names.end());
   // The quick scene has every section: its data files, gnuplot scripts and plots, and no staging left.
   for (const char* expected : {"report.json", "report.md", "report.html", "table1.csv", "work_precision.csv", "figure1.gp",

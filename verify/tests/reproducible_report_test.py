@@ -23,13 +23,18 @@ def run(directory, args):
     return os.path.join(directory, "out")
 
 
+def listing(directory):
+    """The report's files by report-relative path (certificates/<id>.v for a directory's)."""
+    return sorted(os.path.relpath(os.path.join(root, name), directory) for root, _, names in os.walk(directory) for name in names)
+
+
 with tempfile.TemporaryDirectory() as work:
     for label, args in (("timed", []), ("untimed", ["--no-timing"])):
         first, second = run(f"{work}/{label}1", args), run(f"{work}/{label}2", args)
         report = json.load(open(f"{first}/report.json"))
         timing = set(report["timing_files"])
-        files = sorted(os.listdir(first))
-        if files != sorted(os.listdir(second)):
+        files = listing(first)
+        if files != listing(second):
             print(f"FAIL {label}: the two runs wrote different files")
             failures += 1
         if set(report["files"]) | timing != set(files):

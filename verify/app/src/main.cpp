@@ -8,6 +8,7 @@
 #include <simpson/verify/interruption.hpp>
 #include <simpson/verify/ledger.hpp>
 #include <simpson/verify/progress.hpp>
+#include <simpson/verify/certify.hpp>
 #include <simpson/verify/report.hpp>
 #include <simpson/verify/report_compare.hpp>
 #include <simpson/verify/scene.hpp>
@@ -113,12 +114,12 @@ int main(int argc, char** argv) {
   std::string scene_name = "paper", out_dir, seed_text, samples_text, paper_file, timing_runs_text;
   std::vector<std::string> claim_ids, section_list, precision_names;
   bool want_claims = false, want_scenes = false, want_precisions = false, allow_expensive = false, long_run = false,
-       quiet = false, no_timing = false;
+       quiet = false, no_timing = false, certify = false;
   app.add_option("--scene", scene_name, "embedded scene name (paper, quick) or a scene JSON file")->capture_default_str();
   app.add_option("--paper", paper_file, "the paper's LaTeX source to check (default: the embedded GSI 2023 text)");
   app.add_option("--out", out_dir, "report directory (default: reports/out/<scene>)");
   app.add_option("--claims", claim_ids,
-                 "comma-separated claim ids; alone, runs these claims and no section (default: the scene's)")
+                 "comma-separated claim ids, or all (the scene's); alone, runs these claims and no section (default: the scene's)")
       ->delimiter(',');
   app.add_option("--sections", section_list,
                  "comma-separated sections (table1, work_precision, stability, long_time, nonlinear) or none; alone, runs these "
@@ -140,6 +141,9 @@ int main(int argc, char** argv) {
   app.add_option("--samples", samples_text, "random samples per numeric recheck and precision, 1..10000");
   app.add_flag("--allow-expensive", allow_expensive,
                fmt::format("run a scene whose estimated cost exceeds the budget ({:.3g} double-step units, about {})", default_cost_budget, seconds_text(default_cost_budget)));
+  app.add_flag("--certify", certify,
+               "check each claim's Coq certificate (certificates/*.v of the report) with coqc; a rejected certificate "
+               "gives exit code 1");
   app.add_flag("--long", long_run, "long_time section: 1e9 steps in double instead of the scene's (implies --allow-expensive)");
   app.add_option("--timing-runs", timing_runs_text,
                  "work_precision: timed runs per configuration after one warm-up, 1..1000 (default: the scene's, 20)");
@@ -235,6 +239,7 @@ int main(int argc, char** argv) {
                                               s.name, cost.units, seconds_text(cost.units), default_cost_budget,
                                               seconds_text(default_cost_budget), parts));
     }
+    if (certify && coqc_version().empty()) throw std::invalid_argument("--certify: coqc was not found (install Debian's coq)");
     out = out_dir.empty() ? std::filesystem::path("reports/out") / s.name : std::filesystem::path(out_dir);
     prepare_output_directory(out);
   } catch (const std::invalid_argument& e) {
@@ -254,7 +259,7 @@ int main(int argc, char** argv) {
   std::signal(SIGTERM, record_signal);
   try {
     const auto start = std::chrono::steady_clock::now();
-    const run_record record = run(s, *paper, [&](std::size_t k, std::size_t n, const claim& c, const claim_outcome* done) {
+    run_record record = run(s, *paper, [&](std::size_t k, std::size_t n, const claim& c, const claim_outcome* done) {
       if (!done || quiet) return;
       fmt::print(stderr, "[{:>2}/{}] {:<34} {:<8} {:.2f} s\n", k + 1, n, c.id, to_string(done->result.outcome), done->seconds);
     }, [quiet](const std::string& section, double seconds) {
@@ -263,6 +268,7 @@ int main(int argc, char** argv) {
       fmt::print(stderr, "[section] {:<34} {:.2f} s\n", section, seconds);
     });
     throw_if_interrupted();
+    const std::vector<std::string> rejected = record_certificates(record, certify);
     const plot_outcome plots = write_report_files(out, record);
     for (const std::string& failure : plots.failures) fmt::print(stderr, "simpson-verify: warning: plot not drawn: {}\n", failure);
     for (const claim_outcome& o : record.outcomes) {
@@ -281,7 +287,8 @@ int main(int argc, char** argv) {
     }
     const std::string scene_text = s.name + (s.selection.empty() ? "" : ": " + s.selection);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const int code = !record.internal_errors.empty() ? 3 : all_as_expected(record) ? 0 : 1;
+    for (const std::string& id : rejected) fmt::print(stderr, "simpson-verify: {}: coqc rejected its certificate\n", id);
+    const int code = !record.internal_errors.empty() ? 3 : all_as_expected(record) && rejected.empty() ? 0 : 1;
     if (quiet) {
       fmt::print("{} (scene {}, seed {}, {:.1f} s)\n", summary_line(record), scene_text, s.seed, seconds);
       return code;

@@ -1,5 +1,6 @@
 #include <simpson/verify/report.hpp>
 
+#include <simpson/verify/certify.hpp>
 #include <simpson/verify/junit.hpp>
 
 #include <fmt/format.h>
@@ -32,7 +33,7 @@ std::vector<std::string> precision_names(const std::vector<precision>& precision
 namespace {
 
 struct verdict_counts {
-  std::size_t held = 0, errata = 0, failed = 0, disagreed = 0, machine_read = 0;
+  std::size_t held = 0, errata = 0, failed = 0, disagreed = 0, machine_read = 0, coq_exported = 0, coq_checked = 0;
   std::vector<std::string> unexpected;
 };
 
@@ -44,6 +45,8 @@ verdict_counts count_verdicts(const run_record& r) {
     c.failed += o.result.outcome == verdict::fails;
     c.disagreed += o.result.outcome == verdict::kernels_disagree;
     c.machine_read += !o.result.printed.is_null();
+    c.coq_exported += !o.result.certificate.empty();
+    c.coq_checked += o.result.evidence.contains("coq") && o.result.evidence["coq"].value("status", "") == "checked";
     if (o.result.outcome != o.expected) c.unexpected.push_back(o.checked->id);
   }
   return c;
@@ -65,6 +68,7 @@ json summary_json(const run_record& r) {
           {"held", c.held},              {"errata", c.errata},
           {"failed", c.failed},          {"kernels_disagree", c.disagreed},
           {"machine_read", c.machine_read}, {"typed", r.outcomes.size() - c.machine_read},
+          {"coq_exported", c.coq_exported}, {"coq_checked", c.coq_checked},
           {"unexpected", c.unexpected}};
 }
 
@@ -221,6 +225,38 @@ std::string timing_markdown(const run_record& r, const plot_outcome& plots) {
   return md;
 }
 
+namespace {
+
+/// The claims' Coq certificates: how many, how checked, and each claim's status or reason.
+std::string coq_markdown(const run_record& r) {
+  const verdict_counts c = count_verdicts(r);
+  if (r.outcomes.empty()) return "";
+  double seconds = 0;
+  std::string version, rows;
+  for (const claim_outcome& o : r.outcomes) {
+    const json coq = o.result.evidence.value("coq", json::object());
+    const std::string status = coq.value("status", "not recorded");
+    if (status == "checked") {
+      seconds += coq.value("seconds", 0.0);
+      version = coq.value("coq_version", "");
+    }
+    const std::string detail = coq.contains("file") ? fmt::format("[{0}]({0}), {1} lemmas", coq["file"].get<std::string>(),
+                                                                   coq.value("lemmas", json::array()).size())
+                                                    : coq.value("reason", "");
+    rows += fmt::format("| {} | {} | {} |\n", o.checked->id, status, detail);
+  }
+  std::string md = fmt::format(
+      "Coq certificates: **{} of {} claims** export one (certificates/*.v, printed from the identities GiNaC proved, "
+      "proved by `field` over Coq's reals); **{} checked by coqc{}**{}.\n\n",
+      c.coq_exported, r.outcomes.size(), c.coq_checked, version.empty() ? "" : " " + version,
+      c.coq_checked ? fmt::format(" in {:.1f} s", seconds) : std::string(" (run with --certify, or `make certify`, to check them)"));
+  md += "<details><summary>Each claim's certificate</summary>\n\n| claim | coq | certificate, or why none |\n|---|---|---|\n" + rows +
+        "\n</details>\n\n";
+  return md;
+}
+
+}  // namespace
+
 std::string report_markdown(const run_record& r) { return report_markdown(r, all_plots_drawn(r)); }
 
 std::string report_markdown(const run_record& r, const plot_outcome& plots) {
@@ -232,6 +268,7 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
   md += fmt::format("{} of {} claims read their formula from the paper's LaTeX source ({}) and prove it in GiNaC against "
                     "the derived one, beside our own kernel; the others check a statement typed from the prose.\n\n",
                     machine_read(r), r.outcomes.size(), r.paper_origin);
+  md += coq_markdown(r);
   md += r.run_scene.timing ? "Run times: [timing.md](timing.md). " : "Not timed (--no-timing). ";
   md += "The tool's version and commit, the machine, the command line and the SHA-256 of the scene and the paper are in "
         "report.json (`environment`).\n\n";
@@ -348,6 +385,9 @@ std::vector<std::string> section_file_names(const run_record& r, const plot_outc
 std::vector<std::string> report_file_names(const run_record& r, const plot_outcome& plots) {
   std::vector<std::string> names{"report.json", "report.md", "report.html", "report.junit.xml"};
   for (std::string& name : section_file_names(r, plots, false)) names.push_back(std::move(name));
+  for (const claim_outcome& o : r.outcomes) {
+    if (!o.result.certificate.empty()) names.push_back(certificate_file(o.checked->id));
+  }
   return names;
 }
 
@@ -361,7 +401,10 @@ std::vector<std::string> timing_file_names(const run_record& r, const plot_outco
 plot_outcome write_report_files(const std::filesystem::path& dir, const run_record& r) {
   return write_report_directory(dir, r.sections, [&](const plot_outcome& plots) {
     report_documents docs{report_json(r, plots), report_markdown(r, plots), "simpson-verify report: scene " + r.run_scene.name,
-                          report_junit(r), json(), ""};
+                          report_junit(r), json(), "", {}};
+    for (const claim_outcome& o : r.outcomes) {
+      if (!o.result.certificate.empty()) docs.extra_files.emplace_back(certificate_file(o.checked->id), o.result.certificate);
+    }
     if (r.run_scene.timing) {
       docs.timing = timing_json(r);
       docs.timing_markdown = timing_markdown(r, plots);

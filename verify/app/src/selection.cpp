@@ -69,6 +69,12 @@ void apply_selection(scene& s, const scene_selection& selection) {
     for (const std::string& given : *selection.claims) {
       const std::string id = trimmed(given);
       if (id.empty()) continue;
+      if (id == "all") {  // the scene's own claims
+        for (const std::string& own : s.claims) {
+          if (std::find(ids.begin(), ids.end(), own) == ids.end()) ids.push_back(own);
+        }
+        continue;
+      }
       const std::string& known = find_claim(id).id;  // throws std::invalid_argument naming an unknown id
       if (std::find(ids.begin(), ids.end(), known) == ids.end()) ids.push_back(known);
     }

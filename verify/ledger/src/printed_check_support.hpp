@@ -20,6 +20,14 @@
 
 namespace simpson::verify::detail {
 
+/// One identity the GiNaC kernel decided, every symbol free: lhs = rhs (matrices entry by entry).
+/// The identities that hold are what a claim's Coq certificate states (coq_export.hpp).
+struct proof_goal {
+  std::string name;  // which side: "printed", "derived", "core"
+  GiNaC::ex lhs, rhs;
+  bool holds = false;
+};
+
 /// What the GiNaC kernel found for one claim.
 struct printed_outcome {
   bool holds = false;         // the printed formula is the derived one, or its printed property holds
@@ -28,6 +36,7 @@ struct printed_outcome {
   std::string correction;     // the derived formula, when the printed one differs
   bool derived_holds = true;  // the derived statement holds and the core's formula is the derived one
   std::string derived;        // what was shown of the derived side
+  std::vector<proof_goal> goals;  // the identities decided, in order
 };
 
 using printed_check = std::function<printed_outcome(const paper_reading&)>;
@@ -83,6 +92,9 @@ printed_outcome both(const printed_outcome& a, const printed_outcome& b);
 /// T_h(q_j) of the derived scheme, normalised as `normalised_like` (a scheme whose q_{j+1}
 /// coefficient fixes the scale, the core's (schema-ordre-3)), on the exact solution, to O(h^order).
 GiNaC::ex truncation_series(const symbolic_derivation& d, const GiNaC::ex& normalised_like, int order);
+
+/// The derived scheme normalised as `normalised_like` (the factor truncation_series uses).
+GiNaC::ex normalised_scheme(const symbolic_derivation& d, const GiNaC::ex& normalised_like);
 
 /// A state replaced by a smooth function of time: `state` becomes function(t + shift).
 struct smooth_state {

@@ -1,5 +1,6 @@
 #include <simpson/verify/printed_checks.hpp>
 
+#include "coq_export.hpp"
 #include "printed_check_support.hpp"
 
 #include <simpson/verify/paper_reading.hpp>
@@ -51,6 +52,7 @@ const ex& printed_side(const paper_reading& r, const std::string& name, std::siz
 void compare_core(printed_outcome& o, const std::string& what, const ex& derived, const ex& core) {
   const ex d = normal_difference(core, derived);
   o.derived_holds = is_zero_expression(d);
+  o.goals.push_back({"core", core, derived, o.derived_holds});
   o.derived = o.derived_holds ? "core " + what + " − derived = 0 (normal form, all symbols free)"
                               : "core " + what + " − derived = " + text_of(d) + " ≠ 0";
 }
@@ -59,6 +61,7 @@ printed_outcome compare(const std::string& what, const ex& printed, const ex& de
   printed_outcome o;
   const ex d = normal_difference(printed, derived);
   o.holds = is_zero_expression(d);
+  o.goals.push_back({"printed", printed, derived, o.holds});
   o.proved = o.holds ? "printed " + what + " − derived = 0 (normal form, all symbols free)"
                      : "printed " + what + " − derived = " + text_of(d) + " ≠ 0";
   if (!o.holds) o.correction = "as derived: " + what + " = " + text_of(derived);
@@ -83,6 +86,8 @@ printed_outcome both(const printed_outcome& a, const printed_outcome& b) {
   o.correction = a.correction.empty() ? b.correction : b.correction.empty() ? a.correction : a.correction + "; " + b.correction;
   o.derived_holds = a.derived_holds && b.derived_holds;
   o.derived = a.derived.empty() ? b.derived : b.derived.empty() ? a.derived : a.derived + "; " + b.derived;
+  o.goals = a.goals;
+  o.goals.insert(o.goals.end(), b.goals.begin(), b.goals.end());
   return o;
 }
 
@@ -217,7 +222,12 @@ std::size_t printed_formula_claim_count() { return formula_claims().size(); }
 claim_result check_claim(const claim& c, const run_context& ctx) {
   claim_result result = c.check(ctx);
   const auto it = formula_claims().find(c.id);
-  if (!ctx.paper || it == formula_claims().end()) return result;
+  if (!ctx.paper || it == formula_claims().end()) {
+    result.certificate_missing = it == formula_claims().end()
+                                     ? "its exact proof is our kernel's alone (a sign, interval, series or prose claim): not exported yet"
+                                     : "the run has no paper to read the printed formula from";
+    return result;
+  }
   const paper_reading& reading = *ctx.paper;
   const auto start = std::chrono::steady_clock::now();
   const printed_outcome outcome = it->second.check(reading);
@@ -238,6 +248,10 @@ claim_result check_claim(const claim& c, const run_context& ctx) {
                  {"derived_holds", outcome.derived_holds}}}};
   result.printed_seconds = seconds;
   decide(result, outcome, c.id);
+  const detail::coq_export certificate = detail::coq_certificate(c.id, c.statement, outcome.goals);
+  result.certificate = certificate.text;
+  result.certificate_lemmas = certificate.lemmas;
+  result.certificate_missing = certificate.not_exported;
   return result;
 }
 

@@ -163,7 +163,9 @@ printed_outcome taylor_display(const paper_reading& r) {
 
 /// `scheme` (in q_{j-1}, q_j, q_{j+1}) on the exact solution through (p_j, q_j), q(t_j ± h) =
 /// q_j cos ωh ± p_j/(mω) sin ωh, as a series in h to O(h^order).
-ex exact_solution_series(const symbolic_derivation& d, const ex& scheme, int order) {
+/// The scheme on the exact solution through (p_j, q_j), cos ωh and sin ωh replaced by their Taylor
+/// polynomials through h^(order + 2): a Laurent polynomial in h.
+ex on_taylor_solution(const symbolic_derivation& d, const ex& scheme, int order) {
   // cos ωh and sin ωh as their Taylor polynomials through h^(order + 2): the scheme divides by h²
   // at most, so the series below is exact through h^(order - 1); GiNaC then expands a rational
   // function instead of sin and cos (several times faster).
@@ -174,8 +176,11 @@ ex exact_solution_series(const symbolic_derivation& d, const ex& scheme, int ord
     else s += (k % 4 == 1 ? 1 : -1) * term;
   }
   const ex shift = d.p_j / (d.m * d.omega) * s;
-  const ex on_solution = scheme.subs(GiNaC::lst{d.q_prev == d.q_j * c - shift, d.q_next == d.q_j * c + shift});
-  return GiNaC::expand(GiNaC::series_to_poly(GiNaC::series(on_solution, d.h == 0, order)));
+  return scheme.subs(GiNaC::lst{d.q_prev == d.q_j * c - shift, d.q_next == d.q_j * c + shift});
+}
+
+ex exact_solution_series(const symbolic_derivation& d, const ex& scheme, int order) {
+  return GiNaC::expand(GiNaC::series_to_poly(GiNaC::series(on_taylor_solution(d, scheme, order), d.h == 0, order)));
 }
 
 /// a r² + b r + c from h² × the printed scheme at q_{j-1} = 1, q_j = r, q_{j+1} = r²; c = a.
@@ -217,6 +222,15 @@ printed_outcome truncation(const paper_reading& r) {
   const ex derived = truncation_series(d, core_scheme, order);
   const ex low = GiNaC::normal(derived - printed_terms);
   o.holds = low.is_zero();
+  // The certificate: the scheme on the Taylor polynomials of the exact solution is the printed terms
+  // plus h^order times an explicit remainder (a polynomial in h when the printed terms are right).
+  if (o.holds) {
+    const ex on_taylor = on_taylor_solution(d, normalised_scheme(d, core_scheme), order);
+    const ex remainder = GiNaC::normal((on_taylor - printed_terms) / GiNaC::pow(d.h, order));
+    o.goals.push_back({"printed_taylor_remainder", on_taylor, printed_terms + GiNaC::pow(d.h, order) * remainder, true});
+  } else {
+    o.goals.push_back({"printed", derived, printed_terms, false});
+  }
   o.proved = "T_h(q_j) − printed terms = " + text_of(low) + " + O(h^" + std::to_string(order) +
              ") (GiNaC series in h of the derived scheme on the exact solution, symbolic m, omega, p_j, q_j)";
   if (!o.holds) o.correction = "as derived: T_h(q_j) = " + text_of(derived) + " + O(h^" + std::to_string(order) + ")";
@@ -231,12 +245,16 @@ printed_outcome truncation(const paper_reading& r) {
 
 }  // namespace
 
-GiNaC::ex truncation_series(const symbolic_derivation& d, const GiNaC::ex& normalised_like, int order) {
+GiNaC::ex normalised_scheme(const symbolic_derivation& d, const GiNaC::ex& normalised_like) {
   const ex derived = d.scheme(d.q_prev, d.q_j, d.q_next);
   const GiNaC::symbol& next = as_symbol(d.q_next);
   const ex scale = GiNaC::normal(GiNaC::expand(normalised_like).coeff(next, 1) / GiNaC::expand(GiNaC::numer(derived)).coeff(next, 1) *
                                  GiNaC::denom(derived));
-  return exact_solution_series(d, GiNaC::normal(derived * scale), order);
+  return GiNaC::normal(derived * scale);
+}
+
+GiNaC::ex truncation_series(const symbolic_derivation& d, const GiNaC::ex& normalised_like, int order) {
+  return exact_solution_series(d, normalised_scheme(d, normalised_like), order);
 }
 
 void add_printed_checks_section5(formula_claim_table& claims) {

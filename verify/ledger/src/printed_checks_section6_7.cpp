@@ -17,6 +17,12 @@ bool is_square(const ex& e, unsigned n) {
   return GiNaC::is_a<GiNaC::matrix>(e) && GiNaC::ex_to<GiNaC::matrix>(e).rows() == n && GiNaC::ex_to<GiNaC::matrix>(e).cols() == n;
 }
 
+/// a d − b c of a 2 × 2 matrix, as written (the statement a certificate proves, not its normal form).
+ex determinant_2x2(const ex& e) {
+  const GiNaC::matrix& M = GiNaC::ex_to<GiNaC::matrix>(e);
+  return M(0, 0) * M(1, 1) - M(0, 1) * M(1, 0);
+}
+
 printed_outcome momentum_order_3(const paper_reading& r) {
   const symbolic_derivation& d = derivation();
   return compare("p_r", printed_side(r, "moment-ordre-3"), d.momentum, simpson_momentum(parameters(d), d.q_l, d.q_r));
@@ -33,8 +39,11 @@ printed_outcome phi3_det(const paper_reading& r) {
   printed_outcome o;
   o.property = true;
   const ex derived_det = GiNaC::normal(d.phi3.determinant() - 1);
-  const ex core_det = GiNaC::normal(as_matrix(simpson_map(parameters(d))).determinant() - 1);
+  const GiNaC::matrix core_phi = as_matrix(simpson_map(parameters(d)));
+  const ex core_det = GiNaC::normal(core_phi.determinant() - 1);
   o.derived_holds = derived_det.is_zero() && core_det.is_zero();
+  o.goals.push_back({"derived", determinant_2x2(d.phi3), 1, derived_det.is_zero()});
+  o.goals.push_back({"core", determinant_2x2(core_phi), 1, core_det.is_zero()});
   o.derived = "det(derived Phi_3) − 1 = " + text_of(derived_det) + ", det(core Phi_3) − 1 = " + text_of(core_det);
   if (!is_square(printed, 2)) {
     o.proved = "the printed Phi_3 is not a 2 x 2 matrix: " + text_of(printed);
@@ -42,15 +51,19 @@ printed_outcome phi3_det(const paper_reading& r) {
   }
   const ex det = GiNaC::normal(GiNaC::ex_to<GiNaC::matrix>(printed).determinant() - 1);
   o.holds = det.is_zero();
+  o.goals.insert(o.goals.begin(), proof_goal{"printed", determinant_2x2(printed), 1, o.holds});
   o.proved = "det(printed Phi_3) − 1 = " + text_of(det) + " (normal form, symbolic m, omega, h)";
   return o;
 }
 
-/// H(Φ y) − H(y) for a quadratic form H in p, q and a 2 × 2 matrix Φ.
-ex change_under(const ex& H, const ex& phi, const ex& p, const ex& q) {
+/// H(Φ y) for a form H in p, q and a 2 × 2 matrix Φ, as written (not normalised).
+ex after_step(const ex& H, const ex& phi, const ex& p, const ex& q) {
   const GiNaC::matrix& M = GiNaC::ex_to<GiNaC::matrix>(phi);
-  return GiNaC::normal(H.subs(GiNaC::lst{p == M(0, 0) * p + M(0, 1) * q, q == M(1, 0) * p + M(1, 1) * q}) - H);
+  return H.subs(GiNaC::lst{p == M(0, 0) * p + M(0, 1) * q, q == M(1, 0) * p + M(1, 1) * q});
 }
+
+/// H(Φ y) − H(y), normalised.
+ex change_under(const ex& H, const ex& phi, const ex& p, const ex& q) { return GiNaC::normal(after_step(H, phi, p, q) - H); }
 
 printed_outcome hd_invariance(const paper_reading& r) {
   const symbolic_derivation& d = derivation();
@@ -58,8 +71,10 @@ printed_outcome hd_invariance(const paper_reading& r) {
   const ex& printed_phi = printed_side(r, "Phi3");
   printed_outcome o;
   o.property = true;
-  const ex derived_change = change_under(discrete_energy(parameters(d), phase_point<ex>{d.p, d.q}), d.phi3, d.p, d.q);
+  const ex core_H = discrete_energy(parameters(d), phase_point<ex>{d.p, d.q});
+  const ex derived_change = change_under(core_H, d.phi3, d.p, d.q);
   o.derived_holds = derived_change.is_zero();
+  o.goals.push_back({"derived", after_step(core_H, d.phi3, d.p, d.q), core_H, o.derived_holds});
   o.derived = "core H_d(derived Phi_3 y) − H_d(y) = " + text_of(derived_change);
   if (!is_square(printed_phi, 2)) {
     o.proved = "the printed Phi_3 is not a 2 x 2 matrix";
@@ -67,6 +82,7 @@ printed_outcome hd_invariance(const paper_reading& r) {
   }
   const ex change = change_under(H, printed_phi, d.p, d.q);
   o.holds = change.is_zero();
+  o.goals.insert(o.goals.begin(), proof_goal{"printed", after_step(H, printed_phi, d.p, d.q), H, o.holds});
   o.proved = "printed H_d(printed Phi_3 y) − H_d(y) = " + text_of(change) + " (normal form, symbolic m, omega, h, p, q)";
   return o;
 }

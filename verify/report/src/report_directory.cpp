@@ -169,6 +169,10 @@ plot_outcome write_report_directory(const std::filesystem::path& dir, const std:
     write_file(staging / "report.md", docs.markdown);
     write_file(staging / "report.html", render_html(docs.markdown, staging, docs.title));
     if (!docs.junit.empty()) write_file(staging / "report.junit.xml", docs.junit);
+    for (const auto& [name, content] : docs.extra_files) {
+      std::filesystem::create_directories((staging / name).parent_path());
+      write_file(staging / name, content);
+    }
     if (!docs.timing.is_null()) {
       write_file(staging / "timing.json", docs.timing.dump(2) + "\n");
       write_file(staging / "timing.md", docs.timing_markdown);
@@ -216,6 +220,14 @@ bool holds_only_a_report(const std::filesystem::path& dir) {
   }
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
     const std::string name = entry.path().filename().string();
+    if (entry.is_directory() && has_list) {
+      // A directory of the report (certificates/): every file in it listed, nothing deeper.
+      for (const auto& inner : std::filesystem::directory_iterator(entry.path())) {
+        if (!inner.is_regular_file()) return false;
+        if (std::find(listed.begin(), listed.end(), name + "/" + inner.path().filename().string()) == listed.end()) return false;
+      }
+      continue;
+    }
     if (!entry.is_regular_file()) return false;
     if (has_list) {
       if (std::find(listed.begin(), listed.end(), name) == listed.end() && name != "report.json") return false;

@@ -51,6 +51,11 @@ struct claim_result {
   json printed;
   /// Seconds the GiNaC proof of the printed formula took (reported under "timing", never in evidence).
   double printed_seconds = 0;
+  /// The Coq certificate (certificates/<id>.v), printed from the identities GiNaC proved; empty when
+  /// none is exported, `certificate_missing` then saying why.
+  std::string certificate;
+  std::vector<std::string> certificate_lemmas;
+  std::string certificate_missing;
 };
 
 struct claim {

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace simpson::verify {
@@ -29,6 +30,8 @@ struct report_documents {
   std::string junit;     // report.junit.xml (not written when empty)
   json timing;                  // timing.json (null: not written, as with --no-timing)
   std::string timing_markdown;  // timing.md, rendered to timing.html
+  /// Further files by report-relative path, at most one directory deep (certificates/<id>.v).
+  std::vector<std::pair<std::string, std::string>> extra_files;
 };
 
 /// Checks, before anything runs, that `dir` can take a report: it does not exist yet (its parent
@@ -37,7 +40,7 @@ struct report_documents {
 void prepare_output_directory(const std::filesystem::path& dir);
 
 /// True when every entry of `dir` belongs to a simpson-verify report: the files its report.json
-/// lists, or for a report written before that list existed, report.* and the section files
+/// lists (a directory when every file in it is listed as <directory>/<file>), or for a report written before that list existed, report.* and the section files
 /// (.csv, .dat, .gp, .svg, .png).
 bool holds_only_a_report(const std::filesystem::path& dir);
 

@@ -1,0 +1,26 @@
+#pragma once
+// The claims' Coq certificates: the evidence each claim records about its certificate, and their
+// check by coqc (`--certify`, `make certify`). A certificate is printed by the ledger from the
+// identities GiNaC proved (coq_export.hpp); here it is only checked and recorded.
+
+#include <simpson/verify/run.hpp>
+
+#include <string>
+
+namespace simpson::verify {
+
+/// The first line of `coqc --version`'s version ("8.16.1"), or empty when coqc is not found.
+std::string coqc_version();
+
+/// The report-relative file of a claim's certificate: certificates/<id>.v with '-' as '_' (coqc
+/// takes the file's name as a module name, which must be an identifier).
+std::string certificate_file(const std::string& claim_id);
+
+/// Records evidence "coq" for every claim: "not exported" with the reason, or "exported" with the
+/// file and its lemmas. With `check`, each certificate is written to a temporary directory and
+/// checked by coqc: "checked" with the Coq version and the seconds taken, or "failed" with coqc's
+/// first lines. Throws std::invalid_argument when `check` is asked and coqc is not found.
+/// Returns the ids whose certificate coqc rejected.
+std::vector<std::string> record_certificates(run_record& r, bool check);
+
+}  // namespace simpson::verify

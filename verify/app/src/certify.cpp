@@ -1,0 +1,106 @@
+// Coq certificates: evidence and the check by coqc (certify.hpp).
+
+#include <simpson/verify/certify.hpp>
+
+#include <simpson/verify/interruption.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace simpson::verify {
+namespace {
+
+/// A command's output (stdout and stderr) and exit status.
+struct command_result {
+  int status = -1;
+  std::string output;
+};
+
+command_result run_command(const std::string& command) {
+  command_result out;
+  std::FILE* pipe = ::popen(("(" + command + ") 2>&1").c_str(), "r");  // the shell's own messages too
+  if (pipe == nullptr) return out;
+  char buffer[4096];
+  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) out.output += buffer;
+  out.status = ::pclose(pipe);
+  return out;
+}
+
+/// The first `lines` lines of a text.
+std::string first_lines(const std::string& text, int lines) {
+  std::istringstream in(text);
+  std::string line, out;
+  for (int k = 0; k < lines && std::getline(in, line); ++k) out += (out.empty() ? "" : "\n") + line;
+  return out;
+}
+
+}  // namespace
+
+std::string coqc_version() {
+  const command_result r = run_command("coqc --version");
+  if (r.status != 0) return "";
+  const std::string marker = "version ";
+  const std::size_t at = r.output.find(marker);
+  if (at == std::string::npos) return "";
+  std::string v = r.output.substr(at + marker.size());
+  return v.substr(0, v.find_first_of(" \n"));
+}
+
+std::string certificate_file(const std::string& claim_id) {
+  // coqc takes a file's name as its module name, an identifier: '-' becomes '_'.
+  std::string module = claim_id;
+  for (char& c : module) c = c == '-' ? '_' : c;
+  return "certificates/" + module + ".v";
+}
+
+std::vector<std::string> record_certificates(run_record& r, bool check) {
+  std::vector<std::string> rejected;
+  std::string version;
+  std::filesystem::path work;
+  if (check) {
+    version = coqc_version();
+    if (version.empty()) throw std::invalid_argument("--certify: coqc was not found (install Debian's coq)");
+    char pattern[] = "/tmp/simpson-certify-XXXXXX";
+    if (::mkdtemp(pattern) == nullptr) throw std::runtime_error("--certify: cannot create a temporary directory");
+    work = pattern;
+  }
+  for (claim_outcome& o : r.outcomes) {
+    claim_result& result = o.result;
+    if (result.certificate.empty()) {
+      result.evidence["coq"] = {{"status", "not exported"},
+                                {"reason", result.certificate_missing.empty() ? "no identity to state" : result.certificate_missing}};
+      continue;
+    }
+    json coq{{"status", "exported"}, {"file", certificate_file(o.checked->id)}, {"lemmas", result.certificate_lemmas}};
+    if (check) {
+      throw_if_interrupted();
+      const std::filesystem::path file = work / std::filesystem::path(certificate_file(o.checked->id)).filename();
+      std::ofstream(file) << result.certificate;
+      const auto start = std::chrono::steady_clock::now();
+      const command_result done = run_command("cd '" + work.string() + "' && coqc -q '" + file.filename().string() + "'");
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      if (done.status == 0) {
+        coq["status"] = "checked";
+        coq["coq_version"] = version;
+        coq["seconds"] = seconds;
+      } else {
+        coq["status"] = "failed";
+        coq["coqc_output"] = first_lines(done.output, 12);
+        rejected.push_back(o.checked->id);
+      }
+    }
+    result.evidence["coq"] = coq;
+  }
+  if (check) {
+    std::error_code ignored;
+    std::filesystem::remove_all(work, ignored);
+  }
+  return rejected;
+}
+
+}  // namespace simpson::verify

@@ -1,0 +1,31 @@
+#pragma once
+// A claim's Coq certificate, printed from the identities its GiNaC kernel decided (proof_goal): the
+// statement is never typed by hand. Each identity that holds becomes a lemma over the reals,
+//   forall <symbols> : R, 0 < m -> 0 < h -> <each denominator and its factors> <> 0 -> lhs = rhs,
+// proved by `field` (its side conditions closed by the hypotheses). Only Coq's standard library
+// (Reals, Field, Lra, Psatz); no admit, no axiom beyond the library's real numbers. An identity that
+// does not hold (a printed formula that differs from the derived one) is never exported as a proof.
+
+#include "printed_check_support.hpp"
+
+#include <string>
+#include <vector>
+
+namespace simpson::verify::detail {
+
+/// The certificate's source, or why there is none (`text` empty).
+struct coq_export {
+  std::string text;
+  std::vector<std::string> lemmas;  // their names, in order
+  std::string not_exported;         // the reason, when nothing could be exported
+};
+
+/// The certificate of `claim_id` from the goals GiNaC decided. Goals that do not hold are left out
+/// (their names listed in a comment); a goal with a term Coq's field tactic cannot state (a function
+/// such as V, a non-integer power, a floating-point number) makes the whole export fail with the reason.
+coq_export coq_certificate(const std::string& claim_id, const std::string& statement, const std::vector<proof_goal>& goals);
+
+/// A Coq identifier from a claim id or a symbol name: letters, digits and '_'.
+std::string coq_identifier(const std::string& name);
+
+}  // namespace simpson::verify::detail
