@@ -232,26 +232,35 @@ std::string coq_markdown(const run_record& r) {
   const verdict_counts c = count_verdicts(r);
   if (r.outcomes.empty()) return "";
   double seconds = 0;
-  std::string version, rows;
+  std::string version;
   for (const claim_outcome& o : r.outcomes) {
     const json coq = o.result.evidence.value("coq", json::object());
-    const std::string status = coq.value("status", "not recorded");
-    if (status == "checked") {
+    if (coq.value("status", "") == "checked") {
       seconds += coq.value("seconds", 0.0);
       version = coq.value("coq_version", "");
     }
-    const std::string detail = coq.contains("file") ? fmt::format("[{0}]({0}), {1} lemmas", coq["file"].get<std::string>(),
-                                                                   coq.value("lemmas", json::array()).size())
-                                                    : coq.value("reason", "");
-    rows += fmt::format("| {} | {} | {} |\n", o.checked->id, status, detail);
   }
   std::string md = fmt::format(
       "Coq certificates: **{} of {} claims** export one (certificates/*.v, printed from the identities GiNaC proved, "
       "proved by `field` over Coq's reals); **{} checked by coqc{}**{}.\n\n",
       c.coq_exported, r.outcomes.size(), c.coq_checked, version.empty() ? "" : " " + version,
-      c.coq_checked ? fmt::format(" in {:.1f} s", seconds) : std::string(" (run with --certify, or `make certify`, to check them)"));
-  md += "<details><summary>Each claim's certificate</summary>\n\n| claim | coq | certificate, or why none |\n|---|---|---|\n" + rows +
-        "\n</details>\n\n";
+      c.coq_checked ? fmt::format(" in {:.1f} s", seconds) : std::string(" (run with `--certify`, or `make certify`, to check them)"));
+  md += "Each claim's certificate, or why it has none: the section Coq certificates, before the evidence.\n\n";
+  return md;
+}
+
+/// Each claim's certificate: its file and lemmas, or why there is none.
+std::string coq_table_markdown(const run_record& r) {
+  if (r.outcomes.empty()) return "";
+  std::string md = "\n## Coq certificates\n\n| claim | coq | certificate, or why none |\n|---|---|---|\n";
+  for (const claim_outcome& o : r.outcomes) {
+    const json coq = o.result.evidence.value("coq", json::object());
+    const std::size_t lemmas = coq.value("lemmas", json::array()).size();
+    const std::string detail = coq.contains("file") ? fmt::format("[{0}]({0}), {1} {2}", coq["file"].get<std::string>(), lemmas,
+                                                                   lemmas == 1 ? "lemma" : "lemmas")
+                                                    : coq.value("reason", "");
+    md += fmt::format("| {} | {} | {} |\n", o.checked->id, coq.value("status", "not recorded"), detail);
+  }
   return md;
 }
 
@@ -330,6 +339,7 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
     }
   }
 
+  md += coq_table_markdown(r);
   md += "\n## Evidence\n\n";
   for (const claim_outcome& o : r.outcomes) {
     const claim& c = *o.checked;
