@@ -1,0 +1,108 @@
+(* Certificate of claim derivation-phi3: (Not one printed sentence: the derivation of Sections 4 to 6 checked as one claim.) Simpson's rule on the quadratic interpolant gives L_h; dL_h/dq_m = 0 gives q_m and L_h^r; the discrete Euler-Lagrange equation and p_r = dL_h^r/dq_r follow; eliminating q_{j-1} gives Phi_3 as printed.
+   Written by simpson-verify from the expressions its GiNaC kernel proved; check with coqc. *)
+Require Import Reals Field Lra Psatz.
+Open Scope R_scope.
+
+(* field leaves side conditions X <> 0 in its own normal form: each is a hypothesis up to ring,
+   a positive hypothesis, or a power of one. *)
+Ltac nonzero :=
+  first [ assumption
+        | match goal with
+          | [ H : ?Y <> 0 |- ?X <> 0 ] => replace X with Y by ring; exact H
+          | [ H : 0 < ?Y |- ?X <> 0 ] => replace X with Y by ring; apply Rgt_not_eq; exact H
+          end
+        | apply pow_nonzero; nonzero ].
+
+Lemma derivation_phi3_printed_11 :
+  forall h omega : R,
+  0 < h ->
+  (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) <> 0 ->
+  ((1/2) * (((-1) * (h ^ 4) * (omega ^ 4)) + (-48) + (22 * (h ^ 2) * (omega ^ 2))) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24))))
+  = ((1/2) * (((-1) * (h ^ 4) * (omega ^ 4)) + (-48) + (22 * (h ^ 2) * (omega ^ 2))) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)))).
+Proof.
+  intros.
+  field; repeat split; nonzero.
+Qed.
+
+Lemma derivation_phi3_printed_12 :
+  forall h m omega : R,
+  0 < m ->
+  0 < h ->
+  (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) <> 0 ->
+  ((1/12) * (((-1) * (h ^ 2) * (omega ^ 2)) + 12) * (((-1) * (h ^ 2) * (omega ^ 2)) + 24) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24))) * (omega ^ 2) * h * m)
+  = ((-1/12) * (((-1) * (h ^ 5) * (omega ^ 6) * m) + ((-288) * (omega ^ 2) * h * m) + (36 * (h ^ 3) * (omega ^ 4) * m)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)))).
+Proof.
+  intros.
+  field; repeat split; nonzero.
+Qed.
+
+Lemma derivation_phi3_printed_21 :
+  forall h m omega : R,
+  0 < m ->
+  0 < h ->
+  (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) <> 0 ->
+  m <> 0 ->
+  ((-3) * (((-1) * (h ^ 2) * (omega ^ 2)) + 8) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24))) * (/ m) * h)
+  = ((-3) * (((-1) * (h ^ 3) * (omega ^ 2)) + (8 * h)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24))) * (/ m)).
+Proof.
+  intros.
+  field; repeat split; nonzero.
+Qed.
+
+Lemma derivation_phi3_printed_22 :
+  forall h omega : R,
+  0 < h ->
+  (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) <> 0 ->
+  ((1/2) * (((-1) * (h ^ 4) * (omega ^ 4)) + (-48) + (22 * (h ^ 2) * (omega ^ 2))) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24))))
+  = ((1/2) * (((-1) * (h ^ 4) * (omega ^ 4)) + (-48) + (22 * (h ^ 2) * (omega ^ 2))) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)))).
+Proof.
+  intros.
+  field; repeat split; nonzero.
+Qed.
+
+Lemma derivation_phi3_core_11 :
+  forall h omega : R,
+  0 < h ->
+  (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) <> 0 ->
+  ((1/2) * (((-1) * (h ^ 4) * (omega ^ 4)) + (-48) + (22 * (h ^ 2) * (omega ^ 2))) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24))))
+  = ((1/2) * (((-1) * (h ^ 4) * (omega ^ 4)) + (-48) + (22 * (h ^ 2) * (omega ^ 2))) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)))).
+Proof.
+  intros.
+  field; repeat split; nonzero.
+Qed.
+
+Lemma derivation_phi3_core_12 :
+  forall h m omega : R,
+  0 < m ->
+  0 < h ->
+  (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) <> 0 ->
+  ((1/12) * (((-1) * (h ^ 2) * (omega ^ 2)) + 12) * (((-1) * (h ^ 2) * (omega ^ 2)) + 24) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24))) * (omega ^ 2) * h * m)
+  = ((-1/12) * (((-1) * (h ^ 5) * (omega ^ 6) * m) + ((-288) * (omega ^ 2) * h * m) + (36 * (h ^ 3) * (omega ^ 4) * m)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)))).
+Proof.
+  intros.
+  field; repeat split; nonzero.
+Qed.
+
+Lemma derivation_phi3_core_21 :
+  forall h m omega : R,
+  0 < m ->
+  0 < h ->
+  (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) <> 0 ->
+  m <> 0 ->
+  ((-3) * (((-1) * (h ^ 2) * (omega ^ 2)) + 8) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24))) * (/ m) * h)
+  = ((-3) * (((-1) * (h ^ 3) * (omega ^ 2)) + (8 * h)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24))) * (/ m)).
+Proof.
+  intros.
+  field; repeat split; nonzero.
+Qed.
+
+Lemma derivation_phi3_core_22 :
+  forall h omega : R,
+  0 < h ->
+  (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) <> 0 ->
+  ((1/2) * (((-1) * (h ^ 4) * (omega ^ 4)) + (-48) + (22 * (h ^ 2) * (omega ^ 2))) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24))))
+  = ((1/2) * (((-1) * (h ^ 4) * (omega ^ 4)) + (-48) + (22 * (h ^ 2) * (omega ^ 2))) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)))).
+Proof.
+  intros.
+  field; repeat split; nonzero.
+Qed.

@@ -1,0 +1,36 @@
+(* Certificate of claim gr-minus-gl: g_r - g_l = (4/h)(q_l - 2 q_m + q_r).
+   Written by simpson-verify from the expressions its GiNaC kernel proved; check with coqc. *)
+Require Import Reals Field Lra Psatz.
+Open Scope R_scope.
+
+(* field leaves side conditions X <> 0 in its own normal form: each is a hypothesis up to ring,
+   a positive hypothesis, or a power of one. *)
+Ltac nonzero :=
+  first [ assumption
+        | match goal with
+          | [ H : ?Y <> 0 |- ?X <> 0 ] => replace X with Y by ring; exact H
+          | [ H : 0 < ?Y |- ?X <> 0 ] => replace X with Y by ring; apply Rgt_not_eq; exact H
+          end
+        | apply pow_nonzero; nonzero ].
+
+Lemma gr_minus_gl_printed :
+  forall h q_l q_m q_r : R,
+  0 < h ->
+  h <> 0 ->
+  ((-4) * (((-1) * q_l) + ((-1) * q_r) + (2 * q_m)) * (/ h))
+  = (((-1) * (((-1) * q_l) + ((-3) * q_r) + (4 * q_m)) * (/ h)) + ((-1) * (((-1) * q_r) + ((-3) * q_l) + (4 * q_m)) * (/ h))).
+Proof.
+  intros.
+  field; repeat split; nonzero.
+Qed.
+
+Lemma gr_minus_gl_core :
+  forall h q_l q_m q_r : R,
+  0 < h ->
+  h <> 0 ->
+  (((-1) * (((-1) * q_l) + ((-3) * q_r) + (4 * q_m)) * (/ h)) + ((-1) * (((-1) * q_r) + ((-3) * q_l) + (4 * q_m)) * (/ h)))
+  = (((-1) * (((-1) * q_l) + ((-3) * q_r) + (4 * q_m)) * (/ h)) + ((-1) * (((-1) * q_r) + ((-3) * q_l) + (4 * q_m)) * (/ h))).
+Proof.
+  intros.
+  field; repeat split; nonzero.
+Qed.
