@@ -5,6 +5,8 @@
 #include <simpson/verify/printed_checks.hpp>
 #include <simpson/verify/run.hpp>
 
+#include <simpson/verify/certify.hpp>
+
 #include <chrono>
 #include <cstdlib>
 #include <exception>
@@ -60,6 +62,7 @@ run_record run(const scene& s, const paper_reading& paper, const progress_callba
       break;
     }
   }
+  record_certificates(r, false);  // each claim's evidence "coq": exported or why not (checked by --certify)
   const experiment_settings& e = s.experiments;
   const auto section = [&](auto&& compute) {
     throw_if_interrupted();
