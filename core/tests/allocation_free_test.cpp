@@ -71,13 +71,14 @@ TEST(AllocationFree, StepsInDoubleAllocateNothing) {
   const auto simpson = [&] { y = simpson_nonlinear_step(1.0, 0.1, V, y).state; };
   const auto brouwer = [&] { simpson_brouwer_step_compensated(k, 1.0, V, z); };
   const auto iterated = [&] { y = iterate(phi, y, 100, [](std::size_t, const phase_point<double>&) {}); };
-  for (const auto& [name, body] : {std::pair<const char*, std::function<void()>>{"partitioned_runge_kutta_step", linear},
-                                   {"prk_nonlinear_step", nonlinear_prk},
-                                   {"simpson_nonlinear_step", simpson},
-                                   {"simpson_brouwer_step_compensated", brouwer},
-                                   {"iterate", iterated}}) {
+  for (const auto& step : {std::pair<const char*, std::function<void()>>{"partitioned_runge_kutta_step", linear},
+                           {"prk_nonlinear_step", nonlinear_prk},
+                           {"simpson_nonlinear_step", simpson},
+                           {"simpson_brouwer_step_compensated", brouwer},
+                           {"iterate", iterated}}) {
+    const std::function<void()>& body = step.second;
     body();
-    EXPECT_EQ(allocations_of([&] { for (int j = 0; j < 100; ++j) body(); }), 0) << name;
+    EXPECT_EQ(allocations_of([&body] { for (int j = 0; j < 100; ++j) body(); }), 0) << step.first;
   }
 }
 
