@@ -58,18 +58,16 @@ class coq_printer {
 
   /// A power with an integer exponent; a sum base in canonical sign, `sign` taking (−1)^n when flipped.
   std::string power_text(const ex& e, GiNaC::numeric& sign) {
-    {
-      const ex exponent = e.op(1);
-      if (!exponent.info(GiNaC::info_flags::integer)) throw unsupported("a non-integer power: " + to_text(e));
-      const long n = GiNaC::ex_to<GiNaC::numeric>(exponent).to_long();
-      GiNaC::numeric flip(1);
-      const std::string base = GiNaC::is_a<GiNaC::add>(e.op(0)) ? signed_sum_text(e.op(0), flip) : term(e.op(0));
-      if (flip != 1 && n % 2 != 0) sign = -sign;
-      const std::string raised = std::labs(n) == 1 ? base : "(" + base + " ^ " + std::to_string(std::labs(n)) + ")";
-      if (n > 0) return raised;
-      assume_nonzero(e.op(0));
-      return "(/ " + raised + ")";
-    }
+    const ex exponent = e.op(1);
+    if (!exponent.info(GiNaC::info_flags::integer)) throw unsupported("a non-integer power: " + to_text(e));
+    const long n = GiNaC::ex_to<GiNaC::numeric>(exponent).to_long();
+    GiNaC::numeric flip(1);
+    const std::string base = GiNaC::is_a<GiNaC::add>(e.op(0)) ? signed_sum_text(e.op(0), flip) : term(e.op(0));
+    if (flip != 1 && n % 2 != 0) sign = -sign;
+    const std::string raised = std::labs(n) == 1 ? base : "(" + base + " ^ " + std::to_string(std::labs(n)) + ")";
+    if (n > 0) return raised;
+    assume_nonzero(e.op(0));
+    return "(/ " + raised + ")";
   }
 
   /// A sum's text, or its negation's (each term negated: no expansion, the same structure).
