@@ -58,6 +58,19 @@ std::string certificate_file(const std::string& claim_id) {
   return "certificates/" + module + ".v";
 }
 
+std::string refutation_file(const std::string& claim_id) {
+  const std::string proved = certificate_file(claim_id);
+  return proved.substr(0, proved.size() - 2) + "_refuted.v";
+}
+
+std::vector<certificate_document> certificate_documents(const claim_outcome& o) {
+  std::vector<certificate_document> out;
+  const claim_result& r = o.result;
+  if (!r.certificate.empty()) out.push_back({certificate_file(o.checked->id), &r.certificate, &r.certificate_lemmas});
+  if (!r.refutation.empty()) out.push_back({refutation_file(o.checked->id), &r.refutation, &r.refutation_lemmas});
+  return out;
+}
+
 std::vector<std::string> record_certificates(run_record& r, bool check) {
   std::vector<std::string> rejected;
   std::string version;
@@ -71,26 +84,39 @@ std::vector<std::string> record_certificates(run_record& r, bool check) {
   }
   for (claim_outcome& o : r.outcomes) {
     claim_result& result = o.result;
-    if (result.certificate.empty()) {
+    const std::vector<certificate_document> documents = certificate_documents(o);
+    if (documents.empty()) {
       result.evidence["coq"] = {{"status", "not exported"},
                                 {"reason", result.certificate_missing.empty() ? "no identity to state" : result.certificate_missing}};
       continue;
     }
-    json coq{{"status", "exported"}, {"file", certificate_file(o.checked->id)}, {"lemmas", result.certificate_lemmas}};
+    json coq{{"status", "exported"}};
+    if (!result.certificate.empty()) {
+      coq["file"] = documents.front().file;
+      coq["lemmas"] = result.certificate_lemmas;
+    } else {
+      coq["reason"] = result.certificate_missing;  // why nothing is proved: only refuted
+    }
+    if (!result.refutation.empty()) coq["refutation"] = {{"file", documents.back().file}, {"lemmas", result.refutation_lemmas}};
     if (check) {
-      throw_if_interrupted();
-      const std::filesystem::path file = work / std::filesystem::path(certificate_file(o.checked->id)).filename();
-      std::ofstream(file) << result.certificate;
-      const auto start = std::chrono::steady_clock::now();
-      const command_result done = run_command("cd '" + work.string() + "' && coqc -q '" + file.filename().string() + "'");
-      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      if (done.status == 0) {
+      double seconds = 0;
+      std::string failure;
+      for (const certificate_document& d : documents) {
+        throw_if_interrupted();
+        const std::filesystem::path file = work / std::filesystem::path(d.file).filename();
+        std::ofstream(file) << *d.text;
+        const auto start = std::chrono::steady_clock::now();
+        const command_result done = run_command("cd '" + work.string() + "' && coqc -q '" + file.filename().string() + "'");
+        seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (done.status != 0 && failure.empty()) failure = d.file + ": " + first_lines(done.output, 12);
+      }
+      if (failure.empty()) {
         coq["status"] = "checked";
         coq["coq_version"] = version;
         coq["seconds"] = seconds;
       } else {
         coq["status"] = "failed";
-        coq["coqc_output"] = first_lines(done.output, 12);
+        coq["coqc_output"] = failure;
         rejected.push_back(o.checked->id);
       }
     }

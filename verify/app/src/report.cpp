@@ -45,7 +45,7 @@ verdict_counts count_verdicts(const run_record& r) {
     c.failed += o.result.outcome == verdict::fails;
     c.disagreed += o.result.outcome == verdict::kernels_disagree;
     c.machine_read += !o.result.printed.is_null();
-    c.coq_exported += !o.result.certificate.empty();
+    c.coq_exported += !certificate_documents(o).empty();
     c.coq_checked += o.result.evidence.contains("coq") && o.result.evidence["coq"].value("status", "") == "checked";
     if (o.result.outcome != o.expected) c.unexpected.push_back(o.checked->id);
   }
@@ -255,10 +255,12 @@ std::string coq_table_markdown(const run_record& r) {
   std::string md = "\n## Coq certificates\n\n| claim | coq | certificate, or why none |\n|---|---|---|\n";
   for (const claim_outcome& o : r.outcomes) {
     const json coq = o.result.evidence.value("coq", json::object());
-    const std::size_t lemmas = coq.value("lemmas", json::array()).size();
-    const std::string detail = coq.contains("file") ? fmt::format("[{0}]({0}), {1} {2}", coq["file"].get<std::string>(), lemmas,
-                                                                   lemmas == 1 ? "lemma" : "lemmas")
-                                                    : coq.value("reason", "");
+    const auto file_text = [](const json& on, const char* what) {
+      const std::size_t lemmas = on.value("lemmas", json::array()).size();
+      return fmt::format("[{0}]({0}), {1} {2}{3}", on["file"].get<std::string>(), lemmas, what, lemmas == 1 ? "" : "s");
+    };
+    std::string detail = coq.contains("file") ? file_text(coq, "lemma") : coq.value("reason", "");
+    if (coq.contains("refutation")) detail += "; printed statement refuted: " + file_text(coq["refutation"], "negation");
     md += fmt::format("| {} | {} | {} |\n", o.checked->id, coq.value("status", "not recorded"), detail);
   }
   return md;
@@ -396,7 +398,7 @@ std::vector<std::string> report_file_names(const run_record& r, const plot_outco
   std::vector<std::string> names{"report.json", "report.md", "report.html", "report.junit.xml"};
   for (std::string& name : section_file_names(r, plots, false)) names.push_back(std::move(name));
   for (const claim_outcome& o : r.outcomes) {
-    if (!o.result.certificate.empty()) names.push_back(certificate_file(o.checked->id));
+    for (const certificate_document& d : certificate_documents(o)) names.push_back(d.file);
   }
   return names;
 }
@@ -413,7 +415,7 @@ plot_outcome write_report_files(const std::filesystem::path& dir, const run_reco
     report_documents docs{report_json(r, plots), report_markdown(r, plots), "simpson-verify report: scene " + r.run_scene.name,
                           report_junit(r), json(), "", {}};
     for (const claim_outcome& o : r.outcomes) {
-      if (!o.result.certificate.empty()) docs.extra_files.emplace_back(certificate_file(o.checked->id), o.result.certificate);
+      for (const certificate_document& d : certificate_documents(o)) docs.extra_files.emplace_back(d.file, *d.text);
     }
     if (r.run_scene.timing) {
       docs.timing = timing_json(r);

@@ -7,9 +7,11 @@
 #include <algorithm>
 #include <cctype>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 
 namespace simpson::verify::detail {
 namespace {
@@ -28,7 +30,7 @@ class coq_printer {
     if (GiNaC::is_a<GiNaC::numeric>(e)) return number(GiNaC::ex_to<GiNaC::numeric>(e));
     if (GiNaC::is_a<GiNaC::symbol>(e)) {
       const std::string name = coq_identifier(GiNaC::ex_to<GiNaC::symbol>(e).get_name());
-      symbols_.insert(name);
+      symbols_.emplace(name, e);
       return name;
     }
     // GiNaC orders the operands of a sum or a product, and picks the sign of a sum inside a product,
@@ -102,11 +104,27 @@ class coq_printer {
     return out + ")";
   }
 
-  const std::set<std::string>& symbols() const { return symbols_; }
-  /// The nonzero hypotheses, sorted.
+  /// A rational number as a Coq term (negative and fractional ones in parentheses).
+  static std::string number(const GiNaC::numeric& v) {
+    if (!v.is_rational()) throw unsupported("the number " + to_text(v));
+    const std::string num = to_text(v.numer()), den = to_text(v.denom());
+    const std::string text = v.is_integer() ? num : num + "/" + den;
+    return v.is_integer() && v >= 0 ? text : "(" + text + ")";
+  }
+
+  /// The symbols by their Coq names (sorted).
+  const std::map<std::string, ex>& symbols() const { return symbols_; }
+  /// The nonzero hypotheses, sorted by text.
   std::vector<std::string> nonzero() const {
-    std::vector<std::string> out = nonzero_;
+    std::vector<std::string> out;
+    for (const auto& [text, e] : nonzero_) out.push_back(text);
     std::sort(out.begin(), out.end());
+    return out;
+  }
+  /// The expressions the nonzero hypotheses are about.
+  std::vector<ex> nonzero_expressions() const {
+    std::vector<ex> out;
+    for (const auto& [text, e] : nonzero_) out.push_back(e);
     return out;
   }
 
@@ -124,12 +142,6 @@ class coq_printer {
     return out.str();
   }
 
-  static std::string number(const GiNaC::numeric& v) {
-    if (!v.is_rational()) throw unsupported("the number " + to_text(v));
-    const std::string num = to_text(v.numer()), den = to_text(v.denom());
-    const std::string text = v.is_integer() ? num : num + "/" + den;
-    return v.is_integer() && v >= 0 ? text : "(" + text + ")";
-  }
 
   /// A denominator: it and each of its factors is nonzero (field splits products into factors).
   void assume_nonzero(const ex& base) {
@@ -151,34 +163,118 @@ class coq_printer {
     GiNaC::numeric sign(1);  // X <> 0 and −X <> 0 say the same: the canonical sign
     const std::string text = (GiNaC::is_a<GiNaC::add>(e) ? inner.signed_sum_text(e, sign) : inner.term(e)) + " <> 0";
     symbols_.insert(inner.symbols_.begin(), inner.symbols_.end());
-    for (const std::string& n : inner.nonzero_) push_unique(n);
-    push_unique(text);
+    for (const auto& [n, inner_e] : inner.nonzero_) push_unique(n, inner_e);
+    push_unique(text, e);
   }
 
-  void push_unique(const std::string& text) {
-    if (std::find(nonzero_.begin(), nonzero_.end(), text) == nonzero_.end()) nonzero_.push_back(text);
+  void push_unique(const std::string& text, const ex& e) {
+    const auto same = [&text](const std::pair<std::string, ex>& n) { return n.first == text; };
+    if (std::find_if(nonzero_.begin(), nonzero_.end(), same) == nonzero_.end()) nonzero_.emplace_back(text, e);
   }
 
-  std::set<std::string> symbols_;
-  std::vector<std::string> nonzero_;
+  std::map<std::string, ex> symbols_;
+  std::vector<std::pair<std::string, ex>> nonzero_;
 };
 
-/// One lemma: lhs = rhs for scalars.
-std::string lemma(const std::string& name, const ex& lhs, const ex& rhs) {
+/// One identity as Coq states it: what it quantifies over and assumes, and its two sides.
+struct coq_statement {
+  std::map<std::string, ex> symbols;  // by Coq name, sorted
+  std::vector<ex> nonzero;            // the expressions assumed nonzero
+  std::string premises;               // "forall ... : R," and the hypotheses, each on its own line
+  std::string left, right;
+};
+
+coq_statement stated(const ex& lhs, const ex& rhs) {
   coq_printer p;
-  const std::string left = p.term(lhs), right = p.term(rhs);
-  std::string out = "Lemma " + name + " :";
-  if (!p.symbols().empty()) {
-    out += "\n  forall";
-    for (const std::string& s : p.symbols()) out += " " + s;
-    out += " : R,";
+  coq_statement s;
+  s.left = p.term(lhs);
+  s.right = p.term(rhs);
+  s.symbols = p.symbols();
+  s.nonzero = p.nonzero_expressions();
+  if (!s.symbols.empty()) {
+    s.premises += "\n  forall";
+    for (const auto& [name, symbol] : s.symbols) s.premises += " " + name;
+    s.premises += " : R,";
   }
   for (const char* positive : {"m", "h"}) {
-    if (p.symbols().count(positive)) out += "\n  0 < " + std::string(positive) + " ->";
+    if (s.symbols.count(positive)) s.premises += "\n  0 < " + std::string(positive) + " ->";
   }
-  for (const std::string& h : p.nonzero()) out += "\n  " + h + " ->";
-  out += "\n  " + left + "\n  = " + right + ".\n";
-  out += "Proof.\n  intros.\n  field; repeat split; nonzero.\nQed.\n";
+  for (const std::string& h : p.nonzero()) s.premises += "\n  " + h + " ->";
+  return s;
+}
+
+/// One lemma: lhs = rhs for scalars.
+std::string lemma(const std::string& name, const coq_statement& s) {
+  return "Lemma " + name + " :" + s.premises + "\n  " + s.left + "\n  = " + s.right +
+         ".\nProof.\n  intros.\n  field; repeat split; nonzero.\nQed.\n";
+}
+
+/// `text` with each identifier in `values` replaced by its value: the statement at one point, as
+/// Coq's instantiation of the quantifiers writes it.
+std::string instantiated(const std::string& text, const std::map<std::string, std::string>& values) {
+  std::string out;
+  for (std::size_t k = 0; k < text.size();) {
+    const auto identifier_char = [&](std::size_t at) { return std::isalnum(static_cast<unsigned char>(text[at])) || text[at] == '_'; };
+    if (!identifier_char(k)) {
+      out += text[k++];
+      continue;
+    }
+    std::size_t end = k;
+    while (end < text.size() && identifier_char(end)) ++end;
+    const std::string token = text.substr(k, end - k);
+    const auto it = values.find(token);
+    out += it == values.end() ? token : it->second;
+    k = end;
+  }
+  return out;
+}
+
+/// A point where the hypotheses hold (every symbol positive, every assumed denominator nonzero) and
+/// lhs − rhs is a nonzero rational, with that difference; nullopt when none of the tried points is one.
+std::optional<std::pair<GiNaC::exmap, GiNaC::numeric>> counterexample(const ex& lhs, const ex& rhs, const coq_statement& s) {
+  static const int values[] = {2, 3, 5, 7, 11, 13, 17, 19, 23, 29};
+  constexpr int count = sizeof values / sizeof values[0];
+  for (int attempt = 0; attempt < 4 * count; ++attempt) {
+    GiNaC::exmap point;
+    int i = 0;
+    for (const auto& [name, symbol] : s.symbols) point[symbol] = values[(i++ + attempt) % count] + attempt / count;
+    try {
+      bool premises_hold = true;
+      for (const ex& e : s.nonzero) premises_hold = premises_hold && !GiNaC::normal(e.subs(point)).is_zero();
+      const ex difference = GiNaC::normal((lhs - rhs).subs(point));
+      if (premises_hold && GiNaC::is_a<GiNaC::numeric>(difference) && !difference.is_zero() &&
+          GiNaC::ex_to<GiNaC::numeric>(difference).is_rational()) {
+        return std::make_pair(point, GiNaC::ex_to<GiNaC::numeric>(difference));
+      }
+    } catch (const std::exception&) {  // a denominator vanishes at this point: try the next
+    }
+  }
+  return std::nullopt;
+}
+
+/// The negation of lhs = rhs (with its hypotheses), shown at a counterexample point: both sides
+/// there differ by a nonzero rational (field), yet the statement would make them equal.
+std::optional<std::string> refutation_lemma(const std::string& name, const ex& lhs, const ex& rhs) {
+  const coq_statement s = stated(lhs, rhs);
+  const auto found = counterexample(lhs, rhs, s);
+  if (!found) return std::nullopt;
+  std::map<std::string, std::string> values;
+  std::string arguments, where;
+  for (const auto& [coq_name, symbol] : s.symbols) {
+    const std::string value = "(" + coq_printer::number(GiNaC::ex_to<GiNaC::numeric>(found->first.at(symbol))) + ")";
+    values[coq_name] = value;
+    arguments += " " + value;
+    where += (where.empty() ? "" : ", ") + coq_name + " = " + value;
+  }
+  const std::string left = instantiated(s.left, values), right = instantiated(s.right, values);
+  const std::string difference = coq_printer::number(found->second);
+  std::string out = "Lemma " + name + " :\n  ~ (" + s.premises.substr(s.premises.empty() ? 0 : 3) +
+                    (s.premises.empty() ? "" : "\n  ") + s.left + "\n  = " + s.right + ").\n";
+  out += "Proof.\n  intro H.\n";
+  out += "  (* At " + (where.empty() ? std::string("this closed statement") : where) + " the two sides differ by " + difference + ". *)\n";
+  out += "  assert (D : " + left + " - " + right + " = " + difference + ") by (field; premise).\n";
+  out += "  assert (E : " + left + " = " + right + ") by (apply (H" + arguments + "); premise).\n";
+  out += "  rewrite (Rminus_diag_eq _ _ E) in D.\n  lra.\nQed.\n";
   return out;
 }
 
@@ -191,63 +287,118 @@ std::string coq_identifier(const std::string& name) {
   return out;
 }
 
+namespace {
+
+/// A comment's text: "(*" and "*)" inside it would end or nest it.
+std::string comment_text(std::string said) {
+  for (const std::string& token : {std::string("(*"), std::string("*)")}) {
+    for (std::size_t at = said.find(token); at != std::string::npos; at = said.find(token, at)) said.replace(at, 2, token == "(*" ? "( *" : "* )");
+  }
+  return said;
+}
+
+/// The entries of an identity: one for scalars, one per entry (named _ij) for matrices.
+std::vector<std::tuple<std::string, ex, ex>> entries(const std::string& base, const proof_goal& g) {
+  const ex l = g.lhs.evalm(), r = g.rhs.evalm();
+  if (GiNaC::is_a<GiNaC::matrix>(l) != GiNaC::is_a<GiNaC::matrix>(r)) throw unsupported("a matrix equated with a scalar");
+  if (!GiNaC::is_a<GiNaC::matrix>(l)) return {{base, l, r}};
+  const GiNaC::matrix& L = GiNaC::ex_to<GiNaC::matrix>(l);
+  const GiNaC::matrix& R = GiNaC::ex_to<GiNaC::matrix>(r);
+  if (L.rows() != R.rows() || L.cols() != R.cols()) throw unsupported("matrices of different shapes");
+  std::vector<std::tuple<std::string, ex, ex>> out;
+  for (unsigned i = 0; i < L.rows(); ++i) {
+    for (unsigned j = 0; j < L.cols(); ++j) out.emplace_back(base + "_" + std::to_string(i + 1) + std::to_string(j + 1), L(i, j), R(i, j));
+  }
+  return out;
+}
+
+const char* const nonzero_tactic =
+    "(* field leaves side conditions X <> 0 in its own normal form: each is a hypothesis up to ring,\n"
+    "   a positive hypothesis, or a power of one. *)\n"
+    "Ltac nonzero :=\n"
+    "  first [ assumption\n"
+    "        | match goal with\n"
+    "          | [ H : ?Y <> 0 |- ?X <> 0 ] => replace X with Y by ring; exact H\n"
+    "          | [ H : 0 < ?Y |- ?X <> 0 ] => replace X with Y by ring; apply Rgt_not_eq; exact H\n"
+    "          end\n"
+    "        | apply pow_nonzero; nonzero ].\n";
+
+/// The refutations' tactic: a hypothesis at the counterexample point is a numeric fact.
+const char* const premise_tactic =
+    "(* At the counterexample point every hypothesis is a numeric fact (0 < 3, 24 + 2 ^ 2 * 3 ^ 2 <> 0). *)\n"
+    "Ltac premise := first [ lra | nra ].\n";
+
+}  // namespace
+
 coq_export coq_certificate(const std::string& claim_id, const std::string& statement, const std::vector<proof_goal>& goals) {
   coq_export out;
-  std::string body, left_out;
+  const std::string module = coq_identifier(claim_id);
+  std::string body, refuted_body;
+  std::vector<std::string> refuted, restated, unrefuted;
   std::map<std::string, int> uses;
   try {
     for (const proof_goal& g : goals) {
-      std::string base = coq_identifier(claim_id) + "_" + coq_identifier(g.name);
+      std::string base = module + "_" + coq_identifier(g.name);
       const int seen = uses[base]++;
       if (seen > 0) base += "_" + std::to_string(seen + 1);  // a claim that checks two formulas: printed, printed_2
       if (!g.holds) {
-        left_out += (left_out.empty() ? "" : ", ") + g.name;
-        continue;
-      }
-      const ex l = g.lhs.evalm(), r = g.rhs.evalm();
-      if (GiNaC::is_a<GiNaC::matrix>(l) != GiNaC::is_a<GiNaC::matrix>(r)) throw unsupported("a matrix equated with a scalar");
-      if (GiNaC::is_a<GiNaC::matrix>(l)) {
-        const GiNaC::matrix& L = GiNaC::ex_to<GiNaC::matrix>(l);
-        const GiNaC::matrix& R = GiNaC::ex_to<GiNaC::matrix>(r);
-        if (L.rows() != R.rows() || L.cols() != R.cols()) throw unsupported("matrices of different shapes");
-        for (unsigned i = 0; i < L.rows(); ++i) {
-          for (unsigned j = 0; j < L.cols(); ++j) {
-            const std::string name = base + "_" + std::to_string(i + 1) + std::to_string(j + 1);
-            body += "\n" + lemma(name, L(i, j), R(i, j));
-            out.lemmas.push_back(name);
+        // The first entry that differs at a point where the hypotheses hold is the counterexample.
+        std::optional<std::string> negation;
+        for (const auto& [name, l, r] : entries(base, g)) {
+          if (GiNaC::normal(l - r).is_zero()) continue;
+          negation = refutation_lemma(name + "_refuted", l, r);
+          if (negation) {
+            refuted_body += "\n" + *negation;
+            out.refutation_lemmas.push_back(name + "_refuted");
+            break;
           }
         }
-      } else {
-        body += "\n" + lemma(base, l, r);
-        out.lemmas.push_back(base);
+        (negation ? refuted : unrefuted).push_back(g.name);
+        continue;
+      }
+      for (const auto& [name, l, r] : entries(base, g)) {
+        const coq_statement s = stated(l, r);
+        if (s.left == s.right) {
+          restated.push_back(name);
+          continue;
+        }
+        body += "\n" + lemma(name, s);
+        out.lemmas.push_back(name);
       }
     }
   } catch (const unsupported& e) {
     out.lemmas.clear();
+    out.refutation_lemmas.clear();
     out.not_exported = std::string("Coq's field tactic cannot state it: ") + e.what();
     return out;
   }
+  const auto listed = [](const std::vector<std::string>& names) {
+    std::string text;
+    for (const std::string& n : names) text += (text.empty() ? "" : ", ") + n;
+    return text;
+  };
+  const std::string header = "Require Import Reals Field Lra Psatz.\nOpen Scope R_scope.\n\n";
+  const std::string said = comment_text(statement);
+  if (!out.refutation_lemmas.empty()) {
+    out.refutation = "(* Refutation of claim " + claim_id + " as printed: " + said +
+                     "\n   The printed identity, for all values under its hypotheses, is false: each lemma is its negation,\n"
+                     "   shown at one point where the two sides differ. Written by simpson-verify from the expressions\n"
+                     "   its GiNaC kernel compared; check with coqc. *)\n" +
+                     header + premise_tactic + refuted_body;
+  }
   if (out.lemmas.empty()) {
-    out.not_exported = left_out.empty() ? "no identity decided by GiNaC" : "no identity holds (" + left_out + " refuted; negations are not exported yet)";
+    out.not_exported = !restated.empty() ? "each identity's two sides are one expression once GiNaC has evaluated them (" + listed(restated) +
+                                               "): a lemma X = X would check nothing"
+                       : !refuted.empty() ? "no identity holds: " + listed(refuted) + " refuted (its negation is exported)"
+                                          : "no identity decided by GiNaC";
     return out;
   }
-  std::string said = statement;  // a comment must not close early or nest
-  for (const std::string& token : {std::string("(*"), std::string("*)")}) {
-    for (std::size_t at = said.find(token); at != std::string::npos; at = said.find(token, at)) said.replace(at, 2, token == "(*" ? "( *" : "* )");
-  }
   out.text = "(* Certificate of claim " + claim_id + ": " + said +
-             "\n   Written by simpson-verify from the expressions its GiNaC kernel proved; check with coqc. *)\n"
-             "Require Import Reals Field Lra Psatz.\nOpen Scope R_scope.\n\n"
-             "(* field leaves side conditions X <> 0 in its own normal form: each is a hypothesis up to ring,\n"
-             "   a positive hypothesis, or a power of one. *)\n"
-             "Ltac nonzero :=\n"
-             "  first [ assumption\n"
-             "        | match goal with\n"
-             "          | [ H : ?Y <> 0 |- ?X <> 0 ] => replace X with Y by ring; exact H\n"
-             "          | [ H : 0 < ?Y |- ?X <> 0 ] => replace X with Y by ring; apply Rgt_not_eq; exact H\n"
-             "          end\n"
-             "        | apply pow_nonzero; nonzero ].\n" +
-             (left_out.empty() ? "" : "(* Not stated here (GiNaC refuted them): " + left_out + ". *)\n") + body;
+             "\n   Written by simpson-verify from the expressions its GiNaC kernel proved; check with coqc. *)\n" + header + nonzero_tactic +
+             (refuted.empty() ? "" : "(* Refuted by GiNaC, negated in the claim's _refuted.v: " + listed(refuted) + ". *)\n") +
+             (unrefuted.empty() ? "" : "(* Refuted by GiNaC, with no counterexample point found among those tried: " + listed(unrefuted) + ". *)\n") +
+             (restated.empty() ? "" : "(* Not stated: " + listed(restated) + ", whose two sides GiNaC evaluates to one expression (X = X checks nothing). *)\n") +
+             body;
   return out;
 }
 

@@ -4,7 +4,10 @@
 //   forall <symbols> : R, 0 < m -> 0 < h -> <each denominator and its factors> <> 0 -> lhs = rhs,
 // proved by `field` (its side conditions closed by the hypotheses). Only Coq's standard library
 // (Reals, Field, Lra, Psatz); no admit, no axiom beyond the library's real numbers. An identity that
-// does not hold (a printed formula that differs from the derived one) is never exported as a proof.
+// does not hold (a printed formula that differs from the derived one) is never exported as a proof:
+// its negation is, ~ (forall ..., lhs = rhs), shown at a point where GiNaC finds the two sides differ.
+// An identity whose two sides GiNaC evaluates to the same expression is not stated either: X = X
+// would check nothing.
 
 #include "printed_check_support.hpp"
 
@@ -18,10 +21,13 @@ struct coq_export {
   std::string text;
   std::vector<std::string> lemmas;  // their names, in order
   std::string not_exported;         // the reason, when nothing could be exported
+  /// The refuted identities' negations (an erratum's printed statement), a file of their own.
+  std::string refutation;
+  std::vector<std::string> refutation_lemmas;
 };
 
-/// The certificate of `claim_id` from the goals GiNaC decided. Goals that do not hold are left out
-/// (their names listed in a comment); a goal with a term Coq's field tactic cannot state (a function
+/// The certificate of `claim_id` from the goals GiNaC decided, and the negations of those that do
+/// not hold (`refutation`); a goal with a term Coq's field tactic cannot state (a function
 /// such as V, a non-integer power, a floating-point number) makes the whole export fail with the reason.
 coq_export coq_certificate(const std::string& claim_id, const std::string& statement, const std::vector<proof_goal>& goals);
 

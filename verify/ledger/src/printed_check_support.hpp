@@ -75,6 +75,18 @@ bool is_zero_expression(const GiNaC::ex& e);
 /// The printed side `side` (index into formula_location::sides) of formula `name`.
 const GiNaC::ex& printed_side(const paper_reading& r, const std::string& name, std::size_t side = 0);
 
+/// The goal lhs = rhs, decided by normal(lhs − rhs) = 0 (matrices entry by entry).
+proof_goal decided(const std::string& name, const GiNaC::ex& lhs, const GiNaC::ex& rhs);
+
+/// Adds `g` to `o`'s goals; a goal about the printed formula that fails makes it fail as printed.
+void add_goal(printed_outcome& o, const proof_goal& g, bool about_printed);
+
+/// a d − b c of a 2 × 2 matrix, as written (the statement a certificate proves, not its normal form).
+GiNaC::ex determinant_2x2(const GiNaC::ex& e);
+
+/// H(Φ y) for a form H in p, q and a 2 × 2 matrix Φ, as written (not normalised).
+GiNaC::ex after_step(const GiNaC::ex& H, const GiNaC::ex& phi, const GiNaC::ex& p, const GiNaC::ex& q);
+
 /// printed − derived = 0 decides holds (else erratum, the derived one its correction), and
 /// core − derived = 0 decides derived_holds.
 printed_outcome compare(const std::string& what, const GiNaC::ex& printed, const GiNaC::ex& derived, const GiNaC::ex& core);

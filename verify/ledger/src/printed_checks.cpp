@@ -49,6 +49,29 @@ bool is_zero_expression(const ex& e) {
 
 const ex& printed_side(const paper_reading& r, const std::string& name, std::size_t side) { return r.at(name).sides.at(side); }
 
+proof_goal decided(const std::string& name, const ex& lhs, const ex& rhs) {
+  return {name, lhs, rhs, is_zero_expression(normal_difference(lhs, rhs))};
+}
+
+void add_goal(printed_outcome& o, const proof_goal& g, bool about_printed) {
+  o.goals.push_back(g);
+  if (about_printed) {
+    o.holds = o.holds && g.holds;
+  } else {
+    o.derived_holds = o.derived_holds && g.holds;
+  }
+}
+
+ex determinant_2x2(const ex& e) {
+  const GiNaC::matrix& M = GiNaC::ex_to<GiNaC::matrix>(e);
+  return M(0, 0) * M(1, 1) - M(0, 1) * M(1, 0);
+}
+
+ex after_step(const ex& H, const ex& phi, const ex& p, const ex& q) {
+  const GiNaC::matrix& M = GiNaC::ex_to<GiNaC::matrix>(phi);
+  return H.subs(GiNaC::lst{p == M(0, 0) * p + M(0, 1) * q, q == M(1, 0) * p + M(1, 1) * q});
+}
+
 void compare_core(printed_outcome& o, const std::string& what, const ex& derived, const ex& core) {
   const ex d = normal_difference(core, derived);
   o.derived_holds = is_zero_expression(d);
@@ -252,6 +275,8 @@ claim_result check_claim(const claim& c, const run_context& ctx) {
   result.certificate = certificate.text;
   result.certificate_lemmas = certificate.lemmas;
   result.certificate_missing = certificate.not_exported;
+  result.refutation = certificate.refutation;
+  result.refutation_lemmas = certificate.refutation_lemmas;
   return result;
 }
 

@@ -97,6 +97,7 @@ printed_outcome newmark_system(const paper_reading& r) {
   for (const char* name : {"systeme-dynamique-discret-ordre-2#0", "systeme-dynamique-discret-ordre-2#1"}) {
     const ex gap = GiNaC::normal((printed_side(r, name, 0) - printed_side(r, name, 1)).subs(momenta));
     o.holds = o.holds && gap.is_zero();
+    o.goals.push_back({"printed", printed_side(r, name, 0).subs(momenta), printed_side(r, name, 1).subs(momenta), gap.is_zero()});
     o.proved += std::string(o.proved.empty() ? "" : "; ") + "printed " + name + ", left − right with the derived momenta = " + text_of(gap);
   }
   if (!o.holds) o.correction = "as derived: p_{j+1} = " + text_of(newmark_derivation().momentum_right) + ", p_j = " + text_of(newmark_derivation().momentum_left);
@@ -107,24 +108,41 @@ printed_outcome newmark_system(const paper_reading& r) {
   return o;
 }
 
+/// Φ's defining property, what a certificate states (Φ = derived is one normal form for GiNaC):
+/// with q_{j+1} from Φ's second row, the momenta of L_d are p_j and Φ's first row.
+void add_momenta_goals(printed_outcome& o, const std::string& who, const ex& phi, bool printed) {
+  if (!GiNaC::is_a<GiNaC::matrix>(phi) || GiNaC::ex_to<GiNaC::matrix>(phi).rows() != 2 || GiNaC::ex_to<GiNaC::matrix>(phi).cols() != 2) return;
+  const symbolic_derivation& d = derivation();
+  const GiNaC::matrix& M = GiNaC::ex_to<GiNaC::matrix>(phi);
+  const ex p_next = M(0, 0) * d.p_j + M(0, 1) * d.q_j, q_next = M(1, 0) * d.p_j + M(1, 1) * d.q_j;
+  add_goal(o, decided(who + "_momentum_left", newmark_derivation().momentum_left.subs(d.q_next == q_next), d.p_j), printed);
+  add_goal(o, decided(who + "_momentum_right", newmark_derivation().momentum_right.subs(d.q_next == q_next), p_next), printed);
+}
+
 printed_outcome newmark_matrix(const paper_reading& r) {
   const symbolic_derivation& d = derivation();
-  return compare("Phi", printed_side(r, "matrice-symplectique-ordre-2"), newmark_derivation().newmark_phi, as_matrix(newmark_map(parameters(d))));
+  const GiNaC::matrix core = as_matrix(newmark_map(parameters(d)));
+  printed_outcome o = compare("Phi", printed_side(r, "matrice-symplectique-ordre-2"), newmark_derivation().newmark_phi, core);
+  add_momenta_goals(o, "printed", printed_side(r, "matrice-symplectique-ordre-2"), true);
+  add_momenta_goals(o, "core", core, false);
+  return o;
 }
 
 printed_outcome newmark_det(const paper_reading& r) {
   const ex& phi = printed_side(r, "matrice-symplectique-ordre-2");
   printed_outcome o;
   o.property = true;
-  if (!GiNaC::is_a<GiNaC::matrix>(phi)) {
-    o.proved = "the printed Phi is not a matrix";
+  if (!GiNaC::is_a<GiNaC::matrix>(phi) || GiNaC::ex_to<GiNaC::matrix>(phi).rows() != 2 || GiNaC::ex_to<GiNaC::matrix>(phi).cols() != 2) {
+    o.proved = "the printed Phi is not a 2 x 2 matrix";
     return o;
   }
   const ex det = GiNaC::normal(GiNaC::ex_to<GiNaC::matrix>(phi).determinant() - 1);
   o.holds = det.is_zero();
+  o.goals.push_back({"printed", determinant_2x2(phi), 1, o.holds});
   o.proved = "det(printed Phi) − 1 = " + text_of(det);
   const ex derived_det = GiNaC::normal(newmark_derivation().newmark_phi.determinant() - 1);
   o.derived_holds = derived_det.is_zero();
+  o.goals.push_back({"derived", determinant_2x2(newmark_derivation().newmark_phi), 1, o.derived_holds});
   o.derived = "det(derived Phi) − 1 = " + text_of(derived_det);
   return o;
 }
@@ -140,7 +158,7 @@ printed_outcome newmark_energy(const paper_reading& r) {
   const ex change = GiNaC::normal(
       H.subs(GiNaC::lst{d.p_j == phi(0, 0) * d.p_j + phi(0, 1) * d.q_j, d.q_j == phi(1, 0) * d.p_j + phi(1, 1) * d.q_j}) - H);
   o.property = !change.is_zero() && o.holds;
-  o.holds = o.holds && change.is_zero();
+  add_goal(o, {"printed_conservation", after_step(H, phi, d.p_j, d.q_j), H, change.is_zero()}, true);
   o.proved += "; printed H_j(printed Phi y) − H_j(y) = " + text_of(change);
   return o;
 }
@@ -172,17 +190,35 @@ printed_outcome interpolant_nodal(const paper_reading& r) {
   return o;
 }
 
+/// A derivative formula of q_l, q_m, q_r (the values at t = 0, h/2, h) is exact on quadratics: on
+/// the values of c0 + c1 t + c2 t², as written, it is the derivative c1 + 2 c2 t at `at`. That is
+/// what a certificate states (formula = derived is one normal form for GiNaC).
+proof_goal exact_on_quadratics(const std::string& name, const ex& formula, const ex& at) {
+  const symbolic_derivation& d = derivation();
+  const GiNaC::symbol c0("c0"), c1("c1"), c2("c2");
+  const auto P = [&](const ex& t) { return c0 + c1 * t + c2 * t * t; };
+  return decided(name, formula.subs(GiNaC::lst{d.q_l == P(0), d.q_m == P(d.h / 2), d.q_r == P(d.h)}), c1 + 2 * c2 * at);
+}
+
 printed_outcome gear_derivatives(const paper_reading& r) {
   const symbolic_derivation& d = derivation();
-  return both(compare("g_l", printed_side(r, "derivees-gear#0"), d.g_l, gear_left(d.q_l, d.q_m, d.q_r, d.h)),
-              compare("g_r", printed_side(r, "derivees-gear#1"), d.g_r, gear_right(d.q_l, d.q_m, d.q_r, d.h)));
+  printed_outcome o = both(compare("g_l", printed_side(r, "derivees-gear#0"), d.g_l, gear_left(d.q_l, d.q_m, d.q_r, d.h)),
+                           compare("g_r", printed_side(r, "derivees-gear#1"), d.g_r, gear_right(d.q_l, d.q_m, d.q_r, d.h)));
+  add_goal(o, exact_on_quadratics("printed_exact", printed_side(r, "derivees-gear#0"), 0), true);
+  add_goal(o, exact_on_quadratics("printed_exact", printed_side(r, "derivees-gear#1"), d.h), true);
+  add_goal(o, exact_on_quadratics("core_exact", gear_left(d.q_l, d.q_m, d.q_r, d.h), 0), false);
+  add_goal(o, exact_on_quadratics("core_exact", gear_right(d.q_l, d.q_m, d.q_r, d.h), d.h), false);
+  return o;
 }
 
 printed_outcome centred_derivative_check(const paper_reading& r) {
   const symbolic_derivation& d = derivation();
   const ex core = centred_derivative(d.q_l, d.q_r, d.h);
-  return both(compare("(g_l + g_r)/2", with_gear(printed_side(r, "derivee-centree", 0), d), d.g_m, core),
-              compare("g_m", printed_side(r, "derivee-centree", 1), d.g_m, core));
+  printed_outcome o = both(compare("(g_l + g_r)/2", with_gear(printed_side(r, "derivee-centree", 0), d), d.g_m, core),
+                           compare("g_m", printed_side(r, "derivee-centree", 1), d.g_m, core));
+  add_goal(o, exact_on_quadratics("printed_exact", printed_side(r, "derivee-centree", 1), d.h / 2), true);
+  add_goal(o, exact_on_quadratics("core_exact", core, d.h / 2), false);
+  return o;
 }
 
 printed_outcome interpolant_derivative(const paper_reading& r) {

@@ -20,9 +20,16 @@ const GiNaC::symbol& as_symbol(const ex& e) { return GiNaC::ex_to<GiNaC::symbol>
 printed_outcome gear_partials(const paper_reading& r) {
   const symbolic_derivation& d = derivation();
   const GiNaC::symbol& qm = as_symbol(d.q_m);
-  return both(both(compare("dg_l/dq_m", printed_side(r, "dg_l/dq_m"), d.g_l.diff(qm), gear_left(d.q_l, d.q_m, d.q_r, d.h).diff(qm)),
-                   compare("dg_m/dq_m", printed_side(r, "dg_m/dq_m"), d.g_m.diff(qm), centred_derivative(d.q_l, d.q_r, d.h).diff(qm))),
-              compare("dg_r/dq_m", printed_side(r, "dg_r/dq_m"), d.g_r.diff(qm), gear_right(d.q_l, d.q_m, d.q_r, d.h).diff(qm)));
+  printed_outcome o =
+      both(both(compare("dg_l/dq_m", printed_side(r, "dg_l/dq_m"), d.g_l.diff(qm), gear_left(d.q_l, d.q_m, d.q_r, d.h).diff(qm)),
+                compare("dg_m/dq_m", printed_side(r, "dg_m/dq_m"), d.g_m.diff(qm), centred_derivative(d.q_l, d.q_r, d.h).diff(qm))),
+           compare("dg_r/dq_m", printed_side(r, "dg_r/dq_m"), d.g_r.diff(qm), gear_right(d.q_l, d.q_m, d.q_r, d.h).diff(qm)));
+  // What a certificate states (partial = derived is one normal form for GiNaC): each Gear formula is
+  // affine in q_m, so its increment when q_m moves by e is the printed partial times e.
+  const GiNaC::symbol e("e");
+  const std::pair<const char*, ex> formulas[] = {{"dg_l/dq_m", d.g_l}, {"dg_m/dq_m", d.g_m}, {"dg_r/dq_m", d.g_r}};
+  for (const auto& [name, g] : formulas) add_goal(o, decided("printed_increment", g.subs(d.q_m == d.q_m + e) - g, printed_side(r, name) * e), true);
+  return o;
 }
 
 printed_outcome lh_dqm(const paper_reading& r) {
@@ -46,8 +53,10 @@ printed_outcome same_equation(const std::string& what, const ex& printed, const 
   o.proved = factor ? "derived " + what + " = (" + text_of(*factor) + ") x printed " + what
                     : "printed " + what + " is not a multiple of the derived one";
   if (!o.holds) o.correction = "as derived: " + text_of(derived) + " = 0";
+  if (factor) o.goals.push_back(decided("printed", derived, *factor * printed));
   const auto core_factor = equation_factor(core, derived, unknowns);
   o.derived_holds = core_factor.has_value();
+  if (core_factor) o.goals.push_back(decided("core", derived, *core_factor * core));
   o.derived = core_factor ? "derived " + what + " = (" + text_of(*core_factor) + ") x core " + what
                           : "the core's " + what + " is not a multiple of the derived one";
   return o;
@@ -81,7 +90,14 @@ printed_outcome scheme_consistency(const paper_reading& r) {
 
 printed_outcome qm_harmonic(const paper_reading& r) {
   const symbolic_derivation& d = derivation();
-  return compare("q_m", printed_side(r, "qm-oscillateur-harmonique"), d.harmonic_qm, harmonic_internal_node(parameters(d), d.q_l, d.q_r));
+  const ex core = harmonic_internal_node(parameters(d), d.q_l, d.q_r);
+  printed_outcome o = compare("q_m", printed_side(r, "qm-oscillateur-harmonique"), d.harmonic_qm, core);
+  // What a certificate states (q_m = derived is one normal form for GiNaC): q_m solves the internal
+  // equation dL_h/dq_m = 0 of the harmonic L_h.
+  const ex internal = d.simpson_lagrangian([&d](const ex& x) { return d.harmonic_V(x); }).diff(as_symbol(d.q_m));
+  add_goal(o, decided("printed_internal", internal.subs(d.q_m == printed_side(r, "qm-oscillateur-harmonique")), 0), true);
+  add_goal(o, decided("core_internal", internal.subs(d.q_m == core), 0), false);
+  return o;
 }
 
 /// 0 < omega h < bound: the derived q_m is defined while its denominator, a polynomial in h that is
@@ -192,6 +208,10 @@ printed_outcome characteristic_equation(const paper_reading& r) {
   const ex a = polynomial.coeff(rr, 2), b = polynomial.coeff(rr, 1), c = polynomial.coeff(rr, 0);
   const auto k = characteristic_polynomial(ex(d.omega * d.omega * d.h * d.h));
   printed_outcome o = both(compare("a", printed_side(r, "a"), a, k.a), compare("b", printed_side(r, "b"), b, k.b));
+  // What a certificate states (a, b = derived is one normal form for GiNaC): h² × the scheme on the
+  // geometric sequence 1, r, r², as written, is a r² + b r + a with the printed a and b.
+  add_goal(o, decided("printed_polynomial", d.h * d.h * printed_side(r, "schema-ordre-3").subs(GiNaC::lst{d.q_prev == 1, d.q_j == rr, d.q_next == rr * rr}),
+                      printed_side(r, "a") * rr * rr + printed_side(r, "b") * rr + printed_side(r, "a")), true);
   const bool symmetric = GiNaC::normal(a - c).is_zero();
   o.derived += symmetric ? "; c = a" : "; c ≠ a: " + text_of(c);
   o.derived_holds = o.derived_holds && symmetric;

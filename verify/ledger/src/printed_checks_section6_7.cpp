@@ -17,12 +17,6 @@ bool is_square(const ex& e, unsigned n) {
   return GiNaC::is_a<GiNaC::matrix>(e) && GiNaC::ex_to<GiNaC::matrix>(e).rows() == n && GiNaC::ex_to<GiNaC::matrix>(e).cols() == n;
 }
 
-/// a d − b c of a 2 × 2 matrix, as written (the statement a certificate proves, not its normal form).
-ex determinant_2x2(const ex& e) {
-  const GiNaC::matrix& M = GiNaC::ex_to<GiNaC::matrix>(e);
-  return M(0, 0) * M(1, 1) - M(0, 1) * M(1, 0);
-}
-
 printed_outcome momentum_order_3(const paper_reading& r) {
   const symbolic_derivation& d = derivation();
   return compare("p_r", printed_side(r, "moment-ordre-3"), d.momentum, simpson_momentum(parameters(d), d.q_l, d.q_r));
@@ -54,12 +48,6 @@ printed_outcome phi3_det(const paper_reading& r) {
   o.goals.insert(o.goals.begin(), proof_goal{"printed", determinant_2x2(printed), 1, o.holds});
   o.proved = "det(printed Phi_3) − 1 = " + text_of(det) + " (normal form, symbolic m, omega, h)";
   return o;
-}
-
-/// H(Φ y) for a form H in p, q and a 2 × 2 matrix Φ, as written (not normalised).
-ex after_step(const ex& H, const ex& phi, const ex& p, const ex& q) {
-  const GiNaC::matrix& M = GiNaC::ex_to<GiNaC::matrix>(phi);
-  return H.subs(GiNaC::lst{p == M(0, 0) * p + M(0, 1) * q, q == M(1, 0) * p + M(1, 1) * q});
 }
 
 /// H(Φ y) − H(y), normalised.
@@ -113,13 +101,29 @@ GiNaC::matrix core_gamma() {
 
 printed_outcome gamma_system(const paper_reading& r) {
   const GiNaC::matrix v{{sym("xi")}, {sym("eta")}, {sym("zeta")}};
-  return compare("Gamma (xi, eta, zeta)^T", printed_side(r, "Gamma"), derived_gamma().mul(v), core_gamma().mul(v));
+  printed_outcome o = compare("Gamma (xi, eta, zeta)^T", printed_side(r, "Gamma"), derived_gamma().mul(v), core_gamma().mul(v));
+  // What a certificate states (core = derived is one normal form for GiNaC): Q(Φy) − Q(y), as
+  // written, is p², pq, q² times the rows of the core's Γ (ξ, η, ζ)ᵀ.
+  const ex a = sym("alpha"), b = sym("beta"), c = sym("gamma"), dd = sym("delta"), p = sym("p"), q = sym("q");
+  const auto Q = [&](const ex& pp, const ex& qq) { return sym("xi") * pp * pp / 2 + sym("eta") * pp * qq + sym("zeta") * qq * qq / 2; };
+  const GiNaC::matrix gv = core_gamma().mul(v);
+  add_goal(o, decided("core_expansion", Q(a * p + b * q, c * p + dd * q) - Q(p, q), p * p * gv(0, 0) + p * q * gv(1, 0) + q * q * gv(2, 0)), false);
+  return o;
+}
+
+/// The determinant of a 3 × 3 matrix by its first row's cofactors, as written.
+ex determinant_3x3(const GiNaC::matrix& M) {
+  return M(0, 0) * (M(1, 1) * M(2, 2) - M(1, 2) * M(2, 1)) - M(0, 1) * (M(1, 0) * M(2, 2) - M(1, 2) * M(2, 0)) +
+         M(0, 2) * (M(1, 0) * M(2, 1) - M(1, 1) * M(2, 0));
 }
 
 printed_outcome gamma_determinant(const paper_reading& r) {
   const ex derived = GiNaC::factor(GiNaC::normal(derived_gamma().determinant()));
   const one_step_matrix<ex> phi{sym("alpha"), sym("beta"), sym("gamma"), sym("delta")};
   printed_outcome o = compare("det Gamma", printed_side(r, "det Gamma"), derived, invariance_system_determinant(phi));
+  // What a certificate states (core = derived is one normal form for GiNaC): the cofactor expansion
+  // of the core's Γ is the core's factored determinant.
+  add_goal(o, decided("core_cofactors", determinant_3x3(core_gamma()), invariance_system_determinant(phi)), false);
   if (!o.holds) {
     const ex ratio = GiNaC::normal(derived / printed_side(r, "det Gamma"));
     o.proved += "; derived / printed = " + text_of(ratio);
@@ -136,7 +140,9 @@ printed_outcome gamma_singular(const paper_reading& r) {
   o.property = true;
   o.holds = printed.is_zero();
   o.proved = "printed det Gamma at delta = (1 + beta gamma)/alpha: " + text_of(printed);
+  o.goals.push_back({"printed", printed_side(r, "det Gamma").subs(on_unit), 0, o.holds});
   o.derived_holds = derived.is_zero();
+  o.goals.push_back({"derived", determinant_3x3(derived_gamma()).subs(on_unit), 0, o.derived_holds});
   o.derived = "derived det Gamma at delta = (1 + beta gamma)/alpha: " + text_of(derived);
   return o;
 }
@@ -150,6 +156,7 @@ printed_outcome conserved_form(const paper_reading& r) {
   printed_outcome o;
   o.property = true;
   o.holds = change.is_zero();
+  o.goals.push_back({"printed", after_step(printed, phi, sym("p"), sym("q")), printed, o.holds});
   o.proved = "printed Q_c(Phi y) − Q_c(y) with delta = alpha, gamma = (alpha^2 - 1)/beta: " + text_of(change);
   const auto c = conserved_form_coefficients(one_step_matrix<ex>{a, b, (a * a - 1) / b, a});
   const GiNaC::matrix coefficients{{c[0]}, {c[1]}, {c[2]}};
@@ -174,12 +181,14 @@ printed_outcome hd_proportional(const paper_reading& r) {
   const ex Qc = printed_side(r, "Q_c").subs(GiNaC::lst{sym("gamma") == M(1, 0), sym("beta") == M(0, 1)});
   const auto factor = equation_factor(Qc, printed_side(r, "hamiltonien-discret"), {sym("p"), sym("q")});
   o.holds = factor.has_value();
+  if (factor) o.goals.push_back(decided("printed", printed_side(r, "hamiltonien-discret"), *factor * Qc));
   o.proved = factor ? "printed H_d = (" + text_of(*factor) + ") x printed Q_c of the printed Phi_3"
                     : "printed H_d is not a multiple of printed Q_c of the printed Phi_3";
   const symbolic_derivation& d = derivation();
   const ex Qc_derived = d.phi3(1, 0) * d.p * d.p / 2 - d.phi3(0, 1) * d.q * d.q / 2;
   const auto core = equation_factor(Qc_derived, discrete_energy(parameters(d), phase_point<ex>{d.p, d.q}), {d.p, d.q});
   o.derived_holds = core.has_value();
+  if (core) o.goals.push_back(decided("core", discrete_energy(parameters(d), phase_point<ex>{d.p, d.q}), *core * Qc_derived));
   o.derived = core ? "core H_d = (" + text_of(*core) + ") x Q_c of the derived Phi_3" : "core H_d is not a multiple of Q_c of the derived Phi_3";
   return o;
 }

@@ -16,10 +16,23 @@ std::string coqc_version();
 /// takes the file's name as a module name, which must be an identifier).
 std::string certificate_file(const std::string& claim_id);
 
+/// The report-relative file of the negations of a claim's refuted identities: certificates/<id>_refuted.v.
+std::string refutation_file(const std::string& claim_id);
+
+/// One Coq file of a claim: the identities proved, or the refuted ones' negations.
+struct certificate_document {
+  std::string file;  // report-relative
+  const std::string* text;
+  const std::vector<std::string>* lemmas;
+};
+
+/// A claim's Coq files (none, one or two), in that order.
+std::vector<certificate_document> certificate_documents(const claim_outcome& o);
+
 /// Records evidence "coq" for every claim: "not exported" with the reason, or "exported" with the
-/// file and its lemmas. With `check`, each certificate is written to a temporary directory and
-/// checked by coqc: "checked" with the Coq version and the seconds taken, or "failed" with coqc's
-/// first lines. Throws std::invalid_argument when `check` is asked and coqc is not found.
+/// file and its lemmas (and "refutation": the negations' file and lemmas). With `check`, each file is
+/// written to a temporary directory and checked by coqc: "checked" with the Coq version and the
+/// seconds taken, or "failed" with coqc's first lines. Throws std::invalid_argument when `check` is asked and coqc is not found.
 /// Returns the ids whose certificate coqc rejected.
 std::vector<std::string> record_certificates(run_record& r, bool check);
 

@@ -56,6 +56,11 @@ struct claim_result {
   std::string certificate;
   std::vector<std::string> certificate_lemmas;
   std::string certificate_missing;
+  /// The negation of each identity GiNaC refuted (an erratum's printed statement, a wrong formula of
+  /// an altered paper), shown at a counterexample point (certificates/<id>_refuted.v); may be present
+  /// without `certificate`.
+  std::string refutation;
+  std::vector<std::string> refutation_lemmas;
 };
 
 struct claim {
