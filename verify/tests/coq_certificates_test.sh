@@ -29,7 +29,7 @@ r = json.load(open(sys.argv[1]))
 s = r["summary"]
 claims = {c["id"]: c for c in r["claims"]}
 bad = 0
-for headline in ["phi3-det", "hd-invariance"]:
+for headline in ["phi3-det", "hd-invariance", "discriminant-negative"]:
     coq = claims[headline]["evidence"]["coq"]
     if coq["status"] != "checked" or not coq["coq_version"] or coq["seconds"] <= 0:
         print(f"FAIL {headline}: coq evidence {coq}"); bad += 1
@@ -81,6 +81,15 @@ if (cd "$work" && coqc -q phi3_det.v) >"$work/altered-out" 2>&1; then
   fail "coqc accepted phi3_det.v with a coefficient altered"
 else
   echo "ok   altered certificate rejected: $(grep -m1 Error "$work/altered-out")"
+fi
+
+# A sign lemma with its band widened past a root of Δ (x < 8 → x < 13): coqc rejects it.
+sed 's/^  0 < (((-1) \* x) + 8) ->$/  0 < (((-1) * x) + 13) ->/' "$work/paper/certificates/discriminant_negative.v" >"$work/discriminant_negative.v"
+cmp -s "$work/paper/certificates/discriminant_negative.v" "$work/discriminant_negative.v" && fail "widened band: sed changed nothing"
+if (cd "$work" && coqc -q discriminant_negative.v) >"$work/widened-out" 2>&1; then
+  fail "coqc accepted discriminant_negative.v with its band widened to x < 13"
+else
+  echo "ok   widened band rejected: $(grep -m1 Error "$work/widened-out")"
 fi
 
 # 4. An altered paper: its wrong printed Phi_3 is not exported as proved; the derived one is.

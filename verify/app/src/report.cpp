@@ -241,8 +241,9 @@ std::string coq_markdown(const run_record& r) {
     }
   }
   std::string md = fmt::format(
-      "Coq certificates: **{} of {} claims** export one (certificates/*.v, printed from the identities GiNaC proved, "
-      "proved by `field` over Coq's reals); **{} checked by coqc{}**{}.\n\n",
+      "Coq certificates: **{} of {} claims** export one (certificates/*.v, printed from the expressions GiNaC decided: "
+      "identities proved by `field` over Coq's reals, signs on a band by `nra` on their factors, and an erratum's "
+      "printed identity as its negation at a counterexample point, in `_refuted.v`); **{} checked by coqc{}**{}.\n\n",
       c.coq_exported, r.outcomes.size(), c.coq_checked, version.empty() ? "" : " " + version,
       c.coq_checked ? fmt::format(" in {:.1f} s", seconds) : std::string(" (run with `--certify`, or `make certify`, to check them)"));
   md += "Each claim's certificate, or why it has none: the section Coq certificates, before the evidence.\n\n";

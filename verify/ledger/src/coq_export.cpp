@@ -184,6 +184,22 @@ struct coq_statement {
   std::string left, right;
 };
 
+/// What a lemma quantifies over and assumes, from everything `p` printed: its symbols, 0 < m and
+/// 0 < h, and each denominator nonzero, each on its own line.
+std::string premises_text(const coq_printer& p) {
+  std::string out;
+  if (!p.symbols().empty()) {
+    out += "\n  forall";
+    for (const auto& [name, symbol] : p.symbols()) out += " " + name;
+    out += " : R,";
+  }
+  for (const char* positive : {"m", "h"}) {
+    if (p.symbols().count(positive)) out += "\n  0 < " + std::string(positive) + " ->";
+  }
+  for (const std::string& h : p.nonzero()) out += "\n  " + h + " ->";
+  return out;
+}
+
 coq_statement stated(const ex& lhs, const ex& rhs) {
   coq_printer p;
   coq_statement s;
@@ -191,16 +207,52 @@ coq_statement stated(const ex& lhs, const ex& rhs) {
   s.right = p.term(rhs);
   s.symbols = p.symbols();
   s.nonzero = p.nonzero_expressions();
-  if (!s.symbols.empty()) {
-    s.premises += "\n  forall";
-    for (const auto& [name, symbol] : s.symbols) s.premises += " " + name;
-    s.premises += " : R,";
-  }
-  for (const char* positive : {"m", "h"}) {
-    if (s.symbols.count(positive)) s.premises += "\n  0 < " + std::string(positive) + " ->";
-  }
-  for (const std::string& h : p.nonzero()) s.premises += "\n  " + h + " ->";
+  s.premises = premises_text(p);
   return s;
+}
+
+/// A sign lemma: 0 < e for each e of the region -> lhs < 0 (or 0 < lhs). Proof: lhs rewritten as its
+/// factored form (field), each pair of factors made positive by its signs at a point of the region
+/// (nra), and the product's sign from those pairs (nra).
+std::string sign_lemma(const std::string& name, const proof_goal& g) {
+  coq_printer p;
+  const std::string left = p.term(g.lhs), factored = p.term(g.factored);
+  std::vector<std::string> region;
+  for (const ex& e : g.positive) region.push_back("0 < " + p.term(e));
+  for (const ex& e : g.squares) p.term(e);  // their symbols are quantified over too
+  std::vector<ex> factors;  // each times its sign at `inside`: positive on the region
+  const auto add_factor = [&](const ex& f) {
+    if (GiNaC::is_a<GiNaC::numeric>(f)) return;
+    const ex at = GiNaC::normal(f.subs(g.inside));
+    if (!GiNaC::is_a<GiNaC::numeric>(at) || at.is_zero()) throw unsupported("a factor without a sign at the region's point: " + p.term(f));
+    factors.push_back(GiNaC::ex_to<GiNaC::numeric>(at).is_positive() ? f : ex(-f));
+  };
+  if (GiNaC::is_a<GiNaC::mul>(g.factored)) {
+    for (std::size_t k = 0; k < g.factored.nops(); ++k) add_factor(g.factored.op(k));
+  } else {
+    add_factor(g.factored);
+  }
+  // Each factor positive (nra), then their product, one factor at a time (Rmult_lt_0_compat).
+  std::vector<std::string> steps, squares;
+  for (const ex& e : g.squares) squares.push_back("  assert (0 <= " + p.term(e) + " ^ 2) by apply pow2_ge_0.\n");
+  std::string product;
+  for (const ex& f : factors) {
+    const std::string text = p.term(f);
+    steps.push_back("  assert (0 < " + text + ") by nra.\n");
+    if (!product.empty()) {
+      product = "(" + product + " * " + text + ")";
+      steps.push_back("  assert (0 < " + product + ") by (apply Rmult_lt_0_compat; assumption).\n");
+    } else {
+      product = text;
+    }
+  }
+  std::string out = "Lemma " + name + " :" + premises_text(p);
+  for (const std::string& r : region) out += "\n  " + r + " ->";
+  out += "\n  " + (g.sign < 0 ? left + " < 0" : "0 < " + left) + ".\nProof.\n  intros.\n";
+  if (factored != left) out += "  replace " + left + "\n    with " + factored + "\n    by (field; repeat split; nonzero).\n";
+  for (const std::string& s : squares) out += s;
+  for (const std::string& s : steps) out += s;
+  return out + "  nra.\nQed.\n";
 }
 
 /// One lemma: lhs = rhs for scalars.
@@ -341,6 +393,15 @@ coq_export coq_certificate(const std::string& claim_id, const std::string& state
       std::string base = module + "_" + coq_identifier(g.name);
       const int seen = uses[base]++;
       if (seen > 0) base += "_" + std::to_string(seen + 1);  // a claim that checks two formulas: printed, printed_2
+      if (g.sign != 0) {
+        if (!g.holds) {
+          unrefuted.push_back(g.name);  // a sign refuted by GiNaC at a point: no Coq negation written
+          continue;
+        }
+        body += "\n" + sign_lemma(base, g);
+        out.lemmas.push_back(base);
+        continue;
+      }
       if (!g.holds) {
         // The first entry that differs at a point where the hypotheses hold is the counterexample.
         std::optional<std::string> negation;
@@ -396,7 +457,7 @@ coq_export coq_certificate(const std::string& claim_id, const std::string& state
   out.text = "(* Certificate of claim " + claim_id + ": " + said +
              "\n   Written by simpson-verify from the expressions its GiNaC kernel proved; check with coqc. *)\n" + header + nonzero_tactic +
              (refuted.empty() ? "" : "(* Refuted by GiNaC, negated in the claim's _refuted.v: " + listed(refuted) + ". *)\n") +
-             (unrefuted.empty() ? "" : "(* Refuted by GiNaC, with no counterexample point found among those tried: " + listed(unrefuted) + ". *)\n") +
+             (unrefuted.empty() ? "" : "(* Refuted by GiNaC, not negated here (a sign, or no counterexample point among those tried): " + listed(unrefuted) + ". *)\n") +
              (restated.empty() ? "" : "(* Not stated: " + listed(restated) + ", whose two sides GiNaC evaluates to one expression (X = X checks nothing). *)\n") +
              body;
   return out;

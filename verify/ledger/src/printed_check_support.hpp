@@ -26,7 +26,24 @@ struct proof_goal {
   std::string name;  // which side: "printed", "derived", "core"
   GiNaC::ex lhs, rhs;
   bool holds = false;
+  /// A sign goal instead (sign −1: lhs < 0, +1: 0 < lhs; rhs unused) under 0 < e for each e in
+  /// `positive`. Coq proves it by rewriting lhs as `factored` (field) and `nra` on the factors,
+  /// paired by their signs at `inside`, a point of the region.
+  int sign = 0;
+  std::vector<GiNaC::ex> positive{};
+  GiNaC::ex factored{};
+  GiNaC::exmap inside{};
+  std::vector<GiNaC::ex> squares{};  // nra is told 0 <= e² for each
 };
+
+/// The sign goal `sign` · lhs > 0 on the region 0 < e (e in `positive`), `inside` one of its points:
+/// lhs factored by GiNaC; it holds when every factor keeps its sign at `inside` on the region (our
+/// kernel's Sturm proof says so for the claims that use it; coqc checks it again).
+proof_goal sign_goal(const std::string& name, const GiNaC::ex& lhs, int sign, std::vector<GiNaC::ex> positive, GiNaC::exmap inside);
+
+/// The Coq goals of a claim our own kernel proves without reading a printed formula (signs,
+/// intervals, identities of the core's formulas), by claim id.
+const std::map<std::string, std::function<std::vector<proof_goal>()>>& kernel_claim_goals();
 
 /// What the GiNaC kernel found for one claim.
 struct printed_outcome {

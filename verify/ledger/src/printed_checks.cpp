@@ -245,10 +245,20 @@ std::size_t printed_formula_claim_count() { return formula_claims().size(); }
 claim_result check_claim(const claim& c, const run_context& ctx) {
   claim_result result = c.check(ctx);
   const auto it = formula_claims().find(c.id);
-  if (!ctx.paper || it == formula_claims().end()) {
-    result.certificate_missing = it == formula_claims().end()
-                                     ? "its exact proof is our kernel's alone (a sign, interval, series or prose claim): not exported yet"
-                                     : "the run has no paper to read the printed formula from";
+  if (it == formula_claims().end()) {
+    const auto goals = detail::kernel_claim_goals().find(c.id);
+    if (goals == detail::kernel_claim_goals().end()) {
+      result.certificate_missing = "its exact proof is our kernel's alone (an interval, series, table or prose claim): no Coq statement yet";
+      return result;
+    }
+    const detail::coq_export certificate = detail::coq_certificate(c.id, c.statement, goals->second());
+    result.certificate = certificate.text;
+    result.certificate_lemmas = certificate.lemmas;
+    result.certificate_missing = certificate.not_exported;
+    return result;
+  }
+  if (!ctx.paper) {
+    result.certificate_missing = "the run has no paper to read the printed formula from";
     return result;
   }
   const paper_reading& reading = *ctx.paper;

@@ -1,0 +1,106 @@
+// The Coq goals of the claims our own kernel proves without a printed formula (printed_check_support.hpp):
+// the signs of Section 5 (Δ < 0 on the stable bands) and Φ₃'s symplecticity and
+// regular denominators, stated on the core's formulas in GiNaC. Our kernel's proofs (Sturm sequences
+// on rational functions of θ) stay the claims' exact evidence; these goals are what coqc checks again.
+
+#include "printed_check_support.hpp"
+
+#include <simpson/simpson_map.hpp>
+#include <simpson/three_term_scheme.hpp>
+
+namespace simpson::verify::detail {
+namespace {
+
+using GiNaC::ex;
+
+/// x = ω²h², the one variable of Section 5's characteristic polynomial (three_term_scheme.hpp), and a
+/// point of a band. Stated in x, the signs are polynomial facts nra decides; in ω and h, GiNaC would
+/// split x into ω² and h², whose signs 0 < x alone does not give.
+struct band_point {
+  ex x;
+  GiNaC::exmap inside;
+};
+
+band_point at_x(const GiNaC::numeric& value) {
+  static const GiNaC::symbol x("x");
+  return {x, GiNaC::exmap{{x, value}}};
+}
+
+/// Δ = b² − 4ac of the core's characteristic polynomial.
+ex discriminant(const ex& x) {
+  const auto k = characteristic_polynomial(x);
+  return k.b * k.b - 4 * k.a * k.c;
+}
+
+std::vector<proof_goal> discriminant_negative() {
+  const band_point b = at_x(1);  // inside 0 < x < 8
+  const std::vector<ex> band{b.x, 8 - b.x};
+  std::vector<proof_goal> goals{sign_goal("delta", discriminant(b.x), -1, band, b.inside)};
+  for (const int root : {24, 12, 8}) goals.push_back(sign_goal("factor_" + std::to_string(root), b.x - root, -1, band, b.inside));
+  return goals;
+}
+
+/// The corrected criterion's two stable bands: Δ < 0 on 0 < x < 8 and on 12 < x < 24, where the
+/// roots are complex conjugate (and of product 1: modulus 1).
+std::vector<proof_goal> root_modulus_bands() {
+  const band_point first = at_x(1), second = at_x(16);
+  return {sign_goal("delta_first_band", discriminant(first.x), -1, {first.x, 8 - first.x}, first.inside),
+          sign_goal("delta_second_band", discriminant(second.x), -1, {second.x - 12, 24 - second.x}, second.inside)};
+}
+
+GiNaC::matrix core_phi3() { return as_matrix(simpson_map(parameters(derivation()))); }
+
+/// Φ₃ᵀ J Φ₃ = J with J = ((0, 1), (−1, 0)): symplectic, as the matrices multiply out.
+std::vector<proof_goal> phi3_symplectic() {
+  const GiNaC::matrix J{{0, 1}, {-1, 0}};
+  const GiNaC::matrix phi = core_phi3();
+  return {decided("core", phi.transpose().mul(J).mul(phi), J)};
+}
+
+/// Each entry of Φ₃ has a denominator positive for every m > 0, ω, h > 0 (the map is explicit, never
+/// singular); nra is told that (ωh)² ≥ 0.
+std::vector<proof_goal> phi3_explicit() {
+  const symbolic_derivation& d = derivation();
+  const GiNaC::exmap inside{{d.omega, 1}, {d.h, 1}, {d.m, 1}};
+  const GiNaC::matrix phi = core_phi3();
+  std::vector<proof_goal> goals;
+  std::vector<ex> seen;
+  for (unsigned k = 0; k < 4; ++k) {
+    const ex den = GiNaC::denom(GiNaC::normal(phi(k / 2, k % 2)));
+    if (GiNaC::is_a<GiNaC::numeric>(den) || std::any_of(seen.begin(), seen.end(), [&](const ex& s) { return (s - den).is_zero(); })) continue;
+    seen.push_back(den);
+    goals.push_back(sign_goal("denominator", den, 1, {}, inside));
+    goals.back().squares = {d.omega * d.h};
+  }
+  return goals;
+}
+
+}  // namespace
+
+proof_goal sign_goal(const std::string& name, const ex& lhs, int sign, std::vector<ex> positive, GiNaC::exmap inside) {
+  proof_goal g;
+  g.name = name;
+  g.lhs = lhs;
+  g.rhs = 0;
+  g.sign = sign;
+  g.factored = GiNaC::factor(GiNaC::normal(lhs));
+  g.inside = std::move(inside);
+  bool in_region = true;
+  for (const ex& e : positive) {
+    const ex at = GiNaC::normal(e.subs(g.inside));
+    in_region = in_region && GiNaC::is_a<GiNaC::numeric>(at) && GiNaC::ex_to<GiNaC::numeric>(at).is_positive();
+  }
+  const ex at = GiNaC::normal(lhs.subs(g.inside) * sign);
+  g.holds = in_region && GiNaC::is_a<GiNaC::numeric>(at) && GiNaC::ex_to<GiNaC::numeric>(at).is_positive();
+  g.positive = std::move(positive);
+  return g;
+}
+
+const std::map<std::string, std::function<std::vector<proof_goal>()>>& kernel_claim_goals() {
+  static const std::map<std::string, std::function<std::vector<proof_goal>()>> goals{
+      {"discriminant-negative", discriminant_negative}, {"root-modulus-criterion", root_modulus_bands},
+      {"phi3-symplectic", phi3_symplectic},             {"phi3-explicit", phi3_explicit}};
+  return goals;
+}
+
+}  // namespace simpson::verify::detail
