@@ -235,9 +235,12 @@ std::string sign_lemma(const std::string& name, const proof_goal& g) {
   // Each factor positive (nra), then their product, one factor at a time (Rmult_lt_0_compat).
   std::vector<std::string> steps, squares;
   for (const ex& e : g.squares) squares.push_back("  assert (0 <= " + p.term(e) + " ^ 2) by apply pow2_ge_0.\n");
+  // In the order of their text: GiNaC's order of a product's factors changes from run to run.
+  std::vector<std::string> factor_texts;
+  for (const ex& f : factors) factor_texts.push_back(p.term(f));
+  std::sort(factor_texts.begin(), factor_texts.end());
   std::string product;
-  for (const ex& f : factors) {
-    const std::string text = p.term(f);
+  for (const std::string& text : factor_texts) {
     steps.push_back("  assert (0 < " + text + ") by nra.\n");
     if (!product.empty()) {
       product = "(" + product + " * " + text + ")";
