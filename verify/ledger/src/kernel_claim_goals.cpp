@@ -1,10 +1,11 @@
 // The Coq goals of the claims our own kernel proves without a printed formula (printed_check_support.hpp):
-// the signs of Section 5 (Δ < 0 on the stable bands) and Φ₃'s symplecticity and
+// the signs of Section 5 (Δ < 0 on the stable bands), Φ₃'s shear factorization, and Φ₃'s symplecticity and
 // regular denominators, stated on the core's formulas in GiNaC. Our kernel's proofs (Sturm sequences
 // on rational functions of θ) stay the claims' exact evidence; these goals are what coqc checks again.
 
 #include "printed_check_support.hpp"
 
+#include <simpson/shear_form.hpp>
 #include <simpson/simpson_map.hpp>
 #include <simpson/three_term_scheme.hpp>
 
@@ -57,6 +58,14 @@ std::vector<proof_goal> phi3_symplectic() {
   return {decided("core", phi.transpose().mul(J).mul(phi), J)};
 }
 
+/// Φ₃ = L(c) U(b) L(c), the core's shears multiplied out, entry by entry (off ω²h² = 12, 24, where
+/// the drift's denominator vanishes: hypotheses of the lemmas).
+std::vector<proof_goal> phi3_shear_factorization() {
+  const symbolic_derivation& d = derivation();
+  const auto product = shear_product(simpson::detail::shear_with_step<ex>(d.m, d.omega, d.h));
+  return {decided("core", as_matrix(product), core_phi3())};
+}
+
 /// Each entry of Φ₃ has a denominator positive for every m > 0, ω, h > 0 (the map is explicit, never
 /// singular); nra is told that (ωh)² ≥ 0.
 std::vector<proof_goal> phi3_explicit() {
@@ -99,7 +108,8 @@ proof_goal sign_goal(const std::string& name, const ex& lhs, int sign, std::vect
 const std::map<std::string, std::function<std::vector<proof_goal>()>>& kernel_claim_goals() {
   static const std::map<std::string, std::function<std::vector<proof_goal>()>> goals{
       {"discriminant-negative", discriminant_negative}, {"root-modulus-criterion", root_modulus_bands},
-      {"phi3-symplectic", phi3_symplectic},             {"phi3-explicit", phi3_explicit}};
+      {"phi3-symplectic", phi3_symplectic},             {"phi3-explicit", phi3_explicit},
+      {"phi3-shear-factorization", phi3_shear_factorization}};
   return goals;
 }
 
