@@ -12,46 +12,25 @@ Ltac nonzero :=
           | [ H : 0 < ?Y |- ?X <> 0 ] => replace X with Y by ring; apply Rgt_not_eq; exact H
           end
         | apply pow_nonzero; nonzero ].
+(* Not stated: gear_derivatives_printed, gear_derivatives_core, gear_derivatives_printed_2, gear_derivatives_core_2, gear_derivatives_printed_exact, gear_derivatives_core_exact, whose two sides GiNaC evaluates to one expression (X = X checks nothing). *)
 
-Lemma gear_derivatives_printed :
-  forall h q_l q_m q_r : R,
+Lemma gear_derivatives_printed_exact_2 :
+  forall c1 c2 h : R,
   0 < h ->
   h <> 0 ->
-  ((((-1) * q_r) + ((-3) * q_l) + (4 * q_m)) * (/ h))
-  = ((((-1) * q_r) + ((-3) * q_l) + (4 * q_m)) * (/ h)).
+  ((-1) * (((-1) * c1 * h) + ((-2) * (h ^ 2) * c2)) * (/ h))
+  = ((2 * c2 * h) + c1).
 Proof.
   intros.
   field; repeat split; nonzero.
 Qed.
 
-Lemma gear_derivatives_core :
-  forall h q_l q_m q_r : R,
+Lemma gear_derivatives_core_exact_2 :
+  forall c1 c2 h : R,
   0 < h ->
   h <> 0 ->
-  ((((-1) * q_r) + ((-3) * q_l) + (4 * q_m)) * (/ h))
-  = ((((-1) * q_r) + ((-3) * q_l) + (4 * q_m)) * (/ h)).
-Proof.
-  intros.
-  field; repeat split; nonzero.
-Qed.
-
-Lemma gear_derivatives_printed_2 :
-  forall h q_l q_m q_r : R,
-  0 < h ->
-  h <> 0 ->
-  ((-1) * (((-1) * q_l) + ((-3) * q_r) + (4 * q_m)) * (/ h))
-  = ((-1) * (((-1) * q_l) + ((-3) * q_r) + (4 * q_m)) * (/ h)).
-Proof.
-  intros.
-  field; repeat split; nonzero.
-Qed.
-
-Lemma gear_derivatives_core_2 :
-  forall h q_l q_m q_r : R,
-  0 < h ->
-  h <> 0 ->
-  ((-1) * (((-1) * q_l) + ((-3) * q_r) + (4 * q_m)) * (/ h))
-  = ((-1) * (((-1) * q_l) + ((-3) * q_r) + (4 * q_m)) * (/ h)).
+  ((-1) * (((-1) * c1 * h) + ((-2) * (h ^ 2) * c2)) * (/ h))
+  = ((2 * c2 * h) + c1).
 Proof.
   intros.
   field; repeat split; nonzero.

@@ -12,62 +12,25 @@ Ltac nonzero :=
           | [ H : 0 < ?Y |- ?X <> 0 ] => replace X with Y by ring; apply Rgt_not_eq; exact H
           end
         | apply pow_nonzero; nonzero ].
+(* Not stated: gear_partials_printed, gear_partials_core, gear_partials_printed_2, gear_partials_core_2, gear_partials_printed_3, gear_partials_core_3, gear_partials_printed_increment_2, whose two sides GiNaC evaluates to one expression (X = X checks nothing). *)
 
-Lemma gear_partials_printed :
-  forall h : R,
+Lemma gear_partials_printed_increment :
+  forall e h q_l q_m q_r : R,
   0 < h ->
   h <> 0 ->
-  (4 * (/ h))
-  = (4 * (/ h)).
+  (((((-1) * q_r) + ((-3) * q_l) + (4 * e) + (4 * q_m)) * (/ h)) + ((-1) * (((-1) * q_r) + ((-3) * q_l) + (4 * q_m)) * (/ h)))
+  = (4 * (/ h) * e).
 Proof.
   intros.
   field; repeat split; nonzero.
 Qed.
 
-Lemma gear_partials_core :
-  forall h : R,
+Lemma gear_partials_printed_increment_3 :
+  forall e h q_l q_m q_r : R,
   0 < h ->
   h <> 0 ->
-  (4 * (/ h))
-  = (4 * (/ h)).
-Proof.
-  intros.
-  field; repeat split; nonzero.
-Qed.
-
-Lemma gear_partials_printed_2 :
-  0
-  = 0.
-Proof.
-  intros.
-  field; repeat split; nonzero.
-Qed.
-
-Lemma gear_partials_core_2 :
-  0
-  = 0.
-Proof.
-  intros.
-  field; repeat split; nonzero.
-Qed.
-
-Lemma gear_partials_printed_3 :
-  forall h : R,
-  0 < h ->
-  h <> 0 ->
-  ((-4) * (/ h))
-  = ((-4) * (/ h)).
-Proof.
-  intros.
-  field; repeat split; nonzero.
-Qed.
-
-Lemma gear_partials_core_3 :
-  forall h : R,
-  0 < h ->
-  h <> 0 ->
-  ((-4) * (/ h))
-  = ((-4) * (/ h)).
+  (((((-1) * q_l) + ((-3) * q_r) + (4 * q_m)) * (/ h)) + ((-1) * (((-1) * q_l) + ((-3) * q_r) + (4 * e) + (4 * q_m)) * (/ h)))
+  = ((-4) * (/ h) * e).
 Proof.
   intros.
   field; repeat split; nonzero.

@@ -12,96 +12,59 @@ Ltac nonzero :=
           | [ H : 0 < ?Y |- ?X <> 0 ] => replace X with Y by ring; apply Rgt_not_eq; exact H
           end
         | apply pow_nonzero; nonzero ].
+(* Not stated: newmark_matrix_printed_11, newmark_matrix_printed_12, newmark_matrix_printed_21, newmark_matrix_printed_22, newmark_matrix_core_11, newmark_matrix_core_12, newmark_matrix_core_21, newmark_matrix_core_22, whose two sides GiNaC evaluates to one expression (X = X checks nothing). *)
 
-Lemma newmark_matrix_printed_11 :
-  forall h omega : R,
-  0 < h ->
-  (((-1) * (h ^ 2) * (omega ^ 2)) + (-4)) <> 0 ->
-  ((-1) * (((-1) * (h ^ 2) * (omega ^ 2)) + 4) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))))
-  = ((-1) * (((-1) * (h ^ 2) * (omega ^ 2)) + 4) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4)))).
-Proof.
-  intros.
-  field; repeat split; nonzero.
-Qed.
-
-Lemma newmark_matrix_printed_12 :
-  forall h m omega : R,
+Lemma newmark_matrix_printed_momentum_left :
+  forall h m omega p_j q_j : R,
   0 < m ->
   0 < h ->
   (((-1) * (h ^ 2) * (omega ^ 2)) + (-4)) <> 0 ->
-  (4 * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))) * (omega ^ 2) * h * m)
-  = (4 * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))) * (omega ^ 2) * h * m).
-Proof.
-  intros.
-  field; repeat split; nonzero.
-Qed.
-
-Lemma newmark_matrix_printed_21 :
-  forall h m omega : R,
-  0 < m ->
-  0 < h ->
-  (((-1) * (h ^ 2) * (omega ^ 2)) + (-4)) <> 0 ->
+  h <> 0 ->
   m <> 0 ->
-  ((-4) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))) * (/ m) * h)
-  = ((-4) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))) * (/ m) * h).
+  ((-1/4) * (((((((-1) * (h ^ 2) * (omega ^ 2)) + 4) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))) * q_j) + (4 * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))) * (/ m) * h * p_j)) * (h ^ 2) * (omega ^ 2) * m) + ((-1) * (h ^ 2) * (omega ^ 2) * m * q_j) + (4 * (((((-1) * (h ^ 2) * (omega ^ 2)) + 4) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))) * q_j) + (4 * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))) * (/ m) * h * p_j)) * m) + (4 * m * q_j)) * (/ h))
+  = p_j.
 Proof.
   intros.
   field; repeat split; nonzero.
 Qed.
 
-Lemma newmark_matrix_printed_22 :
-  forall h omega : R,
-  0 < h ->
-  (((-1) * (h ^ 2) * (omega ^ 2)) + (-4)) <> 0 ->
-  ((-1) * (((-1) * (h ^ 2) * (omega ^ 2)) + 4) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))))
-  = ((-1) * (((-1) * (h ^ 2) * (omega ^ 2)) + 4) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4)))).
-Proof.
-  intros.
-  field; repeat split; nonzero.
-Qed.
-
-Lemma newmark_matrix_core_11 :
-  forall h omega : R,
-  0 < h ->
-  (((-1) * (h ^ 2) * (omega ^ 2)) + (-4)) <> 0 ->
-  ((-1) * (((-1) * (h ^ 2) * (omega ^ 2)) + 4) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))))
-  = ((-1) * (((-1) * (h ^ 2) * (omega ^ 2)) + 4) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4)))).
-Proof.
-  intros.
-  field; repeat split; nonzero.
-Qed.
-
-Lemma newmark_matrix_core_12 :
-  forall h m omega : R,
+Lemma newmark_matrix_printed_momentum_right :
+  forall h m omega p_j q_j : R,
   0 < m ->
   0 < h ->
   (((-1) * (h ^ 2) * (omega ^ 2)) + (-4)) <> 0 ->
-  (4 * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))) * (omega ^ 2) * h * m)
-  = (4 * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))) * (omega ^ 2) * h * m).
-Proof.
-  intros.
-  field; repeat split; nonzero.
-Qed.
-
-Lemma newmark_matrix_core_21 :
-  forall h m omega : R,
-  0 < m ->
-  0 < h ->
-  (((-1) * (h ^ 2) * (omega ^ 2)) + (-4)) <> 0 ->
+  h <> 0 ->
   m <> 0 ->
-  ((-4) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))) * (/ m) * h)
-  = ((-4) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))) * (/ m) * h).
+  ((1/4) * (((((((-1) * (h ^ 2) * (omega ^ 2)) + 4) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))) * q_j) + (4 * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))) * (/ m) * h * p_j)) * (h ^ 2) * (omega ^ 2) * m) + ((-1) * (h ^ 2) * (omega ^ 2) * m * q_j) + ((-4) * (((((-1) * (h ^ 2) * (omega ^ 2)) + 4) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))) * q_j) + (4 * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))) * (/ m) * h * p_j)) * m) + ((-4) * m * q_j)) * (/ h))
+  = (((-1) * (((-1) * (h ^ 2) * (omega ^ 2)) + 4) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))) * p_j) + (4 * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))) * (omega ^ 2) * h * m * q_j)).
 Proof.
   intros.
   field; repeat split; nonzero.
 Qed.
 
-Lemma newmark_matrix_core_22 :
-  forall h omega : R,
+Lemma newmark_matrix_core_momentum_left :
+  forall h m omega p_j q_j : R,
+  0 < m ->
   0 < h ->
   (((-1) * (h ^ 2) * (omega ^ 2)) + (-4)) <> 0 ->
-  ((-1) * (((-1) * (h ^ 2) * (omega ^ 2)) + 4) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))))
-  = ((-1) * (((-1) * (h ^ 2) * (omega ^ 2)) + 4) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4)))).
+  h <> 0 ->
+  m <> 0 ->
+  ((-1/4) * (((((((-1) * (h ^ 2) * (omega ^ 2)) + 4) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))) * q_j) + (4 * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))) * (/ m) * h * p_j)) * (h ^ 2) * (omega ^ 2) * m) + ((-1) * (h ^ 2) * (omega ^ 2) * m * q_j) + (4 * (((((-1) * (h ^ 2) * (omega ^ 2)) + 4) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))) * q_j) + (4 * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))) * (/ m) * h * p_j)) * m) + (4 * m * q_j)) * (/ h))
+  = p_j.
+Proof.
+  intros.
+  field; repeat split; nonzero.
+Qed.
+
+Lemma newmark_matrix_core_momentum_right :
+  forall h m omega p_j q_j : R,
+  0 < m ->
+  0 < h ->
+  (((-1) * (h ^ 2) * (omega ^ 2)) + (-4)) <> 0 ->
+  h <> 0 ->
+  m <> 0 ->
+  ((1/4) * (((((((-1) * (h ^ 2) * (omega ^ 2)) + 4) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))) * q_j) + (4 * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))) * (/ m) * h * p_j)) * (h ^ 2) * (omega ^ 2) * m) + ((-1) * (h ^ 2) * (omega ^ 2) * m * q_j) + ((-4) * (((((-1) * (h ^ 2) * (omega ^ 2)) + 4) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))) * q_j) + (4 * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))) * (/ m) * h * p_j)) * m) + ((-4) * m * q_j)) * (/ h))
+  = (((-1) * (((-1) * (h ^ 2) * (omega ^ 2)) + 4) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))) * p_j) + (4 * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-4))) * (omega ^ 2) * h * m * q_j)).
 Proof.
   intros.
   field; repeat split; nonzero.

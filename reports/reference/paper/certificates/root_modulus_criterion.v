@@ -1,0 +1,54 @@
+(* Certificate of claim root-modulus-criterion: The scheme is stable when the roots of the corresponding equation are of modulus smaller than 1.
+   Written by simpson-verify from the expressions its GiNaC kernel proved; check with coqc. *)
+Require Import Reals Field Lra Psatz.
+Open Scope R_scope.
+
+(* field leaves side conditions X <> 0 in its own normal form: each is a hypothesis up to ring,
+   a positive hypothesis, or a power of one. *)
+Ltac nonzero :=
+  first [ assumption
+        | match goal with
+          | [ H : ?Y <> 0 |- ?X <> 0 ] => replace X with Y by ring; exact H
+          | [ H : 0 < ?Y |- ?X <> 0 ] => replace X with Y by ring; apply Rgt_not_eq; exact H
+          end
+        | apply pow_nonzero; nonzero ].
+
+Lemma root_modulus_criterion_delta_first_band :
+  forall x : R,
+  0 < x ->
+  0 < (((-1) * x) + 8) ->
+  (((-1/144) * ((((-1) * x) + (-24)) ^ 2)) + ((1/576) * ((((-1) * (x ^ 2)) + (-48) + (22 * x)) ^ 2))) < 0.
+Proof.
+  intros.
+  replace (((-1/144) * ((((-1) * x) + (-24)) ^ 2)) + ((1/576) * ((((-1) * (x ^ 2)) + (-48) + (22 * x)) ^ 2)))
+    with ((-1/576) * (((-1) * x) + 12) * (((-1) * x) + 24) * (((-1) * x) + 8) * x)
+    by (field; repeat split; nonzero).
+  assert (0 < (((-1) * x) + 12)) by nra.
+  assert (0 < (((-1) * x) + 24)) by nra.
+  assert (0 < ((((-1) * x) + 12) * (((-1) * x) + 24))) by (apply Rmult_lt_0_compat; assumption).
+  assert (0 < (((-1) * x) + 8)) by nra.
+  assert (0 < (((((-1) * x) + 12) * (((-1) * x) + 24)) * (((-1) * x) + 8))) by (apply Rmult_lt_0_compat; assumption).
+  assert (0 < x) by nra.
+  assert (0 < ((((((-1) * x) + 12) * (((-1) * x) + 24)) * (((-1) * x) + 8)) * x)) by (apply Rmult_lt_0_compat; assumption).
+  nra.
+Qed.
+
+Lemma root_modulus_criterion_delta_second_band :
+  forall x : R,
+  0 < ((-12) + x) ->
+  0 < (((-1) * x) + 24) ->
+  (((-1/144) * ((((-1) * x) + (-24)) ^ 2)) + ((1/576) * ((((-1) * (x ^ 2)) + (-48) + (22 * x)) ^ 2))) < 0.
+Proof.
+  intros.
+  replace (((-1/144) * ((((-1) * x) + (-24)) ^ 2)) + ((1/576) * ((((-1) * (x ^ 2)) + (-48) + (22 * x)) ^ 2)))
+    with ((-1/576) * (((-1) * x) + 12) * (((-1) * x) + 24) * (((-1) * x) + 8) * x)
+    by (field; repeat split; nonzero).
+  assert (0 < (((-1) * x) + 24)) by nra.
+  assert (0 < ((-12) + x)) by nra.
+  assert (0 < ((((-1) * x) + 24) * ((-12) + x))) by (apply Rmult_lt_0_compat; assumption).
+  assert (0 < ((-8) + x)) by nra.
+  assert (0 < (((((-1) * x) + 24) * ((-12) + x)) * ((-8) + x))) by (apply Rmult_lt_0_compat; assumption).
+  assert (0 < x) by nra.
+  assert (0 < ((((((-1) * x) + 24) * ((-12) + x)) * ((-8) + x)) * x)) by (apply Rmult_lt_0_compat; assumption).
+  nra.
+Qed.
