@@ -83,9 +83,14 @@ void apply_selection(scene& s, const scene_selection& selection) {
     for (const claim& c : ledger()) {
       if (std::find(ids.begin(), ids.end(), c.id) != ids.end()) ordered.push_back(c.id);
     }
+    // Every claim of the scene (--claims all) is said so, not listed.
+    const bool all_own = ordered.size() == s.claims.size() &&
+                         std::all_of(s.claims.begin(), s.claims.end(), [&](const std::string& own) {
+                           return std::find(ordered.begin(), ordered.end(), own) != ordered.end();
+                         });
     s.claims = ordered;
     s.overrides["claims"] = ordered;
-    parts.push_back("claims " + joined(ordered) + " only");
+    parts.push_back(all_own ? "all " + std::to_string(ordered.size()) + " claims" : "claims " + joined(ordered) + " only");
   } else {
     s.claims.clear();
     s.overrides["claims"] = json::array();
