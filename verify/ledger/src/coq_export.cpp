@@ -2,6 +2,8 @@
 
 #include "coq_export.hpp"
 
+#include <simpson/verify/tex_math.hpp>
+
 #include <ginac/ginac.h>
 
 #include <algorithm>
@@ -44,8 +46,30 @@ class coq_printer {
       const std::string text = power_text(e, sign);
       return sign == 1 ? text : "((-1) * " + text + ")";
     }
-    if (GiNaC::is_a<GiNaC::function>(e)) throw unsupported("the function " + GiNaC::ex_to<GiNaC::function>(e).get_name());
+    if (GiNaC::is_a<GiNaC::function>(e)) return application_text(e);
     throw unsupported("a term of another kind: " + to_text(e));
+  }
+
+  /// An uninterpreted function of the paper (V, q, ...) applied, `(V x)`; its k-th derivative is a
+  /// function of its own, `(dV x)`, `(d2V x)`. The lemma quantifies over each: an identity GiNaC proved
+  /// with V(x) and V'(x) as independent atoms holds for every pair of functions, V' among them.
+  std::string application_text(const ex& e) {
+    const GiNaC::function& f = GiNaC::ex_to<GiNaC::function>(e);
+    std::string name = f.get_name();
+    const auto& names = function_names();
+    if (name == "sum" || std::find(names.begin(), names.end(), name) == names.end()) throw unsupported("the function " + name);
+    if (GiNaC::is_a<GiNaC::fderivative>(e)) {
+      if (f.nops() != 1) throw unsupported("a partial derivative of " + name);
+      const std::size_t order = GiNaC::ex_to<GiNaC::fderivative>(e).derivatives().size();
+      name = "d" + (order > 1 ? std::to_string(order) : std::string()) + name;
+    }
+    const std::string id = coq_identifier(name);
+    functions_[id] = f.nops();
+    std::string out = "(" + id;
+    // field takes (V a) and (V b) as different atoms unless a and b print alike: each argument in
+    // GiNaC's normal form (the same real number), so that equal arguments are one atom.
+    for (std::size_t k = 0; k < f.nops(); ++k) out += " " + term(GiNaC::normal(f.op(k)));
+    return out + ")";
   }
 
   /// A sum in the sign whose text is smaller; `sign` is multiplied by −1 when that is −e.
@@ -114,6 +138,8 @@ class coq_printer {
 
   /// The symbols by their Coq names (sorted).
   const std::map<std::string, ex>& symbols() const { return symbols_; }
+  /// The functions applied, by their Coq names, with their arities.
+  const std::map<std::string, std::size_t>& functions() const { return functions_; }
   /// The nonzero hypotheses, sorted by text.
   std::vector<std::string> nonzero() const {
     std::vector<std::string> out;
@@ -163,6 +189,7 @@ class coq_printer {
     GiNaC::numeric sign(1);  // X <> 0 and −X <> 0 say the same: the canonical sign
     const std::string text = (GiNaC::is_a<GiNaC::add>(e) ? inner.signed_sum_text(e, sign) : inner.term(e)) + " <> 0";
     symbols_.insert(inner.symbols_.begin(), inner.symbols_.end());
+    functions_.insert(inner.functions_.begin(), inner.functions_.end());
     for (const auto& [n, inner_e] : inner.nonzero_) push_unique(n, inner_e);
     push_unique(text, e);
   }
@@ -173,6 +200,7 @@ class coq_printer {
   }
 
   std::map<std::string, ex> symbols_;
+  std::map<std::string, std::size_t> functions_;
   std::vector<std::pair<std::string, ex>> nonzero_;
 };
 
@@ -188,7 +216,25 @@ struct coq_statement {
 /// 0 < h, and each denominator nonzero, each on its own line.
 std::string premises_text(const coq_printer& p) {
   std::string out;
-  if (!p.symbols().empty()) {
+  std::map<std::size_t, std::string> by_arity;  // the functions' binders, one group per type
+  for (const auto& [name, arity] : p.functions()) {
+    if (p.symbols().count(name)) throw unsupported("a function and a symbol both named " + name);
+    by_arity[arity] += " " + name;
+  }
+  if (!by_arity.empty()) {
+    out += "\n  forall";
+    for (const auto& [arity, names] : by_arity) {
+      std::string type;
+      for (std::size_t k = 0; k < arity; ++k) type += "R -> ";
+      out += " (" + names.substr(1) + " : " + type + "R)";
+    }
+    if (!p.symbols().empty()) {
+      out += " (";
+      for (const auto& [name, symbol] : p.symbols()) out += name + " ";
+      out += ": R)";
+    }
+    out += ",";
+  } else if (!p.symbols().empty()) {
     out += "\n  forall";
     for (const auto& [name, symbol] : p.symbols()) out += " " + name;
     out += " : R,";
@@ -241,7 +287,9 @@ std::string sign_lemma(const std::string& name, const proof_goal& g) {
   std::sort(factor_texts.begin(), factor_texts.end());
   std::string product;
   for (const std::string& text : factor_texts) {
-    steps.push_back("  assert (0 < " + text + ") by nra.\n");
+    // A denominator's inverse, (/ D): positive when D is (Rinv_0_lt_compat).
+    const bool inverse = text.rfind("(/ ", 0) == 0;
+    steps.push_back("  assert (0 < " + text + ") by " + (inverse ? "(apply Rinv_0_lt_compat; nra)" : "nra") + ".\n");
     if (!product.empty()) {
       product = "(" + product + " * " + text + ")";
       steps.push_back("  assert (0 < " + product + ") by (apply Rmult_lt_0_compat; assumption).\n");

@@ -5,6 +5,7 @@
 
 #include "printed_check_support.hpp"
 
+#include <simpson/newmark_map.hpp>
 #include <simpson/shear_form.hpp>
 #include <simpson/simpson_map.hpp>
 #include <simpson/three_term_scheme.hpp>
@@ -58,6 +59,15 @@ std::vector<proof_goal> phi3_symplectic() {
   return {decided("core", phi.transpose().mul(J).mul(phi), J)};
 }
 
+/// Newmark's Φ (det 1): its discriminant tr² − 4 < 0 for every ω > 0, h > 0, so its roots are
+/// complex conjugate of modulus 1: stable for every step.
+std::vector<proof_goal> newmark_unconditional_stability() {
+  const symbolic_derivation& d = derivation();
+  const auto phi = newmark_map(parameters(d));
+  const ex trace = phi.alpha + phi.delta;
+  return {sign_goal("discriminant", trace * trace - 4, -1, {d.omega}, GiNaC::exmap{{d.omega, 1}, {d.h, 1}, {d.m, 1}})};
+}
+
 /// Φ₃ = L(c) U(b) L(c), the core's shears multiplied out, entry by entry (off ω²h² = 12, 24, where
 /// the drift's denominator vanishes: hypotheses of the lemmas).
 std::vector<proof_goal> phi3_shear_factorization() {
@@ -109,7 +119,8 @@ const std::map<std::string, std::function<std::vector<proof_goal>()>>& kernel_cl
   static const std::map<std::string, std::function<std::vector<proof_goal>()>> goals{
       {"discriminant-negative", discriminant_negative}, {"root-modulus-criterion", root_modulus_bands},
       {"phi3-symplectic", phi3_symplectic},             {"phi3-explicit", phi3_explicit},
-      {"phi3-shear-factorization", phi3_shear_factorization}};
+      {"phi3-shear-factorization", phi3_shear_factorization},
+      {"newmark-unconditional-stability", newmark_unconditional_stability}};
   return goals;
 }
 
