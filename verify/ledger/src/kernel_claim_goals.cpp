@@ -5,6 +5,7 @@
 
 #include "printed_check_support.hpp"
 
+#include <simpson/energy.hpp>
 #include <simpson/newmark_map.hpp>
 #include <simpson/shear_form.hpp>
 #include <simpson/simpson_map.hpp>
@@ -57,6 +58,19 @@ std::vector<proof_goal> phi3_symplectic() {
   const GiNaC::matrix J{{0, 1}, {-1, 0}};
   const GiNaC::matrix phi = core_phi3();
   return {decided("core", phi.transpose().mul(J).mul(phi), J)};
+}
+
+/// The reduction every exact proof of our kernel uses: with S = diag(mω, 1), Φ(m, ω, h) =
+/// S Φ(1, 1, ωh) S⁻¹ for Φ₃ and Newmark's Φ, and H_d(m, ω, h; p, q) = mω² H_d(1, 1, ωh; p/(mω), q).
+std::vector<proof_goal> dimensional_scaling() {
+  const symbolic_derivation& d = derivation();
+  const oscillator_parameters<ex> unit{1, 1, d.omega * d.h};
+  const GiNaC::matrix S{{d.m * d.omega, 0}, {0, 1}}, S_inverse{{1 / (d.m * d.omega), 0}, {0, 1}};
+  const auto scaled = [&](const one_step_matrix<ex>& at_unit) { return S.mul(as_matrix(at_unit)).mul(S_inverse); };
+  return {decided("phi3", scaled(simpson_map(unit)), as_matrix(simpson_map(parameters(d)))),
+          decided("newmark", scaled(newmark_map(unit)), as_matrix(newmark_map(parameters(d)))),
+          decided("discrete_energy", discrete_energy(parameters(d), phase_point<ex>{d.p, d.q}),
+                  d.m * d.omega * d.omega * discrete_energy(unit, phase_point<ex>{d.p / (d.m * d.omega), d.q}))};
 }
 
 /// Newmark's Φ (det 1): its discriminant tr² − 4 < 0 for every ω > 0, h > 0, so its roots are
@@ -120,7 +134,8 @@ const std::map<std::string, std::function<std::vector<proof_goal>()>>& kernel_cl
       {"discriminant-negative", discriminant_negative}, {"root-modulus-criterion", root_modulus_bands},
       {"phi3-symplectic", phi3_symplectic},             {"phi3-explicit", phi3_explicit},
       {"phi3-shear-factorization", phi3_shear_factorization},
-      {"newmark-unconditional-stability", newmark_unconditional_stability}};
+      {"newmark-unconditional-stability", newmark_unconditional_stability},
+      {"lemma-dimensional-scaling", dimensional_scaling}};
   return goals;
 }
 
