@@ -45,6 +45,10 @@ proof_goal sign_goal(const std::string& name, const GiNaC::ex& lhs, int sign, st
 /// intervals, identities of the core's formulas), by claim id.
 const std::map<std::string, std::function<std::vector<proof_goal>()>>& kernel_claim_goals();
 
+/// Why a claim has no Coq statement (not in kernel_claim_goals(), or a formula claim whose GiNaC
+/// check decides no identity), or `otherwise` when no reason is written for it.
+std::string without_coq_statement(const std::string& claim_id, const std::string& otherwise);
+
 /// What the GiNaC kernel found for one claim.
 struct printed_outcome {
   bool holds = false;         // the printed formula is the derived one, or its printed property holds

@@ -248,7 +248,7 @@ claim_result check_claim(const claim& c, const run_context& ctx) {
   if (it == formula_claims().end()) {
     const auto goals = detail::kernel_claim_goals().find(c.id);
     if (goals == detail::kernel_claim_goals().end()) {
-      result.certificate_missing = "its exact proof is our kernel's alone (an interval, series, table or prose claim): no Coq statement yet";
+      result.certificate_missing = detail::without_coq_statement(c.id, "its exact proof is our kernel's alone: no Coq statement yet");
       return result;
     }
     const detail::coq_export certificate = detail::coq_certificate(c.id, c.statement, goals->second());
@@ -284,7 +284,9 @@ claim_result check_claim(const claim& c, const run_context& ctx) {
   const detail::coq_export certificate = detail::coq_certificate(c.id, c.statement, outcome.goals);
   result.certificate = certificate.text;
   result.certificate_lemmas = certificate.lemmas;
-  result.certificate_missing = certificate.not_exported;
+  result.certificate_missing = certificate.lemmas.empty() && certificate.refutation_lemmas.empty() && outcome.goals.empty()
+                                   ? detail::without_coq_statement(c.id, certificate.not_exported)
+                                   : certificate.not_exported;
   result.refutation = certificate.refutation;
   result.refutation_lemmas = certificate.refutation_lemmas;
   return result;
