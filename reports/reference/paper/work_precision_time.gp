@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.13364e-08:0.000889287]
+set xrange [5.14132e-08:0.00086181]
 set xtics autofreq
 set mxtics default
 set yrange [4.29802e-15:0.337578]
@@ -37,7 +37,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [9.98083e-08:0.00322212]
+set xrange [9.3397e-08:0.00314065]
 set xtics autofreq
 set mxtics default
 set yrange [3.30044e-15:0.34185]
@@ -61,7 +61,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.13045e-06:0.0322325]
+set xrange [9.08812e-07:0.0272466]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -85,7 +85,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.61039e-06:0.0809129]
+set xrange [1.46826e-06:0.0428687]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -109,7 +109,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.06069e-06:0.0963122]
+set xrange [2.44119e-06:0.0566125]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -159,7 +159,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.13364e-08:0.000889287]
+set xrange [5.14132e-08:0.00086181]
 set xtics autofreq
 set mxtics default
 set yrange [4.29802e-15:0.337578]
@@ -183,7 +183,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [9.98083e-08:0.00322212]
+set xrange [9.3397e-08:0.00314065]
 set xtics autofreq
 set mxtics default
 set yrange [3.30044e-15:0.34185]
@@ -207,7 +207,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.13045e-06:0.0322325]
+set xrange [9.08812e-07:0.0272466]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -231,7 +231,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.61039e-06:0.0809129]
+set xrange [1.46826e-06:0.0428687]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -255,7 +255,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.06069e-06:0.0963122]
+set xrange [2.44119e-06:0.0566125]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
