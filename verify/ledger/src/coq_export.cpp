@@ -258,8 +258,8 @@ coq_statement stated(const ex& lhs, const ex& rhs) {
 }
 
 /// A sign lemma: 0 < e for each e of the region -> lhs < 0 (or 0 < lhs). Proof: lhs rewritten as its
-/// factored form (field), each pair of factors made positive by its signs at a point of the region
-/// (nra), and the product's sign from those pairs (nra).
+/// factored form (field), each factor times its sign at a point of the region positive (nra), their
+/// product one factor at a time (Rmult_lt_0_compat), and lhs's sign from that product (nra).
 std::string sign_lemma(const std::string& name, const proof_goal& g) {
   coq_printer p;
   const std::string left = p.term(g.lhs), factored = p.term(g.factored);

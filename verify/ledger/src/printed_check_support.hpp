@@ -27,8 +27,8 @@ struct proof_goal {
   GiNaC::ex lhs, rhs;
   bool holds = false;
   /// A sign goal instead (sign −1: lhs < 0, +1: 0 < lhs; rhs unused) under 0 < e for each e in
-  /// `positive`. Coq proves it by rewriting lhs as `factored` (field) and `nra` on the factors,
-  /// paired by their signs at `inside`, a point of the region.
+  /// `positive`. Coq proves it by rewriting lhs as `factored` (field), each factor times its sign at
+  /// `inside` (a point of the region) positive by `nra`, and their product one factor at a time.
   int sign = 0;
   std::vector<GiNaC::ex> positive{};
   GiNaC::ex factored{};
@@ -36,9 +36,10 @@ struct proof_goal {
   std::vector<GiNaC::ex> squares{};  // nra is told 0 <= e² for each
 };
 
-/// The sign goal `sign` · lhs > 0 on the region 0 < e (e in `positive`), `inside` one of its points:
-/// lhs factored by GiNaC; it holds when every factor keeps its sign at `inside` on the region (our
-/// kernel's Sturm proof says so for the claims that use it; coqc checks it again).
+/// The sign goal `sign` · lhs > 0 on the region 0 < e (e in `positive`), `inside` one of its points,
+/// lhs factored by GiNaC. `holds` says only that `inside` is in the region and the sign is right
+/// there (a sample, not a proof): the claim's exact evidence is our kernel's Sturm proof, and coqc
+/// decides the lemma on the whole region.
 proof_goal sign_goal(const std::string& name, const GiNaC::ex& lhs, int sign, std::vector<GiNaC::ex> positive, GiNaC::exmap inside);
 
 /// The Coq goals of a claim our own kernel proves without reading a printed formula (signs,

@@ -234,6 +234,15 @@ void decide(claim_result& result, const printed_outcome& g, const std::string& c
                 g.proved + (result.note.empty() ? "" : " " + result.note);
 }
 
+/// A claim's Coq files, or why it has none, into its result.
+void record_certificate(claim_result& result, const detail::coq_export& certificate) {
+  result.certificate = certificate.text;
+  result.certificate_lemmas = certificate.lemmas;
+  result.certificate_missing = certificate.not_exported;
+  result.refutation = certificate.refutation;
+  result.refutation_lemmas = certificate.refutation_lemmas;
+}
+
 }  // namespace
 
 bool reads_printed_formula(const std::string& claim_id) { return formula_claims().count(claim_id) > 0; }
@@ -251,10 +260,7 @@ claim_result check_claim(const claim& c, const run_context& ctx) {
       result.certificate_missing = detail::without_coq_statement(c.id, "its exact proof is our kernel's alone: no Coq statement yet");
       return result;
     }
-    const detail::coq_export certificate = detail::coq_certificate(c.id, c.statement, goals->second());
-    result.certificate = certificate.text;
-    result.certificate_lemmas = certificate.lemmas;
-    result.certificate_missing = certificate.not_exported;
+    record_certificate(result, detail::coq_certificate(c.id, c.statement, goals->second()));
     return result;
   }
   if (!ctx.paper) {
@@ -281,14 +287,9 @@ claim_result check_claim(const claim& c, const run_context& ctx) {
                  {"derived_holds", outcome.derived_holds}}}};
   result.printed_seconds = seconds;
   decide(result, outcome, c.id);
-  const detail::coq_export certificate = detail::coq_certificate(c.id, c.statement, outcome.goals);
-  result.certificate = certificate.text;
-  result.certificate_lemmas = certificate.lemmas;
-  result.certificate_missing = certificate.lemmas.empty() && certificate.refutation_lemmas.empty() && outcome.goals.empty()
-                                   ? detail::without_coq_statement(c.id, certificate.not_exported)
-                                   : certificate.not_exported;
-  result.refutation = certificate.refutation;
-  result.refutation_lemmas = certificate.refutation_lemmas;
+  detail::coq_export certificate = detail::coq_certificate(c.id, c.statement, outcome.goals);
+  if (outcome.goals.empty()) certificate.not_exported = detail::without_coq_statement(c.id, certificate.not_exported);
+  record_certificate(result, certificate);
   return result;
 }
 
