@@ -1,13 +1,10 @@
 // Properties of Φ_3 (Phi3): determinant, the elimination route, time reversibility, dependence on
-// ωh alone, and eigenvalues on the unit circle.
+// ωh alone (its eigenvalues: simpson_map_spectrum_props.cpp).
 
 #include "property_support.hpp"
 
 #include <simpson/simpson_elimination.hpp>
 #include <simpson/simpson_map.hpp>
-
-#include <Eigen/Eigenvalues>
-#include <boost/multiprecision/eigen.hpp>
 
 namespace simpson::props {
 namespace {
@@ -55,28 +52,6 @@ SIMPSON_PROPERTY(SimpsonMapProps, DependsOnOmegaHAloneOnceMomentumIsScaled) {
   RC_ASSERT(within("beta/(m omega)", Real(full.beta / m_omega), reduced.beta, Real(32 * eps<Real>() * (1 + x) * abs(reduced.beta))));
   RC_ASSERT(within("gamma m omega", Real(full.gamma * m_omega), reduced.gamma,
                    Real(32 * eps<Real>() * (1 + x * boundary_amplification(par)) * abs(reduced.gamma))));
-}
-
-SIMPSON_PROPERTY(SimpsonMapProps, EigenvaluesAreConjugateOnTheUnitCircle) {
-  using Real = typename Policy::real;
-  const oscillator_parameters<Real> par = parameters<Real>(c);
-  const one_step_matrix<Real> phi = simpson_map(par);
-  // Eigenvalues of S⁻¹ Φ_3 S, S = diag(mω, 1): a similarity, so the same eigenvalues, with entries
-  // of size O(1) instead of (mω)^±1 (Eigen does not balance, and would lose eps·(mω)² otherwise).
-  const Real m_omega = par.m() * par.omega();
-  Eigen::Matrix<Real, 2, 2> scaled;
-  scaled << phi.alpha, Real(phi.beta / m_omega), Real(phi.gamma * m_omega), phi.delta;
-  const Eigen::EigenSolver<Eigen::Matrix<Real, 2, 2>> solver(scaled, false);
-  RC_ASSERT(solver.info() == Eigen::Success);
-  const std::complex<Real> l1 = solver.eigenvalues()(0), l2 = solver.eigenvalues()(1);
-  using std::abs;
-  // Exactly: λ = α ± i sqrt(1 − α²) with Im λ = sqrt(−Δ)/(2a) > 0 on the band. The computed pair is
-  // conjugate; its modulus errs by ~eps ‖Φ‖² / |Im λ| (eigenvalue condition of a non-normal 2×2
-  // whose eigenvalues are 2|Im λ| apart), ‖Φ‖ ≤ 4 on the band.
-  RC_ASSERT(l1.imag() != 0);
-  RC_ASSERT(l1.real() == l2.real() && l1.imag() == -l2.imag());
-  const Real modulus2 = l1.real() * l1.real() + l1.imag() * l1.imag();
-  RC_ASSERT(within("|lambda|^2", modulus2, Real(1), Real(64 * 16 * eps<Real>() * (1 + 1 / abs(l1.imag())))));
 }
 
 }  // namespace

@@ -32,7 +32,7 @@ TEST(AlgebraicSeries, SeriesDivisionInvertsMultiplication) {
   for (int k = 0; k <= 8; ++k) EXPECT_EQ(geometric[k][0], rational(1)) << k;
   EXPECT_TRUE(geometric * one_minus_t == series(1));
   EXPECT_THROW(series(1) / t, std::domain_error);
-  EXPECT_EQ(to_string(series(rational(1, 3))[0][0]), "1/3");
+  EXPECT_EQ(simpson::to_string(series(rational(1, 3))[0][0]), "1/3");
 }
 
 }  // namespace

@@ -8,8 +8,6 @@
 
 #include <gtest/gtest.h>
 
-#include <chrono>
-
 namespace simpson::verify {
 namespace {
 
@@ -32,7 +30,6 @@ verdict verdict_of(const std::string& id, const paper_reading& paper) {
 }
 
 TEST(PaperReading, EveryFormulaOfTheEmbeddedPaperParsesAndKeepsItsVerdict) {
-  const auto start = std::chrono::steady_clock::now();
   const paper_reading paper = read_paper(embedded_paper());
   EXPECT_EQ(paper.formulas.size(), ledger_formulas().size());
   std::size_t read = 0;
@@ -52,7 +49,6 @@ TEST(PaperReading, EveryFormulaOfTheEmbeddedPaperParsesAndKeepsItsVerdict) {
     EXPECT_TRUE(reads_printed_formula(id)) << id;
   }
   EXPECT_EQ(paper.at("Phi3").source.line, 488);
-  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 30.0);
 }
 
 TEST(PaperReading, DisplaysSplitIntoTheirEquations) {

@@ -3,6 +3,7 @@
 #include <simpson/verify/report_directory.hpp>
 #include <simpson/verify/sha256.hpp>
 
+#include "build_flags.hpp"
 #include "git_commit.hpp"
 
 #include <Eigen/Core>

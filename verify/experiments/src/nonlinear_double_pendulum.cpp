@@ -116,7 +116,7 @@ void add_double_pendulum(const nonlinear_settings& s, section_result& out) {
                  {"largest relative change", true}, {}, "center right"};
   series eq("q", line_style::lines_points, 1, 7), ep("p", line_style::lines_points, 2, 5, 2);
   series hd("H_d (conserved)", line_style::lines_points, 3, 9), hh("H", line_style::lines_points, 4, 13, 2);
-  visit_floating(prec, [&](auto tag) {
+  visit_mpfr(s.mpfr_digits, [&](auto tag) {
     using Real = typename decltype(tag)::type;
     const auto [M, K] = double_pendulum<Real>();
     const dense_vector<Real> y0 = start_state<Real>();

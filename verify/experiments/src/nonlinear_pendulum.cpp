@@ -126,7 +126,7 @@ void add_nonlinear_pendulum(const nonlinear_settings& s, section_result& out) {
   panel energies{"Relative energy error, double", {"t", true}, {"per-window max |H - H_0|/H_0", true}, {}, "bottom right"};
   double first_ok_N = 0;
   series error_q("|q_N - q(T)|", line_style::lines_points, 1, 7), error_p("|p_N - p(T)|", line_style::lines_points, 2, 5, 2);
-  visit_floating(prec, [&](auto tag) {
+  visit_mpfr(s.mpfr_digits, [&](auto tag) {
     using Real = typename decltype(tag)::type;
     std::vector<pendulum_run<Real>> runs;
     std::vector<Real> eq, ep;

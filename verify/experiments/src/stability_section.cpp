@@ -65,7 +65,7 @@ table endpoint_table(const stability_report& report, long long steps) {
   for (const long long j : sampled) {
     t.columns.push_back({fmt::format("max_amplitude_ratio_{}", j), fmt::format("max |y|/A by j = {}", j)});
   }
-  visit_floating(precision::mpfr_digits(50), [&](auto tag) {
+  visit_mpfr(50, [&](auto tag) {
     using Real = typename decltype(tag)::type;
     using std::abs;
     using std::sqrt;
@@ -131,7 +131,7 @@ std::vector<std::string> exact_truncation_coefficients(const std::vector<double>
   for (const double th : omega_h) smallest = std::min(smallest, th);
   const unsigned digits = std::max(200u, run_digits + 40 + static_cast<unsigned>(std::ceil(4 * std::max(0.0, -std::log10(smallest)))));
   std::vector<std::string> out;
-  visit_floating(precision::mpfr_digits(std::min(digits, precision::max_mpfr_digits)), [&](auto tag) {
+  visit_mpfr(std::min(digits, precision::max_mpfr_digits), [&](auto tag) {
     using Real = typename decltype(tag)::type;
     using std::cos;
     for (const double th : omega_h) {

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace simpson::verify {
@@ -47,6 +48,14 @@ decltype(auto) visit_floating(const precision& p, F&& f) {
       return f(tag);
     }
   });
+}
+
+/// f(precision_tag<mpfr>{}) with `digits` working digits, for the parts that always run in mpfr:
+/// unlike visit_floating it compiles f for mpfr alone, not for every floating precision.
+template <class F>
+decltype(auto) visit_mpfr(unsigned digits, F&& f) {
+  const scoped_mpfr_digits scope(precision::mpfr_digits(digits).digits10());
+  return std::forward<F>(f)(precision_tag<mpfr>{});
 }
 
 /// A rational rounded to Real at the working precision: numerator and denominator are each rounded
