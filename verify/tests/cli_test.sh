@@ -5,7 +5,7 @@
 #   cli_test.sh BIN beyond-scene  the embedded beyond scene, whole (its nonlinear section takes most
 #                                 of the time): a ctest test of its own, so that it runs beside the rest
 set -u
-bin="$1"
+bin="$(realpath "$1")"
 part="${2:-main}"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -27,6 +27,8 @@ check() {  # check NAME EXPECTED_CODE ARGS...
     passes=$((passes + 1))
   fi
 }
+
+fail() { echo "FAIL $1"; failures=$((failures + 1)); }
 
 if [ "$part" = beyond-scene ]; then
   check "beyond scene" 0 --scene beyond --quiet --out "$work/beyond"
@@ -125,11 +127,43 @@ else
   echo "ok   SIGINT during an experiment section stops it with 130 and writes nothing"
   passes=$((passes + 1))
 fi
+# A terminal's Ctrl-C goes to the whole process group (gnuplot included). Each moment below, the
+# run is its own group (setsid) and the group gets SIGINT: the run exits 130 and leaves the previous
+# report byte-identical, or, when the signal came after the report was swapped into place, exits 0
+# with the new report complete. One moment is while gnuplot draws (waited for with pgrep).
+"$bin" --scene quick --out "$work/group" >/dev/null 2>&1 || fail "process group: the first run failed"
+snapshot() { (cd "$work/group" && find . -type f | sort | xargs sha256sum); }
+before=$(snapshot)
+group_interrupt() {  # group_interrupt WHEN: a delay in seconds; "gnuplot" (while it draws); "staging" (once the report is staged)
+  setsid "$bin" --scene quick --samples 1000 --seed 7 --out "$work/group" >"$work/out" 2>"$work/err" &
+  local pid=$!
+  case "$1" in
+    # gnuplot runs while its <plot>.log exists in the staging directory (made before exec, removed after)
+    gnuplot|gnuplot-alone) while kill -0 "$pid" 2>/dev/null && ! compgen -G "$work/.group.*.staging/*.log" >/dev/null; do :; done
+             compgen -G "$work/.group.*.staging/*.log" >/dev/null || fail "process group: gnuplot never seen running" ;;
+    staging) while kill -0 "$pid" 2>/dev/null && ! compgen -G "$work/.group.*.staging" >/dev/null; do :; done ;;
+    *) sleep "$1" ;;
+  esac
+  if [ "$1" = gnuplot-alone ]; then kill -INT "$pid" 2>/dev/null; else kill -INT -- "-$pid" 2>/dev/null; fi
+  wait "$pid"
+  local got=$?
+  if [ "$got" = 130 ]; then
+    [ "$(snapshot)" = "$before" ] && grep -q "interrupted (SIGINT)" "$work/err" && ! ls -A "$work" | grep -q 'staging\|\.old$' &&
+      { echo "ok   SIGINT to the process group ($1): 130, previous report byte-identical"; passes=$((passes + 1)); } ||
+      fail "SIGINT to the process group ($1): exit 130 but the previous report changed or staging left: $(ls -A "$work" | grep 'staging\|old')"
+  elif [ "$got" = 0 ] && [ "${1#gnuplot}" = "$1" ] && grep -q '"seed": 7' "$work/group/report.json" && [ -f "$work/group/stability_extreme.png" ]; then
+    echo "ok   SIGINT to the process group ($1): came after the swap, new report complete"; passes=$((passes + 1))
+    before=$(snapshot)
+  else
+    fail "SIGINT to the process group ($1): exit $got, stderr: $(tail -2 "$work/err")"
+  fi
+}
+for moment in 0.3 staging gnuplot 0.6 gnuplot gnuplot-alone; do group_interrupt "$moment"; done
+
 # The quick scene's report: every format, and plots in both SVG and PNG.
 for f in report.json report.md report.html table1.csv work_precision.csv figure1.svg figure1.png work_precision_time.svg; do
   [ -s "$work/quick/$f" ] || { echo "FAIL quick: $f missing or empty"; failures=$((failures + 1)); }
 done
-fail() { echo "FAIL $1"; failures=$((failures + 1)); }
 # --out: a second, smaller run into the same directory replaces the report whole, so no file of
 # the first run survives; no staging directory is left beside it.
 echo '{"name": "small", "stability": {"precisions": ["double"], "omega_h": [1], "masses": [1], "stiff_omegas": [1], "steps": 10}}' >"$work/small.json"
@@ -213,6 +247,50 @@ check "compare missing" 2 compare "$reference" "$work/no-such-report"
 check "list claims" 0 --list-claims
 check "version" 0 --version
 grep -Eq '^simpson-verify [0-9]+\.[0-9]+\.[0-9]+ \(commit ([0-9a-f]{40}|unknown), ' "$work/out" || fail "version: no commit: $(cat "$work/out")"
+
+# A selection never replaces a fuller report by default: without --out it writes a directory named
+# after it; an explicit --out holding a fuller report is refused, naming --out; an empty --out too.
+(cd "$work" && "$bin" --claims phi3-det --precisions double --quiet >/dev/null 2>&1) || fail "selection default out: run failed"
+[ -f "$work/reports/out/paper-claims-phi3-det/report.json" ] || fail "selection default out: not in reports/out/paper-claims-phi3-det: $(ls "$work/reports/out" 2>&1)"
+check "selection onto a fuller report (setup)" 0 --scene quick --no-timing --quiet --out "$work/quick-full"
+before=$(cd "$work/quick-full" && find . -type f | sort | xargs sha256sum)
+check "selection onto a fuller report" 2 --scene quick --claims phi3-det --out "$work/quick-full"
+grep -q -- "--out '$work/quick-full': holds a fuller report (6 claims, 4 sections)" "$work/err" || fail "fuller report: not named: $(cat "$work/err")"
+[ "$(cd "$work/quick-full" && find . -type f | sort | xargs sha256sum)" = "$before" ] || fail "fuller report: touched"
+check "empty --out" 2 --claims phi3-det --out ""
+grep -q -- "--out '': an empty directory name" "$work/err" || fail "empty --out: not named: $(cat "$work/err")"
+# compare --subset: the headline claims against the committed reference.
+check "headline claims" 0 --claims phi3-det,discriminant-factorization,hd-invariance,truncation-1440 --no-timing --quiet --out "$work/headline"
+check "compare --subset" 0 compare --subset "$reference" "$work/headline"
+grep -q '^the reports agree$' "$work/out" || fail "compare --subset: $(tail -5 "$work/out")"
+check "compare without --subset" 1 compare "$reference" "$work/headline"
+sed 's/"verdict": "holds"/"verdict": "fails"/' "$work/headline/report.json" >"$work/headline-altered.json"
+check "compare --subset altered" 1 compare --subset "$reference" "$work/headline-altered.json"
+# The console: an erratum's correction, and what exit 0 with a failure means.
+check "errata on the console" 0 --claims gamma-determinant,table-values --precisions double --out "$work/console"
+grep -q '^           corrected: det Gamma = (1/4)' "$work/out" || fail "errata on the console: no corrected line: $(cat "$work/out")"
+grep -q '^Exit code 0: every verdict is the one the ledger records as expected.*1 expected failure (table-values' "$work/out" ||
+  fail "console: exit 0 with a failure not explained: $(tail -4 "$work/out")"
+grep -q 'Phi3 at the paper' "$work/out" && fail "console: a selection printed the Phi3 table"
+grep -q '^## Failures' "$work/console/report.md" && grep -q '^### table-values' "$work/console/report.md" || fail "report: no Failures section"
+sed -n '/^## Notes on claims that hold/,/^## /p' "$work/console/report.md" | grep -q 'table-values' && fail "report: table-values filed under claims that hold"
+# --paper: what the report calls printed comes from the file read (1440 changed to 1400 there).
+sed 's/\\over1440}/\\over1400}/' "$paper_src" >"$work/p1400.tex"
+cmp -s "$paper_src" "$work/p1400.tex" && fail "1400 copy: sed changed nothing"
+check "paper 1400" 1 --claims truncation-1440 --precisions double,rational --paper "$work/p1400.tex" --out "$work/p1400"
+grep -q '^- Printed ('"$work"'/p1400.tex, line.*1400' "$work/p1400/report.md" || fail "paper 1400: Printed does not quote the file: $(grep -m2 'Printed' "$work/p1400/report.md")"
+grep -q 'Printed ('"$work"'/p1400.tex.*1400' "$work/p1400/report.junit.xml" || fail "paper 1400: JUnit does not quote the file"
+grep -q '1440}' "$work/p1400/report.junit.xml" && fail "paper 1400: JUnit quotes the embedded 1440"
+# An empty paper, a directory: bad input that says what is wrong.
+: >"$work/empty.tex"
+check "empty paper" 2 --claims phi3-det --paper "$work/empty.tex" --out "$work/none-paper5"
+grep -q "the file is empty" "$work/err" || fail "empty paper: $(cat "$work/err")"
+check "paper is a directory" 2 --claims phi3-det --paper "$work" --out "$work/none-paper6"
+grep -q "is a directory" "$work/err" || fail "paper directory: $(cat "$work/err")"
+# --help: every embedded scene, integers typed as such.
+check "help" 0 --help
+grep -q 'embedded scene name (beyond, paper, quick)' "$work/out" || fail "help: scenes not all listed"
+grep -q -- '--samples UINT' "$work/out" || fail "help: --samples not typed UINT"
 
 # --precisions reaches the sections that have precisions, or is refused with the reason.
 check "precisions to sections" 0 --scene quick --sections work_precision,stability --precisions double,mpfr:30 --no-timing --out "$work/prec"

@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <map>
 #include <sstream>
 
 namespace simpson::verify {
@@ -49,6 +51,66 @@ TEST(JUnit, ParsesAndCountsEveryClaimAndTable) {
   EXPECT_EQ(suites, 1 + r.sections.size());
   EXPECT_EQ(root.get<std::size_t>("<xmlattr>.failures"), failures);
   EXPECT_GE(failures, 1u);
+}
+
+// The JUnit view agrees with the exit code: the quick scene's masses 1e-300 and 1e300 underflow in
+// double (a fault of the stability section's table, a finding), and its errata and an expected
+// failure are verdicts as expected: exit 0 and no failure. Errata carry their verdict as a
+// property; the expected failure is skipped with its reason.
+TEST(JUnit, FailuresAreExactlyWhatMakesTheExitCodeNonZero) {
+  scene s = load_scene("quick");
+  s.claims = {"phi3-det", "gamma-system", "table-values"};
+  s.experiments.table1.reset();
+  s.experiments.work_precision.reset();
+  s.experiments.long_time.reset();
+  const run_record r = run(s);
+  ASSERT_EQ(run_exit_code(r), 0);
+  const boost::property_tree::ptree tree = parsed(report_junit(r));
+  const auto& root = tree.get_child("testsuites");
+  EXPECT_EQ(root.get<std::size_t>("<xmlattr>.failures"), 0u);
+  EXPECT_EQ(root.get<std::size_t>("<xmlattr>.errors"), 0u);
+  EXPECT_EQ(root.get<std::size_t>("<xmlattr>.skipped"), 1u);
+  std::map<std::string, std::string> verdicts;
+  bool fault_recorded = false;
+  for (const auto& [tag, suite] : root) {
+    if (tag != "testsuite") continue;
+    for (const auto& [case_tag, testcase] : suite) {
+      if (case_tag != "testcase") continue;
+      EXPECT_EQ(testcase.count("failure"), 0u);
+      const std::string name = testcase.get<std::string>("<xmlattr>.name");
+      for (const auto& [p_tag, property] : testcase.get_child("properties")) {
+        if (property.get<std::string>("<xmlattr>.name") == "verdict") verdicts[name] = property.get<std::string>("<xmlattr>.value");
+        if (property.get<std::string>("<xmlattr>.name") == "faults" && property.get<std::string>("<xmlattr>.value") != "0") {
+          fault_recorded = true;
+        }
+      }
+      if (name == "table-values") {
+        EXPECT_EQ(testcase.get<std::string>("skipped.<xmlattr>.message").rfind("expected failure", 0), 0u);
+      }
+      if (name == "gamma-system") {
+        EXPECT_NE(testcase.get<std::string>("system-out").find("Corrected:"), std::string::npos);
+        EXPECT_NE(testcase.get<std::string>("system-out").find("\\gamma^2-1"), std::string::npos);  // the TeX read
+      }
+    }
+  }
+  EXPECT_EQ(verdicts["gamma-system"], "erratum");
+  EXPECT_EQ(verdicts["table-values"], "fails");
+  EXPECT_EQ(verdicts["phi3-det"], "holds");
+  EXPECT_TRUE(fault_recorded) << "the underflow of the extreme masses is recorded";
+}
+
+// A check that throws is an error of its testcase (exit code 3).
+TEST(JUnit, AThrowingCheckIsAnError) {
+  scene s = load_scene("quick");
+  s.claims = {"phi3-det"};
+  s.experiments = {};
+  ::setenv("SIMPSON_VERIFY_INJECT_FAULT", "phi3-det", 1);
+  const run_record r = run(s);
+  ::unsetenv("SIMPSON_VERIFY_INJECT_FAULT");
+  ASSERT_EQ(run_exit_code(r), 3);
+  const boost::property_tree::ptree tree = parsed(report_junit(r));
+  EXPECT_EQ(tree.get<std::size_t>("testsuites.<xmlattr>.errors"), 1u);
+  EXPECT_EQ(tree.get<std::size_t>("testsuites.<xmlattr>.failures"), 0u);
 }
 
 TEST(JUnit, EscapesWhatXmlReserves) {

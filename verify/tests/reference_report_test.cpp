@@ -50,7 +50,10 @@ TEST(ReferenceReport, PaperSceneReproducesTheCommittedReport) {
     for (const json& file : plot["files"]) EXPECT_TRUE(std::filesystem::exists(dir / file.get<std::string>())) << file;
   }
   EXPECT_TRUE(std::filesystem::exists(dir / "report.html"));
-  EXPECT_NE(read(dir / "report.html").find("data:image/svg+xml;base64,"), std::string::npos);
+  // The page shows the plots beside it (not embedded: it stays small), and its JUnit is green.
+  EXPECT_NE(read(dir / "report.html").find("<img src=\"figure1.svg\""), std::string::npos);
+  EXPECT_LT(std::filesystem::file_size(dir / "report.html"), 400'000u);
+  EXPECT_NE(read(dir / "report.junit.xml").find("failures=\"0\" errors=\"0\""), std::string::npos);
   // Every table of the committed page is a table (a '|' left unescaped once made one a paragraph).
   test::expect_html_tables_rendered(dir);
   test::expect_no_bare_non_finite(dir);

@@ -1,12 +1,12 @@
-# |Phase error| against time (log-log), measured (solid) and predicted by the characteristic roots (dashed)
+# |Phase error| against time (log-log), measured (markers) and predicted by the characteristic roots (lines)
 # Redraw with: gnuplot long_time_phase.gp (in this directory)
-set terminal svg size 1370,450 dynamic enhanced font 'Sans,10' background rgb 'white'
+set terminal svg size 1480,450 dynamic enhanced font 'Sans,13' background rgb 'white'
 set output 'long_time_phase.svg'
 set multiplot
 set origin 0.0000,0.0000
-set size 0.4015,1.0000
+set size 0.3716,1.0000
 set title 'Phase error, double'
-set xlabel 't (units of 1/omega)'
+set xlabel 't (units of 1/ω)'
 set ylabel '|phase error| (rad)'
 set logscale x
 set format x '10^{%L}'
@@ -17,18 +17,18 @@ set xrange [7943.28:1.25893e+06]
 set xtics autofreq
 set mxtics default
 set yrange [0.000166609:1734.37]
-set ytics autofreq
-set mytics default
-plot 'long_time_phase.dat' index 0 u 1:2 w l lw 2 dt 1 lc rgb '#d62728' t 'simpson-H_d measured', \
-     'long_time_phase.dat' index 1 u 1:2 w l lw 1.2 dt 2 lc rgb '#d62728' t 'simpson-H_d predicted', \
-     'long_time_phase.dat' index 2 u 1:2 w l lw 2 dt 1 lc rgb '#1f77b4' t 'newmark-H measured', \
-     'long_time_phase.dat' index 3 u 1:2 w l lw 1.2 dt 2 lc rgb '#1f77b4' t 'newmark-H predicted', \
-     'long_time_phase.dat' index 4 u 1:2 w l lw 2 dt 4 lc rgb '#17becf' t 'rk4-H measured', \
-     'long_time_phase.dat' index 5 u 1:2 w l lw 1.2 dt 2 lc rgb '#17becf' t 'rk4-H predicted'
-set origin 0.4015,0.0000
-set size 0.4015,1.0000
+set ytics 1e2
+set mytics 1
+plot 'long_time_phase.dat' index 0 u 1:2 w p pt 7 ps 1.6 lc rgb '#d62728' t 'simpson-H_d measured', \
+     'long_time_phase.dat' index 1 u 1:2 w l lw 2 dt 1 lc rgb '#d62728' t 'simpson-H_d predicted', \
+     'long_time_phase.dat' index 2 u 1:2 w p pt 5 ps 1.6 lc rgb '#1f77b4' t 'newmark-H measured', \
+     'long_time_phase.dat' index 3 u 1:2 w l lw 2 dt 1 lc rgb '#1f77b4' t 'newmark-H predicted', \
+     'long_time_phase.dat' index 4 u 1:2 w p pt 8 ps 1.6 lc rgb '#17becf' t 'rk4-H measured', \
+     'long_time_phase.dat' index 5 u 1:2 w l lw 2 dt 1 lc rgb '#17becf' t 'rk4-H predicted'
+set origin 0.3716,0.0000
+set size 0.3716,1.0000
 set title 'Phase error, mpfr:50'
-set xlabel 't (units of 1/omega)'
+set xlabel 't (units of 1/ω)'
 set ylabel '|phase error| (rad)'
 set logscale x
 set format x '10^{%L}'
@@ -39,16 +39,16 @@ set xrange [79.4328:12589.3]
 set xtics autofreq
 set mxtics default
 set yrange [1.66635e-06:17.3436]
-set ytics autofreq
-set mytics default
-plot 'long_time_phase.dat' index 6 u 1:2 w l lw 2 dt 1 lc rgb '#d62728' t 'simpson-H_d measured', \
-     'long_time_phase.dat' index 7 u 1:2 w l lw 1.2 dt 2 lc rgb '#d62728' t 'simpson-H_d predicted', \
-     'long_time_phase.dat' index 8 u 1:2 w l lw 2 dt 1 lc rgb '#1f77b4' t 'newmark-H measured', \
-     'long_time_phase.dat' index 9 u 1:2 w l lw 1.2 dt 2 lc rgb '#1f77b4' t 'newmark-H predicted', \
-     'long_time_phase.dat' index 10 u 1:2 w l lw 2 dt 4 lc rgb '#17becf' t 'rk4-H measured', \
-     'long_time_phase.dat' index 11 u 1:2 w l lw 1.2 dt 2 lc rgb '#17becf' t 'rk4-H predicted'
-set origin 0.8029,0
-set size 0.1971,1
+set ytics 1e2
+set mytics 1
+plot 'long_time_phase.dat' index 6 u 1:2 w p pt 7 ps 1.6 lc rgb '#d62728' t 'simpson-H_d measured', \
+     'long_time_phase.dat' index 7 u 1:2 w l lw 2 dt 1 lc rgb '#d62728' t 'simpson-H_d predicted', \
+     'long_time_phase.dat' index 8 u 1:2 w p pt 5 ps 1.6 lc rgb '#1f77b4' t 'newmark-H measured', \
+     'long_time_phase.dat' index 9 u 1:2 w l lw 2 dt 1 lc rgb '#1f77b4' t 'newmark-H predicted', \
+     'long_time_phase.dat' index 10 u 1:2 w p pt 8 ps 1.6 lc rgb '#17becf' t 'rk4-H measured', \
+     'long_time_phase.dat' index 11 u 1:2 w l lw 2 dt 1 lc rgb '#17becf' t 'rk4-H predicted'
+set origin 0.7432,0
+set size 0.2568,1
 unset title
 unset xlabel
 unset ylabel
@@ -57,24 +57,24 @@ unset border
 unset tics
 set xrange [0:1]
 set yrange [0:1]
-set key at screen 0.8129,0.97 left top Left reverse samplen 3 spacing 1.3 font ',9'
-plot NaN w l lw 2 dt 1 lc rgb '#d62728' t 'simpson-H_d measured', \
-     NaN w l lw 1.2 dt 2 lc rgb '#d62728' t 'simpson-H_d predicted', \
-     NaN w l lw 2 dt 1 lc rgb '#1f77b4' t 'newmark-H measured', \
-     NaN w l lw 1.2 dt 2 lc rgb '#1f77b4' t 'newmark-H predicted', \
-     NaN w l lw 2 dt 4 lc rgb '#17becf' t 'rk4-H measured', \
-     NaN w l lw 1.2 dt 2 lc rgb '#17becf' t 'rk4-H predicted'
+set key at screen 0.7532,0.97 left top Left reverse samplen 3 spacing 1.3
+plot NaN w p pt 7 ps 1.6 lc rgb '#d62728' t 'simpson-H_d measured', \
+     NaN w l lw 2 dt 1 lc rgb '#d62728' t 'simpson-H_d predicted', \
+     NaN w p pt 5 ps 1.6 lc rgb '#1f77b4' t 'newmark-H measured', \
+     NaN w l lw 2 dt 1 lc rgb '#1f77b4' t 'newmark-H predicted', \
+     NaN w p pt 8 ps 1.6 lc rgb '#17becf' t 'rk4-H measured', \
+     NaN w l lw 2 dt 1 lc rgb '#17becf' t 'rk4-H predicted'
 unset multiplot
 
 unset output
 reset
-set terminal pngcairo size 1370,450 enhanced font 'Sans,10' background rgb 'white'
+set terminal pngcairo size 1480,450 enhanced font 'Sans,13' background rgb 'white'
 set output 'long_time_phase.png'
 set multiplot
 set origin 0.0000,0.0000
-set size 0.4015,1.0000
+set size 0.3716,1.0000
 set title 'Phase error, double'
-set xlabel 't (units of 1/omega)'
+set xlabel 't (units of 1/ω)'
 set ylabel '|phase error| (rad)'
 set logscale x
 set format x '10^{%L}'
@@ -85,18 +85,18 @@ set xrange [7943.28:1.25893e+06]
 set xtics autofreq
 set mxtics default
 set yrange [0.000166609:1734.37]
-set ytics autofreq
-set mytics default
-plot 'long_time_phase.dat' index 0 u 1:2 w l lw 2 dt 1 lc rgb '#d62728' t 'simpson-H_d measured', \
-     'long_time_phase.dat' index 1 u 1:2 w l lw 1.2 dt 2 lc rgb '#d62728' t 'simpson-H_d predicted', \
-     'long_time_phase.dat' index 2 u 1:2 w l lw 2 dt 1 lc rgb '#1f77b4' t 'newmark-H measured', \
-     'long_time_phase.dat' index 3 u 1:2 w l lw 1.2 dt 2 lc rgb '#1f77b4' t 'newmark-H predicted', \
-     'long_time_phase.dat' index 4 u 1:2 w l lw 2 dt 4 lc rgb '#17becf' t 'rk4-H measured', \
-     'long_time_phase.dat' index 5 u 1:2 w l lw 1.2 dt 2 lc rgb '#17becf' t 'rk4-H predicted'
-set origin 0.4015,0.0000
-set size 0.4015,1.0000
+set ytics 1e2
+set mytics 1
+plot 'long_time_phase.dat' index 0 u 1:2 w p pt 7 ps 1.6 lc rgb '#d62728' t 'simpson-H_d measured', \
+     'long_time_phase.dat' index 1 u 1:2 w l lw 2 dt 1 lc rgb '#d62728' t 'simpson-H_d predicted', \
+     'long_time_phase.dat' index 2 u 1:2 w p pt 5 ps 1.6 lc rgb '#1f77b4' t 'newmark-H measured', \
+     'long_time_phase.dat' index 3 u 1:2 w l lw 2 dt 1 lc rgb '#1f77b4' t 'newmark-H predicted', \
+     'long_time_phase.dat' index 4 u 1:2 w p pt 8 ps 1.6 lc rgb '#17becf' t 'rk4-H measured', \
+     'long_time_phase.dat' index 5 u 1:2 w l lw 2 dt 1 lc rgb '#17becf' t 'rk4-H predicted'
+set origin 0.3716,0.0000
+set size 0.3716,1.0000
 set title 'Phase error, mpfr:50'
-set xlabel 't (units of 1/omega)'
+set xlabel 't (units of 1/ω)'
 set ylabel '|phase error| (rad)'
 set logscale x
 set format x '10^{%L}'
@@ -107,16 +107,16 @@ set xrange [79.4328:12589.3]
 set xtics autofreq
 set mxtics default
 set yrange [1.66635e-06:17.3436]
-set ytics autofreq
-set mytics default
-plot 'long_time_phase.dat' index 6 u 1:2 w l lw 2 dt 1 lc rgb '#d62728' t 'simpson-H_d measured', \
-     'long_time_phase.dat' index 7 u 1:2 w l lw 1.2 dt 2 lc rgb '#d62728' t 'simpson-H_d predicted', \
-     'long_time_phase.dat' index 8 u 1:2 w l lw 2 dt 1 lc rgb '#1f77b4' t 'newmark-H measured', \
-     'long_time_phase.dat' index 9 u 1:2 w l lw 1.2 dt 2 lc rgb '#1f77b4' t 'newmark-H predicted', \
-     'long_time_phase.dat' index 10 u 1:2 w l lw 2 dt 4 lc rgb '#17becf' t 'rk4-H measured', \
-     'long_time_phase.dat' index 11 u 1:2 w l lw 1.2 dt 2 lc rgb '#17becf' t 'rk4-H predicted'
-set origin 0.8029,0
-set size 0.1971,1
+set ytics 1e2
+set mytics 1
+plot 'long_time_phase.dat' index 6 u 1:2 w p pt 7 ps 1.6 lc rgb '#d62728' t 'simpson-H_d measured', \
+     'long_time_phase.dat' index 7 u 1:2 w l lw 2 dt 1 lc rgb '#d62728' t 'simpson-H_d predicted', \
+     'long_time_phase.dat' index 8 u 1:2 w p pt 5 ps 1.6 lc rgb '#1f77b4' t 'newmark-H measured', \
+     'long_time_phase.dat' index 9 u 1:2 w l lw 2 dt 1 lc rgb '#1f77b4' t 'newmark-H predicted', \
+     'long_time_phase.dat' index 10 u 1:2 w p pt 8 ps 1.6 lc rgb '#17becf' t 'rk4-H measured', \
+     'long_time_phase.dat' index 11 u 1:2 w l lw 2 dt 1 lc rgb '#17becf' t 'rk4-H predicted'
+set origin 0.7432,0
+set size 0.2568,1
 unset title
 unset xlabel
 unset ylabel
@@ -125,13 +125,13 @@ unset border
 unset tics
 set xrange [0:1]
 set yrange [0:1]
-set key at screen 0.8129,0.97 left top Left reverse samplen 3 spacing 1.3 font ',9'
-plot NaN w l lw 2 dt 1 lc rgb '#d62728' t 'simpson-H_d measured', \
-     NaN w l lw 1.2 dt 2 lc rgb '#d62728' t 'simpson-H_d predicted', \
-     NaN w l lw 2 dt 1 lc rgb '#1f77b4' t 'newmark-H measured', \
-     NaN w l lw 1.2 dt 2 lc rgb '#1f77b4' t 'newmark-H predicted', \
-     NaN w l lw 2 dt 4 lc rgb '#17becf' t 'rk4-H measured', \
-     NaN w l lw 1.2 dt 2 lc rgb '#17becf' t 'rk4-H predicted'
+set key at screen 0.7532,0.97 left top Left reverse samplen 3 spacing 1.3
+plot NaN w p pt 7 ps 1.6 lc rgb '#d62728' t 'simpson-H_d measured', \
+     NaN w l lw 2 dt 1 lc rgb '#d62728' t 'simpson-H_d predicted', \
+     NaN w p pt 5 ps 1.6 lc rgb '#1f77b4' t 'newmark-H measured', \
+     NaN w l lw 2 dt 1 lc rgb '#1f77b4' t 'newmark-H predicted', \
+     NaN w p pt 8 ps 1.6 lc rgb '#17becf' t 'rk4-H measured', \
+     NaN w l lw 2 dt 1 lc rgb '#17becf' t 'rk4-H predicted'
 unset multiplot
 
 unset output

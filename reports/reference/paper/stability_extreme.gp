@@ -1,12 +1,12 @@
 # Correct significant digits of the truncation coefficient c and of H_d against ωh, one panel per precision (each with its own digits axis)
 # Redraw with: gnuplot stability_extreme.gp (in this directory)
-set terminal svg size 1470,660 dynamic enhanced font 'Sans,10' background rgb 'white'
+set terminal svg size 1580,660 dynamic enhanced font 'Sans,14' background rgb 'white'
 set output 'stability_extreme.svg'
 set multiplot
 set origin 0.0000,0.5000
-set size 0.2721,0.5000
+set size 0.2532,0.5000
 set title 'double'
-set xlabel 'omega h (dimensionless)'
+set xlabel 'ωh (dimensionless)'
 set ylabel 'correct significant digits'
 set logscale x
 set format x '10^{%L}'
@@ -14,16 +14,16 @@ unset logscale y
 set format y '%g'
 unset key
 set xrange [3.78131e-09:7.40484]
-set xtics autofreq
-set mxtics default
+set xtics 1e2
+set mxtics 1
 set yrange [0:16.2]
-plot 'stability_extreme.dat' index 0 u 1:2 w lp pt 7 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
-     'stability_extreme.dat' index 1 u 1:2 w lp pt 6 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
-     'stability_extreme.dat' index 2 u 1:2 w l lw 1.2 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
-set origin 0.2721,0.5000
-set size 0.2721,0.5000
+plot 'stability_extreme.dat' index 0 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
+     'stability_extreme.dat' index 1 u 1:2 w lp pt 6 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
+     'stability_extreme.dat' index 2 u 1:2 w l lw 1.5 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
+set origin 0.2532,0.5000
+set size 0.2532,0.5000
 set title 'long double'
-set xlabel 'omega h (dimensionless)'
+set xlabel 'ωh (dimensionless)'
 set ylabel 'correct significant digits'
 set logscale x
 set format x '10^{%L}'
@@ -31,16 +31,16 @@ unset logscale y
 set format y '%g'
 unset key
 set xrange [3.78131e-09:7.40484]
-set xtics autofreq
-set mxtics default
+set xtics 1e2
+set mxtics 1
 set yrange [0:19.44]
-plot 'stability_extreme.dat' index 3 u 1:2 w lp pt 7 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
-     'stability_extreme.dat' index 4 u 1:2 w lp pt 6 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
-     'stability_extreme.dat' index 5 u 1:2 w l lw 1.2 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
-set origin 0.5442,0.5000
-set size 0.2721,0.5000
+plot 'stability_extreme.dat' index 3 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
+     'stability_extreme.dat' index 4 u 1:2 w lp pt 6 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
+     'stability_extreme.dat' index 5 u 1:2 w l lw 1.5 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
+set origin 0.5063,0.5000
+set size 0.2532,0.5000
 set title 'float128'
-set xlabel 'omega h (dimensionless)'
+set xlabel 'ωh (dimensionless)'
 set ylabel 'correct significant digits'
 set logscale x
 set format x '10^{%L}'
@@ -48,16 +48,16 @@ unset logscale y
 set format y '%g'
 unset key
 set xrange [3.78131e-09:7.40484]
-set xtics autofreq
-set mxtics default
+set xtics 1e2
+set mxtics 1
 set yrange [0:35.64]
-plot 'stability_extreme.dat' index 6 u 1:2 w lp pt 7 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
-     'stability_extreme.dat' index 7 u 1:2 w lp pt 6 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
-     'stability_extreme.dat' index 8 u 1:2 w l lw 1.2 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
+plot 'stability_extreme.dat' index 6 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
+     'stability_extreme.dat' index 7 u 1:2 w lp pt 6 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
+     'stability_extreme.dat' index 8 u 1:2 w l lw 1.5 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
 set origin 0.0000,0.0000
-set size 0.2721,0.5000
+set size 0.2532,0.5000
 set title 'mpfr:50'
-set xlabel 'omega h (dimensionless)'
+set xlabel 'ωh (dimensionless)'
 set ylabel 'correct significant digits'
 set logscale x
 set format x '10^{%L}'
@@ -65,16 +65,16 @@ unset logscale y
 set format y '%g'
 unset key
 set xrange [3.78131e-09:7.40484]
-set xtics autofreq
-set mxtics default
+set xtics 1e2
+set mxtics 1
 set yrange [0:54]
-plot 'stability_extreme.dat' index 9 u 1:2 w lp pt 7 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
-     'stability_extreme.dat' index 10 u 1:2 w lp pt 6 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
-     'stability_extreme.dat' index 11 u 1:2 w l lw 1.2 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
-set origin 0.2721,0.0000
-set size 0.2721,0.5000
+plot 'stability_extreme.dat' index 9 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
+     'stability_extreme.dat' index 10 u 1:2 w lp pt 6 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
+     'stability_extreme.dat' index 11 u 1:2 w l lw 1.5 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
+set origin 0.2532,0.0000
+set size 0.2532,0.5000
 set title 'mpfr:100'
-set xlabel 'omega h (dimensionless)'
+set xlabel 'ωh (dimensionless)'
 set ylabel 'correct significant digits'
 set logscale x
 set format x '10^{%L}'
@@ -82,14 +82,14 @@ unset logscale y
 set format y '%g'
 unset key
 set xrange [3.78131e-09:7.40484]
-set xtics autofreq
-set mxtics default
+set xtics 1e2
+set mxtics 1
 set yrange [0:108]
-plot 'stability_extreme.dat' index 12 u 1:2 w lp pt 7 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
-     'stability_extreme.dat' index 13 u 1:2 w lp pt 6 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
-     'stability_extreme.dat' index 14 u 1:2 w l lw 1.2 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
-set origin 0.8163,0
-set size 0.1837,1
+plot 'stability_extreme.dat' index 12 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
+     'stability_extreme.dat' index 13 u 1:2 w lp pt 6 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
+     'stability_extreme.dat' index 14 u 1:2 w l lw 1.5 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
+set origin 0.7595,0
+set size 0.2405,1
 unset title
 unset xlabel
 unset ylabel
@@ -98,21 +98,21 @@ unset border
 unset tics
 set xrange [0:1]
 set yrange [0:1]
-set key at screen 0.8263,0.97 left top Left reverse samplen 3 spacing 1.3 font ',9'
-plot NaN w lp pt 7 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
-     NaN w lp pt 6 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
-     NaN w l lw 1.2 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
+set key at screen 0.7695,0.97 left top Left reverse samplen 3 spacing 1.3
+plot NaN w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
+     NaN w lp pt 6 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
+     NaN w l lw 1.5 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
 unset multiplot
 
 unset output
 reset
-set terminal pngcairo size 1470,660 enhanced font 'Sans,10' background rgb 'white'
+set terminal pngcairo size 1580,660 enhanced font 'Sans,14' background rgb 'white'
 set output 'stability_extreme.png'
 set multiplot
 set origin 0.0000,0.5000
-set size 0.2721,0.5000
+set size 0.2532,0.5000
 set title 'double'
-set xlabel 'omega h (dimensionless)'
+set xlabel 'ωh (dimensionless)'
 set ylabel 'correct significant digits'
 set logscale x
 set format x '10^{%L}'
@@ -120,16 +120,16 @@ unset logscale y
 set format y '%g'
 unset key
 set xrange [3.78131e-09:7.40484]
-set xtics autofreq
-set mxtics default
+set xtics 1e2
+set mxtics 1
 set yrange [0:16.2]
-plot 'stability_extreme.dat' index 0 u 1:2 w lp pt 7 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
-     'stability_extreme.dat' index 1 u 1:2 w lp pt 6 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
-     'stability_extreme.dat' index 2 u 1:2 w l lw 1.2 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
-set origin 0.2721,0.5000
-set size 0.2721,0.5000
+plot 'stability_extreme.dat' index 0 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
+     'stability_extreme.dat' index 1 u 1:2 w lp pt 6 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
+     'stability_extreme.dat' index 2 u 1:2 w l lw 1.5 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
+set origin 0.2532,0.5000
+set size 0.2532,0.5000
 set title 'long double'
-set xlabel 'omega h (dimensionless)'
+set xlabel 'ωh (dimensionless)'
 set ylabel 'correct significant digits'
 set logscale x
 set format x '10^{%L}'
@@ -137,16 +137,16 @@ unset logscale y
 set format y '%g'
 unset key
 set xrange [3.78131e-09:7.40484]
-set xtics autofreq
-set mxtics default
+set xtics 1e2
+set mxtics 1
 set yrange [0:19.44]
-plot 'stability_extreme.dat' index 3 u 1:2 w lp pt 7 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
-     'stability_extreme.dat' index 4 u 1:2 w lp pt 6 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
-     'stability_extreme.dat' index 5 u 1:2 w l lw 1.2 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
-set origin 0.5442,0.5000
-set size 0.2721,0.5000
+plot 'stability_extreme.dat' index 3 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
+     'stability_extreme.dat' index 4 u 1:2 w lp pt 6 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
+     'stability_extreme.dat' index 5 u 1:2 w l lw 1.5 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
+set origin 0.5063,0.5000
+set size 0.2532,0.5000
 set title 'float128'
-set xlabel 'omega h (dimensionless)'
+set xlabel 'ωh (dimensionless)'
 set ylabel 'correct significant digits'
 set logscale x
 set format x '10^{%L}'
@@ -154,16 +154,16 @@ unset logscale y
 set format y '%g'
 unset key
 set xrange [3.78131e-09:7.40484]
-set xtics autofreq
-set mxtics default
+set xtics 1e2
+set mxtics 1
 set yrange [0:35.64]
-plot 'stability_extreme.dat' index 6 u 1:2 w lp pt 7 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
-     'stability_extreme.dat' index 7 u 1:2 w lp pt 6 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
-     'stability_extreme.dat' index 8 u 1:2 w l lw 1.2 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
+plot 'stability_extreme.dat' index 6 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
+     'stability_extreme.dat' index 7 u 1:2 w lp pt 6 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
+     'stability_extreme.dat' index 8 u 1:2 w l lw 1.5 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
 set origin 0.0000,0.0000
-set size 0.2721,0.5000
+set size 0.2532,0.5000
 set title 'mpfr:50'
-set xlabel 'omega h (dimensionless)'
+set xlabel 'ωh (dimensionless)'
 set ylabel 'correct significant digits'
 set logscale x
 set format x '10^{%L}'
@@ -171,16 +171,16 @@ unset logscale y
 set format y '%g'
 unset key
 set xrange [3.78131e-09:7.40484]
-set xtics autofreq
-set mxtics default
+set xtics 1e2
+set mxtics 1
 set yrange [0:54]
-plot 'stability_extreme.dat' index 9 u 1:2 w lp pt 7 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
-     'stability_extreme.dat' index 10 u 1:2 w lp pt 6 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
-     'stability_extreme.dat' index 11 u 1:2 w l lw 1.2 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
-set origin 0.2721,0.0000
-set size 0.2721,0.5000
+plot 'stability_extreme.dat' index 9 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
+     'stability_extreme.dat' index 10 u 1:2 w lp pt 6 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
+     'stability_extreme.dat' index 11 u 1:2 w l lw 1.5 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
+set origin 0.2532,0.0000
+set size 0.2532,0.5000
 set title 'mpfr:100'
-set xlabel 'omega h (dimensionless)'
+set xlabel 'ωh (dimensionless)'
 set ylabel 'correct significant digits'
 set logscale x
 set format x '10^{%L}'
@@ -188,14 +188,14 @@ unset logscale y
 set format y '%g'
 unset key
 set xrange [3.78131e-09:7.40484]
-set xtics autofreq
-set mxtics default
+set xtics 1e2
+set mxtics 1
 set yrange [0:108]
-plot 'stability_extreme.dat' index 12 u 1:2 w lp pt 7 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
-     'stability_extreme.dat' index 13 u 1:2 w lp pt 6 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
-     'stability_extreme.dat' index 14 u 1:2 w l lw 1.2 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
-set origin 0.8163,0
-set size 0.1837,1
+plot 'stability_extreme.dat' index 12 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
+     'stability_extreme.dat' index 13 u 1:2 w lp pt 6 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
+     'stability_extreme.dat' index 14 u 1:2 w l lw 1.5 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
+set origin 0.7595,0
+set size 0.2405,1
 unset title
 unset xlabel
 unset ylabel
@@ -204,10 +204,10 @@ unset border
 unset tics
 set xrange [0:1]
 set yrange [0:1]
-set key at screen 0.8263,0.97 left top Left reverse samplen 3 spacing 1.3 font ',9'
-plot NaN w lp pt 7 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
-     NaN w lp pt 6 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
-     NaN w l lw 1.2 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
+set key at screen 0.7695,0.97 left top Left reverse samplen 3 spacing 1.3
+plot NaN w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'c (truncation coefficient)', \
+     NaN w lp pt 6 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'H_d', \
+     NaN w l lw 1.5 dt 2 lc rgb '#7f7f7f' t 'digits the precision carries'
 unset multiplot
 
 unset output

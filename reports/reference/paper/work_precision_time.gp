@@ -1,130 +1,130 @@
-# Maximum error against run time (log-log), one panel per precision
+# Maximum error of q and p/(mω) against run time (log-log), one panel per precision
 # Redraw with: gnuplot work_precision_time.gp (in this directory)
-set terminal svg size 1590,720 dynamic enhanced font 'Sans,10' background rgb 'white'
+set terminal svg size 1760,800 dynamic enhanced font 'Sans,15' background rgb 'white'
 set output 'work_precision_time.svg'
 set multiplot
 set origin 0.0000,0.5000
-set size 0.2767,0.5000
+set size 0.2614,0.5000
 set title 'double'
 set xlabel 'run time (s, minimum of repeats)'
-set ylabel 'max error'
+set ylabel 'max error of q and p/(mω)'
 set logscale x
 set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.14132e-08:0.00086181]
+set xrange [5.19305e-08:0.000698404]
 set xtics autofreq
 set mxtics default
 set yrange [4.29802e-15:0.337578]
-set ytics 1e2
+set ytics 1e3
 set mytics 1
-plot 'work_precision_time.dat' index 0 u 1:2 w lp pt 5 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
-     'work_precision_time.dat' index 1 u 1:2 w l lw 2 dt 1 lc rgb '#d62728' t 'simpson', \
-     'work_precision_time.dat' index 2 u 1:2 w lp pt 9 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
-     'work_precision_time.dat' index 3 u 1:2 w lp pt 11 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
-     'work_precision_time.dat' index 4 u 1:2 w lp pt 13 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
-     'work_precision_time.dat' index 5 u 1:2 w lp pt 4 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
+plot 'work_precision_time.dat' index 0 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
+     'work_precision_time.dat' index 1 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
+     'work_precision_time.dat' index 2 u 1:2 w lp pt 9 ps 0.8 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
+     'work_precision_time.dat' index 3 u 1:2 w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
+     'work_precision_time.dat' index 4 u 1:2 w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
+     'work_precision_time.dat' index 5 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
      'work_precision_time.dat' index 6 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
-     'work_precision_time.dat' index 7 u 1:2 w lp pt 8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
-set origin 0.2767,0.5000
-set size 0.2767,0.5000
+     'work_precision_time.dat' index 7 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
+set origin 0.2614,0.5000
+set size 0.2614,0.5000
 set title 'long double'
 set xlabel 'run time (s, minimum of repeats)'
-set ylabel 'max error'
+set ylabel 'max error of q and p/(mω)'
 set logscale x
 set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [9.3397e-08:0.00314065]
+set xrange [8.62934e-08:0.0036248]
 set xtics autofreq
 set mxtics default
 set yrange [3.30044e-15:0.34185]
-set ytics 1e2
+set ytics 1e3
 set mytics 1
-plot 'work_precision_time.dat' index 8 u 1:2 w lp pt 5 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
-     'work_precision_time.dat' index 9 u 1:2 w l lw 2 dt 1 lc rgb '#d62728' t 'simpson', \
-     'work_precision_time.dat' index 10 u 1:2 w lp pt 9 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
-     'work_precision_time.dat' index 11 u 1:2 w lp pt 11 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
-     'work_precision_time.dat' index 12 u 1:2 w lp pt 13 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
-     'work_precision_time.dat' index 13 u 1:2 w lp pt 4 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
+plot 'work_precision_time.dat' index 8 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
+     'work_precision_time.dat' index 9 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
+     'work_precision_time.dat' index 10 u 1:2 w lp pt 9 ps 0.8 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
+     'work_precision_time.dat' index 11 u 1:2 w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
+     'work_precision_time.dat' index 12 u 1:2 w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
+     'work_precision_time.dat' index 13 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
      'work_precision_time.dat' index 14 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
-     'work_precision_time.dat' index 15 u 1:2 w lp pt 8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
-set origin 0.5535,0.5000
-set size 0.2767,0.5000
+     'work_precision_time.dat' index 15 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
+set origin 0.5227,0.5000
+set size 0.2614,0.5000
 set title 'float128'
 set xlabel 'run time (s, minimum of repeats)'
-set ylabel 'max error'
+set ylabel 'max error of q and p/(mω)'
 set logscale x
 set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [9.08812e-07:0.0272466]
+set xrange [8.87641e-07:0.0282363]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
-set ytics 1e2
+set ytics 1e3
 set mytics 1
-plot 'work_precision_time.dat' index 16 u 1:2 w lp pt 5 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
-     'work_precision_time.dat' index 17 u 1:2 w l lw 2 dt 1 lc rgb '#d62728' t 'simpson', \
-     'work_precision_time.dat' index 18 u 1:2 w lp pt 9 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
-     'work_precision_time.dat' index 19 u 1:2 w lp pt 11 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
-     'work_precision_time.dat' index 20 u 1:2 w lp pt 13 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
-     'work_precision_time.dat' index 21 u 1:2 w lp pt 4 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
+plot 'work_precision_time.dat' index 16 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
+     'work_precision_time.dat' index 17 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
+     'work_precision_time.dat' index 18 u 1:2 w lp pt 9 ps 0.8 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
+     'work_precision_time.dat' index 19 u 1:2 w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
+     'work_precision_time.dat' index 20 u 1:2 w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
+     'work_precision_time.dat' index 21 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
      'work_precision_time.dat' index 22 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
-     'work_precision_time.dat' index 23 u 1:2 w lp pt 8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
+     'work_precision_time.dat' index 23 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
 set origin 0.0000,0.0000
-set size 0.2767,0.5000
+set size 0.2614,0.5000
 set title 'mpfr:50'
 set xlabel 'run time (s, minimum of repeats)'
-set ylabel 'max error'
+set ylabel 'max error of q and p/(mω)'
 set logscale x
 set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.46826e-06:0.0428687]
+set xrange [1.92749e-06:0.0517047]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
-set ytics 1e2
+set ytics 1e3
 set mytics 1
-plot 'work_precision_time.dat' index 24 u 1:2 w lp pt 5 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
-     'work_precision_time.dat' index 25 u 1:2 w l lw 2 dt 1 lc rgb '#d62728' t 'simpson', \
-     'work_precision_time.dat' index 26 u 1:2 w lp pt 9 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
-     'work_precision_time.dat' index 27 u 1:2 w lp pt 11 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
-     'work_precision_time.dat' index 28 u 1:2 w lp pt 13 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
-     'work_precision_time.dat' index 29 u 1:2 w lp pt 4 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
+plot 'work_precision_time.dat' index 24 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
+     'work_precision_time.dat' index 25 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
+     'work_precision_time.dat' index 26 u 1:2 w lp pt 9 ps 0.8 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
+     'work_precision_time.dat' index 27 u 1:2 w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
+     'work_precision_time.dat' index 28 u 1:2 w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
+     'work_precision_time.dat' index 29 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
      'work_precision_time.dat' index 30 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
-     'work_precision_time.dat' index 31 u 1:2 w lp pt 8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
-set origin 0.2767,0.0000
-set size 0.2767,0.5000
+     'work_precision_time.dat' index 31 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
+set origin 0.2614,0.0000
+set size 0.2614,0.5000
 set title 'mpfr:100'
 set xlabel 'run time (s, minimum of repeats)'
-set ylabel 'max error'
+set ylabel 'max error of q and p/(mω)'
 set logscale x
 set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [2.44119e-06:0.0566125]
+set xrange [2.90051e-06:0.0630843]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
-set ytics 1e2
+set ytics 1e3
 set mytics 1
-plot 'work_precision_time.dat' index 32 u 1:2 w lp pt 5 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
-     'work_precision_time.dat' index 33 u 1:2 w l lw 2 dt 1 lc rgb '#d62728' t 'simpson', \
-     'work_precision_time.dat' index 34 u 1:2 w lp pt 9 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
-     'work_precision_time.dat' index 35 u 1:2 w lp pt 11 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
-     'work_precision_time.dat' index 36 u 1:2 w lp pt 13 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
-     'work_precision_time.dat' index 37 u 1:2 w lp pt 4 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
+plot 'work_precision_time.dat' index 32 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
+     'work_precision_time.dat' index 33 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
+     'work_precision_time.dat' index 34 u 1:2 w lp pt 9 ps 0.8 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
+     'work_precision_time.dat' index 35 u 1:2 w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
+     'work_precision_time.dat' index 36 u 1:2 w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
+     'work_precision_time.dat' index 37 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
      'work_precision_time.dat' index 38 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
-     'work_precision_time.dat' index 39 u 1:2 w lp pt 8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
-set origin 0.8302,0
-set size 0.1698,1
+     'work_precision_time.dat' index 39 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
+set origin 0.7841,0
+set size 0.2159,1
 unset title
 unset xlabel
 unset ylabel
@@ -133,144 +133,144 @@ unset border
 unset tics
 set xrange [0:1]
 set yrange [0:1]
-set key at screen 0.8402,0.97 left top Left reverse samplen 3 spacing 1.3 font ',9'
-plot NaN w lp pt 5 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
-     NaN w l lw 2 dt 1 lc rgb '#d62728' t 'simpson', \
-     NaN w lp pt 9 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
-     NaN w lp pt 11 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
-     NaN w lp pt 13 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
-     NaN w lp pt 4 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
+set key at screen 0.7941,0.97 left top Left reverse samplen 3 spacing 1.3
+plot NaN w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
+     NaN w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
+     NaN w lp pt 9 ps 0.8 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
+     NaN w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
+     NaN w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
+     NaN w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
      NaN w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
-     NaN w lp pt 8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
+     NaN w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
 unset multiplot
 
 unset output
 reset
-set terminal pngcairo size 1590,720 enhanced font 'Sans,10' background rgb 'white'
+set terminal pngcairo size 1760,800 enhanced font 'Sans,15' background rgb 'white'
 set output 'work_precision_time.png'
 set multiplot
 set origin 0.0000,0.5000
-set size 0.2767,0.5000
+set size 0.2614,0.5000
 set title 'double'
 set xlabel 'run time (s, minimum of repeats)'
-set ylabel 'max error'
+set ylabel 'max error of q and p/(mω)'
 set logscale x
 set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.14132e-08:0.00086181]
+set xrange [5.19305e-08:0.000698404]
 set xtics autofreq
 set mxtics default
 set yrange [4.29802e-15:0.337578]
-set ytics 1e2
+set ytics 1e3
 set mytics 1
-plot 'work_precision_time.dat' index 0 u 1:2 w lp pt 5 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
-     'work_precision_time.dat' index 1 u 1:2 w l lw 2 dt 1 lc rgb '#d62728' t 'simpson', \
-     'work_precision_time.dat' index 2 u 1:2 w lp pt 9 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
-     'work_precision_time.dat' index 3 u 1:2 w lp pt 11 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
-     'work_precision_time.dat' index 4 u 1:2 w lp pt 13 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
-     'work_precision_time.dat' index 5 u 1:2 w lp pt 4 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
+plot 'work_precision_time.dat' index 0 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
+     'work_precision_time.dat' index 1 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
+     'work_precision_time.dat' index 2 u 1:2 w lp pt 9 ps 0.8 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
+     'work_precision_time.dat' index 3 u 1:2 w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
+     'work_precision_time.dat' index 4 u 1:2 w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
+     'work_precision_time.dat' index 5 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
      'work_precision_time.dat' index 6 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
-     'work_precision_time.dat' index 7 u 1:2 w lp pt 8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
-set origin 0.2767,0.5000
-set size 0.2767,0.5000
+     'work_precision_time.dat' index 7 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
+set origin 0.2614,0.5000
+set size 0.2614,0.5000
 set title 'long double'
 set xlabel 'run time (s, minimum of repeats)'
-set ylabel 'max error'
+set ylabel 'max error of q and p/(mω)'
 set logscale x
 set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [9.3397e-08:0.00314065]
+set xrange [8.62934e-08:0.0036248]
 set xtics autofreq
 set mxtics default
 set yrange [3.30044e-15:0.34185]
-set ytics 1e2
+set ytics 1e3
 set mytics 1
-plot 'work_precision_time.dat' index 8 u 1:2 w lp pt 5 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
-     'work_precision_time.dat' index 9 u 1:2 w l lw 2 dt 1 lc rgb '#d62728' t 'simpson', \
-     'work_precision_time.dat' index 10 u 1:2 w lp pt 9 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
-     'work_precision_time.dat' index 11 u 1:2 w lp pt 11 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
-     'work_precision_time.dat' index 12 u 1:2 w lp pt 13 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
-     'work_precision_time.dat' index 13 u 1:2 w lp pt 4 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
+plot 'work_precision_time.dat' index 8 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
+     'work_precision_time.dat' index 9 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
+     'work_precision_time.dat' index 10 u 1:2 w lp pt 9 ps 0.8 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
+     'work_precision_time.dat' index 11 u 1:2 w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
+     'work_precision_time.dat' index 12 u 1:2 w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
+     'work_precision_time.dat' index 13 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
      'work_precision_time.dat' index 14 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
-     'work_precision_time.dat' index 15 u 1:2 w lp pt 8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
-set origin 0.5535,0.5000
-set size 0.2767,0.5000
+     'work_precision_time.dat' index 15 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
+set origin 0.5227,0.5000
+set size 0.2614,0.5000
 set title 'float128'
 set xlabel 'run time (s, minimum of repeats)'
-set ylabel 'max error'
+set ylabel 'max error of q and p/(mω)'
 set logscale x
 set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [9.08812e-07:0.0272466]
+set xrange [8.87641e-07:0.0282363]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
-set ytics 1e2
+set ytics 1e3
 set mytics 1
-plot 'work_precision_time.dat' index 16 u 1:2 w lp pt 5 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
-     'work_precision_time.dat' index 17 u 1:2 w l lw 2 dt 1 lc rgb '#d62728' t 'simpson', \
-     'work_precision_time.dat' index 18 u 1:2 w lp pt 9 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
-     'work_precision_time.dat' index 19 u 1:2 w lp pt 11 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
-     'work_precision_time.dat' index 20 u 1:2 w lp pt 13 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
-     'work_precision_time.dat' index 21 u 1:2 w lp pt 4 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
+plot 'work_precision_time.dat' index 16 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
+     'work_precision_time.dat' index 17 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
+     'work_precision_time.dat' index 18 u 1:2 w lp pt 9 ps 0.8 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
+     'work_precision_time.dat' index 19 u 1:2 w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
+     'work_precision_time.dat' index 20 u 1:2 w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
+     'work_precision_time.dat' index 21 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
      'work_precision_time.dat' index 22 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
-     'work_precision_time.dat' index 23 u 1:2 w lp pt 8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
+     'work_precision_time.dat' index 23 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
 set origin 0.0000,0.0000
-set size 0.2767,0.5000
+set size 0.2614,0.5000
 set title 'mpfr:50'
 set xlabel 'run time (s, minimum of repeats)'
-set ylabel 'max error'
+set ylabel 'max error of q and p/(mω)'
 set logscale x
 set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.46826e-06:0.0428687]
+set xrange [1.92749e-06:0.0517047]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
-set ytics 1e2
+set ytics 1e3
 set mytics 1
-plot 'work_precision_time.dat' index 24 u 1:2 w lp pt 5 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
-     'work_precision_time.dat' index 25 u 1:2 w l lw 2 dt 1 lc rgb '#d62728' t 'simpson', \
-     'work_precision_time.dat' index 26 u 1:2 w lp pt 9 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
-     'work_precision_time.dat' index 27 u 1:2 w lp pt 11 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
-     'work_precision_time.dat' index 28 u 1:2 w lp pt 13 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
-     'work_precision_time.dat' index 29 u 1:2 w lp pt 4 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
+plot 'work_precision_time.dat' index 24 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
+     'work_precision_time.dat' index 25 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
+     'work_precision_time.dat' index 26 u 1:2 w lp pt 9 ps 0.8 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
+     'work_precision_time.dat' index 27 u 1:2 w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
+     'work_precision_time.dat' index 28 u 1:2 w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
+     'work_precision_time.dat' index 29 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
      'work_precision_time.dat' index 30 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
-     'work_precision_time.dat' index 31 u 1:2 w lp pt 8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
-set origin 0.2767,0.0000
-set size 0.2767,0.5000
+     'work_precision_time.dat' index 31 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
+set origin 0.2614,0.0000
+set size 0.2614,0.5000
 set title 'mpfr:100'
 set xlabel 'run time (s, minimum of repeats)'
-set ylabel 'max error'
+set ylabel 'max error of q and p/(mω)'
 set logscale x
 set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [2.44119e-06:0.0566125]
+set xrange [2.90051e-06:0.0630843]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
-set ytics 1e2
+set ytics 1e3
 set mytics 1
-plot 'work_precision_time.dat' index 32 u 1:2 w lp pt 5 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
-     'work_precision_time.dat' index 33 u 1:2 w l lw 2 dt 1 lc rgb '#d62728' t 'simpson', \
-     'work_precision_time.dat' index 34 u 1:2 w lp pt 9 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
-     'work_precision_time.dat' index 35 u 1:2 w lp pt 11 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
-     'work_precision_time.dat' index 36 u 1:2 w lp pt 13 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
-     'work_precision_time.dat' index 37 u 1:2 w lp pt 4 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
+plot 'work_precision_time.dat' index 32 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
+     'work_precision_time.dat' index 33 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
+     'work_precision_time.dat' index 34 u 1:2 w lp pt 9 ps 0.8 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
+     'work_precision_time.dat' index 35 u 1:2 w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
+     'work_precision_time.dat' index 36 u 1:2 w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
+     'work_precision_time.dat' index 37 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
      'work_precision_time.dat' index 38 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
-     'work_precision_time.dat' index 39 u 1:2 w lp pt 8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
-set origin 0.8302,0
-set size 0.1698,1
+     'work_precision_time.dat' index 39 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
+set origin 0.7841,0
+set size 0.2159,1
 unset title
 unset xlabel
 unset ylabel
@@ -279,15 +279,15 @@ unset border
 unset tics
 set xrange [0:1]
 set yrange [0:1]
-set key at screen 0.8402,0.97 left top Left reverse samplen 3 spacing 1.3 font ',9'
-plot NaN w lp pt 5 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
-     NaN w l lw 2 dt 1 lc rgb '#d62728' t 'simpson', \
-     NaN w lp pt 9 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
-     NaN w lp pt 11 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
-     NaN w lp pt 13 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
-     NaN w lp pt 4 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
+set key at screen 0.7941,0.97 left top Left reverse samplen 3 spacing 1.3
+plot NaN w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
+     NaN w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
+     NaN w lp pt 9 ps 0.8 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
+     NaN w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
+     NaN w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
+     NaN w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
      NaN w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
-     NaN w lp pt 8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
+     NaN w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
 unset multiplot
 
 unset output

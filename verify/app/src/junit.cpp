@@ -1,7 +1,10 @@
 #include <simpson/verify/junit.hpp>
 
+#include <simpson/verify/printed_statement.hpp>
+
 #include <fmt/format.h>
 
+#include <utility>
 #include <variant>
 
 namespace simpson::verify {
@@ -22,68 +25,143 @@ std::string escaped(const std::string& text) {
   return out;
 }
 
+/// What a testcase records. At most one of failure, error, skipped; `out` goes to <system-out>.
 struct testcase {
-  std::string name, classname, failure, detail;
+  std::string name, classname;
+  std::vector<std::pair<std::string, std::string>> properties;
+  enum class result { passed, failure, error, skipped } outcome = result::passed;
+  std::string message, type, detail, out;
 };
+
+struct suite_counts {
+  std::size_t tests = 0, failures = 0, errors = 0, skipped = 0;
+  void add(const testcase& t) {
+    ++tests;
+    failures += t.outcome == testcase::result::failure;
+    errors += t.outcome == testcase::result::error;
+    skipped += t.outcome == testcase::result::skipped;
+  }
+  void add(const suite_counts& c) {
+    tests += c.tests;
+    failures += c.failures;
+    errors += c.errors;
+    skipped += c.skipped;
+  }
+  std::string attributes() const {
+    return fmt::format("tests=\"{}\" failures=\"{}\" errors=\"{}\" skipped=\"{}\"", tests, failures, errors, skipped);
+  }
+};
+
+std::string testcase_xml(const testcase& t) {
+  std::string xml = fmt::format("    <testcase name=\"{}\" classname=\"{}\">\n", escaped(t.name), escaped(t.classname));
+  if (!t.properties.empty()) {
+    xml += "      <properties>\n";
+    for (const auto& [name, value] : t.properties) {
+      xml += fmt::format("        <property name=\"{}\" value=\"{}\"/>\n", escaped(name), escaped(value));
+    }
+    xml += "      </properties>\n";
+  }
+  const auto element = [&](const char* tag) {
+    xml += fmt::format("      <{} message=\"{}\"{}>{}</{}>\n", tag, escaped(t.message),
+                       t.type.empty() ? "" : " type=\"" + escaped(t.type) + "\"", escaped(t.detail), tag);
+  };
+  switch (t.outcome) {
+    case testcase::result::passed: break;
+    case testcase::result::failure: element("failure"); break;
+    case testcase::result::error: element("error"); break;
+    case testcase::result::skipped: element("skipped"); break;
+  }
+  if (!t.out.empty()) xml += "      <system-out>" + escaped(t.out) + "</system-out>\n";
+  return xml + "    </testcase>\n";
+}
 
 // No time attributes (they are optional in JUnit): run times live in timing.json, so that this file
 // is the same from run to run.
-std::string suite(const std::string& name, const std::vector<testcase>& cases) {
-  std::size_t failures = 0;
-  for (const testcase& t : cases) failures += !t.failure.empty();
-  std::string xml = fmt::format("  <testsuite name=\"{}\" tests=\"{}\" failures=\"{}\" errors=\"0\">\n", escaped(name),
-                                cases.size(), failures);
-  for (const testcase& t : cases) {
-    xml += fmt::format("    <testcase name=\"{}\" classname=\"{}\"", escaped(t.name), escaped(t.classname));
-    if (t.failure.empty()) {
-      xml += "/>\n";
-    } else {
-      xml += fmt::format(">\n      <failure message=\"{}\" type=\"{}\">{}</failure>\n    </testcase>\n", escaped(t.failure),
-                         "simpson-verify", escaped(t.detail));
+std::string suite_xml(const std::string& name, const std::vector<testcase>& cases, suite_counts& total) {
+  suite_counts counts;
+  for (const testcase& t : cases) counts.add(t);
+  total.add(counts);
+  std::string xml = fmt::format("  <testsuite name=\"{}\" {}>\n", escaped(name), counts.attributes());
+  for (const testcase& t : cases) xml += testcase_xml(t);
+  return xml + "  </testsuite>\n";
+}
+
+/// A claim: a failure exactly when the run's exit code counts it (a verdict not as expected, a
+/// certificate coqc rejected), an error when its check threw; an erratum as expected passes with
+/// its printed and corrected statements in <system-out>; a `fails` as expected is skipped with its
+/// reason (an expected failure, as pytest writes xfail), so that a CI view shows both for what they are.
+testcase claim_case(const claim_outcome& o) {
+  const claim& c = *o.checked;
+  testcase t{c.id, "claims.section-" + c.section, {}, testcase::result::passed, "", "", "", ""};
+  const std::string verdict = to_string(o.result.outcome), expected = to_string(o.expected);
+  t.properties = {{"verdict", verdict}, {"expected", expected}, {"section", c.section}, {"equation", c.equation}};
+  const printed_statement printed = printed_of(o);
+  std::string summary = "Printed (" + printed.source + "): " + printed.text;
+  if (!o.result.correction.empty()) summary += "\nCorrected: " + o.result.correction;
+  if (!o.result.note.empty()) summary += "\nNote: " + o.result.note;
+  const json& evidence = o.result.evidence;
+  if (evidence.contains("error")) {
+    t.outcome = testcase::result::error;
+    t.type = "internal-error";
+    t.message = "internal error (a bug in the harness): " + evidence["error"].get<std::string>();
+    t.detail = summary;
+  } else if (o.result.outcome != o.expected) {
+    t.outcome = testcase::result::failure;
+    t.type = "unexpected-verdict";
+    t.message = "verdict " + verdict + ", expected " + expected;
+    t.detail = summary;
+  } else if (evidence.contains("coq") && evidence["coq"].value("status", "") == "failed") {
+    t.outcome = testcase::result::failure;
+    t.type = "certificate-rejected";
+    t.message = "coqc rejected its Coq certificate";
+    t.detail = evidence["coq"].value("coqc_output", "");
+  } else if (o.result.outcome == verdict::fails) {
+    t.outcome = testcase::result::skipped;
+    t.message = "expected failure: verdict fails, as the ledger expects" +
+                (o.result.note.empty() ? std::string() : ": " + o.result.note);
+    t.out = summary;
+  } else if (o.result.outcome == verdict::erratum) {
+    t.out = "Erratum, as the ledger expects.\n" + summary;
+  }
+  return t;
+}
+
+/// A table of a section: its faults (overflow, underflow, non-finite, unstable, failed) are
+/// findings of the experiment, not failures of the run (they never change the exit code): counted
+/// in a property and listed in <system-out>.
+testcase table_case(const section_result& section, const table& t) {
+  testcase c{t.key, "sections." + section.name, {}, testcase::result::passed, "", "", "", ""};
+  std::size_t faults = 0;
+  for (std::size_t row = 0; row < t.rows.size(); ++row) {
+    for (std::size_t col = 0; col < t.rows[row].size(); ++col) {
+      if (!t.rows[row][col].is_fault()) continue;
+      ++faults;
+      c.out += fmt::format("row {}, column {}: {}\n", row, t.columns[col].key, t.rows[row][col].value());
     }
   }
-  return xml + "  </testsuite>\n";
+  c.properties = {{"rows", std::to_string(t.rows.size())}, {"faults", std::to_string(faults)}};
+  if (faults > 0) c.out = fmt::format("{} {} recorded in table {} (a finding of the experiment, not a failure):\n", faults,
+                                      faults == 1 ? "fault" : "faults", t.key) + c.out;
+  return c;
 }
 
 }  // namespace
 
 std::string report_junit(const run_record& r) {
+  suite_counts total;
   std::vector<testcase> claims;
-  for (const claim_outcome& o : r.outcomes) {
-    testcase t{o.checked->id, "claims.section-" + o.checked->section, "", ""};
-    if (o.result.outcome != o.expected) {
-      t.failure = "verdict " + to_string(o.result.outcome) + ", expected " + to_string(o.expected);
-      t.detail = o.checked->statement + (o.result.note.empty() ? "" : "\n" + o.result.note);
-    }
-    claims.push_back(t);
-  }
-  std::string body = suite("claims", claims);
-  std::size_t tests = claims.size(), failures = 0;
-  for (const testcase& t : claims) failures += !t.failure.empty();
+  for (const claim_outcome& o : r.outcomes) claims.push_back(claim_case(o));
+  std::string body = suite_xml("claims", claims, total);
   for (const section_result& section : r.sections) {
     std::vector<testcase> tables;
     for (const section_block& block : section.blocks) {
       const table* t = std::get_if<table>(&block);
-      if (t == nullptr || t->timing) continue;
-      testcase c{t->key, "sections." + section.name, "", ""};
-      std::size_t faults = 0;
-      for (std::size_t row = 0; row < t->rows.size(); ++row) {
-        for (std::size_t col = 0; col < t->rows[row].size(); ++col) {
-          if (!t->rows[row][col].is_fault()) continue;
-          ++faults;
-          c.detail += fmt::format("row {}, column {}: {}\n", row, t->columns[col].key, t->rows[row][col].value());
-        }
-      }
-      if (faults > 0) c.failure = fmt::format("{} {} in table {}", faults, faults == 1 ? "fault" : "faults", t->key);
-      tables.push_back(c);
+      if (t != nullptr && !t->timing) tables.push_back(table_case(section, *t));
     }
-    for (const testcase& t : tables) failures += !t.failure.empty();
-    tests += tables.size();
-    body += suite("section " + section.name, tables);
+    body += suite_xml("section " + section.name, tables, total);
   }
-  return fmt::format("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"simpson-verify scene {}\" tests=\"{}\" "
-                     "failures=\"{}\" errors=\"0\">\n",
-                     escaped(r.run_scene.name), tests, failures) +
+  return fmt::format("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"simpson-verify scene {}\" {}>\n",
+                     escaped(r.run_scene.name), total.attributes()) +
          body + "</testsuites>\n";
 }
 

@@ -10,6 +10,7 @@
 #include <simpson/verify/progress.hpp>
 #include <simpson/verify/certify.hpp>
 #include <simpson/verify/report.hpp>
+#include <simpson/verify/output_location.hpp>
 #include <simpson/verify/report_compare.hpp>
 #include <simpson/verify/scene.hpp>
 #include <simpson/verify/selection.hpp>
@@ -86,7 +87,7 @@ int list_precisions() {
 
 /// `simpson-verify compare OLD NEW`: 0 when the reports agree, 1 on a difference (one line each), 2
 /// on bad input.
-int compare_report_directories(const std::string& old_dir, const std::string& new_dir, bool quiet) {
+int compare_report_directories(const std::string& old_dir, const std::string& new_dir, bool quiet, bool subset) {
   json old_report, new_report;
   try {
     old_report = load_report(old_dir);
@@ -95,9 +96,13 @@ int compare_report_directories(const std::string& old_dir, const std::string& ne
     std::fprintf(stderr, "simpson-verify: %s\n", e.what());
     return 2;
   }
-  const std::vector<std::string> differences = compare_reports(old_report, new_report);
+  const std::vector<std::string> differences =
+      subset ? compare_report_subset(old_report, new_report) : compare_reports(old_report, new_report);
   if (!quiet) {
-    fmt::print("compare {} (old) with {} (new); tolerances:\n", old_dir, new_dir);
+    fmt::print("compare {} (old) with {} (new){}; tolerances:\n", old_dir, new_dir,
+               subset ? fmt::format(", only the new report's {} claims and {} sections", new_report.value("claims", json::array()).size(),
+                                    new_report.value("experiments", json::object()).size())
+                      : std::string());
     for (const std::string& line : comparison_tolerances()) fmt::print("  - {}\n", line);
   }
   for (const std::string& line : differences) fmt::print("{}\n", line);
@@ -115,9 +120,13 @@ int main(int argc, char** argv) {
   std::vector<std::string> claim_ids, section_list, precision_names;
   bool want_claims = false, want_scenes = false, want_precisions = false, allow_expensive = false, long_run = false,
        quiet = false, no_timing = false, certify = false;
-  app.add_option("--scene", scene_name, "embedded scene name (paper, quick) or a scene JSON file")->capture_default_str();
+  std::string scene_list;
+  for (const auto& [name, text] : embedded_scenes()) scene_list += (scene_list.empty() ? "" : ", ") + name;
+  app.add_option("--scene", scene_name, "embedded scene name (" + scene_list + ") or a scene JSON file")->capture_default_str();
   app.add_option("--paper", paper_file, "the paper's LaTeX source to check (default: the embedded GSI 2023 text)");
-  app.add_option("--out", out_dir, "report directory (default: reports/out/<scene>)");
+  app.add_option("--out", out_dir,
+                 "report directory (default: reports/out/<scene>; with --claims or --sections, a directory named after the "
+                 "selection, e.g. reports/out/paper-claims-phi3-det, so that a subset never replaces the full report)");
   app.add_option("--claims", claim_ids,
                  "comma-separated claim ids, or all (the scene's); alone, runs these claims and no section (default: the scene's)")
       ->delimiter(',');
@@ -132,13 +141,16 @@ int main(int argc, char** argv) {
                  "difference (one line each), 2 on bad input");
   compare->add_option("old", compare_old, "the reference report directory (or its report.json)")->required();
   compare->add_option("new", compare_new, "the report directory to check (or its report.json)")->required();
+  bool compare_subset = false;
+  compare->add_flag("--subset", compare_subset,
+                    "compare only the claims and sections of NEW (a run of a selection) with those of OLD (a fuller report)");
   compare->fallthrough();
   app.add_option("--precisions", precision_names,
                  "comma-separated precisions of the claims' rechecks and of the sections work_precision and stability "
                  "(table1 runs in double; a run with long_time or nonlinear is refused: they compare double with mpfr by design)")
       ->delimiter(',');
-  app.add_option("--seed", seed_text, "seed of the random samples (default: the scene's, printed in the report)");
-  app.add_option("--samples", samples_text, "random samples per numeric recheck and precision, 1..10000");
+  app.add_option("--seed", seed_text, "seed of the random samples (default: the scene's, printed in the report)")->type_name("UINT");
+  app.add_option("--samples", samples_text, "random samples per numeric recheck and precision, 1..10000")->type_name("UINT");
   app.add_flag("--allow-expensive", allow_expensive,
                fmt::format("run a scene whose estimated cost exceeds the budget ({:.3g} double-step units, about {})", default_cost_budget, seconds_text(default_cost_budget)));
   app.add_flag("--certify", certify,
@@ -146,7 +158,8 @@ int main(int argc, char** argv) {
                "gives exit code 1");
   app.add_flag("--long", long_run, "long_time section: 1e9 steps in double instead of the scene's (implies --allow-expensive)");
   app.add_option("--timing-runs", timing_runs_text,
-                 "work_precision: timed runs per configuration after one warm-up, 1..1000 (default: the scene's, 20)");
+                 "work_precision: timed runs per configuration after one warm-up, 1..1000 (default: the scene's, 20)")
+      ->type_name("UINT");
   app.add_flag("--no-timing", no_timing,
                "measure no run time: no timing.json, timing.md or time plot, and every file is the same from run to run");
   app.add_flag("--list-claims", want_claims, "list the claims of the ledger and exit");
@@ -160,7 +173,7 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  if (*compare) return compare_report_directories(compare_old, compare_new, quiet);
+  if (*compare) return compare_report_directories(compare_old, compare_new, quiet, compare_subset);
 
   scene s;
   std::optional<simpson::verify::paper_reading> paper;
@@ -240,7 +253,7 @@ int main(int argc, char** argv) {
                                               seconds_text(default_cost_budget), parts));
     }
     if (certify && coqc_version().empty()) throw std::invalid_argument("--certify: coqc was not found (install Debian's coq)");
-    out = out_dir.empty() ? std::filesystem::path("reports/out") / s.name : std::filesystem::path(out_dir);
+    out = output_directory(s, app.count("--out") > 0 ? std::optional<std::string>(out_dir) : std::nullopt);
     prepare_output_directory(out);
   } catch (const std::invalid_argument& e) {
     std::fprintf(stderr, "simpson-verify: %s\n", e.what());
@@ -268,14 +281,17 @@ int main(int argc, char** argv) {
       fmt::print(stderr, "[section] {:<34} {:.2f} s\n", section, seconds);
     });
     throw_if_interrupted();
-    const std::vector<std::string> rejected = certify ? record_certificates(record, true) : std::vector<std::string>{};
-    const plot_outcome plots = write_report_files(out, record);
-    for (const std::string& failure : plots.failures) fmt::print(stderr, "simpson-verify: warning: plot not drawn: {}\n", failure);
+    if (certify) record_certificates(record, true);
+    // The verdicts first, then the report: the report is the last thing written, so that a signal
+    // at any moment before its directory is swapped into place leaves the previous one as it was.
     for (const claim_outcome& o : record.outcomes) {
       const bool as_expected = o.result.outcome == o.expected;
       if (!quiet) {
         fmt::print("  {:<8} {:<34}{}\n", to_string(o.result.outcome), o.checked->id,
                    as_expected ? "" : "  <- expected " + to_string(o.expected));
+        if (o.result.outcome == verdict::erratum && !o.result.correction.empty()) {
+          fmt::print("           corrected: {}\n", o.result.correction);
+        }
       }
       if (!as_expected) {
         fmt::print(stderr, "simpson-verify: {}: verdict {}, expected {}\n", o.checked->id, to_string(o.result.outcome),
@@ -285,35 +301,44 @@ int main(int argc, char** argv) {
     for (const std::string& error : record.internal_errors) {
       fmt::print(stderr, "simpson-verify: internal error (a bug in the harness) in {}\n", error);
     }
+    for (const std::string& id : rejected_certificates(record)) fmt::print(stderr, "simpson-verify: {}: coqc rejected its certificate\n", id);
+    const plot_outcome plots = write_report_files(out, record);
+    for (const std::string& failure : plots.failures) fmt::print(stderr, "simpson-verify: warning: plot not drawn: {}\n", failure);
     const std::string scene_text = s.name + (s.selection.empty() ? "" : ": " + s.selection);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    for (const std::string& id : rejected) fmt::print(stderr, "simpson-verify: {}: coqc rejected its certificate\n", id);
-    const int code = !record.internal_errors.empty() ? 3 : all_as_expected(record) && rejected.empty() ? 0 : 1;
+    const int code = run_exit_code(record);
     if (quiet) {
       fmt::print("{} (scene {}, seed {}, {:.1f} s)\n", summary_line(record), scene_text, s.seed, seconds);
       return code;
     }
-    fmt::print("\nPhi3 at the paper's configuration ({})\n{:<12} {:<10} {:<27} {:<11} {:<13} {}\n",
-               record.paper_configuration["parameters"].get<std::string>(), "precision", "epsilon", "alpha = delta",
-               "det-1", "Delta", "Hd(Phi3 y)-Hd(y)");
-    for (const auto& row : record.paper_configuration["rows"]) {
-      fmt::print("{:<12} {:<10} {:<27} {:<11} {:<13} {}\n", row["precision"].get<std::string>(),
-                 row["epsilon"].get<std::string>(), row["alpha_equals_delta"].get<std::string>(),
-                 row["det_minus_one"].get<std::string>(), row["discriminant"].get<std::string>(),
-                 row["hd_change_one_step"].get<std::string>());
+    // The Φ₃ table concerns the scene's claims as a whole: a run of a selection does not print it.
+    if (s.selection.empty() && !record.outcomes.empty()) {
+      fmt::print("\nPhi3 at the paper's configuration ({})\n{:<12} {:<10} {:<27} {:<11} {:<13} {}\n",
+                 record.paper_configuration["parameters"].get<std::string>(), "precision", "epsilon", "alpha = delta",
+                 "det-1", "Delta", "Hd(Phi3 y)-Hd(y)");
+      for (const auto& row : record.paper_configuration["rows"]) {
+        fmt::print("{:<12} {:<10} {:<27} {:<11} {:<13} {}\n", row["precision"].get<std::string>(),
+                   row["epsilon"].get<std::string>(), row["alpha_equals_delta"].get<std::string>(),
+                   row["det_minus_one"].get<std::string>(), row["discriminant"].get<std::string>(),
+                   row["hd_change_one_step"].get<std::string>());
+      }
     }
-    fmt::print("\n{} (scene {}, seed {}, {:.1f} s)\nreport: {}, {}\n", summary_line(record), scene_text, s.seed, seconds,
-               (out / "report.md").string(), (out / "report.json").string());
+    fmt::print("\n{} (scene {}, seed {}, {:.1f} s)\n{}\nreport: {}, {}, {}\n", summary_line(record), scene_text, s.seed, seconds,
+               expectation_line(record), (out / "report.md").string(), (out / "report.json").string(),
+               (out / "report.junit.xml").string());
     if (!record.sections.empty()) {
       fmt::print("sections: ");
       for (std::size_t k = 0; k < record.sections.size(); ++k) fmt::print("{}{}", k ? ", " : "", record.sections[k].name);
       fmt::print(" ({} plots drawn); html: {}\n", plots.drawn.size(), (out / "report.html").string());
+    } else {
+      fmt::print("html: {}\n", (out / "report.html").string());
     }
     return code;
   } catch (const interrupted& e) {
     return interrupted_exit(e);
   } catch (const std::filesystem::filesystem_error& e) {  // writing the report: the output directory
-    std::fprintf(stderr, "simpson-verify: cannot write the report: %s\n", e.what());
+    fmt::print(stderr, "simpson-verify: --out '{}': cannot write the report ({}); the previous report, if any, is unchanged\n",
+               out.string(), e.code().message());
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "simpson-verify: internal error (a bug in the harness): %s\n", e.what());

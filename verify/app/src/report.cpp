@@ -2,6 +2,9 @@
 
 #include <simpson/verify/certify.hpp>
 #include <simpson/verify/junit.hpp>
+#include <simpson/verify/markdown_text.hpp>
+#include <simpson/verify/printed_statement.hpp>
+#include <simpson/verify/report_html.hpp>
 
 #include <fmt/format.h>
 
@@ -62,9 +65,35 @@ std::string summary_line(const run_record& r) {
                                           : fmt::format("{} not as expected ({})", c.unexpected.size(), join(c.unexpected, ", ")));
 }
 
+std::string expectation_line(const run_record& r) {
+  if (r.outcomes.empty()) return "No claim in this run.";
+  const verdict_counts c = count_verdicts(r);
+  std::vector<std::string> expected_failures;
+  for (const claim_outcome& o : r.outcomes) {
+    if (o.result.outcome == o.expected && (o.expected == verdict::fails || o.expected == verdict::kernels_disagree)) {
+      expected_failures.push_back(o.checked->id);
+    }
+  }
+  const int code = run_exit_code(r);
+  if (code == 3) return "Exit code 3: a check threw (a bug in the harness); see Failures.";
+  const std::string rejected = rejected_certificates(r).empty() ? "" : "; coqc rejected a certificate";
+  if (code != 0) {
+    return fmt::format("Exit code 1: {} verdict{} differ{} from the ledger's expected one{}; see Failures.", c.unexpected.size(),
+                       c.unexpected.size() == 1 ? "" : "s", c.unexpected.size() == 1 ? "s" : "", rejected);
+  }
+  std::string line = "Exit code 0: every verdict is the one the ledger records as expected. That is a regression check of "
+                     "the paper's verdicts, not a validation: ";
+  line += fmt::format("{} {} (false as printed, a correction proved)", c.errata, c.errata == 1 ? "erratum" : "errata");
+  if (!expected_failures.empty()) {
+    line += fmt::format(" and {} expected failure{} ({}: not reproduced, no correction found)", expected_failures.size(),
+                        expected_failures.size() == 1 ? "" : "s", join(expected_failures, ", "));
+  }
+  return line + " are expected verdicts.";
+}
+
 json summary_json(const run_record& r) {
   const verdict_counts c = count_verdicts(r);
-  return {{"line", summary_line(r)},     {"claims", r.outcomes.size()},
+  return {{"line", summary_line(r)},     {"expectation", expectation_line(r)}, {"claims", r.outcomes.size()},
           {"held", c.held},              {"errata", c.errata},
           {"failed", c.failed},          {"kernels_disagree", c.disagreed},
           {"machine_read", c.machine_read}, {"typed", r.outcomes.size() - c.machine_read},
@@ -260,11 +289,17 @@ std::string coq_table_markdown(const run_record& r) {
       const std::size_t lemmas = on.value("lemmas", json::array()).size();
       return fmt::format("[{0}]({0}), {1} {2}{3}", on["file"].get<std::string>(), lemmas, what, lemmas == 1 ? "" : "s");
     };
-    std::string detail = coq.contains("file") ? file_text(coq, "lemma") : coq.value("reason", "");
+    std::string detail = coq.contains("file") ? file_text(coq, "lemma") : markdown_escaped(coq.value("reason", ""));
     if (coq.contains("refutation")) detail += "; printed statement refuted: " + file_text(coq["refutation"], "negation");
-    md += fmt::format("| {} | {} | {} |\n", o.checked->id, coq.value("status", "not recorded"), detail);
+    md += fmt::format("| [{}](#{}) | {} | {} |\n", o.checked->id, heading_slug(o.checked->id), coq.value("status", "not recorded"), detail);
   }
   return md;
+}
+
+/// The printed statement in Markdown: the TeX read from the paper as code, or the typed wording escaped.
+std::string printed_markdown(const claim_outcome& o) {
+  const printed_statement printed = printed_of(o);
+  return printed.read ? markdown_code(printed.text) : markdown_escaped(printed.text);
 }
 
 }  // namespace
@@ -275,11 +310,11 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
   std::string md;
   md += fmt::format("# simpson-verify report: scene `{}`{}\n\n", r.run_scene.name,
                     r.run_scene.selection.empty() ? "" : ": " + r.run_scene.selection);
-  if (!r.run_scene.description.empty()) md += r.run_scene.description + "\n\n";
-  md += fmt::format("**{}**\n\n", summary_line(r));
+  if (!r.run_scene.description.empty()) md += markdown_escaped(r.run_scene.description) + "\n\n";
+  md += fmt::format("**{}**\n\n{}\n\n", markdown_escaped(summary_line(r)), markdown_escaped(expectation_line(r)));
   md += fmt::format("{} of {} claims read their formula from the paper's LaTeX source ({}) and prove it in GiNaC against "
                     "the derived one, beside our own kernel; the others check a statement typed from the prose.\n\n",
-                    machine_read(r), r.outcomes.size(), r.paper_origin);
+                    machine_read(r), r.outcomes.size(), markdown_escaped(r.paper_origin));
   md += coq_markdown(r);
   md += r.run_scene.timing ? "Run times: [timing.md](timing.md). " : "Not timed (--no-timing). ";
   md += "The tool's version and commit, the machine, the command line and the SHA-256 of the scene and the paper are in "
@@ -295,8 +330,8 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
         "| id | § | equation | statement | verdict | expected | methods |\n|---|---|---|---|---|---|---|\n";
   for (const claim_outcome& o : r.outcomes) {
     const claim& c = *o.checked;
-    const std::string verdict_text = to_string(o.result.outcome) + (o.result.outcome == o.expected ? "" : " **(unexpected)**");
-    md += fmt::format("| [{}](#{}) | {} | {} | {} | {} | {} | {} |\n", c.id, c.id, c.section, markdown_cell(c.equation),
+    const std::string verdict_text = "**" + to_string(o.result.outcome) + "**" + (o.result.outcome == o.expected ? "" : " **(unexpected)**");
+    md += fmt::format("| [{}](#{}) | {} | {} | {} | {} | {} | {} |\n", c.id, heading_slug(c.id), c.section, markdown_cell(c.equation),
                       o.result.printed.is_null() ? "typed" : "read", verdict_text, to_string(o.expected),
                       join(c.methods, ", ") + (o.result.printed.is_null() ? "" : ", GiNaC"));
   }
@@ -307,27 +342,49 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
     if (o.result.outcome != verdict::erratum) continue;
     any_erratum = true;
     const claim& c = *o.checked;
-    md += fmt::format("### {} (§{}, {})\n\n- Printed: {}\n- Corrected: {}\n", c.id, c.section, c.equation, c.statement,
-                      o.result.correction);
-    if (!o.result.note.empty()) md += "- Note: " + o.result.note + "\n";
-    md += "\n";
+    md += fmt::format("### {} (§{}, {})\n\n- Printed ({}): {}\n- Corrected: {}\n", c.id, c.section, markdown_escaped(c.equation),
+                      markdown_escaped(printed_of(o).source), printed_markdown(o), markdown_escaped(o.result.correction));
+    if (!o.result.note.empty()) md += "- Note: " + markdown_escaped(o.result.note) + "\n";
+    md += fmt::format("- Evidence: [{}](#{})\n\n", c.id, heading_slug(c.id));
   }
   if (!any_erratum) md += "None in this run.\n\n";
 
-  md += "## Notes on claims that hold\n\n";
+  md += "## Failures\n\n";
+  bool any_failure = false;
   for (const claim_outcome& o : r.outcomes) {
-    if (o.result.outcome == verdict::erratum || o.result.note.empty()) continue;
-    md += fmt::format("- **{}**: {}\n", o.checked->id, o.result.note);
+    if (o.result.outcome != verdict::fails && o.result.outcome != verdict::kernels_disagree) continue;
+    any_failure = true;
+    const claim& c = *o.checked;
+    const std::string why = o.result.evidence.contains("error")
+                                ? "its check threw, a bug in the harness: " + o.result.evidence["error"].get<std::string>()
+                            : o.result.outcome == o.expected
+                                ? "an expected failure: the ledger expects this verdict, so the exit code is 0"
+                                : "not as expected (expected " + to_string(o.expected) + "): the exit code is 1";
+    md += fmt::format("### {} (§{}, {})\n\n- Verdict: **{}**, {}\n- Printed ({}): {}\n", c.id, c.section, markdown_escaped(c.equation),
+                      to_string(o.result.outcome), markdown_escaped(why), markdown_escaped(printed_of(o).source), printed_markdown(o));
+    if (!o.result.note.empty()) md += "- Note: " + markdown_escaped(o.result.note) + "\n";
+    md += fmt::format("- Evidence: [{}](#{})\n\n", c.id, heading_slug(c.id));
   }
+  if (!any_failure) md += "None in this run.\n\n";
 
+  md += "## Notes on claims that hold\n\n";
+  bool any_note = false;
+  for (const claim_outcome& o : r.outcomes) {
+    if (o.result.outcome != verdict::holds || o.result.note.empty()) continue;
+    any_note = true;
+    md += fmt::format("- **[{}](#{})**: {}\n", o.checked->id, heading_slug(o.checked->id), markdown_escaped(o.result.note));
+  }
+  if (!any_note) md += "None in this run.\n";
   md += "\n## Φ₃ at the paper's configuration\n\n";
-  md += r.paper_configuration.value("parameters", "") + "\n\n";
+  md += markdown_escaped(r.paper_configuration.value("parameters", "")) + "\n\n";
   md += "| precision | epsilon | α = δ | β | γ | det Φ₃ − 1 | Δ | H_d(Φ₃y) − H_d(y) |\n|---|---|---|---|---|---|---|---|\n";
   for (const json& row : r.paper_configuration["rows"]) {
-    md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |\n", row["precision"].get<std::string>(),
-                      row["epsilon"].get<std::string>(), row["alpha_equals_delta"].get<std::string>(),
-                      row["beta"].get<std::string>(), row["gamma"].get<std::string>(), row["det_minus_one"].get<std::string>(),
-                      row["discriminant"].get<std::string>(), row["hd_change_one_step"].get<std::string>());
+    md += "|";
+    for (const char* key : {"precision", "epsilon", "alpha_equals_delta", "beta", "gamma", "det_minus_one", "discriminant",
+                            "hd_change_one_step"}) {
+      md += " " + markdown_cell(row[key].get<std::string>()) + " |";
+    }
+    md += "\n";
   }
 
   if (!r.sections.empty()) {
@@ -346,27 +403,28 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
   md += "\n## Evidence\n\n";
   for (const claim_outcome& o : r.outcomes) {
     const claim& c = *o.checked;
-    md += fmt::format("### {}\n\n§{}, {} — **{}** (expected {})\n\n> {}\n\n", c.id, c.section, c.equation,
-                      to_string(o.result.outcome), to_string(o.expected), c.statement);
+    md += fmt::format("### {}\n\n§{}, {} — **{}** (expected {})\n\n> {}\n\n", c.id, c.section, markdown_escaped(c.equation),
+                      to_string(o.result.outcome), to_string(o.expected), markdown_escaped(c.statement));
     if (!o.result.printed.is_null()) {
-      md += fmt::format("Read from the paper ({}):\n\n", o.result.printed["source"].get<std::string>());
+      md += fmt::format("Read from the paper ({}):\n\n", markdown_escaped(o.result.printed["source"].get<std::string>()));
       for (const json& f : o.result.printed["formulas"]) {
         std::vector<std::string> sides;
-        for (const json& side : f["parsed"]) sides.push_back(side.get<std::string>());
-        md += fmt::format("- {} (line {}): `{}`\n  - parsed: `{}`\n", f["label"].get<std::string>(), f["line"].get<int>(),
-                          f["tex"].get<std::string>(), join(sides, "` and `"));
+        for (const json& side : f["parsed"]) sides.push_back(markdown_code(side.get<std::string>()));
+        md += fmt::format("- {} (line {}): {}\n  - parsed: {}\n", markdown_escaped(f["label"].get<std::string>()), f["line"].get<int>(),
+                          markdown_code(f["tex"].get<std::string>()), join(sides, " and "));
       }
       md += "\n";
       const json& kernels = o.result.evidence["kernels"];
       md += fmt::format("What each kernel proved:\n\n- ours: {} ({})\n- GiNaC, printed side: {}\n- GiNaC, derived side: {}\n\n",
                         kernels["own"]["derived_holds"].get<bool>() ? "the derived statement" : "not the derived statement",
-                        kernels["own"]["statement"].get<std::string>(), kernels["ginac"]["printed"].get<std::string>(),
-                        kernels["ginac"]["derived"].get<std::string>());
+                        markdown_escaped(kernels["own"]["statement"].get<std::string>()),
+                        markdown_escaped(kernels["ginac"]["printed"].get<std::string>()),
+                        markdown_escaped(kernels["ginac"]["derived"].get<std::string>()));
     } else {
       md += "Statement typed from the paper's prose (not machine-read).\n\n";
     }
-    if (!o.result.correction.empty()) md += "Corrected: " + o.result.correction + "\n\n";
-    if (!o.result.note.empty()) md += "Note: " + o.result.note + "\n\n";
+    if (!o.result.correction.empty()) md += "Corrected: " + markdown_escaped(o.result.correction) + "\n\n";
+    if (!o.result.note.empty()) md += "Note: " + markdown_escaped(o.result.note) + "\n\n";
     md += "```json\n" + o.result.evidence.dump(2) + "\n```\n\n";
   }
   return md;

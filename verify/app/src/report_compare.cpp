@@ -56,7 +56,7 @@ void walk(const json& a, const json& b, const std::string& where, std::vector<st
 
 /// "claims[3].evidence.x" → "claim <id>: evidence.x"; "experiments.table1.entries[2].ours" →
 /// "section table1, entries row 2, column ours".
-void compare_claims(const json& a, const json& b, std::vector<std::string>& out) {
+void compare_claims(const json& a, const json& b, std::vector<std::string>& out, bool subset = false) {
   std::map<std::string, const json*> old_claims;
   for (const json& c : a) old_claims[c.value("id", "")] = &c;
   std::set<std::string> seen;
@@ -73,12 +73,13 @@ void compare_claims(const json& a, const json& b, std::vector<std::string>& out)
     for (const std::string& line : lines) out.push_back("claim " + id + ": " + line);
   }
   for (const auto& [id, c] : old_claims) {
-    if (!seen.count(id)) out.push_back("claim " + id + ": only in the old report (verdict " + c->value("verdict", "?") + ")");
+    if (!subset && !seen.count(id)) out.push_back("claim " + id + ": only in the old report (verdict " + c->value("verdict", "?") + ")");
   }
 }
 
-void compare_sections(const json& a, const json& b, std::vector<std::string>& out) {
+void compare_sections(const json& a, const json& b, std::vector<std::string>& out, bool subset = false) {
   for (const auto& [name, section] : a.items()) {
+    if (subset && !b.contains(name)) continue;
     if (!b.contains(name)) {
       out.push_back("section " + name + ": only in the old report");
       continue;
@@ -141,6 +142,20 @@ std::vector<std::string> compare_reports(const json& a, const json& b) {
   for (const auto& [key, value] : b.items()) {
     if (!ignored_keys().count(key) && !a.contains(key)) out.push_back(key + ": only in the new report");
   }
+  return out;
+}
+
+std::vector<std::string> compare_report_subset(const json& a, const json& b) {
+  std::vector<std::string> out;
+  for (const char* key : {"schema_version", "tool", "scene", "paper", "seed", "samples", "precisions"}) {
+    if (a.contains(key) != b.contains(key)) {
+      out.push_back(std::string(key) + (a.contains(key) ? ": only in the old report" : ": only in the new report"));
+    } else if (a.contains(key)) {
+      walk(a.at(key), b.at(key), key, out);
+    }
+  }
+  compare_claims(a.value("claims", json::array()), b.value("claims", json::array()), out, true);
+  compare_sections(a.value("experiments", json::object()), b.value("experiments", json::object()), out, true);
   return out;
 }
 

@@ -89,4 +89,18 @@ bool all_as_expected(const run_record& r) {
   return true;
 }
 
+std::vector<std::string> rejected_certificates(const run_record& r) {
+  std::vector<std::string> ids;
+  for (const claim_outcome& o : r.outcomes) {
+    const json& evidence = o.result.evidence;
+    if (evidence.contains("coq") && evidence["coq"].value("status", "") == "failed") ids.push_back(o.checked->id);
+  }
+  return ids;
+}
+
+int run_exit_code(const run_record& r) {
+  if (!r.internal_errors.empty()) return 3;
+  return all_as_expected(r) && rejected_certificates(r).empty() ? 0 : 1;
+}
+
 }  // namespace simpson::verify

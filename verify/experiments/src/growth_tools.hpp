@@ -53,12 +53,12 @@ Real growth_exponent(const std::vector<long long>& steps, const std::vector<Real
 /// a factor 4 below it, to the end; none when that value is not positive.
 template <class Real>
 void add_slope_guide(panel& p, const std::string& title, double exponent, const std::vector<long long>& steps,
-                     const std::vector<Real>& values) {
+                     const std::vector<Real>& values, int color = 8, int dash = 2) {
   if (steps.empty()) return;
   std::size_t anchor = 0;
   while (anchor + 1 < steps.size() && steps[anchor] < growth_fit_start(steps.back())) ++anchor;
   if (!(values[anchor] > 0)) return;
-  series guide(title, line_style::dashed, 8);
+  series guide(title, line_style::dashed, color, 7, dash);
   guide.reference = true;
   for (std::size_t i = anchor; i < steps.size(); ++i) {
     using std::pow;

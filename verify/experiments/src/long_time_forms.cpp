@@ -128,7 +128,7 @@ void add_long_time_forms(const long_time_settings& s, section_result& out) {
   // Guides through the matrix form's and the shear form's values at the fit's first step: slope 1
   // (a drift) and 1/2 (a random walk).
   add_slope_guide(growth, "slope t", 1.0, runs[0].steps, runs[0].hd_error);
-  add_slope_guide(growth, "slope sqrt(t)", 0.5, runs[1].steps, runs[1].hd_error);
+  add_slope_guide(growth, "slope √t", 0.5, runs[1].steps, runs[1].hd_error, 9, 3);  // black short dashes: not the slope-t guide
   out.add(std::move(rows));
   out.add(plot_description{"long_time_forms",
                            "Relative H_d error of Φ₃'s three forms in double against the step count (log-log), with guides of "

@@ -123,7 +123,7 @@ void add_nonlinear_brouwer(const nonlinear_settings& s, section_result& out) {
     growth.curves.push_back(curve);
   }
   add_slope_guide(growth, "slope t", 1.0, runs.steps, runs.energy_error[0]);
-  add_slope_guide(growth, "slope sqrt(t)", 0.5, runs.steps, runs.energy_error[1]);
+  add_slope_guide(growth, "slope √t", 0.5, runs.steps, runs.energy_error[1], 9, 3);  // black short dashes: not the slope-t guide
   if (!runs.failure.empty()) {
     rows.add({figure::text("all"), figure::integer(runs.steps.empty() ? 0 : runs.steps.back()), figure::fault("failed: " + runs.failure),
               figure::fault("failed"), figure::fault("failed")});

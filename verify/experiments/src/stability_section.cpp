@@ -202,7 +202,7 @@ std::pair<table, plot_description> extreme_omega_h(const stability_settings& s) 
   std::vector<panel> digit_panels;
   for (const precision& prec : s.precisions) {
     // A digits axis per precision: from 0 to the digits the precision carries (-log10 eps), drawn as a guide.
-    panel digits_panel{prec.name(), {"omega h (dimensionless)", true}, {"correct significant digits"}, {}, "bottom right"};
+    panel digits_panel{prec.name(), {"ωh (dimensionless)", true}, {"correct significant digits"}, {}, "bottom right"};
     const double precision_digits = static_cast<double>(prec.digits10());
     digits_panel.y.range = std::pair{0.0, precision_digits * 1.08};
     series c_digits{"c (truncation coefficient)", line_style::lines_points, 0, 7};

@@ -32,7 +32,7 @@ plot_description figure1_plot(double m, long long N) {
   const double omega = boost::math::constants::two_pi<double>();
   const oscillator_parameters<double> par{m, omega, step_size(1.0, N)};
   const phase_point<double> y0{m * omega, 0.0};
-  series q_exact{"q exact", line_style::lines, 9}, p_exact{"p/(m omega) exact", line_style::dashed, 9};
+  series q_exact{"q exact", line_style::lines, 9}, p_exact{"p/(mω) exact", line_style::dashed, 9};
   for (int k = 0; k <= 400; ++k) {
     const double t = k / 400.0;
     const phase_point<double> y = exact_solution(par, y0, t);
@@ -40,13 +40,13 @@ plot_description figure1_plot(double m, long long N) {
     p_exact.add(figure::of(t), figure::of(y.p / (m * omega)));
   }
   panel pan{fmt::format("Figure 1: harmonic oscillator, one period, N = {}", N),
-            {"t (periods)"}, {"q and p/(m omega) (dimensionless)"}, {q_exact, p_exact}, "outside right"};
+            {"t (periods)"}, {"q and p/(mω) (dimensionless)"}, {q_exact, p_exact}, "outside right"};
   const std::array<std::pair<const char*, one_step_matrix<double>>, 2> schemes{
       {{"Newmark", newmark_map(par)}, {"Simpson", simpson_map(par)}}};
   for (std::size_t s = 0; s < schemes.size(); ++s) {
     const auto path = trajectory(schemes[s].second, y0, static_cast<std::size_t>(N));
     series q{fmt::format("q {}", schemes[s].first), line_style::lines_points, static_cast<int>(s), s ? 7 : 6};
-    series p{fmt::format("p/(m omega) {}", schemes[s].first), line_style::lines_points, static_cast<int>(s), s ? 5 : 4};
+    series p{fmt::format("p/(mω) {}", schemes[s].first), line_style::lines_points, static_cast<int>(s), s ? 5 : 4};
     for (std::size_t j = 0; j < path.size(); ++j) {
       const double t = static_cast<double>(j) * par.h();
       q.add(figure::of(t), figure::of(path[j].q));
@@ -158,7 +158,7 @@ section_result run_table1(const table1_settings& s) {
   // Errors of p and q against N: ours (lines), published (open points), and slopes h² and h⁴ a factor
   // 4 below the first Newmark and Simpson state errors (beside the curves, not on them).
   panel convergence{"Table 1: maximum errors against N (one period)", {"N (steps per period)", true},
-                    {"maximum error (p in m omega units, q dimensionless)", true}, {}, "outside right"};
+                    {"maximum error: |Δp| (absolute, m = 1) and |Δq|", true}, {}, "outside right"};
   for (std::size_t r = 0; r < 4; ++r) {
     const published_row& row = published_rows()[r];
     const std::string name = fmt::format("{} {}", row.simpson_scheme ? "Simpson" : "Newmark", r < 2 ? "p" : "q");

@@ -148,8 +148,9 @@ section_result run_work_precision(const work_precision_settings& s) {
   times.timing = true;
   std::vector<panel> by_time, by_n;
   for (const precision& prec : s.precisions) {
-    panel time_panel{prec.name(), {"run time (s, minimum of repeats)", true}, {"max error", true}, {}, "bottom left"};
-    panel n_panel{prec.name(), {"N (steps per period)", true}, {"max error", true}, {}, "bottom left"};
+    const std::string error_label = "max error of q and p/(mω)";  // error_max: the larger of the two
+    panel time_panel{prec.name(), {"run time (s, minimum of repeats)", true}, {error_label, true}, {}, "bottom left"};
+    panel n_panel{prec.name(), {"N (steps per period)", true}, {error_label, true}, {}, "bottom left"};
     visit_floating(prec, [&](auto precision_tag) {
       using Real = typename decltype(precision_tag)::type;
       // The exact solution at every t_j of each N, shared by the schemes.
@@ -191,7 +192,7 @@ section_result run_work_precision(const work_precision_settings& s) {
                                          static_cast<double>(s.meshes.front()), *e0 / 4, s.meshes, order);
         n_panel.curves.push_back(slope);
       }
-      series floor_line{"round-off floor 100 N eps", line_style::dashed, 8};
+      series floor_line{"round-off floor 100 N eps", line_style::dashed, 8, 7, 3};  // short dashes: not a slope
       floor_line.reference = true;
       for (const long long N : s.meshes) {
         floor_line.add(figure::integer(N), figure::of(Real(100 * Real(N * s.periods) * eps<Real>())));
@@ -206,16 +207,16 @@ section_result run_work_precision(const work_precision_settings& s) {
   const int columns = static_cast<int>(std::min<std::size_t>(3, s.precisions.size()));
   const int panel_rows = static_cast<int>((s.precisions.size() + static_cast<std::size_t>(columns) - 1) / static_cast<std::size_t>(columns));
   if (timed) {
-    plot_description time_plot{"work_precision_time", "Maximum error against run time (log-log), one panel per precision",
-                               by_time, columns, 440 * columns, 360 * panel_rows};
+    plot_description time_plot{"work_precision_time", "Maximum error of q and p/(mω) against run time (log-log), one panel per precision",
+                               by_time, columns, 460 * columns, 400 * panel_rows};
     time_plot.timing = true;
     out.add(std::move(time_plot));
   }
   out.add(plot_description{"work_precision_n",
-                           "Maximum error against N, one panel per precision; dashed guides: slopes N⁻² and N⁻⁴ and the "
-                           "round-off floor 100 N eps",
+                           "Maximum error of q and p/(mω) against N, one panel per precision; dashed guides: slopes N⁻² (grey) "
+                           "and N⁻⁴ (black); short dashes: the round-off floor 100 N eps",
                            by_n,
-                           columns, 440 * columns, 360 * panel_rows});
+                           columns, 460 * columns, 400 * panel_rows});
   return out;
 }
 

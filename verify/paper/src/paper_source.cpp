@@ -5,6 +5,7 @@
 #include <simpson/verify/sha256.hpp>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -89,11 +90,18 @@ paper_source embedded_paper() {
 }
 
 paper_source load_paper(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) {
+    throw std::invalid_argument("paper '" + path + "': is a directory, not the paper's LaTeX file");
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::invalid_argument("paper '" + path + "': missing or unreadable");
   std::ostringstream text;
   text << in.rdbuf();
   if (!in.good() && !in.eof()) throw std::invalid_argument("paper '" + path + "': cannot be read");
+  if (text.str().find_first_not_of(" \t\r\n") == std::string::npos) {
+    throw std::invalid_argument("paper '" + path + "': the file is empty");
+  }
   paper_source paper{path, without_comments(text.str()), sha256_hex(text.str())};
   if (paper.text.find("symplectic scheme") == std::string::npos || paper.text.find("\\label{Phi3}") == std::string::npos) {
     throw std::invalid_argument("paper '" + path +

@@ -1,31 +1,41 @@
 // Writing a report directory: staged beside it, then swapped into place; plots drawn by gnuplot;
-// report.html rendered from report.md by cmark-gfm with the SVG plots embedded.
+// report.html rendered from report.md (report_html.cpp).
 
 #include <simpson/verify/interruption.hpp>
 #include <simpson/verify/report_directory.hpp>
 
-#include <cmark-gfm-core-extensions.h>
+#include <simpson/verify/report_html.hpp>
+
 #include <cmark-gfm.h>
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
+#include <csignal>
+#include <fcntl.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace simpson::verify {
 namespace {
 
+/// Throws std::filesystem::error_code's kind of error (the reason in errno's words) when the file
+/// cannot be written: a full disk or a read-only mount is the output directory's fault, not a bug.
 void write_file(const std::filesystem::path& path, const std::string& content) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out << content;
   out.flush();
-  if (!out) throw std::runtime_error("cannot write " + path.string());
+  if (!out) {
+    const int error = errno != 0 ? errno : EIO;
+    throw std::filesystem::filesystem_error("cannot write", path, std::error_code(error, std::generic_category()));
+  }
 }
 
 std::string read_file(const std::filesystem::path& path) {
@@ -35,17 +45,66 @@ std::string read_file(const std::filesystem::path& path) {
   return text.str();
 }
 
-/// A path quoted for /bin/sh.
-std::string shell_quote(const std::string& text) {
-  std::string out = "'";
-  for (const char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
+/// Runs `gnuplot script` in `dir`, its output to `log`; returns its exit status (127: not found).
+/// Not std::system: that ignores SIGINT in this process while gnuplot runs, and a terminal's Ctrl-C
+/// (sent to the whole process group) would kill gnuplot alone and let the run go on. Here gnuplot
+/// gets the default dispositions, this process keeps its handler, and a child killed by a signal
+/// stops the run as that signal would: the caller's throw_if_interrupted() then leaves no report.
+int run_gnuplot(const std::filesystem::path& dir, const std::string& script, const std::string& log) {
+  const pid_t child = ::fork();
+  if (child < 0) throw std::filesystem::filesystem_error("cannot start gnuplot", dir, std::error_code(errno, std::generic_category()));
+  if (child == 0) {  // only async-signal-safe calls until exec
+    if (::chdir(dir.c_str()) != 0) ::_exit(126);
+    const int null = ::open("/dev/null", O_RDONLY);  // never a terminal to wait on
+    if (null >= 0) {
+      ::dup2(null, STDIN_FILENO);
+      ::close(null);
+    }
+    const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd < 0) ::_exit(126);
+    ::dup2(fd, STDOUT_FILENO);
+    ::dup2(fd, STDERR_FILENO);
+    ::close(fd);
+    ::execlp("gnuplot", "gnuplot", script.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  // Polled, not a blocking waitpid: the CLI's handler is installed with SA_RESTART semantics, so a
+  // blocking wait would not return when only this process gets the signal, and gnuplot catches
+  // SIGINT itself (it interrupts the plot and returns to its prompt) instead of always dying of it.
+  int status = 0;
+  bool stopping = false;
+  for (;;) {
+    const pid_t done = ::waitpid(child, &status, WNOHANG);
+    if (done == child) break;
+    if (done < 0 && errno != EINTR) throw std::filesystem::filesystem_error("cannot wait for gnuplot", dir, std::error_code(errno, std::generic_category()));
+    if (!stopping && interruption_signal().load() != 0) {
+      ::kill(child, SIGKILL);  // stopping: the plot is discarded with the staging directory
+      stopping = true;
+    }
+    ::usleep(2000);
+  }
+  throw_if_interrupted();
+  if (WIFSIGNALED(status)) {
+    const int signal = WTERMSIG(status);
+    // Killed by an interrupt (a terminal's Ctrl-C reaches the whole group): the run stops too.
+    if (signal == SIGINT || signal == SIGTERM || signal == SIGHUP || signal == SIGQUIT) {
+      int none = 0;
+      interruption_signal().compare_exchange_strong(none, signal == SIGTERM ? SIGTERM : SIGINT);
+    }
+    throw_if_interrupted();
+    return 128 + signal;
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 1;
 }
 
 /// Draws one plot in `dir` (where its data files are): <name>.gp, then <name>.svg and <name>.png.
 /// Returns an empty string, or why it could not be drawn.
 std::string draw(const std::filesystem::path& dir, const plot_spec& plot) {
-  const std::string fonts = "font 'Sans,10'";
+  // Text that stays readable once the page scales the image to its 1200-pixel column: 12 points up
+  // to 1200 pixels wide, growing with the square root of the width beyond (a 1700-pixel plot gets
+  // 14 points, about 10 pixels on the page, and its panels keep room for their curves).
+  const int font_points = static_cast<int>(std::lround(12.0 * std::sqrt(std::max(1.0, plot.width / 1200.0))));
+  const std::string fonts = fmt::format("font 'Sans,{}'", font_points);
   const std::string script = fmt::format(
       "# {}\n# Redraw with: gnuplot {}.gp (in this directory)\n"
       "set terminal svg size {},{} dynamic enhanced {} background rgb 'white'\nset output '{}.svg'\n{}\nunset output\nreset\n"
@@ -53,15 +112,13 @@ std::string draw(const std::filesystem::path& dir, const plot_spec& plot) {
       plot.caption, plot.name, plot.width, plot.height, fonts, plot.name, plot.commands, plot.width, plot.height, fonts,
       plot.name, plot.commands);
   write_file(dir / (plot.name + ".gp"), script);
-  const std::string command = "cd " + shell_quote(dir.string()) + " && gnuplot " + shell_quote(plot.name + ".gp") +
-                              " > " + shell_quote(plot.name + ".log") + " 2>&1";
-  const int status = std::system(command.c_str());
+  const int status = run_gnuplot(dir, plot.name + ".gp", plot.name + ".log");
   std::error_code ignored;
   const std::string log = read_file(dir / (plot.name + ".log"));
   std::filesystem::remove(dir / (plot.name + ".log"), ignored);
   if (status != 0) {
     std::string first_line = log.substr(0, log.find('\n'));
-    if (status == 127 * 256 || log.find("not found") != std::string::npos) first_line = "gnuplot not found (scripts/install-deps)";
+    if (status == 127 || log.find("not found") != std::string::npos) first_line = "gnuplot not found (scripts/install-deps)";
     return plot.name + ": " + (first_line.empty() ? "gnuplot failed" : first_line);
   }
   if (!std::filesystem::exists(dir / (plot.name + ".svg")) || !std::filesystem::exists(dir / (plot.name + ".png"))) {
@@ -71,66 +128,6 @@ std::string draw(const std::filesystem::path& dir, const plot_spec& plot) {
     return plot.name + ": gnuplot: " + log.substr(0, log.find('\n'));
   }
   return {};
-}
-
-std::string base64(const std::string& bytes) {
-  static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  std::size_t k = 0;
-  for (; k + 2 < bytes.size(); k += 3) {
-    const unsigned v = (static_cast<unsigned char>(bytes[k]) << 16) | (static_cast<unsigned char>(bytes[k + 1]) << 8) |
-                       static_cast<unsigned char>(bytes[k + 2]);
-    for (int s = 18; s >= 0; s -= 6) out += table[(v >> s) & 63];
-  }
-  if (k < bytes.size()) {
-    unsigned v = static_cast<unsigned char>(bytes[k]) << 16;
-    if (k + 1 < bytes.size()) v |= static_cast<unsigned char>(bytes[k + 1]) << 8;
-    out += table[(v >> 18) & 63];
-    out += table[(v >> 12) & 63];
-    out += k + 1 < bytes.size() ? table[(v >> 6) & 63] : '=';
-    out += '=';
-  }
-  return out;
-}
-
-/// report.md as HTML (GitHub-flavoured tables), each <img src="X.svg"> replaced by the SVG itself
-/// as a data URI, so that the one file shows the whole report.
-std::string render_html(const std::string& markdown, const std::filesystem::path& dir, const std::string& title) {
-  cmark_gfm_core_extensions_ensure_registered();
-  const std::unique_ptr<cmark_parser, decltype(&cmark_parser_free)> parser(cmark_parser_new(CMARK_OPT_DEFAULT),
-                                                                           cmark_parser_free);
-  for (const char* name : {"table", "strikethrough", "autolink"}) {
-    if (cmark_syntax_extension* ext = cmark_find_syntax_extension(name)) cmark_parser_attach_syntax_extension(parser.get(), ext);
-  }
-  cmark_parser_feed(parser.get(), markdown.data(), markdown.size());
-  cmark_node* document = cmark_parser_finish(parser.get());
-  char* rendered = cmark_render_html(document, CMARK_OPT_DEFAULT, cmark_parser_get_syntax_extensions(parser.get()));
-  std::string body(rendered);
-  std::free(rendered);
-  cmark_node_free(document);
-  std::string out;
-  std::size_t at = 0;
-  const std::string marker = "<img src=\"";
-  for (std::size_t found; (found = body.find(marker, at)) != std::string::npos;) {
-    const std::size_t start = found + marker.size(), end = body.find('"', start);
-    const std::string src = body.substr(start, end - start);
-    out += body.substr(at, start - at);
-    if (src.size() > 4 && src.substr(src.size() - 4) == ".svg" && std::filesystem::exists(dir / src)) {
-      out += "data:image/svg+xml;base64," + base64(read_file(dir / src));
-    } else {
-      out += src;
-    }
-    at = end;
-  }
-  out += body.substr(at);
-  // Links between the report's pages go to their HTML renderings.
-  for (std::size_t found; (found = out.find("href=\"timing.md\"")) != std::string::npos;) out.replace(found, 16, "href=\"timing.html\"");
-  for (std::size_t found; (found = out.find("href=\"report.md\"")) != std::string::npos;) out.replace(found, 16, "href=\"report.html\"");
-  return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + title +
-         "</title>\n<style>body{font-family:sans-serif;max-width:1200px;margin:2em auto;padding:0 1em;line-height:1.4}"
-         "table{border-collapse:collapse;font-size:90%}td,th{border:1px solid #ccc;padding:2px 6px}"
-         "pre{background:#f6f6f6;padding:8px;overflow-x:auto;font-size:85%}img{max-width:100%}</style>\n</head>\n<body>\n" +
-         out + "</body>\n</html>\n";
 }
 
 }  // namespace
@@ -167,7 +164,7 @@ plot_outcome write_report_directory(const std::filesystem::path& dir, const std:
     const report_documents docs = documents(plots);
     write_file(staging / "report.json", docs.report.dump(2) + "\n");
     write_file(staging / "report.md", docs.markdown);
-    write_file(staging / "report.html", render_html(docs.markdown, staging, docs.title));
+    write_file(staging / "report.html", render_report_html(docs.markdown, docs.title));
     if (!docs.junit.empty()) write_file(staging / "report.junit.xml", docs.junit);
     for (const auto& [name, content] : docs.extra_files) {
       std::filesystem::create_directories((staging / name).parent_path());
@@ -176,21 +173,39 @@ plot_outcome write_report_directory(const std::filesystem::path& dir, const std:
     if (!docs.timing.is_null()) {
       write_file(staging / "timing.json", docs.timing.dump(2) + "\n");
       write_file(staging / "timing.md", docs.timing_markdown);
-      write_file(staging / "timing.html", render_html(docs.timing_markdown, staging, docs.title + ": run times"));
+      write_file(staging / "timing.html", render_report_html(docs.timing_markdown, docs.title + ": run times"));
     }
-    throw_if_interrupted();
-    // Everything is written: the staged directory replaces the previous report whole.
-    if (std::filesystem::exists(target)) {
-      if (!std::filesystem::is_empty(target) && !holds_only_a_report(target)) {
-        throw std::invalid_argument("--out '" + dir.string() +
-                                    "': files that are not a simpson-verify report appeared during the run; nothing was replaced");
+    // Everything is written: the staged directory replaces the previous report whole. SIGINT and
+    // SIGTERM wait (blocked) during the two renames, so the swap is never left half done; one that
+    // came before it stops the run here, with the previous report untouched.
+    sigset_t stop_signals, before;
+    sigemptyset(&stop_signals);
+    sigaddset(&stop_signals, SIGINT);
+    sigaddset(&stop_signals, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &stop_signals, &before);
+    try {
+      throw_if_interrupted();
+      if (std::filesystem::exists(target)) {
+        if (!std::filesystem::is_empty(target) && !holds_only_a_report(target)) {
+          throw std::invalid_argument("--out '" + dir.string() +
+                                      "': files that are not a simpson-verify report appeared during the run; nothing was replaced");
+        }
+        std::filesystem::rename(target, previous);
+        try {
+          std::filesystem::rename(staging, target);
+        } catch (...) {
+          std::filesystem::rename(previous, target, ignored);  // put the previous report back
+          throw;
+        }
+      } else {
+        std::filesystem::rename(staging, target);
       }
-      std::filesystem::rename(target, previous);
-      std::filesystem::rename(staging, target);
-      std::filesystem::remove_all(previous, ignored);
-    } else {
-      std::filesystem::rename(staging, target);
+    } catch (...) {
+      pthread_sigmask(SIG_SETMASK, &before, nullptr);
+      throw;
     }
+    pthread_sigmask(SIG_SETMASK, &before, nullptr);
+    std::filesystem::remove_all(previous, ignored);
   } catch (...) {
     std::filesystem::remove_all(staging, ignored);
     throw;

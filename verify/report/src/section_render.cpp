@@ -1,5 +1,7 @@
 #include <simpson/verify/section_render.hpp>
 
+#include <simpson/verify/markdown_text.hpp>
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -23,19 +25,7 @@ json figure_json(const figure& f) {
   return f.value();
 }
 
-std::string markdown_cell(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    if (c == '|') {
-      out += "\\|";
-    } else if (c == '\n') {
-      out += ' ';
-    } else {
-      out += c;
-    }
-  }
-  return out;
-}
+std::string markdown_cell(const std::string& text) { return markdown_escaped(text); }
 
 namespace {
 
@@ -142,7 +132,7 @@ constexpr const char* palette[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "
                                    "#8c564b", "#e377c2", "#17becf", "#7f7f7f", "#000000"};
 
 /// The width in pixels of the legend column of a plot with several panels.
-constexpr int legend_width = 270;
+constexpr int legend_width = 380;  // room for 24 characters at the 12-point-or-more text of report_directory.cpp
 
 /// The gnuplot `with` clause of a curve: its style, colour, point type and dash type.
 std::string curve_style(const series& s) {
@@ -150,8 +140,9 @@ std::string curve_style(const series& s) {
   switch (s.style) {
     case line_style::lines: return fmt::format("w l lw 2 dt {} lc rgb '{}'", s.dash, color);
     case line_style::points: return fmt::format("w p pt {} ps 1.6 lc rgb '{}'", s.point, color);
-    case line_style::lines_points: return fmt::format("w lp pt {} lw 1.2 dt {} lc rgb '{}'", s.point, s.dash, color);
-    case line_style::dashed: return fmt::format("w l lw 1.2 dt 2 lc rgb '{}'", color);
+    case line_style::lines_points: return fmt::format("w lp pt {} ps 0.8 lw 1.2 dt {} lc rgb '{}'", s.point, s.dash, color);
+    // A guide: dashed (dash type 2) unless it asks for another, so that two guides of one panel differ.
+    case line_style::dashed: return fmt::format("w l lw 1.5 dt {} lc rgb '{}'", s.dash == 1 ? 2 : s.dash, color);
   }
   return "w l";
 }
@@ -174,8 +165,9 @@ std::string axis_range(const char* name, const axis& a, bool log, const std::vec
     if (decades < 1.5 && distinct.size() <= 12) {
       // Less than two decades: label the data's own values (N = 10, 20, 40), not a lone power of ten.
       gp += fmt::format("set format {} '%g'\nset {}tics ({:.6g})\nset m{}tics default\n", name, name, fmt::join(distinct, ", "), name);
-    } else if (decades > 12) {
-      const int step = static_cast<int>(std::ceil(decades / 8));
+    } else if (decades > 6) {
+      // At most about six labels: at the report's 12-point-or-more text, one a decade crowds a panel.
+      const int step = static_cast<int>(std::ceil(decades / 6));
       gp += fmt::format("set {}tics 1e{}\nset m{}tics 1\n", name, step, name);
     } else {
       gp += fmt::format("set {}tics autofreq\nset m{}tics default\n", name, name);
@@ -212,7 +204,7 @@ std::string plot_commands(const plot_description& p) {
           gp_quote(log10_y ? "log10 of " + pan.y.label + " (beyond double's range)" : pan.y.label) + "\n";
     gp += pan.x.log ? "set logscale x\nset format x '10^{%L}'\n" : "unset logscale x\nset format x '%g'\n";
     gp += pan.y.log && !log10_y ? "set logscale y\nset format y '10^{%L}'\n" : "unset logscale y\nset format y '%g'\n";
-    gp += shared_legend ? "unset key\n" : "set key " + pan.key + " font ',8'\n";
+    gp += shared_legend ? "unset key\n" : "set key " + pan.key + "\n";
     // Both ranges fitted to the data curves (guides such as slopes and floors are clipped to them).
     std::vector<double> xs, ys;
     for (const series& s : pan.curves) {
@@ -244,7 +236,7 @@ std::string plot_commands(const plot_description& p) {
     // The legend: an empty plot in the right-hand column, one key entry per curve title.
     gp += fmt::format("set origin {:.4f},0\nset size {:.4f},1\nunset title\nunset xlabel\nunset ylabel\nunset logscale xy\n"
                       "unset border\nunset tics\nset xrange [0:1]\nset yrange [0:1]\n"
-                      "set key at screen {:.4f},0.97 left top Left reverse samplen 3 spacing 1.3 font ',9'\n",
+                      "set key at screen {:.4f},0.97 left top Left reverse samplen 3 spacing 1.3\n",
                       1 - legend_fraction, legend_fraction, 1 - legend_fraction + 0.01);
     std::vector<std::string> entries;
     for (const series* s : legend) entries.push_back(fmt::format("NaN {} t {}", curve_style(*s), gp_quote(s->title)));
@@ -295,7 +287,7 @@ std::string blocks_markdown(const section_result& s, bool timing) {
       if (t->markdown) md += table_markdown(*t);
       if (!t->csv_file.empty()) md += "Data: " + t->csv_file + " (every digit computed).\n\n";
     } else if (const plot_description* p = std::get_if<plot_description>(&b)) {
-      md += fmt::format("![{}]({}.svg)\n\n*{}*", p->caption, p->name, p->caption);
+      md += fmt::format("![{}]({}.svg)\n\n*{}*", markdown_escaped(p->caption), p->name, markdown_escaped(p->caption));
       const std::vector<std::string> log10_panels = panels_drawn_as_log10(*p);
       if (!log10_panels.empty()) {
         md += fmt::format(" Panel{} {} show{} log10 of the values, which lie beyond double's range.", log10_panels.size() == 1 ? "" : "s",

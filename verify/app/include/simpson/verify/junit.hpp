@@ -1,8 +1,12 @@
 #pragma once
 // report.junit.xml: the run in the JUnit XML that the GitLab, Jenkins and GitHub test reporters
-// read. One testsuite "claims" with a testcase per claim, failed when the verdict differs from the
-// expected one; one testsuite per experiment section with a testcase per table, failed when a cell
-// holds a fault (overflow, underflow, non-finite, unstable, failed).
+// read. Its failures and errors are exactly what makes the exit code non-zero (run_exit_code):
+// - testsuite "claims", a testcase per claim with properties verdict and expected: a failure when
+//   the verdict differs from the expected one or coqc rejected its certificate, an error when its
+//   check threw; an erratum as expected passes with the printed and corrected text in <system-out>;
+//   a `fails` as expected is <skipped> with its reason (an expected failure);
+// - a testsuite per experiment section, a testcase per table: its faults (overflow, underflow,
+//   non-finite, unstable) are findings, counted in a property and listed in <system-out>.
 
 #include <simpson/verify/run.hpp>
 

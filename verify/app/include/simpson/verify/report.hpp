@@ -22,6 +22,9 @@ json report_json(const run_record& r);
 std::string report_markdown(const run_record& r);
 /// One line: "48 claims: 42 held, 5 errata, 1 failed; all as expected".
 std::string summary_line(const run_record& r);
+/// What the exit code says about the verdicts, in one line: "Exit code 0: every verdict is the one
+/// the ledger records as expected ... 7 errata ... and 1 expected failure (table-values ...)".
+std::string expectation_line(const run_record& r);
 
 /// Writes report.json, report.md, report.html, the sections' data files (CSV, .dat), the gnuplot
 /// scripts (<plot>.gp) and the plots (SVG, PNG). Everything is made in a staging directory beside

@@ -24,6 +24,13 @@ const std::vector<std::string>& comparison_tolerances();
 /// The differences between two report.json documents, one line each; empty when they agree.
 std::vector<std::string> compare_reports(const json& old_report, const json& new_report);
 
+/// The same for a run of a selection against a fuller report (`compare --subset`): only the claims
+/// and the sections the new report has are compared, each with the old report's; the run's settings
+/// that shape their figures (tool, schema, scene, paper, seed, samples, precisions) must agree. A
+/// claim or section of the new report that the old one lacks is a difference; what the new report
+/// leaves out is not.
+std::vector<std::string> compare_report_subset(const json& old_report, const json& new_report);
+
 /// report.json of a report directory (or the file itself). Throws std::invalid_argument naming the
 /// path when it is missing or is not a simpson-verify report.
 json load_report(const std::filesystem::path& dir_or_file);

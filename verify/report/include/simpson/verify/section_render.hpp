@@ -31,7 +31,7 @@ struct plot_spec {
 /// text (every digit of its precision) otherwise, true/false for a flag, the word for a fault.
 json figure_json(const figure& f);
 
-/// A Markdown table cell: '|' escaped, newlines folded.
+/// A Markdown table cell: markdown_escaped (every syntax character escaped, '|' among them, newlines folded).
 std::string markdown_cell(const std::string& text);
 
 /// The section's member of report.json: its conventions, each table that is not a timing table as

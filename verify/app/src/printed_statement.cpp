@@ -1,0 +1,28 @@
+#include <simpson/verify/printed_statement.hpp>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace simpson::verify {
+
+printed_statement printed_of(const claim_outcome& o) {
+  const json& printed = o.result.printed;
+  if (printed.is_null() || !printed.contains("formulas") || printed["formulas"].empty()) {
+    return {o.checked->statement, "typed from the prose", false};
+  }
+  std::string text, lines;
+  std::vector<int> seen;
+  for (const json& f : printed["formulas"]) {
+    text += (text.empty() ? "" : " ; ") + f.value("tex", std::string());
+    const int line = f.value("line", 0);
+    if (std::find(seen.begin(), seen.end(), line) != seen.end()) continue;  // two formulas of one line
+    seen.push_back(line);
+    lines += (lines.empty() ? "" : ", ") + std::to_string(line);
+  }
+  const bool several = seen.size() > 1;
+  return {text, fmt::format("{}, line{} {}", printed.value("source", std::string("?")), several ? "s" : "", lines), true};
+}
+
+}  // namespace simpson::verify
