@@ -287,6 +287,22 @@ check "empty paper" 2 --claims phi3-det --paper "$work/empty.tex" --out "$work/n
 grep -q "the file is empty" "$work/err" || fail "empty paper: $(cat "$work/err")"
 check "paper is a directory" 2 --claims phi3-det --paper "$work" --out "$work/none-paper6"
 grep -q "is a directory" "$work/err" || fail "paper directory: $(cat "$work/err")"
+# A read-only mount: named as such in one line, before anything runs, whether --out is the mount
+# point or a directory inside it. Needs a mount namespace (unshare, as root, as CI runs).
+if unshare -m true 2>/dev/null; then
+  mkdir -p "$work/ro1" "$work/ro2"
+  unshare -m bash -c "mount -t tmpfs -o ro tmpfs '$work/ro1' && mount -t tmpfs tmpfs '$work/ro2' &&
+    '$bin' --claims phi3-det --precisions double --quiet --out '$work/ro2/inside' >/dev/null && mount -o remount,ro '$work/ro2' &&
+    { '$bin' --claims phi3-det --precisions double --out '$work/ro1' 2>'$work/err-ro1'; echo \$? >'$work/rc-ro1';
+      '$bin' --claims phi3-det --precisions double --out '$work/ro2/inside' 2>'$work/err-ro2'; echo \$? >'$work/rc-ro2'; }"
+  [ "$(cat "$work/rc-ro1" 2>/dev/null)" = 2 ] && [ "$(wc -l <"$work/err-ro1")" = 1 ] && grep -q "is a mount point (read-only)" "$work/err-ro1" &&
+    { echo "ok   read-only mount point as --out"; passes=$((passes + 1)); } || fail "read-only mount point: $(cat "$work/rc-ro1" "$work/err-ro1" 2>&1)"
+  [ "$(cat "$work/rc-ro2" 2>/dev/null)" = 2 ] && [ "$(wc -l <"$work/err-ro2")" = 1 ] && grep -q "Read-only file system" "$work/err-ro2" &&
+    ! grep -q "filesystem error" "$work/err-ro2" &&
+    { echo "ok   directory on a read-only mount as --out"; passes=$((passes + 1)); } || fail "read-only mount: $(cat "$work/rc-ro2" "$work/err-ro2" 2>&1)"
+else
+  echo "skip read-only mount (no mount namespace here: unshare -m refused)"
+fi
 # --help: every embedded scene, integers typed as such.
 check "help" 0 --help
 grep -q 'embedded scene name (beyond, paper, quick)' "$work/out" || fail "help: scenes not all listed"

@@ -1,6 +1,7 @@
 #include <simpson/verify/junit.hpp>
 
 #include <simpson/verify/printed_statement.hpp>
+#include <simpson/verify/report_html.hpp>
 
 #include <fmt/format.h>
 
@@ -10,20 +11,7 @@
 namespace simpson::verify {
 namespace {
 
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+std::string escaped(const std::string& text) { return markup_escaped(text); }
 
 /// What a testcase records. At most one of failure, error, skipped; `out` goes to <system-out>.
 struct testcase {

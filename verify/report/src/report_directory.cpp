@@ -20,6 +20,7 @@
 #include <stdexcept>
 #include <csignal>
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -265,6 +266,15 @@ void prepare_output_directory(const std::filesystem::path& dir) {
     if (!std::filesystem::is_directory(dir)) refuse("cannot create the directory (Not a directory)");
     if (!std::filesystem::is_empty(dir, error) && !holds_only_a_report(dir)) {
       refuse("holds files that are not a simpson-verify report; choose an empty or new directory (nothing was deleted)");
+    }
+    // The new report replaces the directory whole (a rename): a mount point cannot be renamed, and a
+    // read-only one cannot be replaced either. Said now, before anything runs.
+    struct stat own {}, above {};
+    const std::filesystem::path absolute = std::filesystem::absolute(dir, error).lexically_normal();
+    const std::filesystem::path parent = (absolute.filename().empty() ? absolute.parent_path() : absolute).parent_path();
+    if (::stat(absolute.c_str(), &own) == 0 && ::stat(parent.c_str(), &above) == 0 && own.st_dev != above.st_dev) {
+      refuse(std::string("is a mount point") + (::access(absolute.c_str(), W_OK) != 0 && errno == EROFS ? " (read-only)" : "") +
+             "; the report replaces its directory whole, so name a directory inside it");
     }
   }
   // The report is staged beside `dir`: its parent must exist (or be creatable) and be writable.

@@ -10,6 +10,9 @@
 
 namespace simpson::verify {
 
+/// Text for HTML or XML (report.html, report.junit.xml): & < > " ' as entities.
+std::string markup_escaped(std::string_view text);
+
 /// GitHub's anchor for a heading: lower case, ASCII punctuation other than '-' and '_' dropped,
 /// spaces turned into '-' ("phi3-det" stays "phi3-det"; "Notes on claims" is "notes-on-claims").
 std::string heading_slug(std::string_view heading_text);
