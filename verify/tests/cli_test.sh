@@ -269,7 +269,7 @@ check "compare --subset altered" 1 compare --subset "$reference" "$work/headline
 # The console: an erratum's correction, and what exit 0 with a failure means.
 check "errata on the console" 0 --claims gamma-determinant,table-values --precisions double --out "$work/console"
 grep -q '^           corrected: det Gamma = (1/4)' "$work/out" || fail "errata on the console: no corrected line: $(cat "$work/out")"
-grep -q '^Exit code 0: every verdict is the one the ledger records as expected.*1 expected failure (table-values' "$work/out" ||
+grep -q '^Exit code 0: every verdict is the expected one, the ledger.s recorded judgment.*1 expected failure (table-values' "$work/out" ||
   fail "console: exit 0 with a failure not explained: $(tail -4 "$work/out")"
 grep -q 'Phi3 at the paper' "$work/out" && fail "console: a selection printed the Phi3 table"
 grep -q '^## Failures' "$work/console/report.md" && grep -q '^### table-values' "$work/console/report.md" || fail "report: no Failures section"

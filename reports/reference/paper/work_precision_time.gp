@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.19305e-08:0.000698404]
+set xrange [5.19227e-08:0.000700607]
 set xtics autofreq
 set mxtics default
 set yrange [4.29802e-15:0.337578]
@@ -37,7 +37,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [8.62934e-08:0.0036248]
+set xrange [9.27695e-08:0.00361827]
 set xtics autofreq
 set mxtics default
 set yrange [3.30044e-15:0.34185]
@@ -61,7 +61,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [8.87641e-07:0.0282363]
+set xrange [8.92994e-07:0.029035]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -85,7 +85,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.92749e-06:0.0517047]
+set xrange [1.92731e-06:0.0518031]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -109,7 +109,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [2.90051e-06:0.0630843]
+set xrange [2.87103e-06:0.0641116]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -159,7 +159,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.19305e-08:0.000698404]
+set xrange [5.19227e-08:0.000700607]
 set xtics autofreq
 set mxtics default
 set yrange [4.29802e-15:0.337578]
@@ -183,7 +183,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [8.62934e-08:0.0036248]
+set xrange [9.27695e-08:0.00361827]
 set xtics autofreq
 set mxtics default
 set yrange [3.30044e-15:0.34185]
@@ -207,7 +207,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [8.87641e-07:0.0282363]
+set xrange [8.92994e-07:0.029035]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -231,7 +231,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.92749e-06:0.0517047]
+set xrange [1.92731e-06:0.0518031]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -255,7 +255,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [2.90051e-06:0.0630843]
+set xrange [2.87103e-06:0.0641116]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]

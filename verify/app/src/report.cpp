@@ -76,13 +76,19 @@ std::string expectation_line(const run_record& r) {
   }
   const int code = run_exit_code(r);
   if (code == 3) return "Exit code 3: a check threw (a bug in the harness); see Failures.";
-  const std::string rejected = rejected_certificates(r).empty() ? "" : "; coqc rejected a certificate";
+  const bool rejected = !rejected_certificates(r).empty();
   if (code != 0) {
-    return fmt::format("Exit code 1: {} verdict{} differ{} from the ledger's expected one{}; see Failures.", c.unexpected.size(),
-                       c.unexpected.size() == 1 ? "" : "s", c.unexpected.size() == 1 ? "s" : "", rejected);
+    std::string why;
+    if (!c.unexpected.empty()) {
+      why = fmt::format("{} verdict{} differ{} from the expected one (the ledger's recorded judgment of the printed paper): "
+                        "either the paper or the harness changed",
+                        c.unexpected.size(), c.unexpected.size() == 1 ? "" : "s", c.unexpected.size() == 1 ? "s" : "");
+    }
+    if (rejected) why += (why.empty() ? "" : "; ") + std::string("coqc rejected a certificate");
+    return "Exit code 1: " + why + "; see Failures.";
   }
-  std::string line = "Exit code 0: every verdict is the one the ledger records as expected. That is a regression check of "
-                     "the paper's verdicts, not a validation: ";
+  std::string line = "Exit code 0: every verdict is the expected one, the ledger's recorded judgment of the printed paper (a "
+                     "regression check: a difference would mean that the paper or the harness changed), not a validation: ";
   line += fmt::format("{} {} (false as printed, a correction proved)", c.errata, c.errata == 1 ? "erratum" : "errata");
   if (!expected_failures.empty()) {
     line += fmt::format(" and {} expected failure{} ({}: not reproduced, no correction found)", expected_failures.size(),
@@ -352,7 +358,8 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
   md += "## Failures\n\n";
   bool any_failure = false;
   for (const claim_outcome& o : r.outcomes) {
-    if (o.result.outcome != verdict::fails && o.result.outcome != verdict::kernels_disagree) continue;
+    const bool failed = o.result.outcome == verdict::fails || o.result.outcome == verdict::kernels_disagree;
+    if (!failed && o.result.outcome == o.expected) continue;  // also a holds or erratum not as expected
     any_failure = true;
     const claim& c = *o.checked;
     const std::string why = o.result.evidence.contains("error")
