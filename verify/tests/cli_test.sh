@@ -260,7 +260,7 @@ grep -q -- "--out '$work/quick-full': holds a fuller report (6 claims, 4 section
 check "empty --out" 2 --claims phi3-det --out ""
 grep -q -- "--out '': an empty directory name" "$work/err" || fail "empty --out: not named: $(cat "$work/err")"
 # compare --subset: the headline claims against the committed reference.
-check "headline claims" 0 --claims phi3-det,discriminant-factorization,hd-invariance,truncation-1440 --no-timing --quiet --out "$work/headline"
+check "headline claims" 0 --claims phi3-det,discriminant-factorization,hd-invariance,truncation-1440 --certify --no-timing --quiet --out "$work/headline"
 check "compare --subset" 0 compare --subset "$reference" "$work/headline"
 grep -q '^the reports agree$' "$work/out" || fail "compare --subset: $(tail -5 "$work/out")"
 check "compare without --subset" 1 compare "$reference" "$work/headline"

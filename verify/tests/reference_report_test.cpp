@@ -5,6 +5,7 @@
 // times each configuration once, since run times are not compared.
 // To accept a deliberate change: build/bin/simpson-verify --out reports/reference/paper
 
+#include <simpson/verify/certify.hpp>
 #include <simpson/verify/report.hpp>
 #include <simpson/verify/report_compare.hpp>
 
@@ -31,7 +32,10 @@ TEST(ReferenceReport, PaperSceneReproducesTheCommittedReport) {
   ASSERT_TRUE(std::filesystem::exists(dir / "report.json")) << dir;
   scene s = load_scene("paper");
   s.experiments.work_precision->timing = timing_policy{1, 0.01};
-  const run_record r = run(s);
+  run_record r = run(s);
+  // The committed report was made with --certify: its Coq counts are checked counts.
+  ASSERT_FALSE(coqc_version().empty()) << "coqc is needed (scripts/install-deps installs Debian's coq)";
+  EXPECT_TRUE(record_certificates(r, true).empty()) << "coqc rejected a certificate";
   // `simpson-verify compare` finds no difference (its tolerances: README, report_compare.hpp) ...
   const std::vector<std::string> differences = compare_reports(load_report(dir), report_json(r));
   for (const std::string& line : differences) ADD_FAILURE() << line;

@@ -113,7 +113,7 @@ std::vector<std::string> record_certificates(run_record& r, bool check) {
       if (failure.empty()) {
         coq["status"] = "checked";
         coq["coq_version"] = version;
-        coq["seconds"] = seconds;
+        o.coq_seconds = seconds;
       } else {
         coq["status"] = "failed";
         coq["coqc_output"] = failure;
