@@ -19,12 +19,19 @@ namespace {
 claim_result check_gear_partials(const run_context&) {
   const symbolic h = symbolic::variable();
   const proof p = prove_zero_on_grid(
-      "h = theta; d g_l/dq_m - 4/h, d g_m/dq_m, d g_r/dq_m + 4/h, by exact differences of (derivees-gear), (derivee-centree)",
+      "h = theta; d g_l/dq_m - 4/h and d g_r/dq_m + 4/h by exact differences of (derivees-gear); g_m as the interpolant's "
+      "slope at the middle node, q'(t_m) of (q2t) as a function of q_l, q_m, q_r: (derivee-centree) - q'(t_m), and "
+      "d q'(t_m)/dq_m",
       {"q_l", "q_m", "q_r"}, 1, [&](const std::vector<rational>& v) {
         const symbolic ql(v[0]), qm(v[1]), qr(v[2]);
+        // g_m as a function of all three nodes (it could depend on q_m: the slope elsewhere does).
+        const auto slope_at_middle = [&](const symbolic& x) {
+          return quadratic_interpolant_derivative(ql, x, qr, h, symbolic(rational(1, 2)));
+        };
         return std::vector<symbolic>{
             exact_derivative([&](const symbolic& x) { return gear_left(ql, x, qr, h); }, qm) - 4 / h,
-            exact_derivative([&](const symbolic& x) { return centred_derivative(ql, qr, h) + 0 * x; }, qm),
+            centred_derivative(ql, qr, h) - slope_at_middle(qm),
+            exact_derivative(slope_at_middle, qm),
             exact_derivative([&](const symbolic& x) { return gear_right(ql, x, qr, h); }, qm) + 4 / h};
       });
   return identity(p);
