@@ -30,6 +30,8 @@ std::set<std::string> run_sections(const scene& s) {
   return names;
 }
 
+std::string counted(std::size_t n, const char* noun) { return fmt::format("{} {}{}", n, noun, n == 1 ? "" : "s"); }
+
 bool is_selection(const scene& s) { return s.overrides.contains("claims") || s.overrides.contains("sections"); }
 
 /// The claims and sections of the report in `dir`, when it holds one.
@@ -81,9 +83,10 @@ std::filesystem::path output_directory(const scene& s, const std::optional<std::
   for (const std::string& name : held->second) missing += sections.count(name) == 0;
   if (missing > 0) {
     throw std::invalid_argument(fmt::format(
-        "--out '{}': holds a fuller report ({} claims, {} sections) that this selection ({} claims, {} sections) would replace; "
-        "choose another --out (without --out, this selection writes {})",
-        dir.string(), held->first.size(), held->second.size(), claims.size(), sections.size(), default_output_directory(s).string()));
+        "--out '{}': holds a fuller report ({}, {}) that this selection ({}, {}) would replace; choose another --out "
+        "(without --out, this selection writes {})",
+        dir.string(), counted(held->first.size(), "claim"), counted(held->second.size(), "section"), counted(claims.size(), "claim"),
+        counted(sections.size(), "section"), default_output_directory(s).string()));
   }
   return dir;
 }

@@ -88,13 +88,16 @@ std::string expectation_line(const run_record& r) {
     return "Exit code 1: " + why + "; see Failures.";
   }
   std::string line = "Exit code 0: every verdict is the expected one, the ledger's recorded judgment of the printed paper (a "
-                     "regression check: a difference would mean that the paper or the harness changed), not a validation: ";
-  line += fmt::format("{} {} (false as printed, a correction proved)", c.errata, c.errata == 1 ? "erratum" : "errata");
+                     "regression check: a difference would mean that the paper or the harness changed), not a validation";
+  std::vector<std::string> findings;
+  if (c.errata > 0) findings.push_back(fmt::format("{} {} (false as printed, a correction proved)", c.errata, c.errata == 1 ? "erratum" : "errata"));
   if (!expected_failures.empty()) {
-    line += fmt::format(" and {} expected failure{} ({}: not reproduced, no correction found)", expected_failures.size(),
-                        expected_failures.size() == 1 ? "" : "s", join(expected_failures, ", "));
+    findings.push_back(fmt::format("{} expected failure{} ({}: not reproduced, no correction found)", expected_failures.size(),
+                                   expected_failures.size() == 1 ? "" : "s", join(expected_failures, ", ")));
   }
-  return line + " are expected verdicts.";
+  if (findings.empty()) return line + ".";
+  const std::size_t expected_findings = c.errata + expected_failures.size();
+  return line + ": " + join(findings, " and ") + (expected_findings == 1 ? " is an expected verdict." : " are expected verdicts.");
 }
 
 json summary_json(const run_record& r) {
@@ -310,10 +313,19 @@ std::string coq_table_markdown(const run_record& r) {
   return md;
 }
 
-/// The printed statement in Markdown: the TeX read from the paper as code, or the typed wording escaped.
-std::string printed_markdown(const claim_outcome& o) {
+/// An erratum or a failure in report.md: its heading, the verdict line (Markdown, none for an
+/// erratum), what the paper prints (the TeX read as code, or the typed wording), the correction and
+/// the note where there are, and a link to its evidence.
+std::string finding_markdown(const claim_outcome& o, const std::string& verdict_line) {
+  const claim& c = *o.checked;
   const printed_statement printed = printed_of(o);
-  return printed.read ? markdown_code(printed.text) : markdown_escaped(printed.text);
+  std::string md = fmt::format("### {} (§{}, {})\n\n", c.id, c.section, markdown_escaped(c.equation));
+  if (!verdict_line.empty()) md += "- Verdict: " + verdict_line + "\n";
+  md += fmt::format("- Printed ({}): {}\n", markdown_escaped(printed.source),
+                    printed.read ? markdown_code(printed.text) : markdown_escaped(printed.text));
+  if (!o.result.correction.empty()) md += "- Corrected: " + markdown_escaped(o.result.correction) + "\n";
+  if (!o.result.note.empty()) md += "- Note: " + markdown_escaped(o.result.note) + "\n";
+  return md + fmt::format("- Evidence: [{}](#{})\n\n", c.id, heading_slug(c.id));
 }
 
 }  // namespace
@@ -355,11 +367,7 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
   for (const claim_outcome& o : r.outcomes) {
     if (o.result.outcome != verdict::erratum) continue;
     any_erratum = true;
-    const claim& c = *o.checked;
-    md += fmt::format("### {} (§{}, {})\n\n- Printed ({}): {}\n- Corrected: {}\n", c.id, c.section, markdown_escaped(c.equation),
-                      markdown_escaped(printed_of(o).source), printed_markdown(o), markdown_escaped(o.result.correction));
-    if (!o.result.note.empty()) md += "- Note: " + markdown_escaped(o.result.note) + "\n";
-    md += fmt::format("- Evidence: [{}](#{})\n\n", c.id, heading_slug(c.id));
+    md += finding_markdown(o, "");
   }
   if (!any_erratum) md += "None in this run.\n\n";
 
@@ -369,16 +377,12 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
     const bool failed = o.result.outcome == verdict::fails || o.result.outcome == verdict::kernels_disagree;
     if (!failed && o.result.outcome == o.expected) continue;  // also a holds or erratum not as expected
     any_failure = true;
-    const claim& c = *o.checked;
     const std::string why = o.result.evidence.contains("error")
                                 ? "its check threw, a bug in the harness: " + o.result.evidence["error"].get<std::string>()
                             : o.result.outcome == o.expected
                                 ? "an expected failure: the ledger expects this verdict, so the exit code is 0"
                                 : "not as expected (expected " + to_string(o.expected) + "): the exit code is 1";
-    md += fmt::format("### {} (§{}, {})\n\n- Verdict: **{}**, {}\n- Printed ({}): {}\n", c.id, c.section, markdown_escaped(c.equation),
-                      to_string(o.result.outcome), markdown_escaped(why), markdown_escaped(printed_of(o).source), printed_markdown(o));
-    if (!o.result.note.empty()) md += "- Note: " + markdown_escaped(o.result.note) + "\n";
-    md += fmt::format("- Evidence: [{}](#{})\n\n", c.id, heading_slug(c.id));
+    md += finding_markdown(o, "**" + to_string(o.result.outcome) + "**, " + markdown_escaped(why));
   }
   if (!any_failure) md += "None in this run.\n\n";
 
