@@ -23,6 +23,16 @@ TEST(OneStepMap, DeterminantIsAlphaDeltaMinusBetaGamma) {
   EXPECT_EQ(determinant(one_step_matrix<R>{R(0), R(-1), R(1), R(0)}), R(1));
 }
 
+TEST(OneStepMap, SymplecticFormDefectVanishesExactlyForUnitDeterminant) {
+  for (const auto& e : symplectic_form_defect(one_step_matrix<R>{R(2), R(3), R(1), R(2)})) EXPECT_EQ(e, R(0));  // det 1
+  // det 2: the products give (Φᵀ J Φ)₁₂ = det Φ = 2, so the defect is ±1 off the diagonal.
+  const auto defect = symplectic_form_defect(one_step_matrix<R>{R(2), R(3), R(0), R(1)});
+  EXPECT_EQ(defect[0], R(0));
+  EXPECT_EQ(defect[1], R(1));
+  EXPECT_EQ(defect[2], R(-1));
+  EXPECT_EQ(defect[3], R(0));
+}
+
 TEST(OneStepMap, ProductComposesMapsAndMultipliesDeterminants) {
   const one_step_matrix<R> a{R(1, 2), R(-3), R(2, 5), R(7)};
   const one_step_matrix<R> b{R(-1), R(4, 3), R(5), R(1, 7)};

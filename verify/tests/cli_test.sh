@@ -213,12 +213,23 @@ sed -e 's/{{\\dd^6 q}\\over{\\dd t^5}}/{{\\dd^6 q}\\over{\\dd t^6}}/g' -e 's/\\s
     -e 's/{{\\gamma^2-1}\\over2}   \\end{pmatrix}/{{\\delta^2-1}\\over2} \\end{pmatrix}/' \
     -e 's/{\\rm det} \\, \\Gamma = /{\\rm det} \\, \\Gamma = {1\\over4} \\, /' "$paper_src" >"$work/corrected.tex"
 [ "$(diff "$paper_src" "$work/corrected.tex" | grep -c "^>")" = 6 ] || fail "corrected copy: sed did not change six lines"
-check "corrected paper" 1 --claims taylor-display,classical-action-range,simpson-action-range,gamma-system,gamma-determinant,phi3-det \
+check "corrected paper" 1 --claims taylor-display,classical-action-range,simpson-action-range,gamma-system,gamma-determinant,gamma-singular,conserved-form,phi3-det \
     --precisions double,rational --paper "$work/corrected.tex" --out "$work/corrected"
-for id in taylor-display classical-action-range simpson-action-range gamma-system gamma-determinant; do
+for id in taylor-display classical-action-range simpson-action-range gamma-system gamma-determinant gamma-singular conserved-form; do
   grep -q "$id: verdict holds, expected erratum" "$work/err" || fail "corrected paper: $id not named: $(cat "$work/err")"
 done
 grep -q "phi3-det: verdict" "$work/err" && fail "corrected paper: phi3-det named"
+# A prose sentence changed: the claim that quotes it judges the new words ("degree five": erratum), and
+# a sentence whose words no longer parse is text-changed (exit 1, a JUnit failure of that type).
+sed 's/polynomials of  degree three/polynomials of degree five/' "$paper_src" >"$work/prose.tex"
+check "prose changed" 1 --claims simpson-exactness,midpoint-exactness --paper "$work/prose.tex" --out "$work/prose"
+grep -q "simpson-exactness: verdict erratum, expected holds" "$work/err" || fail "prose changed: not named: $(cat "$work/err")"
+grep -q '"degree": 5' "$work/prose/report.json" || fail "prose changed: the parsed degree is not in report.json"
+sed 's/polynomials of  degree three/polynomials of degree trois/' "$paper_src" >"$work/prose2.tex"
+check "prose unparsable" 1 --claims simpson-exactness --paper "$work/prose2.tex" --out "$work/prose2"
+grep -q "simpson-exactness: verdict text-changed, expected holds" "$work/err" || fail "prose unparsable: not named: $(cat "$work/err")"
+grep -q 'type="text-changed"' "$work/prose2/report.junit.xml" || fail "prose unparsable: no text-changed JUnit failure"
+grep -q "do not parse as a number" "$work/prose2/report.md" || fail "prose unparsable: report.md does not say why"
 # Selection: --claims alone runs no section, --sections alone no claim; the title and report.json say so.
 check "claims only" 0 --claims "phi3-det, hd-invariance" --out "$work/claims-only"
 grep -q '"sections": \[\]' "$work/claims-only/report.json" || fail "claims only: overrides.sections not empty"

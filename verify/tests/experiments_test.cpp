@@ -3,6 +3,7 @@
 
 #include <simpson/verify/experiment_cost.hpp>
 #include <simpson/verify/experiments.hpp>
+#include <simpson/verify/paper_table.hpp>
 #include <simpson/verify/report.hpp>
 
 #include <simpson/verify/floating_tools.hpp>
@@ -384,6 +385,24 @@ TEST(Experiments, CostEstimateGrowsWithStepsAndPrecision) {
   const scene paper = load_scene("paper");
   const recheck_load usual{16, paper.samples, paper.precisions};
   EXPECT_LT(estimate_cost(experiment_settings{}, usual).units, default_cost_budget / 100);
+}
+
+}  // namespace
+}  // namespace simpson::verify
+
+namespace simpson::verify {
+namespace {
+
+// Table 1's side numbers are computed, not typed: the two-step start converges at the schemes'
+// orders, and the comparison text follows the mass (the momentum rows scale with m, Table 1's do not).
+TEST(PaperTable, TwoStepStartConvergesAtTheSchemesOrdersAndTheTextsAreComputed) {
+  for (const bool simpson_scheme : {false, true}) {
+    const double ratio = run_two_step_experiment(simpson_scheme, 20).p / run_two_step_experiment(simpson_scheme, 40).p;
+    EXPECT_NEAR(std::log2(ratio), simpson_scheme ? 4 : 2, 0.1) << simpson_scheme;
+  }
+  EXPECT_NE(table_not_reproduced(1), table_not_reproduced(2));
+  EXPECT_NE(table_also_tried(1), table_also_tried(2));
+  EXPECT_NE(table_also_tried(1).find("0.926, 0.242, 0.0608"), std::string::npos) << table_also_tried(1);
 }
 
 }  // namespace

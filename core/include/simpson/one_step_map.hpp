@@ -7,6 +7,9 @@
 
 #include <cmath>
 
+#include <array>
+#include <cstddef>
+
 namespace simpson {
 
 /// A point of phase space: momentum p and state q.
@@ -44,6 +47,27 @@ residual_and_bound<Real> unit_determinant_check(const one_step_matrix<Real>& phi
   using std::abs;
   const Real condition = abs(Real(phi.alpha * phi.delta)) + abs(Real(phi.beta * phi.gamma));
   return {Real(determinant(phi) - 1), Real(2 * roundings * eps<Real>() * condition)};
+}
+
+/// Φᵀ J Φ − J with J = ((0, 1), (−1, 0)), computed as the products (not through det Φ): zero
+/// exactly when Φ preserves the symplectic form. Entries (1,1), (1,2), (2,1), (2,2).
+template <class Real>
+std::array<Real, 4> symplectic_form_defect(const one_step_matrix<Real>& phi) {
+  const Real P[2][2] = {{phi.alpha, phi.beta}, {phi.gamma, phi.delta}};
+  const int J[2][2] = {{0, 1}, {-1, 0}};
+  std::array<Real, 4> defect{Real(0), Real(0), Real(0), Real(0)};
+  for (int i = 0; i < 2; ++i) {
+    for (int j = 0; j < 2; ++j) {
+      Real sum(0);
+      for (int k = 0; k < 2; ++k) {
+        for (int l = 0; l < 2; ++l) {
+          if (J[k][l] != 0) sum += J[k][l] * P[k][i] * P[l][j];
+        }
+      }
+      defect[static_cast<std::size_t>(2 * i + j)] = sum - J[i][j];
+    }
+  }
+  return defect;
 }
 
 /// The matrix product A B (the map "B, then A").

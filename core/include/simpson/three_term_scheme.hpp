@@ -5,6 +5,7 @@
 #include <simpson/oscillator_parameters.hpp>
 #include <simpson/residual.hpp>
 
+#include <array>
 #include <cmath>
 
 namespace simpson {
@@ -44,10 +45,17 @@ Real discriminant(const Real& x) {
   return k.b * k.b - 4 * k.a * k.c;
 }
 
+/// The factors of Δ as printed in Section 5: ω²h²/576, (ω²h² − 24), (ω²h² − 12), (ω²h² − 8).
+template <class Real>
+std::array<Real, 4> discriminant_factors(const Real& x) {
+  return {x / 576, x - 24, x - 12, x - 8};
+}
+
 /// Δ = (ω²h²/576)(ω²h² − 24)(ω²h² − 12)(ω²h² − 8), the factorisation as printed in Section 5.
 template <class Real>
 Real discriminant_factorized(const Real& x) {
-  return x / 576 * (x - 24) * (x - 12) * (x - 8);
+  const std::array<Real, 4> f = discriminant_factors(x);
+  return f[0] * f[1] * f[2] * f[3];
 }
 
 /// (b² − 4ac) − the printed factorisation. b² − 4ac cancels terms of size b² + 4|ac|, the factored

@@ -93,6 +93,11 @@ testcase claim_case(const claim_outcome& o) {
     t.type = "internal-error";
     t.message = "internal error (a bug in the harness): " + evidence["error"].get<std::string>();
     t.detail = summary;
+  } else if (o.result.outcome == verdict::text_changed) {
+    t.outcome = testcase::result::failure;
+    t.type = "text-changed";
+    t.message = o.result.evidence.value("text_changed", std::string("the quoted words changed"));
+    t.detail = summary;
   } else if (o.result.outcome != o.expected) {
     t.outcome = testcase::result::failure;
     t.type = "unexpected-verdict";

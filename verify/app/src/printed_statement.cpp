@@ -10,6 +10,14 @@ namespace simpson::verify {
 printed_statement printed_of(const claim_outcome& o) {
   const json& printed = o.result.printed;
   if (printed.is_null() || !printed.contains("formulas") || printed["formulas"].empty()) {
+    std::string text, lines, source;
+    for (const json& q : o.result.quoted) {
+      if (!q.value("found", false)) continue;
+      text += (text.empty() ? "" : " … ") + q.value("text", std::string());
+      lines += (lines.empty() ? "" : ", ") + std::to_string(q.value("line", 0));
+      source = q.value("source", std::string("?"));
+    }
+    if (!text.empty()) return {text, fmt::format("{}, line {}", source, lines), false, true};
     return {o.checked->statement, "typed from the prose", false};
   }
   std::string text, lines;

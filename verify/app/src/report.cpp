@@ -36,7 +36,8 @@ std::vector<std::string> precision_names(const std::vector<precision>& precision
 namespace {
 
 struct verdict_counts {
-  std::size_t held = 0, errata = 0, failed = 0, disagreed = 0, machine_read = 0, coq_exported = 0, coq_checked = 0;
+  std::size_t held = 0, errata = 0, failed = 0, disagreed = 0, text_changed = 0, machine_read = 0, quoted = 0, coq_exported = 0,
+              coq_checked = 0;
   std::vector<std::string> unexpected;
 };
 
@@ -47,7 +48,9 @@ verdict_counts count_verdicts(const run_record& r) {
     c.errata += o.result.outcome == verdict::erratum;
     c.failed += o.result.outcome == verdict::fails;
     c.disagreed += o.result.outcome == verdict::kernels_disagree;
+    c.text_changed += o.result.outcome == verdict::text_changed;
     c.machine_read += !o.result.printed.is_null();
+    c.quoted += o.result.printed.is_null() && !o.result.quoted.empty();
     c.coq_exported += !certificate_documents(o).empty();
     c.coq_checked += o.result.evidence.contains("coq") && o.result.evidence["coq"].value("status", "") == "checked";
     if (o.result.outcome != o.expected) c.unexpected.push_back(o.checked->id);
@@ -59,8 +62,9 @@ verdict_counts count_verdicts(const run_record& r) {
 
 std::string summary_line(const run_record& r) {
   const verdict_counts c = count_verdicts(r);
-  return fmt::format("{} {}: {} held, {} errata, {} failed{}; {}", r.outcomes.size(), r.outcomes.size() == 1 ? "claim" : "claims",
+  return fmt::format("{} {}: {} held, {} errata, {} failed{}{}; {}", r.outcomes.size(), r.outcomes.size() == 1 ? "claim" : "claims",
                      c.held, c.errata, c.failed, c.disagreed ? fmt::format(", {} with the kernels in disagreement", c.disagreed) : "",
+                     c.text_changed ? fmt::format(", {} whose quoted words changed (text-changed)", c.text_changed) : "",
                      c.unexpected.empty() ? std::string("all verdicts as expected")
                                           : fmt::format("{} not as expected ({})", c.unexpected.size(), join(c.unexpected, ", ")));
 }
@@ -105,7 +109,8 @@ json summary_json(const run_record& r) {
   return {{"line", summary_line(r)},     {"expectation", expectation_line(r)}, {"claims", r.outcomes.size()},
           {"held", c.held},              {"errata", c.errata},
           {"failed", c.failed},          {"kernels_disagree", c.disagreed},
-          {"machine_read", c.machine_read}, {"typed", r.outcomes.size() - c.machine_read},
+          {"text_changed", c.text_changed},
+          {"machine_read", c.machine_read}, {"quoted", c.quoted}, {"typed", r.outcomes.size() - c.machine_read - c.quoted},
           {"coq_exported", c.coq_exported}, {"coq_checked", c.coq_checked},
           {"unexpected", c.unexpected}};
 }
@@ -163,6 +168,7 @@ json report_json(const run_record& r, const plot_outcome& plots) {
     if (!o.result.correction.empty()) entry["correction"] = o.result.correction;
     if (!o.result.note.empty()) entry["note"] = o.result.note;
     if (!o.result.printed.is_null()) entry["printed"] = o.result.printed;
+    if (!o.result.quoted.empty()) entry["quoted"] = o.result.quoted;
     entry["evidence"] = o.result.evidence;
     claims.push_back(std::move(entry));
   }
@@ -313,6 +319,23 @@ std::string coq_table_markdown(const run_record& r) {
   return md;
 }
 
+/// A sentence a claim quotes: where, the words as printed, and what was parsed from each hole.
+std::string quoted_markdown(const json& q) {
+  if (!q.value("found", false)) {
+    return fmt::format("Quoted from the paper ({}): **not found**; the ledger looks for {}\n\n", markdown_escaped(q["source"].get<std::string>()),
+                       markdown_code(q["pattern"].get<std::string>()));
+  }
+  std::string md = fmt::format("Quoted from the paper ({}, line {}):\n\n> {}\n\n", markdown_escaped(q["source"].get<std::string>()),
+                               q["line"].get<int>(), markdown_escaped(q["text"].get<std::string>()));
+  for (const auto& [hole, words] : q["words"].items()) {
+    const json& parsed = q["parsed"];
+    md += fmt::format("- {}: “{}” → {}\n", markdown_escaped(hole), markdown_escaped(words.get<std::string>()),
+                      parsed.contains(hole) ? markdown_code(parsed[hole].is_string() ? parsed[hole].get<std::string>() : parsed[hole].dump())
+                                            : std::string("not read by the check"));
+  }
+  return md + "\n";
+}
+
 /// An erratum or a failure in report.md: its heading, the verdict line (Markdown, none for an
 /// erratum), what the paper prints (the TeX read as code, or the typed wording), the correction and
 /// the note where there are, and a link to its evidence.
@@ -322,7 +345,7 @@ std::string finding_markdown(const claim_outcome& o, const std::string& verdict_
   std::string md = fmt::format("### {} (§{}, {})\n\n", c.id, c.section, markdown_escaped(c.equation));
   if (!verdict_line.empty()) md += "- Verdict: " + verdict_line + "\n";
   md += fmt::format("- Printed ({}): {}\n", markdown_escaped(printed.source),
-                    printed.read ? markdown_code(printed.text) : markdown_escaped(printed.text));
+                    printed.read ? markdown_code(printed.text) : printed.quoted ? "“" + markdown_escaped(printed.text) + "”" : markdown_escaped(printed.text));
   if (!o.result.correction.empty()) md += "- Corrected: " + markdown_escaped(o.result.correction) + "\n";
   if (!o.result.note.empty()) md += "- Note: " + markdown_escaped(o.result.note) + "\n";
   return md + fmt::format("- Evidence: [{}](#{})\n\n", c.id, heading_slug(c.id));
@@ -338,9 +361,15 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
                     r.run_scene.selection.empty() ? "" : ": " + r.run_scene.selection);
   if (!r.run_scene.description.empty()) md += markdown_escaped(r.run_scene.description) + "\n\n";
   md += fmt::format("**{}**\n\n{}\n\n", markdown_escaped(summary_line(r)), markdown_escaped(expectation_line(r)));
-  md += fmt::format("{} of {} claims read their formula from the paper's LaTeX source ({}) and prove it in GiNaC against "
-                    "the derived one, beside our own kernel; the others check a statement typed from the prose.\n\n",
-                    machine_read(r), r.outcomes.size(), markdown_escaped(r.paper_origin));
+  {
+    const verdict_counts c = count_verdicts(r);
+    md += fmt::format("{} of {} claims read their formula from the paper's LaTeX source ({}) and prove it in GiNaC against "
+                      "the derived one, beside our own kernel; {} quote the prose sentence they judge from that source and parse "
+                      "the words that carry the claim from it (a sentence gone, or words that no longer parse, give "
+                      "**text-changed**); {} {} no words of the paper (the harness's own lemmas and findings).\n\n",
+                      c.machine_read, r.outcomes.size(), markdown_escaped(r.paper_origin), c.quoted,
+                      r.outcomes.size() - c.machine_read - c.quoted, r.outcomes.size() - c.machine_read - c.quoted == 1 ? "quotes" : "quote");
+  }
   md += coq_markdown(r);
   md += r.run_scene.timing ? "Run times: [timing.md](timing.md). " : "Not timed (--no-timing). ";
   md += "The tool's version and commit, the machine, the command line and the SHA-256 of the scene and the paper are in "
@@ -349,16 +378,18 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
                     r.run_scene.samples, join(precision_names(r.run_scene.precisions), ", "));
   md += "Paper: F. Dubois, J. A. Rojas-Quintero, *A variational symplectic scheme based on Simpson's quadrature*, GSI 2023. "
         "Verdicts: **holds** (true as printed), **erratum** (false as printed; a corrected statement is proved), **fails** "
-        "(false, no correction found), **kernels-disagree** (our kernel and GiNaC reached different conclusions on the derived statement: a bug, never expected).\n\n";
+        "(false, no correction found), **kernels-disagree** (our kernel and GiNaC reached different conclusions on the derived statement: a bug, never expected), "
+        "**text-changed** (the sentence a prose claim quotes is gone from the paper, or its words no longer parse: never expected).\n\n";
 
   md += "## Claims\n\nStatement: *read* when its formulas are read from the paper's source and proved in both kernels "
-        "(our kernel and GiNaC), *typed* when it is a prose statement typed into the ledger.\n\n"
+        "(our kernel and GiNaC), *quoted* when its prose sentence is quoted from the source and its words parsed, *typed* when "
+        "it quotes nothing of the paper.\n\n"
         "| id | § | equation | statement | verdict | expected | methods |\n|---|---|---|---|---|---|---|\n";
   for (const claim_outcome& o : r.outcomes) {
     const claim& c = *o.checked;
     const std::string verdict_text = "**" + to_string(o.result.outcome) + "**" + (o.result.outcome == o.expected ? "" : " **(unexpected)**");
     md += fmt::format("| [{}](#{}) | {} | {} | {} | {} | {} | {} |\n", c.id, heading_slug(c.id), c.section, markdown_cell(c.equation),
-                      o.result.printed.is_null() ? "typed" : "read", verdict_text, to_string(o.expected),
+                      !o.result.printed.is_null() ? "read" : !o.result.quoted.empty() ? "quoted" : "typed", verdict_text, to_string(o.expected),
                       join(c.methods, ", ") + (o.result.printed.is_null() ? "" : ", GiNaC"));
   }
 
@@ -374,7 +405,8 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
   md += "## Failures\n\n";
   bool any_failure = false;
   for (const claim_outcome& o : r.outcomes) {
-    const bool failed = o.result.outcome == verdict::fails || o.result.outcome == verdict::kernels_disagree;
+    const bool failed = o.result.outcome == verdict::fails || o.result.outcome == verdict::kernels_disagree ||
+                        o.result.outcome == verdict::text_changed;
     if (!failed && o.result.outcome == o.expected) continue;  // also a holds or erratum not as expected
     any_failure = true;
     const std::string why = o.result.evidence.contains("error")
@@ -439,9 +471,9 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
                         markdown_escaped(kernels["own"]["statement"].get<std::string>()),
                         markdown_escaped(kernels["ginac"]["printed"].get<std::string>()),
                         markdown_escaped(kernels["ginac"]["derived"].get<std::string>()));
-    } else {
-      md += "Statement typed from the paper's prose (not machine-read).\n\n";
     }
+    for (const json& q : o.result.quoted) md += quoted_markdown(q);
+    if (o.result.printed.is_null() && o.result.quoted.empty()) md += "Statement typed into the ledger: it quotes no words of the paper.\n\n";
     if (!o.result.correction.empty()) md += "Corrected: " + markdown_escaped(o.result.correction) + "\n\n";
     if (!o.result.note.empty()) md += "Note: " + markdown_escaped(o.result.note) + "\n\n";
     md += "```json\n" + o.result.evidence.dump(2) + "\n```\n\n";

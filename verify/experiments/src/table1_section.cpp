@@ -146,7 +146,7 @@ section_result run_table1(const table1_settings& s) {
   } else {
     out.text(fmt::format("**Not reproduced** (outside ±5%): {}.\n\n{} Also tried: {}. See the ledger claims table-values, "
                          "table-orders and table-conservation.",
-                         fmt::join(not_reproduced, "; "), table_not_reproduced, table_also_tried));
+                         fmt::join(not_reproduced, "; "), table_not_reproduced(s.m), table_also_tried(s.m)));
   }
   table not_reproduced_list{"not_reproduced", "", "", {{"entry", "entry"}}};
   not_reproduced_list.markdown = false;

@@ -128,6 +128,17 @@ inline claim_result erratum(const proof& printed, const proof& corrected, std::s
   return r;
 }
 
+/// An erratum of a prose claim's words: the words quoted (in `evidence`) say other than what the
+/// evidence computed, and the computed statement is the correction.
+inline claim_result words_erratum(json evidence, std::string correction, std::string note = {}) {
+  claim_result r;
+  r.outcome = verdict::erratum;
+  r.evidence = std::move(evidence);
+  r.correction = std::move(correction);
+  r.note = std::move(note);
+  return r;
+}
+
 /// The symbolic value of an exact-difference derivative (exact for polynomials of degree ≤ 4
 /// in the differentiated variable): (4 D(1) − D(2)) / 3 with D(e) the central difference.
 template <class F>

@@ -3,6 +3,8 @@
 #include "claim_support.hpp"
 #include "claims_section3_4.hpp"
 
+#include <simpson/verify/quoted_words.hpp>
+
 #include <simpson/internal_node.hpp>
 #include <simpson/quadratic_interpolation.hpp>
 #include <simpson/reduced_lagrangian.hpp>
@@ -90,20 +92,53 @@ json exactness_by_degree(Rule&& rule, int top, int& exact_up_to) {
   return rows;
 }
 
-claim_result check_midpoint_exactness(const run_context&) {
-  int exact_up_to = -1;
-  const json rows = exactness_by_degree([](auto&& psi) { return psi(rational(1, 2)); }, 3, exact_up_to);
+/// The degree of exactness a sentence states, against the one computed: holds when they agree,
+/// else an erratum whose correction is the computed degree (the monomial table proves it).
+claim_result exactness_as_stated(const std::string& rule, const json& rows, int exact_up_to, int stated_up_to,
+                                 const std::string& stated) {
   json evidence;
-  evidence["exact"] = {{"method", "exact"}, {"rule", "psi(1/2)"}, {"monomials", rows}, {"exact_up_to_degree", exact_up_to}};
-  return confirmed_if(exact_up_to == 1, evidence);
+  evidence["exact"] = {{"method", "exact"}, {"rule", rule}, {"monomials", rows}, {"exact_up_to_degree", exact_up_to},
+                       {"stated", stated}, {"stated_up_to_degree", stated_up_to}};
+  claim_result r;
+  r.evidence = evidence;
+  const std::string computed = "exact for every polynomial of degree <= " + std::to_string(exact_up_to) + " and not for degree " +
+                               std::to_string(exact_up_to + 1);
+  if (stated_up_to == exact_up_to) {
+    r.outcome = verdict::holds;
+    r.note = "As stated ('" + stated + "'): " + computed + ".";
+  } else {
+    r.outcome = verdict::erratum;
+    r.correction = "The rule is " + computed + " (the printed words say '" + stated + "')";
+  }
+  return r;
 }
 
-claim_result check_simpson_exactness(const run_context&) {
+/// The highest degree a stated bound admits ("smaller or equal to 1": 1; "smaller than 2": 1).
+int highest_admitted(const stated_bound& b) {
+  int top = -1;
+  for (int k = 0; k <= 12; ++k) {
+    if (b.admits(k)) top = k;
+  }
+  return b.admits(13) ? 13 : top;  // an open-ended bound ("at least") admits every degree: never sharp
+}
+
+claim_result check_midpoint_exactness(const run_context& ctx) {
+  const quoted_sentence said =
+      quote(ctx, "the midpoint method studied previously $ \\, \\int_0^1 \\psi(\\theta) \\, \\dd \\theta \\simeq \\psi \\big( {1\\over2} "
+                 "\\big) \\, $ is exact for a polynomial $ \\, \\psi \\, $ of degree {degree}.");
+  const stated_bound stated = said.bound("degree");
   int exact_up_to = -1;
-  const json rows = exactness_by_degree([](auto&& psi) { return simpson_rule<rational>(psi); }, 5, exact_up_to);
-  json evidence;
-  evidence["exact"] = {{"method", "exact"}, {"rule", "(simpson) of the core"}, {"monomials", rows}, {"exact_up_to_degree", exact_up_to}};
-  return confirmed_if(exact_up_to == 3, evidence, "Exact for degree <= 3 and not for degree 4 (error 1/120 on s^4).");
+  const json rows = exactness_by_degree([](auto&& psi) { return psi(rational(1, 2)); }, 3, exact_up_to);
+  return exactness_as_stated("psi(1/2)", rows, exact_up_to, highest_admitted(stated), said.words("degree"));
+}
+
+claim_result check_simpson_exactness(const run_context& ctx) {
+  const quoted_sentence said =
+      quote(ctx, "The quadrature formula (\\ref{simpson}) is accurate up to polynomials of degree {degree}.");
+  const int stated = said.number("degree");
+  int exact_up_to = -1;
+  const json rows = exactness_by_degree([](auto&& psi) { return simpson_rule<rational>(psi); }, std::max(5, stated + 1), exact_up_to);
+  return exactness_as_stated("(simpson) of the core", rows, exact_up_to, stated, said.words("degree"));
 }
 
 claim_result check_simpson_lagrangian(const run_context&) {

@@ -7,6 +7,7 @@
 #include "claims_section8_9.hpp"
 #include "claims_peers.hpp"
 #include "claims_beyond.hpp"
+#include "claims_unformulated.hpp"
 
 #include <stdexcept>
 
@@ -16,10 +17,12 @@ const std::vector<claim>& ledger() {
   static const std::vector<claim> claims = [] {
     std::vector<claim> all;
     detail::add_scaling_lemma(all);
+    detail::add_abstract_claims(all);
     detail::add_section2_claims(all);
     detail::add_section3_4_claims(all);
     detail::add_section5_claims(all);
     detail::add_section6_7_claims(all);
+    detail::add_convention_claims(all);
     detail::add_section8_9_claims(all);
     detail::add_peer_claims(all);
     detail::add_shear_claims(all);

@@ -4,6 +4,7 @@
 #include "printed_check_support.hpp"
 
 #include <simpson/verify/paper_reading.hpp>
+#include <simpson/verify/quoted_words.hpp>
 
 #include <algorithm>
 #include <cctype>
@@ -208,6 +209,9 @@ const formula_claim_table& formula_claims() {
 void decide(claim_result& result, const printed_outcome& g, const std::string& claim_id) {
   const bool own_derived = result.outcome != verdict::fails;
   const verdict own = result.outcome;
+  // An erratum of the quoted words (a claim that reads a formula and also judges prose about it)
+  // stands whatever the printed formula: the words, not the transcription, were refuted.
+  const bool words_refuted = own == verdict::erratum && !result.quoted.empty();
   if (own_derived != g.derived_holds) {
     result.outcome = verdict::kernels_disagree;
     result.note = "The two kernels disagree on '" + claim_id + "': ours " + (own_derived ? "proved" : "did not prove") +
@@ -217,6 +221,10 @@ void decide(claim_result& result, const printed_outcome& g, const std::string& c
   }
   if (!g.derived_holds) {
     result.outcome = verdict::fails;
+    return;
+  }
+  if (g.holds && words_refuted) {
+    result.note = "The printed formula holds (" + g.proved + "); the quoted words do not." + (result.note.empty() ? "" : " " + result.note);
     return;
   }
   if (g.holds) {
@@ -251,8 +259,33 @@ double ginac_derivation_seconds() { return detail::derivation().seconds; }
 
 std::size_t printed_formula_claim_count() { return formula_claims().size(); }
 
+namespace {
+
+/// The claim's own check, with the sentences it quotes recorded; a sentence gone or words that no
+/// longer parse make the verdict text-changed, the check's other findings dropped.
+claim_result checked_with_quotes(const claim& c, const run_context& ctx) {
+  json quotes = json::array();
+  run_context quoting = ctx;
+  quoting.quotes = &quotes;
+  claim_result result;
+  try {
+    result = c.check(quoting);
+  } catch (const text_changed& e) {
+    result = claim_result{};
+    result.outcome = verdict::text_changed;
+    result.evidence["text_changed"] = e.what();
+    result.note = std::string("The paper's words changed under this claim: ") + e.what() +
+                  ". Its check judges the words it quotes; update the ledger's pattern or parser once the new words are read.";
+  }
+  result.quoted = std::move(quotes);
+  return result;
+}
+
+}  // namespace
+
 claim_result check_claim(const claim& c, const run_context& ctx) {
-  claim_result result = c.check(ctx);
+  claim_result result = checked_with_quotes(c, ctx);
+  if (result.outcome == verdict::text_changed) return result;
   const auto it = formula_claims().find(c.id);
   if (it == formula_claims().end()) {
     const auto goals = detail::kernel_claim_goals().find(c.id);

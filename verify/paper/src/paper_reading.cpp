@@ -118,6 +118,7 @@ paper_reading read_paper(const paper_source& paper) {
   paper_reading reading;
   reading.origin = paper.origin;
   reading.sha256 = paper.sha256;
+  reading.source = paper;
   for (const formula_location& where : ledger_formulas()) reading.formulas.emplace(where.name, read_formula(paper, where));
   return reading;
 }

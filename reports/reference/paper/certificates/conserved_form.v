@@ -12,6 +12,7 @@ Ltac nonzero :=
           | [ H : 0 < ?Y |- ?X <> 0 ] => replace X with Y by ring; apply Rgt_not_eq; exact H
           end
         | apply pow_nonzero; nonzero ].
+(* Refuted by GiNaC, negated in the claim's _refuted.v: printed. *)
 
 Lemma conserved_form_printed :
   forall alpha beta p q : R,

@@ -12,7 +12,7 @@ Ltac nonzero :=
           | [ H : 0 < ?Y |- ?X <> 0 ] => replace X with Y by ring; apply Rgt_not_eq; exact H
           end
         | apply pow_nonzero; nonzero ].
-(* Not stated: gamma_singular_printed, whose two sides GiNaC evaluates to one expression (X = X checks nothing). *)
+(* Refuted by GiNaC, negated in the claim's _refuted.v: printed. *)
 
 Lemma gamma_singular_derived :
   forall alpha beta gamma : R,

@@ -13,7 +13,8 @@ namespace simpson::verify {
 struct printed_statement {
   std::string text;    // the TeX, formulas joined by " ; ", or the typed statement
   std::string source;  // "embedded, line 532" / "paper.tex, lines 488, 490" / "typed from the prose"
-  bool read = false;   // read from the paper's source (false: typed into the ledger)
+  bool read = false;   // formulas read from the paper's source
+  bool quoted = false; // prose quoted from the paper's source (both false: typed into the ledger)
 };
 
 printed_statement printed_of(const claim_outcome& o);

@@ -14,8 +14,10 @@ namespace simpson::verify {
 
 /// holds: true as printed; erratum: false as printed, with a proved correction; fails: false,
 /// no correction found; kernels-disagree: the two exact kernels reached different conclusions on
-/// the derived statement (a bug in one of them, never expected).
-enum class verdict { holds, erratum, fails, kernels_disagree };
+/// the derived statement (a bug in one of them, never expected); text-changed: the sentence a
+/// prose claim quotes is no longer in the paper, or its words no longer parse (never expected:
+/// the paper changed under the ledger).
+enum class verdict { holds, erratum, fails, kernels_disagree, text_changed };
 
 inline std::string to_string(verdict v) {
   switch (v) {
@@ -23,6 +25,7 @@ inline std::string to_string(verdict v) {
     case verdict::erratum: return "erratum";
     case verdict::fails: return "fails";
     case verdict::kernels_disagree: return "kernels-disagree";
+    case verdict::text_changed: return "text-changed";
   }
   return "?";
 }
@@ -38,6 +41,9 @@ struct run_context {
   /// The formulas read from the paper's source; without it, formula claims check our
   /// transcription only.
   const paper_reading* paper = nullptr;
+  /// Where a prose claim's check records the sentences it quotes (quoted_words.hpp); null when the
+  /// check is run on its own.
+  json* quotes = nullptr;
 };
 
 /// What a check found. `evidence` has one member per method ("exact", "numeric", ...).
@@ -49,6 +55,9 @@ struct claim_result {
   /// For a claim whose formula is read from the paper: where ({label, line, tex, parsed}) and
   /// what GiNaC proved of it; null for a claim typed from prose.
   json printed;
+  /// For a claim typed from the prose: the sentences it judges, as quoted from the paper
+  /// ({source, line, text, pattern, words, parsed}); empty for a claim that quotes none.
+  json quoted = json::array();
   /// Seconds the GiNaC proof of the printed formula took (reported under "timing", never in evidence).
   double printed_seconds = 0;
   /// The Coq certificate (certificates/<id>.v), printed from the identities GiNaC proved; empty when

@@ -40,6 +40,7 @@ const std::vector<formula_location>& ledger_formulas();
 struct paper_reading {
   std::string origin;  // "embedded" or the file read
   std::string sha256;  // of the source's bytes
+  paper_source source; // the text read (the prose claims quote their sentences from it)
   std::map<std::string, printed_formula> formulas;
   const printed_formula& at(const std::string& name) const;
 };

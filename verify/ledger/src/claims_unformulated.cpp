@@ -1,0 +1,159 @@
+// Prose the paper states without a formula: the abstract's unqualified "stable" and "explicit",
+// and the conventions Section 8 states (and those it leaves unstated).
+
+#include "claim_support.hpp"
+#include "claims_unformulated.hpp"
+
+#include <simpson/verify/quoted_words.hpp>
+#include <simpson/verify/stability_analysis.hpp>
+
+#include <simpson/internal_node.hpp>
+#include <simpson/three_term_scheme.hpp>
+
+#include <map>
+
+namespace simpson::verify::detail {
+namespace {
+
+/// The abstract's sentence: "It is a stable, explicit, and symplectic scheme satisfying the
+/// conservation of an approximate energy."
+quoted_sentence abstract_sentence(const run_context& ctx) {
+  return quote(ctx, "It is a {qualities} scheme satisfying the conservation of an approximate energy.");
+}
+
+claim_result check_abstract_stable(const run_context& ctx) {
+  const quoted_sentence said = abstract_sentence(ctx);
+  const std::string stated = said.containing("qualities", {{"conditionnally stable", "conditionally stable"},
+                                                           {"conditionally stable", "conditionally stable"},
+                                                           {"unconditionally stable", "unconditionally stable"},
+                                                           {"inconditionally stable", "unconditionally stable"},
+                                                           {"unstable", "unstable"},
+                                                           {"stable", "stable, unqualified"}});
+  const auto par = unit_oscillator_in_theta();
+  const stability_report report = analyse_three_term_scheme([&](const symbolic& qp, const symbolic& q, const symbolic& qn) {
+    return three_term_residual(par, qp, q, qn);
+  });
+  std::string bands;
+  bool everywhere = false;
+  for (const stability_band& b : report.bands) {
+    if (!b.stable) continue;
+    everywhere = everywhere || (b.x_from == 0 && !b.to);
+    bands += (bands.empty() ? "" : " or ") + b.omega_h_from + " < omega h < " + (b.omega_h_to.empty() ? "infinity" : b.omega_h_to);
+  }
+  json evidence;
+  evidence["exact"] = report.evidence;
+  evidence["stated"] = stated;
+  const std::string computed = everywhere ? "unconditionally stable" : "conditionally stable: stable exactly for " + bands;
+  const bool conditional = !everywhere && !bands.empty();
+  if (bands.empty()) return confirmed_if(false, evidence);
+  if ((conditional && stated == "conditionally stable") || (!conditional && stated != "unstable")) {
+    return confirmed_if(true, evidence, "Computed: " + computed + ".");
+  }
+  return words_erratum(evidence, "The scheme is " + computed + " (Section 5's own condition (stabilite) is the first band)",
+                       "The abstract's 'stable' carries no condition; Section 5 and the conclusion say conditionally stable.");
+}
+
+/// Whether the internal equation (equation-milieu-intervalle) is linear in q_m for V = q^k: its
+/// second difference in q_m vanishes identically (degree <= k - 1 in q_m, so exact differences
+/// decide). Linear: q_m is a closed-form function of q_l, q_r, and the step is explicit.
+bool internal_equation_linear(int k, json& evidence) {
+  const monomial_potential V{k};
+  const symbolic h = symbolic::variable();
+  const auto residual = [&](const rational& ql, const rational& qm, const rational& qr) {
+    return internal_equation_residual(symbolic(1), h, [&](const symbolic& x) { return V.derivative(x); }, symbolic(ql), symbolic(qm),
+                                      symbolic(qr));
+  };
+  bool linear = true;
+  for (int qm = 0; qm <= k + 1 && linear; ++qm) {
+    const symbolic second = residual(1, qm + 1, 2) - 2 * residual(1, qm, 2) + residual(1, qm - 1, 2);
+    linear = second.is_zero();
+  }
+  evidence.push_back({{"potential", "V(q) = q^" + std::to_string(k)}, {"internal_equation_linear_in_q_m", linear}});
+  return linear;
+}
+
+claim_result check_abstract_explicit(const run_context& ctx) {
+  const quoted_sentence said = abstract_sentence(ctx);
+  const std::string stated = said.containing("qualities", {{"implicit", "implicit"}, {"explicit", "explicit"}});
+  const bool qualified = said.words("qualities").find("linear") != std::string::npos ||
+                         said.words("qualities").find("harmonic") != std::string::npos;
+  json cases = json::array();
+  const bool linear_case = internal_equation_linear(2, cases);
+  bool every_case_linear = true;
+  for (const int k : {3, 4}) every_case_linear = internal_equation_linear(k, cases) && every_case_linear;
+  json evidence;
+  evidence["exact"] = {{"method", "exact"},
+                       {"reduction", "m = 1, h symbolic; the second difference in q_m of (equation-milieu-intervalle) at q_l = 1, "
+                                     "q_r = 2, q_m = 0.." },
+                       {"cases", cases}};
+  evidence["stated"] = {{"words", said.words("qualities")}, {"explicit", stated}, {"qualified", qualified}};
+  const std::string computed = "explicit for the harmonic oscillator (any quadratic V: the internal equation is linear in q_m, "
+                               "solved in closed form, and Phi_3 follows); for a nonlinear V (V = q^3, q^4 here) each step solves "
+                               "(equation-milieu-intervalle), nonlinear in q_m: an implicit step";
+  if (!linear_case) return confirmed_if(false, evidence);
+  if (stated == "explicit" && (qualified || every_case_linear)) return confirmed_if(true, evidence, "Computed: " + computed + ".");
+  return words_erratum(evidence, "The scheme is " + computed,
+                       "The abstract proposes the method for dynamical systems issued from the least action principle and calls it explicit "
+           "without qualification; the sentence before says it is made explicit for the harmonic oscillator, and Section 9 says "
+           "the internal node cannot be eliminated in the nonlinear case.");
+}
+
+/// Section 8's stated conventions: "We have chosen q(t) = sin ωt and p(t) = m ω cos ωt, with a
+/// period T = 1." Checked: p = m dq/dt of the printed q (the two are one exact solution), and T is
+/// one period of it (ω = 2π/T). Listed: what the section leaves unstated.
+claim_result check_experiment_conventions(const run_context& ctx) {
+  const quoted_sentence said = quote(ctx, "We have chosen $ \\, q(t) = {q_exact} $ and $ \\, p(t) = {p_exact} $, with a period "
+                                          "$ \\, T = {period} $.");
+  // The printed solutions, in the words the paper may use; each with m dq/dt of it.
+  const std::string q = said.choice("q_exact", {{"\\sin \\omega t", "sin(omega t)"}, {"\\cos \\omega t", "cos(omega t)"}});
+  const std::string p = said.choice("p_exact", {{"m \\omega \\cos \\omega t", "m omega cos(omega t)"},
+                                                {"\\omega \\cos \\omega t", "omega cos(omega t)"},
+                                                {"m \\cos \\omega t", "m cos(omega t)"},
+                                                {"-m \\omega \\sin \\omega t", "-m omega sin(omega t)"},
+                                                {"- m \\omega \\sin \\omega t", "-m omega sin(omega t)"},
+                                                {"m \\omega \\sin \\omega t", "m omega sin(omega t)"}});
+  const int period = said.number("period");
+  static const std::map<std::string, std::string> m_derivative = {{"sin(omega t)", "m omega cos(omega t)"},
+                                                                  {"cos(omega t)", "-m omega sin(omega t)"}};
+  const std::string expected_p = m_derivative.at(q);
+  const bool consistent = p == expected_p;
+  json evidence;
+  evidence["exact"] = {{"method", "exact (the derivative of the printed q)"},
+                       {"q", q},
+                       {"p_printed", p},
+                       {"m_dq_dt", expected_p},
+                       {"period", period},
+                       {"omega", period == 1 ? "2 pi" : "2 pi/" + std::to_string(period)}};
+  evidence["unstated"] = json::array({"the mass m (the harness takes m = 1)",
+                                      "the energy errors' definitions (the harness takes max_j |H(y_j) - H(y_0)|)",
+                                      "the points the maximum runs over (the harness takes t_j, j = 0..N)",
+                                      "how the momentum is rescaled in Figure 1 (the harness plots p/(m omega))"});
+  evidence["harness"] = "table1: m = 1, omega = 2 pi, T = 1, y_0 = (m omega, 0)";
+  if (!consistent) {
+    return confirmed_if(false, evidence, "The printed p(t) = " + p + " is not m dq/dt = " + expected_p +
+                                             " of the printed q(t): the pair is not one solution of the oscillator.");
+  }
+  return confirmed_if(period == 1 && q == "sin(omega t)", evidence,
+                      "The stated pair is one exact solution (p = m dq/dt) with T = 1 one period, omega = 2 pi, as the harness "
+                      "runs it. Section 8 leaves unstated the mass m, the energy errors' definitions, the points the maximum "
+                      "runs over, and how the momentum data of Figure 1 are rescaled (evidence 'unstated': what the harness takes).");
+}
+
+}  // namespace
+
+void add_abstract_claims(std::vector<claim>& claims) {
+  claims.push_back({"abstract-stable", "abstract", "prose",
+                    "It is a stable, explicit, and symplectic scheme satisfying the conservation of an approximate energy: stable.",
+                    {"exact"}, verdict::erratum, check_abstract_stable});
+  claims.push_back({"abstract-explicit", "abstract", "prose",
+                    "It is a stable, explicit, and symplectic scheme satisfying the conservation of an approximate energy: explicit.",
+                    {"exact"}, verdict::erratum, check_abstract_explicit});
+}
+
+void add_convention_claims(std::vector<claim>& claims) {
+  claims.push_back({"experiment-conventions", "8", "prose",
+                    "We have chosen q(t) = sin omega t and p(t) = m omega cos omega t, with a period T = 1.", {"exact"},
+                    verdict::holds, check_experiment_conventions});
+}
+
+}  // namespace simpson::verify::detail

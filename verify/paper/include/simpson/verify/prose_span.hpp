@@ -1,0 +1,31 @@
+#pragma once
+// A sentence of the paper's prose, found by a pattern: the sentence's words with holes {name}
+// where the words that carry a claim stand ("accurate up to polynomials of degree {degree}.").
+// White space matches any white space (the source breaks lines where it likes); everything else
+// must be as printed. A hole takes the words between the text before it and the text after it;
+// its name is two or more lower-case letters (TeX groups such as {h} or {\rm det} are text).
+
+#include <simpson/verify/paper_source.hpp>
+
+#include <map>
+#include <optional>
+#include <string>
+
+namespace simpson::verify {
+
+struct prose_span {
+  int line = 0;                               // 1-based line of the span's first character
+  std::string text;                           // the span as printed, white space folded
+  std::map<std::string, std::string> holes;   // each hole's words, as printed (white space folded)
+};
+
+/// The first span of the paper that matches `pattern`; none when the sentence is no longer there
+/// (or a hole would span more than 240 characters). Throws std::logic_error for a pattern that
+/// starts with a hole, has two holes side by side, or an unclosed brace.
+std::optional<prose_span> find_prose(const paper_source& paper, const std::string& pattern);
+
+/// The words of TeX prose or math with the markup a reader does not read dropped: $, TeX's
+/// spacing (\, \! \; \quad ~), \big-style sizes, and white space folded to one space.
+std::string plain_words(const std::string& tex);
+
+}  // namespace simpson::verify

@@ -1,0 +1,169 @@
+// The prose claims quote the sentence they judge from the paper's source and parse the words that
+// carry the claim: a copy of the paper whose sentence changed flips the verdict (the new words are
+// judged) or flags it (text-changed: the sentence is gone, or its words no longer parse).
+
+#include <simpson/verify/ledger.hpp>
+#include <simpson/verify/paper_reading.hpp>
+#include <simpson/verify/printed_checks.hpp>
+#include <simpson/verify/prose_span.hpp>
+#include <simpson/verify/quoted_words.hpp>
+
+#include <gtest/gtest.h>
+
+namespace simpson::verify {
+namespace {
+
+paper_source text_source(const std::string& text) { return {"test", text, ""}; }
+
+TEST(ProseSpan, MatchesAcrossLineBreaksAndTakesTheHolesWords) {
+  const paper_source paper = text_source("First.\nThe quadrature formula (\\ref{simpson})  is accurate up to\n polynomials of degree three. Then");
+  const auto span = find_prose(paper, "The quadrature formula (\\ref{simpson}) is accurate up to polynomials of degree {degree}.");
+  ASSERT_TRUE(span.has_value());
+  EXPECT_EQ(span->line, 2);
+  EXPECT_EQ(span->holes.at("degree"), "three");
+  EXPECT_EQ(span->text, "The quadrature formula (\\ref{simpson}) is accurate up to polynomials of degree three.");
+}
+
+TEST(ProseSpan, ASentenceThatIsGoneIsNotFound) {
+  const paper_source paper = text_source("The quadrature formula is exact.");
+  EXPECT_FALSE(find_prose(paper, "accurate up to polynomials of degree {degree}.").has_value());
+}
+
+TEST(ProseSpan, TexGroupsAreTextAndAPatternMustStartWithWords) {
+  const paper_source paper = text_source("that $ \\, {\\rm det} \\, \\Phi_3 = 1 \\, $ and in consequence the scheme is symplectic.");
+  const auto span = find_prose(paper, "$ \\, {\\rm det} \\, \\Phi_3 = 1 \\, $ and in consequence the scheme is {property}.");
+  ASSERT_TRUE(span.has_value());
+  EXPECT_EQ(span->holes.at("property"), "symplectic");
+  EXPECT_THROW(find_prose(paper, "{property} is"), std::logic_error);
+}
+
+TEST(ProseSpan, PlainWordsDropsMathMarkupAndSpacing) {
+  EXPECT_EQ(plain_words("smaller or equal to $ \\, 1 $"), "smaller or equal to 1");
+  EXPECT_EQ(plain_words("\\sin \\, \\omega \\, t \\,"), "\\sin \\omega t");
+}
+
+/// The words of one hole, parsed through a quoted sentence of a small text.
+quoted_sentence sentence(const std::string& words, json& records) {
+  static paper_reading reading;
+  reading.source = text_source("The words are " + words + " here.");
+  run_context ctx;
+  ctx.paper = &reading;
+  ctx.quotes = &records;
+  return quote(ctx, "The words are {words} here.");
+}
+
+TEST(QuotedWords, NumbersBoundsAndChoicesParseAndAreRecorded) {
+  json records = json::array();
+  EXPECT_EQ(sentence("three", records).number("words"), 3);
+  EXPECT_EQ(sentence("fourth", records).number("words"), 4);
+  EXPECT_EQ(sentence("$ 12 $", records).number("words"), 12);
+  const stated_bound b = sentence("smaller or equal to $ \\, 1 $", records).bound("words");
+  EXPECT_EQ(b.relation, "<=");
+  EXPECT_EQ(b.value, 1);
+  EXPECT_TRUE(b.admits(1));
+  EXPECT_FALSE(b.admits(2));
+  const stated_bound strict = sentence("smaller than 1, simple", records).bound("words");
+  EXPECT_EQ(strict.relation, "<");
+  EXPECT_EQ(strict.rest, "simple");
+  EXPECT_EQ(sentence("Explicit", records).choice("words", {{"explicit", "E"}, {"implicit", "I"}}), "E");
+  ASSERT_EQ(records.size(), 6u);
+  EXPECT_EQ(records[0]["parsed"]["words"], 3);
+  EXPECT_EQ(records[0]["words"]["words"], "three");
+}
+
+TEST(QuotedWords, WordsThatDoNotParseAreTextChanged) {
+  json records = json::array();
+  EXPECT_THROW(sentence("trois", records).number("words"), text_changed);
+  EXPECT_THROW(sentence("bigger than", records).bound("words"), text_changed);
+  EXPECT_THROW(sentence("semi-explicit", records).choice("words", {{"explicit", "E"}}), text_changed);
+  paper_reading empty;
+  empty.source = text_source("Nothing of the kind.");
+  run_context ctx;
+  ctx.paper = &empty;
+  EXPECT_THROW(quote(ctx, "The words are {words} here."), text_changed);
+}
+
+/// One prose sentence of the embedded paper changed: the claim that quotes it gets `expected`.
+struct sentence_change {
+  std::string claim;
+  std::string from, to;  // in the paper's source, first occurrence
+  verdict expected;
+};
+
+std::ostream& operator<<(std::ostream& out, const sentence_change& a) { return out << a.claim << ": '" << a.from << "' -> '" << a.to << "'"; }
+
+class ChangedSentence : public testing::TestWithParam<sentence_change> {};
+
+TEST_P(ChangedSentence, FlipsOrFlagsTheClaimThatQuotesIt) {
+  const sentence_change& a = GetParam();
+  paper_source paper = embedded_paper();
+  const std::size_t at = paper.text.find(a.from);
+  ASSERT_NE(at, std::string::npos) << a.from;
+  paper.text.replace(at, a.from.size(), a.to);
+  paper.origin = "altered copy";
+  const paper_reading reading = read_paper(paper);
+  const claim& c = find_claim(a.claim);
+  const run_context ctx{{precision::parse("double"), precision::parse("rational")}, 20230830, 2, &reading};
+  const claim_result r = check_claim(c, ctx);
+  EXPECT_EQ(to_string(r.outcome), to_string(a.expected)) << r.note << " " << r.evidence.dump().substr(0, 600);
+  EXPECT_NE(r.outcome, c.expected) << "an altered sentence left " << a.claim << " as expected";
+  ASSERT_FALSE(r.quoted.empty());
+  if (r.outcome == verdict::text_changed) {
+    EXPECT_TRUE(r.evidence.contains("text_changed"));
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Paper, ChangedSentence,
+    testing::Values(
+        sentence_change{"simpson-exactness", "polynomials of  degree three", "polynomials of degree five", verdict::erratum},
+        sentence_change{"simpson-exactness", "polynomials of  degree three", "polynomials of degree trois", verdict::text_changed},
+        sentence_change{"midpoint-exactness", "smaller or equal to $ \\, 1 $", "smaller or equal to $ \\, 2 $", verdict::erratum},
+        sentence_change{"root-modulus-criterion", "of modulus smaller than 1",
+                   "of modulus smaller or equal to 1, those of modulus 1 being simple", verdict::holds},
+        sentence_change{"root-modulus-criterion", "The scheme is stable when the roots", "The scheme is stable if the roots",
+                   verdict::text_changed},
+        sentence_change{"maupertuis-naming", "Maupertuis's stationary-action", "Hamilton's stationary-action", verdict::holds},
+        sentence_change{"internal-equation-second-order", "a second order discretization", "a fourth order discretization",
+                        verdict::erratum},
+        sentence_change{"qm-not-affine", "is not linear if", "is linear if", verdict::erratum},
+        sentence_change{"fourth-order-truncation", "(\\ref{schema-ordre-3}) is fourth order", "(\\ref{schema-ordre-3}) is second order",
+                   verdict::erratum},
+        sentence_change{"discriminant-negative", "are negative", "are positive", verdict::erratum},
+        sentence_change{"discriminant-negative", "(\\omega^2 \\, h^2 - 8 )", "(8 - \\omega^2 \\, h^2)", verdict::erratum},
+        sentence_change{"roots-product-one", "is equal to 1 and the scheme", "is equal to 2 and the scheme", verdict::erratum},
+        sentence_change{"phi3-explicit", "is an explicit scheme", "is an implicit scheme", verdict::erratum},
+        sentence_change{"phi3-symplectic", "in consequence the scheme is symplectic", "in consequence the scheme is not symplectic",
+                   verdict::erratum},
+        sentence_change{"newmark-unconditional-stability", "particular inconditionally stable", "particular conditionally stable",
+                   verdict::erratum},
+        sentence_change{"newmark-identification", "version of the\nNewmark scheme", "version of the\nVerlet scheme", verdict::text_changed},
+        sentence_change{"conclusion-symplectic-stable", "symplectic, conditionnally stable and", "symplectic, stable and", verdict::erratum},
+        sentence_change{"conclusion-fourth-order", "is fourth order accurate for state", "is third order accurate for state", verdict::erratum},
+        sentence_change{"figure1-statements", "with the  symplectic Simpson scheme.", "with the Newmark scheme.", verdict::fails},
+        sentence_change{"table-orders", "$ 1.27  \\,\\, 10^{-1} $  & 2", "$ 1.27  \\,\\, 10^{-1} $  & 3", verdict::fails},
+        sentence_change{"table-conservation", "$ 1.49 \\,\\, 10^{-13} $   & exact", "$ 1.49 \\,\\, 10^{-13} $   & 4", verdict::fails},
+        sentence_change{"nonlinear-internal-node", "is not possible in that case", "is possible in that case", verdict::text_changed},
+        sentence_change{"abstract-stable", "It is a stable,", "It is a conditionally stable,", verdict::holds},
+        sentence_change{"abstract-explicit", "explicit, and  symplectic", "explicit for linear problems, and symplectic", verdict::holds},
+        sentence_change{"experiment-conventions", "p(t) = m \\, \\omega \\, \\cos", "p(t) = m \\, \\cos", verdict::fails}));
+
+TEST(ChangedFormula, TheContractionConstantFollowsThePrintedInternalEquation) {
+  // (equation-milieu-intervalle) with 2/h^2 for 4/h^2: the pendulum's contraction bound moves from
+  // omega h < 2 sqrt(2) to omega h < 2, no longer the stability bound.
+  paper_source paper = embedded_paper();
+  const std::string from = "m\\, {{4}\\over{h^2}} \\, \\big( q_\\ell -2 \\,  q_m + q_r \\big)  + {{\\dd V}\\over{\\dd q}}(q_m) = 0";
+  const std::size_t at = paper.text.find(from);
+  ASSERT_NE(at, std::string::npos);
+  paper.text.replace(at, from.size(), "m\\, {{2}\\over{h^2}} \\, \\big( q_\\ell -2 \\,  q_m + q_r \\big)  + {{\\dd V}\\over{\\dd q}}(q_m) = 0");
+  const paper_reading reading = read_paper(paper);
+  const run_context ctx{{precision::parse("double")}, 20230830, 2, &reading};
+  const claim_result r = check_claim(find_claim("nonlinear-internal-node"), ctx);
+  EXPECT_EQ(r.evidence["exact"]["pendulum_contraction_constant"], "(h^2*omega^2)/(4)");
+  EXPECT_EQ(r.evidence["exact"]["same_bound"], false);
+  const claim_result printed = check_claim(find_claim("nonlinear-internal-node"), run_context{{precision::parse("double")}, 20230830, 2, nullptr});
+  EXPECT_EQ(printed.evidence["exact"]["same_bound"], true);
+}
+
+}  // namespace
+}  // namespace simpson::verify
