@@ -139,6 +139,18 @@ inline claim_result words_erratum(json evidence, std::string correction, std::st
   return r;
 }
 
+/// A computed result judged against the words quoted for it: when the computation holds but the
+/// words deny it ("not consistent", "not symplectic"), an erratum whose correction is `computed_statement`.
+inline claim_result as_the_words_say(claim_result computed, bool words_affirm, std::string computed_statement) {
+  if (computed.outcome != verdict::holds || words_affirm) return computed;
+  return words_erratum(std::move(computed.evidence), std::move(computed_statement), std::move(computed.note));
+}
+
+/// Whether quoted words affirm or deny a property: `word`, or "not word" / "in"/"un" + word.
+inline std::vector<std::pair<std::string, std::string>> affirmed_or_denied(const std::string& word) {
+  return {{word, "affirmed"}, {"not " + word, "denied"}, {"in" + word, "denied"}, {"un" + word, "denied"}, {"non-" + word, "denied"}};
+}
+
 /// The symbolic value of an exact-difference derivative (exact for polynomials of degree ≤ 4
 /// in the differentiated variable): (4 D(1) − D(2)) / 3 with D(e) the central difference.
 template <class F>

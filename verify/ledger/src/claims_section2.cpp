@@ -73,7 +73,7 @@ claim_result check_classical_euler_lagrange(const run_context&) {
       "chain rule on V((q_l + q_r)/2).");
 }
 
-claim_result check_classical_consistency(const run_context&) {
+claim_result check_classical_consistency_computed(const run_context&) {
   // Truncation error of (schema-ordre-deux)/m for V = m w^2 q^2/2 at the exact solution q = cos t:
   // q_{j+-1} = cos(theta), q_j = 1; cos through theta^14 leaves the series exact below theta^12.
   const auto par = unit_oscillator_in_theta();
@@ -89,6 +89,12 @@ claim_result check_classical_consistency(const run_context&) {
   return confirmed_if(consistent, evidence,
                       "Checked for the harmonic potential: the truncation error is -(omega h)^2 omega^2/6 q_j + O(h^4), "
                       "second order.");
+}
+
+claim_result check_classical_consistency(const run_context& ctx) {
+  const quoted_sentence said = quote(ctx, "This numerical scheme is clearly {relation} with the second order");
+  const bool affirmed = said.choice("relation", affirmed_or_denied("consistent")) == "affirmed";
+  return as_the_words_say(check_classical_consistency_computed(ctx), affirmed, "The scheme (schema-ordre-deux) is consistent with (oscillateur-nonlineaire): its truncation error is O(h^2)");
 }
 
 claim_result check_newmark_momentum(const run_context&) {
@@ -139,14 +145,20 @@ claim_result check_newmark_matrix(const run_context&) {
   return identity(p);
 }
 
-claim_result check_newmark_det(const run_context& ctx) {
+claim_result check_newmark_det_computed(const run_context& ctx) {
   const proof exact = prove_zero(std::string(unit_reduction) + "; det Phi - 1", determinant(newmark_map(unit_oscillator_in_theta())) - 1);
   bool within = false;
   const json numeric = recheck_with(ctx, "newmark-det", [](const auto& par, const auto&) { return newmark_map_determinant_check(par); }, within);
   return identity(exact, within, numeric);
 }
 
-claim_result check_newmark_energy(const run_context& ctx) {
+claim_result check_newmark_det(const run_context& ctx) {
+  const quoted_sentence said = quote(ctx, "the discrete flow (\\ref{systeme-symplectique-ordre-2}) is {property} as observed by");
+  const bool affirmed = said.choice("property", affirmed_or_denied("symplectic")) == "affirmed";
+  return as_the_words_say(check_newmark_det_computed(ctx), affirmed, "The discrete flow is symplectic: det Phi = 1");
+}
+
+claim_result check_newmark_energy_computed(const run_context& ctx) {
   const auto par = unit_oscillator_in_theta();
   const one_step_matrix<symbolic> phi = newmark_map(par);
   const proof exact = prove_zero_on_grid(std::string(unit_reduction) + "; H(Phi y) - H(y), a quadratic form in y",
@@ -157,6 +169,12 @@ claim_result check_newmark_energy(const run_context& ctx) {
   bool within = false;
   const json numeric = recheck_with(ctx, "newmark-energy", [](const auto& par, const auto& y) { return newmark_energy_step_check(par, y); }, within);
   return identity(exact, within, numeric);
+}
+
+claim_result check_newmark_energy(const run_context& ctx) {
+  const quoted_sentence said = quote(ctx, "\\monend is {property}: we have $ \\, H_{j+1} = H_j");
+  const bool affirmed = said.choice("property", affirmed_or_denied("conserved")) == "affirmed";
+  return as_the_words_say(check_newmark_energy_computed(ctx), affirmed, "H_j is conserved: H_{j+1} = H_j");
 }
 
 claim_result check_newmark_stability(const run_context& ctx) {
@@ -222,7 +240,7 @@ claim_result check_newmark_identification(const run_context& ctx) {
 /// (systeme-dynamique-discret-ordre-2), the first relation divided by h, on the exact solutions
 /// (q, p) = (cos t, -sin t) and (sin t, cos t) at m = omega = 1: both residuals are O(theta^2) and
 /// O(theta^3), so the relations tend to dp/dt + m omega^2 q = 0 and dq/dt = p/m.
-claim_result check_hamilton_consistency(const run_context&) {
+claim_result check_hamilton_consistency_computed(const run_context&) {
   const auto par = unit_oscillator_in_theta();
   const symbolic c(cos_taylor(14), make_polynomial({rational(1)})), s(sin_taylor(14), make_polynomial({rational(1)}));
   json runs = json::array();
@@ -244,6 +262,12 @@ claim_result check_hamilton_consistency(const run_context&) {
   return confirmed_if(consistent, evidence,
                       "Both residuals vanish as h -> 0 (the first, divided by h, is O(h^2); the second O(h^2) as well): the "
                       "system is a consistent, second-order discretization of dp/dt + m omega^2 q = 0, dq/dt = p/m.");
+}
+
+claim_result check_hamilton_consistency(const run_context& ctx) {
+  const quoted_sentence said = quote(ctx, "These relations are {relation} with the first order Hamilton version");
+  const bool affirmed = said.choice("relation", affirmed_or_denied("consistent")) == "affirmed";
+  return as_the_words_say(check_hamilton_consistency_computed(ctx), affirmed, "The relations (systeme-dynamique-discret-ordre-2) are consistent with dp/dt + m omega^2 q = 0, dq/dt = p/m");
 }
 
 }  // namespace

@@ -225,13 +225,20 @@ rational coefficient(const std::vector<std::pair<long, rational>>& series, long 
   return 0;
 }
 
-claim_result check_scheme_consistency(const run_context&) {
+claim_result check_scheme_consistency_computed() {
   const auto series = truncation_series(10);
   json evidence;
   evidence["exact"] = {{"method", "exact series"},
                        {"reduction", std::string(unit_reduction) + "; exact solution q = cos t"},
                        {"truncation_error_over_q_j", series_to_string(series, "θ") + " + O(θ^10)"}};
   return confirmed_if(!series.empty() && series.front().first > 0, evidence);
+}
+
+claim_result check_scheme_consistency(const run_context& ctx) {
+  const quoted_sentence said = quote(ctx, "The scheme (\\ref{schema-ordre-3}) is {relation} with the ordinary differential equation");
+  const bool affirmed = said.choice("relation", affirmed_or_denied("consistent")) == "affirmed";
+  return as_the_words_say(check_scheme_consistency_computed(), affirmed,
+                          "The scheme (schema-ordre-3) is consistent with q'' + omega^2 q = 0: its truncation error vanishes as h -> 0");
 }
 
 claim_result check_taylor_display(const run_context&) {

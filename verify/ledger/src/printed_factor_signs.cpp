@@ -6,6 +6,8 @@
 
 #include <simpson/three_term_scheme.hpp>
 
+#include <algorithm>
+
 namespace simpson::verify::detail {
 namespace {
 
@@ -96,6 +98,8 @@ std::vector<printed_factor_sign> printed_discriminant_factor_signs(const paper_r
   } else {
     binomials.push_back(printed);
   }
+  // GiNaC orders a product's factors by hash, which differs from process to process: by text instead.
+  std::sort(binomials.begin(), binomials.end(), [](const ex& a, const ex& b) { return text_of(a) < text_of(b); });
   std::vector<printed_factor_sign> signs;
   if (!GiNaC::is_a<GiNaC::numeric>(prefactor) || prefactor != 1) signs.push_back(decided_sign(prefactor, true, band_end));
   for (const ex& f : binomials) signs.push_back(decided_sign(f, false, band_end));

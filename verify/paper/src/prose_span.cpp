@@ -42,8 +42,10 @@ std::size_t match_at(const std::string& text, const std::string& key, std::size_
 std::optional<std::pair<std::size_t, std::size_t>> find_key(const std::string& text, const std::string& key, std::size_t from,
                                                             std::size_t within = std::string::npos) {
   const std::size_t last = within == std::string::npos ? text.size() : std::min(text.size(), from + within);
+  const bool word = std::isalnum(static_cast<unsigned char>(key.front())) != 0;
   for (std::size_t start = text.find(key.front(), from); start != std::string::npos && start <= last;
        start = text.find(key.front(), start + 1)) {
+    if (word && start > 0 && std::isalnum(static_cast<unsigned char>(text[start - 1])) != 0) continue;  // mid-word
     const std::size_t end = match_at(text, key, start);
     if (end != std::string::npos) return std::make_pair(start, end);
   }
@@ -59,8 +61,9 @@ std::vector<pattern_part> split_pattern(const std::string& pattern) {
   std::vector<pattern_part> parts(1);
   for (std::size_t k = 0; k < pattern.size(); ++k) {
     const char c = pattern[k];
+    // A hole starts a word: "\ref{simpson}" and "H_{j+1}" are text.
     if (c == '{' && k + 1 < pattern.size() && std::isalpha(static_cast<unsigned char>(pattern[k + 1])) &&
-        (k == 0 || pattern[k - 1] != '\\')) {
+        (k == 0 || is_space(pattern[k - 1]) || pattern[k - 1] == '(')) {
       const std::size_t close = pattern.find('}', k);
       if (close == std::string::npos) throw std::logic_error("prose pattern '" + pattern + "': unclosed hole");
       const std::string name = pattern.substr(k + 1, close - k - 1);

@@ -85,7 +85,8 @@ table_errors run_two_step_experiment(bool simpson_scheme, long long N, double m 
 std::string table_also_tried(double m = 1);
 
 /// Table 1 against ours, row by row: which rows agree within 5%, and the published/ours ratio range
-/// of the others, computed from published_rows() and run_table_experiment.
-std::string table_not_reproduced(double m = 1);
+/// of the others, computed from run_table_experiment and the published values (published_rows(), or
+/// `published`, the values read from a copy of the paper, in the same row order).
+std::string table_not_reproduced(double m = 1, const std::array<std::array<double, 3>, 8>* published = nullptr);
 
 }  // namespace simpson::verify

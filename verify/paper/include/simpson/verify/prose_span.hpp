@@ -3,7 +3,9 @@
 // where the words that carry a claim stand ("accurate up to polynomials of degree {degree}.").
 // White space matches any white space (the source breaks lines where it likes); everything else
 // must be as printed. A hole takes the words between the text before it and the text after it;
-// its name is two or more lower-case letters (TeX groups such as {h} or {\rm det} are text).
+// its name is two or more lower-case letters and it starts a word (TeX groups such as {h},
+// {\rm det} or \ref{simpson} are text). Words
+// match whole: "is" does not match inside "discrete".
 
 #include <simpson/verify/paper_source.hpp>
 
