@@ -407,3 +407,67 @@ TEST(PaperTable, TwoStepStartConvergesAtTheSchemesOrdersAndTheTextsAreComputed) 
 
 }  // namespace
 }  // namespace simpson::verify
+
+#include <simpson/verify/table1_conventions.hpp>
+
+namespace simpson::verify {
+namespace {
+
+/// Table 1 as the experiment computes it under `choice` and `values`, printed with three digits.
+std::vector<printed_entry> synthetic_table1(const convention_choice& choice, const parameter_values& values) {
+  const std::vector<computed_entry> computed = table1_under(choice, values);
+  std::array<std::array<double, 3>, 8> printed{};
+  std::array<std::string, 8> orders;
+  for (std::size_t r = 0; r < 8; ++r) {
+    orders[r] = published_rows()[r].published_order;
+    for (std::size_t k = 0; k < 3; ++k) {
+      const double v = computed[3 * r + k].value;
+      const double unit = 2 * half_unit_of_last_digit(v, 3);
+      printed[r][k] = std::round(v / unit) * unit;
+    }
+  }
+  return table1_printed(printed, orders);
+}
+
+convention_choice stated_table1_conventions() {
+  convention_choice c;
+  for (const discrete_convention& d : table1_discrete_conventions()) c[d.name] = d.stated;
+  return c;
+}
+
+TEST(ConventionSearch, ATableMadeUnderTheStatedConventionsHolds) {
+  const convention_search_result r = search_table1(synthetic_table1(stated_table1_conventions(), {{"m", 1}, {"amplitude", 1}, {"phase", 0}}));
+  EXPECT_TRUE(r.stated_reproduces()) << describe(r.stated);
+}
+
+TEST(ConventionSearch, AHiddenConventionIsRecoveredWithItsParameters) {
+  convention_choice hidden = stated_table1_conventions();
+  hidden["momentum"] = "p/(m omega)";
+  const convention_search_result r = search_table1(synthetic_table1(hidden, {{"m", 2.5}, {"amplitude", 1}, {"phase", 0}}));
+  EXPECT_FALSE(r.stated_reproduces());
+  const convention_candidate* found = r.reproducing();
+  ASSERT_NE(found, nullptr) << describe(r.tried.front());
+  // At amplitude 1, p/(m omega) and errors relative to the amplitude measure the momentum alike: either is the answer.
+  EXPECT_TRUE(found->choice.at("momentum") == "p/(m omega)" || found->choice.at("errors") == "relative to the amplitude") << describe(*found);
+  EXPECT_NEAR(found->values.at("amplitude"), 1, 0.02) << describe(*found);
+  ASSERT_TRUE(found->pinned.count("m"));
+  EXPECT_LE(found->pinned.at("m").first, 2.5);
+  EXPECT_GE(found->pinned.at("m").second, 2.5);
+  EXPECT_LT(found->pinned.at("m").second / found->pinned.at("m").first, 1.02) << "m is pinned to within 2%";
+}
+
+TEST(ConventionSearch, OneEntryAlteredBeyondItsDigitsIsNamed) {
+  std::vector<printed_entry> table = synthetic_table1(stated_table1_conventions(), {{"m", 1}, {"amplitude", 1}, {"phase", 0}});
+  table[10].value *= 1.05;  // Symplectic Simpson state, N = 20
+  const convention_search_result r = search_table1(table);
+  EXPECT_EQ(r.reproducing(), nullptr);
+  std::vector<std::string> missed;
+  for (std::size_t k = 0; k < table.size(); ++k) {
+    if (!r.stated.entries[k].reproduced) missed.push_back(table[k].row + ", " + table[k].column);
+  }
+  ASSERT_EQ(missed.size(), 1u);
+  EXPECT_EQ(missed.front(), "Symplectic Simpson state, N = 20");
+}
+
+}  // namespace
+}  // namespace simpson::verify

@@ -56,7 +56,9 @@ TEST(ReferenceReport, PaperSceneReproducesTheCommittedReport) {
   EXPECT_TRUE(std::filesystem::exists(dir / "report.html"));
   // The page shows the plots beside it (not embedded: it stays small), and its JUnit is green.
   EXPECT_NE(read(dir / "report.html").find("<img src=\"figure1.svg\""), std::string::npos);
-  EXPECT_LT(std::filesystem::file_size(dir / "report.html"), 400'000u);
+  // Embedded, the plots made the page over 800 KB; the text of 64 claims' evidence (quoted sentences,
+  // the convention search's candidates entry by entry) is about 420 KB.
+  EXPECT_LT(std::filesystem::file_size(dir / "report.html"), 480'000u);
   EXPECT_NE(read(dir / "report.junit.xml").find("failures=\"0\" errors=\"0\""), std::string::npos);
   // Every table of the committed page is a table (a '|' left unescaped once made one a paragraph).
   test::expect_html_tables_rendered(dir);

@@ -1,0 +1,95 @@
+#pragma once
+// When a printed table disagrees: which conventions, if any, reproduce it. A printed table (values
+// with the digits they were printed with), a parametrised experiment, discrete conventions to
+// enumerate and continuous parameters to fit. A printed value with d significant digits says that
+// the true value lies within half a unit of its last digit: an entry is reproduced when the computed
+// value lies in that interval; an entry printed at round-off is reproduced when the computed value
+// is at round-off too (below the bound the experiment gives). Table 1 is the first user
+// (table1_conventions.hpp); nothing here knows about it.
+
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace simpson::verify {
+
+/// One printed number: its value, how many significant digits it was printed with, and whether it is
+/// printed at round-off (an "exact" row: judged as round-off, not digit by digit).
+struct printed_entry {
+  std::string row, column;
+  double value = 0;
+  int digits = 3;
+  bool round_off = false;
+};
+
+/// What the experiment computed for an entry, and below what a value is round-off for it.
+struct computed_entry {
+  double value = 0;
+  double round_off_bound = 0;
+};
+
+/// A convention the search enumerates: its name, its options, and the one the paper states.
+struct discrete_convention {
+  std::string name;
+  std::vector<std::string> options;
+  std::string stated;
+};
+
+/// A parameter the search fits within [low, high] (log-uniform when log_scale), `stated` the value
+/// the paper states or implies.
+struct continuous_parameter {
+  std::string name;
+  double low = 0, high = 0, stated = 0;
+  bool log_scale = true;
+};
+
+using convention_choice = std::map<std::string, std::string>;
+using parameter_values = std::map<std::string, double>;
+
+/// The experiment under a convention: one computed entry per printed entry, in the same order.
+using parametrised_experiment = std::function<std::vector<computed_entry>(const convention_choice&, const parameter_values&)>;
+
+struct entry_score {
+  double computed = 0;
+  double residual = 0;  // |computed − printed| in half-units of the last printed digit (round-off: computed / bound)
+  bool reproduced = false;
+};
+
+struct convention_candidate {
+  convention_choice choice;
+  parameter_values values;
+  std::vector<entry_score> entries;
+  std::size_t reproduced = 0;  // entries reproduced
+  double worst = 0;            // the largest residual
+  /// For a candidate that reproduces every entry: for each fitted parameter, the interval of values
+  /// (the others fixed) that still reproduce the table.
+  std::map<std::string, std::pair<double, double>> pinned;
+};
+
+struct convention_search_result {
+  convention_candidate stated;           // the stated conventions and values, unfitted
+  std::vector<convention_candidate> tried;  // every discrete combination, fitted, best first
+  std::size_t evaluations = 0;           // experiment runs
+  double seconds = 0;
+  bool stated_reproduces() const;
+  /// The best candidate, when it reproduces every entry.
+  const convention_candidate* reproducing() const;
+};
+
+/// Half a unit of the last printed digit of `value` printed with `digits` significant digits.
+double half_unit_of_last_digit(double value, int digits);
+
+/// Scores a computed table against the printed one.
+std::vector<entry_score> score_entries(const std::vector<printed_entry>& printed, const std::vector<computed_entry>& computed);
+
+/// Enumerates every combination of the discrete conventions; for each, fits the continuous
+/// parameters (coordinate search in log space minimising the sum of squared log ratios, then judged
+/// by the half-unit intervals). Candidates sorted by entries reproduced, then by worst residual.
+convention_search_result search_conventions(const std::vector<printed_entry>& printed, const std::vector<discrete_convention>& discrete,
+                                            const std::vector<continuous_parameter>& continuous, const parametrised_experiment& experiment);
+
+/// "momentum: p/(m omega), m = 2.05": a candidate in words.
+std::string describe(const convention_candidate& c);
+
+}  // namespace simpson::verify

@@ -1,0 +1,28 @@
+#pragma once
+// Table 1 as a parametrised experiment for the convention search: every convention Section 8
+// states or leaves implicit is a parameter (the steps, the points the maximum runs over, how the
+// momentum and the errors are measured, the energy error; m, the amplitude and the phase of the
+// exact solution). Under the stated ones it is run_table_experiment.
+
+#include <simpson/verify/convention_search.hpp>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace simpson::verify {
+
+/// Table 1's entries in the order of published_rows() and published_meshes, from the values and the
+/// order column as printed ("exact" rows are round-off entries), three significant digits.
+std::vector<printed_entry> table1_printed(const std::array<std::array<double, 3>, 8>& values, const std::array<std::string, 8>& orders);
+
+std::vector<discrete_convention> table1_discrete_conventions();
+std::vector<continuous_parameter> table1_continuous_parameters();
+
+/// Table 1's entries computed under `choice` and `values`.
+std::vector<computed_entry> table1_under(const convention_choice& choice, const parameter_values& values);
+
+/// The search on Table 1 as printed.
+convention_search_result search_table1(const std::vector<printed_entry>& printed);
+
+}  // namespace simpson::verify

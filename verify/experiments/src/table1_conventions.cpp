@@ -1,0 +1,93 @@
+#include <simpson/verify/table1_conventions.hpp>
+
+#include <simpson/verify/paper_table.hpp>
+
+namespace simpson::verify {
+namespace {
+
+struct run_errors {
+  double p = 0, q = 0, energy = 0, discrete_energy = 0, H0 = 0;
+  long long steps = 0;
+};
+
+/// One run of a scheme under the conventions: q(t) = A sin(ωt + φ), p = mω A cos(ωt + φ), ω = 2π, T = 1.
+run_errors run(bool simpson_scheme, long long N, const convention_choice& c, const parameter_values& v) {
+  const double omega = boost::math::constants::two_pi<double>(), m = v.at("m"), A = v.at("amplitude"), phase = v.at("phase");
+  const std::string& steps = c.at("steps");
+  const long long n = steps == "N - 1 steps of h = T/(N - 1)" ? N - 1 : steps == "N + 1 steps of h = T/N" ? N + 1 : N;
+  const double h = steps == "N - 1 steps of h = T/(N - 1)" ? 1.0 / static_cast<double>(N - 1) : 1.0 / static_cast<double>(N);
+  const oscillator_parameters<double> par{m, omega, h};
+  const phase_point<double> y0{m * omega * A * std::cos(phase), A * std::sin(phase)};
+  const one_step_matrix<double> phi = simpson_scheme ? simpson_map(par) : newmark_map(par);
+  run_errors e;
+  e.steps = n;
+  e.H0 = energy(par, y0);
+  const double Hd0 = discrete_energy(par, y0);
+  const bool relative = c.at("errors") == "relative to the amplitude";
+  const double p_scale = (c.at("momentum") == "p/(m omega)" ? m * omega : 1.0) * (relative ? (c.at("momentum") == "p/(m omega)" ? A : m * omega * A) : 1.0);
+  const double q_scale = relative ? A : 1.0;
+  const double energy_scale = c.at("energy") == "relative, |H_j - H_0|/H_0" ? e.H0 : 1.0;
+  const std::string& over = c.at("maximum over");
+  iterate(phi, y0, static_cast<std::size_t>(n), [&](std::size_t j, const phase_point<double>& y) {
+    if (over == "t_j, j = 1..N" && j == 0) return;
+    if (over == "t_N only" && static_cast<long long>(j) != n) return;
+    const phase_point<double> exact = exact_solution(par, y0, static_cast<double>(j) * h);
+    e.p = std::max(e.p, std::abs(y.p - exact.p) / p_scale);
+    e.q = std::max(e.q, std::abs(y.q - exact.q) / q_scale);
+    e.energy = std::max(e.energy, std::abs(energy(par, y) - e.H0) / energy_scale);
+    e.discrete_energy = std::max(e.discrete_energy, std::abs(discrete_energy(par, y) - Hd0) / energy_scale);
+  });
+  if (c.at("energy") == "relative, |H_j - H_0|/H_0") e.H0 = 1;
+  return e;
+}
+
+}  // namespace
+
+std::vector<printed_entry> table1_printed(const std::array<std::array<double, 3>, 8>& values, const std::array<std::string, 8>& orders) {
+  std::vector<printed_entry> entries;
+  for (std::size_t r = 0; r < published_rows().size(); ++r) {
+    const published_row& row = published_rows()[r];
+    for (std::size_t k = 0; k < published_meshes.size(); ++k) {
+      entries.push_back({std::string(row.scheme) + " " + row.quantity, "N = " + std::to_string(published_meshes[k]), values[r][k], 3,
+                         orders[r] == "exact"});
+    }
+  }
+  return entries;
+}
+
+std::vector<discrete_convention> table1_discrete_conventions() {
+  return {{"steps", {"N steps of h = T/N", "N - 1 steps of h = T/(N - 1)", "N + 1 steps of h = T/N"}, "N steps of h = T/N"},
+          {"maximum over", {"t_j, j = 0..N", "t_j, j = 1..N", "t_N only"}, "t_j, j = 0..N"},
+          {"momentum", {"p", "p/(m omega)"}, "p"},
+          {"errors", {"absolute", "relative to the amplitude"}, "absolute"},
+          {"energy", {"|H_j - H_0|", "relative, |H_j - H_0|/H_0"}, "|H_j - H_0|"}};
+}
+
+std::vector<continuous_parameter> table1_continuous_parameters() {
+  return {{"m", 1e-2, 1e2, 1, true}, {"amplitude", 1e-2, 1e2, 1, true},
+          {"phase", 0, boost::math::constants::two_pi<double>(), 0, false}};
+}
+
+std::vector<computed_entry> table1_under(const convention_choice& choice, const parameter_values& values) {
+  std::array<std::array<run_errors, 3>, 2> runs{};
+  for (int s = 0; s < 2; ++s) {
+    for (std::size_t k = 0; k < published_meshes.size(); ++k) runs[static_cast<std::size_t>(s)][k] = run(s == 1, published_meshes[k], choice, values);
+  }
+  std::vector<computed_entry> entries;
+  for (const published_row& row : published_rows()) {
+    for (std::size_t k = 0; k < published_meshes.size(); ++k) {
+      const run_errors& e = runs[row.simpson_scheme ? 1 : 0][k];
+      const double value = row.field == &table_errors::p ? e.p : row.field == &table_errors::q ? e.q
+                           : row.field == &table_errors::energy ? e.energy : e.discrete_energy;
+      // As at_round_off_floor: each step rounds H by a few eps relative.
+      entries.push_back({value, 64 * std::numeric_limits<double>::epsilon() * static_cast<double>(e.steps) * e.H0});
+    }
+  }
+  return entries;
+}
+
+convention_search_result search_table1(const std::vector<printed_entry>& printed) {
+  return search_conventions(printed, table1_discrete_conventions(), table1_continuous_parameters(), table1_under);
+}
+
+}  // namespace simpson::verify
