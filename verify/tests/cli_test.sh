@@ -230,6 +230,12 @@ check "prose unparsable" 1 --claims simpson-exactness --paper "$work/prose2.tex"
 grep -q "simpson-exactness: verdict text-changed, expected holds" "$work/err" || fail "prose unparsable: not named: $(cat "$work/err")"
 grep -q 'type="text-changed"' "$work/prose2/report.junit.xml" || fail "prose unparsable: no text-changed JUnit failure"
 grep -q "do not parse as a number" "$work/prose2/report.md" || fail "prose unparsable: report.md does not say why"
+# A changed Table 1 is judged as printed, by the claim and by the table1 section alike.
+sed 's/\$ 4.11  \\,\\, 10^{-4} \$/$ 4.11  \\,\\, 10^{-3} $/' "$paper_src" >"$work/table.tex"
+cmp -s "$paper_src" "$work/table.tex" && fail "changed table: sed changed nothing"
+check "changed table" 0 --claims table-values --sections table1 --paper "$work/table.tex" --out "$work/table"
+grep -q '^Symplectic Simpson,state,10,[^,]*,[^,]*,4.1099999999999999e-03,' "$work/table/table1.csv" || fail "changed table: the section shows the embedded value"
+grep -q '"printed": "4.11e-03"' "$work/table/report.json" || fail "changed table: the claim did not read the changed value"
 # Selection: --claims alone runs no section, --sections alone no claim; the title and report.json say so.
 check "claims only" 0 --claims "phi3-det, hd-invariance" --out "$work/claims-only"
 grep -q '"sections": \[\]' "$work/claims-only/report.json" || fail "claims only: overrides.sections not empty"

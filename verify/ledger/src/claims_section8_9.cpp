@@ -4,6 +4,7 @@
 #include "claims_section8_9.hpp"
 
 #include <simpson/verify/paper_reading.hpp>
+#include <simpson/verify/printed_table1.hpp>
 #include <simpson/verify/quoted_words.hpp>
 #include <simpson/verify/tex_math.hpp>
 
@@ -144,7 +145,8 @@ std::optional<double> table_number(const std::string& words) {
     std::size_t used_exponent = 0;
     const int e = std::stoi(exponent, &used_exponent);
     if (used != space || used_exponent != exponent.size()) return std::nullopt;
-    return mantissa * std::pow(10.0, e);
+    (void)mantissa;
+    return std::stod(words.substr(0, space) + "e" + std::to_string(e));  // as the literal 5.02e-1 reads, correctly rounded
   } catch (const std::exception&) {
     return std::nullopt;
   }
@@ -553,3 +555,19 @@ void add_section8_9_claims(std::vector<claim>& claims) {
 }
 
 }  // namespace simpson::verify::detail
+
+namespace simpson::verify {
+
+printed_table1 read_table1(const paper_reading& paper) {
+  run_context ctx;
+  ctx.paper = &paper;
+  printed_table1 t;
+  const auto rows = detail::printed_table(ctx);
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    t.values[k] = rows[k].values;
+    t.orders[k] = rows[k].order;
+  }
+  return t;
+}
+
+}  // namespace simpson::verify

@@ -22,7 +22,7 @@ std::vector<continuous_parameter> table1_continuous_parameters();
 /// Table 1's entries computed under `choice` and `values`.
 std::vector<computed_entry> table1_under(const convention_choice& choice, const parameter_values& values);
 
-/// The search on Table 1 as printed.
+/// The search on Table 1 as printed (a table searched before in this process is not searched again).
 convention_search_result search_table1(const std::vector<printed_entry>& printed);
 
 }  // namespace simpson::verify

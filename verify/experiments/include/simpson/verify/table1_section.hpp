@@ -4,6 +4,9 @@
 
 #include <simpson/verify/result_model.hpp>
 
+#include <array>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace simpson::verify {
@@ -12,6 +15,10 @@ struct table1_settings {
   std::vector<long long> meshes{10, 20, 40};  // N, one period each
   long long figure_meshes = 15;               // N of Figure 1
   double m = 1;
+  /// Table 1 as read from the run's paper (values and order column, in published_rows() order);
+  /// unset, the transcription of the embedded text, published_rows().
+  std::optional<std::array<std::array<double, 3>, 8>> printed_values;
+  std::optional<std::array<std::string, 8>> printed_orders;
 };
 
 section_result run_table1(const table1_settings& s);
