@@ -83,6 +83,16 @@ TEST(QuotedWords, WordsThatDoNotParseAreTextChanged) {
   EXPECT_THROW(quote(ctx, "The words are {words} here."), text_changed);
 }
 
+/// The embedded paper with the first `from` replaced by `to`, read.
+paper_reading altered_reading(const std::string& from, const std::string& to) {
+  paper_source paper = embedded_paper();
+  const std::size_t at = paper.text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) paper.text.replace(at, from.size(), to);
+  paper.origin = "altered copy";
+  return read_paper(paper);
+}
+
 /// One prose sentence of the embedded paper changed: the claim that quotes it gets `expected`.
 struct sentence_change {
   std::string claim;
@@ -96,12 +106,7 @@ class ChangedSentence : public testing::TestWithParam<sentence_change> {};
 
 TEST_P(ChangedSentence, FlipsOrFlagsTheClaimThatQuotesIt) {
   const sentence_change& a = GetParam();
-  paper_source paper = embedded_paper();
-  const std::size_t at = paper.text.find(a.from);
-  ASSERT_NE(at, std::string::npos) << a.from;
-  paper.text.replace(at, a.from.size(), a.to);
-  paper.origin = "altered copy";
-  const paper_reading reading = read_paper(paper);
+  const paper_reading reading = altered_reading(a.from, a.to);
   const claim& c = find_claim(a.claim);
   const run_context ctx{{precision::parse("double"), precision::parse("rational")}, 20230830, 2, &reading};
   const claim_result r = check_claim(c, ctx);
@@ -158,12 +163,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(ChangedTable, TableOneIsJudgedAsPrinted) {
   // table-values already fails as printed: a changed entry shows in its evidence, read from the copy.
-  paper_source paper = embedded_paper();
-  const std::string from = "$ 4.11  \\,\\, 10^{-4} $";
-  const std::size_t at = paper.text.find(from);
-  ASSERT_NE(at, std::string::npos);
-  paper.text.replace(at, from.size(), "$ 4.11  \\,\\, 10^{-3} $");
-  const paper_reading reading = read_paper(paper);
+  const paper_reading reading = altered_reading("$ 4.11  \\,\\, 10^{-4} $", "$ 4.11  \\,\\, 10^{-3} $");
   const claim_result r = check_claim(find_claim("table-values"), run_context{{precision::parse("double")}, 20230830, 2, &reading});
   EXPECT_EQ(r.evidence["numeric"]["rows"][3]["published_N_10_20_40"][0], "4.11e-03");
   EXPECT_NE(r.note.find("Symplectic Simpson state 0.997-9.84x ours"), std::string::npos) << r.note;
@@ -172,12 +172,7 @@ TEST(ChangedTable, TableOneIsJudgedAsPrinted) {
 TEST(ChangedFormula, TheContractionConstantFollowsThePrintedInternalEquation) {
   // (equation-milieu-intervalle) with 2/h^2 for 4/h^2: the pendulum's contraction bound moves from
   // omega h < 2 sqrt(2) to omega h < 2, no longer the stability bound.
-  paper_source paper = embedded_paper();
-  const std::string from = "m\\, {{4}\\over{h^2}} \\, \\big( q_\\ell -2 \\,  q_m + q_r \\big)  + {{\\dd V}\\over{\\dd q}}(q_m) = 0";
-  const std::size_t at = paper.text.find(from);
-  ASSERT_NE(at, std::string::npos);
-  paper.text.replace(at, from.size(), "m\\, {{2}\\over{h^2}} \\, \\big( q_\\ell -2 \\,  q_m + q_r \\big)  + {{\\dd V}\\over{\\dd q}}(q_m) = 0");
-  const paper_reading reading = read_paper(paper);
+  const paper_reading reading = altered_reading("m\\, {{4}\\over{h^2}} \\, \\big( q_\\ell -2", "m\\, {{2}\\over{h^2}} \\, \\big( q_\\ell -2");
   const run_context ctx{{precision::parse("double")}, 20230830, 2, &reading};
   const claim_result r = check_claim(find_claim("nonlinear-internal-node"), ctx);
   EXPECT_EQ(r.evidence["exact"]["pendulum_contraction_constant"], "(h^2*omega^2)/(4)");
