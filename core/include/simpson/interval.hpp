@@ -1,0 +1,68 @@
+#pragma once
+// Intervals for the core's generic formulas: MPFI through Boost.Multiprecision's mpfi_float. Every
+// operation rounds outward, so the exact value of a formula at exact (or enclosed) inputs lies in
+// the interval computed, in any precision. A statement is then decided, not toleranced: an
+// enclosure proves it, proves its negation, or says that the precision is not enough. Pulls in
+// MPFI: include it only where intervals are used (link simpson::interval).
+
+#include <boost/multiprecision/mpfi.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace simpson {
+
+using interval = boost::multiprecision::mpfi_float;
+
+/// The decimal digits of the intervals created in a scope (Boost's default precision), restored after it.
+class scoped_interval_digits {
+ public:
+  explicit scoped_interval_digits(unsigned digits) : previous_(interval::default_precision()) { interval::default_precision(digits); }
+  ~scoped_interval_digits() { interval::default_precision(previous_); }
+  scoped_interval_digits(const scoped_interval_digits&) = delete;
+  scoped_interval_digits& operator=(const scoped_interval_digits&) = delete;
+
+ private:
+  unsigned previous_;
+};
+
+/// +1 when every point of x is positive, −1 when every point is negative, 0 when x contains 0 (the
+/// sign is not decided at this precision, or the value is 0).
+inline int certain_sign(const interval& x) {
+  if (lower(x) > 0) return 1;
+  if (upper(x) < 0) return -1;
+  return 0;
+}
+
+/// Whether the interval x contains every point of `value`.
+inline bool encloses(const interval& x, const interval& value) { return lower(x) <= lower(value) && upper(value) <= upper(x); }
+
+/// "1.4427e-14 ± 3e-31": the midpoint to the digits the radius leaves (one more), and the radius,
+/// plus the midpoint's own rounding, rounded up to one digit: the text is an enclosure of x. "0 ±
+/// 2e-50" when the interval holds 0 and no digit of the midpoint is guaranteed.
+inline std::string enclosure_text(const interval& x) {
+  using real = boost::multiprecision::mpfr_float;
+  // A radius rounded up to one significant digit, as text.
+  const auto rounded_up = [](const real& r) -> std::string {
+    if (r <= 0) return "0";
+    long e = static_cast<long>(std::floor(static_cast<double>(log10(r))));
+    real leading = ceil(r / pow(real(10), e));
+    if (leading >= 10) leading = 1, ++e;
+    return leading.str(1) + "e" + std::to_string(e);
+  };
+  const real mid = median(x);
+  const real radius = upper(x) - mid > mid - lower(x) ? real(upper(x) - mid) : real(mid - lower(x));
+  if (radius > 0 && abs(mid) <= radius) {  // no digit guaranteed: centred on 0, wide enough for both ends
+    return "0 ± " + rounded_up(abs(lower(x)) > abs(upper(x)) ? real(abs(lower(x))) : real(abs(upper(x))));
+  }
+  long digits = 17;
+  if (radius > 0) digits = static_cast<long>(std::floor(static_cast<double>(log10(abs(mid) / radius)))) + 1;
+  digits = std::max(1L, std::min(digits, 60L));
+  // The printed midpoint is itself rounded: its rounding error joins the radius, so that the text
+  // is an enclosure too.
+  const std::string printed = mid.str(digits, std::ios_base::scientific);
+  return printed + " ± " + rounded_up(radius + abs(mid - real(printed)));
+}
+
+}  // namespace simpson
