@@ -429,19 +429,15 @@ std::vector<printed_entry> synthetic_table1(const convention_choice& choice, con
   return table1_printed(printed, orders);
 }
 
-convention_choice stated_table1_conventions() {
-  convention_choice c;
-  for (const discrete_convention& d : table1_discrete_conventions()) c[d.name] = d.stated;
-  return c;
-}
+
 
 TEST(ConventionSearch, ATableMadeUnderTheStatedConventionsHolds) {
-  const convention_search_result r = search_table1(synthetic_table1(stated_table1_conventions(), {{"m", 1}, {"amplitude", 1}, {"phase", 0}}));
+  const convention_search_result r = search_table1(synthetic_table1(table1_stated_conventions(), {{"m", 1}, {"amplitude", 1}, {"phase", 0}}));
   EXPECT_TRUE(r.stated_reproduces()) << describe(r.stated);
 }
 
 TEST(ConventionSearch, AHiddenConventionIsRecoveredWithItsParameters) {
-  convention_choice hidden = stated_table1_conventions();
+  convention_choice hidden = table1_stated_conventions();
   hidden["momentum"] = "p/(m omega)";
   const convention_search_result r = search_table1(synthetic_table1(hidden, {{"m", 2.5}, {"amplitude", 1}, {"phase", 0}}));
   EXPECT_FALSE(r.stated_reproduces());
@@ -457,7 +453,7 @@ TEST(ConventionSearch, AHiddenConventionIsRecoveredWithItsParameters) {
 }
 
 TEST(ConventionSearch, OneEntryAlteredBeyondItsDigitsIsNamed) {
-  std::vector<printed_entry> table = synthetic_table1(stated_table1_conventions(), {{"m", 1}, {"amplitude", 1}, {"phase", 0}});
+  std::vector<printed_entry> table = synthetic_table1(table1_stated_conventions(), {{"m", 1}, {"amplitude", 1}, {"phase", 0}});
   table[10].value *= 1.05;  // Symplectic Simpson state, N = 20
   const convention_search_result r = search_table1(table);
   EXPECT_EQ(r.reproducing(), nullptr);

@@ -161,12 +161,31 @@ INSTANTIATE_TEST_SUITE_P(
         sentence_change{"abstract-explicit", "explicit, and  symplectic", "explicit for linear problems, and symplectic", verdict::holds},
         sentence_change{"experiment-conventions", "p(t) = m \\, \\omega \\, \\cos", "p(t) = m \\, \\cos", verdict::fails}));
 
+TEST(ChangedSentence, ExplicitForNonlinearProblemsIsStillAnErratum) {
+  // "nonlinear" is not a restriction to linear problems: the words stay wrong.
+  const paper_reading reading = altered_reading("explicit, and  symplectic", "explicit for nonlinear problems too, and symplectic");
+  const claim_result r = check_claim(find_claim("abstract-explicit"), run_context{{precision::parse("double")}, 20230830, 2, &reading});
+  EXPECT_EQ(r.outcome, verdict::erratum);
+  EXPECT_EQ(r.evidence["stated"]["qualified"], false);
+}
+
 TEST(ChangedTable, TableOneIsJudgedAsPrinted) {
   // table-values already fails as printed: a changed entry shows in its evidence, read from the copy.
   const paper_reading reading = altered_reading("$ 4.11  \\,\\, 10^{-4} $", "$ 4.11  \\,\\, 10^{-3} $");
   const claim_result r = check_claim(find_claim("table-values"), run_context{{precision::parse("double")}, 20230830, 2, &reading});
   EXPECT_EQ(r.evidence["numeric"]["rows"][3]["published_N_10_20_40"][0], "4.11e-03");
   EXPECT_NE(r.note.find("Symplectic Simpson state 0.997-9.84x ours"), std::string::npos) << r.note;
+}
+
+TEST(ChangedTable, AnEntryIsJudgedToTheDigitsItIsPrintedWith) {
+  // "4.2 10^{-4}" has two significant digits: its interval is 4.2e-4 ± 0.05e-4, and ours (4.18e-4) is
+  // inside; printed "4.11" (three digits, ± 0.005e-4) it is not.
+  const paper_reading reading = altered_reading("$ 4.11  \\,\\, 10^{-4} $", "$ 4.2 \\,\\, 10^{-4} $");
+  const claim_result r = check_claim(find_claim("table-values"), run_context{{precision::parse("double")}, 20230830, 2, &reading});
+  const json& entry = r.evidence["search"]["stated"]["entries"][9];
+  EXPECT_EQ(entry["row"], "Symplectic Simpson state");
+  EXPECT_EQ(entry["printed"], "4.2e-04");
+  EXPECT_EQ(entry["reproduced"], true) << entry.dump();
 }
 
 TEST(ChangedFormula, TheContractionConstantFollowsThePrintedInternalEquation) {

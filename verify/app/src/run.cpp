@@ -81,6 +81,7 @@ run_record run(const scene& s, const paper_reading& paper, const progress_callba
       try {
         const printed_table1 printed = read_table1(paper);
         settings.printed_values = printed.values;
+        settings.printed_digits = printed.digits;
         settings.printed_orders = printed.orders;
       } catch (const text_changed&) {
       }

@@ -73,14 +73,15 @@ plot_description figure1_plot(double m, long long N) {
 
 /// The convention search on Table 1 (table1_conventions.hpp): the conventions tried, best first,
 /// and a plot of printed against reproduced values under the stated conventions and the best found.
-void add_convention_search(section_result& out, const std::array<published_row, 8>& rows) {
+void add_convention_search(section_result& out, const std::array<published_row, 8>& rows,
+                           const std::optional<std::array<std::array<int, 3>, 8>>& digits) {
   std::array<std::array<double, 3>, 8> values{};
   std::array<std::string, 8> orders;
   for (std::size_t r = 0; r < rows.size(); ++r) {
     for (std::size_t k = 0; k < 3; ++k) values[r][k] = rows[r].published[k];
     orders[r] = rows[r].published_order;
   }
-  const std::vector<printed_entry> printed = table1_printed(values, orders);
+  const std::vector<printed_entry> printed = table1_printed(values, orders, digits ? &*digits : nullptr);
   const convention_search_result search = search_table1(printed);
   const convention_candidate* found = search.reproducing();
   out.text(fmt::format(
@@ -226,7 +227,7 @@ section_result run_table1(const table1_settings& s) {
   out.add(std::move(not_reproduced_list));
 
   out.add(figure1_plot(s.m, s.figure_meshes));
-  add_convention_search(out, rows);
+  add_convention_search(out, rows, s.printed_digits);
 
   // Errors of p and q against N: ours (lines), published (open points), and slopes h² and h⁴ a factor
   // 4 below the first Newmark and Simpson state errors (beside the curves, not on them).

@@ -130,23 +130,27 @@ constexpr std::array<const char*, 8> table_row_labels{
 /// and its order cell ("2", "4" or "exact") parsed.
 struct printed_table_row {
   std::array<double, 3> values{};
+  std::array<int, 3> digits{};  // significant digits printed
   std::string order;
 };
 
 /// "1.91 10^{0}" or "1.91 10^{-1}": mantissa and power of ten; none when the words are not so.
-std::optional<double> table_number(const std::string& words) {
+/// A number printed as "1.91 10^{0}" or "1.91 10^{-1}": its value (as the literal 1.91e-1 reads,
+/// correctly rounded) and its significant digits; none when the words are not so.
+std::optional<std::pair<double, int>> table_number(const std::string& words) {
   const std::size_t space = words.find(' ');
   const std::size_t power = words.find("10^{");
   if (space == std::string::npos || power == std::string::npos || words.back() != '}') return std::nullopt;
+  const std::string mantissa = words.substr(0, space), exponent = words.substr(power + 4, words.size() - power - 5);
+  if (mantissa.empty() || mantissa.find_first_not_of("0123456789.") != std::string::npos) return std::nullopt;
   try {
     std::size_t used = 0;
-    const double mantissa = std::stod(words.substr(0, space), &used);
-    const std::string exponent = words.substr(power + 4, words.size() - power - 5);
-    std::size_t used_exponent = 0;
-    const int e = std::stoi(exponent, &used_exponent);
-    if (used != space || used_exponent != exponent.size()) return std::nullopt;
-    (void)mantissa;
-    return std::stod(words.substr(0, space) + "e" + std::to_string(e));  // as the literal 5.02e-1 reads, correctly rounded
+    const int e = std::stoi(exponent, &used);
+    if (used != exponent.size()) return std::nullopt;
+    std::string digits = mantissa;
+    digits.erase(std::remove(digits.begin(), digits.end(), '.'), digits.end());
+    digits.erase(0, std::min(digits.find_first_not_of('0'), digits.size()));
+    return std::make_pair(std::stod(mantissa + "e" + std::to_string(e)), std::max<int>(1, static_cast<int>(digits.size())));
   } catch (const std::exception&) {
     return std::nullopt;
   }
@@ -158,10 +162,11 @@ std::array<printed_table_row, 8> printed_table(const run_context& ctx) {
     const quoted_sentence row = quote(ctx, std::string(table_row_labels[k]) + " & {n_ten} & {n_twenty} & {n_forty} & {order} \\\\");
     const char* holes[] = {"n_ten", "n_twenty", "n_forty"};
     for (std::size_t c = 0; c < 3; ++c) {
-      const std::optional<double> v = table_number(row.words(holes[c]));
+      const auto v = table_number(row.words(holes[c]));
       if (!v) row.unparsed(holes[c], "a number printed as 'm 10^{e}'");
       row.record(holes[c], row.words(holes[c]));
-      table[k].values[c] = *v;
+      table[k].values[c] = v->first;
+      table[k].digits[c] = v->second;
     }
     if (row.words("order") == "exact") {
       row.record("order", "exact");
@@ -243,7 +248,7 @@ json candidate_json(const convention_candidate& c, const std::vector<printed_ent
   json entries = json::array();
   for (std::size_t k = 0; k < printed.size(); ++k) {
     entries.push_back({{"row", printed[k].row}, {"column", printed[k].column},
-                       {"printed", printed[k].round_off ? "round-off" : simpson::to_string(printed[k].value, 3)},
+                       {"printed", printed[k].round_off ? "round-off" : simpson::to_string(printed[k].value, printed[k].digits)},
                        {"computed", simpson::to_string(c.entries[k].computed, 4)},
                        {"residual", simpson::to_string(c.entries[k].residual, 3)},
                        {"reproduced", c.entries[k].reproduced}});
@@ -261,9 +266,11 @@ json candidate_json(const convention_candidate& c, const std::vector<printed_ent
 claim_result check_table_values(const run_context& ctx) {
   const std::array<printed_table_row, 8> printed = printed_table(ctx);
   std::array<std::array<double, 3>, 8> published{};
+  std::array<std::array<int, 3>, 8> digits{};
   std::array<std::string, 8> orders;
   for (std::size_t k = 0; k < printed.size(); ++k) {
     published[k] = printed[k].values;
+    digits[k] = printed[k].digits;
     orders[k] = printed[k].order;
   }
   bool orders_match = false, conservation = false, values = false;
@@ -271,7 +278,7 @@ claim_result check_table_values(const run_context& ctx) {
   evidence["numeric"] = table_evidence(orders_match, conservation, values, printed);
   evidence["numeric"]["also_tried"] = table_also_tried();
   // The convention search: every convention Section 8 states or leaves implicit, enumerated and fitted.
-  const std::vector<printed_entry> entries = table1_printed(published, orders);
+  const std::vector<printed_entry> entries = table1_printed(published, orders, &digits);
   const convention_search_result search = search_table1(entries);
   json tried = json::array();
   for (std::size_t k = 0; k < search.tried.size() && k < 12; ++k) {
@@ -565,6 +572,7 @@ printed_table1 read_table1(const paper_reading& paper) {
   const auto rows = detail::printed_table(ctx);
   for (std::size_t k = 0; k < rows.size(); ++k) {
     t.values[k] = rows[k].values;
+    t.digits[k] = rows[k].digits;
     t.orders[k] = rows[k].order;
   }
   return t;

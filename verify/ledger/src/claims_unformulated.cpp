@@ -10,6 +10,7 @@
 #include <simpson/internal_node.hpp>
 #include <simpson/three_term_scheme.hpp>
 
+#include <cctype>
 #include <map>
 
 namespace simpson::verify::detail {
@@ -75,8 +76,14 @@ bool internal_equation_linear(int k, json& evidence) {
 claim_result check_abstract_explicit(const run_context& ctx) {
   const quoted_sentence said = abstract_sentence(ctx);
   const std::string stated = said.containing("qualities", {{"implicit", "implicit"}, {"explicit", "explicit"}});
-  const bool qualified = said.words("qualities").find("linear") != std::string::npos ||
-                         said.words("qualities").find("harmonic") != std::string::npos;
+  // Qualified when the words restrict "explicit" to linear problems or the harmonic oscillator
+  // ("linear" as a word: "nonlinear" is the opposite).
+  const std::string words = said.words("qualities");
+  bool linear_word = false;
+  for (std::size_t at = words.find("linear"); at != std::string::npos; at = words.find("linear", at + 1)) {
+    linear_word = linear_word || at == 0 || std::isalpha(static_cast<unsigned char>(words[at - 1])) == 0;
+  }
+  const bool qualified = linear_word || words.find("harmonic") != std::string::npos;
   json cases = json::array();
   const bool linear_case = internal_equation_linear(2, cases);
   bool every_case_linear = true;

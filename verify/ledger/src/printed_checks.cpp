@@ -7,7 +7,6 @@
 #include <simpson/verify/quoted_words.hpp>
 
 #include <algorithm>
-#include <cctype>
 #include <chrono>
 
 namespace simpson::verify {
@@ -178,19 +177,6 @@ namespace {
 using detail::formula_claim_table;
 using detail::printed_outcome;
 
-/// TeX with its runs of white space folded to one space, for reports.
-std::string folded(const std::string& tex) {
-  std::string out;
-  for (const char c : tex) {
-    const bool space = std::isspace(static_cast<unsigned char>(c)) != 0;
-    if (space && (out.empty() || out.back() == ' ')) continue;
-    out += space ? ' ' : c;
-  }
-  while (!out.empty() && out.back() == ' ') out.pop_back();
-  while (!out.empty() && out.front() == ' ') out.erase(out.begin());
-  return out;
-}
-
 const formula_claim_table& formula_claims() {
   static const formula_claim_table claims = [] {
     formula_claim_table t;
@@ -309,7 +295,7 @@ claim_result check_claim(const claim& c, const run_context& ctx) {
     const printed_formula& f = reading.at(name);
     json parsed = json::array();
     for (const GiNaC::ex& side : f.sides) parsed.push_back(detail::text_of(side));
-    printed.push_back({{"label", f.source.locator}, {"line", f.source.line}, {"tex", folded(f.tex)},
+    printed.push_back({{"label", f.source.locator}, {"line", f.source.line}, {"tex", folded_space(f.tex)},
                        {"parsed", parsed}});
   }
   result.printed = {{"source", reading.origin}, {"formulas", printed}};

@@ -14,7 +14,6 @@ std::string lower(std::string s) {
   return s;
 }
 
-
 /// "three", "third", "3" → 3; -1 when the word is none of them.
 int number_word(const std::string& word) {
   static const std::map<std::string, int> words = {

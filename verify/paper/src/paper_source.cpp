@@ -5,6 +5,7 @@
 #include <simpson/verify/sha256.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -12,10 +13,6 @@
 
 namespace simpson::verify {
 namespace {
-
-int line_of(const std::string& text, std::size_t offset) {
-  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(offset), '\n'));
-}
 
 /// The math of the display that starts at or before `from` and ends at the next display end.
 tex_display display_from(const paper_source& paper, std::size_t from, const std::string& locator) {
@@ -29,21 +26,37 @@ tex_display display_from(const paper_source& paper, std::size_t from, const std:
   std::replace(tex.begin(), tex.end(), '\n', ' ');
   std::size_t first = from;
   while (first < end && std::isspace(static_cast<unsigned char>(paper.text[first]))) ++first;
-  return {locator, line_of(paper.text, first), tex};
+  return {locator, line_at(paper.text, first), tex};
 }
 
-/// The first place at or after `from` where `needle` occurs, white space ignored on both sides
-/// (the source breaks lines where it likes); npos when none.
-std::size_t find_loose(const std::string& text, const std::string& needle, std::size_t from = 0) {
+std::size_t anchor_position(const paper_source& paper, const std::string& anchor) {
+  const auto found = find_ignoring_space(paper.text, anchor);
+  if (!found) {
+    throw std::invalid_argument("paper '" + paper.origin + "': the anchor '" + anchor + "' the ledger needs is not there");
+  }
+  return found->first;
+}
+
+bool is_dollar(const std::string& text, std::size_t k) { return text[k] == '$' && (k == 0 || text[k - 1] != '\\'); }
+
+}  // namespace
+
+std::optional<std::pair<std::size_t, std::size_t>> find_ignoring_space(const std::string& text, const std::string& needle,
+                                                                       std::size_t from, bool whole_word, std::size_t within) {
+  const auto space = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
   std::string key;
   for (const char c : needle) {
-    if (!std::isspace(static_cast<unsigned char>(c))) key += c;
+    if (!space(c)) key += c;
   }
-  if (key.empty()) return std::string::npos;
-  for (std::size_t start = text.find(key[0], from); start != std::string::npos; start = text.find(key[0], start + 1)) {
+  if (key.empty()) return std::nullopt;
+  const std::size_t last = within == std::string::npos ? text.size() : std::min(text.size(), from + within);
+  const bool word = whole_word && std::isalnum(static_cast<unsigned char>(key.front())) != 0;
+  for (std::size_t start = text.find(key.front(), from); start != std::string::npos && start <= last;
+       start = text.find(key.front(), start + 1)) {
+    if (word && start > 0 && std::isalnum(static_cast<unsigned char>(text[start - 1])) != 0) continue;  // mid-word
     std::size_t t = start, k = 0;
     while (k < key.size() && t < text.size()) {
-      if (std::isspace(static_cast<unsigned char>(text[t]))) {
+      if (space(text[t])) {
         ++t;
       } else if (text[t] == key[k]) {
         ++t;
@@ -52,22 +65,27 @@ std::size_t find_loose(const std::string& text, const std::string& needle, std::
         break;
       }
     }
-    if (k == key.size()) return start;
+    if (k == key.size()) return std::make_pair(start, t);
   }
-  return std::string::npos;
+  return std::nullopt;
 }
 
-std::size_t anchor_position(const paper_source& paper, const std::string& anchor) {
-  const std::size_t at = find_loose(paper.text, anchor);
-  if (at == std::string::npos) {
-    throw std::invalid_argument("paper '" + paper.origin + "': the anchor '" + anchor + "' the ledger needs is not there");
-  }
-  return at;
+int line_at(const std::string& text, std::size_t offset) {
+  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(offset), '\n'));
 }
 
-bool is_dollar(const std::string& text, std::size_t k) { return text[k] == '$' && (k == 0 || text[k - 1] != '\\'); }
-
-}  // namespace
+std::string folded_space(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (std::isspace(static_cast<unsigned char>(c)) != 0) {
+      if (!out.empty() && out.back() != ' ') out += ' ';
+    } else {
+      out += c;
+    }
+  }
+  while (!out.empty() && out.back() == ' ') out.pop_back();
+  return out;
+}
 
 std::string without_comments(const std::string& tex) {
   std::string out = tex;
@@ -161,7 +179,7 @@ tex_display find_inline(const paper_source& paper, const std::string& anchor) {
   }
   std::string tex = paper.text.substr(open + 1, close - open - 1);
   std::replace(tex.begin(), tex.end(), '\n', ' ');
-  return {"inline formula at '" + anchor + "'", line_of(paper.text, open), tex};
+  return {"inline formula at '" + anchor + "'", line_at(paper.text, open), tex};
 }
 
 }  // namespace simpson::verify

@@ -5,6 +5,7 @@
 // exact solution). Under the stated ones it is run_table_experiment.
 
 #include <simpson/verify/convention_search.hpp>
+#include <simpson/verify/paper_table.hpp>
 
 #include <array>
 #include <string>
@@ -12,9 +13,23 @@
 
 namespace simpson::verify {
 
+/// One run of a scheme under the conventions: its errors, the H_0 they are measured against (1 for
+/// relative energies) and the number of steps.
+struct table1_run_errors {
+  table_errors errors{0, 0, 0, 0};
+  double H0 = 0;
+  long long steps = 0;
+};
+table1_run_errors table1_run(bool simpson_scheme, long long N, const convention_choice& choice, const parameter_values& values);
+
+/// The stated conventions (the `stated` option of each of table1_discrete_conventions()).
+convention_choice table1_stated_conventions();
+
 /// Table 1's entries in the order of published_rows() and published_meshes, from the values and the
-/// order column as printed ("exact" rows are round-off entries), three significant digits.
-std::vector<printed_entry> table1_printed(const std::array<std::array<double, 3>, 8>& values, const std::array<std::string, 8>& orders);
+/// order column as printed ("exact" rows are round-off entries), with the significant digits each
+/// was printed with (three for each when not given).
+std::vector<printed_entry> table1_printed(const std::array<std::array<double, 3>, 8>& values, const std::array<std::string, 8>& orders,
+                                          const std::array<std::array<int, 3>, 8>* digits = nullptr);
 
 std::vector<discrete_convention> table1_discrete_conventions();
 std::vector<continuous_parameter> table1_continuous_parameters();

@@ -19,6 +19,7 @@ struct table1_settings {
   /// unset, the transcription of the embedded text, published_rows().
   std::optional<std::array<std::array<double, 3>, 8>> printed_values;
   std::optional<std::array<std::string, 8>> printed_orders;
+  std::optional<std::array<std::array<int, 3>, 8>> printed_digits;
 };
 
 section_result run_table1(const table1_settings& s);

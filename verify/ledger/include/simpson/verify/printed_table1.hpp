@@ -11,6 +11,7 @@ namespace simpson::verify {
 
 struct printed_table1 {
   std::array<std::array<double, 3>, 8> values{};
+  std::array<std::array<int, 3>, 8> digits{};  // significant digits of each value as printed
   std::array<std::string, 8> orders;
 };
 

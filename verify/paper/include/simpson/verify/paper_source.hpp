@@ -4,7 +4,10 @@
 // when unlabelled, by a stable anchor in the prose just before them. Comment lines (%, including
 // the older Φ₃ the source keeps in comments) are not part of the text.
 
+#include <cstddef>
+#include <optional>
 #include <string>
+#include <utility>
 
 namespace simpson::verify {
 
@@ -40,6 +43,20 @@ tex_display find_anchored(const paper_source& paper, const std::string& anchor);
 /// after it. White space in the anchor matches any white space in the text. Throws
 /// std::invalid_argument when the anchor or the formula is missing.
 tex_display find_inline(const paper_source& paper, const std::string& anchor);
+
+/// Where `needle` occurs in `text` at or after `from`, white space ignored on both sides (the source
+/// breaks lines where it likes): [begin, end) of the match, or none. With `whole_word`, a needle that
+/// starts with a letter or a digit does not match inside a word ("is" not in "discrete"); with
+/// `within`, the match starts no later than from + within.
+std::optional<std::pair<std::size_t, std::size_t>> find_ignoring_space(const std::string& text, const std::string& needle,
+                                                                       std::size_t from = 0, bool whole_word = false,
+                                                                       std::size_t within = std::string::npos);
+
+/// The 1-based line of `offset` in `text`.
+int line_at(const std::string& text, std::size_t offset);
+
+/// Runs of white space folded to one space, none at the ends (TeX and prose for reports).
+std::string folded_space(const std::string& text);
 
 /// The source with every comment (from an unescaped % to the end of its line) blanked out.
 std::string without_comments(const std::string& tex);
