@@ -58,6 +58,11 @@ check "unknown precision" 2 --scene quick --precisions quad --out "$work/none3"
 check "mpfr digits" 2 --scene quick --precisions mpfr:5 --out "$work/none4"
 check "bad seed" 2 --scene quick --seed -4 --out "$work/none5"
 check "bad samples" 2 --scene quick --samples 0 --out "$work/none6"
+check "bad enclosure budget" 2 --scene quick --enclosure-budget 39 --out "$work/none6b"
+grep -q -- "--enclosure-budget '39'" "$work/err" || { echo "FAIL bad enclosure budget: not named: $(cat "$work/err")"; failures=$((failures + 1)); }
+check "enclosure budget" 0 --scene quick --claims phi3-det --enclosure-budget 80 --out "$work/budget"
+grep -q '"enclosure_budget_digits": 80' "$work/budget/report.json" || { echo "FAIL enclosure budget: not in report.json"; failures=$((failures + 1)); }
+grep -q '"decision": "holds"' "$work/budget/report.json" || { echo "FAIL enclosure budget: no enclosure decision"; failures=$((failures + 1)); }
 echo '{"name": "x", "claims": [,]}' >"$work/malformed.json"
 check "malformed scene" 2 --scene "$work/malformed.json" --out "$work/none7"
 grep -q 'line 1, column' "$work/err" || { echo "FAIL malformed scene: no line and column"; failures=$((failures + 1)); }

@@ -36,6 +36,53 @@ TEST(NumericRecheck, PassesARoundOffResidualThatFallsWithPrecision) {
   EXPECT_TRUE(e["residuals_fall_with_precision"].get<bool>());
 }
 
+TEST(NumericRecheck, AnEnclosureDecidesAnIdentityAtFortyDigits) {
+  bool within = false;
+  const json e = numeric_recheck(ladder, "test", [](auto tag, const sample& s) {
+    using Real = typename decltype(tag)::type;
+    const Real x(s.q);
+    return residual_and_bound<Real>{Real(x / 3 * 3 - x), Real(4 * eps<Real>() * abs(x))};
+  }, within);
+  EXPECT_TRUE(within) << e.dump(2);
+  EXPECT_EQ(e["enclosure"]["decision"], "holds");
+  EXPECT_EQ(e["enclosure"]["decided_at_digits"], 40);
+}
+
+TEST(NumericRecheck, AnEnclosureRefutesAnErrorFarBelowDoubleRoundOff) {
+  // A relative error of 1e-35: invisible to double, float128 and the ladder's bounds; the 40-digit
+  // enclosure excludes 0.
+  bool within = true;
+  const json e = numeric_recheck(ladder, "test", [](auto tag, const sample& s) {
+    using Real = typename decltype(tag)::type;
+    const Real x(s.q);
+    const Real wrong = x * (1 + Real(1) / Real(boost::multiprecision::cpp_int("100000000000000000000000000000000000")));
+    return residual_and_bound<Real>{Real(wrong - x), Real(4 * eps<Real>() * abs(x))};
+  }, within);
+  EXPECT_FALSE(within) << e.dump(2);
+  EXPECT_EQ(e["enclosure"]["decision"], "fails");
+  EXPECT_TRUE(e["enclosure"].contains("refuted"));
+  EXPECT_TRUE(e["ladder"][0]["within_bound"].get<bool>()) << "double cannot see it: the ladder alone would pass it";
+}
+
+TEST(NumericRecheck, AnUndecidedEnclosureDoublesItsDigitsAndStopsAtTheBudget) {
+  // |x/3| ≤ |x|/3 + 1e-60 |x|: the two ends overlap below 60 digits; 80 digits decide.
+  const auto check = [](auto tag, const sample& s) {
+    using Real = typename decltype(tag)::type;
+    const Real x(s.q);
+    const Real margin = abs(x) / Real(boost::multiprecision::cpp_int("1000000000000000000000000000000000000000000000000000000000000"));
+    const Real round_off = is_interval_v<Real> ? Real(0) : Real(8 * eps<Real>() * abs(x));  // an interval's is inside it
+    return residual_and_bound<Real>{Real(x / 3), Real(abs(x) / 3 + margin + round_off), false};
+  };
+  run_context wide = ladder;
+  wide.precisions = {precision::parse("mpfr:100")};  // (its own round-off term keeps the ladder consistent)
+  bool within = false;
+  const json e = numeric_recheck(wide, "test", check, within);
+  EXPECT_TRUE(within) << e.dump(2);
+  EXPECT_EQ(e["enclosure"]["decided_at_digits"], 80);
+  wide.enclosure_budget_digits = 60;  // 40 is undecided and 80 is over the budget
+  EXPECT_THROW(numeric_recheck(wide, "test", check, within), enclosure_undecided);
+}
+
 TEST(NumericRecheck, FlagsADoubleLeakedIntoGenericCode) {
   // The residual is computed through a double: in mpfr:60 it is stuck near 1e-17, far above the bound.
   bool within = true;
@@ -46,6 +93,7 @@ TEST(NumericRecheck, FlagsADoubleLeakedIntoGenericCode) {
     return residual_and_bound<Real>{Real(third * 3 - x), Real(4 * eps<Real>() * abs(x))};
   }, within);
   EXPECT_FALSE(within);
+  EXPECT_EQ(e["enclosure"]["decision"], "fails") << "the enclosure sees the leak too";
   ASSERT_TRUE(e.contains("diagnosis")) << e.dump(2);
   EXPECT_NE(e["diagnosis"].get<std::string>().find("leaked"), std::string::npos);
 }

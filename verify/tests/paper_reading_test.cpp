@@ -1,6 +1,7 @@
 // The paper as printed: its formulas are read from the LaTeX source and proved against the derived
 // ones in GiNaC; a coefficient changed in the text changes the matching verdict.
 
+#include <simpson/verify/enclosure_decision.hpp>
 #include <simpson/verify/ledger.hpp>
 #include <simpson/verify/paper_reading.hpp>
 #include <simpson/verify/printed_checks.hpp>
@@ -154,6 +155,19 @@ TEST(PaperReading, KernelsThatDisagreeOnTheDerivedStatementAreItsOwnVerdict) {
   EXPECT_EQ(r.outcome, verdict::kernels_disagree);
   EXPECT_NE(r.note.find("phi3-det"), std::string::npos) << r.note;
   EXPECT_EQ(to_string(r.outcome), "kernels-disagree");
+}
+
+TEST(PaperReading, AClaimNoEnclosureDecidesIsUndecidedWithItsEnclosureNamed) {
+  const paper_reading paper = read_paper(embedded_paper());
+  claim wide = find_claim("phi3-det");
+  wide.check = [](const run_context&) -> claim_result {
+    throw enclosure_undecided("phi3-det: the residual's enclosure 0 ± 3e-20 decides nothing at 640 digits, the run's budget");
+  };
+  const claim_result r = check_claim(wide, run_context{{precision::parse("double")}, 20230830, 2, &paper});
+  EXPECT_EQ(r.outcome, verdict::undecided);
+  EXPECT_EQ(to_string(r.outcome), "undecided");
+  EXPECT_NE(r.evidence.value("undecided", std::string()).find("0 ± 3e-20"), std::string::npos) << r.evidence.dump();
+  EXPECT_NE(r.note.find("--enclosure-budget"), std::string::npos) << r.note;
 }
 
 TEST(PaperReading, BadSourcesAreNamedWithLabelLineAndToken) {

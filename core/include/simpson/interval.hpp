@@ -5,6 +5,8 @@
 // enclosure proves it, proves its negation, or says that the precision is not enough. Pulls in
 // MPFI: include it only where intervals are used (link simpson::interval).
 
+#include <simpson/scalar_traits.hpp>
+
 #include <boost/multiprecision/mpfi.hpp>
 
 #include <algorithm>
@@ -14,6 +16,17 @@
 namespace simpson {
 
 using interval = boost::multiprecision::mpfi_float;
+
+template <>
+inline constexpr bool is_interval_v<interval> = true;
+
+/// The unit round-off at the current interval digits, 2^(1 − bits): Boost's numeric_limits gives 0
+/// for a precision chosen at run time.
+template <>
+inline interval eps<interval>() {
+  const interval one(1);
+  return ldexp(one, 1 - static_cast<int>(mpfi_get_prec(one.backend().data())));
+}
 
 /// The decimal digits of the intervals created in a scope (Boost's default precision), restored after it.
 class scoped_interval_digits {

@@ -47,7 +47,12 @@ void require_positive_finite(const char* where, const char* name, const Real& v)
 /// Throws std::domain_error when a denominator of a formula vanishes (e.g. 1 - ω²h²/8 at ωh = 2√2).
 template <class Real>
 void require_nonzero(const char* where, const char* what, const Real& v) {
-  if constexpr (is_ordered_number_v<Real>) {
+  if constexpr (is_interval_v<Real>) {
+    // An interval's comparison with 0 is ambiguous when it holds 0 (Boost throws): ask for a sign.
+    if (!(lower(v) > 0 || upper(v) < 0)) {
+      throw std::domain_error(std::string(where) + ": " + what + " may be zero (its enclosure holds 0); the formula may be singular there");
+    }
+  } else if constexpr (is_ordered_number_v<Real>) {
     if (v == 0) {
       throw std::domain_error(std::string(where) + ": " + what + " is zero; the formula is singular there");
     }

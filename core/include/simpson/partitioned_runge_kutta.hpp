@@ -25,15 +25,19 @@ struct butcher_tableau {
 
 namespace detail {
 /// Gaussian elimination on the leading n × n block of M (any row-indexable storage: vectors, or
-/// arrays for small systems). Pivot: the largest |entry| for ordered numbers, the first non-zero for
-/// symbolic scalars (exact, so any non-zero pivot is as good). Leaves the solution in x[0..n).
+/// arrays for small systems). Pivot: the largest |entry| for ordered numbers, the largest certainly
+/// non-zero one for intervals, the first non-zero for symbolic scalars (exact, so any non-zero pivot is as good). Leaves the solution in x[0..n).
 /// Throws std::domain_error when M is singular.
 template <class Real, class Matrix, class Vector>
 void eliminate(Matrix& M, Vector& r, Vector& x, std::size_t n) {
   for (std::size_t k = 0; k < n; ++k) {
     std::size_t pivot = n;
     for (std::size_t i = k; i < n; ++i) {
-      if constexpr (detail::is_ordered_number_v<Real>) {
+      if constexpr (is_interval_v<Real>) {
+        // Intervals: the entry of largest mignitude, certainly non-zero (an ambiguous comparison throws).
+        const auto smallest = [](const Real& v) { return lower(Real(abs(v))); };
+        if (smallest(M[i][k]) > 0 && (pivot == n || smallest(M[i][k]) > smallest(M[pivot][k]))) pivot = i;
+      } else if constexpr (detail::is_ordered_number_v<Real>) {
         using std::abs;
         if (M[i][k] != 0 && (pivot == n || abs(M[i][k]) > abs(M[pivot][k]))) pivot = i;
       } else {

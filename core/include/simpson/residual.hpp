@@ -5,12 +5,15 @@
 
 namespace simpson {
 
-/// `residual` is what the identity says is zero; `bound` is k·eps·condition in the scalar it was
-/// computed in (zero for exact scalars, where the residual must vanish).
+/// With `zero_claimed` (an identity), `residual` is what the identity says is zero and `bound` is
+/// k·eps·condition in the scalar it was computed in (zero for exact scalars, where the residual must
+/// vanish). Without it, the claim is |residual| ≤ bound: `bound` is then a bound of the mathematics
+/// (a series' tail), plus round-off in floating scalars only.
 template <class Real>
 struct residual_and_bound {
   Real residual;
   Real bound;
+  bool zero_claimed = true;
 };
 
 }  // namespace simpson

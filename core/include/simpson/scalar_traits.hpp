@@ -20,6 +20,11 @@ struct precision_tag {
 template <class Real>
 inline constexpr bool is_exact_v = std::numeric_limits<Real>::is_exact;
 
+/// True for an interval scalar (interval.hpp specialises it): its arithmetic rounds outward, so
+/// round-off is inside the value and needs no bound of its own.
+template <class Real>
+inline constexpr bool is_interval_v = false;
+
 /// Unit round-off of Real at the current working precision; zero for exact types.
 /// For `mpfr` it follows the digits set by the innermost scoped_mpfr_digits.
 template <class Real>

@@ -93,6 +93,11 @@ testcase claim_case(const claim_outcome& o) {
     t.type = "internal-error";
     t.message = "internal error (a bug in the harness): " + evidence["error"].get<std::string>();
     t.detail = summary;
+  } else if (o.result.outcome == verdict::undecided) {
+    t.outcome = testcase::result::failure;
+    t.type = "undecided";
+    t.message = o.result.evidence.value("undecided", std::string("no enclosure decided the claim"));
+    t.detail = summary;
   } else if (o.result.outcome == verdict::text_changed) {
     t.outcome = testcase::result::failure;
     t.type = "text-changed";

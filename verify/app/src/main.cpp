@@ -116,7 +116,7 @@ int compare_report_directories(const std::string& old_dir, const std::string& ne
 int main(int argc, char** argv) {
   CLI::App app{"simpson-verify: proves, rechecks and reports every claim of the symplectic Simpson paper"};
   app.set_version_flag("--version", version_line());
-  std::string scene_name = "paper", out_dir, seed_text, samples_text, paper_file, timing_runs_text;
+  std::string scene_name = "paper", out_dir, seed_text, samples_text, enclosure_budget_text, paper_file, timing_runs_text;
   std::vector<std::string> claim_ids, section_list, precision_names;
   bool want_claims = false, want_scenes = false, want_precisions = false, allow_expensive = false, long_run = false,
        quiet = false, no_timing = false, certify = false;
@@ -151,6 +151,10 @@ int main(int argc, char** argv) {
       ->delimiter(',');
   app.add_option("--seed", seed_text, "seed of the random samples (default: the scene's, printed in the report)")->type_name("UINT");
   app.add_option("--samples", samples_text, "random samples per numeric recheck and precision, 1..10000")->type_name("UINT");
+  app.add_option("--enclosure-budget", enclosure_budget_text,
+                 "most decimal digits the interval enclosure of a numeric claim may rise to (from 40, doubling) before the "
+                 "claim is undecided, 40..20480 (default 640)")
+      ->type_name("DIGITS");
   app.add_flag("--allow-expensive", allow_expensive,
                fmt::format("run a scene whose estimated cost exceeds the budget ({:.3g} double-step units, about {})", default_cost_budget, seconds_text(default_cost_budget)));
   app.add_flag("--certify", certify,
@@ -214,6 +218,10 @@ int main(int argc, char** argv) {
     if (!samples_text.empty()) {
       s.samples = static_cast<unsigned>(parse_count("--samples", samples_text, 1, 10000));
       s.overrides["samples"] = s.samples;
+    }
+    if (!enclosure_budget_text.empty()) {
+      s.enclosure_budget_digits = static_cast<unsigned>(parse_count("--enclosure-budget", enclosure_budget_text, 40, 20480));
+      s.overrides["enclosure_budget_digits"] = s.enclosure_budget_digits;
     }
     if (!timing_runs_text.empty() && no_timing) throw std::invalid_argument("--timing-runs and --no-timing exclude each other");
     if (!timing_runs_text.empty()) {

@@ -35,8 +35,24 @@ std::vector<std::string> precision_names(const std::vector<precision>& precision
 
 namespace {
 
+/// "Numeric recheck decided by interval enclosures …": which enclosure decided the claim, at which
+/// digits; empty when the claim has no numeric recheck.
+std::string enclosure_markdown(const json& evidence) {
+  if (!evidence.contains("numeric") || !evidence["numeric"].is_object()) return "";
+  const json& numeric = evidence["numeric"];
+  if (!numeric.contains("enclosure")) {
+    return numeric.contains("decided_by") ? "Numeric recheck decided by " + markdown_escaped(numeric["decided_by"].get<std::string>()) + ".\n\n" : "";
+  }
+  const json& e = numeric["enclosure"];
+  return fmt::format("Numeric recheck decided by interval enclosures (MPFI, outward rounding from the exact inputs): **{}** at {} "
+                     "samples, {} digits (from {}, budget {}); widest: {}.\n\n",
+                     e["decision"].get<std::string>(), e["samples"].get<unsigned>(), e["decided_at_digits"].get<unsigned>(),
+                     e["first_digits"].get<unsigned>(), e["budget_digits"].get<unsigned>(),
+                     markdown_escaped(e["widest_enclosure"].get<std::string>()));
+}
+
 struct verdict_counts {
-  std::size_t held = 0, errata = 0, failed = 0, disagreed = 0, text_changed = 0, machine_read = 0, quoted = 0, coq_exported = 0,
+  std::size_t held = 0, errata = 0, failed = 0, disagreed = 0, text_changed = 0, undecided = 0, machine_read = 0, quoted = 0, coq_exported = 0,
               coq_checked = 0;
   std::vector<std::string> unexpected;
 };
@@ -49,6 +65,7 @@ verdict_counts count_verdicts(const run_record& r) {
     c.failed += o.result.outcome == verdict::fails;
     c.disagreed += o.result.outcome == verdict::kernels_disagree;
     c.text_changed += o.result.outcome == verdict::text_changed;
+    c.undecided += o.result.outcome == verdict::undecided;
     c.machine_read += !o.result.printed.is_null();
     c.quoted += o.result.printed.is_null() && !o.result.quoted.empty();
     c.coq_exported += !certificate_documents(o).empty();
@@ -62,9 +79,10 @@ verdict_counts count_verdicts(const run_record& r) {
 
 std::string summary_line(const run_record& r) {
   const verdict_counts c = count_verdicts(r);
-  return fmt::format("{} {}: {} held, {} errata, {} failed{}{}; {}", r.outcomes.size(), r.outcomes.size() == 1 ? "claim" : "claims",
+  return fmt::format("{} {}: {} held, {} errata, {} failed{}{}{}; {}", r.outcomes.size(), r.outcomes.size() == 1 ? "claim" : "claims",
                      c.held, c.errata, c.failed, c.disagreed ? fmt::format(", {} with the kernels in disagreement", c.disagreed) : "",
                      c.text_changed ? fmt::format(", {} whose quoted words changed (text-changed)", c.text_changed) : "",
+                     c.undecided ? fmt::format(", {} undecided within the enclosure budget", c.undecided) : "",
                      c.unexpected.empty() ? std::string("all verdicts as expected")
                                           : fmt::format("{} not as expected ({})", c.unexpected.size(), join(c.unexpected, ", ")));
 }
@@ -109,7 +127,7 @@ json summary_json(const run_record& r) {
   return {{"line", summary_line(r)},     {"expectation", expectation_line(r)}, {"claims", r.outcomes.size()},
           {"held", c.held},              {"errata", c.errata},
           {"failed", c.failed},          {"kernels_disagree", c.disagreed},
-          {"text_changed", c.text_changed},
+          {"text_changed", c.text_changed}, {"undecided", c.undecided},
           {"machine_read", c.machine_read}, {"quoted", c.quoted}, {"typed", r.outcomes.size() - c.machine_read - c.quoted},
           {"coq_exported", c.coq_exported}, {"coq_checked", c.coq_checked},
           {"unexpected", c.unexpected}};
@@ -191,6 +209,7 @@ json report_json(const run_record& r, const plot_outcome& plots) {
               {"description", r.run_scene.description},
               {"seed", r.run_scene.seed},
               {"samples", r.run_scene.samples},
+              {"enclosure_budget_digits", r.run_scene.enclosure_budget_digits},
               {"precisions", precision_names(r.run_scene.precisions)},
               {"paper", r.paper_origin},
               {"overrides", r.run_scene.overrides},
@@ -374,12 +393,14 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
   md += r.run_scene.timing ? "Run times: [timing.md](timing.md). " : "Not timed (--no-timing). ";
   md += "The tool's version and commit, the machine, the command line and the SHA-256 of the scene and the paper are in "
         "report.json (`environment`).\n\n";
-  md += fmt::format("Seed {} · {} random samples per numeric recheck and precision · precisions: {}\n\n", r.run_scene.seed,
-                    r.run_scene.samples, join(precision_names(r.run_scene.precisions), ", "));
+  md += fmt::format("Seed {} · {} random samples per numeric recheck and precision · precisions: {} · interval enclosures from "
+                    "40 digits, doubled up to {}\n\n", r.run_scene.seed,
+                    r.run_scene.samples, join(precision_names(r.run_scene.precisions), ", "), r.run_scene.enclosure_budget_digits);
   md += "Paper: F. Dubois, J. A. Rojas-Quintero, *A variational symplectic scheme based on Simpson's quadrature*, GSI 2023. "
         "Verdicts: **holds** (true as printed), **erratum** (false as printed; a corrected statement is proved), **fails** "
         "(false, no correction found), **kernels-disagree** (our kernel and GiNaC reached different conclusions on the derived statement: a bug, never expected), "
-        "**text-changed** (the sentence a prose claim quotes is gone from the paper, or its words no longer parse: never expected).\n\n";
+        "**text-changed** (the sentence a prose claim quotes is gone from the paper, or its words no longer parse: never expected), "
+        "**undecided** (no interval enclosure proved the statement or its negation within the run's digits: never expected).\n\n";
 
   md += "## Claims\n\nStatement: *read* when its formulas are read from the paper's source and proved in both kernels "
         "(our kernel and GiNaC), *quoted* when its prose sentence is quoted from the source and its words parsed, *typed* when "
@@ -406,7 +427,7 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
   bool any_failure = false;
   for (const claim_outcome& o : r.outcomes) {
     const bool failed = o.result.outcome == verdict::fails || o.result.outcome == verdict::kernels_disagree ||
-                        o.result.outcome == verdict::text_changed;
+                        o.result.outcome == verdict::text_changed || o.result.outcome == verdict::undecided;
     if (!failed && o.result.outcome == o.expected) continue;  // also a holds or erratum not as expected
     any_failure = true;
     const std::string why = o.result.evidence.contains("error")
@@ -476,6 +497,7 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
     if (o.result.printed.is_null() && o.result.quoted.empty()) md += "Statement typed into the ledger: it quotes no words of the paper.\n\n";
     if (!o.result.correction.empty()) md += "Corrected: " + markdown_escaped(o.result.correction) + "\n\n";
     if (!o.result.note.empty()) md += "Note: " + markdown_escaped(o.result.note) + "\n\n";
+    md += enclosure_markdown(o.result.evidence);
     md += "```json\n" + o.result.evidence.dump(2) + "\n```\n\n";
   }
   return md;

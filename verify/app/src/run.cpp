@@ -31,7 +31,8 @@ run_record run(const scene& s, const paper_reading& paper, const progress_callba
   run_record r;
   r.run_scene = s;
   r.paper_origin = paper.origin;
-  const run_context ctx{s.precisions, s.seed, s.samples, &paper};
+  run_context ctx{s.precisions, s.seed, s.samples, &paper};
+  ctx.enclosure_budget_digits = s.enclosure_budget_digits;
   for (std::size_t k = 0; k < s.claims.size(); ++k) {
     throw_if_interrupted();
     const claim& c = find_claim(s.claims[k]);

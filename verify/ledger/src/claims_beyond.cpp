@@ -196,7 +196,7 @@ claim_result check_lobatto_equivalence(const run_context& ctx) {
   bool over_a_run = false;
   evidence["numeric_run"] = lobatto_run_gaps(ctx, over_a_run);
   bool within = false;
-  evidence["numeric"] = numeric_recheck<false>(
+  evidence["numeric"] = numeric_recheck<false, false>(
       ctx, "nonlinear-lobatto-equivalence",
       [](auto tag, const sample& s) {
         using Real = typename decltype(tag)::type;
@@ -268,7 +268,7 @@ claim_result check_nonlinear_symplectic(const run_context& ctx) {
                          {"result", proved ? "det D = 1 for every V (in one degree of freedom D^T J D = J is det D = 1)"
                                            : "det D - 1 is not zero"}};
   bool within = false;
-  r.evidence["numeric"] = numeric_recheck<false>(
+  r.evidence["numeric"] = numeric_recheck<false, false>(
       ctx, "nonlinear-symplectic",
       [](auto tag, const sample& s) {
         using Real = typename decltype(tag)::type;

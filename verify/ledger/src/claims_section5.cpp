@@ -306,7 +306,9 @@ claim_result check_truncation_1440(const run_context& ctx) {
   const json numeric = numeric_recheck<false>(ctx, "truncation-1440", [&](auto tag, const sample& s) {
     using Real = typename decltype(tag)::type;
     using std::pow;
-    const Real theta_min = pow(Real(512 * 1440) * eps<Real>(), Real(1) / 6);
+    // Intervals take double's θ range: their enclosure must be narrower than the tail, which
+    // vanishes like θ^10, so a θ_min that fell with the digits would never decide.
+    const Real theta_min = pow(Real(512 * 1440) * (is_interval_v<Real> ? Real(eps<double>()) : eps<Real>()), Real(1) / 6);
     const Real theta = theta_min + (Real(1) / 2 - theta_min) * Real(s.omega * s.h / 2.7);
     const oscillator_parameters<Real> par{Real(s.m), Real(s.omega), Real(theta / Real(s.omega))};
     const phase_point<Real> y{Real(0), Real(s.q)};
@@ -325,11 +327,16 @@ claim_result check_truncation_1440(const run_context& ctx) {
     // Round-off: q_{j+-1} carry ~8 roundings of the amplitude A = |q| + |p|/(m omega); the second
     // difference divides them by h^2, the other terms by 1/omega^2: 64 eps A (4/h^2 + omega^2 (2 + x)).
     const Real amplitude = abs(y.q) + abs(y.p) / (par.m() * par.omega());
-    const Real round_off = 64 * eps<Real>() * amplitude * (4 / (par.h() * par.h()) + omega2 * (2 + x));
+    // (None for an interval: its round-off is inside its enclosure.)
+    const Real round_off = is_interval_v<Real> ? Real(0) : Real(64 * eps<Real>() * amplitude * (4 / (par.h() * par.h()) + omega2 * (2 + x)));
     const Real leading = abs(Real(omega2 * x * x * Real(boost::multiprecision::numerator(c4)) /
                                   Real(boost::multiprecision::denominator(c4)) * y.q));
-    decisive = decisive && 2 * (tail + round_off) < leading;
-    return residual_and_bound<Real>{Real(T - series_value), Real(tail + round_off)};
+    if constexpr (is_interval_v<Real>) {
+      decisive = decisive && upper(Real(2 * tail)) < lower(leading);
+    } else {
+      decisive = decisive && 2 * (tail + round_off) < leading;
+    }
+    return residual_and_bound<Real>{Real(T - series_value), Real(tail + round_off), false};
   }, within);
   json evidence;
   evidence["exact"] = exact;

@@ -1,4 +1,5 @@
 #include <simpson/verify/printed_checks.hpp>
+#include <simpson/verify/enclosure_decision.hpp>
 
 #include "coq_export.hpp"
 #include "printed_check_support.hpp"
@@ -256,6 +257,12 @@ claim_result checked_with_quotes(const claim& c, const run_context& ctx) {
   claim_result result;
   try {
     result = c.check(quoting);
+  } catch (const enclosure_undecided& e) {
+    result = claim_result{};
+    result.outcome = verdict::undecided;
+    result.evidence["undecided"] = e.what();
+    result.note = std::string("No enclosure decided this claim within the run's digits: ") + e.what() +
+                  ". Raise --enclosure-budget, or find why the enclosure is wide.";
   } catch (const text_changed& e) {
     result = claim_result{};
     result.outcome = verdict::text_changed;
@@ -271,7 +278,7 @@ claim_result checked_with_quotes(const claim& c, const run_context& ctx) {
 
 claim_result check_claim(const claim& c, const run_context& ctx) {
   claim_result result = checked_with_quotes(c, ctx);
-  if (result.outcome == verdict::text_changed) return result;
+  if (result.outcome == verdict::text_changed || result.outcome == verdict::undecided) return result;
   const auto it = formula_claims().find(c.id);
   if (it == formula_claims().end()) {
     const auto goals = detail::kernel_claim_goals().find(c.id);

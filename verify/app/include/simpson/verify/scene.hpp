@@ -35,6 +35,9 @@ struct scene {
   std::vector<std::string> claims;  // ids, in ledger order
   std::vector<precision> precisions;
   unsigned samples = default_samples;
+  /// The most decimal digits an interval enclosure of a numeric claim may rise to (from 40, doubling)
+  /// before the claim is undecided (--enclosure-budget).
+  unsigned enclosure_budget_digits = 640;
   std::uint64_t seed = default_seed;
   std::map<std::string, verdict> expected_overrides;
   experiment_settings experiments;

@@ -16,8 +16,9 @@ namespace simpson::verify {
 /// no correction found; kernels-disagree: the two exact kernels reached different conclusions on
 /// the derived statement (a bug in one of them, never expected); text-changed: the sentence a
 /// prose claim quotes is no longer in the paper, or its words no longer parse (never expected:
-/// the paper changed under the ledger).
-enum class verdict { holds, erratum, fails, kernels_disagree, text_changed };
+/// the paper changed under the ledger); undecided: an enclosure could neither prove the statement
+/// nor its negation within the run's precision budget (never expected: raise the budget).
+enum class verdict { holds, erratum, fails, kernels_disagree, text_changed, undecided };
 
 inline std::string to_string(verdict v) {
   switch (v) {
@@ -26,6 +27,7 @@ inline std::string to_string(verdict v) {
     case verdict::fails: return "fails";
     case verdict::kernels_disagree: return "kernels-disagree";
     case verdict::text_changed: return "text-changed";
+    case verdict::undecided: return "undecided";
   }
   return "?";
 }
@@ -44,6 +46,10 @@ struct run_context {
   /// Where a prose claim's check records the sentences it quotes (quoted_words.hpp); null when the
   /// check is run on its own.
   json* quotes = nullptr;
+  /// Decimal digits of the first interval evaluation of a numeric claim, and the most digits it
+  /// may rise to (doubling) before the claim is undecided.
+  unsigned enclosure_digits = 40;
+  unsigned enclosure_budget_digits = 640;
 };
 
 /// What a check found. `evidence` has one member per method ("exact", "numeric", ...).
