@@ -79,5 +79,21 @@ TEST(Interval, EnclosureTextShowsOnlyGuaranteedDigits) {
   EXPECT_EQ(enclosure_text(interval(real("-2e-50"), real("1e-50"))).rfind("0 ± 2e-50", 0), 0u) << enclosure_text(interval(real("-2e-50"), real("1e-50")));
 }
 
+TEST(Interval, EnclosureTextKeepsTheDigitsOfAPrecisionAboveTheDefault) {
+  // mpfr_float's default is 20 digits here: a midpoint computed there would swamp a 60-digit radius.
+  using real = boost::multiprecision::mpfr_float;
+  const unsigned saved = real::default_precision();
+  real::default_precision(20);
+  {
+    const scoped_interval_digits digits(60);
+    const std::string text = enclosure_text(interval(1) / 3);
+    const std::size_t pm = text.find(" ± ");
+    ASSERT_NE(pm, std::string::npos);
+    EXPECT_LT(real(text.substr(pm + std::string(" ± ").size())), real("1e-58")) << text;
+    EXPECT_EQ(text.rfind("3.333333333333333333333333333333333333333333333333333333333", 0), 0u) << text;
+  }
+  real::default_precision(saved);
+}
+
 }  // namespace
 }  // namespace simpson

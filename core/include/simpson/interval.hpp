@@ -53,9 +53,17 @@ inline bool encloses(const interval& x, const interval& value) { return lower(x)
 
 /// "1.4427e-14 ± 3e-31": the midpoint to the digits the radius leaves (one more), and the radius,
 /// plus the midpoint's own rounding, rounded up to one digit: the text is an enclosure of x. "0 ±
-/// 2e-50" when the interval holds 0 and no digit of the midpoint is guaranteed.
-inline std::string enclosure_text(const interval& x) {
+/// 2e-50" when the interval holds 0 and no digit of the midpoint is guaranteed. At most `max_digits`
+/// digits of the midpoint: fewer widen the radius by the rounding, so the text still encloses x.
+inline std::string enclosure_text(const interval& x, long max_digits = 60) {
   using real = boost::multiprecision::mpfr_float;
+  // The midpoint and radius in x's own precision and more: in fewer digits the midpoint's rounding
+  // would swamp the radius.
+  struct scoped_real_digits {
+    unsigned saved = real::default_precision();
+    explicit scoped_real_digits(unsigned digits) { real::default_precision(digits); }
+    ~scoped_real_digits() { real::default_precision(saved); }
+  } digits_scope(x.precision() + 10);
   // A radius rounded up to one significant digit, as text.
   const auto rounded_up = [](const real& r) -> std::string {
     if (r <= 0) return "0";
@@ -71,7 +79,7 @@ inline std::string enclosure_text(const interval& x) {
   }
   long digits = 17;
   if (radius > 0) digits = static_cast<long>(std::floor(static_cast<double>(log10(abs(mid) / radius)))) + 1;
-  digits = std::max(1L, std::min(digits, 60L));
+  digits = std::max(1L, std::min(digits, std::max(1L, max_digits)));
   // The printed midpoint is itself rounded: its rounding error joins the radius, so that the text
   // is an enclosure too.
   const std::string printed = mid.str(digits, std::ios_base::scientific);

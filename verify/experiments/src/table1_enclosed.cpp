@@ -1,0 +1,105 @@
+// Table 1 in interval arithmetic: see table1_enclosed.hpp.
+
+#include <simpson/verify/table1_enclosed.hpp>
+
+#include <simpson/verify/paper_table.hpp>
+
+#include <simpson/interval.hpp>
+
+#include <cmath>
+#include <optional>
+
+namespace simpson::verify {
+namespace {
+
+/// The errors of one run as enclosures (the fields of table_errors).
+struct enclosed_errors {
+  interval p{0}, q{0}, energy{0}, discrete_energy{0};
+};
+
+/// [max of lower ends, max of upper ends]: an enclosure of max(a, b) for every a in x, b in y.
+interval enclosed_max(const interval& x, const interval& y) {
+  using real = boost::multiprecision::mpfr_float;
+  const real lo = lower(x) > lower(y) ? real(lower(x)) : real(lower(y));
+  const real hi = upper(x) > upper(y) ? real(upper(x)) : real(upper(y));
+  return interval(lo, hi);
+}
+
+/// The stated experiment (paper_table.hpp's table_errors): m = 1, ω = 2π, h = 1/N, y_0 = (mω, 0),
+/// maximum over j = 0..N.
+enclosed_errors enclosed_run(bool simpson_scheme, long long N) {
+  const interval m(1), omega = 2 * boost::math::constants::pi<interval>();
+  const oscillator_parameters<interval> par{m, omega, interval(interval(1) / interval(N))};
+  const phase_point<interval> y0{interval(m * omega), interval(0)};
+  const one_step_matrix<interval> phi = simpson_scheme ? simpson_map(par) : newmark_map(par);
+  const interval H0 = energy(par, y0), Hd0 = discrete_energy(par, y0);
+  enclosed_errors e;
+  phase_point<interval> y = y0;
+  for (long long j = 0; j <= N; ++j) {
+    const phase_point<interval> exact = exact_solution(par, y0, interval(interval(j) * par.h()));
+    e.p = enclosed_max(e.p, abs(interval(y.p - exact.p)));
+    e.q = enclosed_max(e.q, abs(interval(y.q - exact.q)));
+    e.energy = enclosed_max(e.energy, abs(interval(energy(par, y) - H0)));
+    e.discrete_energy = enclosed_max(e.discrete_energy, abs(interval(discrete_energy(par, y) - Hd0)));
+    y = phi * y;
+  }
+  return e;
+}
+
+interval enclosed_errors::*field_of(double table_errors::*field) {
+  if (field == &table_errors::p) return &enclosed_errors::p;
+  if (field == &table_errors::q) return &enclosed_errors::q;
+  if (field == &table_errors::energy) return &enclosed_errors::energy;
+  return &enclosed_errors::discrete_energy;
+}
+
+/// The integer n with log₂(ratio) proved in (n − ½, n + ½), or none.
+std::optional<long> proved_order(const interval& log2_ratio) {
+  const long n = std::lround(static_cast<double>(boost::multiprecision::mpfr_float(median(log2_ratio))));
+  if (lower(log2_ratio) > n - 0.5 && upper(log2_ratio) < n + 0.5) return n;
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::array<enclosed_table_row, 8> enclosed_table1(unsigned digits, long shown_digits) {
+  const scoped_interval_digits scope(digits);
+  std::array<std::array<enclosed_errors, 3>, 2> runs;
+  for (int s = 0; s < 2; ++s) {
+    for (std::size_t k = 0; k < 3; ++k) runs[static_cast<std::size_t>(s)][k] = enclosed_run(s == 1, published_meshes[k]);
+  }
+  std::array<enclosed_table_row, 8> rows;
+  for (std::size_t r = 0; r < published_rows().size(); ++r) {
+    const published_row& row = published_rows()[r];
+    std::array<interval, 3> errors;
+    bool all_hold_zero = true, none_holds_zero = true;
+    for (std::size_t k = 0; k < 3; ++k) {
+      errors[k] = runs[row.simpson_scheme ? 1 : 0][k].*field_of(row.field);
+      rows[r].values[k] = enclosure_text(errors[k], shown_digits);
+      all_hold_zero = all_hold_zero && certain_sign(errors[k]) == 0;
+      none_holds_zero = none_holds_zero && certain_sign(errors[k]) != 0;
+    }
+    if (all_hold_zero) {
+      rows[r].order = "exact";
+      rows[r].order_evidence = "every error's enclosure holds 0: the exact scheme conserves it (widest " + rows[r].values[2] + ")";
+      continue;
+    }
+    if (!none_holds_zero) {
+      rows[r].order = "undecided (some errors' enclosures hold 0, others do not)";
+      continue;
+    }
+    const interval first = log2(interval(errors[0] / errors[1])), second = log2(interval(errors[1] / errors[2]));
+    const std::optional<long> a = proved_order(first), b = proved_order(second);
+    rows[r].order_evidence = "log2 ratios " + enclosure_text(first) + " and " + enclosure_text(second);
+    if (a && b && *a == *b) {
+      rows[r].order = std::to_string(*a);
+    } else if (a && b) {
+      rows[r].order = "inconsistent (" + std::to_string(*a) + ", " + std::to_string(*b) + ")";
+    } else {
+      rows[r].order = "undecided (a log2 ratio is not within 1/2 of an integer)";
+    }
+  }
+  return rows;
+}
+
+}  // namespace simpson::verify
