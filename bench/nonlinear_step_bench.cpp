@@ -138,5 +138,16 @@ int main(int argc, char** argv) {
     } catch (const std::out_of_range&) {
     }
   }
+  // The cost of enclosures (interval_bench.cpp): interval time over mpfr time on the same work, and
+  // Arb's ball loop over MPFI's.
+  for (const auto& [slower, faster, label] : {std::tuple{"phi3_det_interval50", "phi3_det_mpfr50", "interval50_vs_mpfr50_phi3_det"},
+                                              std::tuple{"generic_loop_interval50", "generic_loop_mpfr50", "interval50_vs_mpfr50_step"},
+                                              std::tuple{"raw_mpfi", "raw_mpfr", "raw_mpfi_vs_raw_mpfr_step"},
+                                              std::tuple{"raw_arb", "raw_mpfi", "raw_arb_vs_raw_mpfi_step"}}) {
+    try {
+      std::printf("ratio %s %.3f\n", label, reporter.seconds(slower) / reporter.seconds(faster));
+    } catch (const std::out_of_range&) {
+    }
+  }
   return 0;
 }
