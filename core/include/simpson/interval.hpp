@@ -40,6 +40,13 @@ class scoped_interval_digits {
   unsigned previous_;
 };
 
+/// The whole real line: what is known of a value nothing was proved about.
+inline interval entire_line() {
+  interval x;
+  mpfi_interv_d(x.backend().data(), -HUGE_VAL, HUGE_VAL);
+  return x;
+}
+
 /// +1 when every point of x is positive, −1 when every point is negative, 0 when x contains 0 (the
 /// sign is not decided at this precision, or the value is 0).
 inline int certain_sign(const interval& x) {

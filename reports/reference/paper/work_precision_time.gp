@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.53421e-08:0.000639168]
+set xrange [4.5342e-08:0.000639201]
 set xtics autofreq
 set mxtics default
 set yrange [4.29802e-15:0.337578]
@@ -37,7 +37,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [8.02248e-08:0.00328298]
+set xrange [8.02359e-08:0.00327347]
 set xtics autofreq
 set mxtics default
 set yrange [3.30044e-15:0.34185]
@@ -61,7 +61,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [8.38374e-07:0.0262037]
+set xrange [7.98669e-07:0.0260844]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -85,7 +85,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.81396e-06:0.0452398]
+set xrange [1.75329e-06:0.0458996]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -109,7 +109,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [2.64358e-06:0.0585836]
+set xrange [2.5409e-06:0.0568704]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -159,7 +159,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.53421e-08:0.000639168]
+set xrange [4.5342e-08:0.000639201]
 set xtics autofreq
 set mxtics default
 set yrange [4.29802e-15:0.337578]
@@ -183,7 +183,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [8.02248e-08:0.00328298]
+set xrange [8.02359e-08:0.00327347]
 set xtics autofreq
 set mxtics default
 set yrange [3.30044e-15:0.34185]
@@ -207,7 +207,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [8.38374e-07:0.0262037]
+set xrange [7.98669e-07:0.0260844]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -231,7 +231,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.81396e-06:0.0452398]
+set xrange [1.75329e-06:0.0458996]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -255,7 +255,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [2.64358e-06:0.0585836]
+set xrange [2.5409e-06:0.0568704]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]

@@ -1,7 +1,8 @@
 // Beyond the paper, several degrees of freedom with a quadratic Lagrangian ½ q̇ᵀMq̇ − ½ qᵀKq: Φ₃'s
 // block analogue (core/ndof_linear.hpp) proved symplectic and energy-conserving in exact rational
 // arithmetic by GiNaC (a second construction of the map from the step's equations, compared with
-// the core's in mpfr:100), and its stability read from the generalized eigenvalues of (K, M).
+// the core's in mpfr:100), and its stability decided exactly from Φ's characteristic polynomial
+// against the generalized eigenvalues of (K, M).
 
 #include "claims_beyond.hpp"
 
@@ -9,6 +10,7 @@
 
 #include <simpson/ndof_linear.hpp>
 #include <simpson/three_term_scheme.hpp>
+#include <simpson/verify/exact_proof.hpp>
 
 #include <Eigen/Eigenvalues>
 #include <ginac/ginac.h>
@@ -194,52 +196,111 @@ claim_result check_ndof_energy(const run_context&) {
   return r;
 }
 
-/// Stability: Φ's eigenvalues against the scalar stable set at each ω_k h, ω_k² the generalized
-/// eigenvalues of (K, M), in double (Eigen).
-claim_result check_ndof_stability(const run_context&) {
-  const auto& pendulum = systems().front();
-  Eigen::MatrixXd M(2, 2), K(2, 2);
-  for (int i = 0; i < 2; ++i) {
-    for (int j = 0; j < 2; ++j) {
-      M(i, j) = static_cast<double>(pendulum.mass[i][j].first) / pendulum.mass[i][j].second;
-      K(i, j) = static_cast<double>(pendulum.stiffness[i][j].first) / pendulum.stiffness[i][j].second;
+/// A GiNaC rational as an exact rational.
+rational exact_rational(const GiNaC::numeric& v) {
+  std::ostringstream numerator, denominator;
+  numerator << v.numer();
+  denominator << v.denom();
+  return rational(boost::multiprecision::cpp_int(numerator.str()), boost::multiprecision::cpp_int(denominator.str()));
+}
+
+/// The coefficients of a polynomial in `x` with rational GiNaC coefficients.
+polynomial exact_polynomial(const ex& p, const GiNaC::symbol& x) {
+  const ex expanded = GiNaC::expand(p);
+  std::vector<rational> c;
+  for (int k = 0; k <= expanded.degree(x); ++k) c.push_back(exact_rational(GiNaC::ex_to<GiNaC::numeric>(expanded.coeff(x, k))));
+  return polynomial(c.begin(), c.end());
+}
+
+/// Φ's stability, decided from its exact characteristic polynomial P(λ) (degree 2n, palindromic as
+/// Φ is symplectic): λ⁻ⁿ P(λ) = Q(μ), μ = λ + 1/λ, with λʲ + λ⁻ʲ = T_j(μ) (T_0 = 2, T_1 = μ,
+/// T_{j+1} = μ T_j − T_{j−1}). Every eigenvalue is on the unit circle and simple iff Q has n distinct
+/// real roots in (−2, 2) (Sturm); a squarefree Q without roots at ±2 and fewer roots there has an
+/// eigenvalue off the circle. Else (a repeated μ, or μ = ±2: an eigenvalue ±1) it is not decided here.
+enum class exact_stability { stable, unstable, undecided };
+
+exact_stability decide_from_charpoly(const polynomial& P, std::string& why) {
+  const long degree_2n = degree(P);
+  const std::size_t n = static_cast<std::size_t>(degree_2n / 2);
+  for (std::size_t i = 0; i <= 2 * n; ++i) {
+    if (P[i] != P[2 * n - i]) {
+      why = "the characteristic polynomial is not palindromic: Phi is not symplectic";
+      return exact_stability::unstable;
     }
   }
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> modes(K, M);
-  const Eigen::VectorXd omega2 = modes.eigenvalues();
-  // A mode is stable where its characteristic roots are complex of modulus 1: Δ(ω_k² h²) < 0 with
-  // the core's discriminant (three_term_scheme.hpp), i.e. ω_k² h² in (0, 8) ∪ (12, 24).
-  const auto stable_scalar = [](double x) { return x > 0 && discriminant(x) < 0; };
+  std::vector<polynomial> T{polynomial({rational(2)}), polynomial({rational(0), rational(1)})};
+  for (std::size_t j = 1; j < n; ++j) T.push_back(polynomial({rational(0), rational(1)}) * T[j] - T[j - 1]);
+  polynomial Q({P[n]});
+  for (std::size_t j = 1; j <= n; ++j) Q += P[n + j] * T[j];
+  const std::vector<polynomial> sturm = sturm_sequence(Q);
+  const bool squarefree = degree(sturm.back()) == 0;
+  const bool at_ends = Q.evaluate(rational(-2)) == 0 || Q.evaluate(rational(2)) == 0;
+  const std::size_t inside = at_ends ? 0 : count_real_roots(Q, rational(-2), rational(2));
+  why = "Q(mu) = " + std::to_string(inside) + " distinct roots in (-2, 2) of " + std::to_string(n);
+  if (!squarefree || at_ends) {
+    why += squarefree ? "; a root at mu = +-2 (eigenvalue +-1)" : "; a repeated root";
+    return exact_stability::undecided;
+  }
+  return inside == n ? exact_stability::stable : exact_stability::unstable;
+}
+
+/// The modal prediction at x = ω_k² h²: every root of c(x) = det(h² K − x M) in (0, 8) ∪ (12, 24), the
+/// scalar stable set (three_term_scheme.hpp's discriminant), endpoints included in the decision: a
+/// root at 8, 12 or 24 is not stable (there the scalar map is singular or has a double root ±1).
+bool predicted_stable(const polynomial& c, std::string& why) {
+  const std::size_t n = static_cast<std::size_t>(degree(c));
+  for (const int end : {0, 8, 12, 24}) {
+    if (c.evaluate(rational(end)) == 0) {
+      why = "a mode at omega_k^2 h^2 = " + std::to_string(end);
+      return false;
+    }
+  }
+  const std::size_t first = count_real_roots(c, rational(0), rational(8)), second = count_real_roots(c, rational(12), rational(24));
+  why = std::to_string(first) + " modes in (0, 8), " + std::to_string(second) + " in (12, 24), of " + std::to_string(n);
+  return first + second == n;
+}
+
+/// Stability: Φ's exact characteristic polynomial against the scalar stable set at each ω_k² h², both
+/// decided exactly (Sturm) at h = k/20, k = 1..60, for each system.
+claim_result check_ndof_stability(const run_context&) {
+  const GiNaC::symbol lambda("lambda"), x("x");
   json rows = json::array();
   bool all = true;
-  for (int k = 1; k <= 60; ++k) {
-    const double h = 0.05 * k;
-    bool predicted = true;
-    for (int i = 0; i < omega2.size(); ++i) {
-      const double x = omega2(i) * h * h;
-      if (std::abs(x - 8) < 1e-6 || std::abs(x - 12) < 1e-6 || std::abs(x - 24) < 1e-6) continue;  // an endpoint: skip
-      predicted = predicted && stable_scalar(x);
-    }
-    const Eigen::MatrixXd phi = ndof_simpson_map<double>(M, K, h);
-    const double radius = Eigen::EigenSolver<Eigen::MatrixXd>(phi).eigenvalues().cwiseAbs().maxCoeff();
-    // On the unit circle up to the eigen-solver's round-off: a backward-stable QR perturbs Φ by
-    // ~n eps |Φ| and, Φ being non-normal, moves its eigenvalues by up to κ(eigenvectors) times that;
-    // 4096 eps max|Φ_ij| covers κ up to ~1000 at n = 4 (an unstable step has radius > 1 + 1e-3 here).
-    const bool on_circle = radius <= 1 + 4096 * std::numeric_limits<double>::epsilon() * phi.cwiseAbs().maxCoeff();
-    all = all && on_circle == predicted;
-    if (k % 5 == 0 || on_circle != predicted) {
-      rows.push_back({{"h", h}, {"omega_k2_h2", {omega2(0) * h * h, omega2(1) * h * h}}, {"predicted_stable", predicted},
-                      {"spectral_radius", radius}});
+  std::size_t cases = 0, stable_cases = 0;
+  std::string undecided;
+  for (const linear_system& system : systems()) {
+    const GiNaC::matrix M = exact_matrix(system.mass), K = exact_matrix(system.stiffness);
+    for (int k = 1; k <= 60; ++k) {
+      throw_if_interrupted();
+      const GiNaC::numeric h(k, 20);
+      std::string why_phi, why_modes;
+      const exact_stability actual = decide_from_charpoly(exact_polynomial(exact_phi(M, K, h).charpoly(lambda), lambda), why_phi);
+      const bool predicted = predicted_stable(exact_polynomial(K.mul_scalar(h * h).sub(M.mul_scalar(x)).determinant(), x), why_modes);
+      ++cases;
+      if (actual == exact_stability::undecided) {
+        undecided = system.name + ", h = " + std::to_string(k) + "/20: " + why_phi;
+        continue;
+      }
+      const bool stable = actual == exact_stability::stable;
+      stable_cases += stable;
+      all = all && stable == predicted;
+      if (k % 10 == 0 || stable != predicted) {
+        rows.push_back({{"system", system.name}, {"h", std::to_string(k) + "/20"}, {"modes", why_modes}, {"predicted_stable", predicted},
+                        {"phi", why_phi}, {"phi_stable", stable}});
+      }
     }
   }
+  if (!undecided.empty() && all) throw enclosure_undecided("ndof-stability: " + undecided);
   claim_result r;
   r.outcome = all ? verdict::holds : verdict::fails;
-  r.evidence["numeric"] = {{"system", pendulum.name},
-                           {"omega_k2", {omega2(0), omega2(1)}},
-                           {"omega_k2_exact", "2 -+ sqrt(2)"},
-                           {"method", "h = 0.05, 0.10, ..., 3.00: Phi's spectral radius (Eigen, double) against the prediction "
-                                      "'every omega_k^2 h^2 in (0, 8) or (12, 24)'; rows every 0.25 and wherever they disagree"},
-                           {"rows", rows}};
+  r.evidence["exact"] = {
+      {"method", "exact (rational arithmetic, Sturm sequences), no tolerance: Phi from the step's equations in GiNaC at h = k/20, "
+                 "k = 1..60; its characteristic polynomial P(lambda) reduced to Q(mu), mu = lambda + 1/lambda; stable iff Q has "
+                 "n distinct roots in (-2, 2). Prediction: every root of det(h^2 K - x M) in (0, 8) or (12, 24), the endpoints "
+                 "decided (a root there is not stable)"},
+      {"cases", cases},
+      {"stable_cases", stable_cases},
+      {"rows", rows}};
   return r;
 }
 
@@ -255,7 +316,7 @@ void add_beyond_ndof_claims(std::vector<claim>& claims) {
   claims.push_back({"ndof-stability", "beyond", "stabilite",
                     "(Beyond the paper.) Phi_3 is stable iff every omega_k h lies in the stable set of the scalar case, "
                     "omega_k^2 the generalized eigenvalues of (K, M).",
-                    {"numeric"}, verdict::holds, check_ndof_stability});
+                    {"exact"}, verdict::holds, check_ndof_stability});
 }
 
 }  // namespace simpson::verify::detail
