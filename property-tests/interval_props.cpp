@@ -1,6 +1,6 @@
 // The core's formulas in interval arithmetic against mpfr:1000: over random (ω, h) in both stable
 // bands, the 40-digit enclosure of H_d(Φ₃y) − H_d(y) and of det Φ₃ − 1 contains the 1000-digit
-// value, and a finer precision gives a narrower enclosure.
+// value, and a finer precision gives a narrower enclosure; a formula off by 1e-35 is refuted.
 
 #include <simpson/interval.hpp>
 
@@ -52,6 +52,18 @@ RC_GTEST_PROP(IntervalProps, EnclosuresContainTheThousandDigitValueAndNarrowWith
     widths[digits == 40u ? 0 : 1] = width(enclosed[0]);
   }
   RC_ASSERT(widths[1] <= widths[0] * mpfr("1e-30"));
+}
+
+RC_GTEST_PROP(IntervalProps, AWrongFormulaGivesAnEnclosureThatExcludesTheClaimedValue, (unsigned thousandths, bool second_band, unsigned k)) {
+  // Φ₃ with α off by a relative 1e-35 (invisible in double and float128): det − 1 = 0 is refuted.
+  const std::string omega_h = second_band ? "3.47" + std::to_string(100 + thousandths % 900) : "0." + std::to_string(1000 + thousandths % 9000);
+  const scoped_interval_digits digits(60);
+  const interval omega = 1 + interval(static_cast<int>(k % 16)) / 8;
+  const oscillator_parameters<interval> par{interval(1), omega, interval(interval(omega_h) / omega)};
+  one_step_matrix<interval> phi = simpson_map(par);
+  RC_ASSERT(certain_sign(interval(determinant(phi) - 1)) == 0);
+  phi.alpha *= 1 + interval(1) / interval("1e35");
+  RC_ASSERT(certain_sign(interval(determinant(phi) - 1)) != 0);
 }
 
 }  // namespace
