@@ -5,6 +5,7 @@
 #include <simpson/verify/experiments.hpp>
 #include <simpson/verify/paper_table.hpp>
 #include <simpson/verify/report.hpp>
+#include <simpson/verify/table1_enclosed.hpp>
 
 #include <simpson/verify/floating_tools.hpp>
 
@@ -77,6 +78,16 @@ TEST(Figures, RoundDecimalRoundsTheDigitsThemselves) {
   EXPECT_EQ(round_decimal("-0.0000e+00", 3), "0.00e+00");
   EXPECT_EQ(round_decimal("1e+300", 1), "1e+300");
   EXPECT_THROW(round_decimal("nan", 3), std::invalid_argument);
+}
+
+TEST(Figures, AnEnclosedNumberShowsItsRadiusWhenItHasFewerGuaranteedDigitsThanAsked) {
+  const figure wide = figure::enclosed("1.4e-14", "3e-16"), narrow = figure::enclosed("1.4427e-14", "3e-31");
+  EXPECT_EQ(display(wide, 3), "1.4e-14 ± 3e-16");
+  EXPECT_EQ(display(narrow, 3), "1.44e-14");
+  EXPECT_EQ(display(figure::enclosed("0", "2e-50"), 3), "0 ± 2e-50");
+  EXPECT_EQ(narrow.full_text(), "1.4427e-14 ± 3e-31");
+  EXPECT_EQ(figure_json(narrow), json("1.4427e-14 ± 3e-31"));
+  EXPECT_FALSE(wide == figure::enclosed("1.4e-14", "4e-16"));  // the radius is part of the figure
 }
 
 TEST(Figures, MarkdownCellsEscapePipes) {
@@ -156,17 +167,92 @@ TEST(Experiments, StabilityFindsTheLedgersIntervalsAndDecidesFaultsInItsPrecisio
   }
 }
 
-TEST(Experiments, LongRunDriftIsExplainedByTheRoundedDeterminant) {
+/// Midpoint and radius of an enclosed figure's text ("1.4427e-14 ± 3e-31"), read in mpfr.
+std::pair<mpfr, mpfr> enclosure_parts_of(const figure& f) {
+  EXPECT_FALSE(f.radius().empty()) << f.full_text() << " is not an enclosure";
+  return {mpfr(f.value()), mpfr(f.radius().empty() ? "0" : f.radius())};
+}
+
+TEST(Experiments, LongRunDriftIsExplainedByTheRoundedDeterminantAndEnclosedAboveDouble) {
   long_time_settings s;
   s.steps_double = 200000;
   s.steps_mpfr = 2000;
   s.windows = 20;
   const section_result out = run_long_time(s);
   const table& rows = get(out, "rows");
+  const scoped_mpfr_digits digits(80);
+  int enclosed = 0;
   for (std::size_t r = 0; r < rows.rows.size(); ++r) {
     // The measured phase error is the one the characteristic roots predict (to the ellipse's O(θ²) wobble).
-    EXPECT_NEAR(number(cell(rows, r, "measured_over_predicted")), 1, 0.05) << cell(rows, r, "scheme").value();
+    EXPECT_NEAR(static_cast<double>(mpfr(cell(rows, r, "measured_over_predicted").value())), 1, 0.05)
+        << cell(rows, r, "scheme").value();
+    const figure& change = cell(rows, r, "max_relative_energy_change");
+    if (cell(rows, r, "precision").value() == "double") {
+      EXPECT_TRUE(change.radius().empty());
+      continue;
+    }
+    ++enclosed;
+    // The enclosure's radius is far below mpfr:50's own evaluation round-off (~1e-49), and the
+    // floating evaluation's drift prediction |det − 1| · steps agrees with it within that round-off.
+    const auto [mid, radius] = enclosure_parts_of(change);
+    EXPECT_LT(radius, mpfr("1e-55")) << change.full_text();
+    const mpfr predicted(cell(rows, r, "drift_predicted_by_rounded_det").value());
+    if (cell(rows, r, "scheme").value() != "rk4") {
+      EXPECT_LT(abs(mpfr(mid - predicted)), mpfr("1e-48")) << change.full_text();
+    }
+    const auto [phase, phase_radius] = enclosure_parts_of(cell(rows, r, "phase_error_measured"));
+    EXPECT_LT(phase_radius, mpfr("1e-50"));
+    EXPECT_GT(abs(phase), mpfr("1e-6"));  // a phase error of the scheme, not of the rounding
   }
+  EXPECT_EQ(enclosed, 3);
+}
+
+TEST(Experiments, AboveDoubleTheWorkPrecisionErrorsAreEnclosuresOfTheSchemesErrors) {
+  work_precision_settings w;
+  w.schemes = {scheme_id::simpson, scheme_id::newmark};
+  w.precisions = {precision::parse("double"), precision::mpfr_digits(50)};
+  w.meshes = {16, 64};
+  w.timing.max_runs = 0;
+  const section_result out = run_work_precision(w);
+  const table& rows = get(out, "rows");
+  ASSERT_EQ(rows.rows.size(), 8u);
+  const scoped_mpfr_digits digits(80);
+  std::map<std::string, double> in_double;
+  for (std::size_t r = 0; r < rows.rows.size(); ++r) {
+    const std::string key = cell(rows, r, "scheme").value() + " " + cell(rows, r, "N_per_period").value();
+    const figure& error = cell(rows, r, "error_q_max");
+    if (cell(rows, r, "precision").value() == "double") {
+      in_double[key] = number(error);
+      continue;
+    }
+    // The enclosed error is the double run's within double's round-off floor (100 N eps, the
+    // section's own), the error being the scheme's, far above it; its radius is far below both.
+    const auto [mid, radius] = enclosure_parts_of(error);
+    EXPECT_LT(radius, mpfr("1e-40")) << error.full_text();
+    const double N = std::stod(cell(rows, r, "N_per_period").value());
+    EXPECT_NEAR(static_cast<double>(mid), in_double.at(key), 100 * N * std::numeric_limits<double>::epsilon())
+        << key << ": " << error.full_text();
+  }
+}
+
+TEST(Experiments, TheEnclosedPaperExperimentProvesEachSchemesOrderAndDecidesFigure1sBounds) {
+  const enclosed_convergence simpson = enclosed_convergence_of(true, {10, 20, 40});
+  const enclosed_convergence newmark = enclosed_convergence_of(false, {10, 20, 40});
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(simpson.order_p[k], std::optional<long>(4)) << simpson.log2_ratio_p[k];
+    EXPECT_EQ(simpson.order_q[k], std::optional<long>(4)) << simpson.log2_ratio_q[k];
+    EXPECT_EQ(newmark.order_q[k], std::optional<long>(2)) << newmark.log2_ratio_q[k];
+  }
+  // Figure 1 (N = 15): Simpson's momentum within 1/500 of the amplitude, Newmark's above it; both
+  // within 1/10; and a bound between Simpson's p error (5.14e-5) and q error (7.98e-5) splits them.
+  const std::vector<std::pair<long, long>> bounds{{1, 10}, {1, 500}, {1, 15000}};
+  const bounded_errors s = enclosed_errors_within(true, 15, bounds), n = enclosed_errors_within(false, 15, bounds);
+  EXPECT_EQ(s.worst_within[0], bound_decision::at_most);
+  EXPECT_EQ(n.worst_within[0], bound_decision::at_most);
+  EXPECT_EQ(s.p_within[1], bound_decision::at_most);
+  EXPECT_EQ(n.p_within[1], bound_decision::above);
+  EXPECT_EQ(s.p_within[2], bound_decision::at_most) << s.p_over_m_omega;
+  EXPECT_EQ(s.worst_within[2], bound_decision::above) << s.q;
 }
 
 TEST(Experiments, TheShearFormsOfPhi3DoNotDrift) {

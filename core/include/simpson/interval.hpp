@@ -55,14 +55,28 @@ inline int certain_sign(const interval& x) {
   return 0;
 }
 
+/// An enclosure of max(a, b) for every a in x and b in y: [max of the lower ends, max of the upper ends].
+inline interval enclosed_max(const interval& x, const interval& y) {
+  using real = boost::multiprecision::mpfr_float;
+  const real lo = lower(x) > lower(y) ? real(lower(x)) : real(lower(y));
+  const real hi = upper(x) > upper(y) ? real(upper(x)) : real(upper(y));
+  return interval(lo, hi);
+}
+
 /// Whether the interval x contains every point of `value`.
 inline bool encloses(const interval& x, const interval& value) { return lower(x) <= lower(value) && upper(value) <= upper(x); }
 
-/// "1.4427e-14 ± 3e-31": the midpoint to the digits the radius leaves (one more), and the radius,
-/// plus the midpoint's own rounding, rounded up to one digit: the text is an enclosure of x. "0 ±
-/// 2e-50" when the interval holds 0 and no digit of the midpoint is guaranteed. At most `max_digits`
-/// digits of the midpoint: fewer widen the radius by the rounding, so the text still encloses x.
-inline std::string enclosure_text(const interval& x, long max_digits = 60) {
+/// An enclosure as decimal text in two parts: the midpoint with only the digits the radius leaves
+/// (one more), and the radius, plus the midpoint's own rounding, rounded up to one digit: every
+/// point of x lies within `radius` of `midpoint`. The midpoint is "0" when x holds 0 and no digit of
+/// it is guaranteed. At most `max_digits` digits of the midpoint: fewer widen the radius by the
+/// rounding, so the parts still enclose x.
+struct enclosure_parts {
+  std::string midpoint;
+  std::string radius;
+};
+
+inline enclosure_parts enclosure_of(const interval& x, long max_digits = 60) {
   using real = boost::multiprecision::mpfr_float;
   // The midpoint and radius in x's own precision and more: in fewer digits the midpoint's rounding
   // would swamp the radius.
@@ -82,7 +96,7 @@ inline std::string enclosure_text(const interval& x, long max_digits = 60) {
   const real mid = median(x);
   const real radius = upper(x) - mid > mid - lower(x) ? real(upper(x) - mid) : real(mid - lower(x));
   if (radius > 0 && abs(mid) <= radius) {  // no digit guaranteed: centred on 0, wide enough for both ends
-    return "0 ± " + rounded_up(abs(lower(x)) > abs(upper(x)) ? real(abs(lower(x))) : real(abs(upper(x))));
+    return {"0", rounded_up(abs(lower(x)) > abs(upper(x)) ? real(abs(lower(x))) : real(abs(upper(x))))};
   }
   long digits = 17;
   if (radius > 0) digits = static_cast<long>(std::floor(static_cast<double>(log10(abs(mid) / radius)))) + 1;
@@ -90,7 +104,14 @@ inline std::string enclosure_text(const interval& x, long max_digits = 60) {
   // The printed midpoint is itself rounded: its rounding error joins the radius, so that the text
   // is an enclosure too.
   const std::string printed = mid.str(digits, std::ios_base::scientific);
-  return printed + " ± " + rounded_up(radius + abs(mid - real(printed)));
+  return {printed, rounded_up(radius + abs(mid - real(printed)))};
+}
+
+/// "1.4427e-14 ± 3e-31" (enclosure_of's two parts): the text is an enclosure of x; "0 ± 2e-50"
+/// when no digit is guaranteed.
+inline std::string enclosure_text(const interval& x, long max_digits = 60) {
+  const enclosure_parts parts = enclosure_of(x, max_digits);
+  return parts.midpoint + " ± " + parts.radius;
 }
 
 }  // namespace simpson

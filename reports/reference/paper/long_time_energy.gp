@@ -35,7 +35,7 @@ unset key
 set xrange [79.4328:12589.3]
 set xtics autofreq
 set mxtics default
-set yrange [1.10969e-50:0.242393]
+set yrange [1.10883e-50:0.242402]
 set ytics 1e8
 set mytics 1
 plot 'long_time_energy.dat' index 3 u 1:2 w l lw 2 dt 1 lc rgb '#d62728' t 'simpson-H_d', \
@@ -94,7 +94,7 @@ unset key
 set xrange [79.4328:12589.3]
 set xtics autofreq
 set mxtics default
-set yrange [1.10969e-50:0.242393]
+set yrange [1.10883e-50:0.242402]
 set ytics 1e8
 set mytics 1
 plot 'long_time_energy.dat' index 3 u 1:2 w l lw 2 dt 1 lc rgb '#d62728' t 'simpson-H_d', \

@@ -43,7 +43,7 @@ unset key
 set xrange [12.1257:5404.7]
 set xtics autofreq
 set mxtics default
-set yrange [3.30044e-15:0.34185]
+set yrange [3.30045e-15:0.34185]
 set ytics 1e3
 set mytics 1
 plot 'work_precision_n.dat' index 11 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
@@ -207,7 +207,7 @@ unset key
 set xrange [12.1257:5404.7]
 set xtics autofreq
 set mxtics default
-set yrange [3.30044e-15:0.34185]
+set yrange [3.30045e-15:0.34185]
 set ytics 1e3
 set mytics 1
 plot 'work_precision_n.dat' index 11 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \

@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.5342e-08:0.000639201]
+set xrange [7.05446e-08:0.0012385]
 set xtics autofreq
 set mxtics default
 set yrange [4.29802e-15:0.337578]
@@ -37,10 +37,10 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [8.02359e-08:0.00327347]
+set xrange [1.23275e-07:0.00517935]
 set xtics autofreq
 set mxtics default
-set yrange [3.30044e-15:0.34185]
+set yrange [3.30045e-15:0.34185]
 set ytics 1e3
 set mytics 1
 plot 'work_precision_time.dat' index 8 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
@@ -61,7 +61,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [7.98669e-07:0.0260844]
+set xrange [1.29255e-06:0.0426]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -85,7 +85,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.75329e-06:0.0458996]
+set xrange [5.09359e-06:0.103397]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -109,7 +109,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [2.5409e-06:0.0568704]
+set xrange [4.52579e-06:0.110285]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -159,7 +159,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.5342e-08:0.000639201]
+set xrange [7.05446e-08:0.0012385]
 set xtics autofreq
 set mxtics default
 set yrange [4.29802e-15:0.337578]
@@ -183,10 +183,10 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [8.02359e-08:0.00327347]
+set xrange [1.23275e-07:0.00517935]
 set xtics autofreq
 set mxtics default
-set yrange [3.30044e-15:0.34185]
+set yrange [3.30045e-15:0.34185]
 set ytics 1e3
 set mytics 1
 plot 'work_precision_time.dat' index 8 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
@@ -207,7 +207,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [7.98669e-07:0.0260844]
+set xrange [1.29255e-06:0.0426]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -231,7 +231,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.75329e-06:0.0458996]
+set xrange [5.09359e-06:0.103397]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -255,7 +255,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [2.5409e-06:0.0568704]
+set xrange [4.52579e-06:0.110285]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]

@@ -1,6 +1,7 @@
 // The long_time section: energy drift over 1e7 steps in double (1e5 in mpfr), bounded oscillation
 // against drift, and the phase error against the frequency predicted by the exact characteristic roots.
-// Every figure, including the fitted slope, is computed in the run's precision.
+// Every figure, including the fitted slope, is computed in the run's precision; above double the
+// energy changes and phase errors are enclosed (MPFI) and carry only guaranteed digits.
 
 #include <simpson/verify/long_time_section.hpp>
 #include <simpson/verify/interruption.hpp>
@@ -8,6 +9,7 @@
 #include <simpson/verify/scheme_style.hpp>
 
 #include <simpson/verify/floating_tools.hpp>
+#include "enclosed_figures.hpp"
 #include "guarded_run.hpp"  // growth_limit
 #include "long_time_parts.hpp"
 
@@ -17,6 +19,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <optional>
 
 namespace simpson::verify {
 namespace {
@@ -39,6 +42,47 @@ const char* energy_name(monitored_energy e) { return e == monitored_energy::disc
 struct long_run {
   table_row row;
   series drift, phase_measured, phase_predicted;  // against t, one point per window
+};
+
+/// Above double, the run's figures enclosed: every iterate (an exact binary value) enters an interval
+/// exactly, and the monitored energy, its change and the phase errors are evaluated on it in MPFI at
+/// the run's own m, ω, h and matrix entries (exact values of Real), so no digit shown is a round-off
+/// of the evaluation. The angle's branch crossings are the floating run's count.
+struct enclosed_long_run {
+  oscillator_parameters<interval> par;
+  monitored_energy monitored;
+  interval E0, window_max{0}, overall{0}, phase_per_step, measured_phase_error{0}, predicted_phase_error{0};
+
+  template <class Real>
+  enclosed_long_run(const oscillator_parameters<Real>& p, monitored_energy e, const one_step_matrix<Real>& phi,
+                    const phase_point<Real>& y0)
+      : par{detail::exact_interval(p.m()), detail::exact_interval(p.omega()), detail::exact_interval(p.h())}, monitored(e) {
+    E0 = monitor(y0);
+    const interval tr = detail::exact_interval(phi.alpha) + detail::exact_interval(phi.delta);
+    const interval det = detail::exact_interval(phi.alpha) * detail::exact_interval(phi.delta) -
+                         detail::exact_interval(phi.beta) * detail::exact_interval(phi.gamma);
+    phase_per_step = atan2(interval(sqrt(interval(4 * det - tr * tr))), tr);
+  }
+  template <class Real>
+  interval monitor(const phase_point<Real>& y) const {
+    const phase_point<interval> at{detail::exact_interval(y.p), detail::exact_interval(y.q)};
+    return monitored == monitored_energy::discrete ? discrete_energy(par, at) : energy(par, at);
+  }
+  template <class Real>
+  void step(const phase_point<Real>& y) {
+    window_max = enclosed_max(window_max, interval(abs(interval(monitor(y) - E0)) / E0));
+  }
+  /// At a window's end (j steps, `turns` branch crossings): the phase errors, and the window closed.
+  template <class Real>
+  void window_end(const phase_point<Real>& y, long long j, long long turns) {
+    const interval two_pi = 2 * boost::math::constants::pi<interval>();
+    const interval omega_t = par.omega() * par.h() * interval(j);
+    const interval angle = atan2(detail::exact_interval(y.q), interval(detail::exact_interval(y.p) / (par.m() * par.omega())));
+    measured_phase_error = two_pi * interval(turns) - omega_t + angle;
+    predicted_phase_error = interval(j) * phase_per_step - omega_t;
+    overall = enclosed_max(overall, window_max);
+  }
+  void window_start() { window_max = interval(0); }
 };
 
 /// Runs `steps` steps of a scheme's matrix from y_0 = (mω, 0), m = 1, ω = 1, h = θ, in windows:
@@ -80,11 +124,18 @@ long_run run_long(const long_run_case& c, const precision& prec, long long steps
   std::vector<Real> times, maxima;
   figure status = figure::text("ok");
   const Real E0 = monitor(y0);
+  std::optional<scoped_interval_digits> interval_digits;
+  std::optional<enclosed_long_run> enclosed;
+  if constexpr (detail::enclosed_above_double_v<Real>) {
+    interval_digits.emplace(detail::enclosure_digits_for<Real>());
+    enclosed.emplace(par, c.monitored, phi, y0);
+  }
   for (long long start = 0; start < steps && !status.is_fault(); start += window) {
     const long long length = std::min(window, steps - start);
     // The window's steps: the energy's largest change against E(y_0), the unwrapped angle, and
     // growth past growth_limit times the amplitude (|q| + |p|/(mω) = 1 at y_0), where the run stops.
     Real window_max(0);
+    if (enclosed) enclosed->window_start();
     phase_point<Real> z = y;
     for (long long j = 1; j <= length; ++j) {
       if ((j & 0xFFFFF) == 0) throw_if_interrupted();
@@ -94,6 +145,7 @@ long_run run_long(const long_run_case& c, const precision& prec, long long steps
         break;
       }
       window_max = std::max(window_max, Real(abs(Real(monitor(z) - E0)) / E0));
+      if (enclosed) enclosed->step(z);
       // Unwrap the angle of (q, p): it advances by about θ per step (< π), so a crossing of the branch
       // cut is a jump by about ∓2π.
       const Real next_angle = atan2(z.q, z.p);
@@ -110,9 +162,16 @@ long_run run_long(const long_run_case& c, const precision& prec, long long steps
     overall = std::max(overall, window_max);
     times.push_back(t);
     maxima.push_back(window_max);
-    out.drift.add(figure::of(t), figure::of(window_max));
-    out.phase_measured.add(figure::of(t), figure::of(Real(abs(measured_phase_error))));
-    out.phase_predicted.add(figure::of(t), figure::of(Real(abs(predicted_phase_error))));
+    if (enclosed) {
+      enclosed->window_end(y, j, turns);
+      out.drift.add(figure::of(t), detail::enclosed_figure(enclosed->window_max));
+      out.phase_measured.add(figure::of(t), detail::enclosed_figure(interval(abs(enclosed->measured_phase_error))));
+      out.phase_predicted.add(figure::of(t), detail::enclosed_figure(interval(abs(enclosed->predicted_phase_error))));
+    } else {
+      out.drift.add(figure::of(t), figure::of(window_max));
+      out.phase_measured.add(figure::of(t), figure::of(Real(abs(measured_phase_error))));
+      out.phase_predicted.add(figure::of(t), figure::of(Real(abs(predicted_phase_error))));
+    }
     progress_step("long_time", fmt::format("{} {} step {}", name, prec.name(), j), static_cast<double>(j) / static_cast<double>(steps));
   }
   // Drift: log-log slope of the per-window maxima against time over the second half (0: bounded,
@@ -120,19 +179,30 @@ long_run run_long(const long_run_case& c, const precision& prec, long long steps
   std::vector<bool> use(times.size(), false);
   for (std::size_t k = times.size() / 2; k < times.size(); ++k) use[k] = true;
   const bool ran = !status.is_fault();
+  // The figures of the energy change and the phase: enclosed above double, the run's own in double.
+  figure largest = figure::of(overall), last = figure::of(maxima.empty() ? Real(0) : maxima.back()),
+         measured = figure::of(measured_phase_error), predicted = figure::of(predicted_phase_error),
+         ratio = figure::of(Real(measured_phase_error / predicted_phase_error));
+  if (enclosed) {
+    largest = detail::enclosed_figure(enclosed->overall);
+    last = detail::enclosed_figure(enclosed->window_max);
+    measured = detail::enclosed_figure(enclosed->measured_phase_error);
+    predicted = detail::enclosed_figure(enclosed->predicted_phase_error);
+    ratio = detail::enclosed_figure(interval(enclosed->measured_phase_error / enclosed->predicted_phase_error));
+  }
   out.row = {figure::text(std::string(traits_of(c.scheme).name)),
              figure::text(energy_name(c.monitored)),
              figure::text(prec.name()),
              figure::integer(steps),
-             ran ? figure::of(overall) : status,
-             ran ? figure::of(maxima.empty() ? Real(0) : maxima.back()) : figure{},
+             ran ? largest : status,
+             ran ? last : figure{},
              ran ? figure::of(log_log_slope(times, maxima, use)) : figure{},
              figure::of(det_minus_one),
              figure::of(Real(abs(det_minus_one) * Real(steps))),
              figure::of(Real(phase_per_step / Real(theta))),
-             ran ? figure::of(measured_phase_error) : figure{},
-             ran ? figure::of(predicted_phase_error) : figure{},
-             ran ? figure::of(Real(measured_phase_error / predicted_phase_error)) : figure{},
+             ran ? measured : figure{},
+             ran ? predicted : figure{},
+             ran ? ratio : figure{},
              status};
   return out;
 }
@@ -150,7 +220,10 @@ section_result run_long_time(const long_time_settings& s) {
                  "least-squares slope of log(per-window maximum of |E(y_j) − E(y₀)|/E(y₀)) against log t over the second "
                  "half (≈ 0 bounded oscillation, 1 linear drift, 0.5 round-off random walk). Phase error: the unwrapped "
                  "angle of (q, p/(mω)) minus ωt at the end, against (φ/h − ω)t with φ the argument of the exact "
-                 "characteristic root of Φ.\n\n"
+                 "characteristic root of Φ. Above double the energy changes and the phase errors are enclosures (MPFI): each "
+                 "iterate, an exact binary value, with the energy evaluated on it at the run's own m, ω, h and the phase "
+                 "from the rounded matrix's exact entries, so every digit shown is guaranteed (report.json gives each "
+                 "radius); the drift slope is a least-squares statistic of the run's own values.\n\n"
                  "The matrices are rounded to the working precision, so det Φ (computed exactly from the rounded entries, "
                  "then shown in the run's precision) is 1 only to within round-off: each step multiplies every quadratic "
                  "invariant by det Φ, a drift of about |det Φ − 1| per step that the table compares with the measured one. "

@@ -17,14 +17,6 @@ struct enclosed_errors {
   interval p{0}, q{0}, energy{0}, discrete_energy{0};
 };
 
-/// [max of lower ends, max of upper ends]: an enclosure of max(a, b) for every a in x, b in y.
-interval enclosed_max(const interval& x, const interval& y) {
-  using real = boost::multiprecision::mpfr_float;
-  const real lo = lower(x) > lower(y) ? real(lower(x)) : real(lower(y));
-  const real hi = upper(x) > upper(y) ? real(upper(x)) : real(upper(y));
-  return interval(lo, hi);
-}
-
 /// The stated experiment (paper_table.hpp's table_errors): m = 1, ω = 2π, h = 1/N, y_0 = (mω, 0),
 /// maximum over j = 0..N.
 enclosed_errors enclosed_run(bool simpson_scheme, long long N) {
@@ -60,7 +52,49 @@ std::optional<long> proved_order(const interval& log2_ratio) {
   return std::nullopt;
 }
 
+/// Where x lies against the bound a/b.
+bound_decision against(const interval& x, const std::pair<long, long>& bound) {
+  const interval b = interval(bound.first) / interval(bound.second);
+  if (upper(x) <= lower(b)) return bound_decision::at_most;
+  if (lower(x) > upper(b)) return bound_decision::above;
+  return bound_decision::undecided;
+}
+
 }  // namespace
+
+enclosed_convergence enclosed_convergence_of(bool simpson_scheme, const std::vector<long long>& meshes, unsigned digits) {
+  const scoped_interval_digits scope(digits);
+  enclosed_convergence out;
+  out.meshes = meshes;
+  std::vector<enclosed_errors> runs;
+  for (const long long N : meshes) {
+    runs.push_back(enclosed_run(simpson_scheme, N));
+    out.error_p.push_back(enclosure_text(runs.back().p, 6));
+    out.error_q.push_back(enclosure_text(runs.back().q, 6));
+  }
+  for (std::size_t k = 0; k + 1 < runs.size(); ++k) {
+    const interval ratio_p = log2(interval(runs[k].p / runs[k + 1].p)), ratio_q = log2(interval(runs[k].q / runs[k + 1].q));
+    out.log2_ratio_p.push_back(enclosure_text(ratio_p, 6));
+    out.log2_ratio_q.push_back(enclosure_text(ratio_q, 6));
+    out.order_p.push_back(proved_order(ratio_p));
+    out.order_q.push_back(proved_order(ratio_q));
+  }
+  return out;
+}
+
+bounded_errors enclosed_errors_within(bool simpson_scheme, long long N, const std::vector<std::pair<long, long>>& bounds,
+                                      unsigned digits) {
+  const scoped_interval_digits scope(digits);
+  const enclosed_errors e = enclosed_run(simpson_scheme, N);
+  const interval m_omega = 2 * boost::math::constants::pi<interval>();  // m = 1
+  const interval p = e.p / m_omega, worst = enclosed_max(p, e.q);
+  bounded_errors out{enclosure_text(p, 6), enclosure_text(e.q, 6), {}, {}};
+  for (const std::pair<long, long>& bound : bounds) {
+    out.p_within.push_back(against(p, bound));
+    out.worst_within.push_back(against(worst, bound));
+  }
+  return out;
+}
 
 std::array<enclosed_table_row, 8> enclosed_table1(unsigned digits, long shown_digits) {
   const scoped_interval_digits scope(digits);

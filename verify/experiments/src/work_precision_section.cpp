@@ -7,6 +7,7 @@
 #include <simpson/verify/scheme_style.hpp>
 
 #include <simpson/verify/floating_tools.hpp>
+#include "enclosed_figures.hpp"
 #include "timed_runs.hpp"
 
 #include <simpson/energy.hpp>
@@ -18,6 +19,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 
 namespace simpson::verify {
 namespace {
@@ -29,9 +31,46 @@ struct measured_run {
   figure seconds;        // minimum run time
 };
 
+/// The exact solution at t_j = j/N (ω = 2π, y₀ = (mω, 0) exactly): q(t_j) = sin(2π t_j) and
+/// p(t_j)/(mω) = cos(2π t_j), enclosed (p holds p/(mω)). Empty in double.
+using enclosed_solution = std::vector<phase_point<interval>>;
+
+enclosed_solution enclose_exact_solution(long long N, long long periods) {
+  enclosed_solution out;
+  const interval two_pi = 2 * boost::math::constants::pi<interval>();
+  const long long steps = N * periods;
+  out.reserve(static_cast<std::size_t>(steps) + 1);
+  for (long long j = 0; j <= steps; ++j) {
+    const interval angle = two_pi * interval(j * periods) / interval(steps);
+    out.push_back({interval(cos(angle)), interval(sin(angle))});
+  }
+  return out;
+}
+
+/// The row's error and energy figures: the largest errors in q and p/(mω), the relative change of H
+/// at the end, and of H_d for the Simpson family (else empty); in Scalar, the run's own precision or
+/// intervals above double (figure_of makes the figure).
+template <class Scalar, class FigureOf>
+void add_error_figures(measured_run& out, bool simpson_family, const Scalar& error_q, const Scalar& error_p,
+                       const oscillator_parameters<Scalar>& par, const phase_point<Scalar>& first, const phase_point<Scalar>& last,
+                       FigureOf&& figure_of) {
+  using std::abs;
+  out.row.push_back(figure_of(error_q));
+  out.row.push_back(figure_of(error_p));
+  const Scalar E0 = energy(par, first);
+  out.row.push_back(figure_of(Scalar(abs(Scalar(energy(par, last) - E0)) / E0)));
+  if (simpson_family) {
+    const Scalar Ed0 = discrete_energy(par, first);
+    out.row.push_back(figure_of(Scalar(abs(Scalar(discrete_energy(par, last) - Ed0)) / abs(Ed0))));
+  } else {
+    out.row.push_back(figure{});
+  }
+}
+
 template <class Real>
 measured_run measure(scheme_id scheme, const precision& prec, long long N, long long periods,
-                     const timing_policy& timing, bool benchmark, const std::vector<phase_point<Real>>& exact) {
+                     const timing_policy& timing, bool benchmark, const std::vector<phase_point<Real>>& exact,
+                     const enclosed_solution& enclosed_exact) {
   using std::abs;
   const Real omega = 2 * boost::math::constants::pi<Real>();
   const long long steps = N * periods;
@@ -44,6 +83,11 @@ measured_run measure(scheme_id scheme, const precision& prec, long long N, long 
   phase_point<Real> y = y0;
   figure status = figure::text("ok");
   const Real amplitude = abs(y0.p) / (par.m() * omega);
+  // Above double, the same maxima enclosed: each iterate (an exact binary value) against the
+  // enclosed exact solution, so the figures carry only guaranteed digits.
+  const bool enclosed = !enclosed_exact.empty();
+  interval enclosed_q(0), enclosed_p(0);
+  const interval m_omega = enclosed ? interval(2 * boost::math::constants::pi<interval>() * detail::exact_interval(par.m())) : interval(0);
   try {
     for (long long j = 1; j <= steps; ++j) {
       if ((j & 1023) == 0) throw_if_interrupted();
@@ -60,6 +104,13 @@ measured_run measure(scheme_id scheme, const precision& prec, long long N, long 
       }
       error_q = std::max(error_q, eq);
       error_p = std::max(error_p, ep);
+      if constexpr (detail::enclosed_above_double_v<Real>) {
+        if (enclosed) {
+          const phase_point<interval>& e = enclosed_exact[static_cast<std::size_t>(j)];
+          enclosed_q = enclosed_max(enclosed_q, abs(interval(detail::exact_interval(y.q) - e.q)));
+          enclosed_p = enclosed_max(enclosed_p, abs(interval(detail::exact_interval(y.p) / m_omega - e.p)));
+        }
+      }
     }
   } catch (const std::domain_error& e) {
     status = figure::fault(std::string("failed: ") + e.what());
@@ -76,18 +127,24 @@ measured_run measure(scheme_id scheme, const precision& prec, long long N, long 
     if (timing.max_runs > 0 && benchmark) out.timing_row.push_back(figure{});
     return out;
   }
-  const Real H0 = energy(par, y0), error = std::max(error_q, error_p);
-  out.row.push_back(figure::of(error_q));
-  out.row.push_back(figure::of(error_p));
-  out.row.push_back(figure::of(Real(abs(Real(energy(par, y) - H0)) / H0)));
-  if (scheme == scheme_id::simpson || scheme == scheme_id::simpson_elimination) {
-    const Real Hd0 = discrete_energy(par, y0);
-    out.row.push_back(figure::of(Real(abs(Real(discrete_energy(par, y) - Hd0)) / abs(Hd0))));
+  const bool simpson_family = scheme == scheme_id::simpson || scheme == scheme_id::simpson_elimination;
+  if (enclosed) {
+    if constexpr (detail::enclosed_above_double_v<Real>) {
+      // The energies at the run's own parameters (m, ω and h as rounded in Real, exact values).
+      const oscillator_parameters<interval> at{detail::exact_interval(par.m()), detail::exact_interval(par.omega()),
+                                               detail::exact_interval(par.h())};
+      add_error_figures(out, simpson_family, enclosed_q, enclosed_p, at, {detail::exact_interval(y0.p), detail::exact_interval(y0.q)},
+                        {detail::exact_interval(y.p), detail::exact_interval(y.q)}, detail::enclosed_figure);
+      const interval error_both = enclosed_max(enclosed_q, enclosed_p);
+      out.row.push_back(figure::flag(upper(error_both) <= lower(detail::exact_interval(floor_level))));
+      out.error = detail::enclosed_figure(error_both);
+    }
   } else {
-    out.row.push_back(figure{});
+    add_error_figures(out, simpson_family, error_q, error_p, par, y0, y, [](const Real& v) { return figure::of(v); });
+    const Real error = std::max(error_q, error_p);
+    out.row.push_back(figure::flag(error <= floor_level));
+    out.error = figure::of(error);
   }
-  out.row.push_back(figure::flag(error <= floor_level));
-  out.error = figure::of(error);
   if (timing.max_runs == 0) return out;
 
   // Timing: one warm-up run, then runs until max_runs or max_seconds; each run is `steps` steps.
@@ -119,7 +176,9 @@ section_result run_work_precision(const work_precision_settings& s) {
                  "implicit midpoint rule, Gauss–Legendre and Lobatto IIIA–IIIB by solving their (linear) stage equations at "
                  "every step, Störmer–Verlet, Yoshida and RK4 explicitly. Errors: maxima over all t_j of |q_j − q(t_j)| and "
                  "|p_j − p(t_j)|/(mω), computed in the run's precision; the relative error of H (and of H_d for Simpson) at "
-                 "the end. {} "
+                 "the end. Above double the error and energy figures are enclosures (MPFI): each iterate, an exact binary "
+                 "value, against the exact solution at t_j = j/N with 2π enclosed, and the energies at the run's own "
+                 "rounded m, ω, h; only guaranteed digits are shown, with the radius where fewer than three are. {} "
                  "A run whose state is not finite, grows past 10⁶ times the amplitude (unstable, with the step), or throws "
                  "is recorded with its status. At the round-off floor: error ≤ 100 N eps. On this linear problem every "
                  "scheme could be reduced to a 2 × 2 matrix and cost the same per step; the peers run their general "
@@ -153,9 +212,14 @@ section_result run_work_precision(const work_precision_settings& s) {
     panel n_panel{prec.name(), {"N (steps per period)", true}, {error_label, true}, {}, "bottom left"};
     visit_floating(prec, [&](auto precision_tag) {
       using Real = typename decltype(precision_tag)::type;
-      // The exact solution at every t_j of each N, shared by the schemes.
+      // The exact solution at every t_j of each N, shared by the schemes; above double, enclosed too
+      // (in enough digits to hold Real's values exactly).
       std::map<long long, std::vector<phase_point<Real>>> exact_by_N;
+      std::map<long long, enclosed_solution> enclosed_by_N;
+      std::optional<scoped_interval_digits> interval_digits;
+      if constexpr (detail::enclosed_above_double_v<Real>) interval_digits.emplace(detail::enclosure_digits_for<Real>());
       for (const long long N : s.meshes) {
+        if constexpr (detail::enclosed_above_double_v<Real>) enclosed_by_N[N] = enclose_exact_solution(N, s.periods);
         const Real omega = 2 * boost::math::constants::pi<Real>();
         const long long steps = N * s.periods;
         const oscillator_parameters<Real> par{Real(1), omega, step_size(Real(s.periods), steps)};
@@ -170,7 +234,7 @@ section_result run_work_precision(const work_precision_settings& s) {
         series by_seconds{std::string(traits_of(scheme).name), style.line, style.color, style.point, style.dash};
         series by_mesh = by_seconds;
         for (const long long N : s.meshes) {
-          measured_run m = measure<Real>(scheme, prec, N, s.periods, s.timing, s.benchmark, exact_by_N[N]);
+          measured_run m = measure<Real>(scheme, prec, N, s.periods, s.timing, s.benchmark, exact_by_N[N], enclosed_by_N[N]);
           progress_step("work_precision", fmt::format("{} {} N = {}", traits_of(scheme).name, prec.name(), N));
           if (timed) by_seconds.add(m.seconds, m.error);
           by_mesh.add(figure::integer(N), m.error);

@@ -87,8 +87,24 @@ std::string fixed_decimal(const std::string& text, int decimals) {
   return (negative ? "-" : "") + out;
 }
 
+namespace {
+/// The significant digits of a decimal text ("1.4427e-14": 5; "0": 0).
+int significant_digits(const std::string& text) {
+  int count = 0;
+  bool leading = true;
+  for (const char c : text.substr(0, text.find_first_of("eE"))) {
+    if (c < '0' || c > '9') continue;
+    if (leading && c == '0') continue;
+    leading = false;
+    ++count;
+  }
+  return count;
+}
+}  // namespace
+
 std::string display(const figure& f, int digits, bool fixed) {
   if (f.what() != figure::kind::number) return f.value();
+  if (!f.radius().empty() && (fixed || significant_digits(f.value()) < digits)) return f.full_text();
   return fixed ? fixed_decimal(f.value(), digits) : round_decimal(f.value(), digits);
 }
 

@@ -15,7 +15,7 @@ json figure_json(const figure& f) {
     case figure::kind::empty: return "";
     case figure::kind::number:
       if (f.as_computed_double()) return *f.as_computed_double();
-      return f.value();
+      return f.full_text();
     case figure::kind::integer: return std::stoll(f.value());
     case figure::kind::flag: return f.value() == "yes";
     case figure::kind::exact:
@@ -71,7 +71,7 @@ std::string table_csv(const table& t) {
   for (std::size_t k = 0; k < t.columns.size(); ++k) csv += (k ? "," : "") + csv_field(t.columns[k].key);
   csv += "\n";
   for (const table_row& row : t.rows) {
-    for (std::size_t k = 0; k < t.columns.size(); ++k) csv += (k ? "," : "") + csv_field(row[k].value());
+    for (std::size_t k = 0; k < t.columns.size(); ++k) csv += (k ? "," : "") + csv_field(row[k].full_text());
     csv += "\n";
   }
   return csv;

@@ -8,10 +8,11 @@
 //   below every point of the bound, and fails when every point is above;
 // - otherwise the precision is not enough: undecided, and the caller raises it.
 
+#include <simpson/verify/enclosure_undecided.hpp>
+
 #include <simpson/interval.hpp>
 #include <simpson/residual.hpp>
 
-#include <stdexcept>
 #include <string>
 
 namespace simpson::verify {
@@ -30,12 +31,5 @@ enclosure_outcome decide(const residual_and_bound<interval>& r);
 
 /// The rule of decide() in words, for the evidence.
 std::string enclosure_rule(bool zero_claimed);
-
-/// Thrown when an enclosure decides nothing within the run's precision budget: the claim's verdict
-/// is then undecided, with this message as its evidence.
-class enclosure_undecided : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 }  // namespace simpson::verify

@@ -148,13 +148,12 @@ json enclosure_rung(const run_context& ctx, const std::string& stream, Check&& c
 /// precision of ctx; with AllowExact false (checks that need cos or sin) exact precisions are
 /// listed as skipped. Evidence: per precision the largest residual, its bound, the largest
 /// residual/bound ratio and whether every sample was within its bound; whether the largest
-/// residuals fall along the ladder; and, with Enclosed, the enclosure rung. Sets `within` to what
-/// decides: the enclosures (and an exact rung's residual, which must be 0); without Enclosed (a
-/// check the interval scalar cannot run yet) the ladder's bounds, said so in the evidence.
-template <bool AllowExact = true, bool Enclosed = true, class Check>
+/// residuals fall along the ladder; and the enclosure rung. Sets `within` to what decides: the
+/// enclosures (and an exact rung's residual, which must be 0); the ladder measures.
+template <bool AllowExact = true, class Check>
 json numeric_recheck(const run_context& ctx, const std::string& stream, Check&& check, bool& within) {
   json rungs = json::array();
-  bool ladder_within = true, exact_zero = true;
+  bool exact_zero = true;
   double previous_log10 = 1e9;
   bool falls = true;
   std::string diagnosis;
@@ -211,7 +210,6 @@ json numeric_recheck(const run_context& ctx, const std::string& stream, Check&& 
     if (log10_residual > -1e8) previous_log10 = log10_residual;
     if (prec.exact() && !rung["within_bound"].get<bool>()) exact_zero = false;
     if (!rung["within_bound"].get<bool>()) {
-      ladder_within = false;
       if (prec.digits10() > 20 && log10_residual > -19) {  // within ~3 decades of double epsilon
         diagnosis = "residual in " + prec.name() +
                     " is stuck near double round-off: a double has leaked into generic code";
@@ -226,15 +224,10 @@ json numeric_recheck(const run_context& ctx, const std::string& stream, Check&& 
   out["residuals_fall_with_precision"] = falls;
   out["falls_means"] = "max residual/bound times epsilon (the residual in units of its condition factor) does not rise along the ladder";
   if (!diagnosis.empty()) out["diagnosis"] = diagnosis;
-  if constexpr (Enclosed) {
-    bool enclosed_holds = false;
-    out["enclosure"] = enclosure_rung(ctx, stream, check, enclosed_holds);
-    within = enclosed_holds && exact_zero;
-    out["decided_by"] = "the enclosures (and an exact rung's residual, which must be 0); the ladder measures";
-  } else {
-    within = ladder_within;
-    out["decided_by"] = "the ladder's round-off bounds: no enclosure of this check yet";
-  }
+  bool enclosed_holds = false;
+  out["enclosure"] = enclosure_rung(ctx, stream, check, enclosed_holds);
+  within = enclosed_holds && exact_zero;
+  out["decided_by"] = "the enclosures (and an exact rung's residual, which must be 0); the ladder measures";
   return out;
 }
 

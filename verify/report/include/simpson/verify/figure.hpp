@@ -41,12 +41,23 @@ class figure {
   static figure flag(bool b) { return figure(kind::flag, b ? "yes" : "no"); }
   static figure text(std::string t) { return figure(kind::text, std::move(t)); }
   static figure fault(std::string why) { return figure(kind::fault, std::move(why)); }
+  /// A number known by an enclosure (simpson::enclosure_of in interval.hpp): the midpoint with only
+  /// guaranteed digits ("1.4427e-14", or "0" when none is) and the radius ("3e-31").
+  static figure enclosed(std::string midpoint, std::string radius) {
+    figure f(kind::number, std::move(midpoint));
+    f.radius_ = std::move(radius);
+    return f;
+  }
 
   kind what() const noexcept { return kind_; }
   bool is_fault() const noexcept { return kind_ == kind::fault; }
   bool is_number() const noexcept { return kind_ == kind::number; }
   /// The decimal text (number, exact, integer), the word (flag, text) or the fault's reason.
   const std::string& value() const noexcept { return text_; }
+  /// The radius of an enclosed number (figure::enclosed), else empty.
+  const std::string& radius() const noexcept { return radius_; }
+  /// value(), and " ± radius" for an enclosed number: the text of every file but the tables for people.
+  std::string full_text() const { return radius_.empty() ? text_ : text_ + " ± " + radius_; }
   /// The value itself when it was computed in double (JSON writes it as a number).
   const std::optional<double>& as_computed_double() const noexcept { return double_; }
   /// For plots only (gnuplot reads doubles): the value when it lies within double's normal range,
@@ -56,12 +67,15 @@ class figure {
   /// leading digits of the text (so 3.1e-2987 gives -2986.5); nothing for a zero, a fault or a word.
   std::optional<double> log10_magnitude() const;
 
-  friend bool operator==(const figure& a, const figure& b) { return a.kind_ == b.kind_ && a.text_ == b.text_; }
+  friend bool operator==(const figure& a, const figure& b) {
+    return a.kind_ == b.kind_ && a.text_ == b.text_ && a.radius_ == b.radius_;
+  }
 
  private:
   figure(kind k, std::string t) : kind_(k), text_(std::move(t)) {}
   kind kind_ = kind::empty;
   std::string text_;
+  std::string radius_;
   std::optional<double> double_;
 };
 
@@ -74,7 +88,8 @@ std::string round_decimal(const std::string& text, int digits);
 std::string fixed_decimal(const std::string& text, int decimals);
 
 /// Figure text for people: numbers rounded to `digits` significant digits (or, when `fixed`, to
-/// `digits` decimals), the rest as they are.
+/// `digits` decimals), the rest as they are. An enclosed number with fewer guaranteed digits than
+/// that is shown with its radius ("1.4e-14 ± 3e-16", "0 ± 2e-50"): no digit shown is unguaranteed.
 std::string display(const figure& f, int digits, bool fixed = false);
 
 /// The fault of a state that left its bounded orbit: "unstable (step j)".
