@@ -17,6 +17,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <map>
 
@@ -520,6 +521,26 @@ std::vector<printed_entry> synthetic_table1(const convention_choice& choice, con
 TEST(ConventionSearch, ATableMadeUnderTheStatedConventionsHolds) {
   const convention_search_result r = search_table1(synthetic_table1(table1_stated_conventions(), {{"m", 1}, {"amplitude", 1}, {"phase", 0}}));
   EXPECT_TRUE(r.stated_reproduces()) << describe(r.stated);
+}
+
+TEST(ConventionSearch, TheStatedEntriesAreJudgedByEnclosuresAsInDoubleAndAMarginTooThinIsUndecided) {
+  const std::vector<printed_entry> table = synthetic_table1(table1_stated_conventions(), {{"m", 1}, {"amplitude", 1}, {"phase", 0}});
+  std::vector<printed_value> printed;
+  for (const printed_entry& e : table) printed.push_back({e.value, e.digits, e.round_off});
+  const std::vector<entry_decision> made = enclosed_stated_entries(printed);
+  ASSERT_EQ(made.size(), table.size());
+  for (std::size_t k = 0; k < made.size(); ++k) EXPECT_EQ(made[k], entry_decision::reproduced) << table[k].row << " " << table[k].column;
+  // One entry off by 5%: that entry, and only it, not reproduced.
+  std::vector<printed_value> altered = printed;
+  altered[1].value *= 1.05;
+  const std::vector<entry_decision> judged = enclosed_stated_entries(altered);
+  EXPECT_EQ(judged[1], entry_decision::not_reproduced);
+  EXPECT_EQ(std::count(judged.begin(), judged.end(), entry_decision::reproduced), static_cast<long>(judged.size()) - 1);
+  // A value printed with 17 digits judged in 10-digit intervals: the enclosure is wider than the
+  // half unit of the last digit and decides nothing.
+  std::vector<printed_value> precise = printed;
+  precise[0] = {table1_under(table1_stated_conventions(), {{"m", 1}, {"amplitude", 1}, {"phase", 0}})[0].value, 17, false};
+  EXPECT_EQ(enclosed_stated_entries(precise, 10)[0], entry_decision::undecided);
 }
 
 TEST(ConventionSearch, AHiddenConventionIsRecoveredWithItsParameters) {

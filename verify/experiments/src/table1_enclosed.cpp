@@ -6,6 +6,8 @@
 
 #include <simpson/interval.hpp>
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <optional>
 
@@ -78,6 +80,41 @@ enclosed_convergence enclosed_convergence_of(bool simpson_scheme, const std::vec
     out.log2_ratio_q.push_back(enclosure_text(ratio_q, 6));
     out.order_p.push_back(proved_order(ratio_p));
     out.order_q.push_back(proved_order(ratio_q));
+  }
+  return out;
+}
+
+std::vector<entry_decision> enclosed_stated_entries(const std::vector<printed_value>& printed, unsigned digits) {
+  const scoped_interval_digits scope(digits);
+  std::array<std::array<enclosed_errors, 3>, 2> runs;
+  for (int s = 0; s < 2; ++s) {
+    for (std::size_t k = 0; k < 3; ++k) runs[static_cast<std::size_t>(s)][k] = enclosed_run(s == 1, published_meshes[k]);
+  }
+  std::vector<entry_decision> out;
+  for (std::size_t r = 0; r < published_rows().size(); ++r) {
+    const published_row& row = published_rows()[r];
+    for (std::size_t k = 0; k < published_meshes.size(); ++k) {
+      const std::size_t index = r * published_meshes.size() + k;
+      if (index >= printed.size()) return out;
+      const printed_value& p = printed[index];
+      const interval error = runs[row.simpson_scheme ? 1 : 0][k].*field_of(row.field);
+      if (p.round_off) {
+        out.push_back(certain_sign(error) == 0 ? entry_decision::reproduced : entry_decision::not_reproduced);
+        continue;
+      }
+      // The printed decimal and half a unit of its last digit, both exact decimals, enclosed.
+      const std::string mantissa = fmt::format("{:.{}e}", p.value, std::max(p.digits - 1, 0));
+      const long exponent = std::stol(mantissa.substr(mantissa.find('e') + 1));
+      const interval centre(mantissa), half(fmt::format("5e{}", exponent - p.digits));
+      const interval low = centre - half, high = centre + half;
+      if (lower(error) >= upper(low) && upper(error) <= lower(high)) {
+        out.push_back(entry_decision::reproduced);
+      } else if (upper(error) < lower(low) || lower(error) > upper(high)) {
+        out.push_back(entry_decision::not_reproduced);
+      } else {
+        out.push_back(entry_decision::undecided);
+      }
+    }
   }
   return out;
 }

@@ -305,6 +305,30 @@ claim_result check_table_values(const run_context& ctx) {
                         {"stated", candidate_json(search.stated, entries)},
                         {"best", candidate_json(search.tried.front(), entries)},
                         {"tried_best_first", tried}};
+  // The stated conventions judged again by enclosures of the exact schemes' errors: each entry on
+  // the same side of its printed digits' interval as in the double run, or the verdict is undecided.
+  std::vector<printed_value> printed_values;
+  for (const printed_entry& e : entries) printed_values.push_back({e.value, e.digits, e.round_off});
+  const std::vector<entry_decision> enclosed = enclosed_stated_entries(printed_values, table_enclosure_digits);
+  std::size_t enclosed_reproduced = 0;
+  std::string disagreements;
+  for (std::size_t k = 0; k < entries.size() && k < enclosed.size(); ++k) {
+    const bool in_double = search.stated.entries[k].reproduced;
+    if (enclosed[k] == entry_decision::reproduced) ++enclosed_reproduced;
+    if (enclosed[k] == entry_decision::undecided || (enclosed[k] == entry_decision::reproduced) != in_double) {
+      disagreements += (disagreements.empty() ? "" : "; ") + entries[k].row + " " + entries[k].column;
+    }
+  }
+  evidence["stated_enclosed"] = {
+      {"method", "enclosures (MPFI, " + std::to_string(table_enclosure_digits) +
+                     " digits) of the exact schemes' errors under the stated conventions against the half-unit interval of each "
+                     "printed value (the printed decimal, exactly); a round-off entry against 0"},
+      {"reproduced", std::to_string(enclosed_reproduced) + " of " + std::to_string(entries.size())},
+      {"agrees_with_double", disagreements.empty()}};
+  if (enclosed.size() != entries.size() || !disagreements.empty()) {
+    throw enclosure_undecided("table-values: under the stated conventions the enclosures and the double run do not decide the same "
+                              "entries (" + disagreements + "): a value within round-off of a printed digit's boundary");
+  }
   if (search.stated_reproduces()) return confirmed_if(true, evidence, "Table 1 is reproduced under the stated conventions.");
   if (const convention_candidate* found = search.reproducing()) {
     return words_erratum(evidence, "Table 1 is reproduced, every entry within its printed digits, under: " + describe(*found),

@@ -46,6 +46,21 @@ struct bounded_errors {
   std::string p_over_m_omega, q;
   std::vector<bound_decision> p_within, worst_within;  // one per bound
 };
+/// Table 1's printed entries (table1_printed's order: published_rows() by published_meshes) judged
+/// against the exact schemes under the stated conventions, enclosed: an entry printed with d digits
+/// is reproduced when the error's enclosure lies inside the half-unit interval of its last digit
+/// (the printed decimal, exactly), not reproduced when it lies outside, undecided when it straddles
+/// an end. An entry printed at round-off is reproduced when the enclosure holds 0 (the exact scheme
+/// conserves the quantity: what remains in a floating run is round-off) and not reproduced when it
+/// excludes 0.
+enum class entry_decision { reproduced, not_reproduced, undecided };
+struct printed_value {
+  double value = 0;  // the printed decimal, as read
+  int digits = 3;
+  bool round_off = false;
+};
+std::vector<entry_decision> enclosed_stated_entries(const std::vector<printed_value>& printed, unsigned digits = 40);
+
 bounded_errors enclosed_errors_within(bool simpson_scheme, long long N, const std::vector<std::pair<long, long>>& bounds,
                                       unsigned digits = 40);
 
