@@ -143,6 +143,10 @@ TEST(Scene, RejectsEveryBadExperimentParameter) {
                        "'nonlinear.problems'[1]: unknown name 'lorenz' (known: pendulum, kepler, henon-heiles)"));
   EXPECT_TRUE(mentions(section(R"("nonlinear": {"problems": ["kepler", "kepler"]})"), "'kepler' is listed twice"));
   EXPECT_TRUE(mentions(section(R"("nonlinear": {"problems": []})"), "'nonlinear.problems' must be a non-empty list"));
+  EXPECT_TRUE(mentions(section(R"("floating": {"steppers": ["phi3-matrix", "rk4"]})"), "rk4"));
+  EXPECT_TRUE(mentions(section(R"("floating": {"formats": ["half"]})"), "half"));
+  EXPECT_TRUE(mentions(section(R"("floating": {"h_denominator": 0})"), "'floating.h_denominator' must be an integer from 1"));
+  EXPECT_TRUE(mentions(section(R"("floating": {"gappa": true})"), "gappa"));
   EXPECT_TRUE(mentions(section(R"("nonlinear": {"pendulum_q0": 3.1416})"), "'nonlinear.pendulum_q0' must be a number greater than 0"));
   EXPECT_TRUE(mentions(section(R"("nonlinear": {"pendulum_q0": 0})"), "'nonlinear.pendulum_q0' must be a number greater than 0"));
   EXPECT_TRUE(mentions(section(R"("nonlinear": {"eccentricity": 0.99})"), "'nonlinear.eccentricity' must be a number"));

@@ -2,6 +2,7 @@
 
 #include <simpson/verify/certify.hpp>
 
+#include <simpson/verify/command.hpp>
 #include <simpson/verify/interruption.hpp>
 
 #include <chrono>
@@ -13,34 +14,6 @@
 #include <stdexcept>
 
 namespace simpson::verify {
-namespace {
-
-/// A command's output (stdout and stderr) and exit status.
-struct command_result {
-  int status = -1;
-  std::string output;
-};
-
-command_result run_command(const std::string& command) {
-  command_result out;
-  std::FILE* pipe = ::popen(("(" + command + ") 2>&1").c_str(), "r");  // the shell's own messages too
-  if (pipe == nullptr) return out;
-  char buffer[4096];
-  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) out.output += buffer;
-  out.status = ::pclose(pipe);
-  return out;
-}
-
-/// The first `lines` lines of a text.
-std::string first_lines(const std::string& text, int lines) {
-  std::istringstream in(text);
-  std::string line, out;
-  for (int k = 0; k < lines && std::getline(in, line); ++k) out += (out.empty() ? "" : "\n") + line;
-  return out;
-}
-
-}  // namespace
-
 std::string coqc_version() {
   const command_result r = run_command("coqc --version");
   if (r.status != 0) return "";

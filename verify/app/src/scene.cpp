@@ -248,6 +248,15 @@ experiment_settings parse_experiments(const nlohmann::json& doc, const std::stri
     if (r.has("double_pendulum_N")) n.double_pendulum_N = r.integers("double_pendulum_N", 1, 100'000'000);
     e.nonlinear = n;
   }
+  if (doc.contains("floating")) {
+    const section_reader r(origin, "floating", doc["floating"], {"steppers", "formats", "h_denominator", "samples"});
+    floating_settings f;
+    if (r.has("steppers")) f.steppers = r.names("steppers", floating_stepper_names());
+    if (r.has("formats")) f.formats = r.names("formats", {"float32", "double"});
+    if (r.has("h_denominator")) f.h_denominator = r.integer("h_denominator", 1, 1'000'000);
+    if (r.has("samples")) f.samples = static_cast<int>(r.integer("samples", 1, 10'000'000));
+    e.floating = f;
+  }
   return e;
 }
 
@@ -272,7 +281,7 @@ scene parse_scene(const std::string& text, const std::string& origin) {
   if (!doc.is_object()) fail(origin, "the top level must be an object");
   static const std::set<std::string> known{"name", "description", "claims", "precisions", "samples", "seed", "expected_overrides",
                                          "paper", "table1", "work_precision", "stability", "long_time",
-                                         "nonlinear"};
+                                         "nonlinear", "floating"};
   for (const auto& item : doc.items()) {
     if (!known.count(item.key())) fail(origin, "unknown key '" + item.key() + "'");
   }

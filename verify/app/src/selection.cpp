@@ -52,12 +52,14 @@ void keep_sections(scene& s, const std::vector<std::string>& names) {
   else if (!e.long_time) e.long_time = long_time_settings{};
   if (!wanted("nonlinear")) e.nonlinear.reset();
   else if (!e.nonlinear) e.nonlinear = nonlinear_settings{};
+  if (!wanted("floating")) e.floating.reset();
+  else if (!e.floating) e.floating = floating_settings{};
 }
 
 }  // namespace
 
 const std::vector<std::string>& section_names() {
-  static const std::vector<std::string> names{"table1", "work_precision", "stability", "long_time", "nonlinear"};
+  static const std::vector<std::string> names{"table1", "work_precision", "stability", "long_time", "nonlinear", "floating"};
   return names;
 }
 

@@ -1,11 +1,13 @@
 #pragma once
 // The scene sections beside the claims: the paper's experiment (table1), error against run time
 // (work_precision), stiff and extreme cases (stability), long runs (long_time), and beyond the
-// paper, any potential and several degrees of freedom (nonlinear). Each is
+// paper, any potential and several degrees of freedom (nonlinear), the floating-point programs'
+// round-off proved (floating). Each is
 // computed only when its scene asks for it, and returns a section_result: its tables and plots as
 // data (result_model.hpp), rendered by section_render.hpp. Run times are timing columns, which
 // report.json keeps in members named "timing" (left out when reports are compared).
 
+#include <simpson/verify/floating_section.hpp>
 #include <simpson/verify/long_time_section.hpp>
 #include <simpson/verify/nonlinear_section.hpp>
 #include <simpson/verify/stability_section.hpp>
@@ -25,7 +27,8 @@ struct experiment_settings {
   std::optional<stability_settings> stability;
   std::optional<long_time_settings> long_time;
   std::optional<nonlinear_settings> nonlinear;
-  bool any() const { return table1 || work_precision || stability || long_time || nonlinear; }
+  std::optional<floating_settings> floating;
+  bool any() const { return table1 || work_precision || stability || long_time || nonlinear || floating; }
 };
 
 }  // namespace simpson::verify

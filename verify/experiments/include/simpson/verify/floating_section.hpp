@@ -1,0 +1,26 @@
+#pragma once
+// The floating section (issue 29, first part): each stepper's one-step round-off in float32 and
+// double, proved by Gappa from its rounded program and checked by coqc, beside the largest error
+// seen on random states (verify/floating).
+
+#include <simpson/verify/result_model.hpp>
+
+#include <string>
+#include <vector>
+
+namespace simpson::verify {
+
+struct floating_settings {
+  std::vector<std::string> steppers{"phi3-matrix", "phi3-shear", "newmark-matrix", "leapfrog-verinum"};
+  std::vector<std::string> formats{"float32", "double"};
+  long long h_denominator = 10;  // h = 1/h_denominator for Φ₃ and Newmark (m = ω = 1); leapfrog: VeriNum's 1/32
+  int samples = 20000;           // random states per row for the errors seen
+  bool check_with_coqc = true;   // coqc on every certificate (when installed)
+};
+
+section_result run_floating(const floating_settings& s);
+
+/// The steppers the section proves (stepper_roundoff.hpp's proved_steppers), for the scene's check.
+const std::vector<std::string>& floating_stepper_names();
+
+}  // namespace simpson::verify

@@ -1,0 +1,103 @@
+// The steppers' one-step round-off proved by Gappa and checked by coqc (verify/floating): numbers in
+// Gappa's notation both ways, the script written from the program (a changed program changes it),
+// a proved bound that holds on random states and is not loose, an overflowing box unproved with
+// its reason. Skipped, and shown so, without gappa (or coqc for the certificate).
+
+#include <simpson/verify/gappa_run.hpp>
+#include <simpson/verify/stepper_roundoff.hpp>
+
+#include <simpson/verify/command.hpp>
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace simpson::verify {
+namespace {
+
+TEST(Gappa, NumbersInGappasNotationBothWays) {
+  EXPECT_EQ(gappa_number(rational(825) / rational(boost::multiprecision::cpp_int(1) << 62)), "825b-62");
+  EXPECT_EQ(gappa_number(rational(-3, 8)), "-3b-3");
+  EXPECT_EQ(gappa_number(rational(12)), "3b2");
+  EXPECT_EQ(gappa_number(rational(1, 3)), "(1/3)");
+  EXPECT_EQ(gappa_number(rational(0)), "0");
+  EXPECT_EQ(parse_gappa_number("-825b-62"), rational(-825) / rational(boost::multiprecision::cpp_int(1) << 62));
+  EXPECT_EQ(parse_gappa_number("3b2"), rational(12));
+  EXPECT_EQ(parse_gappa_number("1"), rational(1));
+  EXPECT_THROW(parse_gappa_number("1.5"), std::invalid_argument);
+  EXPECT_EQ(exact_binary_value(0.1), rational(3602879701896397LL, 36028797018963968LL));
+  EXPECT_EQ(exact_binary_value(static_cast<double>(0.1F)), rational(13421773, 134217728));
+}
+
+TEST(Gappa, TheScriptIsWrittenFromTheProgram) {
+  const roundoff_problem p = stepper_roundoff_problem("phi3-shear", "double", rational(1), rational(1), rational(1, 10), rational(1), rational(1));
+  const std::string script = gappa_script(p);
+  for (const rounded_instruction& i : p.program.body) {
+    EXPECT_NE(script.find(i.target + " = rnd(" + i.left), std::string::npos) << i.target << "\n" << script;
+  }
+  EXPECT_NE(script.find("@rnd = float<ieee_64, ne>;"), std::string::npos);
+  roundoff_problem changed = p;
+  changed.program.body[2].right = "q";  // the kick reads the old q: another program, another script
+  EXPECT_NE(gappa_script(changed), script);
+  EXPECT_THROW(stepper_roundoff_problem("leapfrog-verinum", "float32", rational(2), rational(1), rational(1, 32), rational(1), rational(1)),
+               std::invalid_argument);
+  EXPECT_THROW(stepper_roundoff_problem("phi3-matrix", "half", rational(1), rational(1), rational(1, 32), rational(1), rational(1)),
+               std::invalid_argument);
+}
+
+/// The largest |error| in p and q of the program in double over random states of the box,
+/// computed exactly: the program evaluated in double, Φ y in rationals.
+std::pair<rational, rational> measured_roundoff(const roundoff_problem& problem) {
+  std::map<std::string, double> stored;
+  for (const auto& [name, value] : problem.stored) stored[name] = static_cast<double>(value);
+  std::mt19937_64 g(20231025);
+  std::uniform_real_distribution<double> u(-1, 1);
+  rational worst_p(0), worst_q(0);
+  for (int k = 0; k < 20000; ++k) {
+    const phase_point<double> y{u(g) * static_cast<double>(problem.p_bound), u(g) * static_cast<double>(problem.q_bound)};
+    const phase_point<double> computed = evaluate(problem.program, stored, y);
+    const phase_point<rational> exact = problem.exact * phase_point<rational>{exact_binary_value(y.p), exact_binary_value(y.q)};
+    worst_p = std::max(worst_p, rational(abs(exact_binary_value(computed.p) - exact.p)));
+    worst_q = std::max(worst_q, rational(abs(exact_binary_value(computed.q) - exact.q)));
+  }
+  return {worst_p, worst_q};
+}
+
+TEST(Gappa, AProvedBoundHoldsOnRandomStatesAndIsNotLoose) {
+  if (!program_on_path("gappa")) GTEST_SKIP() << "gappa not found: nothing proved";
+  for (const std::string& stepper : proved_steppers()) {
+    const rational h = stepper == "leapfrog-verinum" ? rational(1, 32) : rational(1, 10);
+    const roundoff_problem problem = stepper_roundoff_problem(stepper, "double", rational(1), rational(1), h, rational(1), rational(1));
+    const roundoff_proof proof = prove_roundoff(problem, false);
+    ASSERT_EQ(proof.status, proof_status::proved) << stepper << ": " << proof.reason;
+    const auto [p, q] = measured_roundoff(problem);
+    // Sound: no random state errs by more than the bound. Not loose: the bound is within 4 times
+    // the worst error seen (a few ulps of slack where Gappa adds the roundings' worst cases).
+    EXPECT_LE(p, proof.bounds.p) << stepper;
+    EXPECT_LE(q, proof.bounds.q) << stepper;
+    EXPECT_LE(proof.bounds.p, 4 * p) << stepper << ": bound " << static_cast<double>(proof.bounds.p) << ", seen " << static_cast<double>(p);
+    EXPECT_LE(proof.bounds.q, 4 * q) << stepper << ": bound " << static_cast<double>(proof.bounds.q) << ", seen " << static_cast<double>(q);
+  }
+}
+
+TEST(Gappa, ABoxWhereTheStepMayOverflowIsUnprovedWithItsReason) {
+  if (!program_on_path("gappa")) GTEST_SKIP() << "gappa not found: nothing proved";
+  // m = 2^60: β = −m ω² h (…) is about 1e17, and q up to 2^1000 takes β q past double's range.
+  const rational heavy{boost::multiprecision::cpp_int(1) << 60}, far{boost::multiprecision::cpp_int(1) << 1000};
+  const roundoff_proof proof = prove_roundoff(
+      stepper_roundoff_problem("phi3-matrix", "double", heavy, rational(1), rational(1, 10), rational(1), far), false);
+  EXPECT_EQ(proof.status, proof_status::unproved);
+  EXPECT_NE(proof.reason.find("overflow possible"), std::string::npos) << proof.reason;
+}
+
+TEST(Gappa, TheBoundsCoqProofIsCheckedByCoqc) {
+  if (!program_on_path("gappa") || !program_on_path("coqc")) GTEST_SKIP() << "gappa or coqc not found: nothing checked";
+  const roundoff_proof proof = prove_roundoff(
+      stepper_roundoff_problem("leapfrog-verinum", "float32", rational(1), rational(1), rational(1, 32), rational(1), rational(1)));
+  ASSERT_EQ(proof.status, proof_status::proved) << proof.reason;
+  EXPECT_EQ(proof.coq, "checked");
+  EXPECT_NE(proof.certificate.find("Require Import Gappa.Gappa_library."), std::string::npos);
+}
+
+}  // namespace
+}  // namespace simpson::verify
