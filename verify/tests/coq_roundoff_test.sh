@@ -37,6 +37,24 @@ for r in rows:
     if not (1 <= ratio <= 4):
         print(f"FAIL {name}: bound/seen {ratio}"); bad += 1
     print(f"ok {name}: bounds {r['bound_p']}, {r['bound_q']}; seen {r['seen_p']:.3g}, {r['seen_q']:.3g}; coq checked")
+# Over n steps: every lifting lemma checked by coqc, every bound at least the error seen, and at
+# VeriNum's setting (n = 1000) the total bound within twice the error made.
+report = json.load(open(sys.argv[1]))["experiments"]["floating"]
+checked = 0
+for r in report["global"]:
+    name = f'{r["stepper"]} {r["format"]} n = {r["n"]}'
+    if r.get("coq") != "checked":
+        print(f"FAIL {name}: lifting lemma {r.get('coq')!r}"); bad += 1
+    else:
+        checked += 1
+    if r.get("roundoff_seen", "not run") != "not run" and float(r["roundoff_bound"]) < float(r["roundoff_seen"]):
+        print(f"FAIL {name}: round-off bound {r['roundoff_bound']} below the round-off seen {r['roundoff_seen']}"); bad += 1
+verinum = [r for r in report["global"] if r["stepper"] == "leapfrog-verinum" and r["n"] == 1000]
+if len(verinum) != 1 or not (1 <= verinum[0]["total_bound_over_seen"] <= 2):
+    print(f"FAIL VeriNum's setting at n = 1000: {verinum}"); bad += 1
+else:
+    print(f"ok VeriNum's setting, n = 1000: total bound {verinum[0]['total_bound']}, seen {verinum[0]['total_seen']}, VeriNum {verinum[0]['verinum_bound']}")
+rows = rows + report["global"]
 print(f"{len(rows) - bad} passed, {bad} failed")
 sys.exit(1 if bad else 0)
 PY

@@ -4,6 +4,7 @@
 // its reason. Skipped, and shown so, without gappa (or coqc for the certificate).
 
 #include <simpson/verify/gappa_run.hpp>
+#include <simpson/verify/global_roundoff.hpp>
 #include <simpson/verify/stepper_roundoff.hpp>
 
 #include <simpson/verify/command.hpp>
@@ -97,6 +98,53 @@ TEST(Gappa, TheBoundsCoqProofIsCheckedByCoqc) {
   ASSERT_EQ(proof.status, proof_status::proved) << proof.reason;
   EXPECT_EQ(proof.coq, "checked");
   EXPECT_NE(proof.certificate.find("Require Import Gappa.Gappa_library."), std::string::npos);
+}
+
+/// VeriNum's setting: float32 leapfrog, h = 1/32, from (p, q) = (0, 1), on the box |p|, |q| ≤ 9/8.
+struct verinum_case {
+  roundoff_problem problem =
+      stepper_roundoff_problem("leapfrog-verinum", "float32", rational(1), rational(1), rational(1, 32), rational(9, 8), rational(9, 8));
+  phase_point<rational> y0{rational(0), rational(1)};
+};
+
+TEST(GappaGlobal, TheLiftingConstantsAreExactAndTheBoundIsWithinTwiceTheErrorMade) {
+  if (!program_on_path("gappa")) GTEST_SKIP() << "gappa not found: nothing proved";
+  const verinum_case v;
+  const roundoff_proof proof = prove_roundoff(v.problem, false);
+  ASSERT_EQ(proof.status, proof_status::proved) << proof.reason;
+  const std::optional<lifting_constants> lifting = lifting_for(v.problem, proof.bounds, v.y0);
+  ASSERT_TRUE(lifting);
+  // Velocity Verlet conserves p² + (1 − h²/4) q².
+  EXPECT_EQ(lifting->w_p, 1);
+  EXPECT_EQ(lifting->w_q, rational(4095, 4096));
+  const rational squared = lifting->w_p * proof.bounds.p * proof.bounds.p + lifting->w_q * proof.bounds.q * proof.bounds.q;
+  EXPECT_GE(lifting->epsilon * lifting->epsilon, squared);
+  EXPECT_LE(lifting->epsilon * lifting->epsilon, squared * rational(1000001, 1000000));
+  EXPECT_GE(lifting->valid_steps, 1000);
+  // Sound at every n, and (the goal) within twice the error made at n = 1000, where
+  // VerifiedLeapfrog proves 0.0308.
+  const std::vector<global_row> rows = global_comparison(v.problem, *lifting, rational(1, 32), v.y0, {1, 10, 100, 1000});
+  for (const global_row& r : rows) {
+    EXPECT_GE(std::stod(r.roundoff_bound), std::stod(r.roundoff_seen)) << r.n;
+    EXPECT_GE(r.bound_over_seen, 1) << r.n;
+  }
+  EXPECT_LE(rows.back().bound_over_seen, 2) << rows.back().total_bound << " against " << rows.back().total_seen;
+  EXPECT_LT(std::stod(rows.back().total_bound), 0.0308 / 20);
+  EXPECT_THROW(global_comparison(v.problem, *lifting, rational(1, 32), v.y0, {lifting->valid_steps + 1}), std::invalid_argument);
+}
+
+TEST(GappaGlobal, TheLiftingLemmaIsCheckedByCoqcAndAWrongConstantIsRejected) {
+  if (!program_on_path("gappa") || !program_on_path("coqc")) GTEST_SKIP() << "gappa or coqc not found: nothing checked";
+  const verinum_case v;
+  const roundoff_proof proof = prove_roundoff(v.problem, false);
+  ASSERT_EQ(proof.status, proof_status::proved) << proof.reason;
+  lifting_constants lifting = *lifting_for(v.problem, proof.bounds, v.y0);
+  EXPECT_EQ(coqc_check(lifting_lemma_coq(v.problem, proof.bounds, lifting), "lifting"), "checked");
+  lifting.epsilon /= 2;  // below √(w_p B_p² + w_q B_q²): the one-step lemma is false
+  EXPECT_EQ(coqc_check(lifting_lemma_coq(v.problem, proof.bounds, lifting), "lifting").rfind("rejected", 0), 0u);
+  lifting = *lifting_for(v.problem, proof.bounds, v.y0);
+  lifting.w_q += rational(1, 1000000);  // not Φ-invariant: the isometry lemma is false
+  EXPECT_EQ(coqc_check(lifting_lemma_coq(v.problem, proof.bounds, lifting), "lifting").rfind("rejected", 0), 0u);
 }
 
 }  // namespace

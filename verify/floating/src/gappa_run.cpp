@@ -167,19 +167,21 @@ roundoff_proof prove_roundoff(const roundoff_problem& problem, bool check_with_c
     out.coq = "not checked";
     return out;
   }
-  if (!program_on_path("coqc")) {
-    out.coq = "not checked: coqc not found (scripts/install-deps installs Debian's coq and libcoq-gappa)";
-    return out;
+  out.coq = coqc_check(out.certificate, "claim_gappa");
+  if (out.coq == "checked") {
+    const command_result version = run_command("coqc --print-version");
+    out.coq_version = version.output.substr(0, version.output.find(' '));
   }
-  const command_result checked = run_command("cd '" + work.path().string() + "' && coqc -q claim_gappa.v");
-  if (checked.status != 0) {
-    out.coq = "rejected: " + first_lines(checked.output, 8);
-    return out;
-  }
-  out.coq = "checked";
-  const command_result version = run_command("coqc --print-version");
-  out.coq_version = version.output.substr(0, version.output.find(' '));
   return out;
+}
+
+std::string coqc_check(const std::string& text, const std::string& module) {
+  if (!program_on_path("coqc")) return "not checked: coqc not found (scripts/install-deps installs Debian's coq and libcoq-gappa)";
+  const scratch_directory work;
+  write_file(work.path() / (module + ".v"), text);
+  const command_result checked = run_command("cd '" + work.path().string() + "' && coqc -q '" + module + ".v'");
+  if (checked.status != 0) return "rejected: " + first_lines(checked.output, 8);
+  return "checked";
 }
 
 }  // namespace simpson::verify

@@ -16,6 +16,7 @@ struct floating_settings {
   long long h_denominator = 10;  // h = 1/h_denominator for Φ₃ and Newmark (m = ω = 1); leapfrog: VeriNum's 1/32
   int samples = 20000;           // random states per row for the errors seen
   bool check_with_coqc = true;   // coqc on every certificate (when installed)
+  bool global = true;            // the lifted bounds over n steps (tables global, plot floating_roundoff)
 };
 
 section_result run_floating(const floating_settings& s);

@@ -31,6 +31,10 @@ struct roundoff_proof {
 /// Runs the four steps; with check_with_coqc false the certificate is produced but not checked.
 roundoff_proof prove_roundoff(const roundoff_problem& problem, bool check_with_coqc = true);
 
+/// coqc on a Coq file's text (written to a temporary directory as <module>.v): "checked",
+/// "rejected: <coqc's first lines>", or "not checked: coqc not found".
+std::string coqc_check(const std::string& text, const std::string& module);
+
 /// A number Gappa prints ("-825b-62", "1", "0", "3b2"), exactly; throws std::invalid_argument otherwise.
 rational parse_gappa_number(const std::string& text);
 
