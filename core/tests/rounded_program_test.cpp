@@ -49,7 +49,13 @@ int differing_states(const rounded_program& program, const std::map<std::string,
 template <class Real>
 class RoundedProgram : public ::testing::Test {};
 using formats = ::testing::Types<float, double>;
-TYPED_TEST_SUITE(RoundedProgram, formats);
+struct format_names {
+  template <class Real>
+  static std::string GetName(int) {
+    return sizeof(Real) == 4 ? "float" : "double";
+  }
+};
+TYPED_TEST_SUITE(RoundedProgram, formats, format_names);
 
 TYPED_TEST(RoundedProgram, EachProgramIsItsStepperBitForBit) {
   using Real = TypeParam;
