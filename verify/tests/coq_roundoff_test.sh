@@ -36,7 +36,7 @@ for r in rows:
     ratio = r["bound_over_seen"]
     if not (1 <= ratio <= 4):
         print(f"FAIL {name}: bound/seen {ratio}"); bad += 1
-    print(f"ok {name}: bounds {r['bound_p']}, {r['bound_q']}; seen {r['seen_p']:.3g}, {r['seen_q']:.3g}; coq checked")
+    print(f"ok {name}: bounds {r['bound_p']}, {r['bound_q']}; seen {r['seen_p']}, {r['seen_q']}; coq checked")
 # Over n steps: every lifting lemma checked by coqc, every bound at least the error seen, and at
 # VeriNum's setting (n = 1000) the total bound within twice the error made.
 report = json.load(open(sys.argv[1]))["experiments"]["floating"]

@@ -175,7 +175,7 @@ section_result run_floating(const floating_settings& s) {
       rows.add({figure::text(stepper), figure::text(format), figure::text(h.str()),
                 proved ? figure::text(decimal_rounded_up(proof.bounds.p)) : figure{},
                 proved ? figure::text(decimal_rounded_up(proof.bounds.q)) : figure{},
-                figure::of(static_cast<double>(seen.p)), figure::of(static_cast<double>(seen.q)), ratio,
+                figure::text(decimal_text(seen.p)), figure::text(decimal_text(seen.q)), ratio,
                 figure::text(status_text(proof)), figure::text(proved ? proof.coq : "")});
       progress_step("floating", stepper + " " + format);
     }

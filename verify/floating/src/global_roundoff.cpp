@@ -74,10 +74,11 @@ std::vector<global_row> compare_in(const roundoff_problem& problem, const liftin
     global_row row;
     row.n = n;
     row.roundoff_bound = decimal_rounded_up(roundoff_bound);
-    row.roundoff_seen = fmt::format("{:.2e}", static_cast<double>(boost::multiprecision::mpfr_float(median(roundoff))));
+    row.roundoff_seen = boost::multiprecision::mpfr_float(median(roundoff)).str(2, std::ios_base::scientific);  // three significant digits
     row.discretization = decimal_rounded_up(upper_as_rational(discretization));
     row.total_bound = decimal_rounded_up(total_bound);
-    row.total_seen = fmt::format("{:.2e}", static_cast<double>(boost::multiprecision::mpfr_float(lower(total))));
+    row.total_seen = boost::multiprecision::mpfr_float(lower(total)).str(2, std::ios_base::scientific);  // three significant digits
+    // The ratios are computed in double (shown to three digits).
     const double seen_total = static_cast<double>(boost::multiprecision::mpfr_float(lower(total)));
     const double seen_roundoff = static_cast<double>(boost::multiprecision::mpfr_float(lower(roundoff)));
     row.bound_over_seen = seen_total > 0 ? static_cast<double>(total_bound) / seen_total : 0;

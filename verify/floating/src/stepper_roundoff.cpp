@@ -112,6 +112,11 @@ claimed_bounds measured_roundoff(const roundoff_problem& problem, int samples, u
   return problem.format.mantissa_bits == 24 ? measured_in<float>(problem, samples, seed) : measured_in<double>(problem, samples, seed);
 }
 
+std::string decimal_text(const rational& x, int digits) {
+  using real = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<50>>;
+  return real(real(numerator(x)) / real(denominator(x))).str(digits - 1, std::ios_base::scientific);  // digits − 1 after the point
+}
+
 std::string decimal_rounded_up(const rational& x, int digits) {
   using boost::multiprecision::cpp_int;
   if (x == 0) return "0";

@@ -30,6 +30,10 @@ namespace simpson::verify {
 /// random states of the box (fixed seed), each result against Φ y exactly (rationals).
 claimed_bounds measured_roundoff(const roundoff_problem& problem, int samples, unsigned long long seed);
 
+/// x as a decimal with `digits` significant digits, rounded to nearest (from 50-digit MPFR, not
+/// through double): a figure computed exactly, for people.
+std::string decimal_text(const rational& x, int digits = 3);
+
 /// x as a decimal with `digits` significant digits, rounded up (a bound shown is never below the
 /// bound proved); 0 as "0".
 std::string decimal_rounded_up(const rational& x, int digits = 3);
