@@ -8,9 +8,13 @@
 #include <simpson/verify/stepper_roundoff.hpp>
 
 #include <simpson/verify/command.hpp>
+#include <simpson/verify/ledger.hpp>
+#include <simpson/verify/paper_reading.hpp>
+#include <simpson/verify/paper_source.hpp>
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <random>
 
 namespace simpson::verify {
@@ -98,6 +102,9 @@ TEST(Gappa, TheBoundsCoqProofIsCheckedByCoqc) {
   ASSERT_EQ(proof.status, proof_status::proved) << proof.reason;
   EXPECT_EQ(proof.coq, "checked");
   EXPECT_NE(proof.certificate.find("Require Import Gappa.Gappa_library."), std::string::npos);
+  // Gappa states its rewriting hints as section hypotheses; the certificate proves them instead.
+  EXPECT_EQ(proof.certificate.find("Hypothesis"), std::string::npos);
+  EXPECT_NE(proof.certificate.find("Lemma a1 :"), std::string::npos);
 }
 
 /// VeriNum's setting: float32 leapfrog, h = 1/32, from (p, q) = (0, 1), on the box |p|, |q| ≤ 9/8.
@@ -145,6 +152,42 @@ TEST(GappaGlobal, TheLiftingLemmaIsCheckedByCoqcAndAWrongConstantIsRejected) {
   lifting = *lifting_for(v.problem, proof.bounds, v.y0);
   lifting.w_q += rational(1, 1000000);  // not Φ-invariant: the isometry lemma is false
   EXPECT_EQ(coqc_check(lifting_lemma_coq(v.problem, proof.bounds, lifting), "lifting").rfind("rejected", 0), 0u);
+}
+
+/// table-roundoff on a copy of the paper where Simpson's state error at N = 40 is printed with `digits`.
+claim_result table_roundoff_with_state_printed(const std::string& printed) {
+  paper_source copy = embedded_paper();
+  const std::string row = "Symplectic Simpson  & state    & $ 4.11  \\,\\, 10^{-4} $  & $ 2.55 \\,\\, 10^{-5} $   & $ 1.60 \\,\\, 10^{-6} $";
+  const std::size_t at = copy.text.find(row);
+  EXPECT_NE(at, std::string::npos);
+  if (at != std::string::npos) copy.text.replace(at + row.size() - 19, 4, printed);
+  copy.origin = "altered copy";
+  const paper_reading paper = read_paper(copy);
+  run_context ctx;
+  ctx.paper = &paper;
+  return find_claim("table-roundoff").check(ctx);
+}
+
+TEST(GappaClaims, TableOnesDigitsAreAboveTheProvedRoundoffAndTooManyDigitsFail) {
+  if (!program_on_path("gappa")) GTEST_SKIP() << "gappa not found: the claim is skipped";
+  const claim_result printed = table_roundoff_with_state_printed("1.60");
+  EXPECT_EQ(printed.outcome, verdict::holds) << printed.evidence.dump();
+  EXPECT_NE(printed.certificate.find("Module Lifting_N40."), std::string::npos);
+  // Printed to 11 digits, the last digit's half unit (5e-17) is below the proved 1.04e-13: round-off could change it.
+  const claim_result fine = table_roundoff_with_state_printed("1.6000000000");
+  EXPECT_EQ(fine.outcome, verdict::fails) << fine.evidence.dump();
+}
+
+TEST(GappaClaims, WithoutGappaTheClaimIsSkippedNotPassed) {
+  // gappa hidden from the PATH: the claim is skipped, with the reason, and the run not failed by it.
+  const std::string path = std::getenv("PATH") != nullptr ? std::getenv("PATH") : "";
+  ::setenv("PATH", "/nonexistent", 1);
+  const claim_result r = table_roundoff_with_state_printed("1.60");
+  ::setenv("PATH", path.c_str(), 1);
+  EXPECT_EQ(r.outcome, verdict::skipped);
+  EXPECT_NE(r.evidence.value("skipped", std::string()).find("gappa"), std::string::npos) << r.evidence.dump();
+  EXPECT_TRUE(as_expected(r.outcome, verdict::holds));
+  EXPECT_FALSE(as_expected(verdict::unproved, verdict::holds));
 }
 
 }  // namespace

@@ -98,6 +98,15 @@ testcase claim_case(const claim_outcome& o) {
     t.type = "undecided";
     t.message = o.result.evidence.value("undecided", std::string("no enclosure decided the claim"));
     t.detail = summary;
+  } else if (o.result.outcome == verdict::unproved) {
+    t.outcome = testcase::result::failure;
+    t.type = "unproved";
+    t.message = o.result.evidence.value("unproved", std::string("Gappa could not bound the round-off"));
+    t.detail = summary;
+  } else if (o.result.outcome == verdict::skipped) {
+    t.outcome = testcase::result::skipped;
+    t.message = o.result.evidence.value("skipped", std::string("the prover is not installed"));
+    t.out = summary;
   } else if (o.result.outcome == verdict::text_changed) {
     t.outcome = testcase::result::failure;
     t.type = "text-changed";

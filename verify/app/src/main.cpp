@@ -293,15 +293,15 @@ int main(int argc, char** argv) {
     // The verdicts first, then the report: the report is the last thing written, so that a signal
     // at any moment before its directory is swapped into place leaves the previous one as it was.
     for (const claim_outcome& o : record.outcomes) {
-      const bool as_expected = o.result.outcome == o.expected;
+      const bool expected_verdict = as_expected(o.result.outcome, o.expected);
       if (!quiet) {
         fmt::print("  {:<8} {:<34}{}\n", to_string(o.result.outcome), o.checked->id,
-                   as_expected ? "" : "  <- expected " + to_string(o.expected));
+                   expected_verdict ? "" : "  <- expected " + to_string(o.expected));
         if (o.result.outcome == verdict::erratum && !o.result.correction.empty()) {
           fmt::print("           corrected: {}\n", o.result.correction);
         }
       }
-      if (!as_expected) {
+      if (!expected_verdict) {
         fmt::print(stderr, "simpson-verify: {}: verdict {}, expected {}\n", o.checked->id, to_string(o.result.outcome),
                    to_string(o.expected));
       }

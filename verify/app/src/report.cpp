@@ -52,7 +52,8 @@ std::string enclosure_markdown(const json& evidence) {
 }
 
 struct verdict_counts {
-  std::size_t held = 0, errata = 0, failed = 0, disagreed = 0, text_changed = 0, undecided = 0, machine_read = 0, quoted = 0, coq_exported = 0,
+  std::size_t held = 0, errata = 0, failed = 0, disagreed = 0, text_changed = 0, undecided = 0, unproved = 0, skipped = 0, machine_read = 0,
+              quoted = 0, coq_exported = 0,
               coq_checked = 0;
   std::vector<std::string> unexpected;
 };
@@ -66,11 +67,13 @@ verdict_counts count_verdicts(const run_record& r) {
     c.disagreed += o.result.outcome == verdict::kernels_disagree;
     c.text_changed += o.result.outcome == verdict::text_changed;
     c.undecided += o.result.outcome == verdict::undecided;
+    c.unproved += o.result.outcome == verdict::unproved;
+    c.skipped += o.result.outcome == verdict::skipped;
     c.machine_read += !o.result.printed.is_null();
     c.quoted += o.result.printed.is_null() && !o.result.quoted.empty();
     c.coq_exported += !certificate_documents(o).empty();
     c.coq_checked += o.result.evidence.contains("coq") && o.result.evidence["coq"].value("status", "") == "checked";
-    if (o.result.outcome != o.expected) c.unexpected.push_back(o.checked->id);
+    if (!as_expected(o.result.outcome, o.expected)) c.unexpected.push_back(o.checked->id);
   }
   return c;
 }
@@ -79,10 +82,12 @@ verdict_counts count_verdicts(const run_record& r) {
 
 std::string summary_line(const run_record& r) {
   const verdict_counts c = count_verdicts(r);
-  return fmt::format("{} {}: {} held, {} errata, {} failed{}{}{}; {}", r.outcomes.size(), r.outcomes.size() == 1 ? "claim" : "claims",
+  return fmt::format("{} {}: {} held, {} errata, {} failed{}{}{}{}{}; {}", r.outcomes.size(), r.outcomes.size() == 1 ? "claim" : "claims",
                      c.held, c.errata, c.failed, c.disagreed ? fmt::format(", {} with the kernels in disagreement", c.disagreed) : "",
                      c.text_changed ? fmt::format(", {} whose quoted words changed (text-changed)", c.text_changed) : "",
                      c.undecided ? fmt::format(", {} undecided within the enclosure budget", c.undecided) : "",
+                     c.unproved ? fmt::format(", {} unproved (Gappa could not bound the round-off)", c.unproved) : "",
+                     c.skipped ? fmt::format(", {} skipped (gappa not installed)", c.skipped) : "",
                      c.unexpected.empty() ? std::string("all verdicts as expected")
                                           : fmt::format("{} not as expected ({})", c.unexpected.size(), join(c.unexpected, ", ")));
 }
@@ -127,7 +132,7 @@ json summary_json(const run_record& r) {
   return {{"line", summary_line(r)},     {"expectation", expectation_line(r)}, {"claims", r.outcomes.size()},
           {"held", c.held},              {"errata", c.errata},
           {"failed", c.failed},          {"kernels_disagree", c.disagreed},
-          {"text_changed", c.text_changed}, {"undecided", c.undecided},
+          {"text_changed", c.text_changed}, {"undecided", c.undecided}, {"unproved", c.unproved}, {"skipped", c.skipped},
           {"machine_read", c.machine_read}, {"quoted", c.quoted}, {"typed", r.outcomes.size() - c.machine_read - c.quoted},
           {"coq_exported", c.coq_exported}, {"coq_checked", c.coq_checked},
           {"unexpected", c.unexpected}};
@@ -182,7 +187,7 @@ json report_json(const run_record& r, const plot_outcome& plots) {
                {"methods", c.methods},
                {"verdict", to_string(o.result.outcome)},
                {"expected", to_string(o.expected)},
-               {"as_expected", o.result.outcome == o.expected}};
+               {"as_expected", as_expected(o.result.outcome, o.expected)}};
     if (!o.result.correction.empty()) entry["correction"] = o.result.correction;
     if (!o.result.note.empty()) entry["note"] = o.result.note;
     if (!o.result.printed.is_null()) entry["printed"] = o.result.printed;
@@ -400,7 +405,9 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
         "Verdicts: **holds** (true as printed), **erratum** (false as printed; a corrected statement is proved), **fails** "
         "(false, no correction found), **kernels-disagree** (our kernel and GiNaC reached different conclusions on the derived statement: a bug, never expected), "
         "**text-changed** (the sentence a prose claim quotes is gone from the paper, or its words no longer parse: never expected), "
-        "**undecided** (no interval enclosure proved the statement or its negation within the run's digits: never expected).\n\n";
+        "**undecided** (no interval enclosure proved the statement or its negation within the run's digits: never expected), "
+        "**unproved** (a floating-point claim whose round-off Gappa could not bound, with its reason), **skipped** (a "
+        "floating-point claim not decided because gappa is not installed: never counted against the run).\n\n";
 
   md += "## Claims\n\nStatement: *read* when its formulas are read from the paper's source and proved in both kernels "
         "(our kernel and GiNaC), *quoted* when its prose sentence is quoted from the source and its words parsed, *typed* when "
@@ -408,7 +415,7 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
         "| id | § | equation | statement | verdict | expected | methods |\n|---|---|---|---|---|---|---|\n";
   for (const claim_outcome& o : r.outcomes) {
     const claim& c = *o.checked;
-    const std::string verdict_text = "**" + to_string(o.result.outcome) + "**" + (o.result.outcome == o.expected ? "" : " **(unexpected)**");
+    const std::string verdict_text = "**" + to_string(o.result.outcome) + "**" + (as_expected(o.result.outcome, o.expected) ? "" : " **(unexpected)**");
     md += fmt::format("| [{}](#{}) | {} | {} | {} | {} | {} | {} |\n", c.id, heading_slug(c.id), c.section, markdown_cell(c.equation),
                       !o.result.printed.is_null() ? "read" : !o.result.quoted.empty() ? "quoted" : "typed", verdict_text, to_string(o.expected),
                       join(c.methods, ", ") + (o.result.printed.is_null() ? "" : ", GiNaC"));
@@ -427,8 +434,9 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
   bool any_failure = false;
   for (const claim_outcome& o : r.outcomes) {
     const bool failed = o.result.outcome == verdict::fails || o.result.outcome == verdict::kernels_disagree ||
-                        o.result.outcome == verdict::text_changed || o.result.outcome == verdict::undecided;
-    if (!failed && o.result.outcome == o.expected) continue;  // also a holds or erratum not as expected
+                        o.result.outcome == verdict::text_changed || o.result.outcome == verdict::undecided ||
+                        o.result.outcome == verdict::unproved;
+    if (!failed && as_expected(o.result.outcome, o.expected)) continue;  // also a holds or erratum not as expected
     any_failure = true;
     const std::string why = o.result.evidence.contains("error")
                                 ? "its check threw, a bug in the harness: " + o.result.evidence["error"].get<std::string>()

@@ -102,7 +102,7 @@ run_record run(const scene& s, const paper_reading& paper, const progress_callba
 
 bool all_as_expected(const run_record& r) {
   for (const claim_outcome& o : r.outcomes) {
-    if (o.result.outcome != o.expected) return false;
+    if (!as_expected(o.result.outcome, o.expected)) return false;
   }
   return true;
 }

@@ -6,6 +6,8 @@
 
 #include <simpson/interval.hpp>
 
+#include <boost/math/constants/constants.hpp>
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -42,7 +44,7 @@ interval euclidean(const interval& a, const interval& b) { return sqrt(interval(
 
 template <class Real>
 std::vector<global_row> compare_in(const roundoff_problem& problem, const lifting_constants& lifting, const rational& h,
-                                   const phase_point<rational>& y0, const std::vector<long long>& at) {
+                                   const phase_point<rational>& y0, const std::vector<long long>& at, const flow_oscillator& flow) {
   std::map<std::string, Real> stored;
   for (const auto& [name, value] : problem.stored) stored[name] = static_cast<Real>(value);
   const scoped_interval_digits digits(40);
@@ -54,6 +56,9 @@ std::vector<global_row> compare_in(const roundoff_problem& problem, const liftin
   const interval phi = atan2(interval(enclosure_of_rational(problem.exact.gamma) * sw_q / sw_p), enclosure_of_rational(problem.exact.alpha));
   const interval step = enclosure_of_rational(h), p0 = enclosure_of_rational(y0.p), q0 = enclosure_of_rational(y0.q);
   const interval u0p = p0 * sw_p, u0q = q0 * sw_q;
+  const interval mass = enclosure_of_rational(flow.m);
+  const interval omega = flow.two_pi ? interval(2 * boost::math::constants::pi<interval>()) : enclosure_of_rational(flow.omega);
+  const interval stiffness = mass * omega;  // mω
   phase_point<Real> y{static_cast<Real>(y0.p), static_cast<Real>(y0.q)};  // exact: y₀ is chosen representable
   std::vector<global_row> rows;
   long long n = 0;
@@ -61,9 +66,9 @@ std::vector<global_row> compare_in(const roundoff_problem& problem, const liftin
     for (; n < target; ++n) y = evaluate(problem.program, stored, y);
     const interval angle = phi * interval(n), cos_n = cos(angle), sin_n = sin(angle);
     const phase_point<interval> z{interval((cos_n * u0p - sin_n * u0q) / sw_p), interval((sin_n * u0p + cos_n * u0q) / sw_q)};
-    // m = ω = 1: p(t) = p₀ cos t − q₀ sin t, q(t) = q₀ cos t + p₀ sin t.
-    const interval t = step * interval(n), cosine = cos(t), sine = sin(t);
-    const phase_point<interval> exact{interval(p0 * cosine - q0 * sine), interval(q0 * cosine + p0 * sine)};
+    // p(t) = p₀ cos ωt − mω q₀ sin ωt, q(t) = q₀ cos ωt + p₀/(mω) sin ωt.
+    const interval t = omega * step * interval(n), cosine = cos(t), sine = sin(t);
+    const phase_point<interval> exact{interval(p0 * cosine - stiffness * q0 * sine), interval(q0 * cosine + p0 / stiffness * sine)};
     const phase_point<interval> computed{enclosure_of_rational(exact_binary_value(static_cast<double>(y.p))),
                                          enclosure_of_rational(exact_binary_value(static_cast<double>(y.q)))};
     const interval roundoff = euclidean(interval(computed.p - z.p), interval(computed.q - z.q));
@@ -122,15 +127,16 @@ std::optional<lifting_constants> lifting_for(const roundoff_problem& problem, co
 }
 
 std::vector<global_row> global_comparison(const roundoff_problem& problem, const lifting_constants& lifting, const rational& h,
-                                          const phase_point<rational>& y0, const std::vector<long long>& at) {
+                                          const phase_point<rational>& y0, const std::vector<long long>& at,
+                                          const flow_oscillator& flow) {
   for (const long long n : at) {
     if (n > lifting.valid_steps) {
       throw std::invalid_argument("global_comparison: n = " + std::to_string(n) + " is beyond the " +
                                   std::to_string(lifting.valid_steps) + " steps the box holds");
     }
   }
-  return problem.format.mantissa_bits == 24 ? compare_in<float>(problem, lifting, h, y0, at)
-                                            : compare_in<double>(problem, lifting, h, y0, at);
+  return problem.format.mantissa_bits == 24 ? compare_in<float>(problem, lifting, h, y0, at, flow)
+                                            : compare_in<double>(problem, lifting, h, y0, at, flow);
 }
 
 std::string lifting_lemma_coq(const roundoff_problem& problem, const claimed_bounds& one_step, const lifting_constants& lifting) {

@@ -7,6 +7,8 @@
 #include <simpson/simpson_map.hpp>
 #include <simpson/verinum_leapfrog.hpp>
 
+#include <boost/math/constants/constants.hpp>
+
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -16,6 +18,10 @@ namespace simpson::verify {
 const std::vector<std::string>& proved_steppers() {
   static const std::vector<std::string> names{"phi3-matrix", "phi3-shear", "newmark-matrix", "leapfrog-verinum"};
   return names;
+}
+
+rational paper_omega() {
+  return exact_binary_value(boost::math::constants::two_pi<double>());
 }
 
 namespace {

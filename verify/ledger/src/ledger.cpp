@@ -6,6 +6,7 @@
 #include "claims_section6_7.hpp"
 #include "claims_section8_9.hpp"
 #include "claims_peers.hpp"
+#include "claims_roundoff.hpp"
 #include "claims_beyond.hpp"
 #include "claims_unformulated.hpp"
 
@@ -24,6 +25,7 @@ const std::vector<claim>& ledger() {
     detail::add_section6_7_claims(all);
     detail::add_convention_claims(all);
     detail::add_section8_9_claims(all);
+    detail::add_roundoff_claims(all);
     detail::add_peer_claims(all);
     detail::add_shear_claims(all);
     detail::add_beyond_claims(all);

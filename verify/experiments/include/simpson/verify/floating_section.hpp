@@ -17,6 +17,7 @@ struct floating_settings {
   int samples = 20000;           // random states per row for the errors seen
   bool check_with_coqc = true;   // coqc on every certificate (when installed)
   bool global = true;            // the lifted bounds over n steps (tables global, plot floating_roundoff)
+  bool paper_configuration = true;  // with global: Φ₃ also at the paper's m = 1, ω = 2π, h = 1/15
 };
 
 section_result run_floating(const floating_settings& s);

@@ -49,11 +49,22 @@ struct global_row {
   double roundoff_bound_over_seen = 0;
 };
 
-/// Runs the program in its format from y₀ (m = ω = 1, the problem's h) and compares at each n of
-/// `at` (each at most lifting.valid_steps): the float iterate against the exact scheme and the
-/// exact solution, enclosed at 40 digits.
+/// The oscillator whose exact flow the iterates are compared with: mass m and ω, or ω = 2π (the
+/// paper's, Section 8) when `two_pi`. With ω = 2π, π is enclosed; the problem's exact map is then Φ
+/// at 2π rounded to double (stepper_roundoff.hpp's paper_omega), and the scheme's difference
+/// from Φ at 2π lies inside the enclosed discretization term.
+struct flow_oscillator {
+  rational m{1};
+  rational omega{1};
+  bool two_pi = false;
+};
+
+/// Runs the program in its format from y₀ (the problem's h) and compares at each n of `at` (each at
+/// most lifting.valid_steps): the float iterate against the exact scheme and the exact solution of
+/// `flow`, enclosed at 40 digits.
 std::vector<global_row> global_comparison(const roundoff_problem& problem, const lifting_constants& lifting, const rational& h,
-                                          const phase_point<rational>& y0, const std::vector<long long>& at);
+                                          const phase_point<rational>& y0, const std::vector<long long>& at,
+                                          const flow_oscillator& flow = {});
 
 /// The lifting lemma as a Coq file (standard library reals, lra and nra): for the exact Φ and Q,
 /// Q(Φz) = Q(z); |e_p| ≤ B_p ∧ |e_q| ≤ B_q ⇒ Q(e) ≤ ε²; and d_{k+1} = Φd_k + e_k with those e_k and

@@ -15,6 +15,12 @@ namespace simpson::verify {
 /// The steppers: "phi3-matrix", "phi3-shear", "newmark-matrix", "leapfrog-verinum".
 const std::vector<std::string>& proved_steppers();
 
+/// The paper's ω = 2π (Section 8) as an exact rational: 2π rounded to double, the ω a double program
+/// holds (a float32 program holds it rounded again to float32). Small rationals keep Gappa's and
+/// Coq's constants short; the scheme's difference from Φ at 2π itself is enclosed with the
+/// discretization error (global_roundoff.hpp's flow_oscillator).
+rational paper_omega();
+
 /// The problem of `stepper` in `format` ("float32" or "double") at m, ω, h (leapfrog-verinum: m = ω
 /// = 1 only, as VeriNum's program), on the box |p| ≤ p_bound, |q| ≤ q_bound. Throws
 /// std::invalid_argument for an unknown stepper or format, or leapfrog with m or ω other than 1.

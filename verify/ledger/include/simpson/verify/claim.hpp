@@ -17,8 +17,12 @@ namespace simpson::verify {
 /// the derived statement (a bug in one of them, never expected); text-changed: the sentence a
 /// prose claim quotes is no longer in the paper, or its words no longer parse (never expected:
 /// the paper changed under the ledger); undecided: an enclosure could neither prove the statement
-/// nor its negation within the run's precision budget (never expected: raise the budget).
-enum class verdict { holds, erratum, fails, kernels_disagree, text_changed, undecided };
+/// nor its negation within the run's precision budget (never expected: raise the budget);
+/// unproved: a floating-point claim whose round-off Gappa could not bound (its reason in the
+/// evidence: an intermediate that may overflow, a step outside the stable range); skipped: a
+/// floating-point claim whose prover (gappa) is not installed, decided neither way and never
+/// counted against the run.
+enum class verdict { holds, erratum, fails, kernels_disagree, text_changed, undecided, unproved, skipped };
 
 inline std::string to_string(verdict v) {
   switch (v) {
@@ -28,9 +32,15 @@ inline std::string to_string(verdict v) {
     case verdict::kernels_disagree: return "kernels-disagree";
     case verdict::text_changed: return "text-changed";
     case verdict::undecided: return "undecided";
+    case verdict::unproved: return "unproved";
+    case verdict::skipped: return "skipped";
   }
   return "?";
 }
+
+/// Whether a verdict is the expected one for the run's exit code: equal, or skipped (a prover not
+/// installed decides nothing, and says so).
+inline bool as_expected(verdict got, verdict expected) { return got == expected || got == verdict::skipped; }
 
 /// What a check is given: the precisions of the numeric rechecks, the seed and how many random
 /// samples each recheck draws per precision.
