@@ -327,7 +327,7 @@ else
 fi
 # --help: every embedded scene, integers typed as such.
 check "help" 0 --help
-grep -q 'embedded scene name (beyond, floating, paper, quick)' "$work/out" || fail "help: scenes not all listed"
+grep -q 'embedded scene name (beyond, family, floating, paper, quick)' "$work/out" || fail "help: scenes not all listed"
 grep -q -- '--samples UINT' "$work/out" || fail "help: --samples not typed UINT"
 
 # --precisions reaches the sections that have precisions, or is refused with the reason.

@@ -131,7 +131,7 @@ int main(int argc, char** argv) {
                  "comma-separated claim ids, or all (the scene's); alone, runs these claims and no section (default: the scene's)")
       ->delimiter(',');
   app.add_option("--sections", section_list,
-                 "comma-separated sections (table1, work_precision, stability, long_time, nonlinear, floating) or none; alone, runs these "
+                 "comma-separated sections (table1, work_precision, stability, long_time, nonlinear, floating, family) or none; alone, runs these "
                  "sections and no claim (default: the scene's)")
       ->delimiter(',');
   app.add_flag("--quiet", quiet, "print only the summary line and errors");

@@ -94,6 +94,7 @@ run_record run(const scene& s, const paper_reading& paper, const progress_callba
   if (e.long_time) section([&] { return run_long_time(*e.long_time); });
   if (e.nonlinear) section([&] { return run_nonlinear(*e.nonlinear); });
   if (e.floating) section([&] { return run_floating(*e.floating); });
+  if (e.family) section([&] { return run_family(*e.family); });
   r.paper_configuration = paper_configuration(s.precisions);
   r.environment = build_environment(s, paper);
   r.seconds = std::chrono::duration<double>(clock::now() - start).count();

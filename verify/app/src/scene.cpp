@@ -257,6 +257,13 @@ experiment_settings parse_experiments(const nlohmann::json& doc, const std::stri
     if (r.has("samples")) f.samples = static_cast<int>(r.integer("samples", 1, 10'000'000));
     e.floating = f;
   }
+  if (doc.contains("family")) {
+    const section_reader r(origin, "family", doc["family"], {"max_degree", "budget_seconds"});
+    family_settings f;
+    if (r.has("max_degree")) f.max_degree = static_cast<int>(r.integer("max_degree", 1, 6));
+    if (r.has("budget_seconds")) f.budget_seconds = r.number("budget_seconds", 0, 3600);
+    e.family = f;
+  }
   return e;
 }
 
@@ -281,7 +288,7 @@ scene parse_scene(const std::string& text, const std::string& origin) {
   if (!doc.is_object()) fail(origin, "the top level must be an object");
   static const std::set<std::string> known{"name", "description", "claims", "precisions", "samples", "seed", "expected_overrides",
                                          "paper", "table1", "work_precision", "stability", "long_time",
-                                         "nonlinear", "floating"};
+                                         "nonlinear", "floating", "family"};
   for (const auto& item : doc.items()) {
     if (!known.count(item.key())) fail(origin, "unknown key '" + item.key() + "'");
   }

@@ -54,12 +54,14 @@ void keep_sections(scene& s, const std::vector<std::string>& names) {
   else if (!e.nonlinear) e.nonlinear = nonlinear_settings{};
   if (!wanted("floating")) e.floating.reset();
   else if (!e.floating) e.floating = floating_settings{};
+  if (!wanted("family")) e.family.reset();
+  else if (!e.family) e.family = family_settings{};
 }
 
 }  // namespace
 
 const std::vector<std::string>& section_names() {
-  static const std::vector<std::string> names{"table1", "work_precision", "stability", "long_time", "nonlinear", "floating"};
+  static const std::vector<std::string> names{"table1", "work_precision", "stability", "long_time", "nonlinear", "floating", "family"};
   return names;
 }
 

@@ -7,6 +7,7 @@
 // data (result_model.hpp), rendered by section_render.hpp. Run times are timing columns, which
 // report.json keeps in members named "timing" (left out when reports are compared).
 
+#include <simpson/verify/family_section.hpp>
 #include <simpson/verify/floating_section.hpp>
 #include <simpson/verify/long_time_section.hpp>
 #include <simpson/verify/nonlinear_section.hpp>
@@ -28,7 +29,8 @@ struct experiment_settings {
   std::optional<long_time_settings> long_time;
   std::optional<nonlinear_settings> nonlinear;
   std::optional<floating_settings> floating;
-  bool any() const { return table1 || work_precision || stability || long_time || nonlinear || floating; }
+  std::optional<family_settings> family;
+  bool any() const { return table1 || work_precision || stability || long_time || nonlinear || floating || family; }
 };
 
 }  // namespace simpson::verify

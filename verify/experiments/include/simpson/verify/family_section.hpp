@@ -1,0 +1,18 @@
+#pragma once
+// The family section (issue 30): every Galerkin variational integrator of degree s = 1 … max_degree
+// with each quadrature rule (Newton–Cotes, Lobatto and Gauss, up to s + 2 points), derived for the
+// harmonic oscillator in our exact kernel (verify/family) and analysed: det Φ, the conserved form,
+// the stability bands, the order and its error constant, the known scheme it equals.
+
+#include <simpson/verify/result_model.hpp>
+
+namespace simpson::verify {
+
+struct family_settings {
+  int max_degree = 2;          // s = 1 … max_degree
+  double budget_seconds = 60;  // no member is started past this; the rest are listed as not run
+};
+
+section_result run_family(const family_settings& s);
+
+}  // namespace simpson::verify

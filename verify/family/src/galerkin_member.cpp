@@ -1,0 +1,273 @@
+// One member of the Galerkin family, derived and analysed (galerkin_member.hpp).
+
+#include <simpson/verify/galerkin_member.hpp>
+
+#include <simpson/verify/exact_proof.hpp>
+#include <simpson/verify/stability_analysis.hpp>
+
+#include <simpson/newmark_map.hpp>
+#include <simpson/partitioned_runge_kutta.hpp>
+#include <simpson/runge_kutta_tableaux.hpp>
+#include <simpson/simpson_map.hpp>
+
+#include <boost/multiprecision/mpfr.hpp>
+
+#include <chrono>
+#include <stdexcept>
+
+namespace simpson::verify {
+namespace {
+
+using tau_polynomial = std::vector<rational>;  // in τ ∈ [0, 1], constant term first
+
+tau_polynomial times(const tau_polynomial& a, const tau_polynomial& b) {
+  tau_polynomial out(a.size() + b.size() - 1, rational(0));
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    for (std::size_t j = 0; j < b.size(); ++j) out[i + j] += a[i] * b[j];
+  }
+  return out;
+}
+
+tau_polynomial d_dtau(const tau_polynomial& p) {
+  tau_polynomial out;
+  for (std::size_t i = 1; i < p.size(); ++i) out.push_back(rational(static_cast<long>(i)) * p[i]);
+  return out.empty() ? tau_polynomial{rational(0)} : out;
+}
+
+/// The interpolant's basis: 1 − τ (q_j), τ (q_{j+1}), τᵏ(1 − τ) for k = 1 … s − 1 (internal).
+std::vector<tau_polynomial> basis(int s) {
+  std::vector<tau_polynomial> out{{rational(1), rational(-1)}, {rational(0), rational(1)}};
+  for (int k = 1; k < s; ++k) {
+    tau_polynomial b(static_cast<std::size_t>(k) + 2, rational(0));
+    b[static_cast<std::size_t>(k)] = 1;
+    b[static_cast<std::size_t>(k) + 1] = -1;
+    out.push_back(b);
+  }
+  return out;
+}
+
+/// The rule applied to a polynomial: Σ_n f_n μ_n.
+rational apply_rule(const tau_polynomial& f, const std::vector<rational>& moments) {
+  rational sum(0);
+  for (std::size_t n = 0; n < f.size(); ++n) sum += f[n] * moments[n];
+  return sum;
+}
+
+/// The monic greatest common divisor of two polynomials over Q (Euclid).
+polynomial gcd_of(polynomial a, polynomial b) {
+  while (!is_zero(b)) {
+    polynomial r = a % b;
+    a = std::move(b);
+    b = std::move(r);
+  }
+  const long d = degree(a);
+  if (d < 0) return make_polynomial({rational(1)});
+  const rational lead = a[static_cast<std::size_t>(d)];
+  for (std::size_t k = 0; k < a.size(); ++k) a[k] /= lead;
+  return a;
+}
+
+/// N/D with their common factor removed and D monic: the canonical form, for text and degrees.
+symbolic reduced(const symbolic& f) {
+  const polynomial g = gcd_of(f.numerator(), f.denominator());
+  polynomial n = f.numerator() / g, d = f.denominator() / g;
+  const rational lead = d[static_cast<std::size_t>(degree(d))];
+  for (std::size_t k = 0; k < n.size(); ++k) n[k] /= lead;
+  for (std::size_t k = 0; k < d.size(); ++k) d[k] /= lead;
+  return {n, d};
+}
+
+long size_of(const symbolic& f) { return std::max(degree(f.numerator()), degree(f.denominator())); }
+
+std::string text(const symbolic& f) {
+  const std::string n = to_string(f.numerator(), "θ"), d = to_string(f.denominator(), "θ");
+  return d == "1" ? n : "(" + n + ") / (" + d + ")";
+}
+
+/// Gauss–Legendre with s stages on ẏ = Ay (m = ω = 1, A² = −1): R(hA) for the diagonal Padé
+/// approximant P(z)/P(−z) of eᶻ, P(z) = Σ_j (2s − j)! s! / ((2s)! j! (s − j)!) zʲ. With
+/// P(θA) = a + bθA: R = ((a² − b²θ²) + 2abθA)/(a² + b²θ²).
+one_step_matrix<symbolic> gauss_legendre_map(int s) {
+  const auto factorial = [](int k) {
+    boost::multiprecision::cpp_int f = 1;
+    for (int i = 2; i <= k; ++i) f *= i;
+    return rational(f);
+  };
+  const symbolic theta = symbolic::variable(), x = theta * theta;
+  symbolic a(0), b(0), power(1);  // power = (−θ²)^⌊j/2⌋
+  for (int j = 0; j <= s; ++j) {
+    const rational c = factorial(2 * s - j) * factorial(s) / (factorial(2 * s) * factorial(j) * factorial(s - j));
+    if (j % 2 == 0) {
+      a += symbolic(c) * power;
+    } else {
+      b += symbolic(c) * power;
+      power = power * (symbolic(0) - x);
+    }
+  }
+  const symbolic den = a * a + b * b * x, diagonal = (a * a - b * b * x) / den, off = symbolic(2) * a * b * theta / den;
+  // A = [[0, −1], [1, 0]] on (p, q): p' = −q, q' = p.
+  return {diagonal, symbolic(0) - off, off, diagonal};
+}
+
+bool same_map(const one_step_matrix<symbolic>& a, const one_step_matrix<symbolic>& b) {
+  return (a.alpha - b.alpha).is_zero() && (a.beta - b.beta).is_zero() && (a.gamma - b.gamma).is_zero() &&
+         (a.delta - b.delta).is_zero();
+}
+
+/// The known schemes, with m = ω = 1 and h = θ, in the core's own formulas where it has them.
+std::vector<std::pair<std::string, one_step_matrix<symbolic>>> known_schemes(int s) {
+  const oscillator_parameters<symbolic> unit = unit_oscillator_in_theta();
+  std::vector<std::pair<std::string, one_step_matrix<symbolic>>> out{
+      {"Φ₃ (the paper's Simpson scheme)", simpson_map(unit)},
+      {"Newmark (the paper's Section 2)", newmark_map(unit)},
+      {"Störmer–Verlet (Lobatto IIIA–IIIB, 2 stages)",
+       partitioned_runge_kutta_map(unit, lobatto_iiia2_tableau<symbolic>(), lobatto_iiib2_tableau<symbolic>())},
+      {"Lobatto IIIA–IIIB, 3 stages",
+       partitioned_runge_kutta_map(unit, lobatto_iiia3_tableau<symbolic>(), lobatto_iiib3_tableau<symbolic>())}};
+  out.emplace_back("Gauss–Legendre, " + std::to_string(s) + " stage" + (s == 1 ? " (implicit midpoint)" : "s"), gauss_legendre_map(s));
+  return out;
+}
+
+}  // namespace
+
+std::string member_name(const galerkin_member& m) { return "s = " + std::to_string(m.degree) + ", " + rule_name(m.rule); }
+
+member_analysis analyse_member(const galerkin_member& member, long budget_degree) {
+  const auto start = std::chrono::steady_clock::now();
+  member_analysis out;
+  out.member = member;
+  const int s = member.degree;
+  if (s < 1) throw std::invalid_argument("the interpolant's degree must be at least 1");
+  const std::vector<rational> mu = quadrature_moments(member.rule, 2 * s);
+  const std::vector<tau_polynomial> phi = basis(s);
+  const std::size_t n = phi.size();
+  const symbolic theta = symbolic::variable(), x = theta * theta;
+
+  // 1. L_h = (1/2θ) xᵀ K x with K = T − θ² M (m = ω = 1, h = θ): Σ_k w_k h [½ (q'/h)² − ½ q²].
+  std::vector<std::vector<symbolic>> K(n, std::vector<symbolic>(n));
+  json lagrangian = json::array();
+  for (std::size_t i = 0; i < n; ++i) {
+    json row = json::array();
+    for (std::size_t j = 0; j < n; ++j) {
+      const rational t = apply_rule(times(d_dtau(phi[i]), d_dtau(phi[j])), mu), m = apply_rule(times(phi[i], phi[j]), mu);
+      K[i][j] = symbolic(t) - symbolic(m) * x;
+      row.push_back(text(K[i][j]));
+    }
+    lagrangian.push_back(row);
+  }
+  out.evidence["basis"] = "1 - tau (q_j), tau (q_{j+1}), tau^k (1 - tau) for k = 1 .. s - 1 (internal), tau = (t - t_j)/h";
+  out.evidence["discrete_lagrangian"] = {{"form", "L_h = (1/(2 theta)) x^T K x, x = (q_j, q_{j+1}, internal), m = omega = 1, h = theta"},
+                                         {"K", lagrangian},
+                                         {"moments", [&] {
+                                            json m = json::array();
+                                            for (const rational& v : mu) m.push_back(simpson::to_string(v));
+                                            return m;
+                                          }()}};
+
+  // 2–3. dL_h/d(internal) = 0, eliminated one internal unknown at a time (a Schur complement).
+  for (std::size_t k = n; k-- > 2;) {
+    if (K[k][k].is_zero()) {
+      out.failure = "internal system singular: the rule cannot fix internal degree of freedom " + std::to_string(k - 1) +
+                    " (too few quadrature points for the degree)";
+      out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      return out;
+    }
+    for (std::size_t i = 0; i < k; ++i) {
+      if (K[i][k].is_zero()) continue;
+      const symbolic factor = reduced(K[i][k] / K[k][k]);
+      for (std::size_t j = 0; j < k; ++j) K[i][j] = reduced(K[i][j] - factor * K[k][j]);
+    }
+    long largest = 0;
+    for (std::size_t i = 0; i < k; ++i) {
+      for (std::size_t j = 0; j < k; ++j) largest = std::max(largest, size_of(K[i][j]));
+    }
+    if (largest > budget_degree) {
+      out.failure = "stopped at the budget: the elimination reached degree " + std::to_string(largest) + " in θ (budget " +
+                    std::to_string(budget_degree) + ")";
+      out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      return out;
+    }
+  }
+  const symbolic S00 = K[0][0], S01 = K[0][1], S10 = K[1][0], S11 = K[1][1];
+  if (S01.is_zero()) {
+    out.failure = "the reduced Lagrangian does not couple q_j and q_{j+1}: no one-step map";
+    return out;
+  }
+  out.evidence["reduced_lagrangian"] = {{"form", "L_h(q_j, q_{j+1}) = (1/(2 theta)) (S00 q_j^2 + 2 S01 q_j q_{j+1} + S11 q_{j+1}^2)"},
+                                        {"S00", text(S00)}, {"S01", text(S01)}, {"S11", text(S11)},
+                                        {"symmetric", (S01 - S10).is_zero()}};
+
+  // 4. p_j = −∂L_h/∂q_j = −(S00 q_j + S01 q_{j+1})/θ solved for q_{j+1}; p_{j+1} = ∂L_h/∂q_{j+1}.
+  one_step_matrix<symbolic> map{reduced((symbolic(0) - S11) / S01), reduced((S01 * S01 - S00 * S11) / (theta * S01)),
+                                reduced((symbolic(0) - theta) / S01), reduced((symbolic(0) - S00) / S01)};
+  out.alpha = text(map.alpha);
+  out.beta = text(map.beta);
+  out.gamma = text(map.gamma);
+  out.delta = text(map.delta);
+  out.size = std::max({size_of(map.alpha), size_of(map.beta), size_of(map.gamma), size_of(map.delta)});
+  out.derived = true;
+
+  // det Φ = 1 and the conserved form W.
+  out.det_one = (map.alpha * map.delta - map.beta * map.gamma - symbolic(1)).is_zero();
+  const symbolic w_pp = symbolic(0) - map.gamma, w_pq = (map.alpha - map.delta) / 2, w_qq = map.beta;
+  // (ΦᵀWΦ)_{ij} − W_{ij}, Φ = [[α, β], [γ, δ]] on (p, q).
+  const auto quad = [&](const symbolic& a1, const symbolic& b1, const symbolic& a2, const symbolic& b2) {
+    return a1 * w_pp * a2 + a1 * w_pq * b2 + b1 * w_pq * a2 + b1 * w_qq * b2;
+  };
+  out.form_conserved = (quad(map.alpha, map.gamma, map.alpha, map.gamma) - w_pp).is_zero() &&
+                       (quad(map.alpha, map.gamma, map.beta, map.delta) - w_pq).is_zero() &&
+                       (quad(map.beta, map.delta, map.beta, map.delta) - w_qq).is_zero();
+  out.evidence["conserved_form"] = {{"W", "[[-gamma, (alpha - delta)/2], [(alpha - delta)/2, beta]]"},
+                                    {"Phi^T W Phi = W", out.form_conserved}};
+
+  // Stability: the three-term scheme S01 q_{j−1} + (S00 + S11) q_j + S01 q_{j+1} = 0.
+  const stability_report stability = analyse_three_term_scheme([&](const symbolic& qp, const symbolic& q, const symbolic& qn) {
+    return S01 * qp + (S00 + S11) * q + S01 * qn;
+  });
+  out.evidence["stability"] = stability.evidence;
+  out.discriminant = stability.evidence["discriminant_over_a2_numerator"].get<std::string>() + " / (" +
+                     stability.evidence["discriminant_over_a2_denominator"].get<std::string>() + ")";
+  // ωh at a root of Δ: exact ("2 sqrt(2)") or, for an irrational root, √ of its isolating interval to 10 digits.
+  const auto omega_h = [](const positive_root& r) {
+    if (r.exact()) return omega_h_text(r);
+    using real = boost::multiprecision::mpfr_float_50;
+    const real low = sqrt(real(numerator(r.low)) / real(denominator(r.low)));
+    return "≈" + low.str(10, std::ios_base::fmtflags(0));
+  };
+  for (std::size_t k = 0; k < stability.bands.size(); ++k) {
+    const stability_band& b = stability.bands[k];
+    if (!b.stable) continue;
+    out.stable_intervals.emplace_back(k == 0 ? std::string("0") : omega_h(stability.roots[k - 1]), b.to ? omega_h(*b.to) : std::string());
+  }
+
+  // Order: (2 cos θ − tr Φ)/h² = c θ^r / θ² + ..., the three-term scheme's truncation error on e^{iωt}.
+  const symbolic trace = reduced(map.alpha + map.delta);
+  const polynomial& N = trace.numerator();
+  const polynomial& D = trace.denominator();
+  const int bound = static_cast<int>(degree(N) + degree(D)) + 24;
+  polynomial series = make_polynomial({rational(2)}) * cos_taylor(bound) * D - N;
+  int r = -1;
+  for (int k = 0; k <= bound && k <= degree(series); ++k) {
+    if (series[static_cast<std::size_t>(k)] != 0) {
+      r = k;
+      break;
+    }
+  }
+  if (r < 0 || D[0] == 0) {
+    out.evidence["truncation"] = "no leading term within the series' exact part";
+  } else {
+    const rational c = series[static_cast<std::size_t>(r)] / D[0];
+    out.order = r - 2;
+    out.error_constant = simpson::to_string(c);
+    out.evidence["truncation"] = {{"leading", simpson::to_string(c) + " omega^" + std::to_string(r) + " h^" + std::to_string(r - 2)},
+                                  {"definition", "(q(t+h) - tr(Phi) q(t) + q(t-h))/h^2 on q = exp(i omega t), divided by q"}};
+  }
+
+  for (const auto& [name, known] : known_schemes(s)) {
+    if (same_map(map, known)) out.equals.push_back(name);
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+}  // namespace simpson::verify
