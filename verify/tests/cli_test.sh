@@ -32,12 +32,23 @@ fail() { echo "FAIL $1"; failures=$((failures + 1)); }
 
 if [ "$part" = beyond-scene ]; then
   check "beyond scene" 0 --scene beyond --quiet --out "$work/beyond"
-  grep -q '^8 claims: 8 held, 0 errata, 0 failed; all verdicts as expected' "$work/out" ||
+  grep -q '^9 claims: 9 held, 0 errata, 0 failed; all verdicts as expected' "$work/out" ||
     { echo "FAIL beyond scene: $(cat "$work/out")"; failures=$((failures + 1)); }
   echo "$passes passed, $failures failed"
   [ "$failures" = 0 ]
   exit
 fi
+
+# The family scene, whole (s = 1 … 6, seconds): the paper's scheme, Newmark and Lobatto's order 2s.
+check "family scene" 0 --scene family --quiet --out "$work/family"
+grep -q '^1 claim: 1 held' "$work/out" || fail "family scene: family-symplectic not held: $(head -1 "$work/out")"
+grep -q '^| s = 2, Simpson | 3 | yes | yes | yes | 4 | yes | 1/1440 | (0, 2 sqrt(2)) ∪ (2 sqrt(3), 2 sqrt(6)) | Φ₃' "$work/family/report.md" ||
+  fail "family scene: the row of Φ₃ (s = 2, Simpson)"
+grep -q '^| s = 1, midpoint | 1 | yes | yes | yes | 2 | yes | -1/6 | (0, ∞) | Newmark' "$work/family/report.md" ||
+  fail "family scene: the row of Newmark (s = 1, midpoint)"
+grep -q 's = 1: order 2, s = 2: order 4, s = 3: order 6, s = 4: order 8, s = 5: order 10, s = 6: order 12\.' "$work/family/report.md" ||
+  fail "family scene: Lobatto s + 1 of order 2s"
+if command -v gnuplot >/dev/null; then [ -s "$work/family/family_bands.png" ] || fail "family scene: the stability-band plot is missing"; fi
 
 check "quick scene" 0 --scene quick --out "$work/quick"
 [ -f "$work/quick/report.json" ] && [ -f "$work/quick/report.md" ] || { echo "FAIL quick: reports missing"; failures=$((failures + 1)); }

@@ -258,10 +258,12 @@ experiment_settings parse_experiments(const nlohmann::json& doc, const std::stri
     e.floating = f;
   }
   if (doc.contains("family")) {
-    const section_reader r(origin, "family", doc["family"], {"max_degree", "budget_seconds"});
+    const section_reader r(origin, "family", doc["family"], {"max_degree", "budget_seconds", "ginac", "node_check_degree"});
     family_settings f;
-    if (r.has("max_degree")) f.max_degree = static_cast<int>(r.integer("max_degree", 1, 6));
+    if (r.has("max_degree")) f.max_degree = static_cast<int>(r.integer("max_degree", 1, 8));
     if (r.has("budget_seconds")) f.budget_seconds = r.number("budget_seconds", 0, 3600);
+    if (r.has("ginac")) f.ginac = r.flag("ginac");
+    if (r.has("node_check_degree")) f.node_check_degree = static_cast<int>(r.integer("node_check_degree", 0, 4));
     e.family = f;
   }
   return e;

@@ -77,6 +77,8 @@ symbolic reduced(const symbolic& f) {
   return {n, d};
 }
 
+polynomial lcm_of(const polynomial& a, const polynomial& b) { return a / gcd_of(a, b) * b; }
+
 long size_of(const symbolic& f) { return std::max(degree(f.numerator()), degree(f.denominator())); }
 
 std::string text(const symbolic& f) {
@@ -115,7 +117,7 @@ bool same_map(const one_step_matrix<symbolic>& a, const one_step_matrix<symbolic
 }
 
 /// The known schemes, with m = ω = 1 and h = θ, in the core's own formulas where it has them.
-std::vector<std::pair<std::string, one_step_matrix<symbolic>>> known_schemes(int s) {
+std::vector<std::pair<std::string, one_step_matrix<symbolic>>> known_schemes() {
   const oscillator_parameters<symbolic> unit = unit_oscillator_in_theta();
   std::vector<std::pair<std::string, one_step_matrix<symbolic>>> out{
       {"Φ₃ (the paper's Simpson scheme)", simpson_map(unit)},
@@ -124,11 +126,27 @@ std::vector<std::pair<std::string, one_step_matrix<symbolic>>> known_schemes(int
        partitioned_runge_kutta_map(unit, lobatto_iiia2_tableau<symbolic>(), lobatto_iiib2_tableau<symbolic>())},
       {"Lobatto IIIA–IIIB, 3 stages",
        partitioned_runge_kutta_map(unit, lobatto_iiia3_tableau<symbolic>(), lobatto_iiib3_tableau<symbolic>())}};
-  out.emplace_back("Gauss–Legendre, " + std::to_string(s) + " stage" + (s == 1 ? " (implicit midpoint)" : "s"), gauss_legendre_map(s));
   return out;
 }
 
+std::pair<std::string, one_step_matrix<symbolic>> gauss_legendre_entry(int s) {
+  return {"Gauss–Legendre, " + std::to_string(s) + " stage" + (s == 1 ? " (implicit midpoint)" : "s"), gauss_legendre_map(s)};
+}
+
 }  // namespace
+
+std::string piece_text(const stable_piece& p) {
+  if (p.from_closed && p.to_closed && p.from == p.to) return "{" + p.from + "}";
+  return std::string(p.from_closed ? "[" : "(") + p.from + ", " + (p.to.empty() ? "∞" : p.to) + (p.to_closed ? "]" : ")");
+}
+
+std::vector<quadrature_rule> family_rules(int s) {
+  std::vector<quadrature_rule> out;
+  for (int k = 2; k <= s + 2; ++k) out.push_back({quadrature_family::newton_cotes, k});
+  for (int k = 2; k <= s + 2; ++k) out.push_back({quadrature_family::lobatto, k});
+  for (int k = 1; k <= s + 1; ++k) out.push_back({quadrature_family::gauss, k});
+  return out;
+}
 
 std::string member_name(const galerkin_member& m) { return "s = " + std::to_string(m.degree) + ", " + rule_name(m.rule); }
 
@@ -204,25 +222,43 @@ member_analysis analyse_member(const galerkin_member& member, long budget_degree
   out.beta = text(map.beta);
   out.gamma = text(map.gamma);
   out.delta = text(map.delta);
+  const auto coefficients = [](const polynomial& p) {
+    std::vector<std::string> c;
+    for (long k = 0; k <= degree(p); ++k) c.push_back(simpson::to_string(p[static_cast<std::size_t>(k)]));
+    return c;
+  };
+  const std::array<const symbolic*, 4> entries{&map.alpha, &map.beta, &map.gamma, &map.delta};
+  for (std::size_t k = 0; k < 4; ++k) out.map_coefficients[k] = {coefficients(entries[k]->numerator()), coefficients(entries[k]->denominator())};
   out.size = std::max({size_of(map.alpha), size_of(map.beta), size_of(map.gamma), size_of(map.delta)});
   out.derived = true;
 
-  // det Φ = 1 and the conserved form W.
-  out.det_one = (map.alpha * map.delta - map.beta * map.gamma - symbolic(1)).is_zero();
-  const symbolic w_pp = symbolic(0) - map.gamma, w_pq = (map.alpha - map.delta) / 2, w_qq = map.beta;
-  // (ΦᵀWΦ)_{ij} − W_{ij}, Φ = [[α, β], [γ, δ]] on (p, q).
-  const auto quad = [&](const symbolic& a1, const symbolic& b1, const symbolic& a2, const symbolic& b2) {
-    return a1 * w_pp * a2 + a1 * w_pq * b2 + b1 * w_pq * a2 + b1 * w_qq * b2;
+  // det Φ = 1 and the conserved form W, as polynomial identities over Φ's common denominator d:
+  // Φ = P/d, det Φ = 1 ⇔ det P = d², and with W = V/d, ΦᵀWΦ = W ⇔ PᵀVP = d² V.
+  const polynomial d = lcm_of(lcm_of(map.alpha.denominator(), map.beta.denominator()),
+                              lcm_of(map.gamma.denominator(), map.delta.denominator()));
+  const auto over_d = [&](const symbolic& f) { return f.numerator() * (d / f.denominator()); };
+  const polynomial Pa = over_d(map.alpha), Pb = over_d(map.beta), Pc = over_d(map.gamma), Pd = over_d(map.delta);
+  const polynomial d2 = d * d, half = make_polynomial({rational(1, 2)});
+  out.det_one = is_zero(Pa * Pd - Pb * Pc - d2);
+  const polynomial v_pp = polynomial() - Pc, v_pq = (Pa - Pd) * half, v_qq = Pb;
+  // (PᵀVP)_{ij} for columns (a1, b1) and (a2, b2) of P.
+  const auto quad = [&](const polynomial& a1, const polynomial& b1, const polynomial& a2, const polynomial& b2) {
+    return a1 * v_pp * a2 + a1 * v_pq * b2 + b1 * v_pq * a2 + b1 * v_qq * b2;
   };
-  out.form_conserved = (quad(map.alpha, map.gamma, map.alpha, map.gamma) - w_pp).is_zero() &&
-                       (quad(map.alpha, map.gamma, map.beta, map.delta) - w_pq).is_zero() &&
-                       (quad(map.beta, map.delta, map.beta, map.delta) - w_qq).is_zero();
+  out.form_conserved = is_zero(quad(Pa, Pc, Pa, Pc) - d2 * v_pp) && is_zero(quad(Pa, Pc, Pb, Pd) - d2 * v_pq) &&
+                       is_zero(quad(Pb, Pd, Pb, Pd) - d2 * v_qq);
   out.evidence["conserved_form"] = {{"W", "[[-gamma, (alpha - delta)/2], [(alpha - delta)/2, beta]]"},
                                     {"Phi^T W Phi = W", out.form_conserved}};
 
   // Stability: the three-term scheme S01 q_{j−1} + (S00 + S11) q_j + S01 q_{j+1} = 0.
+  // Scaled by the entries' common denominator (the same characteristic roots), so that the
+  // analysis works on polynomials.
+  const polynomial common = lcm_of(lcm_of(S00.denominator(), S01.denominator()), S11.denominator());
+  const symbolic a_poly(S01.numerator() * (common / S01.denominator()), make_polynomial({rational(1)}));
+  const symbolic b_poly(S00.numerator() * (common / S00.denominator()) + S11.numerator() * (common / S11.denominator()),
+                        make_polynomial({rational(1)}));
   const stability_report stability = analyse_three_term_scheme([&](const symbolic& qp, const symbolic& q, const symbolic& qn) {
-    return S01 * qp + (S00 + S11) * q + S01 * qn;
+    return a_poly * qp + b_poly * q + a_poly * qn;
   });
   out.evidence["stability"] = stability.evidence;
   out.discriminant = stability.evidence["discriminant_over_a2_numerator"].get<std::string>() + " / (" +
@@ -234,10 +270,68 @@ member_analysis analyse_member(const galerkin_member& member, long budget_degree
     const real low = sqrt(real(numerator(r.low)) / real(denominator(r.low)));
     return "≈" + low.str(10, std::ios_base::fmtflags(0));
   };
+  const auto omega_h_value = [](const rational& x) {
+    using real = boost::multiprecision::mpfr_float_50;
+    return static_cast<double>(sqrt(real(numerator(x)) / real(denominator(x))));
+  };
+  // At a root of Δ, tr Φ = ±2: Φ is power-bounded there exactly when Φ = ±I (β = γ = 0), else a
+  // Jordan block grows linearly. β = γ = 0 at the root ⇔ the root is one of
+  // g = gcd(num(γ/θ), num(βθ), num(Δ)), all polynomials in x = θ².
+  const symbolic trace_x = reduced(map.alpha + map.delta);
+  const polynomial disc = even_in_theta_to_x(trace_x.numerator() * trace_x.numerator() -
+                                             make_polynomial({rational(4)}) * trace_x.denominator() * trace_x.denominator());
+  const polynomial identity_points =
+      gcd_of(gcd_of(even_in_theta_to_x(reduced(map.gamma / theta).numerator()), even_in_theta_to_x(reduced(map.beta * theta).numerator())),
+             disc);
+  const auto scalar_at_root = [&](const positive_root& r) {
+    if (degree(identity_points) < 1) return false;
+    if (r.exact()) return identity_points.evaluate(r.low) == 0;
+    return count_real_roots(identity_points, r.low, r.high) > 0;
+  };
+  // The stable set: bands and roots in increasing order, consecutive stable ones merged.
+  struct element {
+    bool stable;
+    bool point;
+    std::size_t index;
+  };
+  std::vector<element> line;
+  json endpoint_decisions = json::array();
   for (std::size_t k = 0; k < stability.bands.size(); ++k) {
-    const stability_band& b = stability.bands[k];
-    if (!b.stable) continue;
-    out.stable_intervals.emplace_back(k == 0 ? std::string("0") : omega_h(stability.roots[k - 1]), b.to ? omega_h(*b.to) : std::string());
+    line.push_back({stability.bands[k].stable, false, k});
+    if (k < stability.roots.size()) {
+      const bool scalar = stability.product_of_roots_is_one && scalar_at_root(stability.roots[k]);
+      line.push_back({scalar, true, k});
+      endpoint_decisions.push_back({{"omega_h", omega_h(stability.roots[k])},
+                                    {"Phi", scalar ? "+-I: stable (power-bounded)" : "a Jordan block: unstable (linear growth)"}});
+    }
+  }
+  out.evidence["endpoints"] = endpoint_decisions;
+  for (std::size_t i = 0; i < line.size();) {
+    if (!line[i].stable) {
+      ++i;
+      continue;
+    }
+    std::size_t j = i;
+    while (j + 1 < line.size() && line[j + 1].stable) ++j;
+    stable_piece piece;
+    if (line[i].point) {
+      piece.from = omega_h(stability.roots[line[i].index]);
+      piece.from_closed = true;
+      piece.from_value = omega_h_value(stability.roots[line[i].index].low);
+    } else if (line[i].index > 0) {
+      piece.from = omega_h(stability.roots[line[i].index - 1]);
+      piece.from_value = omega_h_value(stability.roots[line[i].index - 1].low);
+    }
+    if (line[j].point) {
+      piece.to = omega_h(stability.roots[line[j].index]);
+      piece.to_closed = true;
+      piece.to_value = omega_h_value(stability.roots[line[j].index].low);
+    } else if (line[j].index < stability.roots.size()) {
+      piece.to = omega_h(stability.roots[line[j].index]);
+      piece.to_value = omega_h_value(stability.roots[line[j].index].low);
+    }
+    out.stable_set.push_back(piece);
+    i = j + 1;
   }
 
   // Order: (2 cos θ − tr Φ)/h² = c θ^r / θ² + ..., the three-term scheme's truncation error on e^{iωt}.
@@ -263,7 +357,11 @@ member_analysis analyse_member(const galerkin_member& member, long budget_degree
                                   {"definition", "(q(t+h) - tr(Phi) q(t) + q(t-h))/h^2 on q = exp(i omega t), divided by q"}};
   }
 
-  for (const auto& [name, known] : known_schemes(s)) {
+  static const std::vector<std::pair<std::string, one_step_matrix<symbolic>>> fixed = known_schemes();
+  for (const auto& [name, known] : fixed) {
+    if (same_map(map, known)) out.equals.push_back(name);
+  }
+  for (const auto& [name, known] : std::vector<std::pair<std::string, one_step_matrix<symbolic>>>{gauss_legendre_entry(s)}) {
     if (same_map(map, known)) out.equals.push_back(name);
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -4,6 +4,7 @@
 // on rational functions of θ) stay the claims' exact evidence; these goals are what coqc checks again.
 
 #include "printed_check_support.hpp"
+#include "claims_family.hpp"
 
 #include <simpson/energy.hpp>
 #include <simpson/newmark_map.hpp>
@@ -135,7 +136,8 @@ const std::map<std::string, std::function<std::vector<proof_goal>()>>& kernel_cl
       {"phi3-symplectic", phi3_symplectic},             {"phi3-explicit", phi3_explicit},
       {"phi3-shear-factorization", phi3_shear_factorization},
       {"newmark-unconditional-stability", newmark_unconditional_stability},
-      {"lemma-dimensional-scaling", dimensional_scaling}};
+      {"lemma-dimensional-scaling", dimensional_scaling},
+      {"family-symplectic", family_symplectic_goals}};
   return goals;
 }
 

@@ -8,6 +8,7 @@
 #include "claims_peers.hpp"
 #include "claims_roundoff.hpp"
 #include "claims_beyond.hpp"
+#include "claims_family.hpp"
 #include "claims_unformulated.hpp"
 
 #include <stdexcept>
@@ -30,6 +31,7 @@ const std::vector<claim>& ledger() {
     detail::add_shear_claims(all);
     detail::add_beyond_claims(all);
     detail::add_beyond_ndof_claims(all);
+    detail::add_family_claims(all);
     return all;
   }();
   return claims;

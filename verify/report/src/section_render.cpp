@@ -192,12 +192,15 @@ std::string plot_commands(const plot_description& p) {
   if (shared_legend) gp += "set multiplot\n";
   std::size_t block = 0;
   std::vector<const series*> legend;  // each title once, in order of appearance
+  bool labelled_tics = false;
   for (std::size_t k = 0; k < p.panels.size(); ++k) {
     const panel& pan = p.panels[k];
     if (shared_legend) {
       gp += fmt::format("set origin {:.4f},{:.4f}\nset size {:.4f},{:.4f}\n", static_cast<double>(k % columns) * panel_width,
                         1 - static_cast<double>(k / columns + 1) * panel_height, panel_width, panel_height);
     }
+    // A panel after one with labelled tics starts from gnuplot's own again.
+    if (labelled_tics) gp += "set xtics autofreq\nset ytics autofreq\nset mxtics default\nset mytics default\n";
     gp += "set title " + gp_quote(pan.title) + "\n";
     const bool log10_y = drawn_as_log10(pan);
     gp += "set xlabel " + gp_quote(pan.x.label) + "\nset ylabel " +
@@ -216,6 +219,13 @@ std::string plot_commands(const plot_description& p) {
     }
     gp += axis_range("x", pan.x, pan.x.log, xs);
     gp += axis_range("y", pan.y, pan.y.log && !log10_y, ys);
+    for (const auto& [name, a] : {std::pair<const char*, const axis*>{"x", &pan.x}, {"y", &pan.y}}) {
+      if (a->tics.empty()) continue;
+      std::vector<std::string> labelled;
+      for (const auto& [at, label] : a->tics) labelled.push_back(fmt::format("{} {:.6g}", gp_quote(label), at));
+      gp += fmt::format("set {}tics ({})\nset m{}tics 1\n", name, fmt::join(labelled, ", "), name);
+      labelled_tics = true;
+    }
     std::vector<std::string> curves;
     for (const series& s : pan.curves) {
       if (drawable_points(pan, s).empty()) continue;

@@ -6,11 +6,16 @@
 
 #include <simpson/verify/result_model.hpp>
 
+#include <vector>
+
 namespace simpson::verify {
 
 struct family_settings {
   int max_degree = 2;          // s = 1 … max_degree
   double budget_seconds = 60;  // no member is started past this; the rest are listed as not run
+  bool ginac = true;           // each member derived again in GiNaC, m, ω, h symbolic
+  int node_check_degree = 3;   // up to this s, also with the internal nodes as symbols
+  std::vector<long long> pendulum_steps{4, 8, 16, 32, 64};  // steps to t = 5, each twice the one before
 };
 
 section_result run_family(const family_settings& s);

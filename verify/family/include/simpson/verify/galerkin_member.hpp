@@ -17,6 +17,8 @@
 #include <simpson/verify/json.hpp>
 #include <simpson/verify/quadrature_rule.hpp>
 
+#include <array>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -28,8 +30,24 @@ struct galerkin_member {
   quadrature_rule rule;
 };
 
+/// The rules the family takes for degree s: Newton–Cotes and Lobatto with 2 … s + 2 points, Gauss
+/// with 1 … s + 1 (each up to one point beyond what order 2s needs).
+std::vector<quadrature_rule> family_rules(int s);
+
 /// "s = 2, Simpson".
 std::string member_name(const galerkin_member& m);
+
+/// One connected piece of a member's stable set in ωh: an open band, a band with a closed end
+/// where Φ = ±I, or an isolated point (from == to, both closed). Ends as text (exact, or ≈ 10
+/// digits of an isolated irrational root) and, for plots only, as doubles.
+struct stable_piece {
+  std::string from = "0", to;  // to: "" = infinity
+  bool from_closed = false, to_closed = false;
+  double from_value = 0, to_value = std::numeric_limits<double>::infinity();
+};
+
+/// "(0, 2 sqrt(2))", "[a, b)", "{a}".
+std::string piece_text(const stable_piece& p);
 
 /// What the harness proves of a member, as text and verdicts.
 struct member_analysis {
@@ -37,10 +55,12 @@ struct member_analysis {
   bool derived = false;
   std::string failure;  // why not derived
   std::string alpha, beta, gamma, delta;  // Φ's entries as rational functions of θ (m = ω = 1, h = θ)
+  /// The same entries exactly: {numerator, denominator} coefficients in θ, constant first, "p/q".
+  std::array<std::array<std::vector<std::string>, 2>, 4> map_coefficients;
   bool det_one = false;
   bool form_conserved = false;  // ΦᵀWΦ = W, W = [[−γ, (α−δ)/2], [(α−δ)/2, β]]
   std::string discriminant;     // (tr Φ)² − 4 as a rational function of x = θ²
-  std::vector<std::pair<std::string, std::string>> stable_intervals;  // of ωh, open; "" = infinity
+  std::vector<stable_piece> stable_set;  // of ωh > 0, in increasing order
   int order = 0;                // of the three-term scheme's truncation error (2 cos θ − tr Φ)/h²
   std::string error_constant;   // c in (2 cos θ − tr Φ)/h² = c ω^(order+2) h^order + ...
   std::vector<std::string> equals;  // the known schemes whose Φ is identical

@@ -96,6 +96,8 @@ struct axis {
   bool log = false;
   /// A fixed range (a digits axis runs from 0 to its precision's digits); unset: fitted to the data.
   std::optional<std::pair<double, double>> range;
+  /// Labelled tics (the rows of a chart); empty: gnuplot's own.
+  std::vector<std::pair<double, std::string>> tics;
 };
 
 struct panel {

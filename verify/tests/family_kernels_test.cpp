@@ -1,0 +1,84 @@
+// The family's second kernel, stable ends and nonlinear step (verify/family): GiNaC with m, ω, h
+// symbolic agrees with our kernel and catches a changed coefficient; Φ does not depend on where the
+// internal nodes sit; a root of (tr Φ)² − 4 where Φ = ±I joins the stable set; the rules' nodes
+// and weights; the implicit step's order on the pendulum.
+
+#include <simpson/verify/galerkin_ginac.hpp>
+#include <simpson/verify/galerkin_member.hpp>
+#include <simpson/verify/galerkin_pendulum.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace simpson::verify {
+namespace {
+
+const galerkin_member phi3_member{2, {quadrature_family::newton_cotes, 3}};
+
+TEST(FamilyKernels, GinacDerivesThePapersSchemeWithMOmegaHSymbolic) {
+  const member_analysis ours = analyse_member(phi3_member);
+  const ginac_member_check g = check_member_in_ginac(ours, 3);
+  ASSERT_TRUE(g.derived) << g.failure;
+  EXPECT_TRUE(g.det_one);
+  EXPECT_TRUE(g.form_conserved);
+  EXPECT_TRUE(g.same_as_exact_kernel);
+  EXPECT_TRUE(g.scaling);
+  ASSERT_TRUE(g.node_independent.has_value());
+  EXPECT_TRUE(*g.node_independent);  // q_m anywhere in (0, 1): the same Φ₃
+  EXPECT_NE(g.gamma.find("omega"), std::string::npos);  // symbolic, not at m = ω = 1
+}
+
+TEST(FamilyKernels, GinacCatchesOneChangedCoefficientOfOurKernel) {
+  member_analysis ours = analyse_member(phi3_member);
+  std::string& c = ours.map_coefficients[0][0].back();  // α's leading numerator coefficient
+  c = c == "1" ? "2" : "1";
+  const ginac_member_check g = check_member_in_ginac(ours, 0);
+  EXPECT_FALSE(g.same_as_exact_kernel);
+  EXPECT_FALSE(g.scaling);
+  EXPECT_TRUE(g.det_one);  // GiNaC's own Φ is still symplectic
+}
+
+TEST(FamilyKernels, ANoMapMemberHasNoMapInGinacEither) {
+  const member_analysis ours = analyse_member({3, {quadrature_family::newton_cotes, 2}});
+  ASSERT_FALSE(ours.derived);
+  member_analysis pretend = ours;
+  pretend.derived = true;
+  EXPECT_FALSE(check_member_in_ginac(pretend, 0).derived);
+}
+
+TEST(FamilyKernels, WhereGaussLegendreIsMinusIdentityTheStableSetDoesNotBreak) {
+  // (s = 2, Gauss 2) is Gauss–Legendre 2: tr Φ = −2 at ωh = 2√3, where Φ = −I (power-bounded).
+  const member_analysis a = analyse_member({2, {quadrature_family::gauss, 2}});
+  ASSERT_TRUE(a.derived);
+  ASSERT_EQ(a.stable_set.size(), 1u);
+  EXPECT_EQ(piece_text(a.stable_set[0]), "(0, ∞)");
+  // Φ₃ at 2√2 is a Jordan block: the band stays open there.
+  const member_analysis phi3 = analyse_member(phi3_member);
+  EXPECT_FALSE(phi3.stable_set[0].to_closed);
+}
+
+TEST(FamilyKernels, NodesAndWeightsOfGaussAndLobatto) {
+  const long double tolerance = 64 * std::numeric_limits<long double>::epsilon();  // a few roundings per node
+  const numeric_rule gauss3 = nodes_and_weights({quadrature_family::gauss, 3});
+  ASSERT_EQ(gauss3.nodes.size(), 3u);
+  EXPECT_NEAR(gauss3.nodes[0], (1 - std::sqrt(0.6L)) / 2, tolerance);
+  EXPECT_NEAR(gauss3.weights[1], 4.0L / 9, tolerance);
+  const numeric_rule lobatto4 = nodes_and_weights({quadrature_family::lobatto, 4});
+  ASSERT_EQ(lobatto4.nodes.size(), 4u);
+  EXPECT_NEAR(lobatto4.nodes[1], (1 - 1 / std::sqrt(5.0L)) / 2, tolerance);
+  EXPECT_NEAR(lobatto4.weights[0], 1.0L / 12, tolerance);
+}
+
+TEST(FamilyKernels, TheImplicitStepKeepsItsLinearOrderOnThePendulum) {
+  // The observed order is log2 of an error ratio: within 0.1 of the asymptotic order once h is small.
+  const pendulum_order simpson = measure_pendulum_order(phi3_member, {16, 32, 64});
+  ASSERT_TRUE(simpson.order.has_value()) << simpson.failure;
+  EXPECT_NEAR(static_cast<double>(*simpson.order), 4, 0.1);
+  const pendulum_order lobatto = measure_pendulum_order({3, {quadrature_family::lobatto, 4}}, {8, 16, 32});
+  ASSERT_TRUE(lobatto.order.has_value()) << lobatto.failure;
+  EXPECT_NEAR(static_cast<double>(*lobatto.order), 6, 0.1);
+}
+
+}  // namespace
+}  // namespace simpson::verify
