@@ -6,9 +6,15 @@
 #include <simpson/verify/galerkin_ginac.hpp>
 #include <simpson/verify/galerkin_member.hpp>
 #include <simpson/verify/galerkin_pendulum.hpp>
+#include <simpson/verify/partitioned_pair.hpp>
+
+#include <simpson/partitioned_runge_kutta.hpp>
+#include <simpson/runge_kutta_tableaux.hpp>
+#include <simpson/verify/exact_proof.hpp>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace simpson::verify {
@@ -78,6 +84,26 @@ TEST(FamilyKernels, TheImplicitStepKeepsItsLinearOrderOnThePendulum) {
   const pendulum_order lobatto = measure_pendulum_order({3, {quadrature_family::lobatto, 4}}, {8, 16, 32});
   ASSERT_TRUE(lobatto.order.has_value()) << lobatto.failure;
   EXPECT_NEAR(static_cast<double>(*lobatto.order), 6, 0.1);
+}
+
+bool same(const one_step_matrix<symbolic>& a, const one_step_matrix<symbolic>& b) {
+  return (a.alpha - b.alpha).is_zero() && (a.beta - b.beta).is_zero() && (a.gamma - b.gamma).is_zero() && (a.delta - b.delta).is_zero();
+}
+
+TEST(FamilyKernels, ThePairInTheNodalRingIsTheCoresLobattoIIIAIIIBAndImplicitMidpoint) {
+  // The generic construction (no nodes, only the nodal polynomial and the moments) against the
+  // core's tableaux with their own coefficients: Lobatto IIIA–IIIB 2 and 3 stages.
+  const oscillator_parameters<symbolic> unit = unit_oscillator_in_theta();
+  EXPECT_TRUE(same(family_detail::partitioned_pair_map({quadrature_family::lobatto, 2}),
+                   partitioned_runge_kutta_map(unit, lobatto_iiia2_tableau<symbolic>(), lobatto_iiib2_tableau<symbolic>())));
+  EXPECT_TRUE(same(family_detail::partitioned_pair_map({quadrature_family::lobatto, 3}),
+                   partitioned_runge_kutta_map(unit, lobatto_iiia3_tableau<symbolic>(), lobatto_iiib3_tableau<symbolic>())));
+  // Gauss 1: the pair is the implicit midpoint rule (Ā = A), the core's tableau.
+  EXPECT_TRUE(same(family_detail::partitioned_pair_map({quadrature_family::gauss, 1}),
+                   partitioned_runge_kutta_map(unit, implicit_midpoint_tableau<symbolic>(), implicit_midpoint_tableau<symbolic>())));
+  // And the Galerkin member with Lobatto 4 (s = 3) is the 4-stage pair, whose tableaux hold √5.
+  const member_analysis lobatto4 = analyse_member({3, {quadrature_family::lobatto, 4}});
+  EXPECT_NE(std::find(lobatto4.equals.begin(), lobatto4.equals.end(), "Lobatto IIIA–IIIB, 4 stages"), lobatto4.equals.end());
 }
 
 }  // namespace

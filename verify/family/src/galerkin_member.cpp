@@ -2,6 +2,9 @@
 
 #include <simpson/verify/galerkin_member.hpp>
 
+#include "family_algebra.hpp"
+#include <simpson/verify/partitioned_pair.hpp>
+
 #include <simpson/verify/exact_proof.hpp>
 #include <simpson/verify/stability_analysis.hpp>
 
@@ -13,11 +16,15 @@
 #include <boost/multiprecision/mpfr.hpp>
 
 #include <chrono>
+#include <map>
 #include <stdexcept>
 
 namespace simpson::verify {
 namespace {
 
+using family_detail::gcd_of;
+using family_detail::lcm_of;
+using family_detail::reduced;
 using tau_polynomial = std::vector<rational>;  // in τ ∈ [0, 1], constant term first
 
 tau_polynomial times(const tau_polynomial& a, const tau_polynomial& b) {
@@ -52,32 +59,6 @@ rational apply_rule(const tau_polynomial& f, const std::vector<rational>& moment
   for (std::size_t n = 0; n < f.size(); ++n) sum += f[n] * moments[n];
   return sum;
 }
-
-/// The monic greatest common divisor of two polynomials over Q (Euclid).
-polynomial gcd_of(polynomial a, polynomial b) {
-  while (!is_zero(b)) {
-    polynomial r = a % b;
-    a = std::move(b);
-    b = std::move(r);
-  }
-  const long d = degree(a);
-  if (d < 0) return make_polynomial({rational(1)});
-  const rational lead = a[static_cast<std::size_t>(d)];
-  for (std::size_t k = 0; k < a.size(); ++k) a[k] /= lead;
-  return a;
-}
-
-/// N/D with their common factor removed and D monic: the canonical form, for text and degrees.
-symbolic reduced(const symbolic& f) {
-  const polynomial g = gcd_of(f.numerator(), f.denominator());
-  polynomial n = f.numerator() / g, d = f.denominator() / g;
-  const rational lead = d[static_cast<std::size_t>(degree(d))];
-  for (std::size_t k = 0; k < n.size(); ++k) n[k] /= lead;
-  for (std::size_t k = 0; k < d.size(); ++k) d[k] /= lead;
-  return {n, d};
-}
-
-polynomial lcm_of(const polynomial& a, const polynomial& b) { return a / gcd_of(a, b) * b; }
 
 long size_of(const symbolic& f) { return std::max(degree(f.numerator()), degree(f.denominator())); }
 
@@ -361,7 +342,15 @@ member_analysis analyse_member(const galerkin_member& member, long budget_degree
   for (const auto& [name, known] : fixed) {
     if (same_map(map, known)) out.equals.push_back(name);
   }
-  for (const auto& [name, known] : std::vector<std::pair<std::string, one_step_matrix<symbolic>>>{gauss_legendre_entry(s)}) {
+  std::vector<std::pair<std::string, one_step_matrix<symbolic>>> by_degree{gauss_legendre_entry(s)};
+  // Lobatto IIIA–IIIB with 4 … s + 2 stages (irrational tableaux), exactly through the nodal
+  // quotient ring (partitioned_pair.hpp); 2 and 3 stages are the core's own, above.
+  static std::map<int, one_step_matrix<symbolic>> lobatto_pairs;
+  for (int k = 4; k <= s + 2; ++k) {
+    if (!lobatto_pairs.count(k)) lobatto_pairs.emplace(k, family_detail::partitioned_pair_map({quadrature_family::lobatto, k}));
+    by_degree.emplace_back("Lobatto IIIA–IIIB, " + std::to_string(k) + " stages", lobatto_pairs.at(k));
+  }
+  for (const auto& [name, known] : by_degree) {
     if (same_map(map, known)) out.equals.push_back(name);
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -89,26 +89,28 @@ int exactness_degree(const quadrature_rule& rule) {
   return 0;
 }
 
-std::vector<rational> quadrature_moments(const quadrature_rule& rule, int max_power) {
+std::vector<rational> nodal_polynomial(const quadrature_rule& rule) {
   const int n = rule.points;
   switch (rule.family) {
     case quadrature_family::newton_cotes: {
       if (n < 2) throw std::invalid_argument("Newton–Cotes needs at least 2 points");
       coefficients nodal{rational(1)};
       for (int j = 0; j < n; ++j) nodal = product(nodal, coefficients{rational(-j, n - 1), rational(1)});
-      return moments_by_reduction(nodal, max_power);
+      return nodal;
     }
-    case quadrature_family::lobatto: {
+    case quadrature_family::lobatto:
       if (n < 2) throw std::invalid_argument("Lobatto needs at least 2 points");
       // τ(1 − τ) P'_{n−1}(2τ − 1): the end points and the roots of the derivative.
-      return moments_by_reduction(product(coefficients{rational(0), rational(1), rational(-1)}, derivative(shifted_legendre(n - 1))),
-                                  max_power);
-    }
+      return product(coefficients{rational(0), rational(1), rational(-1)}, derivative(shifted_legendre(n - 1)));
     case quadrature_family::gauss:
       if (n < 1) throw std::invalid_argument("Gauss needs at least 1 point");
-      return moments_by_reduction(shifted_legendre(n), max_power);
+      return shifted_legendre(n);
   }
   throw std::invalid_argument("unknown quadrature family");
+}
+
+std::vector<rational> quadrature_moments(const quadrature_rule& rule, int max_power) {
+  return moments_by_reduction(nodal_polynomial(rule), max_power);
 }
 
 }  // namespace simpson::verify

@@ -28,6 +28,10 @@ std::string rule_name(const quadrature_rule& rule);
 /// points), 2·points − 1 (Gauss), 2·points − 3 (Lobatto).
 int exactness_degree(const quadrature_rule& rule);
 
+/// The rule's nodal polynomial (the product of τ − c_i over its nodes, up to a constant factor),
+/// constant term first, with rational coefficients also where the nodes are not.
+std::vector<rational> nodal_polynomial(const quadrature_rule& rule);
+
 /// μ_0, ..., μ_max_power, exactly. Throws std::invalid_argument for fewer than 1 point (Gauss) or
 /// 2 points (Newton–Cotes, Lobatto).
 std::vector<rational> quadrature_moments(const quadrature_rule& rule, int max_power);
