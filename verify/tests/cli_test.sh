@@ -39,13 +39,12 @@ if [ "$part" = beyond-scene ]; then
   exit
 fi
 
-# The family scene's fast subset (s = 1 … 4, 5 s; the embedded scene goes to 6): the paper's scheme,
-# Newmark, Lobatto's order 2s, the claim and the plot.
+# The family scene's fast subset (s = 1 … 4, a few seconds; the embedded scene goes to 6): the paper's
+# scheme, Newmark, Lobatto's order 2s and the plot. Its claim, family-symplectic, runs in the beyond scene.
 cat >"$work/family.json" <<'JSON'
-{"name": "family-fast", "claims": ["family-symplectic"], "precisions": ["double"], "family": {"max_degree": 4}}
+{"name": "family-fast", "family": {"max_degree": 4}}
 JSON
 check "family scene" 0 --scene "$work/family.json" --quiet --out "$work/family"
-grep -q '^1 claim: 1 held' "$work/out" || fail "family scene: family-symplectic not held: $(head -1 "$work/out")"
 grep -q '^| s = 2, Simpson | 3 | yes | yes | yes | 4 | yes | 1/1440 | (0, 2 sqrt(2)) ∪ (2 sqrt(3), 2 sqrt(6)) | Φ₃' "$work/family/report.md" ||
   fail "family scene: the row of Φ₃ (s = 2, Simpson)"
 grep -q '^| s = 1, midpoint | 1 | yes | yes | yes | 2 | yes | -1/6 | (0, ∞) | Newmark' "$work/family/report.md" ||

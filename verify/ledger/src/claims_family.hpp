@@ -12,7 +12,7 @@
 namespace simpson::verify::detail {
 
 /// The degrees the claim covers: s = 1 … family_claim_degree.
-inline constexpr int family_claim_degree = 3;
+inline constexpr int family_claim_degree = 6;
 
 void add_family_claims(std::vector<claim>& claims);
 
