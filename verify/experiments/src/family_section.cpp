@@ -175,7 +175,11 @@ section_result run_family(const family_settings& s) {
   section_result out;
   out.name = "family";
   out.title = "The scheme's family: Galerkin variational integrators of degree s with a quadrature rule";
-  out.conventions = {{"max_degree", s.max_degree}, {"budget_seconds", s.budget_seconds}};
+  out.conventions = {{"max_degree", s.max_degree},
+                     {"budget_seconds", s.budget_seconds},
+                     {"ginac", s.ginac},
+                     {"node_check_degree", s.node_check_degree},
+                     {"pendulum_steps", s.pendulum_steps}};
   table rows{"members", "",
              "Each member: the interpolant of degree s on one step (end values q_j, q_{j+1} and s − 1 internal degrees of "
              "freedom), the action by the quadrature rule, for the harmonic oscillator. Derived exactly in our kernel "

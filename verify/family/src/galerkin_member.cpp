@@ -22,24 +22,12 @@
 namespace simpson::verify {
 namespace {
 
+using family_detail::derivative;
 using family_detail::gcd_of;
 using family_detail::lcm_of;
+using family_detail::product;
 using family_detail::reduced;
 using tau_polynomial = std::vector<rational>;  // in τ ∈ [0, 1], constant term first
-
-tau_polynomial times(const tau_polynomial& a, const tau_polynomial& b) {
-  tau_polynomial out(a.size() + b.size() - 1, rational(0));
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    for (std::size_t j = 0; j < b.size(); ++j) out[i + j] += a[i] * b[j];
-  }
-  return out;
-}
-
-tau_polynomial d_dtau(const tau_polynomial& p) {
-  tau_polynomial out;
-  for (std::size_t i = 1; i < p.size(); ++i) out.push_back(rational(static_cast<long>(i)) * p[i]);
-  return out.empty() ? tau_polynomial{rational(0)} : out;
-}
 
 /// The interpolant's basis: 1 − τ (q_j), τ (q_{j+1}), τᵏ(1 − τ) for k = 1 … s − 1 (internal).
 std::vector<tau_polynomial> basis(int s) {
@@ -148,7 +136,7 @@ member_analysis analyse_member(const galerkin_member& member, long budget_degree
   for (std::size_t i = 0; i < n; ++i) {
     json row = json::array();
     for (std::size_t j = 0; j < n; ++j) {
-      const rational t = apply_rule(times(d_dtau(phi[i]), d_dtau(phi[j])), mu), m = apply_rule(times(phi[i], phi[j]), mu);
+      const rational t = apply_rule(product(derivative(phi[i]), derivative(phi[j])), mu), m = apply_rule(product(phi[i], phi[j]), mu);
       K[i][j] = symbolic(t) - symbolic(m) * x;
       row.push_back(text(K[i][j]));
     }

@@ -13,18 +13,6 @@ namespace {
 
 using matrix = std::vector<std::vector<rational>>;  // [row][column]
 
-/// τⁿ modulo the monic nodal polynomial, as its k coefficients (constant first).
-std::vector<rational> reduce_power(const std::vector<rational>& monic, std::size_t k, std::size_t n) {
-  std::vector<rational> power(k, rational(0));
-  power[0] = 1;
-  for (std::size_t step = 0; step < n; ++step) {
-    const rational top = power[k - 1];
-    for (std::size_t i = k - 1; i > 0; --i) power[i] = power[i - 1] - top * monic[i];
-    power[0] = -top * monic[0];
-  }
-  return power;
-}
-
 matrix multiply(const matrix& a, const matrix& b) {
   const std::size_t n = a.size();
   matrix out(n, std::vector<rational>(n, rational(0)));
@@ -104,7 +92,7 @@ one_step_matrix<rational_function> partitioned_pair_map(const quadrature_rule& r
   // A in the basis 1, τ, …, τ^{k−1} of R: column m is ∫₀^τ s^m ds = τ^{m+1}/(m+1), reduced.
   matrix A(k, std::vector<rational>(k, rational(0)));
   for (std::size_t m = 0; m < k; ++m) {
-    const std::vector<rational> column = reduce_power(nodal, k, m + 1);
+    const std::vector<rational> column = power_modulo(nodal, k, m + 1);
     for (std::size_t i = 0; i < k; ++i) A[i][m] = column[i] / rational(static_cast<long>(m + 1));
   }
   // The Gram matrix of (x, y) ↦ Q[x y]: μ_{m+n}; A* = G⁻¹ Aᵀ G; Ā = 1·bᵀ − A* (1 = the constant, bᵀ = μ_0 … μ_{k−1}).

@@ -2,12 +2,18 @@
 
 #include <simpson/verify/quadrature_rule.hpp>
 
+#include "family_algebra.hpp"
+
 #include <stdexcept>
 
 namespace simpson::verify {
 namespace {
 
-using coefficients = std::vector<rational>;  // constant term first
+using family_detail::coefficients;
+using family_detail::derivative;
+using family_detail::power_modulo;
+using family_detail::times_tau_modulo;
+using family_detail::product;
 
 /// Legendre's P_n(2τ − 1) on [0, 1] (shifted), by the three-term recurrence.
 coefficients shifted_legendre(int n) {
@@ -28,20 +34,6 @@ coefficients shifted_legendre(int n) {
   return current;
 }
 
-coefficients derivative(const coefficients& p) {
-  coefficients out;
-  for (std::size_t i = 1; i < p.size(); ++i) out.push_back(rational(static_cast<long>(i)) * p[i]);
-  return out.empty() ? coefficients{rational(0)} : out;
-}
-
-coefficients product(const coefficients& a, const coefficients& b) {
-  coefficients out(a.size() + b.size() - 1, rational(0));
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    for (std::size_t j = 0; j < b.size(); ++j) out[i + j] += a[i] * b[j];
-  }
-  return out;
-}
-
 /// ∫₀¹ of (τⁿ mod nodal) for each n: the moments of the interpolatory rule on the nodal polynomial's
 /// roots, exact for degrees up to the rule's exactness.
 std::vector<rational> moments_by_reduction(coefficients nodal, int max_power) {
@@ -49,16 +41,12 @@ std::vector<rational> moments_by_reduction(coefficients nodal, int max_power) {
   const std::size_t k = nodal.size() - 1;  // the number of nodes
   for (rational& c : nodal) c /= nodal.back();  // monic
   std::vector<rational> out;
-  coefficients power(k, rational(0));  // τⁿ mod nodal, degree < k
-  power[0] = 1;
+  coefficients power = power_modulo(nodal, k, 0);  // τⁿ mod nodal, degree < k
   for (int n = 0; n <= max_power; ++n) {
     rational integral(0);
     for (std::size_t i = 0; i < k; ++i) integral += power[i] / rational(static_cast<long>(i + 1));
     out.push_back(integral);
-    // times τ, then τ^k replaced by −Σ nodal_i τ^i.
-    const rational top = power[k - 1];
-    for (std::size_t i = k - 1; i > 0; --i) power[i] = power[i - 1] - top * nodal[i];
-    power[0] = -top * nodal[0];
+    times_tau_modulo(power, nodal);
   }
   return out;
 }
