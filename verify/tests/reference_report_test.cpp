@@ -37,8 +37,9 @@ TEST(ReferenceReport, PaperSceneReproducesTheCommittedReport) {
   ASSERT_FALSE(coqc_version().empty()) << "coqc is needed (scripts/install-deps installs Debian's coq)";
   EXPECT_TRUE(record_certificates(r, true).empty()) << "coqc rejected a certificate";
   // `simpson-verify compare` finds no difference (its tolerances: README, report_compare.hpp) ...
-  const std::vector<std::string> differences = compare_reports(load_report(dir), report_json(r));
-  for (const std::string& line : differences) ADD_FAILURE() << line;
+  const report_comparison found = compare_reports(load_report(dir), report_json(r));
+  for (const std::string& line : found.differences) ADD_FAILURE() << line;
+  EXPECT_TRUE(found.notes.empty()) << ::testing::PrintToString(found.notes);
   // ... and, on this machine, the two agree byte for byte apart from the environment.
   const json expected = test::without_volatile(json::parse(read(dir / "report.json")));
   const json actual = test::without_volatile(report_json(r));
@@ -68,7 +69,7 @@ TEST(ReferenceReport, PaperSceneReproducesTheCommittedReport) {
 TEST(ReferenceReport, CompareFindsAChangedFigureAndNamesIt) {
   const std::filesystem::path dir = std::filesystem::path(SIMPSON_SOURCE_DIR) / "reports" / "reference" / "paper";
   const json reference = load_report(dir);
-  EXPECT_TRUE(compare_reports(reference, reference).empty());
+  EXPECT_TRUE(compare_reports(reference, reference).differences.empty());
   json altered = reference;
   for (json& c : altered["claims"]) {
     if (c["id"] == "phi3-det") c["verdict"] = "fails";
@@ -76,7 +77,7 @@ TEST(ReferenceReport, CompareFindsAChangedFigureAndNamesIt) {
   altered["experiments"]["table1"]["entries"][0]["ours"] = "9.99e-01";
   altered["environment"]["timestamp_utc"] = "2000-01-01T00:00:00Z";             // ignored
   altered["claims"][0]["evidence"]["exact"][0]["points_evaluated"] = 1;          // an integer: compared
-  const std::vector<std::string> lines = compare_reports(reference, altered);
+  const std::vector<std::string> lines = compare_reports(reference, altered).differences;
   ASSERT_EQ(lines.size(), 3u) << ::testing::PrintToString(lines);
   EXPECT_NE(lines[0].find("claim lemma-dimensional-scaling: evidence.exact[0].points_evaluated: 225 → 1"), std::string::npos) << lines[0];
   EXPECT_NE(lines[1].find("claim phi3-det: verdict: \"holds\" → \"fails\""), std::string::npos) << lines[1];
@@ -86,11 +87,90 @@ TEST(ReferenceReport, CompareFindsAChangedFigureAndNamesIt) {
   for (json& c : residual["claims"]) {
     if (c["id"] == "phi3-det") {
       c["evidence"]["numeric"]["ladder"][0]["max_residual"] = "3.00e-16";
-      EXPECT_TRUE(compare_reports(reference, residual).empty());
+      EXPECT_TRUE(compare_reports(reference, residual).differences.empty());
       c["evidence"]["numeric"]["ladder"][0]["within_bound"] = false;
     }
   }
-  EXPECT_EQ(compare_reports(reference, residual).size(), 1u);
+  EXPECT_EQ(compare_reports(reference, residual).differences.size(), 1u);
+}
+
+/// A run that did not check the certificates (--no-certify, or no coqc) against the reference made
+/// with coqc: noted, not a difference; a rejected certificate, or a lemma changed, still is.
+TEST(ReferenceReport, CompareNotesCertificatesOnlyExported) {
+  const json reference = load_report(std::filesystem::path(SIMPSON_SOURCE_DIR) / "reports" / "reference" / "paper");
+  json exported = reference;
+  for (json& c : exported["claims"]) {
+    json& coq = c["evidence"]["coq"];
+    if (coq["status"] == "checked") {
+      coq["status"] = "exported";
+      coq.erase("coq_version");
+    }
+  }
+  exported["summary"]["coq_checked"] = 0;
+  const report_comparison plain = compare_reports(reference, exported);
+  EXPECT_TRUE(plain.differences.empty()) << ::testing::PrintToString(plain.differences);
+  ASSERT_EQ(plain.notes.size(), 1u);
+  EXPECT_NE(plain.notes[0].find("checked by coqc in one run and only exported"), std::string::npos) << plain.notes[0];
+  EXPECT_TRUE(compare_report_subset(reference, exported).differences.empty());
+  // Rejected is not "not computed".
+  json rejected = reference;
+  for (json& c : rejected["claims"]) {
+    if (c["id"] == "phi3-det") c["evidence"]["coq"]["status"] = "failed";
+  }
+  EXPECT_EQ(compare_reports(reference, rejected).differences.size(), 1u);
+  // A lemma gone from an exported certificate is a difference too.
+  for (json& c : exported["claims"]) {
+    if (c["id"] == "phi3-det") c["evidence"]["coq"]["lemmas"].erase(0);
+  }
+  EXPECT_FALSE(compare_reports(reference, exported).differences.empty());
+}
+
+/// --no-timing leaves out the timing files, the plots of run times and says so in the timed
+/// section's title: noted. An untimed plot missing is still a difference.
+TEST(ReferenceReport, CompareNotesWhatNoTimingLeavesOut) {
+  const json reference = load_report(std::filesystem::path(SIMPSON_SOURCE_DIR) / "reports" / "reference" / "paper");
+  json untimed = reference;
+  untimed["overrides"]["timing"] = false;
+  untimed["timing_files"] = json::array();
+  json plots = json::array();
+  for (const json& p : reference["plots"]) {
+    if (!p["run_times"].get<bool>()) plots.push_back(p);
+  }
+  ASSERT_LT(plots.size(), reference["plots"].size());
+  untimed["plots"] = plots;
+  untimed["experiments"]["work_precision"]["title"] = "Work against precision: error (not timed)";
+  const report_comparison found = compare_reports(reference, untimed);
+  EXPECT_TRUE(found.differences.empty()) << ::testing::PrintToString(found.differences);
+  EXPECT_EQ(found.notes.size(), 1u);
+  untimed["plots"].erase(0);
+  EXPECT_EQ(compare_reports(reference, untimed).differences.size(), 1u);
+  // Without --no-timing on either side, the same title change is a difference.
+  json retitled = reference;
+  retitled["experiments"]["work_precision"]["title"] = "Work against precision: error (not timed)";
+  EXPECT_EQ(compare_reports(reference, retitled).differences.size(), 1u);
+}
+
+/// Round-off figures (det Φ₃ − 1 in double: −1.11e-16) move with another libm or compiler: within
+/// 1024 ε of their row's precision they are equal; past it, or in a row naming no precision, not.
+TEST(ReferenceReport, CompareTakesRoundOffFiguresAsRoundOff) {
+  const json reference = load_report(std::filesystem::path(SIMPSON_SOURCE_DIR) / "reports" / "reference" / "paper");
+  json moved = reference;
+  json& row = moved["paper_configuration"]["rows"][0];
+  ASSERT_EQ(row["precision"], "double");
+  row["det_minus_one"] = "2.22e-16";
+  row["hd_change_one_step"] = "-4.44e-15";
+  EXPECT_TRUE(compare_reports(reference, moved).differences.empty());
+  row["det_minus_one"] = "1.00e-12";  // 4500 ε: a change of the formula, not of round-off
+  EXPECT_EQ(compare_reports(reference, moved).differences.size(), 1u);
+  // A digit of a figure that is not at round-off level still counts.
+  json figure = reference;
+  figure["paper_configuration"]["rows"][0]["discriminant"] = "-6.71464e-01";
+  EXPECT_EQ(compare_reports(reference, figure).differences.size(), 1u);
+  // In a long double row the limit is 1024 of its ε (1.08e-19), not double's.
+  json extended = reference;
+  ASSERT_EQ(extended["paper_configuration"]["rows"][1]["precision"], "long double");
+  extended["paper_configuration"]["rows"][1]["det_minus_one"] = "1.00e-15";  // 9000 of its ε
+  EXPECT_EQ(compare_reports(reference, extended).differences.size(), 1u);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <simpson/verify/certify.hpp>
 
 #include <simpson/verify/command.hpp>
+#include <simpson/verify/coq_batch.hpp>
 #include <simpson/verify/interruption.hpp>
 
 #include <chrono>
@@ -12,6 +13,7 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 namespace simpson::verify {
 std::string coqc_version() {
@@ -47,59 +49,64 @@ std::vector<certificate_document> certificate_documents(const claim_outcome& o) 
 std::vector<std::string> record_certificates(run_record& r, bool check) {
   std::vector<std::string> rejected;
   std::string version;
-  std::filesystem::path work;
   if (check) {
     version = coqc_version();
     if (version.empty()) throw std::invalid_argument("--certify: coqc was not found (install Debian's coq)");
-    char pattern[] = "/tmp/simpson-certify-XXXXXX";
-    if (::mkdtemp(pattern) == nullptr) throw std::runtime_error("--certify: cannot create a temporary directory");
-    work = pattern;
   }
-  for (claim_outcome& o : r.outcomes) {
+  // Every claim's files, checked together: one coqc process per core, not one per file.
+  std::vector<coq_document> documents;
+  std::vector<std::size_t> owner;  // the outcome each document belongs to
+  for (std::size_t k = 0; k < r.outcomes.size(); ++k) {
+    claim_outcome& o = r.outcomes[k];
     claim_result& result = o.result;
-    const std::vector<certificate_document> documents = certificate_documents(o);
-    if (documents.empty()) {
+    const std::vector<certificate_document> files = certificate_documents(o);
+    if (files.empty()) {
       result.evidence["coq"] = {{"status", "not exported"},
                                 {"reason", result.certificate_missing.empty() ? "no identity to state" : result.certificate_missing}};
       continue;
     }
     json coq{{"status", "exported"}};
     if (!result.certificate.empty()) {
-      coq["file"] = documents.front().file;
+      coq["file"] = files.front().file;
       coq["lemmas"] = result.certificate_lemmas;
     } else {
       coq["reason"] = result.certificate_missing;  // why nothing is proved: only refuted
     }
-    if (!result.refutation.empty()) coq["refutation"] = {{"file", documents.back().file}, {"lemmas", result.refutation_lemmas}};
-    if (check) {
-      double seconds = 0;
-      std::string failure;
-      for (const certificate_document& d : documents) {
-        throw_if_interrupted();
-        const std::filesystem::path file = work / std::filesystem::path(d.file).filename();
-        std::ofstream(file) << *d.text;
-        const auto start = std::chrono::steady_clock::now();
-        const command_result done = run_command("cd '" + work.string() + "' && coqc -q '" + file.filename().string() + "'");
-        seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        if (done.status != 0 && failure.empty()) failure = d.file + ": " + first_lines(done.output, 12);
-      }
-      if (failure.empty()) {
-        coq["status"] = "checked";
-        coq["coq_version"] = version;
-        o.coq_seconds = seconds;
-      } else {
-        coq["status"] = "failed";
-        coq["coqc_output"] = failure;
-        rejected.push_back(o.checked->id);
-      }
-    }
+    if (!result.refutation.empty()) coq["refutation"] = {{"file", files.back().file}, {"lemmas", result.refutation_lemmas}};
     result.evidence["coq"] = coq;
+    for (const certificate_document& d : files) {
+      const std::string name = std::filesystem::path(d.file).stem().string();
+      documents.push_back({name, *d.text});
+      owner.push_back(k);
+    }
   }
-  if (check) {
-    std::error_code ignored;
-    std::filesystem::remove_all(work, ignored);
+  if (!check || documents.empty()) return rejected;
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<coq_verdict> verdicts = check_with_coqc(documents, coqc_processes());
+  r.coq_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.coq_documents = documents.size();
+  for (std::size_t k = 0; k < r.outcomes.size(); ++k) {
+    json& coq = r.outcomes[k].result.evidence["coq"];
+    if (coq.value("status", "") != "exported") continue;
+    std::string failure;
+    for (std::size_t d = 0; d < documents.size(); ++d) {
+      if (owner[d] == k && !verdicts[d].accepted && failure.empty()) failure = documents[d].name + ".v: " + verdicts[d].message;
+    }
+    if (failure.empty()) {
+      coq["status"] = "checked";
+      coq["coq_version"] = version;
+    } else {
+      coq["status"] = "failed";
+      coq["coqc_output"] = "certificates/" + failure;
+      rejected.push_back(r.outcomes[k].checked->id);
+    }
   }
   return rejected;
+}
+
+unsigned coqc_processes() {
+  const unsigned cores = std::thread::hardware_concurrency();
+  return cores == 0 ? 2 : cores;
 }
 
 }  // namespace simpson::verify

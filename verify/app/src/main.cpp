@@ -23,6 +23,7 @@
 #include <chrono>
 #include <memory>
 #include <optional>
+#include <set>
 #include <unistd.h>
 #include <csignal>
 #include <cstdio>
@@ -96,8 +97,21 @@ int compare_report_directories(const std::string& old_dir, const std::string& ne
     std::fprintf(stderr, "simpson-verify: %s\n", e.what());
     return 2;
   }
-  const std::vector<std::string> differences =
-      subset ? compare_report_subset(old_report, new_report) : compare_reports(old_report, new_report);
+  if (subset) {
+    // A selection against the fuller report, in that order: the other way round names the mistake.
+    std::set<std::string> old_ids, new_ids;
+    for (const json& c : old_report.value("claims", json::array())) old_ids.insert(c.value("id", ""));
+    for (const json& c : new_report.value("claims", json::array())) new_ids.insert(c.value("id", ""));
+    const bool new_has_more = std::includes(new_ids.begin(), new_ids.end(), old_ids.begin(), old_ids.end()) && new_ids.size() > old_ids.size();
+    if (new_has_more) {
+      std::fprintf(stderr, "simpson-verify: compare --subset OLD NEW: OLD ('%s', %zu claims) must be the fuller report (the reference) "
+                   "and NEW ('%s', %zu claims) the selection; the two look swapped\n",
+                   old_dir.c_str(), old_ids.size(), new_dir.c_str(), new_ids.size());
+      return 2;
+    }
+  }
+  const report_comparison found = subset ? compare_report_subset(old_report, new_report) : compare_reports(old_report, new_report);
+  const std::vector<std::string>& differences = found.differences;
   if (!quiet) {
     fmt::print("compare {} (old) with {} (new){}; tolerances:\n", old_dir, new_dir,
                subset ? fmt::format(", only the new report's {} claims and {} sections", new_report.value("claims", json::array()).size(),
@@ -105,6 +119,7 @@ int compare_report_directories(const std::string& old_dir, const std::string& ne
                       : std::string());
     for (const std::string& line : comparison_tolerances()) fmt::print("  - {}\n", line);
   }
+  for (const std::string& line : found.notes) fmt::print("note: {}\n", line);
   for (const std::string& line : differences) fmt::print("{}\n", line);
   fmt::print("{}\n", differences.empty() ? std::string("the reports agree")
                                           : fmt::format("{} {}", differences.size(), differences.size() == 1 ? "difference" : "differences"));
@@ -116,10 +131,14 @@ int compare_report_directories(const std::string& old_dir, const std::string& ne
 int main(int argc, char** argv) {
   CLI::App app{"simpson-verify: proves, rechecks and reports every claim of the symplectic Simpson paper"};
   app.set_version_flag("--version", version_line());
+  app.footer(
+      "Exit codes: 0 every verdict as expected (compare: the reports agree); 1 a verdict differs from the expected one, or "
+      "coqc rejected a certificate (compare: a difference); 2 bad input (one line on stderr, nothing written); 3 a bug in "
+      "the harness; 130 or 143 interrupted by SIGINT or SIGTERM (the previous report left as it was).");
   std::string scene_name = "paper", out_dir, seed_text, samples_text, enclosure_budget_text, paper_file, timing_runs_text;
   std::vector<std::string> claim_ids, section_list, precision_names;
   bool want_claims = false, want_scenes = false, want_precisions = false, allow_expensive = false, long_run = false,
-       quiet = false, no_timing = false, certify = false;
+       quiet = false, no_timing = false, certify = false, no_certify = false;
   std::string scene_list;
   for (const auto& [name, text] : embedded_scenes()) scene_list += (scene_list.empty() ? "" : ", ") + name;
   app.add_option("--scene", scene_name, "embedded scene name (" + scene_list + ") or a scene JSON file")->capture_default_str();
@@ -139,8 +158,8 @@ int main(int argc, char** argv) {
   CLI::App* compare = app.add_subcommand(
       "compare", "compare two report directories (a run against reports/reference/paper): exit 0 when they agree, 1 on a "
                  "difference (one line each), 2 on bad input");
-  compare->add_option("old", compare_old, "the reference report directory (or its report.json)")->required();
-  compare->add_option("new", compare_new, "the report directory to check (or its report.json)")->required();
+  compare->add_option("old", compare_old, "the reference report directory (or its report.json)");
+  compare->add_option("new", compare_new, "the report directory to check (or its report.json)");
   bool compare_subset = false;
   compare->add_flag("--subset", compare_subset,
                     "compare only the claims and sections of NEW (a run of a selection) with those of OLD (a fuller report)");
@@ -157,9 +176,13 @@ int main(int argc, char** argv) {
       ->type_name("DIGITS");
   app.add_flag("--allow-expensive", allow_expensive,
                fmt::format("run a scene whose estimated cost exceeds the budget ({:.3g} double-step units, about {})", default_cost_budget, seconds_text(default_cost_budget)));
-  app.add_flag("--certify", certify,
-               "check each claim's Coq certificate (certificates/*.v of the report) with coqc; a rejected certificate "
-               "gives exit code 1");
+  CLI::Option* certify_flag =
+      app.add_flag("--certify", certify,
+                   "check each claim's Coq certificate (certificates/*.v of the report) with coqc, and fail with exit 2 "
+                   "when coqc is not installed; a rejected certificate gives exit code 1. Default: checked wherever coqc is "
+                   "installed (one coqc process per core, all certificates at once)");
+  app.add_flag("--no-certify", no_certify, "export the Coq certificates without checking them (the report says 'exported')")
+      ->excludes(certify_flag);
   app.add_flag("--long", long_run, "long_time section: 1e9 steps in double instead of the scene's (implies --allow-expensive)");
   app.add_option("--timing-runs", timing_runs_text,
                  "work_precision: timed runs per configuration after one warm-up, 1..1000 (default: the scene's, 20)")
@@ -177,7 +200,14 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  if (*compare) return compare_report_directories(compare_old, compare_new, quiet, compare_subset);
+  if (*compare) {
+    if (compare_old.empty() || compare_new.empty()) {
+      std::fprintf(stderr, "simpson-verify: compare needs two report directories: OLD, the reference (e.g. reports/reference/paper), "
+                   "then NEW, the run to check\n");
+      return 2;
+    }
+    return compare_report_directories(compare_old, compare_new, quiet, compare_subset);
+  }
 
   scene s;
   std::optional<simpson::verify::paper_reading> paper;
@@ -261,6 +291,9 @@ int main(int argc, char** argv) {
                                               seconds_text(default_cost_budget), parts));
     }
     if (certify && coqc_version().empty()) throw std::invalid_argument("--certify: coqc was not found (install Debian's coq)");
+    // Checked wherever coqc is installed, unless --no-certify.
+    if (!certify && !no_certify) certify = !coqc_version().empty();
+    if (s.experiments.floating) s.experiments.floating->check_with_coqc = certify;  // Gappa's proofs and the lifting lemmas
     out = output_directory(s, app.count("--out") > 0 ? std::optional<std::string>(out_dir) : std::nullopt);
     prepare_output_directory(out);
   } catch (const std::invalid_argument& e) {
@@ -289,7 +322,13 @@ int main(int argc, char** argv) {
       fmt::print(stderr, "[section] {:<34} {:.2f} s\n", section, seconds);
     });
     throw_if_interrupted();
-    if (certify) record_certificates(record, true);
+    if (certify && !record.outcomes.empty()) {
+      if (!quiet) fmt::print(stderr, "[coqc] checking the claims' Coq certificates ({} processes side by side) ...\n", coqc_processes());
+      record_certificates(record, true);
+      if (!quiet && record.coq_documents > 0) {
+        fmt::print(stderr, "[coqc] {} certificate files checked in {:.1f} s\n", record.coq_documents, record.coq_seconds);
+      }
+    }
     // The verdicts first, then the report: the report is the last thing written, so that a signal
     // at any moment before its directory is swapped into place leaves the previous one as it was.
     for (const claim_outcome& o : record.outcomes) {

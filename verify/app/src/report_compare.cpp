@@ -1,5 +1,10 @@
 #include <simpson/verify/report_compare.hpp>
 
+#include <simpson/precision.hpp>
+
+#include <cmath>
+#include <optional>
+
 #include <fstream>
 #include <map>
 #include <set>
@@ -24,9 +29,48 @@ std::string shown(const json& v) {
   return text.size() > 120 ? text.substr(0, 117) + "..." : text;
 }
 
-/// Walks two values in step; `where` names the place for the report's reader.
-void walk(const json& a, const json& b, const std::string& where, std::vector<std::string>& out) {
+/// Within round-off of a row's precision: 1024 ε. A formula that changes moves a figure far more.
+constexpr double roundoff_units = 1024;
+
+/// The unit round-off of the precision a row names ("precision": "double", or "epsilon": "2.22e-16"),
+/// or nothing (an exact row, or none named).
+std::optional<double> row_epsilon(const json& row) {
+  try {
+    if (row.contains("epsilon") && row.at("epsilon").is_string()) {
+      const double e = std::stod(row.at("epsilon").get<std::string>());
+      if (e > 0) return e;
+    }
+    if (row.contains("precision") && row.at("precision").is_string()) {
+      const std::string e = simpson::precision::parse(row.at("precision").get<std::string>()).epsilon();
+      const double v = std::stod(e);
+      if (v > 0) return v;
+    }
+  } catch (const std::exception&) {
+    // not a precision of ours: no round-off rule for this row
+  }
+  return std::nullopt;
+}
+
+/// A figure's value: a JSON number, or a decimal string ("-1.11e-16"); nothing for anything else.
+std::optional<double> figure_value(const json& v) {
+  if (v.is_number()) return v.get<double>();
+  if (!v.is_string()) return std::nullopt;
+  const std::string text = v.get<std::string>();
+  std::size_t used = 0;
+  try {
+    const double x = std::stod(text, &used);
+    if (used == text.size()) return x;
+  } catch (const std::exception&) {
+  }
+  return std::nullopt;
+}
+
+/// Walks two values in step; `where` names the place for the report's reader; `epsilon` is the
+/// unit round-off of the row being walked, if it names one.
+void walk(const json& a, const json& b, const std::string& where, std::vector<std::string>& out,
+          std::optional<double> epsilon = std::nullopt) {
   if (a.is_object() && b.is_object()) {
+    if (const std::optional<double> e = row_epsilon(a); e && row_epsilon(b) == e) epsilon = e;
     for (const auto& [key, value] : a.items()) {
       if (ignored_keys().count(key)) continue;
       const std::string at = where.empty() ? key : where + "." + key;
@@ -35,7 +79,7 @@ void walk(const json& a, const json& b, const std::string& where, std::vector<st
       } else if (residual_keys().count(key)) {
         continue;  // compared through within_bound
       } else {
-        walk(value, b.at(key), at, out);
+        walk(value, b.at(key), at, out, epsilon);
       }
     }
     for (const auto& [key, value] : b.items()) {
@@ -48,15 +92,44 @@ void walk(const json& a, const json& b, const std::string& where, std::vector<st
       out.push_back(where + ": " + std::to_string(a.size()) + " entries → " + std::to_string(b.size()));
       return;
     }
-    for (std::size_t k = 0; k < a.size(); ++k) walk(a[k], b[k], where + "[" + std::to_string(k) + "]", out);
+    for (std::size_t k = 0; k < a.size(); ++k) walk(a[k], b[k], where + "[" + std::to_string(k) + "]", out, epsilon);
     return;
   }
-  if (a != b) out.push_back(where + ": " + shown(a) + " → " + shown(b));
+  if (a == b) return;
+  if (epsilon) {
+    const std::optional<double> x = figure_value(a), y = figure_value(b);
+    const double limit = roundoff_units * *epsilon;
+    if (x && y && std::abs(*x) <= limit && std::abs(*y) <= limit) return;  // both at round-off level
+  }
+  out.push_back(where + ": " + shown(a) + " → " + shown(b));
+}
+
+/// Whether a run measured no run time (--no-timing).
+bool untimed(const json& report) { return report.value("overrides", json::object()).value("timing", true) == false; }
+
+/// A claim's Coq evidence checked by coqc in one run and only exported in the other: the rest of it
+/// is compared, the status and Coq version noted.
+bool coq_checked_in_one_run(const json& a, const json& b) {
+  const auto status = [](const json& c) -> std::string {
+    if (!c.contains("evidence") || !c.at("evidence").contains("coq")) return "";
+    return c.at("evidence").at("coq").value("status", "");
+  };
+  const std::string x = status(a), y = status(b);
+  return (x == "checked" && y == "exported") || (x == "exported" && y == "checked");
+}
+
+json without_coq_check(json claim) {
+  json& coq = claim["evidence"]["coq"];
+  coq.erase("status");
+  coq.erase("coq_version");
+  return claim;
 }
 
 /// "claims[3].evidence.x" → "claim <id>: evidence.x"; "experiments.table1.entries[2].ours" →
 /// "section table1, entries row 2, column ours".
-void compare_claims(const json& a, const json& b, std::vector<std::string>& out, bool subset = false) {
+void compare_claims(const json& a, const json& b, report_comparison& result, bool subset = false) {
+  std::vector<std::string>& out = result.differences;
+  std::size_t coq_noted = 0;
   std::map<std::string, const json*> old_claims;
   for (const json& c : a) old_claims[c.value("id", "")] = &c;
   std::set<std::string> seen;
@@ -69,15 +142,24 @@ void compare_claims(const json& a, const json& b, std::vector<std::string>& out,
       continue;
     }
     std::vector<std::string> lines;
-    walk(*it->second, c, "", lines);
+    if (coq_checked_in_one_run(*it->second, c)) {
+      ++coq_noted;
+      walk(without_coq_check(*it->second), without_coq_check(c), "", lines);
+    } else {
+      walk(*it->second, c, "", lines);
+    }
     for (const std::string& line : lines) out.push_back("claim " + id + ": " + line);
   }
   for (const auto& [id, c] : old_claims) {
     if (!subset && !seen.count(id)) out.push_back("claim " + id + ": only in the old report (verdict " + c->value("verdict", "?") + ")");
   }
+  if (coq_noted > 0) {
+    result.notes.push_back(std::to_string(coq_noted) + " claims' Coq certificates were checked by coqc in one run and only exported in the "
+                           "other (--no-certify, or no coqc): their Coq status is not compared, the certificates' files and lemmas are");
+  }
 }
 
-void compare_sections(const json& a, const json& b, std::vector<std::string>& out, bool subset = false) {
+void compare_sections(const json& a, const json& b, std::vector<std::string>& out, bool subset = false, bool timing_differs = false) {
   for (const auto& [name, section] : a.items()) {
     if (subset && !b.contains(name)) continue;
     if (!b.contains(name)) {
@@ -86,6 +168,7 @@ void compare_sections(const json& a, const json& b, std::vector<std::string>& ou
     }
     const json& other = b.at(name);
     for (const auto& [table, rows] : section.items()) {
+      if (timing_differs && table == "title") continue;  // a timed section says so in its title
       if (!other.contains(table)) {
         out.push_back("section " + name + ", " + table + ": only in the old report");
         continue;
@@ -121,20 +204,59 @@ const std::vector<std::string>& comparison_tolerances() {
       "figures computed in floating point: equal to the digits printed",
       "numeric residuals (max_residual, bound_at_that_sample, max_residual_over_bound): digits may differ; within_bound must "
       "stay true",
+      "figures at round-off level, in a row that names its precision: equal when both are at most 1024 epsilon of it",
+      "what one run chose not to compute (Coq checks with --no-certify or without coqc; timing with --no-timing): noted, "
+      "not a difference",
       "run times (timing.json, not compared) and the environment (build, machine, timestamp, command line): ignored"};
   return lines;
 }
 
-std::vector<std::string> compare_reports(const json& a, const json& b) {
-  std::vector<std::string> out;
+namespace {
+
+/// What --no-timing leaves out of one report, taken out of both: the timing files, and the plots of
+/// run times (each plot says whether it shows run times).
+json without_timed_parts(json report) {
+  report.erase("timing_files");
+  if (report.contains("overrides")) report["overrides"].erase("timing");
+  if (report.contains("plots") && report["plots"].is_array()) {
+    json kept = json::array();
+    for (const json& p : report["plots"]) {
+      if (!p.value("run_times", false)) kept.push_back(p);
+    }
+    report["plots"] = kept;
+  }
+  return report;
+}
+
+}  // namespace
+
+report_comparison compare_reports(const json& old_report, const json& new_report) {
+  report_comparison result;
+  std::vector<std::string>& out = result.differences;
+  const bool timing_differs = untimed(old_report) != untimed(new_report);
+  const json a = timing_differs ? without_timed_parts(old_report) : old_report;
+  const json b = timing_differs ? without_timed_parts(new_report) : new_report;
+  if (timing_differs) {
+    result.notes.push_back(std::string("the ") + (untimed(new_report) ? "new" : "old") +
+                           " run measured no run time (--no-timing): timing files, plots of run times and the timed "
+                           "section's title are not compared");
+  }
   for (const auto& [key, value] : a.items()) {
     if (ignored_keys().count(key)) continue;
     if (!b.contains(key)) {
       out.push_back(key + ": only in the old report");
     } else if (key == "claims") {
-      compare_claims(value, b.at(key), out);
+      compare_claims(value, b.at(key), result);
     } else if (key == "experiments") {
-      compare_sections(value, b.at(key), out);
+      compare_sections(value, b.at(key), out, false, timing_differs);
+    } else if (key == "summary") {
+      json x = value, y = b.at(key);
+      // Checked counts follow the Coq status: noted with it.
+      if (x.value("coq_checked", 0) == 0 || y.value("coq_checked", 0) == 0) {
+        x.erase("coq_checked");
+        y.erase("coq_checked");
+      }
+      walk(x, y, key, out);
     } else {
       walk(value, b.at(key), key, out);
     }
@@ -142,11 +264,12 @@ std::vector<std::string> compare_reports(const json& a, const json& b) {
   for (const auto& [key, value] : b.items()) {
     if (!ignored_keys().count(key) && !a.contains(key)) out.push_back(key + ": only in the new report");
   }
-  return out;
+  return result;
 }
 
-std::vector<std::string> compare_report_subset(const json& a, const json& b) {
-  std::vector<std::string> out;
+report_comparison compare_report_subset(const json& a, const json& b) {
+  report_comparison result;
+  std::vector<std::string>& out = result.differences;
   for (const char* key : {"schema_version", "tool", "scene", "paper", "seed", "samples", "precisions"}) {
     if (a.contains(key) != b.contains(key)) {
       out.push_back(std::string(key) + (a.contains(key) ? ": only in the old report" : ": only in the new report"));
@@ -154,9 +277,10 @@ std::vector<std::string> compare_report_subset(const json& a, const json& b) {
       walk(a.at(key), b.at(key), key, out);
     }
   }
-  compare_claims(a.value("claims", json::array()), b.value("claims", json::array()), out, true);
-  compare_sections(a.value("experiments", json::object()), b.value("experiments", json::object()), out, true);
-  return out;
+  const bool timing_differs = untimed(a) != untimed(b);
+  compare_claims(a.value("claims", json::array()), b.value("claims", json::array()), result, true);
+  compare_sections(a.value("experiments", json::object()), b.value("experiments", json::object()), out, true, timing_differs);
+  return result;
 }
 
 json load_report(const std::filesystem::path& given) {

@@ -9,7 +9,12 @@
 
 #include <fmt/format.h>
 
+#include <simpson/verify/command.hpp>
+#include <simpson/verify/coq_batch.hpp>
+
 #include <algorithm>
+#include <optional>
+#include <thread>
 
 namespace simpson::verify {
 namespace {
@@ -23,6 +28,57 @@ std::string status_text(const roundoff_proof& proof) {
     case proof_status::skipped: return "skipped: " + proof.reason;
   }
   return "?";
+}
+
+/// The section's Coq files (Gappa's proofs, the lifting lemmas), checked together once every row is
+/// computed (coq_batch.hpp: a few coqc processes, each loading Gappa's and Flocq's libraries once,
+/// instead of one process per file). A row keeps the indices of its files and its cells; its Coq cell
+/// is written after the check.
+class coq_queue {
+ public:
+  explicit coq_queue(bool check) : check_(check) {}
+  std::size_t add(const std::string& name, const std::string& text) {
+    documents_.push_back({name + "_" + std::to_string(documents_.size()), text});
+    return documents_.size() - 1;
+  }
+  void run() {
+    if (!check_ || documents_.empty()) return;
+    if (!program_on_path("coqc")) {
+      missing_ = true;
+      return;
+    }
+    verdicts_ = check_with_coqc(documents_, std::max(1u, std::thread::hardware_concurrency()));
+  }
+  /// "checked" when coqc accepted every file, "rejected: …" with the first rejected file's message,
+  /// "not checked" without --certify's coqc or without coqc on the machine.
+  std::string status(const std::vector<std::size_t>& files) const {
+    if (!check_) return "not checked";
+    if (missing_) return "not checked: coqc not found (scripts/install-deps installs Debian's coq and libcoq-gappa)";
+    for (const std::size_t k : files) {
+      if (!verdicts_.at(k).accepted) return "rejected: " + verdicts_.at(k).message;
+    }
+    return "checked";
+  }
+
+ private:
+  bool check_;
+  bool missing_ = false;
+  std::vector<coq_document> documents_;
+  std::vector<coq_verdict> verdicts_;
+};
+
+/// A row whose last cell, the Coq status of `files`, is written after the queue's check.
+struct pending_row {
+  table_row cells;
+  std::vector<std::size_t> files;
+  bool coq_cell = true;  // false: the row has no proof, its last cell is already written
+};
+
+void add_rows(table& t, std::vector<pending_row>& rows, const coq_queue& queue) {
+  for (pending_row& r : rows) {
+    if (r.coq_cell) r.cells.push_back(figure::text(queue.status(r.files)));
+    t.add(std::move(r.cells));
+  }
 }
 
 /// One lifted case: a stepper in a format from y₀ = (p, q) = (0, 1) over the steps `at`, at m = ω = 1
@@ -39,7 +95,9 @@ struct global_case {
 /// for float32 leapfrog, h = 1/32, ω = 1, (q₀, p₀) = (1, 0), every n ≤ 1000.
 constexpr const char* verinum_bound = "0.0308";
 
-void add_global(const floating_settings& s, section_result& out) {
+/// The global table's rows into `pending` (their Coq cells written after the queue's check); returns
+/// the plot of the bounds against the errors seen.
+plot_description add_global(const floating_settings& s, coq_queue& queue, std::vector<pending_row>& pending) {
   const rational box(9, 8);  // room for the orbit of energy 1/2 and the bound's growth
   const rational paper_p_box(7);  // ω = 2π: |p| reaches mω ≈ 6.28 on the orbit from (0, 1)
   const phase_point<rational> y0{rational(0), rational(1)};
@@ -53,32 +111,6 @@ void add_global(const floating_settings& s, section_result& out) {
     cases.push_back({"phi3-matrix", "float32", paper_h, {15, 150, 1500, 15000, 150000}, false, true});
     cases.push_back({"phi3-matrix", "double", paper_h, {15, 150, 1500, 15000, 150000, 1000000}, false, true});
   }
-  table rows{"global", "Over n steps: the one-step bound lifted, and the total error",
-             "Each row's one-step bound is proved as in the table above (Gappa, checked by coqc), on the box |p|, |q| ≤ 9/8 "
-             "(room for the orbit from y₀ = (p, q) = (0, 1) and the bound's growth); at ω = 2π (the paper's configuration, "
-             "Section 8: m = 1, h = 1/15, the same y₀) on |p| ≤ 7, |q| ≤ 9/8, against Φ₃ at ω = 2π rounded to double (the ω "
-             "the program holds, exactly), the flow at 2π itself (π enclosed). Φ conserves Q = w_p p² + w_q q² (found from Φ, checked "
-             "exactly), so ‖ŷ_n − Φⁿy₀‖_Q ≤ n ε with ε ≥ √(w_p B_p² + w_q B_q²): the lifting lemma, proved in Coq (column Coq) "
-             "with these constants, valid while the iterate stays in the box (the steps column of each stepper says up to "
-             "where). Shown in the Euclidean norm (‖z‖₂ ≤ ‖z‖_Q/√min w). Discretization: ‖Φⁿy₀ − y(t_n)‖₂ of the exact scheme "
-             "against the exact flow, enclosed in MPFI (40 digits), its upper end. Total: the two bounds added, against the "
-             "float iterate's ‖ŷ_n − y(t_n)‖₂ (the lower end of its enclosure). VeriNum: VerifiedLeapfrog's proved bound for "
-             "the same program and setting, every n ≤ 1000 (Kellison & Appel, NSV 2022).",
-             {{"stepper", "stepper"},
-              {"format", "format"},
-              {"omega", "ω"},
-              {"h", "h"},
-              {"n", "n"},
-              {"valid_steps", "valid to n"},
-              {"roundoff_bound", "round-off bound"},
-              {"roundoff_seen", "round-off seen"},
-              {"roundoff_bound_over_seen", "ratio"},
-              {"discretization", "discretization"},
-              {"total_bound", "total bound"},
-              {"total_seen", "total seen"},
-              {"total_bound_over_seen", "ratio"},
-              {"verinum_bound", "VeriNum"},
-              {"coq", "Coq (lifting)"}}};
   panel in_float{"float32", {"n (steps)", true}, {"‖ŷ_n − Φⁿy₀‖₂", true}, {}, "top left"};
   panel in_double{"double", {"n (steps)", true}, {"‖ŷ_n − Φⁿy₀‖₂", true}, {}, "top left"};
   const auto color_of = [&](const std::string& stepper) {
@@ -89,22 +121,27 @@ void add_global(const floating_settings& s, section_result& out) {
     const rational omega = c.paper ? paper_omega() : rational(1);
     const roundoff_problem problem =
         stepper_roundoff_problem(c.stepper, c.format, rational(1), omega, c.h, c.paper ? paper_p_box : box, box);
-    const roundoff_proof proof = prove_roundoff(problem, s.check_with_coqc);
+    const roundoff_proof proof = prove_roundoff(problem, false);  // coqc after every row: coq_queue
     const std::string name = c.stepper + " " + c.format + (c.paper ? " ω = 2π" : "");
     const figure omega_text = figure::text(c.paper ? "2π" : "1");
     const flow_oscillator flow{rational(1), rational(1), c.paper};
     if (proof.status != proof_status::proved) {
-      rows.add({figure::text(c.stepper), figure::text(c.format), omega_text, figure::text(c.h.str()), figure{}, figure{}, figure{}, figure{},
-                figure{}, figure{}, figure{}, figure{}, figure{}, figure{}, figure::text(status_text(proof))});
+      pending.push_back({{figure::text(c.stepper), figure::text(c.format), omega_text, figure::text(c.h.str()), figure{}, figure{}, figure{},
+                          figure{}, figure{}, figure{}, figure{}, figure{}, figure{}, figure{}, figure::text(status_text(proof))},
+                         {}, false});
       continue;
     }
     const std::optional<lifting_constants> lifting = lifting_for(problem, proof.bounds, y0);
     if (!lifting) {
-      rows.add({figure::text(c.stepper), figure::text(c.format), omega_text, figure::text(c.h.str()), figure{}, figure{}, figure{}, figure{},
-                figure{}, figure{}, figure{}, figure{}, figure{}, figure{}, figure::text("no diagonal invariant form: not lifted")});
+      pending.push_back({{figure::text(c.stepper), figure::text(c.format), omega_text, figure::text(c.h.str()), figure{}, figure{}, figure{},
+                          figure{}, figure{}, figure{}, figure{}, figure{}, figure{}, figure{},
+                          figure::text("no diagonal invariant form: not lifted")},
+                         {}, false});
       continue;
     }
-    const std::string coq = s.check_with_coqc ? coqc_check(lifting_lemma_coq(problem, proof.bounds, *lifting), "lifting") : "not checked";
+    // The row's one-step bound and its lifting: both files must be accepted.
+    const std::vector<std::size_t> files{queue.add("gappa", proof.certificate),
+                                         queue.add("lifting", lifting_lemma_coq(problem, proof.bounds, *lifting))};
     std::vector<long long> at;
     for (const long long n : c.at) {
       if (n <= lifting->valid_steps) at.push_back(n);
@@ -113,11 +150,12 @@ void add_global(const floating_settings& s, section_result& out) {
     const int color = c.paper ? static_cast<int>(proved_steppers().size()) : color_of(c.stepper);
     series bound_curve(label + " bound", line_style::lines, color), seen_curve(label + " seen", line_style::points, color);
     for (const global_row& r : global_comparison(problem, *lifting, c.h, y0, at, flow)) {
-      rows.add({figure::text(c.stepper), figure::text(c.format), omega_text, figure::text(c.h.str()), figure::integer(r.n),
-                figure::integer(lifting->valid_steps), figure::text(r.roundoff_bound), figure::text(r.roundoff_seen),
-                figure::of(r.roundoff_bound_over_seen), figure::text(r.discretization), figure::text(r.total_bound),
-                figure::text(r.total_seen), figure::of(r.bound_over_seen),
-                c.verinum && r.n <= 1000 ? figure::text(verinum_bound) : figure{}, figure::text(coq)});
+      pending.push_back({{figure::text(c.stepper), figure::text(c.format), omega_text, figure::text(c.h.str()), figure::integer(r.n),
+                          figure::integer(lifting->valid_steps), figure::text(r.roundoff_bound), figure::text(r.roundoff_seen),
+                          figure::of(r.roundoff_bound_over_seen), figure::text(r.discretization), figure::text(r.total_bound),
+                          figure::text(r.total_seen), figure::of(r.bound_over_seen),
+                          c.verinum && r.n <= 1000 ? figure::text(verinum_bound) : figure{}},
+                         files});
       bound_curve.add(figure::integer(r.n), figure::of(std::stod(r.roundoff_bound)));
       seen_curve.add(figure::integer(r.n), figure::of(std::stod(r.roundoff_seen)));
       progress_step("floating", name + " n = " + std::to_string(r.n));
@@ -126,20 +164,20 @@ void add_global(const floating_settings& s, section_result& out) {
     const long long far = 1'000'000'000;
     if (c.format == "double" && far <= lifting->valid_steps) {
       const rational bound = rational(far) * lifting->epsilon * lifting->to_euclidean;
-      rows.add({figure::text(c.stepper), figure::text(c.format), omega_text, figure::text(c.h.str()), figure::integer(far),
-                figure::integer(lifting->valid_steps), figure::text(decimal_rounded_up(bound)), figure::text("not run"), figure{},
-                figure{}, figure{}, figure{}, figure{}, figure{}, figure::text(coq)});
+      pending.push_back({{figure::text(c.stepper), figure::text(c.format), omega_text, figure::text(c.h.str()), figure::integer(far),
+                          figure::integer(lifting->valid_steps), figure::text(decimal_rounded_up(bound)), figure::text("not run"), figure{},
+                          figure{}, figure{}, figure{}, figure{}, figure{}},
+                         files});
       bound_curve.add(figure::integer(far), figure::of(static_cast<double>(bound)));
     }
     panel& into = c.format == "float32" ? in_float : in_double;
     into.curves.push_back(std::move(bound_curve));
     into.curves.push_back(std::move(seen_curve));
   }
-  out.add(std::move(rows));
-  out.add(plot_description{"floating_roundoff",
+  return plot_description{"floating_roundoff",
                            "Proved round-off bound (lines) against the round-off seen (markers) over n steps, log-log, per stepper; "
                            "each bound is n ε, linear in n",
-                           {in_float, in_double}, 2, 1200, 480});
+                           {in_float, in_double}, 2, 1200, 480};
 }
 
 /// Which part of the floating results rests on which kernel (issue 29's trust base).
@@ -200,12 +238,14 @@ section_result run_floating(const floating_settings& s) {
               {"bound_over_seen", "bound/seen"},
               {"gappa", "Gappa"},
               {"coq", "Coq"}}};
+  coq_queue queue(s.check_with_coqc);
+  std::vector<pending_row> one_step;
   for (const std::string& stepper : s.steppers) {
     for (const std::string& format : s.formats) {
       const bool leapfrog = stepper == "leapfrog-verinum";
       const rational h = leapfrog ? rational(1, 32) : rational(1, s.h_denominator);
       const roundoff_problem problem = stepper_roundoff_problem(stepper, format, rational(1), rational(1), h, rational(1), rational(1));
-      const roundoff_proof proof = prove_roundoff(problem, s.check_with_coqc);
+      const roundoff_proof proof = prove_roundoff(problem, false);  // coqc after every row: coq_queue
       const claimed_bounds seen = measured_roundoff(problem, s.samples, sampling_seed);
       const bool proved = proof.status == proof_status::proved;
       figure ratio{};
@@ -213,16 +253,58 @@ section_result run_floating(const floating_settings& s) {
         const double rp = static_cast<double>(rational(proof.bounds.p / seen.p)), rq = static_cast<double>(rational(proof.bounds.q / seen.q));
         ratio = figure::of(std::max(rp, rq));
       }
-      rows.add({figure::text(stepper), figure::text(format), figure::text(h.str()),
-                proved ? figure::text(decimal_rounded_up(proof.bounds.p)) : figure{},
-                proved ? figure::text(decimal_rounded_up(proof.bounds.q)) : figure{},
-                figure::text(decimal_text(seen.p)), figure::text(decimal_text(seen.q)), ratio,
-                figure::text(status_text(proof)), figure::text(proved ? proof.coq : "")});
+      table_row cells{figure::text(stepper), figure::text(format), figure::text(h.str()),
+                      proved ? figure::text(decimal_rounded_up(proof.bounds.p)) : figure{},
+                      proved ? figure::text(decimal_rounded_up(proof.bounds.q)) : figure{},
+                      figure::text(decimal_text(seen.p)), figure::text(decimal_text(seen.q)), ratio,
+                      figure::text(status_text(proof))};
+      if (proved) {
+        one_step.push_back({std::move(cells), {queue.add("gappa", proof.certificate)}});
+      } else {
+        cells.push_back(figure::text(""));
+        one_step.push_back({std::move(cells), {}, false});
+      }
       progress_step("floating", stepper + " " + format);
     }
   }
+  std::vector<pending_row> global_rows;
+  table global{"global", "Over n steps: the one-step bound lifted, and the total error",
+             "Each row's one-step bound is proved as in the table above (Gappa, checked by coqc), on the box |p|, |q| ≤ 9/8 "
+             "(room for the orbit from y₀ = (p, q) = (0, 1) and the bound's growth); at ω = 2π (the paper's configuration, "
+             "Section 8: m = 1, h = 1/15, the same y₀) on |p| ≤ 7, |q| ≤ 9/8, against Φ₃ at ω = 2π rounded to double (the ω "
+             "the program holds, exactly), the flow at 2π itself (π enclosed). Φ conserves Q = w_p p² + w_q q² (found from Φ, checked "
+             "exactly), so ‖ŷ_n − Φⁿy₀‖_Q ≤ n ε with ε ≥ √(w_p B_p² + w_q B_q²): the lifting lemma, proved in Coq (column Coq) "
+             "with these constants, valid while the iterate stays in the box (the steps column of each stepper says up to "
+             "where). Shown in the Euclidean norm (‖z‖₂ ≤ ‖z‖_Q/√min w). Discretization: ‖Φⁿy₀ − y(t_n)‖₂ of the exact scheme "
+             "against the exact flow, enclosed in MPFI (40 digits), its upper end. Total: the two bounds added, against the "
+             "float iterate's ‖ŷ_n − y(t_n)‖₂ (the lower end of its enclosure). VeriNum: VerifiedLeapfrog's proved bound for "
+             "the same program and setting, every n ≤ 1000 (Kellison & Appel, NSV 2022).",
+             {{"stepper", "stepper"},
+              {"format", "format"},
+              {"omega", "ω"},
+              {"h", "h"},
+              {"n", "n"},
+              {"valid_steps", "valid to n"},
+              {"roundoff_bound", "round-off bound"},
+              {"roundoff_seen", "round-off seen"},
+              {"roundoff_bound_over_seen", "ratio"},
+              {"discretization", "discretization"},
+              {"total_bound", "total bound"},
+              {"total_seen", "total seen"},
+              {"total_bound_over_seen", "ratio"},
+              {"verinum_bound", "VeriNum"},
+              {"coq", "Coq (bound, lifting)"}}};
+  std::optional<plot_description> plot;
+  if (s.global) plot = add_global(s, queue, global_rows);
+  progress_step("floating", "coqc on the section's proofs");
+  queue.run();
+  add_rows(rows, one_step, queue);
   out.add(std::move(rows));
-  if (s.global) add_global(s, out);
+  if (s.global) {
+    add_rows(global, global_rows, queue);
+    out.add(std::move(global));
+    out.add(std::move(*plot));
+  }
   add_trust_base(out);
   return out;
 }

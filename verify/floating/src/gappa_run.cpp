@@ -3,6 +3,7 @@
 #include <simpson/verify/gappa_run.hpp>
 
 #include <simpson/verify/command.hpp>
+#include <simpson/verify/coq_batch.hpp>
 
 #include <cstdlib>
 #include <filesystem>
@@ -193,11 +194,8 @@ roundoff_proof prove_roundoff(const roundoff_problem& problem, bool check_with_c
 
 std::string coqc_check(const std::string& text, const std::string& module) {
   if (!program_on_path("coqc")) return "not checked: coqc not found (scripts/install-deps installs Debian's coq and libcoq-gappa)";
-  const scratch_directory work;
-  write_file(work.path() / (module + ".v"), text);
-  const command_result checked = run_command("cd '" + work.path().string() + "' && coqc -q '" + module + ".v'");
-  if (checked.status != 0) return "rejected: " + first_lines(checked.output, 8);
-  return "checked";
+  const coq_verdict v = check_with_coqc({{module, text}}, 1).front();
+  return v.accepted ? "checked" : "rejected: " + v.message;
 }
 
 }  // namespace simpson::verify

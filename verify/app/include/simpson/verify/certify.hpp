@@ -30,10 +30,14 @@ struct certificate_document {
 std::vector<certificate_document> certificate_documents(const claim_outcome& o);
 
 /// Records evidence "coq" for every claim: "not exported" with the reason, or "exported" with the
-/// file and its lemmas (and "refutation": the negations' file and lemmas). With `check`, each file is
-/// written to a temporary directory and checked by coqc: "checked" with the Coq version and the
-/// seconds taken, or "failed" with coqc's first lines. Throws std::invalid_argument when `check` is asked and coqc is not found.
-/// Returns the ids whose certificate coqc rejected.
+/// file and its lemmas (and "refutation": the negations' file and lemmas). With `check`, every file
+/// of the run is checked by coqc, all in coqc_processes() processes (coq_batch.hpp): "checked" with
+/// the Coq version, or "failed" with the rejected file and coqc's first lines on it; the wall time
+/// goes to r.coq_seconds (timing.json). Throws std::invalid_argument when `check` is asked and coqc
+/// is not found. Returns the ids whose certificate coqc rejected.
 std::vector<std::string> record_certificates(run_record& r, bool check);
+
+/// How many coqc processes a check runs side by side: the machine's hardware threads.
+unsigned coqc_processes();
 
 }  // namespace simpson::verify

@@ -8,6 +8,11 @@
 // - figures computed in floating point (decimal strings, JSON numbers): equal to the digits printed;
 // - numeric residuals of the rechecks (max_residual, bound_at_that_sample, max_residual_over_bound):
 //   their digits may differ, but within_bound must stay true;
+// - figures at round-off level: in a row that names its precision ("precision" or "epsilon"), two
+//   figures both at most 1024 ε of that precision are equal (another libm or compiler moves them);
+// - what one run chose not to compute is a note, not a difference: Coq certificates exported but
+//   not checked by coqc (--no-certify, or no coqc), and what --no-timing leaves out (timing files,
+//   plots of run times, the timed section's title);
 // - run times (in timing.json, which is not compared) and the environment: ignored.
 
 #include <simpson/verify/json.hpp>
@@ -21,15 +26,21 @@ namespace simpson::verify {
 /// The tolerances above, one line each.
 const std::vector<std::string>& comparison_tolerances();
 
+/// What a comparison found: differences (exit 1), and notes on what only one run computed.
+struct report_comparison {
+  std::vector<std::string> differences;
+  std::vector<std::string> notes;
+};
+
 /// The differences between two report.json documents, one line each; empty when they agree.
-std::vector<std::string> compare_reports(const json& old_report, const json& new_report);
+report_comparison compare_reports(const json& old_report, const json& new_report);
 
 /// The same for a run of a selection against a fuller report (`compare --subset`): only the claims
 /// and the sections the new report has are compared, each with the old report's; the run's settings
 /// that shape their figures (tool, schema, scene, paper, seed, samples, precisions) must agree. A
 /// claim or section of the new report that the old one lacks is a difference; what the new report
 /// leaves out is not.
-std::vector<std::string> compare_report_subset(const json& old_report, const json& new_report);
+report_comparison compare_report_subset(const json& old_report, const json& new_report);
 
 /// report.json of a report directory (or the file itself). Throws std::invalid_argument naming the
 /// path when it is missing or is not a simpson-verify report.

@@ -18,9 +18,6 @@ struct claim_outcome {
   verdict expected = verdict::holds;
   claim_result result;
   double seconds = 0;
-  /// coqc's time on the claim's certificates (--certify): a run time, so in timing.json, not in the
-  /// evidence (report.json stays the same from run to run).
-  double coq_seconds = 0;
 };
 
 struct run_record {
@@ -35,9 +32,10 @@ struct run_record {
   std::vector<section_result> sections;  // the experiment sections the scene asked for, in order
   std::vector<double> section_seconds;
   double seconds = 0;
-  /// coqc's time on the claim's certificates (--certify): a run time, so in timing.json, not in the
-  /// evidence (report.json stays the same from run to run).
+  /// coqc's wall time on all the claims' certificates, checked together (--certify): a run time, so in
+  /// timing.json, not in the evidence (report.json stays the same from run to run).
   double coq_seconds = 0;
+  std::size_t coq_documents = 0;  // the files coqc checked
 };
 
 /// Called before and after each claim: (index, count, claim, outcome or nullptr).
