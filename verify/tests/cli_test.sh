@@ -4,6 +4,8 @@
 #   cli_test.sh BIN               every check but the beyond scene's
 #   cli_test.sh BIN beyond-scene  the embedded beyond scene, whole (its nonlinear section takes most
 #                                 of the time): a ctest test of its own, so that it runs beside the rest
+#   cli_test.sh BIN beyond-scene-reduced  its claims in every precision with 4 samples, and its nonlinear
+#                                 section at a small size (every problem and table): the sanitizer suite's
 set -u
 bin="$(realpath "$1")"
 part="${2:-main}"
@@ -33,8 +35,18 @@ check() {  # check NAME EXPECTED_CODE ARGS...
 
 fail() { echo "FAIL $1"; failures=$((failures + 1)); }
 
-if [ "$part" = beyond-scene ]; then
-  check "beyond scene" 0 --scene beyond --quiet --out "$work/beyond"
+if [ "$part" = beyond-scene ] || [ "$part" = beyond-scene-reduced ]; then
+  if [ "$part" = beyond-scene ]; then
+    check "beyond scene" 0 --scene beyond --quiet --out "$work/beyond"
+  else
+    cat >"$work/beyond-reduced.json" <<'JSON'
+{"name": "beyond-reduced", "claims": "beyond", "precisions": ["double", "long double", "float128", "bin50", "mpfr:50", "mpfr:100"],
+ "samples": 4, "seed": 20230830,
+ "nonlinear": {"pendulum_N": [10, 20], "energy_steps": 100, "brouwer_steps": 1000, "problems": ["pendulum", "kepler", "henon-heiles"],
+               "N": [64, 128], "double_pendulum_N": [10, 20], "max_runs": 1}}
+JSON
+    check "beyond scene, reduced" 0 --scene "$work/beyond-reduced.json" --quiet --out "$work/beyond"
+  fi
   grep -q '^9 claims: 9 held, 0 errata, 0 failed; all verdicts as expected' "$work/out" ||
     { echo "FAIL beyond scene: $(cat "$work/out")"; failures=$((failures + 1)); }
   echo "$passes passed, $failures failed"
@@ -120,7 +132,7 @@ for k in 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21 22 23 24 25 26 27
 done
 # Interruption: a long run (10000 samples per recheck) stopped after one second.
 for sig in INT TERM; do
-  "$bin" --samples 10000 --out "$work/stopped-$sig" >"$work/out" 2>"$work/err" &
+  "$bin" ${SIMPSON_VERIFY_ARGS:-} --samples 10000 --out "$work/stopped-$sig" >"$work/out" 2>"$work/err" &
   pid=$!
   sleep 1
   kill -"$sig" "$pid"
@@ -137,7 +149,7 @@ for sig in INT TERM; do
 done
 # The same during an experiment section (work_precision in mpfr:1000, minutes long).
 echo '{"name": "slow", "work_precision": {"precisions": ["mpfr:1000"], "N": [100000]}}' >"$work/slow.json"
-"$bin" --scene "$work/slow.json" --allow-expensive --out "$work/stopped-section" >"$work/out" 2>"$work/err" &
+"$bin" ${SIMPSON_VERIFY_ARGS:-} --scene "$work/slow.json" --allow-expensive --out "$work/stopped-section" >"$work/out" 2>"$work/err" &
 pid=$!
 sleep 1
 kill -INT "$pid"
@@ -153,11 +165,11 @@ fi
 # run is its own group (setsid) and the group gets SIGINT: the run exits 130 and leaves the previous
 # report byte-identical, or, when the signal came after the report was swapped into place, exits 0
 # with the new report complete. One moment is while gnuplot draws (waited for with pgrep).
-"$bin" --scene quick --out "$work/group" >/dev/null 2>&1 || fail "process group: the first run failed"
+"$bin" ${SIMPSON_VERIFY_ARGS:-} --scene quick --out "$work/group" >/dev/null 2>&1 || fail "process group: the first run failed"
 snapshot() { (cd "$work/group" && find . -type f | sort | xargs sha256sum); }
 before=$(snapshot)
 group_interrupt() {  # group_interrupt WHEN: a delay in seconds; "gnuplot" (while it draws); "staging" (once the report is staged)
-  setsid "$bin" --scene quick --samples 1000 --seed 7 --out "$work/group" >"$work/out" 2>"$work/err" &
+  setsid "$bin" ${SIMPSON_VERIFY_ARGS:-} --scene quick --samples 1000 --seed 7 --out "$work/group" >"$work/out" 2>"$work/err" &
   local pid=$!
   case "$1" in
     # gnuplot runs while its <plot>.log exists in the staging directory (made before exec, removed after)
@@ -289,7 +301,7 @@ grep -Eq '^simpson-verify [0-9]+\.[0-9]+\.[0-9]+ \(commit ([0-9a-f]{40}|unknown)
 
 # A selection never replaces a fuller report by default: without --out it writes a directory named
 # after it; an explicit --out holding a fuller report is refused, naming --out; an empty --out too.
-(cd "$work" && "$bin" --claims phi3-det --precisions double --quiet >/dev/null 2>&1) || fail "selection default out: run failed"
+(cd "$work" && "$bin" --no-certify --claims phi3-det --precisions double --quiet >/dev/null 2>&1) || fail "selection default out: run failed"
 [ -f "$work/reports/out/paper-claims-phi3-det/report.json" ] || fail "selection default out: not in reports/out/paper-claims-phi3-det: $(ls "$work/reports/out" 2>&1)"
 check "selection onto a fuller report (setup)" 0 --scene quick --no-timing --quiet --out "$work/quick-full"
 before=$(cd "$work/quick-full" && find . -type f | sort | xargs sha256sum)

@@ -4,6 +4,7 @@ makes: a whole scene, claims only, sections only, untimed, the nonlinear section
 that the schema is shown to constrain what it documents. Needs python3-jsonschema (install-deps)."""
 import copy
 import json
+import os
 import subprocess
 import sys
 import tempfile
@@ -40,7 +41,7 @@ with tempfile.TemporaryDirectory() as work:
     reports = {}
     for name, args in runs.items():
         out = f"{work}/{len(reports)}"
-        done = subprocess.run([binary, "--quiet", "--out", out] + args, capture_output=True, text=True)
+        done = subprocess.run([binary] + os.environ.get("SIMPSON_VERIFY_ARGS", "").split() + ["--quiet", "--out", out] + args, capture_output=True, text=True)
         if done.returncode != 0:
             print(f"FAIL {name}: exit {done.returncode}: {done.stderr.strip()}")
             failures += 1

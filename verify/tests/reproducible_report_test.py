@@ -16,7 +16,7 @@ environment = dict(os.environ, SOURCE_DATE_EPOCH="1693353600")  # 2023-08-30, th
 
 def run(directory, args):
     os.makedirs(directory)
-    done = subprocess.run([binary, "--quiet", "--scene", "quick", "--out", "out"] + args, cwd=directory, env=environment,
+    done = subprocess.run([binary] + os.environ.get("SIMPSON_VERIFY_ARGS", "").split() + ["--quiet", "--scene", "quick", "--out", "out"] + args, cwd=directory, env=environment,
                           capture_output=True, text=True)
     if done.returncode != 0:
         sys.exit(f"FAIL: exit {done.returncode}: {done.stderr.strip()}")
