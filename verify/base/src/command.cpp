@@ -3,6 +3,8 @@
 #include <simpson/verify/command.hpp>
 
 #include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
 #include <sstream>
 
 namespace simpson::verify {
@@ -24,6 +26,17 @@ std::string first_lines(const std::string& text, int lines) {
   std::string line, out;
   for (int k = 0; k < lines && std::getline(in, line); ++k) out += (out.empty() ? "" : "\n") + line;
   return out;
+}
+
+scratch_directory::scratch_directory(const std::string& prefix) {
+  std::string pattern = (std::filesystem::temp_directory_path() / (prefix + "-XXXXXX")).string();
+  if (::mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("cannot create a temporary directory " + pattern);
+  path_ = pattern;
+}
+
+scratch_directory::~scratch_directory() {
+  std::error_code ignored;
+  std::filesystem::remove_all(path_, ignored);
 }
 
 }  // namespace simpson::verify

@@ -24,26 +24,6 @@ bool is_identifier(const std::string& s) {
   return std::regex_match(s, identifier);
 }
 
-/// A temporary directory, removed with what it holds.
-class scratch {
- public:
-  scratch() {
-    char pattern[] = "/tmp/simpson-coq-XXXXXX";
-    if (::mkdtemp(pattern) == nullptr) throw std::runtime_error("coqc: cannot create a temporary directory");
-    path_ = pattern;
-  }
-  ~scratch() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  scratch(const scratch&) = delete;
-  scratch& operator=(const scratch&) = delete;
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
-
 /// coqc on one file of a directory: its verdict, coqc's first lines when it rejects.
 coq_verdict coqc_file(const std::filesystem::path& directory, const std::string& module, const std::string& text) {
   std::ofstream(directory / (module + ".v")) << text;
@@ -111,7 +91,7 @@ std::vector<coq_verdict> check_with_coqc(const std::vector<coq_document>& docume
   }
   for (auto& share : shares) std::sort(share.begin(), share.end());  // the documents' own order inside a file
   throw_if_interrupted();
-  const scratch work;
+  const scratch_directory work("simpson-coq");
   std::vector<std::future<coq_verdict>> running;
   for (unsigned j = 0; j < jobs; ++j) {
     std::vector<coq_document> mine;

@@ -41,6 +41,7 @@ enclosed_solution enclose_exact_solution(long long N, long long periods) {
   const long long steps = N * periods;
   out.reserve(static_cast<std::size_t>(steps) + 1);
   for (long long j = 0; j <= steps; ++j) {
+    if ((j & 1023) == 0) throw_if_interrupted();  // minutes in high precision at large N
     const interval angle = two_pi * interval(j * periods) / interval(steps);
     out.push_back({interval(cos(angle)), interval(sin(angle))});
   }
@@ -226,7 +227,10 @@ section_result run_work_precision(const work_precision_settings& s) {
         const phase_point<Real> y0{omega, Real(0)};
         std::vector<phase_point<Real>>& exact = exact_by_N[N];
         exact.reserve(static_cast<std::size_t>(steps) + 1);
-        for (long long j = 0; j <= steps; ++j) exact.push_back(exact_solution(par, y0, Real(par.h() * Real(j))));
+        for (long long j = 0; j <= steps; ++j) {
+          if ((j & 1023) == 0) throw_if_interrupted();
+          exact.push_back(exact_solution(par, y0, Real(par.h() * Real(j))));
+        }
       }
       for (std::size_t k = 0; k < s.schemes.size(); ++k) {
         const scheme_id scheme = s.schemes[k];

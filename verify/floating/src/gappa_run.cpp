@@ -51,26 +51,6 @@ std::string with_hints_proved(const std::string& certificate) {
   return out;
 }
 
-/// A directory of its own under the system's temporary directory, removed with this object.
-class scratch_directory {
- public:
-  scratch_directory() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "simpson-gappa-XXXXXX").string();
-    if (::mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("cannot create a temporary directory for gappa");
-    path_ = pattern;
-  }
-  ~scratch_directory() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  scratch_directory(const scratch_directory&) = delete;
-  scratch_directory& operator=(const scratch_directory&) = delete;
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
-
 void write_file(const std::filesystem::path& file, const std::string& text) {
   std::ofstream out(file);
   out << text;
@@ -126,7 +106,7 @@ roundoff_proof prove_roundoff(const roundoff_problem& problem, bool check_with_c
     out.reason = "gappa not found (scripts/install-deps installs Debian's gappa): nothing proved";
     return out;
   }
-  const scratch_directory work;
+  const scratch_directory work("simpson-gappa");
   // 1. The enclosures.
   write_file(work.path() / "ask.g", gappa_script(problem));
   const command_result asked = run_command("gappa '" + (work.path() / "ask.g").string() + "'");
