@@ -14,6 +14,8 @@ using progress_sink = std::function<void(const std::string&, const std::string&,
 /// Installs the sink (an empty function removes it); returns the previous one.
 progress_sink set_progress_sink(progress_sink sink);
 
+/// Reports one unit of work done; throws simpson::verify::interrupted when the run was asked to stop
+/// (interruption.hpp), so every section that reports progress stops between two of its units.
 void progress_step(const std::string& section, const std::string& what, double fraction = -1);
 
 }  // namespace simpson::verify
