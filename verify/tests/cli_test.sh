@@ -335,6 +335,11 @@ grep -q '^the reports agree$' "$work/out" || fail "compare --subset: $(tail -5 "
 check "compare without --subset" 1 compare "$reference" "$work/headline"
 sed 's/"verdict": "holds"/"verdict": "fails"/' "$work/headline/report.json" >"$work/headline-altered.json"
 check "compare --subset altered" 1 compare --subset "$reference" "$work/headline-altered.json"
+# compare's own mistakes in our words: a missing directory, and --subset's two reports swapped.
+check "compare one argument" 2 compare "$reference"
+grep -q "compare needs two report directories: OLD, the reference" "$work/err" || fail "compare one argument: not named: $(cat "$work/err")"
+check "compare --subset swapped" 2 compare --subset "$work/headline" "$reference"
+grep -q "must be the fuller report (the reference) .* the two look swapped" "$work/err" || fail "compare --subset swapped: not named: $(cat "$work/err")"
 # The console: an erratum's correction, and what exit 0 with a failure means.
 check "errata on the console" 0 --claims gamma-determinant,table-values --precisions double --out "$work/console"
 grep -q '^           corrected: det Gamma = (1/4)' "$work/out" || fail "errata on the console: no corrected line: $(cat "$work/out")"
@@ -374,6 +379,8 @@ else
 fi
 # --help: every embedded scene, integers typed as such.
 check "help" 0 --help
+grep -q 'Exit codes: 0 every verdict as expected .* 2 bad input .* 3 a bug in the harness; 130 or 143 interrupted' "$work/out" ||
+  fail "help: exit codes not listed"
 grep -q 'embedded scene name (beyond, family, floating, paper, quick)' "$work/out" || fail "help: scenes not all listed"
 grep -q -- '--samples UINT' "$work/out" || fail "help: --samples not typed UINT"
 

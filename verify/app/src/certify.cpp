@@ -13,7 +13,6 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
-#include <thread>
 
 namespace simpson::verify {
 std::string coqc_version() {
@@ -82,9 +81,10 @@ std::vector<std::string> record_certificates(run_record& r, bool check) {
   }
   if (!check || documents.empty()) return rejected;
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<coq_verdict> verdicts = check_with_coqc(documents, coqc_processes());
+  const std::vector<coq_verdict> verdicts = check_with_coqc(documents);
   r.coq_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   r.coq_documents = documents.size();
+  r.coq_processes = coqc_processes_for(documents.size());
   for (std::size_t k = 0; k < r.outcomes.size(); ++k) {
     json& coq = r.outcomes[k].result.evidence["coq"];
     if (coq.value("status", "") != "exported") continue;
@@ -102,11 +102,6 @@ std::vector<std::string> record_certificates(run_record& r, bool check) {
     }
   }
   return rejected;
-}
-
-unsigned coqc_processes() {
-  const unsigned cores = std::thread::hardware_concurrency();
-  return cores == 0 ? 2 : cores;
 }
 
 }  // namespace simpson::verify

@@ -323,10 +323,11 @@ int main(int argc, char** argv) {
     });
     throw_if_interrupted();
     if (certify && !record.outcomes.empty()) {
-      if (!quiet) fmt::print(stderr, "[coqc] checking the claims' Coq certificates ({} processes side by side) ...\n", coqc_processes());
+      if (!quiet) fmt::print(stderr, "[coqc] checking the claims' Coq certificates ...\n");
       record_certificates(record, true);
       if (!quiet && record.coq_documents > 0) {
-        fmt::print(stderr, "[coqc] {} certificate files checked in {:.1f} s\n", record.coq_documents, record.coq_seconds);
+        fmt::print(stderr, "[coqc] {} certificate files checked in {:.1f} s ({} processes side by side)\n", record.coq_documents,
+                   record.coq_seconds, record.coq_processes);
       }
     }
     // The verdicts first, then the report: the report is the last thing written, so that a signal

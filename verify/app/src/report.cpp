@@ -251,7 +251,7 @@ json timing_json(const run_record& r) {
               {"claims_total", speed.claims_total},
               {"coqc_total", r.coq_seconds},
               {"coqc_files", r.coq_documents},
-              {"coqc_processes", r.coq_documents > 0 ? coqc_processes() : 0u},
+              {"coqc_processes", r.coq_processes},
               {"printed_formulas_in_ginac", ginac},
               {"ginac_derivation", r.ginac_derivation_seconds},
               {"headline_in_ginac", speed.headline},
@@ -281,7 +281,7 @@ std::string timing_markdown(const run_record& r, const plot_outcome& plots) {
                       "| claim | seconds | of which GiNaC, printed formula |\n|---|---|---|\n",
                       speed.claims_total,
                       r.coq_documents > 0 ? fmt::format(" coqc checked the {} certificate files in {:.1f} s ({} processes side by side).",
-                                                        r.coq_documents, r.coq_seconds, coqc_processes())
+                                                        r.coq_documents, r.coq_seconds, r.coq_processes)
                                           : std::string());
     for (const claim_outcome& o : r.outcomes) {
       md += fmt::format("| {} | {:.2e} | {} |\n", o.checked->id, o.seconds,

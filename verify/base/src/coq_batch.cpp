@@ -15,6 +15,7 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 namespace simpson::verify {
 namespace {
@@ -71,12 +72,22 @@ std::string coq_modules_file(const std::vector<coq_document>& documents) {
   return out + "\n" + modules;
 }
 
+unsigned coqc_processes() {
+  const unsigned threads = std::thread::hardware_concurrency();
+  return threads == 0 ? 2 : threads;
+}
+
+unsigned coqc_processes_for(std::size_t documents, unsigned jobs) {
+  if (documents == 0) return 0;
+  return std::max(1u, std::min<unsigned>(jobs, static_cast<unsigned>(documents)));
+}
+
 std::vector<coq_verdict> check_with_coqc(const std::vector<coq_document>& documents, unsigned jobs) {
   std::vector<coq_verdict> verdicts(documents.size());
   if (documents.empty()) return verdicts;
   if (!program_on_path("coqc")) throw std::invalid_argument("coqc was not found (scripts/install-deps installs Debian's coq)");
   coq_modules_file(documents);  // the names checked before any process starts
-  jobs = std::max(1u, std::min<unsigned>(jobs, static_cast<unsigned>(documents.size())));
+  jobs = coqc_processes_for(documents.size(), jobs);
   // Longest first, each to the process with the least text so far.
   std::vector<std::size_t> order(documents.size());
   std::iota(order.begin(), order.end(), std::size_t{0});

@@ -14,7 +14,6 @@
 
 #include <algorithm>
 #include <optional>
-#include <thread>
 
 namespace simpson::verify {
 namespace {
@@ -47,7 +46,7 @@ class coq_queue {
       missing_ = true;
       return;
     }
-    verdicts_ = check_with_coqc(documents_, std::max(1u, std::thread::hardware_concurrency()));
+    verdicts_ = check_with_coqc(documents_);
   }
   /// "checked" when coqc accepted every file, "rejected: …" with the first rejected file's message,
   /// "not checked" without --certify's coqc or without coqc on the machine.
@@ -273,8 +272,8 @@ section_result run_floating(const floating_settings& s) {
              "(room for the orbit from y₀ = (p, q) = (0, 1) and the bound's growth); at ω = 2π (the paper's configuration, "
              "Section 8: m = 1, h = 1/15, the same y₀) on |p| ≤ 7, |q| ≤ 9/8, against Φ₃ at ω = 2π rounded to double (the ω "
              "the program holds, exactly), the flow at 2π itself (π enclosed). Φ conserves Q = w_p p² + w_q q² (found from Φ, checked "
-             "exactly), so ‖ŷ_n − Φⁿy₀‖_Q ≤ n ε with ε ≥ √(w_p B_p² + w_q B_q²): the lifting lemma, proved in Coq (column Coq) "
-             "with these constants, valid while the iterate stays in the box (the steps column of each stepper says up to "
+             "exactly), so ‖ŷ_n − Φⁿy₀‖_Q ≤ n ε with ε ≥ √(w_p B_p² + w_q B_q²): the lifting lemma, proved in Coq "
+             "with these constants (column Coq: this row's one-step Gappa proof and its lifting lemma, both checked by coqc), valid while the iterate stays in the box (the steps column of each stepper says up to "
              "where). Shown in the Euclidean norm (‖z‖₂ ≤ ‖z‖_Q/√min w). Discretization: ‖Φⁿy₀ − y(t_n)‖₂ of the exact scheme "
              "against the exact flow, enclosed in MPFI (40 digits), its upper end. Total: the two bounds added, against the "
              "float iterate's ‖ŷ_n − y(t_n)‖₂ (the lower end of its enclosure). VeriNum: VerifiedLeapfrog's proved bound for "

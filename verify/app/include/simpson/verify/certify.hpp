@@ -31,13 +31,10 @@ std::vector<certificate_document> certificate_documents(const claim_outcome& o);
 
 /// Records evidence "coq" for every claim: "not exported" with the reason, or "exported" with the
 /// file and its lemmas (and "refutation": the negations' file and lemmas). With `check`, every file
-/// of the run is checked by coqc, all in coqc_processes() processes (coq_batch.hpp): "checked" with
-/// the Coq version, or "failed" with the rejected file and coqc's first lines on it; the wall time
-/// goes to r.coq_seconds (timing.json). Throws std::invalid_argument when `check` is asked and coqc
+/// of the run is checked by coqc, all in coqc_processes() processes at most (coq_batch.hpp): "checked"
+/// with the Coq version, or "failed" with the rejected file and coqc's first lines on it; the wall
+/// time, the files and the processes go to r.coq_seconds, coq_documents, coq_processes (timing.json). Throws std::invalid_argument when `check` is asked and coqc
 /// is not found. Returns the ids whose certificate coqc rejected.
 std::vector<std::string> record_certificates(run_record& r, bool check);
-
-/// How many coqc processes a check runs side by side: the machine's hardware threads.
-unsigned coqc_processes();
 
 }  // namespace simpson::verify

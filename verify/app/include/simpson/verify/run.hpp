@@ -36,6 +36,7 @@ struct run_record {
   /// timing.json, not in the evidence (report.json stays the same from run to run).
   double coq_seconds = 0;
   std::size_t coq_documents = 0;  // the files coqc checked
+  unsigned coq_processes = 0;     // in how many coqc processes
 };
 
 /// Called before and after each claim: (index, count, claim, outcome or nullptr).

@@ -5,6 +5,7 @@
 // modules of one file per process (their Require commands hoisted to the top, so every library loads
 // once), and the processes run side by side.
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -29,12 +30,19 @@ struct coq_verdict {
 /// is not an identifier or two documents share one.
 std::string coq_modules_file(const std::vector<coq_document>& documents);
 
-/// Checks `documents` with coqc, in at most `jobs` processes run side by side (the documents shared
-/// out by size, largest first, so the longest proofs land in different processes). A process whose
-/// file coqc accepts accepts each of its documents. When coqc rejects a process's file, each of its
+/// How many coqc processes a check runs side by side by default: the machine's hardware threads
+/// (2 when the machine does not say).
+unsigned coqc_processes();
+
+/// How many processes check_with_coqc starts for `documents` files and at most `jobs`.
+unsigned coqc_processes_for(std::size_t documents, unsigned jobs = coqc_processes());
+
+/// Checks `documents` with coqc, in coqc_processes_for(documents.size(), jobs) processes run side by
+/// side (the documents shared out by size, largest first, so the longest proofs land in different
+/// processes). A process whose file coqc accepts accepts each of its documents. When coqc rejects a process's file, each of its
 /// documents is checked alone, so the verdict names exactly the documents coqc rejects, each with
 /// coqc's own message. Throws std::invalid_argument when coqc is not found; interruption
 /// (interruption.hpp) is checked before each process starts.
-std::vector<coq_verdict> check_with_coqc(const std::vector<coq_document>& documents, unsigned jobs = 2);
+std::vector<coq_verdict> check_with_coqc(const std::vector<coq_document>& documents, unsigned jobs = coqc_processes());
 
 }  // namespace simpson::verify
