@@ -63,7 +63,13 @@ TEST(JUnit, FailuresAreExactlyWhatMakesTheExitCodeNonZero) {
   s.experiments.table1.reset();
   s.experiments.work_precision.reset();
   s.experiments.long_time.reset();
-  const run_record r = run(s);
+  run_record r = run(s);
+  ASSERT_EQ(run_exit_code(r), 0);
+  // No claim of the paper's ledger expects `fails` today: one made so (table-values, an erratum as
+  // printed) shows how the JUnit view renders an expected failure.
+  for (claim_outcome& o : r.outcomes) {
+    if (o.checked->id == "table-values") o.result.outcome = o.expected = verdict::fails;
+  }
   ASSERT_EQ(run_exit_code(r), 0);
   const boost::property_tree::ptree tree = parsed(report_junit(r));
   const auto& root = tree.get_child("testsuites");

@@ -88,7 +88,9 @@ TEST(PaperReading, AChangedCoefficientInTheTextChangesTheVerdict) {
       {"\\label{equation-milieu-intervalle}", "{{4}\\over{h^2}}", "{{3}\\over{h^2}}", {"internal-equation"}},
       {"\\label{schema-ordre-3}", "22 \\, q_j", "21 \\, q_j", {"scheme-order-3"}},
       {"\\label{matrice-symplectique-ordre-2}", "- m \\, \\omega^2 \\, h", "- m \\, \\omega^2 \\, h^2", {"newmark-matrix", "newmark-det"}},
-      {"\\label{stabilite}", "2 \\, \\sqrt{2}", "2 \\, \\sqrt{3}", {"stability-condition"}},
+      // The band every "under the stability condition" judges is read: 2 sqrt(3) covers the unstable gap
+      // (8, 12), where Delta > 0 and the roots are real.
+      {"\\label{stabilite}", "2 \\, \\sqrt{2}", "2 \\, \\sqrt{3}", {"stability-condition", "discriminant-negative", "roots-product-one"}},
       {"We have also", "4 \\, \\theta - 3", "4 \\, \\theta - 2", {"interpolant-derivative"}},
       {"\\label{fonctions-de-base}", "4 \\, \\theta", "3 \\, \\theta", {"interpolant-nodal"}},
       {"Due to the relations", "-{{4}\\over{h}}", "{{4}\\over{h}}", {"gear-partials"}},
@@ -101,6 +103,22 @@ TEST(PaperReading, AChangedCoefficientInTheTextChangesTheVerdict) {
       EXPECT_TRUE(v == verdict::erratum || v == verdict::fails) << a.where << ": " << id << " still " << to_string(v);
     }
   }
+}
+
+// A narrower printed band, 0 < omega h < 2: no longer the stability condition, but the sentences that
+// judge the band (all factors negative, Delta < 0, complex roots, stable) still hold on it, and their
+// evidence names the band read.
+TEST(PaperReading, TheStabilityBandIsReadFromTheDisplay) {
+  const paper_reading paper = read_paper(altered("\\label{stabilite}", "2 \\, \\sqrt{2}", "2"));
+  EXPECT_NE(verdict_of("stability-condition", paper), verdict::holds);
+  EXPECT_EQ(verdict_of("discriminant-negative", paper), verdict::holds);
+  EXPECT_EQ(verdict_of("roots-product-one", paper), verdict::holds);
+  const run_context ctx{{precision::parse("double")}, 20230830, 2, &paper};
+  const claim_result r = check_claim(find_claim("discriminant-negative"), ctx);
+  EXPECT_EQ(r.evidence["exact"]["band"], "0 < omega^2 h^2 < 4 ((stabilite) as printed: 0 < omega h < 2)") << r.evidence["exact"].dump();
+  // Printed as 0 < omega h < pi: no rational band, so the claims that need it say the text changed.
+  const paper_reading irrational = read_paper(altered("\\label{stabilite}", "2 \\, \\sqrt{2}", "\\pi"));
+  EXPECT_EQ(verdict_of("discriminant-negative", irrational), verdict::text_changed);
 }
 
 TEST(PaperReading, AnErratumOfAFormulaIsCorrectedByTheDerivedOne) {

@@ -156,6 +156,12 @@ INSTANTIATE_TEST_SUITE_P(
         sentence_change{"table-orders", "$ 1.27  \\,\\, 10^{-1} $  & 2", "$ 1.27  \\,\\, 10^{-1} $  & 3", verdict::fails},
         sentence_change{"table-conservation", "$ 1.49 \\,\\, 10^{-13} $   & exact", "$ 1.49 \\,\\, 10^{-13} $   & 4", verdict::fails},
         sentence_change{"table-values", "$ 4.11  \\,\\, 10^{-4} $", "$ 4.11  \\,\\, 10^{-x} $", verdict::text_changed},
+        // An "exact" row printed far above round-off (0.17, 0.50, 1.49): judged by its printed values.
+        sentence_change{"table-conservation", "$ 1.70 \\,\\, 10^{-13} $ &   $ 4.97 \\,\\, 10^{-14} $  & $ 1.49 \\,\\, 10^{-13} $",
+                        "$ 1.70 \\,\\, 10^{-1} $ &   $ 5.0 \\,\\, 10^{-1} $  & $ 1.49 \\,\\, 10^{0} $", verdict::fails},
+        // The Simpson state row printed with ratios of 4 (order 2) under its order cell 4.
+        sentence_change{"table-orders", "$ 2.55 \\,\\, 10^{-5} $   & $ 1.60 \\,\\, 10^{-6} $",
+                        "$ 1.03 \\,\\, 10^{-4} $   & $ 2.57 \\,\\, 10^{-5} $", verdict::fails},
         sentence_change{"nonlinear-internal-node", "is not possible in that case", "is possible in that case", verdict::text_changed},
         sentence_change{"abstract-stable", "It is a stable,", "It is a conditionally stable,", verdict::holds},
         sentence_change{"abstract-explicit", "explicit, and  symplectic", "explicit for linear problems, and symplectic", verdict::holds},

@@ -83,8 +83,10 @@ std::vector<discrete_convention> table1_discrete_conventions() {
 }
 
 std::vector<continuous_parameter> table1_continuous_parameters() {
-  return {{"m", 1e-2, 1e2, 1, true}, {"amplitude", 1e-2, 1e2, 1, true},
-          {"phase", 0, boost::math::constants::two_pi<double>(), 0, false}};
+  // The errors are homogeneous in m and the amplitude (p and H scale with m, every error with the
+  // amplitude): both are scale parameters, fitted in closed form; the phase is scanned.
+  return {{"m", 1e-2, 1e2, 1, true, true}, {"amplitude", 1e-2, 1e2, 1, true, true},
+          {"phase", 0, boost::math::constants::two_pi<double>(), 0, false, false}};
 }
 
 std::vector<computed_entry> table1_under(const convention_choice& choice, const parameter_values& values) {

@@ -161,15 +161,38 @@ bool has_stable_band(const stability_report& r, const rational& lo, const ration
   return false;
 }
 
-claim_result check_stability_condition(const run_context&) {
-  const stability_report report = simpson_stability();
-  json evidence;
-  evidence["exact"] = report.evidence;
-  const bool first_band = has_stable_band(report, rational(0), rational(8));
+/// Whether (lo, hi) of x = ω²h² lies inside one stable band of the exact analysis.
+bool within_stable_band(const stability_report& r, const rational& lo, const rational& hi) {
+  for (const stability_band& b : r.bands) {
+    if (b.stable && b.x_from <= lo && (!b.to || hi <= b.to->low)) return true;
+  }
+  return false;
+}
+
+/// The stable bands of the exact analysis, "(0, 8) and (12, 24)", in x = ω²h².
+std::string stable_bands_text(const stability_report& report) {
   std::string bands;
   for (const auto& [lo, hi] : report.stable_intervals) {
     bands += (bands.empty() ? "" : " and ") + std::string("(") + lo + ", " + (hi.empty() ? "infinity" : hi) + ")";
   }
+  return bands;
+}
+
+rational band_end_of(const printed_stability_band& band) { return rational(band.numerator) / rational(band.denominator); }
+
+claim_result check_stability_condition(const run_context&) {
+  // Our kernel proves the derived statement (GiNaC judges the printed bound, printed_checks_section5):
+  // the condition emerges from q_m, and the first stable band of the scheme ends exactly where q_m's
+  // denominator (core, qm-oscillateur-harmonique) vanishes.
+  const stability_report report = simpson_stability();
+  const auto par = unit_oscillator_in_theta();
+  const std::vector<positive_root> qm_poles =
+      positive_roots(even_in_theta_to_x(harmonic_internal_node(par, symbolic(1), symbolic(1)).denominator()));
+  json evidence;
+  evidence["exact"] = report.evidence;
+  evidence["exact"]["q_m_undefined_at_omega2_h2"] = qm_poles.empty() ? "nowhere" : root_text(qm_poles.front());
+  const bool first_band = !qm_poles.empty() && qm_poles.front().exact() && has_stable_band(report, rational(0), qm_poles.front().low);
+  const std::string bands = stable_bands_text(report);
   return confirmed_if(first_band, evidence,
                       "Sufficient, not necessary: the scheme (schema-ordre-3) is stable exactly for omega^2 h^2 in " + bands +
                           ", i.e. 0 < omega h < 2 sqrt(2) and also 2 sqrt(3) < omega h < 2 sqrt(6). At omega h = 2 sqrt(2), "
@@ -440,7 +463,7 @@ claim_result check_root_modulus(const run_context& ctx) {
                       {"result", agrees ? "the stated criterion calls stable exactly the regions where the root condition holds"
                                         : "the stated criterion and the root condition disagree on a region above"}};
   proof corrected;
-  corrected.proved = report.product_of_roots_is_one && has_stable_band(report, rational(0), rational(8));
+  corrected.proved = report.product_of_roots_is_one && !report.stable_intervals.empty();
   corrected.evidence = report.evidence;
   if (agrees) {
     json evidence;
@@ -449,7 +472,7 @@ claim_result check_root_modulus(const run_context& ctx) {
   }
   return erratum(printed, corrected,
                  "The scheme is stable when the roots have modulus <= 1 and the roots of modulus 1 are simple (root "
-                 "condition); here they are simple, conjugate and of modulus 1 for 0 < omega^2 h^2 < 8 and 12 < omega^2 h^2 < 24.",
+                 "condition); here they are simple, conjugate and of modulus 1 for omega^2 h^2 in " + stable_bands_text(report) + ".",
                  "The following sentences use modulus 1 correctly; only the stated criterion is wrong.");
 }
 
@@ -484,7 +507,9 @@ claim_result check_discriminant_negative(const run_context& ctx) {
   const int stated_sign = said.choice("sign", {{"negative", "-1"}, {"positive", "1"}}) == "-1" ? -1 : 1;
   const stated_bound stated_delta = said.bound("relation");
   if (stated_delta.value != 0 || !stated_delta.rest.empty()) said.unparsed("relation", "a relation to 0");
-  const rational band_end(8);
+  // The band the sentence's "under the stability condition (stabilite)" refers to, as printed.
+  const printed_stability_band band = read_stability_band(paper_of(ctx));
+  const rational band_end = band_end_of(band);
   // Our kernel: the core's factors (discriminant_factors), as polynomials in x = theta^2.
   const auto par = unit_oscillator_in_theta();
   const auto factors = discriminant_factors(par.omega2_h2());
@@ -501,7 +526,7 @@ claim_result check_discriminant_negative(const run_context& ctx) {
   json printed = json::array();
   std::vector<int> binomial_signs;
   int delta_sign = 1;
-  for (const printed_factor_sign& f : printed_discriminant_factor_signs(paper_of(ctx), 8)) {
+  for (const printed_factor_sign& f : printed_discriminant_factor_signs(paper_of(ctx), band)) {
     printed.push_back({{"factor", f.factor}, {"prefactor", f.prefactor}, {"sign", sign_word(f.sign)}, {"proof", f.proof}});
     if (!f.prefactor) binomial_signs.push_back(f.sign);
     delta_sign *= f.sign;
@@ -509,7 +534,7 @@ claim_result check_discriminant_negative(const run_context& ctx) {
   // The two kernels on the same statement: the core's factors, ours by Sturm, GiNaC by the substitution.
   json ginac_core = json::array();
   bool kernels_agree = true;
-  const std::vector<printed_factor_sign> core_in_ginac = core_discriminant_factor_signs(8);
+  const std::vector<printed_factor_sign> core_in_ginac = core_discriminant_factor_signs(band);
   for (std::size_t k = 0; k < core_in_ginac.size(); ++k) {
     kernels_agree = kernels_agree && k < own_signs.size() && own_signs[k] == core_in_ginac[k].sign;
     ginac_core.push_back({{"factor", core_in_ginac[k].factor}, {"sign", sign_word(core_in_ginac[k].sign)}, {"proof", core_in_ginac[k].proof}});
@@ -520,9 +545,10 @@ claim_result check_discriminant_negative(const run_context& ctx) {
                           delta_sign != 0 && stated_delta.admits(delta_sign);
   json evidence;
   evidence["exact"] = {{"method", "exact"},
-                       {"band", "0 < omega^2 h^2 < 8 (stabilite)"},
+                       {"band", band.text()},
                        {"stated", {{"factors", said.words("sign")}, {"delta", said.words("relation")}}},
-                       {"own_kernel", {{"factors", ours}, {"proof", "Sturm count of the roots in (0, 8) and the sign at 4"}}},
+                       {"own_kernel", {{"factors", ours}, {"proof", "Sturm count of the roots in (0, " + band_end.str() + ") and the sign at " +
+                                                                     rational(band_end / 2).str()}}},
                        {"ginac", {{"core_factors", ginac_core}, {"printed_factors", printed}, {"printed_delta_sign", sign_word(delta_sign)}}}};
   claim_result r;
   r.evidence = evidence;
@@ -531,7 +557,7 @@ claim_result check_discriminant_negative(const run_context& ctx) {
     r.note = "Our kernel's (Sturm) and GiNaC's (substitution) signs of the core's factors differ.";
     return r;
   }
-  const std::string proved = "on 0 < omega^2 h^2 < 8 the binomial factors (omega^2 h^2 - 24), (omega^2 h^2 - 12), "
+  const std::string proved = "on 0 < omega^2 h^2 < " + band_end.str() + " the binomial factors (omega^2 h^2 - 24), (omega^2 h^2 - 12), "
                              "(omega^2 h^2 - 8) are each " + sign_word(binomial_signs.empty() ? 0 : binomial_signs.front()) +
                              ", the prefactor omega^2 h^2/576 is positive, so Delta is " + sign_word(delta_sign);
   if (words_hold) {
@@ -555,15 +581,23 @@ claim_result check_roots_product(const run_context& ctx) {
   if (!product.rest.empty()) said.unparsed("product", "a relation and a number");
   const std::string conclusion = said.choice("conclusion", {{"stable", "stable"}, {"unstable", "unstable"}, {"not stable", "unstable"}});
   const stability_report report = simpson_stability();
-  const bool band = has_stable_band(report, rational(0), rational(8));
+  // The sentence continues the one under the stability condition (stabilite): its band, as printed,
+  // must lie inside a band where Delta < 0 (two complex conjugate roots of modulus 1, stable).
+  const printed_stability_band printed_band = read_stability_band(paper_of(ctx));
+  const bool band = within_stable_band(report, rational(0), band_end_of(printed_band));
   json evidence;
   evidence["exact"] = report.evidence;
+  evidence["exact"]["printed_band"] = printed_band.text();
   evidence["stated"] = {{"roots", roots}, {"product", said.words("product")}, {"conclusion", conclusion}};
   const bool words_hold = roots == "complex conjugate" && product.relation == "=" && product.value == 1 && conclusion == "stable";
-  if (!(report.product_of_roots_is_one && band)) return confirmed_if(false, evidence);
+  if (!report.product_of_roots_is_one) return confirmed_if(false, evidence);
+  if (!band) {
+    return words_erratum(evidence, "Under " + printed_band.text() + " the roots are not complex conjugate throughout: Delta < 0, "
+                                   "|r|^2 = c/a = 1 and stability hold exactly for omega^2 h^2 in " + stable_bands_text(report));
+  }
   if (words_hold) return confirmed_if(true, evidence);
-  return words_erratum(evidence,
-                       "On 0 < omega^2 h^2 < 8, Delta < 0: two complex conjugate roots, product c/a = 1 = |r|^2, and the scheme is stable");
+  return words_erratum(evidence, "On " + printed_band.text() + ", Delta < 0: two complex conjugate roots, product c/a = 1 = |r|^2, and "
+                                 "the scheme is stable");
 }
 
 /// "Maupertuis's stationary-action principle delta Sigma_d = 0": Sigma_d sums L_h, Simpson's rule on

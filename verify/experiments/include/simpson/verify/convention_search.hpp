@@ -4,8 +4,8 @@
 // enumerate and continuous parameters to fit. A printed value with d significant digits says that
 // the true value lies within half a unit of its last digit: an entry is reproduced when the computed
 // value lies in that interval; an entry printed at round-off is reproduced when the computed value
-// is at round-off too (below the bound the experiment gives). Table 1 is the first user
-// (table1_conventions.hpp); nothing here knows about it.
+// is at round-off too (below the bound the experiment gives), and only when its printed value is at
+// round-off as well. Table 1 is the first user (table1_conventions.hpp); nothing here knows about it.
 
 #include <functional>
 #include <map>
@@ -37,11 +37,14 @@ struct discrete_convention {
 };
 
 /// A parameter the search fits within [low, high] (log-uniform when log_scale), `stated` the value
-/// the paper states or implies.
+/// the paper states or implies. A `scale` parameter is one every computed entry is homogeneous in (an
+/// entry proportional to a power of it, as errors are in an amplitude): the search measures each
+/// entry's power and fits it in closed form; the others are scanned on a dense grid.
 struct continuous_parameter {
   std::string name;
   double low = 0, high = 0, stated = 0;
   bool log_scale = true;
+  bool scale = false;
 };
 
 using convention_choice = std::map<std::string, std::string>;
@@ -83,11 +86,20 @@ double half_unit_of_last_digit(double value, int digits);
 /// Scores a computed table against the printed one.
 std::vector<entry_score> score_entries(const std::vector<printed_entry>& printed, const std::vector<computed_entry>& computed);
 
-/// Enumerates every combination of the discrete conventions; for each, fits the continuous
-/// parameters (coordinate search in log space minimising the sum of squared log ratios, then judged
-/// by the half-unit intervals). Candidates sorted by entries reproduced, then by worst residual.
+/// Enumerates every combination of the discrete conventions; for each, finds the global fit of the
+/// continuous parameters:
+///   1. each entry's power in each scale parameter is measured (two runs per parameter, checked to be
+///      an integer; an entry at round-off or not homogeneous is left out of the fit, not the verdict);
+///   2. the other parameters are scanned on a dense grid (scan_points in all), and at each point the
+///      scale parameters that minimise the sum of squared log ratios follow in closed form (least
+///      squares, within their bounds);
+///   3. the best local minima of that scan are refined, then polished by NLopt's subplex on the
+///      largest residual in half-units, the quantity the verdict judges.
+/// Every candidate is judged by a full run of the experiment, never by the fit. Candidates sorted by
+/// entries reproduced, then by worst residual.
 convention_search_result search_conventions(const std::vector<printed_entry>& printed, const std::vector<discrete_convention>& discrete,
-                                            const std::vector<continuous_parameter>& continuous, const parametrised_experiment& experiment);
+                                            const std::vector<continuous_parameter>& continuous, const parametrised_experiment& experiment,
+                                            std::size_t scan_points = 512);
 
 /// "momentum: p/(m omega), m = 2.05": a candidate in words.
 std::string describe(const convention_candidate& c);

@@ -56,6 +56,12 @@ inline const std::array<published_row, 8>& published_rows() {
 /// The meshes of Table 1's columns.
 inline constexpr std::array<long long, 3> published_meshes{10, 20, 40};
 
+/// H_0 of the stated experiment (m = 1, omega = 2 pi, y_0 = (m omega, 0)): (m omega)^2 / (2 m) = 2 pi^2,
+/// the size against which a printed "exact" entry is judged to be at round-off.
+inline double stated_H0() {
+  return 2 * boost::math::constants::pi<double>() * boost::math::constants::pi<double>();
+}
+
 /// An error of the N-step experiment is at the round-off floor when it is below 64 eps N H_0: each of
 /// the N steps rounds H by a few eps relative, so 64 N eps H_0 bounds the rounding with room.
 inline bool at_round_off_floor(double error, long long N, double H0) {
