@@ -303,6 +303,10 @@ check "quiet" 0 --claims phi3-det --precisions double --quiet --out "$work/quiet
 # An internal error (a check that throws) is exit 3, named, with the report still written.
 SIMPSON_VERIFY_INJECT_FAULT=phi3-det check "internal error" 3 --claims phi3-det,hd-invariance --precisions double --out "$work/fault"
 grep -q 'internal error (a bug in the harness) in phi3-det: injected fault' "$work/err" || fail "internal error: not named: $(cat "$work/err")"
+# ... and never counted, or announced, as a verdict on the paper.
+grep -q 'phi3-det: verdict fails' "$work/err" && fail "internal error: announced as a failed claim: $(cat "$work/err")"
+grep -q '^2 claims: 1 held, 0 errata, 0 failed, 1 without a verdict (a harness fault' "$work/out" ||
+  fail "internal error: the summary counts it as a verdict: $(tail -3 "$work/out")"
 [ -f "$work/fault/report.json" ] || fail "internal error: no report"
 # compare: the committed reference against itself, against an altered copy, and bad input.
 reference="$(dirname "$0")/../../reports/reference/paper"

@@ -3,6 +3,7 @@
 
 #include <simpson/verify/enclosure_decision.hpp>
 #include <simpson/verify/ledger.hpp>
+#include <simpson/verify/paper_provenance.hpp>
 #include <simpson/verify/paper_reading.hpp>
 #include <simpson/verify/printed_checks.hpp>
 #include <simpson/verify/run.hpp>
@@ -220,6 +221,46 @@ TEST(TexMath, ReadsTheSubsetThePaperUses) {
   ASSERT_EQ(sides.size(), 2u);
   EXPECT_TRUE((parse_tex_math(sides[1], s) - s["p"] * s["p"] / 2).is_zero());
   EXPECT_THROW(parse_tex_math("h + \\foo", s), tex_parse_error);
+}
+
+
+// Provenance: the text read names its edition and hash; its citations are unresolved without a
+// bibliography, and a \bibitem resolves its key.
+TEST(Provenance, TheEditionTheHashAndTheUnresolvedCitationsAreRead) {
+  const paper_source paper = embedded_paper();
+  const paper_provenance p = read_provenance(paper);
+  EXPECT_EQ(p.title, "A variational symplectic scheme based on Simpson's quadrature");
+  EXPECT_EQ(p.edition, "Edition 22 June 2024.");
+  EXPECT_GT(p.edition_line, 0);
+  EXPECT_EQ(p.sha256, paper.sha256);
+  EXPECT_FALSE(p.bibliography);
+  EXPECT_EQ(p.unresolved.size(), 13u);
+  EXPECT_NE(std::find(p.unresolved.begin(), p.unresolved.end(), "KMOW00"), p.unresolved.end());
+  paper_source with_bibliography = paper;
+  with_bibliography.text += "\\begin{thebibliography}{9}\n\\bibitem{KMOW00} C. Kane et al.\n\\end{thebibliography}\n";
+  const paper_provenance resolved = read_provenance(with_bibliography);
+  EXPECT_TRUE(resolved.bibliography);
+  EXPECT_EQ(resolved.unresolved.size(), 12u);
+  EXPECT_EQ(std::find(resolved.unresolved.begin(), resolved.unresolved.end(), "KMOW00"), resolved.unresolved.end());
+}
+
+// The earlier Phi_3 the source keeps commented out is read and checked like the live one: its
+// (2,1) entry h/(m(1 - omega^2 h^2/8)) makes det Phi_3 != 1, so phi3-det fails on it. Without the
+// comment there is no earlier text.
+TEST(Provenance, TheEarlierPhi3InTheCommentsIsCheckedAndIsNotSymplectic) {
+  const paper_source paper = embedded_paper();
+  const std::vector<earlier_display> earlier = commented_displays(paper);
+  ASSERT_EQ(earlier.size(), 1u);
+  EXPECT_EQ(earlier[0].label, "Phi3");
+  EXPECT_NE(earlier[0].tex.find("{{1}\\over{1 - {{\\omega^2   h^2}\\over8}}} \\, {{h}\\over{m}}"), std::string::npos) << earlier[0].tex;
+  const paper_reading before = read_paper(with_earlier_display(paper, earlier[0]));
+  EXPECT_EQ(verdict_of("phi3-det", before), verdict::fails);
+  EXPECT_EQ(verdict_of("phi3-det", read_paper(paper)), verdict::holds);
+  paper_source uncommented = paper;
+  const std::size_t at = uncommented.raw.find("%\\moneq \\label{Phi3}");
+  ASSERT_NE(at, std::string::npos);
+  uncommented.raw.replace(at, 1, "%%");  // a remark ("%%"), no longer an earlier display
+  EXPECT_TRUE(commented_displays(uncommented).empty());
 }
 
 }  // namespace

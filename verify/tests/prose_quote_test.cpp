@@ -13,7 +13,7 @@
 namespace simpson::verify {
 namespace {
 
-paper_source text_source(const std::string& text) { return {"test", text, ""}; }
+paper_source text_source(const std::string& text) { return {"test", text, "", text}; }
 
 TEST(ProseSpan, MatchesAcrossLineBreaksAndTakesTheHolesWords) {
   const paper_source paper = text_source("First.\nThe quadrature formula (\\ref{simpson})  is accurate up to\n polynomials of degree three. Then");

@@ -142,7 +142,7 @@ int main(int argc, char** argv) {
   std::string scene_list;
   for (const auto& [name, text] : embedded_scenes()) scene_list += (scene_list.empty() ? "" : ", ") + name;
   app.add_option("--scene", scene_name, "embedded scene name (" + scene_list + ") or a scene JSON file")->capture_default_str();
-  app.add_option("--paper", paper_file, "the paper's LaTeX source to check (default: the embedded GSI 2023 text)");
+  app.add_option("--paper", paper_file, "the paper's LaTeX source to check (default: the embedded source; the report names the edition it prints and its SHA-256)");
   app.add_option("--out", out_dir,
                  "report directory (default: reports/out/<scene>; with --claims or --sections, a directory named after the "
                  "selection, e.g. reports/out/paper-claims-phi3-det, so that a subset never replaces the full report)");
@@ -332,11 +332,16 @@ int main(int argc, char** argv) {
     }
     // The verdicts first, then the report: the report is the last thing written, so that a signal
     // at any moment before its directory is swapped into place leaves the previous one as it was.
+    // A harness fault first, in its own words: it is no verdict on the paper.
+    for (const std::string& error : record.internal_errors) {
+      fmt::print(stderr, "simpson-verify: internal error (a bug in the harness) in {}\n", error);
+    }
     for (const claim_outcome& o : record.outcomes) {
-      const bool expected_verdict = as_expected(o.result.outcome, o.expected);
+      const bool faulted = o.result.evidence.contains("error");
+      const bool expected_verdict = faulted || as_expected(o.result.outcome, o.expected);
       if (!quiet) {
-        fmt::print("  {:<8} {:<34}{}\n", to_string(o.result.outcome), o.checked->id,
-                   expected_verdict ? "" : "  <- expected " + to_string(o.expected));
+        fmt::print("  {:<8} {:<34}{}\n", faulted ? "fault" : to_string(o.result.outcome), o.checked->id,
+                   faulted ? "  <- the check threw (a bug in the harness)" : expected_verdict ? "" : "  <- expected " + to_string(o.expected));
         if (o.result.outcome == verdict::erratum && !o.result.correction.empty()) {
           fmt::print("           corrected: {}\n", o.result.correction);
         }
@@ -345,9 +350,6 @@ int main(int argc, char** argv) {
         fmt::print(stderr, "simpson-verify: {}: verdict {}, expected {}\n", o.checked->id, to_string(o.result.outcome),
                    to_string(o.expected));
       }
-    }
-    for (const std::string& error : record.internal_errors) {
-      fmt::print(stderr, "simpson-verify: internal error (a bug in the harness) in {}\n", error);
     }
     for (const std::string& id : rejected_certificates(record)) fmt::print(stderr, "simpson-verify: {}: coqc rejected its certificate\n", id);
     const plot_outcome plots = write_report_files(out, record);

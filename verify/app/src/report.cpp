@@ -52,6 +52,7 @@ std::string enclosure_markdown(const json& evidence) {
 }
 
 struct verdict_counts {
+  std::size_t faults = 0;  // checks that threw: a bug in the harness, no verdict (exit 3)
   std::size_t held = 0, errata = 0, failed = 0, disagreed = 0, text_changed = 0, undecided = 0, unproved = 0, skipped = 0, machine_read = 0,
               quoted = 0, coq_exported = 0,
               coq_checked = 0;
@@ -61,6 +62,10 @@ struct verdict_counts {
 verdict_counts count_verdicts(const run_record& r) {
   verdict_counts c;
   for (const claim_outcome& o : r.outcomes) {
+    if (o.result.evidence.contains("error")) {  // a harness fault is never counted as a verdict
+      ++c.faults;
+      continue;
+    }
     c.held += o.result.outcome == verdict::holds;
     c.errata += o.result.outcome == verdict::erratum;
     c.failed += o.result.outcome == verdict::fails;
@@ -82,8 +87,10 @@ verdict_counts count_verdicts(const run_record& r) {
 
 std::string summary_line(const run_record& r) {
   const verdict_counts c = count_verdicts(r);
-  return fmt::format("{} {}: {} held, {} errata, {} failed{}{}{}{}{}; {}", r.outcomes.size(), r.outcomes.size() == 1 ? "claim" : "claims",
-                     c.held, c.errata, c.failed, c.disagreed ? fmt::format(", {} with the kernels in disagreement", c.disagreed) : "",
+  return fmt::format("{} {}: {} held, {} errata, {} failed{}{}{}{}{}{}; {}", r.outcomes.size(), r.outcomes.size() == 1 ? "claim" : "claims",
+                     c.held, c.errata, c.failed,
+                     c.faults ? fmt::format(", {} without a verdict (a harness fault: the check threw)", c.faults) : "",
+                     c.disagreed ? fmt::format(", {} with the kernels in disagreement", c.disagreed) : "",
                      c.text_changed ? fmt::format(", {} whose quoted words changed (text-changed)", c.text_changed) : "",
                      c.undecided ? fmt::format(", {} undecided within the enclosure budget", c.undecided) : "",
                      c.unproved ? fmt::format(", {} unproved (Gappa could not bound the round-off)", c.unproved) : "",
@@ -131,7 +138,7 @@ json summary_json(const run_record& r) {
   const verdict_counts c = count_verdicts(r);
   return {{"line", summary_line(r)},     {"expectation", expectation_line(r)}, {"claims", r.outcomes.size()},
           {"held", c.held},              {"errata", c.errata},
-          {"failed", c.failed},          {"kernels_disagree", c.disagreed},
+          {"failed", c.failed},          {"harness_faults", c.faults}, {"kernels_disagree", c.disagreed},
           {"text_changed", c.text_changed}, {"undecided", c.undecided}, {"unproved", c.unproved}, {"skipped", c.skipped},
           {"machine_read", c.machine_read}, {"quoted", c.quoted}, {"typed", r.outcomes.size() - c.machine_read - c.quoted},
           {"coq_exported", c.coq_exported}, {"coq_checked", c.coq_checked},
@@ -227,6 +234,7 @@ json report_json(const run_record& r, const plot_outcome& plots) {
               {"files", report_file_names(r, plots)},
               {"timing_files", timing_file_names(r, plots)},
               {"paper_configuration", r.paper_configuration},
+              {"provenance", r.provenance},
               {"environment", r.environment}};
 }
 
@@ -370,6 +378,47 @@ std::string finding_markdown(const claim_outcome& o, const std::string& verdict_
   return md + fmt::format("- Evidence: [{}](#{})\n\n", c.id, heading_slug(c.id));
 }
 
+/// The text checked, as the source prints it; its citations; its earlier text, checked.
+std::string provenance_markdown(const run_record& r) {
+  const json& p = r.provenance;
+  if (!p.is_object()) return {};
+  std::string md = fmt::format("Text checked: *{}* ({}), {}, SHA-256 `{}`.", markdown_escaped(p.value("title", "")),
+                               markdown_escaped(p.value("source", "")),
+                               p.value("edition_line", 0) > 0
+                                   ? fmt::format("whose source prints “{}” (line {})", markdown_escaped(p.value("edition", "")), p.value("edition_line", 0))
+                                   : std::string("whose source prints no edition line"),
+                               p.value("sha256", ""));
+  const json& citations = p["citations"];
+  const std::size_t uses = citations["uses"].size(), unresolved = citations["unresolved"].size();
+  if (unresolved > 0) {
+    std::vector<std::string> claims;
+    for (const json& c : citations["claims_citing_unresolved"]) claims.push_back("`" + c["claim"].get<std::string>() + "`");
+    md += fmt::format(" Its {} citations ({} distinct keys) are unresolved: the source carries {}, so no attribution "
+                      "(to {}) can be checked{}.", uses, unresolved, citations["bibliography"].get<bool>() ? "no entry for them" : "no bibliography",
+                      join(citations["unresolved"].get<std::vector<std::string>>(), ", "),
+                      claims.empty() ? std::string() : "; the claims whose quoted sentence cites: " + join(claims, ", "));
+  }
+  md += "\n\n";
+  if (p["earlier_text"].is_array() && !p["earlier_text"].empty()) {
+    md += "Earlier text kept in the source's comments, checked like the live text:\n\n";
+    for (const json& e : p["earlier_text"]) {
+      md += fmt::format("- ({}) commented out at line {}: ", markdown_escaped(e["label"].get<std::string>()), e["line"].get<int>());
+      if (!e["reads"].get<bool>()) {
+        md += "does not parse: " + markdown_escaped(e.value("error", "")) + "\n";
+        continue;
+      }
+      std::vector<std::string> rows;
+      for (const json& c : e["claims"]) {
+        rows.push_back(fmt::format(c["differs"].get<bool>() ? "`{}` {} on the live text, **{}** on the earlier one" : "`{}` {} on both",
+                                   c["claim"].get<std::string>(), c["live"].get<std::string>(), c["earlier"].get<std::string>()));
+      }
+      md += (rows.empty() ? std::string("no claim reads it") : join(rows, "; ")) + "\n";
+    }
+    md += "\n";
+  }
+  return md;
+}
+
 }  // namespace
 
 std::string report_markdown(const run_record& r) { return report_markdown(r, all_plots_drawn(r)); }
@@ -396,8 +445,8 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
   md += fmt::format("Seed {} · {} random samples per numeric recheck and precision · precisions: {} · interval enclosures from "
                     "40 digits, doubled up to {}\n\n", r.run_scene.seed,
                     r.run_scene.samples, join(precision_names(r.run_scene.precisions), ", "), r.run_scene.enclosure_budget_digits);
-  md += "Paper: F. Dubois, J. A. Rojas-Quintero, *A variational symplectic scheme based on Simpson's quadrature*, GSI 2023. "
-        "Verdicts: **holds** (true as printed), **erratum** (false as printed; a corrected statement is proved), **fails** "
+  md += provenance_markdown(r);
+  md += "Verdicts: **holds** (true as printed), **erratum** (false as printed; a corrected statement is proved), **fails** "
         "(false, no correction found), **kernels-disagree** (our kernel and GiNaC reached different conclusions on the derived statement: a bug, never expected), "
         "**text-changed** (the sentence a prose claim quotes is gone from the paper, or its words no longer parse: never expected), "
         "**undecided** (no interval enclosure proved the statement or its negation within the run's digits: never expected), "

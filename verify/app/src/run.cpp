@@ -4,6 +4,7 @@
 #include <simpson/verify/paper_configuration.hpp>
 #include <simpson/verify/printed_checks.hpp>
 #include <simpson/verify/printed_table1.hpp>
+#include <simpson/verify/provenance.hpp>
 #include <simpson/verify/quoted_words.hpp>
 #include <simpson/verify/run.hpp>
 
@@ -64,6 +65,13 @@ run_record run(const scene& s, const paper_reading& paper, const progress_callba
       r.ginac_derivation_seconds = ginac_derivation_seconds();
       break;
     }
+  }
+  // What text was checked; its earlier text judged again only when claims ran (the same claims).
+  {
+    std::vector<std::pair<std::string, json>> quoted;
+    for (const claim_outcome& o : r.outcomes) quoted.emplace_back(o.checked->id, o.result.quoted);
+    run_context provenance_ctx = ctx;
+    r.provenance = provenance_json(paper, provenance_ctx, quoted, !s.claims.empty());
   }
   record_certificates(r, false);  // each claim's evidence "coq": exported or why not (checked by --certify)
   const experiment_settings& e = s.experiments;

@@ -242,6 +242,19 @@ void record_certificate(claim_result& result, const detail::coq_export& certific
 
 bool reads_printed_formula(const std::string& claim_id) { return formula_claims().count(claim_id) > 0; }
 
+std::vector<std::string> claims_reading_formula(const std::string& label) {
+  std::vector<std::string> ids;
+  for (const auto& [id, entry] : formula_claims()) {
+    for (const std::string& name : entry.formulas) {
+      if (name == label || name.rfind(label + "#", 0) == 0) {
+        ids.push_back(id);
+        break;
+      }
+    }
+  }
+  return ids;
+}
+
 double ginac_derivation_seconds() { return detail::derivation().seconds; }
 
 std::size_t printed_formula_claim_count() { return formula_claims().size(); }

@@ -104,7 +104,7 @@ std::string without_comments(const std::string& tex) {
 }
 
 paper_source embedded_paper() {
-  return {"embedded", without_comments(embedded_paper_text()), sha256_hex(embedded_paper_text())};
+  return {"embedded", without_comments(embedded_paper_text()), sha256_hex(embedded_paper_text()), embedded_paper_text()};
 }
 
 paper_source load_paper(const std::string& path) {
@@ -120,7 +120,7 @@ paper_source load_paper(const std::string& path) {
   if (text.str().find_first_not_of(" \t\r\n") == std::string::npos) {
     throw std::invalid_argument("paper '" + path + "': the file is empty");
   }
-  paper_source paper{path, without_comments(text.str()), sha256_hex(text.str())};
+  paper_source paper{path, without_comments(text.str()), sha256_hex(text.str()), text.str()};
   if (paper.text.find("symplectic scheme") == std::string::npos || paper.text.find("\\label{Phi3}") == std::string::npos) {
     throw std::invalid_argument("paper '" + path +
                                 "': not the symplectic Simpson paper (no title 'symplectic scheme' or no \\label{Phi3})");

@@ -28,6 +28,7 @@ struct run_record {
   /// Claims whose check threw ("id: message"): a bug in the harness, exit code 3.
   std::vector<std::string> internal_errors;  // the GiNaC derivation the formula claims share, once per process (0 when none ran)
   json paper_configuration;
+  json provenance;  // the text checked, its citations, and its earlier text (provenance.hpp)
   json environment;
   std::vector<section_result> sections;  // the experiment sections the scene asked for, in order
   std::vector<double> section_seconds;

@@ -10,11 +10,15 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace simpson::verify {
 
 /// True when `claim_id` reads its formula from the paper.
 bool reads_printed_formula(const std::string& claim_id);
+
+/// The claims that read the printed formula `label` (a \label of the paper, or one of its equations).
+std::vector<std::string> claims_reading_formula(const std::string& label);
 
 /// Seconds the GiNaC derivation from first principles took (performed once per process, on first use).
 double ginac_derivation_seconds();

@@ -15,6 +15,7 @@ struct paper_source {
   std::string origin;  // "embedded" or the file's path
   std::string text;    // with comments blanked out (line numbers kept)
   std::string sha256;  // of the source's bytes as read (report.json's environment)
+  std::string raw;     // the source as read, comments included (the earlier text kept in them)
 };
 
 /// One display of the paper: where it was found and its TeX, from after its \label to its end.

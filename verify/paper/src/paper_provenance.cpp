@@ -1,0 +1,126 @@
+// What text a run checked: see paper_provenance.hpp.
+
+#include <simpson/verify/paper_provenance.hpp>
+
+#include <algorithm>
+#include <regex>
+#include <set>
+#include <sstream>
+
+namespace simpson::verify {
+namespace {
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+/// A line that is a comment, and what follows its first "%" (one "%" only: "%%%" lines are remarks).
+bool single_comment(const std::string& line, std::string& rest) {
+  const std::size_t at = line.find_first_not_of(" \t");
+  if (at == std::string::npos || line[at] != '%' || (at + 1 < line.size() && line[at + 1] == '%')) return false;
+  rest = line.substr(at + 1);
+  return true;
+}
+
+const std::regex& display_start() {
+  static const std::regex start(R"(\\moneq\s*\\label\{([^}]*)\})");
+  return start;
+}
+
+/// [first, last] line indices (0-based) of the live display labelled `label`, or none (first > last).
+std::pair<std::size_t, std::size_t> live_display(const std::vector<std::string>& live, const std::string& label) {
+  for (std::size_t k = 0; k < live.size(); ++k) {
+    std::smatch m;
+    if (std::regex_search(live[k], m, display_start()) && m[1] == label) {
+      for (std::size_t e = k; e < live.size(); ++e) {
+        if (live[e].find("\\monend") != std::string::npos) return {k, e};
+      }
+    }
+  }
+  return {1, 0};
+}
+
+}  // namespace
+
+paper_provenance read_provenance(const paper_source& paper) {
+  paper_provenance p;
+  p.sha256 = paper.sha256;
+  const std::string& text = paper.text;
+  // The title: the \LARGE lines, in order.
+  static const std::regex large(R"(\\LARGE\s+([^}]*)\})");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), large); it != std::sregex_iterator(); ++it) {
+    p.title += (p.title.empty() ? "" : " ") + folded_space((*it)[1].str());
+  }
+  // The edition line: the sentence that begins with "Edition".
+  static const std::regex edition(R"(Edition[^.}]*\.)");
+  std::smatch m;
+  if (std::regex_search(text, m, edition)) {
+    p.edition = folded_space(m.str());
+    p.edition_line = line_at(text, static_cast<std::size_t>(m.position()));
+  }
+  // Citations, and the bibliography that would resolve them.
+  static const std::regex cite(R"(\\cite(\[[^\]]*\])?\{([^}]*)\})");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), cite); it != std::sregex_iterator(); ++it) {
+    std::istringstream keys((*it)[2].str());
+    for (std::string key; std::getline(keys, key, ',');) {
+      p.citations.push_back({folded_space(key), line_at(text, static_cast<std::size_t>(it->position()))});
+    }
+  }
+  static const std::regex bibitem(R"(\\bibitem(\[[^\]]*\])?\{([^}]*)\})");
+  std::set<std::string> defined;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), bibitem); it != std::sregex_iterator(); ++it) defined.insert((*it)[2].str());
+  p.bibliography = !defined.empty() || text.find("\\bibliography{") != std::string::npos ||
+                   text.find("\\begin{thebibliography}") != std::string::npos;
+  std::set<std::string> seen;
+  for (const citation_use& c : p.citations) {
+    if (!defined.count(c.key) && seen.insert(c.key).second) p.unresolved.push_back(c.key);
+  }
+  // A \bibliography{file} resolves through a .bib file this source does not carry: its keys are
+  // unresolved here too, unless a \bibitem defines them.
+  return p;
+}
+
+std::vector<earlier_display> commented_displays(const paper_source& paper) {
+  const std::vector<std::string> raw = lines_of(paper.raw), live = lines_of(paper.text);
+  std::vector<earlier_display> out;
+  for (std::size_t k = 0; k < raw.size(); ++k) {
+    std::string rest;
+    std::smatch m;
+    if (!single_comment(raw[k], rest) || !std::regex_search(rest, m, display_start())) continue;
+    const std::string label = m[1];
+    const auto [first, last] = live_display(live, label);
+    if (first > last) continue;  // no live display with that label: not an earlier version of one
+    earlier_display d{label, static_cast<int>(k) + 1, {}};
+    for (std::size_t e = k; e < raw.size(); ++e) {
+      std::string body;
+      if (!single_comment(raw[e], body)) break;
+      d.tex += body + "\n";
+      if (body.find("\\monend") != std::string::npos) {
+        out.push_back(d);
+        break;
+      }
+    }
+  }
+  return out;
+}
+
+paper_source with_earlier_display(const paper_source& paper, const earlier_display& earlier) {
+  std::vector<std::string> live = lines_of(paper.text);
+  const auto [first, last] = live_display(live, earlier.label);
+  for (std::size_t k = first; k <= last && k < live.size(); ++k) live[k].assign(live[k].size(), ' ');
+  const std::vector<std::string> block = lines_of(earlier.tex);
+  for (std::size_t k = 0; k < block.size(); ++k) {
+    const std::size_t at = static_cast<std::size_t>(earlier.line) - 1 + k;
+    if (at < live.size()) live[at] = block[k];
+  }
+  paper_source out = paper;
+  out.origin = paper.origin + ", with the earlier (" + earlier.label + ") of line " + std::to_string(earlier.line);
+  out.text.clear();
+  for (const std::string& line : live) out.text += line + "\n";
+  return out;
+}
+
+}  // namespace simpson::verify
