@@ -129,6 +129,8 @@ testcase claim_case(const claim_outcome& o) {
     t.out = summary;
   } else if (o.result.outcome == verdict::erratum) {
     t.out = "Erratum, as the ledger expects.\n" + summary;
+  } else if (o.result.outcome == verdict::unverifiable) {
+    t.out = "Unverifiable (material absent from the source), as the ledger expects.\n" + summary;
   }
   return t;
 }

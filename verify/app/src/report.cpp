@@ -53,11 +53,25 @@ std::string enclosure_markdown(const json& evidence) {
 
 struct verdict_counts {
   std::size_t faults = 0;  // checks that threw: a bug in the harness, no verdict (exit 3)
+  std::size_t paper = 0, harness = 0;                        // whose statements
+  std::size_t distinct = 0, typographical = 0, consequences = 0;  // the paper's findings, each cause once
+  std::size_t unverifiable = 0;
   std::size_t held = 0, errata = 0, failed = 0, disagreed = 0, text_changed = 0, undecided = 0, unproved = 0, skipped = 0, machine_read = 0,
               quoted = 0, coq_exported = 0,
               coq_checked = 0;
   std::vector<std::string> unexpected;
 };
+
+/// A verdict that is a finding about the paper: false or unsupported as printed.
+bool is_finding(verdict v) { return v == verdict::erratum || v == verdict::fails || v == verdict::unverifiable; }
+
+/// The class of a claim's finding: the ledger's when the verdict is the expected one; an unexpected
+/// finding is an erratum (or unverifiable) until the ledger classifies it; none when it holds.
+finding finding_of(const claim_outcome& o) {
+  if (!is_finding(o.result.outcome)) return finding::none;
+  if (o.result.outcome == o.expected && o.checked->kind != finding::none) return o.checked->kind;
+  return o.result.outcome == verdict::unverifiable ? finding::unverifiable : finding::erratum;
+}
 
 verdict_counts count_verdicts(const run_record& r) {
   verdict_counts c;
@@ -65,6 +79,15 @@ verdict_counts count_verdicts(const run_record& r) {
     if (o.result.evidence.contains("error")) {  // a harness fault is never counted as a verdict
       ++c.faults;
       continue;
+    }
+    (o.checked->origin == claim_origin::paper ? c.paper : c.harness) += 1;
+    if (o.checked->origin == claim_origin::paper && is_finding(o.result.outcome)) {
+      if (o.checked->follows_from.empty()) {
+        ++c.distinct;
+        c.typographical += o.checked->typographical;
+      } else {
+        ++c.consequences;
+      }
     }
     c.held += o.result.outcome == verdict::holds;
     c.errata += o.result.outcome == verdict::erratum;
@@ -74,6 +97,7 @@ verdict_counts count_verdicts(const run_record& r) {
     c.undecided += o.result.outcome == verdict::undecided;
     c.unproved += o.result.outcome == verdict::unproved;
     c.skipped += o.result.outcome == verdict::skipped;
+    c.unverifiable += o.result.outcome == verdict::unverifiable;
     c.machine_read += !o.result.printed.is_null();
     c.quoted += o.result.printed.is_null() && !o.result.quoted.empty();
     c.coq_exported += !certificate_documents(o).empty();
@@ -87,8 +111,9 @@ verdict_counts count_verdicts(const run_record& r) {
 
 std::string summary_line(const run_record& r) {
   const verdict_counts c = count_verdicts(r);
-  return fmt::format("{} {}: {} held, {} errata, {} failed{}{}{}{}{}{}; {}", r.outcomes.size(), r.outcomes.size() == 1 ? "claim" : "claims",
+  return fmt::format("{} {}: {} held, {} errata, {} failed{}{}{}{}{}{}{}; {}", r.outcomes.size(), r.outcomes.size() == 1 ? "claim" : "claims",
                      c.held, c.errata, c.failed,
+                     c.unverifiable ? fmt::format(", {} unverifiable (material absent from the source)", c.unverifiable) : "",
                      c.faults ? fmt::format(", {} without a verdict (a harness fault: the check threw)", c.faults) : "",
                      c.disagreed ? fmt::format(", {} with the kernels in disagreement", c.disagreed) : "",
                      c.text_changed ? fmt::format(", {} whose quoted words changed (text-changed)", c.text_changed) : "",
@@ -139,6 +164,8 @@ json summary_json(const run_record& r) {
   return {{"line", summary_line(r)},     {"expectation", expectation_line(r)}, {"claims", r.outcomes.size()},
           {"held", c.held},              {"errata", c.errata},
           {"failed", c.failed},          {"harness_faults", c.faults}, {"kernels_disagree", c.disagreed},
+          {"paper_claims", c.paper},     {"harness_claims", c.harness},
+          {"distinct_findings", c.distinct}, {"typographical_findings", c.typographical}, {"consequences", c.consequences},
           {"text_changed", c.text_changed}, {"undecided", c.undecided}, {"unproved", c.unproved}, {"skipped", c.skipped},
           {"machine_read", c.machine_read}, {"quoted", c.quoted}, {"typed", r.outcomes.size() - c.machine_read - c.quoted},
           {"coq_exported", c.coq_exported}, {"coq_checked", c.coq_checked},
@@ -194,7 +221,11 @@ json report_json(const run_record& r, const plot_outcome& plots) {
                {"methods", c.methods},
                {"verdict", to_string(o.result.outcome)},
                {"expected", to_string(o.expected)},
-               {"as_expected", as_expected(o.result.outcome, o.expected)}};
+               {"as_expected", as_expected(o.result.outcome, o.expected)},
+               {"origin", c.origin == claim_origin::paper ? "paper" : "harness"},
+               {"finding", to_string(finding_of(o))}};
+    if (!c.follows_from.empty()) entry["follows_from"] = c.follows_from;
+    if (c.typographical) entry["typographical"] = true;
     if (!o.result.correction.empty()) entry["correction"] = o.result.correction;
     if (!o.result.note.empty()) entry["note"] = o.result.note;
     if (!o.result.printed.is_null()) entry["printed"] = o.result.printed;
@@ -378,6 +409,43 @@ std::string finding_markdown(const claim_outcome& o, const std::string& verdict_
   return md + fmt::format("- Evidence: [{}](#{})\n\n", c.id, heading_slug(c.id));
 }
 
+/// The first sentence of a note (up to ". "), for a one-line statement.
+std::string first_sentence(const std::string& text) {
+  const std::size_t end = text.find(". ");
+  return end == std::string::npos ? text : text.substr(0, end + 1);
+}
+
+/// What a referee reads first: the distinct findings about the paper, substantive before
+/// typographical, each in one line, with the consequences counted under their cause.
+std::string referee_summary_markdown(const run_record& r) {
+  const verdict_counts c = count_verdicts(r);
+  if (r.outcomes.empty()) return {};
+  std::string md = "## Referee's summary\n\n";
+  md += fmt::format("{} of the {} claims are the paper's ({} the harness's own statements, not counted below). ", c.paper,
+                    r.outcomes.size(), c.harness);
+  if (c.distinct + c.consequences == 0) return md + "No finding: every claim of the paper checked holds as printed.\n\n";
+  md += fmt::format("**{} distinct finding{}** about the paper ({} substantive, {} typographical), and {} consequence{} counted under "
+                    "their cause. Classes (docs/findings.md): erratum, wording, derivation gap, naming, unverifiable.\n\n",
+                    c.distinct, c.distinct == 1 ? "" : "s", c.distinct - c.typographical, c.typographical, c.consequences,
+                    c.consequences == 1 ? "" : "s");
+  for (const bool typographical : {false, true}) {
+    for (const claim_outcome& o : r.outcomes) {
+      const claim& k = *o.checked;
+      if (k.origin != claim_origin::paper || !is_finding(o.result.outcome) || !k.follows_from.empty() || k.typographical != typographical) continue;
+      std::vector<std::string> consequences;
+      for (const claim_outcome& other : r.outcomes) {
+        if (other.checked->follows_from == k.id && is_finding(other.result.outcome)) consequences.push_back("`" + other.checked->id + "`");
+      }
+      const std::string what = !o.result.correction.empty() ? o.result.correction : first_sentence(o.result.note);
+      const bool stops = !what.empty() && what.back() == '.';
+      md += fmt::format("- **`{}`** (§{}, {}{}): {}{}{}\n", k.id, markdown_escaped(k.section), to_string(finding_of(o)),
+                        typographical ? ", typographical" : "", markdown_escaped(what), stops || consequences.empty() ? "" : ".",
+                        consequences.empty() ? "" : fmt::format(" Consequences (counted under it): {}.", join(consequences, ", ")));
+    }
+  }
+  return md + "\n";
+}
+
 /// The text checked, as the source prints it; its citations; its earlier text, checked.
 std::string provenance_markdown(const run_record& r) {
   const json& p = r.provenance;
@@ -429,6 +497,7 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
                     r.run_scene.selection.empty() ? "" : ": " + r.run_scene.selection);
   if (!r.run_scene.description.empty()) md += markdown_escaped(r.run_scene.description) + "\n\n";
   md += fmt::format("**{}**\n\n{}\n\n", markdown_escaped(summary_line(r)), markdown_escaped(expectation_line(r)));
+  md += referee_summary_markdown(r);
   {
     const verdict_counts c = count_verdicts(r);
     md += fmt::format("{} of {} claims read their formula from the paper's LaTeX source ({}) and prove it in GiNaC against "
@@ -451,7 +520,8 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
         "**text-changed** (the sentence a prose claim quotes is gone from the paper, or its words no longer parse: never expected), "
         "**undecided** (no interval enclosure proved the statement or its negation within the run's digits: never expected), "
         "**unproved** (a floating-point claim whose round-off Gappa could not bound, with its reason), **skipped** (a "
-        "floating-point claim not decided because gappa is not installed: never counted against the run).\n\n";
+        "floating-point claim not decided because gappa is not installed: never counted against the run), **unverifiable** (material "
+        "the claim needs is absent from the source, a figure or a reference: no verdict on its words).\n\n";
 
   md += "## Claims\n\nStatement: *read* when its formulas are read from the paper's source and proved in both kernels "
         "(our kernel and GiNaC), *quoted* when its prose sentence is quoted from the source and its words parsed, *typed* when "
@@ -473,6 +543,16 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
     md += finding_markdown(o, "");
   }
   if (!any_erratum) md += "None in this run.\n\n";
+
+  md += "## Unverifiable\n\nClaims about material the source does not carry (a figure, a reference): no verdict on the words is "
+        "possible; what the harness computed beside them is context.\n\n";
+  bool any_unverifiable = false;
+  for (const claim_outcome& o : r.outcomes) {
+    if (o.result.outcome != verdict::unverifiable) continue;
+    any_unverifiable = true;
+    md += finding_markdown(o, "");
+  }
+  if (!any_unverifiable) md += "None in this run.\n\n";
 
   md += "## Failures\n\n";
   bool any_failure = false;

@@ -183,7 +183,7 @@ void add_peer_claims(std::vector<claim>& claims) {
                     "Finding, not printed: on the oscillator Phi_3 is exactly the 3-stage Lobatto IIIA-IIIB pair (IIIA "
                     "for q, IIIB for p). Newmark and Stormer-Verlet differ from it at theta^3; RK4, 2-stage "
                     "Gauss-Legendre, Yoshida's composition and the swapped Lobatto pair at theta^5.",
-                    {"exact", "numeric"}, verdict::holds, check_peer_schemes});
+                    {"exact", "numeric"}, verdict::holds, check_peer_schemes, finding::none, "", false, claim_origin::harness});
 }
 
 }  // namespace simpson::verify::detail

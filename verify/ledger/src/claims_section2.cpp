@@ -275,7 +275,7 @@ claim_result check_hamilton_consistency(const run_context& ctx) {
 void add_section2_claims(std::vector<claim>& claims) {
   claims.push_back({"classical-action-range", "2", "prose (S_d)",
                     "Splitting [0, T] into N elements, S_d = sum_{j=1}^{N-1} L_d(q_j, q_{j+1}).", {"exact"},
-                    verdict::erratum, check_action_range});
+                    verdict::erratum, check_action_range, finding::erratum, "", true});
   claims.push_back({"classical-euler-lagrange", "2", "schema-ordre-deux",
                     "The discrete Euler-Lagrange equation dL_d/dq_r(q_{j-1}, q_j) + dL_d/dq_l(q_j, q_{j+1}) = 0 "
                     "with (lagrangien-discret) gives m (q_{j+1} - 2 q_j + q_{j-1})/h^2 + 1/2 [V'((q_j + q_{j+1})/2) "

@@ -212,7 +212,7 @@ void add_section3_4_claims(std::vector<claim>& claims) {
                     {"exact"}, verdict::holds, check_simpson_lagrangian});
   claims.push_back({"simpson-action-range", "4", "SSdd",
                     "With N regular intervals, Sigma_d = sum_{j=1}^{N-1} L_h(q_j, q_{j+1/2}, q_{j+1}).", {"exact"},
-                    verdict::erratum, check_simpson_action_range});
+                    verdict::erratum, check_simpson_action_range, finding::erratum, "", true});
 }
 
 }  // namespace simpson::verify::detail

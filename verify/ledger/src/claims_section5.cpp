@@ -123,9 +123,11 @@ claim_result check_qm_harmonic(const run_context& ctx) {
 
 claim_result check_qm_not_affine(const run_context& ctx) {
   const quoted_sentence said = quote(ctx, "This interpolation is {linearity} if $ \\, h > 0 $.");
-  const std::string stated = said.choice("linearity", {{"not linear", "not the affine midpoint"}, {"nonlinear", "not the affine midpoint"},
-                                                       {"non linear", "not the affine midpoint"}, {"non-linear", "not the affine midpoint"},
-                                                       {"not affine", "not the affine midpoint"}, {"linear", "the affine midpoint"},
+  // Literally: "not linear" says the map (q_l, q_r) -> q_m is not linear (false: it is); "not affine"
+  // says it is not the affine interpolant's midpoint (true); "linear" is true; "affine" false.
+  const std::string stated = said.choice("linearity", {{"not linear", "not linear"}, {"nonlinear", "not linear"},
+                                                       {"non linear", "not linear"}, {"non-linear", "not linear"},
+                                                       {"not affine", "not the affine midpoint"}, {"linear", "linear"},
                                                        {"affine", "the affine midpoint"}});
   const auto par = unit_oscillator_in_theta();
   const symbolic x = par.omega2_h2();
@@ -142,8 +144,17 @@ claim_result check_qm_not_affine(const run_context& ctx) {
     printed.evidence = {{"stated", said.words("linearity")}, {"result", "refuted: " + proved}};
     return erratum(printed, p, "The interpolation is not the affine one: " + proved);
   }
-  return identity(p, "Wording (a finding): q_m = (q_l + q_r)/(2 (1 - omega^2 h^2/8)) is linear in (q_l, q_r), so 'not linear' "
-                     "cannot mean that. What was proved: " + proved + ".");
+  if (!p.proved) return identity(p);
+  if (stated == "not linear") {
+    json evidence;
+    evidence["exact"] = p.evidence;
+    evidence["stated"] = said.words("linearity");
+    return words_erratum(evidence, "q_m = (q_l + q_r)/(2 (1 - omega^2 h^2/8)) is linear in (q_l, q_r); what holds is that it is not "
+                                   "the affine interpolant's midpoint: " + proved,
+                         "Wording: 'not linear' is false of q_m, a linear function of (q_l, q_r); the intended content, that q_m is "
+                         "not the midpoint (q_l + q_r)/2, is proved.");
+  }
+  return identity(p, "What was proved: " + proved + ".");
 }
 
 stability_report simpson_stability() {
@@ -540,9 +551,15 @@ claim_result check_discriminant_negative(const run_context& ctx) {
     ginac_core.push_back({{"factor", core_in_ginac[k].factor}, {"sign", sign_word(core_in_ginac[k].sign)}, {"proof", core_in_ginac[k].proof}});
   }
   kernels_agree = kernels_agree && core_in_ginac.size() == own_signs.size();
-  const bool words_hold = !binomial_signs.empty() &&
-                          std::all_of(binomial_signs.begin(), binomial_signs.end(), [&](int s) { return s == stated_sign; }) &&
-                          delta_sign != 0 && stated_delta.admits(delta_sign);
+  // "all the factors": the prefactor omega^2 h^2/576 is one of them.
+  int prefactor_sign = 1;
+  for (const printed_factor_sign& f : printed_discriminant_factor_signs(paper_of(ctx), band)) {
+    if (f.prefactor) prefactor_sign = f.sign;
+  }
+  const bool binomials_as_stated = !binomial_signs.empty() &&
+                                   std::all_of(binomial_signs.begin(), binomial_signs.end(), [&](int s) { return s == stated_sign; }) &&
+                                   delta_sign != 0 && stated_delta.admits(delta_sign);
+  const bool words_hold = binomials_as_stated && prefactor_sign == stated_sign;
   json evidence;
   evidence["exact"] = {{"method", "exact"},
                        {"band", band.text()},
@@ -562,8 +579,13 @@ claim_result check_discriminant_negative(const run_context& ctx) {
                              ", the prefactor omega^2 h^2/576 is positive, so Delta is " + sign_word(delta_sign);
   if (words_hold) {
     r.outcome = verdict::holds;
-    r.note = "Wording: 'all the factors' holds of the three binomial factors; the prefactor omega^2 h^2/576 is positive. "
-             "Proved in both kernels, each factor's sign on the whole band (no sample): " + proved + ".";
+    r.note = "Proved in both kernels, each factor's sign on the whole band (no sample): " + proved + ".";
+  } else if (binomials_as_stated) {
+    r.outcome = verdict::erratum;
+    r.correction = "As proved: " + proved;
+    r.note = "Wording: 'all the factors' is false of the prefactor omega^2 h^2/576, which is positive; the intended content (the "
+             "three binomial factors negative, Delta < 0 on the band) is proved in both kernels, each factor's sign on the whole "
+             "band (no sample).";
   } else {
     r.outcome = delta_sign == 0 ? verdict::fails : verdict::erratum;
     r.correction = "As proved: " + proved;
@@ -650,7 +672,7 @@ void add_section5_claims(std::vector<claim>& claims) {
   claims.push_back({"maupertuis-naming", "5", "prose",
                     "We first write the Maupertuis's stationary-action principle delta Sigma_d = 0 with a variation of the internal "
                     "degree of freedom.",
-                    {"exact"}, verdict::erratum, check_maupertuis_naming});
+                    {"exact"}, verdict::erratum, check_maupertuis_naming, finding::naming});
   claims.push_back({"gear-partials", "5", "prose", "dg_l/dq_m = 4/h, dg_m/dq_m = 0 and dg_r/dq_m = -4/h.", {"exact"},
                     verdict::holds, check_gear_partials});
   claims.push_back({"lh-dqm", "5", "prose",
@@ -667,7 +689,7 @@ void add_section5_claims(std::vector<claim>& claims) {
                     "For the harmonic oscillator, q_m = (q_l + q_r)/(2 (1 - omega^2 h^2/8)).", {"exact", "numeric"},
                     verdict::holds, check_qm_harmonic});
   claims.push_back({"qm-not-affine", "5", "qm-oscillateur-harmonique",
-                    "This interpolation is not linear if h > 0.", {"exact"}, verdict::holds, check_qm_not_affine});
+                    "This interpolation is not linear if h > 0.", {"exact"}, verdict::erratum, check_qm_not_affine, finding::wording});
   claims.push_back({"stability-condition", "5", "stabilite", "A stability condition is naturally emerging: 0 < omega h < 2 sqrt(2).",
                     {"exact"}, verdict::holds, check_stability_condition});
   claims.push_back({"reduced-lagrangian", "5", "Lagrangien-reduit",
@@ -683,7 +705,7 @@ void add_section5_claims(std::vector<claim>& claims) {
                     check_scheme_consistency});
   claims.push_back({"taylor-display", "5", "prose (display)",
                     "q_{j+-1} = q_j +- h q' + h^2/2 q'' +- ... +- h^5/120 q^(5) + h^6/720 d^6q/dt^5 + O(h^7).", {"exact"},
-                    verdict::erratum, check_taylor_display});
+                    verdict::erratum, check_taylor_display, finding::erratum, "", true});
   claims.push_back({"truncation-1440", "5", "prose (display)", "T_h(q_j) = omega^6 h^4 q_j/1440 + O(h^6).",
                     {"exact series", "numeric"}, verdict::holds, check_truncation_1440});
   claims.push_back({"fourth-order-truncation", "5", "schema-ordre-3",
@@ -695,13 +717,13 @@ void add_section5_claims(std::vector<claim>& claims) {
                     {"exact"}, verdict::holds, check_characteristic_equation});
   claims.push_back({"root-modulus-criterion", "5", "prose",
                     "The scheme is stable when the roots of the corresponding equation are of modulus smaller than 1.",
-                    {"exact"}, verdict::erratum, check_root_modulus});
+                    {"exact"}, verdict::erratum, check_root_modulus, finding::wording});
   claims.push_back({"discriminant-factorization", "5", "prose (display)",
                     "Delta = b^2 - 4ac = (omega^2 h^2/576)(omega^2 h^2 - 24)(omega^2 h^2 - 12)(omega^2 h^2 - 8).",
                     {"exact", "numeric"}, verdict::holds, check_discriminant_factorization});
   claims.push_back({"discriminant-negative", "5", "stabilite",
                     "Under the stability condition all the factors of Delta are negative and Delta < 0.", {"exact", "exact (GiNaC)"},
-                    verdict::holds, check_discriminant_negative});
+                    verdict::erratum, check_discriminant_negative, finding::wording});
   claims.push_back({"roots-product-one", "5", "prose",
                     "The two roots are complex conjugate, their product |r|^2 is 1, and the scheme is stable.", {"exact"},
                     verdict::holds, check_roots_product});

@@ -376,17 +376,17 @@ void add_section6_7_claims(std::vector<claim>& claims) {
   claims.push_back({"gamma-system", "7", "prose (display)",
                     "Q(Phi y) = Q(y) for all y iff Gamma (xi, eta, zeta)^T = 0 with Gamma = ((alpha^2-1)/2, alpha gamma, "
                     "gamma^2/2; alpha beta, alpha delta + beta gamma - 1, gamma delta; beta^2/2, beta delta, (gamma^2-1)/2).",
-                    {"exact"}, verdict::erratum, check_gamma_system});
+                    {"exact"}, verdict::erratum, check_gamma_system, finding::erratum, "", true});
   claims.push_back({"gamma-determinant", "7", "prose",
                     "det Gamma = (alpha delta - beta gamma - 1)(1 - alpha - delta + alpha delta - beta gamma)(1 + alpha + "
                     "delta + alpha delta - beta gamma).",
-                    {"exact"}, verdict::erratum, check_gamma_determinant});
+                    {"exact"}, verdict::erratum, check_gamma_determinant, finding::erratum, "", true});
   claims.push_back({"gamma-singular", "7", "prose", "det Gamma vanishes when alpha delta - beta gamma = 1.", {"exact"},
-                    verdict::erratum, check_gamma_singular});
+                    verdict::erratum, check_gamma_singular, finding::derivation_gap, "gamma-system"});
   claims.push_back({"conserved-form", "7", "prose",
                     "When alpha = delta, eta = 0 and Q_c(p, q) = gamma p^2/2 - beta q^2/2 is conserved, up to a "
                     "multiplicative constant.",
-                    {"exact"}, verdict::erratum, check_conserved_form});
+                    {"exact"}, verdict::erratum, check_conserved_form, finding::derivation_gap, "gamma-system"});
   claims.push_back({"hd-proportional", "7", "hamiltonien-discret",
                     "H_d = p^2/(2m) + m omega^2 (1 - omega^2 h^2/12)(1 - omega^2 h^2/24) q^2/(2 (1 - omega^2 h^2/8)) is the "
                     "conserved form Q_c of Phi_3 up to a constant.",

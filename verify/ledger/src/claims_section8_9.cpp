@@ -35,6 +35,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <regex>
 
 namespace simpson::verify::detail {
 namespace {
@@ -540,7 +541,32 @@ claim_result check_figure1(const run_context& ctx) {
                          {"experiment", "Section 8 conventions, N = 15 (Figure 1), errors at the nodes over one period"},
                          {"schemes", schemes},
                          {"reading", "very satisfactory: max error <= 1/10 of the amplitude; very close: <= 1/500"}};
-  const std::string figure = " Figure 1 itself is missing from the source; table1 redraws it (figure1.svg).";
+  // The figure the caption describes, as the source includes it: the \includegraphics before "Figure 1.".
+  const std::string& text = paper_of(ctx).source.text;
+  const auto caption = find_ignoring_space(text, "Figure 1. Typical");
+  std::string included;
+  bool found = false;
+  if (caption) {
+    static const std::regex graphics(R"(\\includegraphics(\[[^\]]*\])?\{([^}]*)\})");
+    const std::string before = text.substr(0, caption->first);
+    for (auto it = std::sregex_iterator(before.begin(), before.end(), graphics); it != std::sregex_iterator(); ++it) {
+      included = folded_space((*it)[2].str());
+      found = true;
+    }
+  }
+  evidence["figure"] = {{"includegraphics", found ? included : "none before the caption"}, {"present", found && !included.empty()}};
+  if (!found || included.empty()) {
+    claim_result r;
+    r.outcome = verdict::unverifiable;
+    r.evidence = evidence;
+    r.note = "Figure 1 is absent from the source (" + std::string(found ? "\\includegraphics{ } names no file" : "no \\includegraphics") +
+             "): the caption's statements are about a figure the text does not carry. For context only, not as proof: at N = 15 "
+             "the errors above, read by the harness's own thresholds (1/10 and 1/500 of the amplitude), " +
+             (both_satisfactory && named_close ? "agree with the caption" : "do not agree with the caption") +
+             "; table1 redraws the figure (figure1.svg).";
+    return r;
+  }
+  const std::string figure = " Figure 1 is included from '" + included + "'; the harness reads it by the thresholds above.";
   if (both_satisfactory && named_close) {
     return confirmed_if(true, evidence, "Both schemes within 1/10 of the amplitude; the " + close_one + " momentum within 1/500." + figure);
   }
@@ -616,7 +642,7 @@ void add_scaling_lemma(std::vector<claim>& claims) {
                     "= S Phi_3(1, 1, omega h) S^-1 and likewise for Phi; H_d and H scale by m omega^2 with p/(m omega); "
                     "(schema-ordre-3) scales by omega^2; q_m is invariant, and p_r, L_h^r, L_h, L_d and its momentum scale by m omega (so "
                     "the elimination route of Section 6, built from p_r and the scheme, transforms like Phi_3).",
-                    {"exact"}, verdict::holds, check_scaling});
+                    {"exact"}, verdict::holds, check_scaling, finding::none, "", false, claim_origin::harness});
 }
 
 void add_section8_9_claims(std::vector<claim>& claims) {
@@ -631,11 +657,11 @@ void add_section8_9_claims(std::vector<claim>& claims) {
   claims.push_back({"table-values", "8", "Table 1",
                     "The maximum-norm errors of Table 1 for N = 10, 20, 40 (q = sin omega t, p = m omega cos omega t, one "
                     "period T = 1).",
-                    {"numeric"}, verdict::erratum, check_table_values});
+                    {"numeric"}, verdict::erratum, check_table_values, finding::erratum});
   claims.push_back({"figure1-statements", "8", "Figure 1",
                     "Figure 1 (N = 15): both schemes give very satisfactory results; the momentum p is very close to the exact "
                     "solution with the symplectic Simpson scheme.",
-                    {"numeric"}, verdict::holds, check_figure1});
+                    {"numeric"}, verdict::unverifiable, check_figure1, finding::unverifiable});
   claims.push_back({"conclusion-symplectic-stable", "9", "prose",
                     "The symplectic Simpson method is symplectic and conditionally stable.", {"exact"}, verdict::holds,
                     check_conclusion_symplectic_stable});

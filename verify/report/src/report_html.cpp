@@ -100,6 +100,7 @@ constexpr const char* style =
     ".verdict-fails{background:#f8d7da;color:#842029}.verdict-kernels-disagree{background:#842029;color:#fff}"
     ".verdict-text-changed{background:#6f42c1;color:#fff}.verdict-undecided{background:#fff3cd;color:#664d03}"
     ".verdict-unproved{background:#fff3cd;color:#664d03}.verdict-skipped{background:#e2e3e5;color:#41464b}"
+    ".verdict-unverifiable{background:#e2e3e5;color:#41464b;font-style:italic}"
     ".verdict-unexpected{outline:2px solid #c00}";
 
 }  // namespace
@@ -132,7 +133,7 @@ std::string heading_slug(std::string_view heading_text) {
 std::string render_report_html(const std::string& markdown, const std::string& title) {
   std::string body = with_long_tables_folded(with_heading_ids(cmark_html(markdown)));
   // Verdicts: report.md writes them in bold; each gets its colour.
-  for (const char* v : {"holds", "erratum", "fails", "kernels-disagree", "text-changed", "undecided", "unproved", "skipped"}) {
+  for (const char* v : {"holds", "erratum", "fails", "kernels-disagree", "text-changed", "undecided", "unproved", "skipped", "unverifiable"}) {
     replace_all(body, fmt::format("<strong>{}</strong>", v), fmt::format("<strong class=\"verdict verdict-{}\">{}</strong>", v, v));
   }
   replace_all(body, "<strong>(unexpected)</strong>", "<strong class=\"verdict verdict-unexpected\">(unexpected)</strong>");

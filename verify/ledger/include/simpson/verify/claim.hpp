@@ -22,7 +22,7 @@ namespace simpson::verify {
 /// evidence: an intermediate that may overflow, a step outside the stable range); skipped: a
 /// floating-point claim whose prover (gappa) is not installed, decided neither way and never
 /// counted against the run.
-enum class verdict { holds, erratum, fails, kernels_disagree, text_changed, undecided, unproved, skipped };
+enum class verdict { holds, erratum, fails, kernels_disagree, text_changed, undecided, unproved, skipped, unverifiable };
 
 inline std::string to_string(verdict v) {
   switch (v) {
@@ -34,6 +34,7 @@ inline std::string to_string(verdict v) {
     case verdict::undecided: return "undecided";
     case verdict::unproved: return "unproved";
     case verdict::skipped: return "skipped";
+    case verdict::unverifiable: return "unverifiable";
   }
   return "?";
 }
@@ -88,6 +89,31 @@ struct claim_result {
   std::vector<std::string> refutation_lemmas;
 };
 
+/// The class of a finding, one policy for all (docs/findings.md, "How findings are classified"):
+///   erratum         a formula or statement false as printed; its correction proved;
+///   wording         the words are literally false, but the intended mathematical content holds
+///                   (the note says which);
+///   derivation_gap  the conclusion holds, but the printed argument does not reach it;
+///   naming          a result attributed to the wrong principle or person;
+///   unverifiable    material the claim needs is absent from the source (a figure, a reference).
+enum class finding { none, erratum, wording, derivation_gap, naming, unverifiable };
+
+inline std::string to_string(finding f) {
+  switch (f) {
+    case finding::none: return "none";
+    case finding::erratum: return "erratum";
+    case finding::wording: return "wording";
+    case finding::derivation_gap: return "derivation gap";
+    case finding::naming: return "naming";
+    case finding::unverifiable: return "unverifiable";
+  }
+  return "?";
+}
+
+/// Whose statement a claim is: the paper's, or the harness's own (a lemma the proofs use, a
+/// finding beyond the paper), counted apart.
+enum class claim_origin { paper, harness };
+
 struct claim {
   std::string id;         // stable kebab-case
   std::string section;    // section of the paper
@@ -96,6 +122,12 @@ struct claim {
   std::vector<std::string> methods;
   verdict expected;
   std::function<claim_result(const run_context&)> check;
+  /// The class of the finding when the expected verdict is not `holds`; and, for a finding that is
+  /// a consequence of another (it inherits a typo), the id of its cause: the summary counts it once.
+  finding kind = finding::none;
+  std::string follows_from = {};
+  bool typographical = false;  // a slip of the pen (a wrong index, a letter for another), not of the mathematics
+  claim_origin origin = claim_origin::paper;
 };
 
 }  // namespace simpson::verify
