@@ -104,6 +104,7 @@ entry_powers measure_powers(const std::vector<printed_entry>& printed, const con
 double closed_form_scales(const std::vector<printed_entry>& printed, const std::vector<computed_entry>& base, const entry_powers& powers,
                           const fit_setup& setup, std::vector<double>& x) {
   const std::size_t S = setup.scale.size();
+  if (S > 3) throw std::invalid_argument("search_conventions: at most three scale parameters");
   double penalty = 0;
   std::vector<std::size_t> rows;
   for (std::size_t e = 0; e < printed.size(); ++e) {
@@ -148,18 +149,43 @@ double closed_form_scales(const std::vector<printed_entry>& printed, const std::
       else y[s] = rest % 3 == 1 ? low[s] : high[s];
     }
     if (!free.empty() && !rows.empty()) {
-      Eigen::MatrixXd A(rows.size(), free.size());
-      Eigen::VectorXd b(rows.size());
+      // The normal equations of the free parameters (at most three: no allocation), solved for the
+      // least-norm solution: a parameter no fitted entry depends on stays stated.
+      using small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3>;
+      using small_vector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1>;
+      const auto k = static_cast<Eigen::Index>(free.size());
+      small normal = small::Zero(k, k);
+      small_vector rhs = small_vector::Zero(k);
       for (std::size_t r = 0; r < rows.size(); ++r) {
         double fixed = c[r];
         for (std::size_t s = 0; s < S; ++s) fixed += weight[r] * powers.power[rows[r]][s] * y[s];
-        b(static_cast<Eigen::Index>(r)) = -fixed;
         for (std::size_t f = 0; f < free.size(); ++f) {
-          A(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(f)) = weight[r] * powers.power[rows[r]][free[f]];
+          const double af = weight[r] * powers.power[rows[r]][free[f]];
+          rhs(static_cast<Eigen::Index>(f)) -= af * fixed;
+          for (std::size_t g = 0; g < free.size(); ++g) {
+            normal(static_cast<Eigen::Index>(f), static_cast<Eigen::Index>(g)) += af * weight[r] * powers.power[rows[r]][free[g]];
+          }
         }
       }
-      // The least-squares solution of least norm: a parameter no fitted entry depends on stays stated.
-      const Eigen::VectorXd z = A.completeOrthogonalDecomposition().solve(b);
+      small_vector z(k);
+      if (k == 1) {
+        z(0) = normal(0, 0) > 0 ? rhs(0) / normal(0, 0) : 0;
+      } else if (k == 2) {
+        // By hand (this runs some 10^5 times): the inverse when regular; when the two columns are
+        // proportional (rank 1), the least-norm solution N⁺ r = N r / trace(N)².
+        const double det = normal(0, 0) * normal(1, 1) - normal(0, 1) * normal(1, 0), trace = normal(0, 0) + normal(1, 1);
+        if (std::abs(det) > 1e-12 * trace * trace) {
+          z(0) = (normal(1, 1) * rhs(0) - normal(0, 1) * rhs(1)) / det;
+          z(1) = (normal(0, 0) * rhs(1) - normal(1, 0) * rhs(0)) / det;
+        } else if (trace > 0) {
+          z(0) = (normal(0, 0) * rhs(0) + normal(0, 1) * rhs(1)) / (trace * trace);
+          z(1) = (normal(1, 0) * rhs(0) + normal(1, 1) * rhs(1)) / (trace * trace);
+        } else {
+          z.setZero();
+        }
+      } else {
+        z = normal.completeOrthogonalDecomposition().solve(rhs);
+      }
       bool feasible = true;
       for (std::size_t f = 0; f < free.size(); ++f) {
         y[free[f]] = z(static_cast<Eigen::Index>(f));
@@ -169,6 +195,9 @@ double closed_form_scales(const std::vector<printed_entry>& printed, const std::
     }
     const double f = misfit_at(y);
     if (f < best) best = f, x = y;
+    // The unconstrained optimum (code 0, every parameter free) inside the bounds is the constrained
+    // one (a convex problem): the bounds need not be tried.
+    if (code == 0) break;
   }
   return best + penalty;
 }
@@ -295,19 +324,35 @@ convention_candidate global_fit(const std::vector<printed_entry>& printed, const
   for (const std::size_t g : starts) {
     std::vector<double> u = units_of(g);
     double misfit = scan[g];
-    if (d == 1) {  // golden sections between the neighbouring grid points
-      const double step = 1.0 / double(per_dimension - 1), golden = (std::sqrt(5.0) - 1) / 2;
-      double lo = std::max(0.0, u[0] - step), hi = std::min(1.0, u[0] + step);
-      for (int it = 0; it < 40; ++it) {
-        const double a = hi - golden * (hi - lo), b = lo + golden * (hi - lo);
-        double fa = 0, fb = 0;
-        fitted_at({a}, fa);
-        fitted_at({b}, fb);
-        if (fa < fb) hi = b; else lo = a;
+    if (d == 1) {
+      // A finer scan between the neighbouring grid points, then golden sections (one new point per
+      // step) between the neighbours of its best.
+      const double step = 1.0 / double(per_dimension - 1);
+      const int fine = 16;
+      double best_u = u[0];
+      for (int i = -fine; i <= fine; ++i) {
+        const double w = u[0] + step * double(i) / fine;
+        if (w < 0 || w > 1 || i == 0) continue;
+        double f = 0;
+        fitted_at({w}, f);
+        if (f < misfit) misfit = f, best_u = w;
       }
-      double f = 0;
-      fitted_at({(lo + hi) / 2}, f);
-      if (f <= misfit) u[0] = (lo + hi) / 2;
+      const double golden = (std::sqrt(5.0) - 1) / 2;
+      double lo = std::max(0.0, best_u - step / fine), hi = std::min(1.0, best_u + step / fine);
+      double a = hi - golden * (hi - lo), b = lo + golden * (hi - lo), fa = 0, fb = 0;
+      fitted_at({a}, fa);
+      fitted_at({b}, fb);
+      for (int it = 0; it < 30; ++it) {
+        if (fa < fb) {
+          hi = b, b = a, fb = fa, a = hi - golden * (hi - lo);
+          fitted_at({a}, fa);
+        } else {
+          lo = a, a = b, fa = fb, b = lo + golden * (hi - lo);
+          fitted_at({b}, fb);
+        }
+      }
+      if (std::min(fa, fb) < misfit) best_u = fa < fb ? a : b;
+      u[0] = best_u;
     }
     parameter_values values = fitted_at(u, misfit);
     convention_candidate c = judged(printed, choice, values, experiment, evaluations);

@@ -4,7 +4,9 @@
 #include "claim_support.hpp"
 #include "claims_unformulated.hpp"
 
+#include <simpson/verify/printed_table1.hpp>
 #include <simpson/verify/quoted_words.hpp>
+#include <simpson/verify/table1_conventions.hpp>
 #include <simpson/verify/stability_analysis.hpp>
 
 #include <simpson/internal_node.hpp>
@@ -148,10 +150,29 @@ claim_result check_experiment_conventions(const run_context& ctx) {
     return confirmed_if(false, evidence, "The printed p(t) = " + p + " is not m dq/dt = " + expected_p +
                                              " of the printed q(t): the pair is not one solution of the oscillator.");
   }
-  return confirmed_if(period == 1 && q == "sin(omega t)", evidence,
-                      "The stated pair is one exact solution (p = m dq/dt) with T = 1 one period, omega = 2 pi, as the harness "
-                      "runs it. Section 8 leaves unstated the mass m, the energy errors' definitions, the points the maximum "
-                      "runs over, and how the momentum data of Figure 1 are rescaled (evidence 'unstated': what the harness takes).");
+  if (!(period == 1 && q == "sin(omega t)")) return confirmed_if(false, evidence);
+  // Whether these are the conventions of the experiment the section reports: do they reproduce Table 1
+  // as printed? The convention search (shared with table-values, run once per table) decides.
+  const printed_table1 printed = read_table1(paper_of(ctx));
+  const convention_search_result search = search_table1(table1_printed(printed.values, printed.orders, &printed.digits));
+  evidence["table1"] = {{"stated_reproduce", std::to_string(search.stated.reproduced) + " of " + std::to_string(search.stated.entries.size()) +
+                                                 " entries of Table 1 within their printed digits"},
+                        {"reproducing_convention", search.reproducing() != nullptr ? describe(*search.reproducing()) : "none found"}};
+  const std::string unstated = "Section 8 leaves unstated the mass m, the energy errors' definitions, the points the maximum runs "
+                               "over, and how the momentum data of Figure 1 are rescaled (evidence 'unstated': what the harness takes).";
+  if (search.stated_reproduces()) {
+    return confirmed_if(true, evidence, "The stated pair is one exact solution (p = m dq/dt) with T = 1 one period, omega = 2 pi, "
+                                        "and it reproduces Table 1. " + unstated);
+  }
+  if (const convention_candidate* found = search.reproducing()) {
+    return words_erratum(evidence,
+                         "Table 1 is the experiment of another exact solution: " + describe(*found) +
+                             " (q(t) = A sin(omega t + phase), p = m dq/dt) reproduces every entry; q(t) = sin omega t does not",
+                         "The stated pair is one exact solution with T = 1 one period, but not the one Table 1 was computed with "
+                         "(table-values, convention search). " + unstated);
+  }
+  return confirmed_if(false, evidence, "The stated pair does not reproduce Table 1, and no convention of the searched family does "
+                                       "(table-values). " + unstated);
 }
 
 }  // namespace
@@ -167,8 +188,8 @@ void add_abstract_claims(std::vector<claim>& claims) {
 
 void add_convention_claims(std::vector<claim>& claims) {
   claims.push_back({"experiment-conventions", "8", "prose",
-                    "We have chosen q(t) = sin omega t and p(t) = m omega cos omega t, with a period T = 1.", {"exact"},
-                    verdict::holds, check_experiment_conventions});
+                    "We have chosen q(t) = sin omega t and p(t) = m omega cos omega t, with a period T = 1.", {"exact", "numeric (the convention search)"},
+                    verdict::erratum, check_experiment_conventions, finding::erratum});
 }
 
 }  // namespace simpson::verify::detail

@@ -189,6 +189,14 @@ const formula_claim_table& formula_claims() {
   return claims;
 }
 
+/// Two pieces of prose as sentences: a full stop after the first unless it has one.
+std::string then(const std::string& first, const std::string& second) {
+  if (second.empty()) return first;
+  if (first.empty()) return second;
+  const char last = first.back();
+  return first + (last == '.' || last == ':' || last == ';' ? " " : ". ") + second;
+}
+
 /// The verdict from the two kernels. Each proves the derived statement (ours on our
 /// transcription, in θ with the grid lemma; GiNaC from first principles, every symbol free); they
 /// must agree, or the verdict is kernels-disagree. When they agree that it holds, the printed side
@@ -211,7 +219,7 @@ void decide(claim_result& result, const printed_outcome& g, const std::string& c
     return;
   }
   if (g.holds && words_refuted) {
-    result.note = "The printed formula holds (" + g.proved + "); the quoted words do not." + (result.note.empty() ? "" : " " + result.note);
+    result.note = then("The printed formula holds (" + g.proved + "); the quoted words do not.", result.note);
     return;
   }
   if (g.holds) {
@@ -225,8 +233,9 @@ void decide(claim_result& result, const printed_outcome& g, const std::string& c
   }
   result.outcome = g.property || g.correction.empty() ? verdict::fails : verdict::erratum;
   if (result.outcome == verdict::erratum && own != verdict::erratum) result.correction = g.correction;
-  result.note = (own == verdict::erratum ? "As printed: " : "The formula as printed in the paper's source differs from the derived one: ") +
-                g.proved + (result.note.empty() ? "" : " " + result.note);
+  result.note = then((own == verdict::erratum ? "As printed: " : "The formula as printed in the paper's source differs from the derived one: ") +
+                         g.proved,
+                     result.note);
 }
 
 /// A claim's Coq files, or why it has none, into its result.

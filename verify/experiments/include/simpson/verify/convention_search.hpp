@@ -93,13 +93,13 @@ std::vector<entry_score> score_entries(const std::vector<printed_entry>& printed
 ///   2. the other parameters are scanned on a dense grid (scan_points in all), and at each point the
 ///      scale parameters that minimise the sum of squared log ratios follow in closed form (least
 ///      squares, within their bounds);
-///   3. the best local minima of that scan are refined, then polished by NLopt's subplex on the
+///   3. the four best local minima of that scan are refined (a finer scan, then golden sections), then polished by NLopt's COBYLA on the
 ///      largest residual in half-units, the quantity the verdict judges.
 /// Every candidate is judged by a full run of the experiment, never by the fit. Candidates sorted by
 /// entries reproduced, then by worst residual.
 convention_search_result search_conventions(const std::vector<printed_entry>& printed, const std::vector<discrete_convention>& discrete,
                                             const std::vector<continuous_parameter>& continuous, const parametrised_experiment& experiment,
-                                            std::size_t scan_points = 512);
+                                            std::size_t scan_points = 128);
 
 /// "momentum: p/(m omega), m = 2.05": a candidate in words.
 std::string describe(const convention_candidate& c);
