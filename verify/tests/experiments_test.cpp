@@ -576,7 +576,7 @@ TEST(ConventionSearch, AHiddenConventionIsRecoveredWithItsParameters) {
 // internal nodes is not conserved) is not a table the paper's order column could describe: drawn again.
 TEST(ConventionSearch, RandomHiddenConventionsOverTheWholeFamilyAreAllRecovered) {
 #ifdef SIMPSON_SANITIZED
-  const int draws = 3;  // the same code, under the sanitizers at -O0 (about 15 s a search there)
+  const int draws = 2;  // the same code, under the sanitizers at -O0 (several seconds a search there)
 #else
   const int draws = 20;
 #endif

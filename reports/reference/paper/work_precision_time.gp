@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.78102e-08:0.000980039]
+set xrange [5.11548e-08:0.000958017]
 set xtics autofreq
 set mxtics default
 set yrange [4.29802e-15:0.337578]
@@ -37,7 +37,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.0435e-07:0.00480278]
+set xrange [1.0441e-07:0.00474606]
 set xtics autofreq
 set mxtics default
 set yrange [3.30045e-15:0.34185]
@@ -61,7 +61,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.14166e-06:0.0381354]
+set xrange [1.13467e-06:0.0379987]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -85,7 +85,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [2.42197e-06:0.0672136]
+set xrange [2.43438e-06:0.0672723]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -109,7 +109,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [3.21454e-06:0.0819019]
+set xrange [3.26084e-06:0.0818784]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -159,7 +159,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.78102e-08:0.000980039]
+set xrange [5.11548e-08:0.000958017]
 set xtics autofreq
 set mxtics default
 set yrange [4.29802e-15:0.337578]
@@ -183,7 +183,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.0435e-07:0.00480278]
+set xrange [1.0441e-07:0.00474606]
 set xtics autofreq
 set mxtics default
 set yrange [3.30045e-15:0.34185]
@@ -207,7 +207,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.14166e-06:0.0381354]
+set xrange [1.13467e-06:0.0379987]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -231,7 +231,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [2.42197e-06:0.0672136]
+set xrange [2.43438e-06:0.0672723]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -255,7 +255,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [3.21454e-06:0.0819019]
+set xrange [3.26084e-06:0.0818784]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]

@@ -21,16 +21,18 @@ struct basis_point {
 };
 
 /// Every run is linear in its initial state y_0 = A (cos(phase) u + sin(phase) v): the runs from u
-/// and v, computed once per (scheme, N, steps, internal nodes, m), give any amplitude and phase by
-/// combination; the energies by their quadratic forms. The convention search evaluates the
-/// experiment some 10^5 times at phases and amplitudes that change while these stay.
+/// and v, computed once per (scheme, N, steps, internal nodes), give any amplitude and phase by
+/// combination; the energies by their quadratic forms. And m scales out (lemma-dimensional-scaling:
+/// Phi(m) = S Phi(1) S^-1, S = diag(m, 1)): the runs are made with m = 1, and p, H and H_d are m times
+/// theirs. The convention search evaluates the experiment some 10^5 times at phases, amplitudes and
+/// masses that change while these stay.
 struct basis_key {
   bool simpson_scheme = false;
   long long N = 0, n = 0;
   bool internal_nodes = false;
-  double m = 0, h = 0;
+  double h = 0;
   bool operator==(const basis_key& o) const {
-    return simpson_scheme == o.simpson_scheme && N == o.N && n == o.n && internal_nodes == o.internal_nodes && m == o.m && h == o.h;
+    return simpson_scheme == o.simpson_scheme && N == o.N && n == o.n && internal_nodes == o.internal_nodes && h == o.h;
   }
 };
 
@@ -49,9 +51,9 @@ const std::vector<basis_point>& basis_run(const basis_key& key) {
     if (k == key) return points;
   }
   if (cache.size() >= 64) cache.erase(cache.begin());
-  const double omega = boost::math::constants::two_pi<double>();
-  const oscillator_parameters<double> par{key.m, omega, key.h};
-  const phase_point<double> u{key.m * omega, 0}, v{0, 1};
+  const double omega = boost::math::constants::two_pi<double>(), m = 1;
+  const oscillator_parameters<double> par{m, omega, key.h};
+  const phase_point<double> u{m * omega, 0}, v{0, 1};
   const one_step_matrix<double> phi = key.simpson_scheme ? simpson_map(par) : newmark_map(par);
   const double x = par.omega2_h2();
   std::vector<basis_point> points;
@@ -62,7 +64,7 @@ const std::vector<basis_point>& basis_run(const basis_key& key) {
       // midpoint of the affine interpolant for Newmark; p there m (q_r − q_l)/h, the slope of both.
       const auto internal = [&](const phase_point<double>& prev, const phase_point<double>& y) {
         const double qm = key.simpson_scheme ? (prev.q + y.q) / (2 * (1 - x / 8)) : (prev.q + y.q) / 2;
-        return phase_point<double>{key.m * (y.q - prev.q) / key.h, qm};
+        return phase_point<double>{m * (y.q - prev.q) / key.h, qm};
       };
       const double t = (static_cast<double>(j) - 0.5) * key.h;
       points.push_back({internal(pu, yu), internal(pv, yv), exact_solution(par, u, t), exact_solution(par, v, t), {}, {}, j, false});
@@ -98,7 +100,7 @@ table1_run_errors table1_run(bool simpson_scheme, long long N, const convention_
   const double h = 1.0 / static_cast<double>(fewer ? N - 1 : N);
   const oscillator_parameters<double> par{m, omega, h};
   const double cu = A * std::cos(phase), cv = A * std::sin(phase);
-  const phase_point<double> y0{m * omega * cu, cv};
+  const phase_point<double> y0{m * omega * cu, cv};  // H_0 of the run, for relative energies and the round-off bound
   table1_run_errors run;
   table_errors& e = run.errors;
   run.steps = n;
@@ -108,16 +110,16 @@ table1_run_errors table1_run(bool simpson_scheme, long long N, const convention_
   const double q_scale = relative ? A : 1.0;
   const double energy_scale = relative_energy ? H0 : 1.0;
   const auto combined = [&](const form_pair& f) { return cu * cu * f.xx + 2 * cu * cv * f.xy + cv * cv * f.yy; };
-  for (const basis_point& b : basis_run({simpson_scheme, N, n, internal_nodes, m, h})) {
+  for (const basis_point& b : basis_run({simpson_scheme, N, n, internal_nodes, h})) {
     const bool last = b.node && b.j == n;
     if (b.node && ((skip_start && b.j == 0) || (end_only && !last))) continue;
-    const double p = cu * b.yu.p + cv * b.yv.p, q = cu * b.yu.q + cv * b.yv.q;
-    const double exact_p = cu * b.eu.p + cv * b.ev.p, exact_q = cu * b.eu.q + cv * b.ev.q;
+    const double p = m * (cu * b.yu.p + cv * b.yv.p), q = cu * b.yu.q + cv * b.yv.q;
+    const double exact_p = m * (cu * b.eu.p + cv * b.ev.p), exact_q = cu * b.eu.q + cv * b.ev.q;
     e.p = std::max(e.p, std::abs(p - exact_p) / p_scale);
     e.q = std::max(e.q, std::abs(q - exact_q) / q_scale);
     if (energy_at_end && !last) continue;
-    e.energy = std::max(e.energy, std::abs(combined(b.H)) / energy_scale);
-    e.discrete_energy = std::max(e.discrete_energy, std::abs(combined(b.Hd)) / energy_scale);
+    e.energy = std::max(e.energy, m * std::abs(combined(b.H)) / energy_scale);
+    e.discrete_energy = std::max(e.discrete_energy, m * std::abs(combined(b.Hd)) / energy_scale);
   }
   run.H0 = relative_energy ? 1 : H0;
   return run;
