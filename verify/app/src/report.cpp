@@ -535,24 +535,17 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
                       join(c.methods, ", ") + (o.result.printed.is_null() ? "" : ", GiNaC"));
   }
 
-  md += "\n## Errata\n\n";
-  bool any_erratum = false;
-  for (const claim_outcome& o : r.outcomes) {
-    if (o.result.outcome != verdict::erratum) continue;
-    any_erratum = true;
-    md += finding_markdown(o, "");
-  }
-  if (!any_erratum) md += "None in this run.\n\n";
-
+  // The claims of one verdict, each with its printed and corrected statements.
+  const auto section_of = [&](verdict v) {
+    std::string out;
+    for (const claim_outcome& o : r.outcomes) {
+      if (o.result.outcome == v) out += finding_markdown(o, "");
+    }
+    return out.empty() ? std::string("None in this run.\n\n") : out;
+  };
+  md += "\n## Errata\n\n" + section_of(verdict::erratum);
   md += "## Unverifiable\n\nClaims about material the source does not carry (a figure, a reference): no verdict on the words is "
-        "possible; what the harness computed beside them is context.\n\n";
-  bool any_unverifiable = false;
-  for (const claim_outcome& o : r.outcomes) {
-    if (o.result.outcome != verdict::unverifiable) continue;
-    any_unverifiable = true;
-    md += finding_markdown(o, "");
-  }
-  if (!any_unverifiable) md += "None in this run.\n\n";
+        "possible; what the harness computed beside them is context.\n\n" + section_of(verdict::unverifiable);
 
   md += "## Failures\n\n";
   bool any_failure = false;
