@@ -5,6 +5,7 @@
 #include <simpson/newmark_map.hpp>
 #include <simpson/one_step_map.hpp>
 #include <simpson/oscillator_parameters.hpp>
+#include <simpson/precision_types.hpp>
 #include <simpson/residual.hpp>
 #include <simpson/simpson_map.hpp>
 
@@ -48,5 +49,16 @@ residual_and_bound<Real> discrete_energy_step_check(const oscillator_parameters<
   const Real condition = 1 + 1 / abs(Real(1 - par.omega2_h2() / 8));
   return {Real(discrete_energy(par, simpson_map(par) * y) - H), Real(64 * eps<Real>() * condition * H)};
 }
+
+// Instantiated once per precision in core/src/energy.cpp.
+#define SIMPSON_ENERGY_TEMPLATES(prefix, Real)                                                                    \
+  prefix template Real energy(const oscillator_parameters<Real>&, const phase_point<Real>&);                      \
+  prefix template Real discrete_energy(const oscillator_parameters<Real>&, const phase_point<Real>&);             \
+  prefix template residual_and_bound<Real> newmark_energy_step_check(const oscillator_parameters<Real>&,          \
+                                                                     const phase_point<Real>&);                   \
+  prefix template residual_and_bound<Real> discrete_energy_step_check(const oscillator_parameters<Real>&,         \
+                                                                      const phase_point<Real>&);
+#define SIMPSON_ENERGY_EXTERN(Real) SIMPSON_ENERGY_TEMPLATES(extern, Real)
+SIMPSON_FOR_EACH_PRECISION_TYPE(SIMPSON_ENERGY_EXTERN)
 
 }  // namespace simpson

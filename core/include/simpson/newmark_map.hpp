@@ -4,6 +4,7 @@
 
 #include <simpson/one_step_map.hpp>
 #include <simpson/oscillator_parameters.hpp>
+#include <simpson/precision_types.hpp>
 #include <simpson/residual.hpp>
 
 namespace simpson {
@@ -36,5 +37,14 @@ phase_point<Real> newmark_system_residual(const oscillator_parameters<Real>& par
   return {y_next.p - y.p + m * par.omega() * par.omega() * h * (y_next.q + y.q) / 2,
           (y_next.q - y.q) / h - (y_next.p + y.p) / (2 * m)};
 }
+
+// Instantiated once per precision in core/src/newmark_map.cpp.
+#define SIMPSON_NEWMARK_MAP_TEMPLATES(prefix, Real)                                                           \
+  prefix template one_step_matrix<Real> newmark_map(const oscillator_parameters<Real>&);                      \
+  prefix template residual_and_bound<Real> newmark_map_determinant_check(const oscillator_parameters<Real>&); \
+  prefix template phase_point<Real> newmark_system_residual(const oscillator_parameters<Real>&,               \
+                                                            const phase_point<Real>&, const phase_point<Real>&);
+#define SIMPSON_NEWMARK_MAP_EXTERN(Real) SIMPSON_NEWMARK_MAP_TEMPLATES(extern, Real)
+SIMPSON_FOR_EACH_PRECISION_TYPE(SIMPSON_NEWMARK_MAP_EXTERN)
 
 }  // namespace simpson

@@ -3,12 +3,8 @@
 // Used alike by the core's tests, the claims ledger, the property tests and the reports. The
 // traits of a scalar (eps, is_exact_v, to_string) are scalar_traits.hpp's: formulas need only those.
 
+#include <simpson/precision_types.hpp>
 #include <simpson/scalar_traits.hpp>
-
-#include <boost/multiprecision/cpp_bin_float.hpp>
-#include <boost/multiprecision/cpp_int.hpp>
-#include <boost/multiprecision/float128.hpp>
-#include <boost/multiprecision/mpfr.hpp>
 
 #include <cerrno>
 #include <cstdlib>
@@ -22,14 +18,6 @@
 #include <vector>
 
 namespace simpson {
-
-using float128 = boost::multiprecision::float128;
-using bin50 = boost::multiprecision::cpp_bin_float_50;
-using bin100 = boost::multiprecision::cpp_bin_float_100;
-/// MPFR float whose number of decimal digits is chosen at run time (see scoped_mpfr_digits).
-using mpfr = boost::multiprecision::mpfr_float;
-/// Exact rationals: every formula that is rational in its inputs evaluates without rounding.
-using rational = boost::multiprecision::cpp_rational;
 
 /// Sets the working precision of newly created `mpfr` values for the lifetime of the object,
 /// then restores the previous one. Values keep the precision they were created with.

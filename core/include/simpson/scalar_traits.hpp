@@ -1,7 +1,7 @@
 #pragma once
 // What generic code needs to know of its scalar: whether it is exact, its unit round-off, and its
-// decimal text. Header-only and free of any backend: the formulas of the core include this, and
-// only code that names a precision (precision.hpp) pulls in MPFR, GMP and quadmath.
+// decimal text. Header-only and free of any backend. The headers of the formulas used with the
+// whole precision list also include precision_types.hpp, to declare their instances extern.
 
 #include <iomanip>
 #include <limits>

@@ -3,6 +3,7 @@
 
 #include <simpson/one_step_map.hpp>
 #include <simpson/oscillator_parameters.hpp>
+#include <simpson/precision_types.hpp>
 #include <simpson/residual.hpp>
 
 namespace simpson {
@@ -43,5 +44,14 @@ template <class Real>
 one_step_matrix<Real> simpson_map_backward(const oscillator_parameters<Real>& par) {
   return detail::simpson_map_with_step(par.m(), par.omega(), Real(-par.h()));
 }
+
+// Instantiated once per precision in core/src/simpson_map.cpp.
+#define SIMPSON_MAP_TEMPLATES(prefix, Real)                                                                      \
+  prefix template one_step_matrix<Real> detail::simpson_map_with_step(const Real&, const Real&, const Real&);    \
+  prefix template one_step_matrix<Real> simpson_map(const oscillator_parameters<Real>&);                         \
+  prefix template residual_and_bound<Real> simpson_map_determinant_check(const oscillator_parameters<Real>&);    \
+  prefix template one_step_matrix<Real> simpson_map_backward(const oscillator_parameters<Real>&);
+#define SIMPSON_MAP_EXTERN(Real) SIMPSON_MAP_TEMPLATES(extern, Real)
+SIMPSON_FOR_EACH_PRECISION_TYPE(SIMPSON_MAP_EXTERN)
 
 }  // namespace simpson
