@@ -14,6 +14,8 @@
 
 #include <gtest/gtest.h>
 
+#include <numeric>
+
 #include <cstdlib>
 #include <random>
 
@@ -138,6 +140,36 @@ TEST(GappaGlobal, TheLiftingConstantsAreExactAndTheBoundIsWithinTwiceTheErrorMad
   EXPECT_LE(rows.back().bound_over_seen, 2) << rows.back().total_bound << " against " << rows.back().total_seen;
   EXPECT_LT(std::stod(rows.back().total_bound), 0.0308 / 20);
   EXPECT_THROW(global_comparison(v.problem, *lifting, rational(1, 32), v.y0, {lifting->valid_steps + 1}), std::invalid_argument);
+}
+
+// VerifiedLeapfrog's 0.0308 holds at every n <= 1000; the row set beside it is uniform over n <= 1000:
+// each figure the largest over every n, found again here from the rows at each n.
+TEST(GappaGlobal, TheUniformRowIsTheLargestOverEveryStep) {
+  if (!program_on_path("gappa")) GTEST_SKIP() << "gappa not found: nothing proved";
+  const verinum_case v;
+  const roundoff_proof proof = prove_roundoff(v.problem, false);
+  ASSERT_EQ(proof.status, proof_status::proved) << proof.reason;
+  const lifting_constants lifting = *lifting_for(v.problem, proof.bounds, v.y0);
+  constexpr long long steps = 1000;
+  std::vector<long long> every(steps);
+  std::iota(every.begin(), every.end(), 1LL);
+  const std::vector<global_row> rows = global_comparison(v.problem, lifting, rational(1, 32), v.y0, every);
+  const global_row uniform = global_uniform(v.problem, lifting, rational(1, 32), v.y0, steps);
+  EXPECT_TRUE(uniform.uniform);
+  EXPECT_EQ(uniform.n, steps);
+  double seen = 0, discretization = 0, bound = 0;
+  long long argmax = 0;
+  for (const global_row& r : rows) {
+    if (std::stod(r.total_seen) > seen) argmax = r.n;
+    seen = std::max(seen, std::stod(r.total_seen));
+    discretization = std::max(discretization, std::stod(r.discretization));
+    bound = std::max(bound, std::stod(r.total_bound));
+  }
+  EXPECT_EQ(std::stod(uniform.total_seen), seen) << "largest error made at n = " << argmax;
+  EXPECT_EQ(std::stod(uniform.discretization), discretization);
+  EXPECT_GE(std::stod(uniform.total_bound), bound);
+  EXPECT_GE(std::stod(uniform.total_bound), seen);
+  EXPECT_THROW(global_uniform(v.problem, lifting, rational(1, 32), v.y0, lifting.valid_steps + 1), std::invalid_argument);
 }
 
 TEST(GappaGlobal, TheLiftingLemmaIsCheckedByCoqcAndAWrongConstantIsRejected) {

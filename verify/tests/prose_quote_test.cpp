@@ -142,7 +142,8 @@ INSTANTIATE_TEST_SUITE_P(
         sentence_change{"fourth-order-truncation", "(\\ref{schema-ordre-3}) is fourth order", "(\\ref{schema-ordre-3}) is second order",
                    verdict::erratum},
         sentence_change{"roots-product-one", "is equal to 1 and the scheme", "is equal to 2 and the scheme", verdict::erratum},
-        sentence_change{"phi3-explicit", "is an explicit scheme", "is an implicit scheme", verdict::erratum},
+        // Phi_3's entries have the denominator 1 + omega^2 h^2/24: the scheme is implicit as the field defines it.
+        sentence_change{"phi3-explicit", "is an explicit scheme", "is an implicit scheme", verdict::holds},
         sentence_change{"phi3-symplectic", "in consequence the scheme is symplectic", "in consequence the scheme is not symplectic",
                    verdict::erratum},
         sentence_change{"newmark-unconditional-stability", "particular inconditionally stable", "particular conditionally stable",
@@ -161,10 +162,8 @@ INSTANTIATE_TEST_SUITE_P(
                         "$ 1.03 \\,\\, 10^{-4} $   & $ 2.57 \\,\\, 10^{-5} $", verdict::fails},
         sentence_change{"nonlinear-internal-node", "is not possible in that case", "is possible in that case", verdict::holds},
         sentence_change{"abstract-stable", "It is a stable,", "It is a conditionally stable,", verdict::holds},
-        // "It is a stable, explicit ... scheme": "it" is the scheme the sentence before makes explicit for the
-        // harmonic oscillator; made explicit for general systems instead, "explicit" is false.
-        sentence_change{"abstract-explicit", "is explicited for an elementary harmonic oscillator", "is explicited for general dynamical systems",
-                        verdict::erratum},
+        // "It is a stable, explicit ... scheme": Section 6's wording (phi3-explicit); "implicit" holds.
+        sentence_change{"abstract-explicit", "explicit, and  symplectic", "implicit, and  symplectic", verdict::holds},
         sentence_change{"experiment-conventions", "p(t) = m \\, \\omega \\, \\cos", "p(t) = m \\, \\cos", verdict::fails}));
 
 // "All the factors ... are negative": an erratum of wording as printed (the prefactor is positive;
@@ -208,11 +207,37 @@ TEST(ChangedSentence, FigureOneIsUnverifiableWithoutItsFileAndJudgedWithIt) {
 }
 
 TEST(ChangedSentence, ExplicitForNonlinearProblemsIsStillAnErratum) {
-  // "nonlinear" is not a restriction to linear problems: the words stay wrong.
+  // "nonlinear" is not a restriction to linear problems: the words are wrong in substance, not wording.
   const paper_reading reading = altered_reading("explicit, and  symplectic", "explicit for nonlinear problems too, and symplectic");
   const claim_result r = check_claim(find_claim("abstract-explicit"), run_context{{precision::parse("double")}, 20230830, 2, &reading});
   EXPECT_EQ(r.outcome, verdict::erratum);
   EXPECT_EQ(r.evidence["stated"]["qualified"], false);
+  EXPECT_EQ(r.note.find("Wording"), std::string::npos) << r.note;
+  // As printed (explicit for the harmonic oscillator, read in context): Section 6's wording finding.
+  const claim_result printed = check_claim(find_claim("abstract-explicit"), run_context{{precision::parse("double")}, 20230830, 2, nullptr});
+  EXPECT_EQ(printed.outcome, verdict::erratum);
+  EXPECT_EQ(printed.note.rfind("Wording", 0), 0u) << printed.note;
+  EXPECT_EQ(find_claim("abstract-explicit").follows_from, "phi3-explicit");
+  // "It" is the scheme the sentence before makes explicit for the harmonic oscillator; made explicit
+  // for general systems instead, "explicit" is false in substance too.
+  const paper_reading general = altered_reading("is explicited for an elementary harmonic oscillator", "is explicited for general dynamical systems");
+  const claim_result unqualified = check_claim(find_claim("abstract-explicit"), run_context{{precision::parse("double")}, 20230830, 2, &general});
+  EXPECT_EQ(unqualified.outcome, verdict::erratum);
+  EXPECT_EQ(unqualified.note.find("Wording"), std::string::npos) << unqualified.note;
+}
+
+// "an explicit scheme": explicit as the field defines it (no equation solved per step; on a linear
+// problem, a one-step map polynomial in h). The old check (denominators without a real root) held,
+// and called Newmark's implicit midpoint explicit too. The criterion must separate the two peers.
+TEST(ChangedSentence, ExplicitIsJudgedAsTheFieldDefinesIt) {
+  const claim_result printed = check_claim(find_claim("phi3-explicit"), run_context{{precision::parse("double")}, 20230830, 2, nullptr});
+  EXPECT_EQ(printed.outcome, verdict::erratum);
+  EXPECT_EQ(printed.note.rfind("Wording:", 0), 0u) << printed.note;
+  EXPECT_NE(printed.correction.find("1 + omega^2 h^2/24"), std::string::npos) << printed.correction;
+  const json& peers = printed.evidence["exact"]["peers"];
+  ASSERT_EQ(peers.size(), 2u);
+  EXPECT_EQ(peers[0]["explicit"], true);   // Stormer-Verlet
+  EXPECT_EQ(peers[1]["explicit"], false);  // Newmark
 }
 
 TEST(ChangedTable, TableOneIsJudgedAsPrinted) {

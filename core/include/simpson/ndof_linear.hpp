@@ -8,8 +8,6 @@
 // scalar-product overload probes is_convertible<Matrix, number>, a hard error in cpp_int's
 // byte-container constructor); the exact proofs are GiNaC's (claims ndof-symplectic, ndof-energy).
 
-#include <simpson/precision_types.hpp>
-
 #include <Eigen/Dense>
 
 #include <stdexcept>
@@ -84,15 +82,5 @@ dense_matrix<Real> symplectic_form(Eigen::Index n) {
   J.bottomLeftCorner(n, n) = dense_matrix<Real>::Identity(n, n);
   return J;
 }
-
-// Instantiated once, in core/src/ndof_linear.cpp, for the two scalars it is used with (double for
-// the experiments, mpfr for the ledger and the tests); the others instantiate it where they use it.
-#define SIMPSON_NDOF_LINEAR_TEMPLATES(prefix, Real)                                                              \
-  prefix template dense_matrix<Real> ndof_simpson_map(const dense_matrix<Real>&, const dense_matrix<Real>&,      \
-                                                      const Real&);                                              \
-  prefix template dense_matrix<Real> ndof_discrete_energy_form(const dense_matrix<Real>&,                        \
-                                                               const dense_matrix<Real>&, const Real&);
-SIMPSON_NDOF_LINEAR_TEMPLATES(extern, double)
-SIMPSON_NDOF_LINEAR_TEMPLATES(extern, ::simpson::mpfr)
 
 }  // namespace simpson

@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.11548e-08:0.000958017]
+set xrange [5.79434e-08:0.000933779]
 set xtics autofreq
 set mxtics default
 set yrange [4.29802e-15:0.337578]
@@ -37,7 +37,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.0441e-07:0.00474606]
+set xrange [1.04411e-07:0.00474471]
 set xtics autofreq
 set mxtics default
 set yrange [3.30045e-15:0.34185]
@@ -61,7 +61,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.13467e-06:0.0379987]
+set xrange [1.12782e-06:0.0382321]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -85,7 +85,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [2.43438e-06:0.0672723]
+set xrange [2.40517e-06:0.0689906]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -109,7 +109,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [3.26084e-06:0.0818784]
+set xrange [3.22417e-06:0.0834764]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -159,7 +159,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.11548e-08:0.000958017]
+set xrange [5.79434e-08:0.000933779]
 set xtics autofreq
 set mxtics default
 set yrange [4.29802e-15:0.337578]
@@ -183,7 +183,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.0441e-07:0.00474606]
+set xrange [1.04411e-07:0.00474471]
 set xtics autofreq
 set mxtics default
 set yrange [3.30045e-15:0.34185]
@@ -207,7 +207,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.13467e-06:0.0379987]
+set xrange [1.12782e-06:0.0382321]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -231,7 +231,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [2.43438e-06:0.0672723]
+set xrange [2.40517e-06:0.0689906]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -255,7 +255,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [3.26084e-06:0.0818784]
+set xrange [3.22417e-06:0.0834764]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]

@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace simpson::verify {
@@ -42,9 +43,15 @@ rational upper_as_rational(const interval& x) {
 /// ‖(a, b)‖₂ enclosed.
 interval euclidean(const interval& a, const interval& b) { return sqrt(interval(a * a + b * b)); }
 
+/// The errors of one n, enclosed.
+struct errors_at {
+  interval roundoff, discretization, total;
+};
+
 template <class Real>
 std::vector<global_row> compare_in(const roundoff_problem& problem, const lifting_constants& lifting, const rational& h,
-                                   const phase_point<rational>& y0, const std::vector<long long>& at, const flow_oscillator& flow) {
+                                   const phase_point<rational>& y0, const std::vector<long long>& at, const flow_oscillator& flow,
+                                   bool uniform) {
   std::map<std::string, Real> stored;
   for (const auto& [name, value] : problem.stored) stored[name] = static_cast<Real>(value);
   const scoped_interval_digits digits(40);
@@ -60,10 +67,7 @@ std::vector<global_row> compare_in(const roundoff_problem& problem, const liftin
   const interval omega = flow.two_pi ? interval(2 * boost::math::constants::pi<interval>()) : enclosure_of_rational(flow.omega);
   const interval stiffness = mass * omega;  // mω
   phase_point<Real> y{static_cast<Real>(y0.p), static_cast<Real>(y0.q)};  // exact: y₀ is chosen representable
-  std::vector<global_row> rows;
-  long long n = 0;
-  for (const long long target : at) {
-    for (; n < target; ++n) y = evaluate(problem.program, stored, y);
+  const auto errors = [&](long long n) {
     const interval angle = phi * interval(n), cos_n = cos(angle), sin_n = sin(angle);
     const phase_point<interval> z{interval((cos_n * u0p - sin_n * u0q) / sw_p), interval((sin_n * u0p + cos_n * u0q) / sw_q)};
     // p(t) = p₀ cos ωt − mω q₀ sin ωt, q(t) = q₀ cos ωt + p₀/(mω) sin ωt.
@@ -71,24 +75,51 @@ std::vector<global_row> compare_in(const roundoff_problem& problem, const liftin
     const phase_point<interval> exact{interval(p0 * cosine - stiffness * q0 * sine), interval(q0 * cosine + p0 / stiffness * sine)};
     const phase_point<interval> computed{enclosure_of_rational(exact_binary_value(static_cast<double>(y.p))),
                                          enclosure_of_rational(exact_binary_value(static_cast<double>(y.q)))};
-    const interval roundoff = euclidean(interval(computed.p - z.p), interval(computed.q - z.q));
-    const interval discretization = euclidean(interval(z.p - exact.p), interval(z.q - exact.q));
-    const interval total = euclidean(interval(computed.p - exact.p), interval(computed.q - exact.q));
+    return errors_at{euclidean(interval(computed.p - z.p), interval(computed.q - z.q)),
+                     euclidean(interval(z.p - exact.p), interval(z.q - exact.q)),
+                     euclidean(interval(computed.p - exact.p), interval(computed.q - exact.q))};
+  };
+  // A row from the round-off bound at n, the discretization's upper end, and the errors seen.
+  const auto row_of = [&](long long n, const rational& discretization, const interval& roundoff_seen, const interval& total_seen) {
     const rational roundoff_bound = rational(n) * lifting.epsilon * lifting.to_euclidean;
-    const rational total_bound = roundoff_bound + upper_as_rational(discretization);
+    const rational total_bound = roundoff_bound + discretization;
     global_row row;
     row.n = n;
+    row.uniform = uniform;
     row.roundoff_bound = decimal_rounded_up(roundoff_bound);
-    row.roundoff_seen = boost::multiprecision::mpfr_float(median(roundoff)).str(2, std::ios_base::scientific);  // three significant digits
-    row.discretization = decimal_rounded_up(upper_as_rational(discretization));
+    row.roundoff_seen = boost::multiprecision::mpfr_float(median(roundoff_seen)).str(2, std::ios_base::scientific);  // three significant digits
+    row.discretization = decimal_rounded_up(discretization);
     row.total_bound = decimal_rounded_up(total_bound);
-    row.total_seen = boost::multiprecision::mpfr_float(lower(total)).str(2, std::ios_base::scientific);  // three significant digits
+    row.total_seen = boost::multiprecision::mpfr_float(lower(total_seen)).str(2, std::ios_base::scientific);  // three significant digits
     // The ratios are computed in double (shown to three digits).
-    const double seen_total = static_cast<double>(boost::multiprecision::mpfr_float(lower(total)));
-    const double seen_roundoff = static_cast<double>(boost::multiprecision::mpfr_float(lower(roundoff)));
+    const double seen_total = static_cast<double>(boost::multiprecision::mpfr_float(lower(total_seen)));
+    const double seen_roundoff = static_cast<double>(boost::multiprecision::mpfr_float(lower(roundoff_seen)));
     row.bound_over_seen = seen_total > 0 ? static_cast<double>(total_bound) / seen_total : 0;
     row.roundoff_bound_over_seen = seen_roundoff > 0 ? static_cast<double>(roundoff_bound) / seen_roundoff : 0;
-    rows.push_back(row);
+    return row;
+  };
+  std::vector<global_row> rows;
+  long long n = 0;
+  for (const long long target : at) {
+    if (!uniform) {
+      for (; n < target; ++n) y = evaluate(problem.program, stored, y);
+      const errors_at e = errors(n);
+      rows.push_back(row_of(n, upper_as_rational(e.discretization), e.roundoff, e.total));
+      continue;
+    }
+    // Over every n ≤ target: the bound nεc grows with n, so the target's is the largest; the
+    // discretization's largest upper end; the largest round-off and total seen (as enclosures whose
+    // lower end is the largest lower end, so that "seen" is never overstated).
+    rational discretization(0);
+    errors_at largest{interval(0), interval(0), interval(0)};
+    for (; n < target;) {
+      y = evaluate(problem.program, stored, y);
+      const errors_at e = errors(++n);
+      discretization = std::max(discretization, upper_as_rational(e.discretization));
+      if (lower(e.roundoff) > lower(largest.roundoff)) largest.roundoff = e.roundoff;
+      if (lower(e.total) > lower(largest.total)) largest.total = e.total;
+    }
+    rows.push_back(row_of(n, discretization, largest.roundoff, largest.total));
   }
   return rows;
 }
@@ -135,8 +166,18 @@ std::vector<global_row> global_comparison(const roundoff_problem& problem, const
                                   std::to_string(lifting.valid_steps) + " steps the box holds");
     }
   }
-  return problem.format.mantissa_bits == 24 ? compare_in<float>(problem, lifting, h, y0, at, flow)
-                                            : compare_in<double>(problem, lifting, h, y0, at, flow);
+  return problem.format.mantissa_bits == 24 ? compare_in<float>(problem, lifting, h, y0, at, flow, false)
+                                            : compare_in<double>(problem, lifting, h, y0, at, flow, false);
+}
+
+global_row global_uniform(const roundoff_problem& problem, const lifting_constants& lifting, const rational& h,
+                          const phase_point<rational>& y0, long long steps, const flow_oscillator& flow) {
+  if (steps < 1 || steps > lifting.valid_steps) {
+    throw std::invalid_argument("global_uniform: n <= " + std::to_string(steps) + " is not within the 1.." +
+                                std::to_string(lifting.valid_steps) + " steps the box holds");
+  }
+  return problem.format.mantissa_bits == 24 ? compare_in<float>(problem, lifting, h, y0, {steps}, flow, true).front()
+                                            : compare_in<double>(problem, lifting, h, y0, {steps}, flow, true).front();
 }
 
 std::string lifting_lemma_coq(const roundoff_problem& problem, const claimed_bounds& one_step, const lifting_constants& lifting) {

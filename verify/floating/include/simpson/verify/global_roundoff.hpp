@@ -40,6 +40,7 @@ std::optional<lifting_constants> lifting_for(const roundoff_problem& problem, co
 /// One row of the comparison at n steps: every figure as text (bounds rounded up).
 struct global_row {
   long long n = 0;
+  bool uniform = false;             // every figure is the largest over 1 ≤ k ≤ n (global_uniform), not at n
   std::string roundoff_bound;       // n ε c: ‖ŷ_n − Φⁿy₀‖₂ proved
   std::string roundoff_seen;        // ‖ŷ_n − Φⁿy₀‖₂ of the float iterate (enclosed, shown to 3 digits)
   std::string discretization;       // ‖Φⁿy₀ − y(t_n)‖₂, the upper end of its enclosure (rounded up)
@@ -65,6 +66,12 @@ struct flow_oscillator {
 std::vector<global_row> global_comparison(const roundoff_problem& problem, const lifting_constants& lifting, const rational& h,
                                           const phase_point<rational>& y0, const std::vector<long long>& at,
                                           const flow_oscillator& flow = {});
+
+/// Over every k ≤ n at once (1 ≤ n ≤ lifting.valid_steps): a bound uniform in k, n ε c plus the
+/// largest discretization error's upper end, against the largest error made, max_k ‖ŷ_k − y(t_k)‖₂.
+/// A published bound that holds at every k ≤ n compares with this row, not with the row at n.
+global_row global_uniform(const roundoff_problem& problem, const lifting_constants& lifting, const rational& h,
+                          const phase_point<rational>& y0, long long steps, const flow_oscillator& flow = {});
 
 /// The lifting lemma as a Coq file (standard library reals, lra and nra): for the exact Φ and Q,
 /// Q(Φz) = Q(z); |e_p| ≤ B_p ∧ |e_q| ≤ B_q ⇒ Q(e) ≤ ε²; and d_{k+1} = Φd_k + e_k with those e_k and
