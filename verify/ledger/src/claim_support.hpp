@@ -6,6 +6,8 @@
 #include <simpson/verify/exact_proof.hpp>
 #include <simpson/verify/numeric_recheck.hpp>
 
+#include "grid_lemma.hpp"
+
 #include <simpson/one_step_map.hpp>
 
 #include <string>
@@ -35,10 +37,11 @@ inline proof prove_zero(const std::string& reduction, const symbolic& difference
   return p;
 }
 
-/// Grid lemma over further variables: `f(values)` gives the symbolic differences the claim says
-/// are zero (one, or a std::vector of several, each checked on its own) at integer values
-/// 1, ..., bound + 1 of each variable (nonzero, so divisions are defined); proved when they are
-/// zero at every point, given that each is a polynomial of degree ≤ bound in each variable.
+/// Grid lemma over further variables (grid_lemma.hpp): `f(values)`, generic over the scalar, gives
+/// the differences the claim says are zero (one, or a std::vector of several, each checked on its
+/// own). Evaluated in our kernel at integer values 1, ..., bound + 1 of each variable (nonzero, so
+/// divisions are defined); proved when they are zero at every point and the premise, computed in
+/// GiNaC, holds: each is a polynomial of degree ≤ bound in each variable.
 template <class F>
 proof prove_zero_on_grid(const std::string& reduction, const std::vector<std::string>& variables,
                          const std::vector<int>& bounds, F&& f) {
@@ -46,24 +49,18 @@ proof prove_zero_on_grid(const std::string& reduction, const std::vector<std::st
   symbolic witness;
   const auto first = first_nonzero_on_grid(bounds, [&](const std::vector<int>& point) {
     ++points;
-    std::vector<rational> values;
-    for (const int v : point) values.emplace_back(v + 1);
-    const auto value = f(values);
-    if constexpr (std::is_same_v<std::decay_t<decltype(value)>, symbolic>) {
-      witness = value;
-    } else {
-      witness = symbolic(0);
-      for (const symbolic& part : value) {
-        if (!part.is_zero()) {
-          witness = part;
-          break;
-        }
+    std::vector<symbolic> values;
+    for (const int v : point) values.emplace_back(rational(v + 1));
+    witness = symbolic(0);
+    for (const symbolic& part : differences_of<symbolic>(f(values))) {
+      if (!part.is_zero()) {
+        witness = part;
+        break;
       }
     }
     return witness;
   });
   proof p;
-  p.proved = !first.has_value();
   p.evidence["method"] = "exact";
   p.evidence["reduction"] = reduction;
   std::string grid;
@@ -73,8 +70,13 @@ proof prove_zero_on_grid(const std::string& reduction, const std::vector<std::st
   }
   p.evidence["grid"] = grid;
   p.evidence["points_evaluated"] = points;
-  if (p.proved) {
-    p.evidence["result"] = "zero at every grid point: identity proved (grid lemma)";
+  json premise;
+  const bool premise_holds = grid_premise_holds(variables, bounds, f, premise);
+  p.evidence["premise"] = premise;
+  p.proved = !first.has_value() && premise_holds;
+  if (!first.has_value()) {
+    p.evidence["result"] = premise_holds ? "zero at every grid point: identity proved (grid lemma)"
+                                         : "zero at every grid point, but the premise fails: nothing proved";
   } else {
     std::string at;
     for (std::size_t k = 0; k < first->size(); ++k) {
@@ -83,6 +85,29 @@ proof prove_zero_on_grid(const std::string& reduction, const std::vector<std::st
     p.evidence["result"] = "nonzero at " + at + ": identity false";
     p.evidence["numerator_there"] = to_string(witness.numerator(), "θ");
   }
+  return p;
+}
+
+/// An identity over a finite set, checked at every member: `f(k)` for k = 0..last gives the
+/// differences (one, or a std::vector of several) that must be zero. No premise: the set is the
+/// whole of what the claim is about (e.g. the monomials t^k, k ≤ 6, of an expansion exact to degree 6).
+template <class F>
+proof prove_zero_at_each(const std::string& reduction, const std::string& variable, int last, F&& f) {
+  proof p;
+  p.evidence["method"] = "exact";
+  p.evidence["reduction"] = reduction;
+  p.evidence["checked"] = variable + " = 0.." + std::to_string(last) + ", every member of the set";
+  for (int k = 0; k <= last; ++k) {
+    for (const symbolic& part : differences_of<symbolic>(f(k))) {
+      if (!part.is_zero()) {
+        p.evidence["result"] = "nonzero at " + variable + " = " + std::to_string(k) + ": identity false";
+        p.evidence["numerator_there"] = to_string(part.numerator(), "θ");
+        return p;
+      }
+    }
+  }
+  p.proved = true;
+  p.evidence["result"] = "zero at every member: identity proved";
   return p;
 }
 
@@ -151,15 +176,6 @@ inline std::vector<std::pair<std::string, std::string>> affirmed_or_denied(const
   return {{word, "affirmed"}, {"not " + word, "denied"}, {"in" + word, "denied"}, {"un" + word, "denied"}, {"non-" + word, "denied"}};
 }
 
-/// The symbolic value of an exact-difference derivative (exact for polynomials of degree ≤ 4
-/// in the differentiated variable): (4 D(1) − D(2)) / 3 with D(e) the central difference.
-template <class F>
-symbolic exact_derivative(F&& f, const symbolic& at) {
-  const symbolic d1 = (f(at + 1) - f(at - 1)) / 2;
-  const symbolic d2 = (f(at + 2) - f(at - 2)) / 4;
-  return (4 * d1 - d2) / 3;
-}
-
 /// The numeric recheck of a check that lives beside its formula in the core:
 /// `check(parameters, state)` returns its residual and round-off bound at each sampled case.
 template <class Check>
@@ -174,17 +190,20 @@ json recheck_with(const run_context& ctx, const std::string& stream, Check&& che
 /// stated for a general V are proved (each of them is linear in V).
 struct monomial_potential {
   int k;
-  symbolic operator()(const symbolic& q) const { return power(q, k); }
-  symbolic derivative(const symbolic& q) const { return k == 0 ? symbolic(0) : symbolic(k) * power(q, k - 1); }
-  static symbolic power(const symbolic& q, int n) {
-    symbolic v(1);
+  template <class S>
+  S operator()(const S& q) const { return power(q, k); }
+  template <class S>
+  S derivative(const S& q) const { return k == 0 ? S(0) : S(k) * power(q, k - 1); }
+  template <class S>
+  static S power(const S& q, int n) {
+    S v(1);
     for (int i = 0; i < n; ++i) v = v * q;
     return v;
   }
 };
 
 /// Proves f(V, values) ≡ 0 on the grid for V = q^k, k = 0..4: hence for every polynomial V of
-/// degree ≤ 4, the identity being linear in V.
+/// degree ≤ 4, the identity being linear in V. `f` is generic over the scalar of `values`.
 template <class F>
 claim_result identity_for_quartic_potentials(const std::string& reduction, const std::vector<std::string>& variables,
                                              const std::vector<int>& bounds, F&& f, std::string note) {
@@ -193,7 +212,7 @@ claim_result identity_for_quartic_potentials(const std::string& reduction, const
   for (int k = 0; k <= 4; ++k) {
     const monomial_potential V{k};
     const proof p = prove_zero_on_grid(reduction + "; V(q) = q^" + std::to_string(k), variables, bounds,
-                                       [&](const std::vector<rational>& values) { return f(V, values); });
+                                       [&](const auto& values) { return f(V, values); });
     all = all && p.proved;
     per_potential.push_back(p.evidence);
   }

@@ -133,17 +133,16 @@ claim_result check_peer_schemes(const run_context& ctx) {
 
   // The identity with Lobatto IIIA–IIIB, beyond any order: rational functions of θ, with m and ω
   // on a grid ((mω)² times each gap is a polynomial of degree <= 4 in m and in ω).
-  const symbolic theta = symbolic::variable();
   const proof lobatto = prove_zero_on_grid(
       "h = theta/omega; (m omega)^2 times each entry of Phi_Lobatto(IIIA for q, IIIB for p, 3 stages) minus Phi_3",
-      {"m", "omega"}, 4, [&](const std::vector<rational>& v) {
-        const symbolic m(v[0]), w(v[1]), clear = m * w * m * w;
-        const oscillator_parameters<symbolic> par{m, w, theta / w};
-        const one_step_matrix<symbolic> a = partitioned_runge_kutta_map(par, lobatto_iiia3_tableau<symbolic>(),
-                                                                        lobatto_iiib3_tableau<symbolic>());
-        const one_step_matrix<symbolic> b = simpson_map(par);
-        return std::vector<symbolic>{clear * (a.alpha - b.alpha), clear * (a.beta - b.beta), clear * (a.gamma - b.gamma),
-                                     clear * (a.delta - b.delta)};
+      {"m", "omega"}, 4, [&](const auto& v) {
+        using S = std::decay_t<decltype(v[0])>;
+        const S m(v[0]), w(v[1]), clear = m * w * m * w;
+        const oscillator_parameters<S> par{m, w, S(theta_variable<S>() / w)};
+        const one_step_matrix<S> a = partitioned_runge_kutta_map(par, lobatto_iiia3_tableau<S>(), lobatto_iiib3_tableau<S>());
+        const one_step_matrix<S> b = simpson_map(par);
+        return std::vector<S>{clear * (a.alpha - b.alpha), clear * (a.beta - b.beta), clear * (a.gamma - b.gamma),
+                              clear * (a.delta - b.delta)};
       });
 
   // Numeric: the Lobatto stage algorithm against Φ₃ y at random (m, ω, h, p, q). Both sum terms of

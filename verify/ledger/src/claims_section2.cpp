@@ -20,12 +20,12 @@ namespace simpson::verify::detail {
 namespace {
 
 /// ∂/∂q_1 of Σ_{j=first}^{N−1} L(q_j, q_{j+1}) for N = 3, by exact differences.
-template <class Lagrangian>
-symbolic action_derivative_at_q1(Lagrangian&& L, int first, const std::vector<symbolic>& q) {
-  const auto action = [&](const symbolic& q1) {
-    std::vector<symbolic> nodes = q;
+template <class Lagrangian, class S>
+S action_derivative_at_q1(Lagrangian&& L, int first, const std::vector<S>& q) {
+  const auto action = [&](const S& q1) {
+    std::vector<S> nodes = q;
     nodes[1] = q1;
-    symbolic sum(0);
+    S sum(0);
     for (int j = first; j <= 2; ++j) sum += L(nodes[static_cast<std::size_t>(j)], nodes[static_cast<std::size_t>(j) + 1]);
     return sum;
   };
@@ -33,14 +33,14 @@ symbolic action_derivative_at_q1(Lagrangian&& L, int first, const std::vector<sy
 }
 
 claim_result check_action_range(const run_context&) {
-  const auto par = unit_oscillator_in_theta();
-  const auto L = [&](const symbolic& l, const symbolic& r) {
-    return classical_lagrangian(par.m(), par.h(), [&](const symbolic& v) { return par.potential(v); }, l, r);
-  };
-  const auto gradient = [&](const symbolic& v) { return par.force_gradient(v); };
   const auto euler_lagrange_gap = [&](int first) {
-    return [&, first](const std::vector<rational>& v) {
-      const std::vector<symbolic> q{symbolic(v[0]), symbolic(v[1]), symbolic(v[2]), symbolic(v[3])};
+    return [first](const auto& q) {
+      using S = std::decay_t<decltype(q[0])>;
+      const auto par = theta_oscillator<S>();
+      const auto L = [&](const S& l, const S& r) {
+        return classical_lagrangian(par.m(), par.h(), [&](const S& v) { return par.potential(v); }, l, r);
+      };
+      const auto gradient = [&](const S& v) { return par.force_gradient(v); };
       return action_derivative_at_q1(L, first, q) + par.h() * classical_scheme_residual(par.m(), par.h(), gradient, q[0], q[1], q[2]);
     };
   };
@@ -58,15 +58,17 @@ claim_result check_action_range(const run_context&) {
 claim_result check_classical_euler_lagrange(const run_context&) {
   // dL_d/dq_r(q_{j-1}, q_j) + dL_d/dq_l(q_j, q_{j+1}) + h (schema-ordre-deux) = 0: a polynomial of
   // degree <= 4 in each q and of degree 1 in m.
-  const symbolic h = symbolic::variable();
   return identity_for_quartic_potentials(
       "h = theta; dL_d/dq_r(q_{j-1},q_j) + dL_d/dq_l(q_j,q_{j+1}) (exact differences) + h (schema-ordre-deux)",
       {"m", "q_{j-1}", "q_j", "q_{j+1}"}, {1, 4, 4, 4},
-      [&](const monomial_potential& V, const std::vector<rational>& v) {
-        const symbolic m(v[0]), qp(v[1]), q(v[2]), qn(v[3]);
-        const auto dV = [&](const symbolic& x) { return V.derivative(x); };
-        return exact_derivative([&](const symbolic& x) { return classical_lagrangian(m, h, V, qp, x); }, q) +
-               exact_derivative([&](const symbolic& x) { return classical_lagrangian(m, h, V, x, qn); }, q) +
+      [&](const monomial_potential& V, const auto& v) {
+        using S = std::decay_t<decltype(v[0])>;
+        const S h = theta_variable<S>();
+        const S m(v[0]), qp(v[1]), q(v[2]), qn(v[3]);
+        const auto potential = [&](const S& x) { return V(x); };
+        const auto dV = [&](const S& x) { return V.derivative(x); };
+        return exact_derivative([&](const S& x) { return classical_lagrangian(m, h, potential, qp, x); }, q) +
+               exact_derivative([&](const S& x) { return classical_lagrangian(m, h, potential, x, qn); }, q) +
                h * classical_scheme_residual(m, h, dV, qp, q, qn);
       },
       "Proved for every polynomial V of degree <= 4 (the identity is linear in V); for a general smooth V it is the "
@@ -98,49 +100,48 @@ claim_result check_classical_consistency(const run_context& ctx) {
 }
 
 claim_result check_newmark_momentum(const run_context&) {
-  const auto par = unit_oscillator_in_theta();
-  const auto V = [&](const symbolic& v) { return par.potential(v); };
-  const auto gradient = [&](const symbolic& v) { return par.force_gradient(v); };
   const proof p = prove_zero_on_grid(
       std::string(unit_reduction) + "; printed p_{j+1} - dL_d/dq_r(q_j, q_{j+1}) (exact difference) and - (moment) of the core",
-      {"q_j", "q_{j+1}"}, 1, [&](const std::vector<rational>& v) {
-        const symbolic q(v[0]), qn(v[1]);
-        const symbolic printed = par.m() * (qn - q) / par.h() - par.m() * par.omega() * par.omega() * par.h() / 4 * (qn + q);
-        const symbolic by_difference =
-            exact_derivative([&](const symbolic& x) { return classical_lagrangian(par.m(), par.h(), V, q, x); }, qn);
-        const symbolic by_core = classical_momentum(par.m(), par.h(), gradient, q, qn);
-        return std::vector<symbolic>{printed - by_difference, printed - by_core};
+      {"q_j", "q_{j+1}"}, 1, [&](const auto& v) {
+        using S = std::decay_t<decltype(v[0])>;
+        const auto par = theta_oscillator<S>();
+        const auto V = [&](const S& x) { return par.potential(x); };
+        const auto gradient = [&](const S& x) { return par.force_gradient(x); };
+        const S q(v[0]), qn(v[1]);
+        const S printed = par.m() * (qn - q) / par.h() - par.m() * par.omega() * par.omega() * par.h() / 4 * (qn + q);
+        const S by_difference = exact_derivative([&](const S& x) { return classical_lagrangian(par.m(), par.h(), V, q, x); }, qn);
+        const S by_core = classical_momentum(par.m(), par.h(), gradient, q, qn);
+        return std::vector<S>{printed - by_difference, printed - by_core};
       });
   return identity(p);
 }
 
 /// y_{j+1} from Φ, with p_j = −∂L_d/∂q_l(q_j, q_{j+1}) and p_{j+1} = ∂L_d/∂q_r(q_j, q_{j+1}).
 claim_result check_newmark_discrete_system(const run_context&) {
-  const auto par = unit_oscillator_in_theta();
-  const auto V = [&](const symbolic& v) { return par.potential(v); };
   const proof p = prove_zero_on_grid(
       std::string(unit_reduction) +
           "; p_j = -dL_d/dq_l(q_j,q_{j+1}), p_{j+1} = dL_d/dq_r(q_j,q_{j+1}) (exact differences) put into both relations",
-      {"q_j", "q_{j+1}"}, 1, [&](const std::vector<rational>& v) {
-        const symbolic q(v[0]), qn(v[1]);
-        const symbolic p_next =
-            exact_derivative([&](const symbolic& x) { return classical_lagrangian(par.m(), par.h(), V, q, x); }, qn);
-        const symbolic p_now =
-            -exact_derivative([&](const symbolic& x) { return classical_lagrangian(par.m(), par.h(), V, x, qn); }, q);
-        const phase_point<symbolic> r = newmark_system_residual(par, phase_point<symbolic>{p_now, q}, phase_point<symbolic>{p_next, qn});
-        return std::vector<symbolic>{r.p, r.q};
+      {"q_j", "q_{j+1}"}, 1, [&](const auto& v) {
+        using S = std::decay_t<decltype(v[0])>;
+        const auto par = theta_oscillator<S>();
+        const auto V = [&](const S& x) { return par.potential(x); };
+        const S q(v[0]), qn(v[1]);
+        const S p_next = exact_derivative([&](const S& x) { return classical_lagrangian(par.m(), par.h(), V, q, x); }, qn);
+        const S p_now = -exact_derivative([&](const S& x) { return classical_lagrangian(par.m(), par.h(), V, x, qn); }, q);
+        const phase_point<S> r = newmark_system_residual(par, phase_point<S>{p_now, q}, phase_point<S>{p_next, qn});
+        return std::vector<S>{r.p, r.q};
       });
   return identity(p, "On a solution, p_j = dL_d/dq_r(q_{j-1}, q_j) equals -dL_d/dq_l(q_j, q_{j+1}) by (Euler-Lagrange-discret).");
 }
 
 claim_result check_newmark_matrix(const run_context&) {
-  const auto par = unit_oscillator_in_theta();
-  const one_step_matrix<symbolic> phi = newmark_map(par);
   const proof p = prove_zero_on_grid(std::string(unit_reduction) + "; (systeme-dynamique-discret-ordre-2) at (p_{j+1}, q_{j+1}) = Phi (p_j, q_j)",
-                                     {"p_j", "q_j"}, 1, [&](const std::vector<rational>& v) {
-                                       const phase_point<symbolic> y{symbolic(v[0]), symbolic(v[1])};
-                                       const phase_point<symbolic> r = newmark_system_residual(par, y, phi * y);
-                                       return std::vector<symbolic>{r.p, r.q};
+                                     {"p_j", "q_j"}, 1, [&](const auto& v) {
+                                       using S = std::decay_t<decltype(v[0])>;
+                                       const auto par = theta_oscillator<S>();
+                                       const phase_point<S> y{v[0], v[1]};
+                                       const phase_point<S> r = newmark_system_residual(par, y, newmark_map(par) * y);
+                                       return std::vector<S>{r.p, r.q};
                                      });
   return identity(p);
 }
@@ -159,12 +160,12 @@ claim_result check_newmark_det(const run_context& ctx) {
 }
 
 claim_result check_newmark_energy_computed(const run_context& ctx) {
-  const auto par = unit_oscillator_in_theta();
-  const one_step_matrix<symbolic> phi = newmark_map(par);
   const proof exact = prove_zero_on_grid(std::string(unit_reduction) + "; H(Phi y) - H(y), a quadratic form in y",
-                                         {"p", "q"}, 2, [&](const std::vector<rational>& v) {
-                                           const phase_point<symbolic> y{symbolic(v[0]), symbolic(v[1])};
-                                           return energy(par, phi * y) - energy(par, y);
+                                         {"p", "q"}, 2, [&](const auto& v) {
+                                           using S = std::decay_t<decltype(v[0])>;
+                                           const auto par = theta_oscillator<S>();
+                                           const phase_point<S> y{v[0], v[1]};
+                                           return S(energy(par, newmark_map(par) * y) - energy(par, y));
                                          });
   bool within = false;
   const json numeric = recheck_with(ctx, "newmark-energy", [](const auto& par, const auto& y) { return newmark_energy_step_check(par, y); }, within);

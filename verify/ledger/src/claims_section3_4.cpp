@@ -17,11 +17,12 @@ namespace {
 
 claim_result check_basis_nodal(const run_context&) {
   const proof p = prove_zero_on_grid("q(t) of (q2t) at t = 0, h/2, h minus q_l, q_m, q_r", {"q_l", "q_m", "q_r"}, 1,
-                                     [&](const std::vector<rational>& v) {
-                                       const symbolic ql(v[0]), qm(v[1]), qr(v[2]);
-                                       return std::vector<symbolic>{quadratic_interpolant(ql, qm, qr, symbolic(0)) - ql,
-                                                                    quadratic_interpolant(ql, qm, qr, symbolic(rational(1, 2))) - qm,
-                                                                    quadratic_interpolant(ql, qm, qr, symbolic(1)) - qr};
+                                     [&](const auto& v) {
+                                       using S = std::decay_t<decltype(v[0])>;
+                                       const S ql(v[0]), qm(v[1]), qr(v[2]);
+                                       return std::vector<S>{quadratic_interpolant(ql, qm, qr, S(0)) - ql,
+                                                             quadratic_interpolant(ql, qm, qr, S(1) / 2) - qm,
+                                                             quadratic_interpolant(ql, qm, qr, S(1)) - qr};
                                      });
   return identity(p);
 }
@@ -29,43 +30,44 @@ claim_result check_basis_nodal(const run_context&) {
 claim_result check_interpolant_derivative(const run_context&) {
   // h symbolic and s = t/h on a grid: every side is of degree <= 1 in s, so three values of s prove
   // the identity for every s and every h (no homogeneity argument needed).
-  const symbolic h = symbolic::variable();
   const proof p = prove_zero_on_grid(
       "h symbolic, s = t/h on a grid (degree <= 1 in s); dq/dt by exact differences of (q2t) in s, divided by h, against "
       "the printed (1/h)[q_l (4s - 3) + 4 q_m (1 - 2s) + q_r (4s - 1)] and against g_l (1 - s) + g_r s",
-      {"q_l", "q_m", "q_r", "s"}, {1, 1, 1, 2}, [&](const std::vector<rational>& v) {
-        const symbolic ql(v[0]), qm(v[1]), qr(v[2]), s(v[3]);
-        const symbolic by_difference =
-            exact_derivative([&](const symbolic& u) { return quadratic_interpolant(ql, qm, qr, u); }, s) / h;
-        const symbolic printed = quadratic_interpolant_derivative(ql, qm, qr, h, s);
-        const symbolic affine = gear_left(ql, qm, qr, h) * (1 - s) + gear_right(ql, qm, qr, h) * s;
-        return std::vector<symbolic>{by_difference - printed, printed - affine};
+      {"q_l", "q_m", "q_r", "s"}, {1, 1, 1, 2}, [&](const auto& v) {
+        using S = std::decay_t<decltype(v[0])>;
+        const S h = theta_variable<S>();
+        const S ql(v[0]), qm(v[1]), qr(v[2]), s(v[3]);
+        const S by_difference = exact_derivative([&](const S& u) { return quadratic_interpolant(ql, qm, qr, u); }, s) / h;
+        const S printed = quadratic_interpolant_derivative(ql, qm, qr, h, s);
+        const S affine = gear_left(ql, qm, qr, h) * (1 - s) + gear_right(ql, qm, qr, h) * s;
+        return std::vector<S>{by_difference - printed, printed - affine};
       });
   return identity(p);
 }
 
 claim_result check_gear(const run_context&) {
-  const symbolic h = symbolic::variable();
   const proof p = prove_zero_on_grid("h = theta symbolic; g_l - q'(0), g_r - q'(h) with q' by exact differences of (q2t)",
-                                     {"q_l", "q_m", "q_r"}, 1, [&](const std::vector<rational>& v) {
-                                       const symbolic ql(v[0]), qm(v[1]), qr(v[2]);
-                                       const auto q_of_s = [&](const symbolic& u) { return quadratic_interpolant(ql, qm, qr, u); };
-                                       return std::vector<symbolic>{gear_left(ql, qm, qr, h) - exact_derivative(q_of_s, symbolic(0)) / h,
-                                                                    gear_right(ql, qm, qr, h) - exact_derivative(q_of_s, symbolic(1)) / h};
+                                     {"q_l", "q_m", "q_r"}, 1, [&](const auto& v) {
+                                       using S = std::decay_t<decltype(v[0])>;
+                                       const S h = theta_variable<S>();
+                                       const S ql(v[0]), qm(v[1]), qr(v[2]);
+                                       const auto q_of_s = [&](const S& u) { return quadratic_interpolant(ql, qm, qr, u); };
+                                       return std::vector<S>{gear_left(ql, qm, qr, h) - exact_derivative(q_of_s, S(0)) / h,
+                                                             gear_right(ql, qm, qr, h) - exact_derivative(q_of_s, S(1)) / h};
                                      });
   return identity(p);
 }
 
 claim_result check_centred(const run_context&) {
-  const symbolic h = symbolic::variable();
   const proof p = prove_zero_on_grid(
       "h = theta symbolic; g_m - q'(h/2), g_m - (g_l + g_r)/2 with q' by exact differences of (q2t)", {"q_l", "q_m", "q_r"}, 1,
-      [&](const std::vector<rational>& v) {
-        const symbolic ql(v[0]), qm(v[1]), qr(v[2]);
-        const auto q_of_s = [&](const symbolic& u) { return quadratic_interpolant(ql, qm, qr, u); };
-        const symbolic gm = centred_derivative(ql, qr, h);
-        return std::vector<symbolic>{gm - exact_derivative(q_of_s, symbolic(rational(1, 2))) / h,
-                                     gm - (gear_left(ql, qm, qr, h) + gear_right(ql, qm, qr, h)) / 2};
+      [&](const auto& v) {
+        using S = std::decay_t<decltype(v[0])>;
+        const S h = theta_variable<S>();
+        const S ql(v[0]), qm(v[1]), qr(v[2]);
+        const auto q_of_s = [&](const S& u) { return quadratic_interpolant(ql, qm, qr, u); };
+        const S gm = centred_derivative(ql, qr, h);
+        return std::vector<S>{gm - exact_derivative(q_of_s, S(S(1) / 2)) / h, gm - (gear_left(ql, qm, qr, h) + gear_right(ql, qm, qr, h)) / 2};
       });
   return identity(p);
 }
@@ -143,30 +145,32 @@ claim_result check_simpson_exactness(const run_context& ctx) {
 
 claim_result check_simpson_lagrangian(const run_context&) {
   // (LLhh) against h * simpson(m/2 q'^2 - V(q)) along (q2t): degree <= 4 in each q, 1 in m.
-  const symbolic h = symbolic::variable();
   return identity_for_quartic_potentials(
       "h = theta; (LLhh) - h (simpson)[m/2 (dq/dt)^2 - V(q)] along (q2t)", {"m", "q_l", "q_m", "q_r"}, {1, 4, 4, 4},
-      [&](const monomial_potential& V, const std::vector<rational>& v) {
-        const symbolic m(v[0]), ql(v[1]), qm(v[2]), qr(v[3]);
-        const auto integrand = [&](const symbolic& s) {
-          const symbolic velocity = quadratic_interpolant_derivative(ql, qm, qr, h, s);
-          return m / 2 * velocity * velocity - V(quadratic_interpolant(ql, qm, qr, s));
+      [&](const monomial_potential& V, const auto& v) {
+        using S = std::decay_t<decltype(v[0])>;
+        const S h = theta_variable<S>();
+        const S m(v[0]), ql(v[1]), qm(v[2]), qr(v[3]);
+        const auto potential = [&](const S& x) { return V(x); };
+        const auto integrand = [&](const S& s) {
+          const S velocity = quadratic_interpolant_derivative(ql, qm, qr, h, s);
+          return S(m / 2 * velocity * velocity - V(quadratic_interpolant(ql, qm, qr, s)));
         };
-        return simpson_lagrangian(m, h, V, ql, qm, qr) - h * simpson_rule<symbolic>(integrand);
+        return S(simpson_lagrangian(m, h, potential, ql, qm, qr) - h * simpson_rule<S>(integrand));
       },
       "Proved for every polynomial V of degree <= 4 (the identity is linear in V).");
 }
 
 /// dS/dq_1 + (factor) × scheme at j = 1 for N = 3, summing L over j = first..N−1.
 claim_result check_simpson_action_range(const run_context&) {
-  const oscillator_parameters<symbolic> par{symbolic(1), symbolic(1), symbolic::variable()};
   const auto gap = [&](int first) {
-    return [&, first](const std::vector<rational>& v) {
-      std::vector<symbolic> q{symbolic(v[0]), symbolic(v[1]), symbolic(v[2]), symbolic(v[3])};
-      const auto action = [&](const symbolic& q1) {
-        std::vector<symbolic> nodes = q;
+    return [first](const auto& q) {
+      using S = std::decay_t<decltype(q[0])>;
+      const auto par = theta_oscillator<S>();
+      const auto action = [&](const S& q1) {
+        std::vector<S> nodes = q;
         nodes[1] = q1;
-        symbolic sum(0);
+        S sum(0);
         for (int j = first; j <= 2; ++j) {
           sum += reduced_lagrangian(par, nodes[static_cast<std::size_t>(j)], nodes[static_cast<std::size_t>(j) + 1]);
         }

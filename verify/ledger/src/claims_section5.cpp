@@ -20,58 +20,59 @@ namespace simpson::verify::detail {
 namespace {
 
 claim_result check_gear_partials(const run_context&) {
-  const symbolic h = symbolic::variable();
   const proof p = prove_zero_on_grid(
       "h = theta; d g_l/dq_m - 4/h and d g_r/dq_m + 4/h by exact differences of (derivees-gear); g_m as the interpolant's "
       "slope at the middle node, q'(t_m) of (q2t) as a function of q_l, q_m, q_r: (derivee-centree) - q'(t_m), and "
       "d q'(t_m)/dq_m",
-      {"q_l", "q_m", "q_r"}, 1, [&](const std::vector<rational>& v) {
-        const symbolic ql(v[0]), qm(v[1]), qr(v[2]);
+      {"q_l", "q_m", "q_r"}, 1, [&](const auto& v) {
+        using S = std::decay_t<decltype(v[0])>;
+        const S h = theta_variable<S>();
+        const S ql(v[0]), qm(v[1]), qr(v[2]);
         // g_m as a function of all three nodes (it could depend on q_m: the slope elsewhere does).
-        const auto slope_at_middle = [&](const symbolic& x) {
-          return quadratic_interpolant_derivative(ql, x, qr, h, symbolic(rational(1, 2)));
-        };
-        return std::vector<symbolic>{
-            exact_derivative([&](const symbolic& x) { return gear_left(ql, x, qr, h); }, qm) - 4 / h,
-            centred_derivative(ql, qr, h) - slope_at_middle(qm),
-            exact_derivative(slope_at_middle, qm),
-            exact_derivative([&](const symbolic& x) { return gear_right(ql, x, qr, h); }, qm) + 4 / h};
+        const auto slope_at_middle = [&](const S& x) { return quadratic_interpolant_derivative(ql, x, qr, h, S(S(1) / 2)); };
+        return std::vector<S>{exact_derivative([&](const S& x) { return gear_left(ql, x, qr, h); }, qm) - 4 / h,
+                              centred_derivative(ql, qr, h) - slope_at_middle(qm), exact_derivative(slope_at_middle, qm),
+                              exact_derivative([&](const S& x) { return gear_right(ql, x, qr, h); }, qm) + 4 / h};
       });
   return identity(p);
 }
 
 claim_result check_lh_dqm(const run_context&) {
-  const symbolic h = symbolic::variable();
   return identity_for_quartic_potentials(
       "h = theta; printed dL_h/dq_m minus the exact difference of (LLhh) in q_m", {"m", "q_l", "q_m", "q_r"}, {1, 4, 4, 4},
-      [&](const monomial_potential& V, const std::vector<rational>& v) {
-        const symbolic m(v[0]), ql(v[1]), qm(v[2]), qr(v[3]);
-        const auto dV = [&](const symbolic& x) { return V.derivative(x); };
-        return simpson_lagrangian_dq_mid(m, h, dV, ql, qm, qr) -
-               exact_derivative([&](const symbolic& x) { return simpson_lagrangian(m, h, V, ql, x, qr); }, qm);
+      [&](const monomial_potential& V, const auto& v) {
+        using S = std::decay_t<decltype(v[0])>;
+        const S h = theta_variable<S>();
+        const S m(v[0]), ql(v[1]), qm(v[2]), qr(v[3]);
+        const auto potential = [&](const S& x) { return V(x); };
+        const auto dV = [&](const S& x) { return V.derivative(x); };
+        return S(simpson_lagrangian_dq_mid(m, h, dV, ql, qm, qr) -
+                 exact_derivative([&](const S& x) { return simpson_lagrangian(m, h, potential, ql, x, qr); }, qm));
       },
       "Proved for every polynomial V of degree <= 4 (the identity is linear in V).");
 }
 
 claim_result check_gr_minus_gl(const run_context&) {
-  const symbolic h = symbolic::variable();
   const proof p = prove_zero_on_grid("h = theta; g_r - g_l - (4/h)(q_l - 2 q_m + q_r)", {"q_l", "q_m", "q_r"}, 1,
-                                     [&](const std::vector<rational>& v) {
-                                       const symbolic ql(v[0]), qm(v[1]), qr(v[2]);
-                                       return gear_right(ql, qm, qr, h) - gear_left(ql, qm, qr, h) - 4 / h * (ql - 2 * qm + qr);
+                                     [&](const auto& v) {
+                                       using S = std::decay_t<decltype(v[0])>;
+                                       const S h = theta_variable<S>();
+                                       const S ql(v[0]), qm(v[1]), qr(v[2]);
+                                       return S(gear_right(ql, qm, qr, h) - gear_left(ql, qm, qr, h) - 4 / h * (ql - 2 * qm + qr));
                                      });
   return identity(p);
 }
 
 claim_result check_internal_equation(const run_context&) {
-  const symbolic h = symbolic::variable();
   return identity_for_quartic_potentials(
       "h = theta; dL_h/dq_m + (2h/3) (equation-milieu-intervalle): the two vanish together", {"m", "q_l", "q_m", "q_r"},
       {1, 3, 3, 3},
-      [&](const monomial_potential& V, const std::vector<rational>& v) {
-        const symbolic m(v[0]), ql(v[1]), qm(v[2]), qr(v[3]);
-        const auto dV = [&](const symbolic& x) { return V.derivative(x); };
-        return simpson_lagrangian_dq_mid(m, h, dV, ql, qm, qr) + 2 * h / 3 * internal_equation_residual(m, h, dV, ql, qm, qr);
+      [&](const monomial_potential& V, const auto& v) {
+        using S = std::decay_t<decltype(v[0])>;
+        const S h = theta_variable<S>();
+        const S m(v[0]), ql(v[1]), qm(v[2]), qr(v[3]);
+        const auto dV = [&](const S& x) { return V.derivative(x); };
+        return S(simpson_lagrangian_dq_mid(m, h, dV, ql, qm, qr) + 2 * h / 3 * internal_equation_residual(m, h, dV, ql, qm, qr));
       },
       "Proved for every polynomial V of degree <= 4 (the identity is linear in V).");
 }
@@ -105,13 +106,14 @@ claim_result check_internal_second_order(const run_context& ctx) {
 }
 
 claim_result check_qm_harmonic(const run_context& ctx) {
-  const auto par = unit_oscillator_in_theta();
-  const auto gradient = [&](const symbolic& v) { return par.force_gradient(v); };
   const proof exact = prove_zero_on_grid(std::string(unit_reduction) + "; (equation-milieu-intervalle) at q_m of (qm-oscillateur-harmonique)",
-                                         {"q_l", "q_r"}, 1, [&](const std::vector<rational>& v) {
-                                           const symbolic ql(v[0]), qr(v[1]);
-                                           return internal_equation_residual(par.m(), par.h(), gradient, ql,
-                                                                             harmonic_internal_node(par, ql, qr), qr);
+                                         {"q_l", "q_r"}, 1, [&](const auto& v) {
+                                           using S = std::decay_t<decltype(v[0])>;
+                                           const auto par = theta_oscillator<S>();
+                                           const auto gradient = [&](const S& x) { return par.force_gradient(x); };
+                                           const S ql(v[0]), qr(v[1]);
+                                           return S(internal_equation_residual(par.m(), par.h(), gradient, ql,
+                                                                               harmonic_internal_node(par, ql, qr), qr));
                                          });
   bool within = false;
   // q_l = q, q_r = p/(m omega): two states of the same scale.
@@ -129,13 +131,14 @@ claim_result check_qm_not_affine(const run_context& ctx) {
                                                        {"non linear", "not linear"}, {"non-linear", "not linear"},
                                                        {"not affine", "not the affine midpoint"}, {"linear", "linear"},
                                                        {"affine", "the affine midpoint"}});
-  const auto par = unit_oscillator_in_theta();
-  const symbolic x = par.omega2_h2();
   const proof p = prove_zero_on_grid(std::string(unit_reduction) +
                                          "; q_m - (q_l + q_r)/2 - ((q_l + q_r)/2) (x/8)/(1 - x/8), x = theta^2",
-                                     {"q_l", "q_r"}, 1, [&](const std::vector<rational>& v) {
-                                       const symbolic ql(v[0]), qr(v[1]);
-                                       return harmonic_internal_node(par, ql, qr) - (ql + qr) / 2 - (ql + qr) / 2 * (x / 8) / (1 - x / 8);
+                                     {"q_l", "q_r"}, 1, [&](const auto& v) {
+                                       using S = std::decay_t<decltype(v[0])>;
+                                       const auto par = theta_oscillator<S>();
+                                       const S x = par.omega2_h2();
+                                       const S ql(v[0]), qr(v[1]);
+                                       return S(harmonic_internal_node(par, ql, qr) - (ql + qr) / 2 - (ql + qr) / 2 * (x / 8) / (1 - x / 8));
                                      });
   const std::string proved = "q_m differs from the affine interpolant's midpoint (q_l + q_r)/2 by ((q_l + q_r)/2)(omega^2 h^2/8)/"
                              "(1 - omega^2 h^2/8), nonzero for h > 0 unless q_l + q_r = 0";
@@ -212,13 +215,14 @@ claim_result check_stability_condition(const run_context&) {
 }
 
 claim_result check_reduced_lagrangian(const run_context& ctx) {
-  const auto par = unit_oscillator_in_theta();
-  const auto V = [&](const symbolic& v) { return par.potential(v); };
   const proof exact = prove_zero_on_grid(std::string(unit_reduction) + "; (Lagrangien-reduit) - (LLhh) at q_m of (qm-oscillateur-harmonique)",
-                                         {"q_l", "q_r"}, 2, [&](const std::vector<rational>& v) {
-                                           const symbolic ql(v[0]), qr(v[1]);
-                                           return reduced_lagrangian(par, ql, qr) -
-                                                  simpson_lagrangian(par.m(), par.h(), V, ql, harmonic_internal_node(par, ql, qr), qr);
+                                         {"q_l", "q_r"}, 2, [&](const auto& v) {
+                                           using S = std::decay_t<decltype(v[0])>;
+                                           const auto par = theta_oscillator<S>();
+                                           const auto V = [&](const S& x) { return par.potential(x); };
+                                           const S ql(v[0]), qr(v[1]);
+                                           return S(reduced_lagrangian(par, ql, qr) -
+                                                    simpson_lagrangian(par.m(), par.h(), V, ql, harmonic_internal_node(par, ql, qr), qr));
                                          });
   bool within = false;
   const json numeric = recheck_with(ctx, "reduced-lagrangian", [](const auto& par, const auto& y) {
@@ -228,16 +232,16 @@ claim_result check_reduced_lagrangian(const run_context& ctx) {
 }
 
 claim_result check_scheme_order3(const run_context&) {
-  const auto par = unit_oscillator_in_theta();
   const proof p = prove_zero_on_grid(
       std::string(unit_reduction) +
           "; dL^r/dq_r(q_{j-1},q_j) + dL^r/dq_l(q_j,q_{j+1}) (exact differences of Lagrangien-reduit) + (m h/(1 - x/8)) (schema-ordre-3)",
-      {"q_{j-1}", "q_j", "q_{j+1}"}, 1, [&](const std::vector<rational>& v) {
-        const symbolic qp(v[0]), q(v[1]), qn(v[2]);
-        const symbolic euler_lagrange =
-            exact_derivative([&](const symbolic& x) { return reduced_lagrangian(par, qp, x); }, q) +
-            exact_derivative([&](const symbolic& x) { return reduced_lagrangian(par, x, qn); }, q);
-        return euler_lagrange + par.m() * par.h() / (1 - par.omega2_h2() / 8) * three_term_residual(par, qp, q, qn);
+      {"q_{j-1}", "q_j", "q_{j+1}"}, 1, [&](const auto& v) {
+        using S = std::decay_t<decltype(v[0])>;
+        const auto par = theta_oscillator<S>();
+        const S qp(v[0]), q(v[1]), qn(v[2]);
+        const S euler_lagrange = exact_derivative([&](const S& x) { return reduced_lagrangian(par, qp, x); }, q) +
+                                 exact_derivative([&](const S& x) { return reduced_lagrangian(par, x, qn); }, q);
+        return S(euler_lagrange + par.m() * par.h() / (1 - par.omega2_h2() / 8) * three_term_residual(par, qp, q, qn));
       });
   return identity(p, "The discrete Euler-Lagrange equation equals -(m h/(1 - omega^2 h^2/8)) times (schema-ordre-3): the same "
                      "scheme for omega h != 2 sqrt(2).");
@@ -286,8 +290,7 @@ claim_result check_taylor_display(const run_context&) {
     return v;
   };
   const auto taylor_gap = [&](bool printed, const rational& t_j) {
-    return [&, printed, t_j](const std::vector<rational>& v) {
-      const int k = static_cast<int>(boost::multiprecision::numerator(v[0])) - 1;
+    return [&, printed, t_j](int k) {
       std::vector<symbolic> gaps;
       for (const int sign : {1, -1}) {
         symbolic sum(0), hk(1);
@@ -308,9 +311,8 @@ claim_result check_taylor_display(const run_context&) {
   const std::string reduction =
       "q(t) = t^k, k = 0..6, expanded about t_j = 1: q(t_j +- h) minus the displayed expansion through h^6 (zero when the "
       "expansion is exact for polynomials of degree <= 6)";
-  const proof printed = prove_zero_on_grid(reduction + ", with d^6q/dt^5 in the h^6 term as printed", {"k + 1"}, 6,
-                                           taylor_gap(true, rational(1)));
-  const proof corrected = prove_zero_on_grid(reduction + ", with d^6q/dt^6", {"k + 1"}, 6, taylor_gap(false, rational(1)));
+  const proof printed = prove_zero_at_each(reduction + ", with d^6q/dt^5 in the h^6 term as printed", "k", 6, taylor_gap(true, rational(1)));
+  const proof corrected = prove_zero_at_each(reduction + ", with d^6q/dt^6", "k", 6, taylor_gap(false, rational(1)));
   return erratum(printed, corrected, "q_{j+-1} = q_j +- h q' + ... +- h^5/120 q^(5) + h^6/720 d^6q/dt^6 + O(h^7)",
                  "Typographical: the h^6 term of both expansions is printed with d^6q/dt^5. The truncation error below uses "
                  "the correct sixth derivative.");
@@ -634,23 +636,24 @@ claim_result check_maupertuis_naming(const run_context& ctx) {
   const std::string named = said.containing("principle", {{"maupertuis", "abbreviated action (Maupertuis)"},
                                                           {"hamilton", "integral of L dt (Hamilton)"},
                                                           {"action", "unnamed stationary action"}});
-  const auto par = unit_oscillator_in_theta();
-  const auto V = [&](const symbolic& v) { return par.potential(v); };
-  const auto along = [&](const std::vector<rational>& v, bool abbreviated) {
-    const symbolic ql(v[0]), qm(v[1]), qr(v[2]);
-    const symbolic rule = simpson_rule<symbolic>([&](const symbolic& s) {
-      const symbolic velocity = quadratic_interpolant_derivative(ql, qm, qr, par.h(), s);
-      return abbreviated ? par.h() * par.m() * velocity * velocity
-                         : par.h() * (par.m() / 2 * velocity * velocity - V(quadratic_interpolant(ql, qm, qr, s)));
+  const auto along = [&](const auto& v, bool abbreviated) {
+    using S = std::decay_t<decltype(v[0])>;
+    const auto par = theta_oscillator<S>();
+    const auto V = [&](const S& x) { return par.potential(x); };
+    const S ql(v[0]), qm(v[1]), qr(v[2]);
+    const S rule = simpson_rule<S>([&](const S& s) {
+      const S velocity = quadratic_interpolant_derivative(ql, qm, qr, par.h(), s);
+      return abbreviated ? S(par.h() * par.m() * velocity * velocity)
+                         : S(par.h() * (par.m() / 2 * velocity * velocity - V(quadratic_interpolant(ql, qm, qr, s))));
     });
-    return simpson_lagrangian(par.m(), par.h(), V, ql, qm, qr) - rule;
+    return S(simpson_lagrangian(par.m(), par.h(), V, ql, qm, qr) - rule);
   };
   const proof printed = prove_zero_on_grid(std::string(unit_reduction) +
                                                "; L_h (LLhh) minus Simpson's rule on the abbreviated action's integrand p dq/dt = m (dq/dt)^2",
-                                           {"q_l", "q_m", "q_r"}, 2, [&](const std::vector<rational>& v) { return along(v, true); });
+                                           {"q_l", "q_m", "q_r"}, 2, [&](const auto& v) { return along(v, true); });
   const proof corrected = prove_zero_on_grid(std::string(unit_reduction) +
                                                  "; L_h (LLhh) minus Simpson's rule on Hamilton's integrand L = m (dq/dt)^2/2 - V(q)",
-                                             {"q_l", "q_m", "q_r"}, 2, [&](const std::vector<rational>& v) { return along(v, false); });
+                                             {"q_l", "q_m", "q_r"}, 2, [&](const auto& v) { return along(v, false); });
   if (named != "abbreviated action (Maupertuis)" && corrected.proved && !printed.proved) {
     json evidence;
     evidence["exact"] = corrected.evidence;

@@ -29,25 +29,26 @@ namespace simpson::verify::detail {
 namespace {
 
 claim_result check_momentum_order3(const run_context&) {
-  const auto par = unit_oscillator_in_theta();
   const proof p = prove_zero_on_grid(std::string(unit_reduction) + "; (moment-ordre-3) - dL_h^r/dq_r by exact differences",
-                                     {"q_l", "q_r"}, 1, [&](const std::vector<rational>& v) {
-                                       const symbolic ql(v[0]), qr(v[1]);
-                                       return simpson_momentum(par, ql, qr) -
-                                              exact_derivative([&](const symbolic& x) { return reduced_lagrangian(par, ql, x); }, qr);
+                                     {"q_l", "q_r"}, 1, [&](const auto& v) {
+                                       using S = std::decay_t<decltype(v[0])>;
+                                       const auto par = theta_oscillator<S>();
+                                       const S ql(v[0]), qr(v[1]);
+                                       return S(simpson_momentum(par, ql, qr) -
+                                                exact_derivative([&](const S& x) { return reduced_lagrangian(par, ql, x); }, qr));
                                      });
   return identity(p);
 }
 
 claim_result check_phi3_elimination(const run_context& ctx) {
-  const auto par = unit_oscillator_in_theta();
-  const one_step_matrix<symbolic> phi = simpson_map(par);
   const proof exact = prove_zero_on_grid(
       std::string(unit_reduction) + "; (Phi3) y minus the state obtained by eliminating q_{j-1}", {"p_j", "q_j"}, 1,
-      [&](const std::vector<rational>& v) {
-        const phase_point<symbolic> y{symbolic(v[0]), symbolic(v[1])};
-        const phase_point<symbolic> by_formula = phi * y, by_elimination = simpson_step_by_elimination(par, y);
-        return std::vector<symbolic>{by_formula.p - by_elimination.p, by_formula.q - by_elimination.q};
+      [&](const auto& v) {
+        using S = std::decay_t<decltype(v[0])>;
+        const auto par = theta_oscillator<S>();
+        const phase_point<S> y{v[0], v[1]};
+        const phase_point<S> by_formula = simpson_map(par) * y, by_elimination = simpson_step_by_elimination(par, y);
+        return std::vector<S>{by_formula.p - by_elimination.p, by_formula.q - by_elimination.q};
       });
   bool within = false;
   const json numeric = recheck_with(ctx, "phi3-elimination", [](const auto& par, const auto& y) { return elimination_check(par, y); }, within);
@@ -58,19 +59,20 @@ claim_result check_phi3_elimination(const run_context& ctx) {
 /// the quadratic interpolant) at the harmonic q_m is L_hʳ; q_m makes ∂L_h/∂q_m vanish; eliminating
 /// q_{j-1} with p_r and the scheme gives Φ₃.
 claim_result check_derivation_phi3(const run_context&) {
-  const auto par = unit_oscillator_in_theta();
-  const auto V = [&](const symbolic& v) { return par.potential(v); };
-  const auto force = [&](const symbolic& v) { return par.force_gradient(v); };
   const proof steps = prove_zero_on_grid(
       std::string(unit_reduction) +
           "; dL_h/dq_m at q_m of (qm-oscillateur-harmonique), L_h^r - L_h at that q_m, and (Phi3) y - the state by "
           "eliminating q_{j-1}",
-      {"q_l", "q_r"}, 2, [&](const std::vector<rational>& v) {
-        const symbolic ql(v[0]), qr(v[1]);
-        const symbolic qm = harmonic_internal_node(par, ql, qr);
-        const phase_point<symbolic> y{ql, qr};  // a state (p_j, q_j) on the same grid
-        const phase_point<symbolic> by_formula = simpson_map(par) * y, by_elimination = simpson_step_by_elimination(par, y);
-        return std::vector<symbolic>{simpson_lagrangian_dq_mid(par.m(), par.h(), force, ql, qm, qr),
+      {"q_l", "q_r"}, 2, [&](const auto& v) {
+        using S = std::decay_t<decltype(v[0])>;
+        const auto par = theta_oscillator<S>();
+        const auto V = [&](const S& x) { return par.potential(x); };
+        const auto force = [&](const S& x) { return par.force_gradient(x); };
+        const S ql(v[0]), qr(v[1]);
+        const S qm = harmonic_internal_node(par, ql, qr);
+        const phase_point<S> y{ql, qr};  // a state (p_j, q_j) on the same grid
+        const phase_point<S> by_formula = simpson_map(par) * y, by_elimination = simpson_step_by_elimination(par, y);
+        return std::vector<S>{simpson_lagrangian_dq_mid(par.m(), par.h(), force, ql, qm, qr),
                                      reduced_lagrangian(par, ql, qr) - simpson_lagrangian(par.m(), par.h(), V, ql, qm, qr),
                                      by_formula.p - by_elimination.p, by_formula.q - by_elimination.q};
       });
@@ -159,29 +161,26 @@ claim_result check_phi3_symplectic(const run_context& ctx) {
 }
 
 /// The coefficients of p², pq, q² of Q(Φy) − Q(y) for Q = (ξ, η, ζ), read off at (1,0), (1,1), (0,1).
-std::array<rational, 3> invariance_defect(const one_step_matrix<rational>& phi, const rational& xi, const rational& eta,
-                                          const rational& zeta) {
-  const auto defect = [&](const phase_point<rational>& y) -> rational {
-    return quadratic_form(xi, eta, zeta, phi * y) - quadratic_form(xi, eta, zeta, y);
-  };
-  const rational pp = defect({rational(1), rational(0)});
-  const rational qq = defect({rational(0), rational(1)});
-  return {pp, defect({rational(1), rational(1)}) - pp - qq, qq};
+template <class S>
+std::array<S, 3> invariance_defect(const one_step_matrix<S>& phi, const S& xi, const S& eta, const S& zeta) {
+  const auto defect = [&](const phase_point<S>& y) -> S { return quadratic_form(xi, eta, zeta, phi * y) - quadratic_form(xi, eta, zeta, y); };
+  const S pp = defect({S(1), S(0)});
+  const S qq = defect({S(0), S(1)});
+  return {pp, S(defect({S(1), S(1)}) - pp - qq), qq};
 }
 
 claim_result check_gamma_system(const run_context&) {
   const std::vector<std::string> vars{"alpha", "beta", "gamma", "delta", "xi", "eta", "zeta"};
   const std::vector<int> bounds{2, 2, 2, 2, 1, 1, 1};
   const auto gap = [](bool printed) {
-    return [printed](const std::vector<rational>& v) {
-      const one_step_matrix<rational> phi{v[0], v[1], v[2], v[3]};
+    return [printed](const auto& v) {
+      using S = std::decay_t<decltype(v[0])>;
+      const one_step_matrix<S> phi{v[0], v[1], v[2], v[3]};
       auto gamma = invariance_system(phi);
       if (printed) gamma[2][2] = (phi.gamma * phi.gamma - 1) / 2;  // as printed in Section 7
-      const std::array<rational, 3> defect = invariance_defect(phi, v[4], v[5], v[6]);
-      std::vector<symbolic> gaps;
-      for (std::size_t row = 0; row < 3; ++row) {
-        gaps.push_back(symbolic(rational(gamma[row][0] * v[4] + gamma[row][1] * v[5] + gamma[row][2] * v[6] - defect[row])));
-      }
+      const std::array<S, 3> defect = invariance_defect(phi, v[4], v[5], v[6]);
+      std::vector<S> gaps;
+      for (std::size_t row = 0; row < 3; ++row) gaps.push_back(gamma[row][0] * v[4] + gamma[row][1] * v[5] + gamma[row][2] * v[6] - defect[row]);
       return gaps;
     };
   };
@@ -200,24 +199,28 @@ claim_result check_gamma_system(const run_context&) {
 
 claim_result check_gamma_determinant(const run_context&) {
   const std::vector<std::string> vars{"alpha", "beta", "gamma", "delta"};
-  const auto det3 = [](const std::array<std::array<rational, 3>, 3>& g) -> rational {
-    return g[0][0] * (g[1][1] * g[2][2] - g[1][2] * g[2][1]) - g[0][1] * (g[1][0] * g[2][2] - g[1][2] * g[2][0]) +
-           g[0][2] * (g[1][0] * g[2][1] - g[1][1] * g[2][0]);
+  const auto det3 = [](const auto& g) {
+    using S = std::decay_t<decltype(g[0][0])>;
+    return S(g[0][0] * (g[1][1] * g[2][2] - g[1][2] * g[2][1]) - g[0][1] * (g[1][0] * g[2][2] - g[1][2] * g[2][0]) +
+             g[0][2] * (g[1][0] * g[2][1] - g[1][1] * g[2][0]));
   };
-  const auto printed_product = [](const one_step_matrix<rational>& phi) -> rational {
-    const rational det = determinant(phi), trace = phi.alpha + phi.delta;
-    return (det - 1) * (1 - trace + det) * (1 + trace + det);
+  const auto printed_product = [](const auto& phi) {
+    using S = std::decay_t<decltype(phi.alpha)>;
+    const S det = determinant(phi), trace = phi.alpha + phi.delta;
+    return S((det - 1) * (1 - trace + det) * (1 + trace + det));
   };
   // det Γ has degree <= 6 in each entry of Φ (each row of Γ is of degree <= 2).
   const proof printed = prove_zero_on_grid("det Gamma (corrected Gamma) - (ad - bc - 1)(1 - a - d + ad - bc)(1 + a + d + ad - bc) as printed",
-                                           vars, 6, [&](const std::vector<rational>& v) {
-                                             const one_step_matrix<rational> phi{v[0], v[1], v[2], v[3]};
-                                             return symbolic(rational(det3(invariance_system(phi)) - printed_product(phi)));
+                                           vars, 6, [&](const auto& v) {
+                                             using S = std::decay_t<decltype(v[0])>;
+                                             const one_step_matrix<S> phi{v[0], v[1], v[2], v[3]};
+                                             return S(det3(invariance_system(phi)) - printed_product(phi));
                                            });
   const proof corrected = prove_zero_on_grid("det Gamma (corrected Gamma) - the product / 4 (invariance_system_determinant of the core)",
-                                             vars, 6, [&](const std::vector<rational>& v) {
-                                               const one_step_matrix<rational> phi{v[0], v[1], v[2], v[3]};
-                                               return symbolic(rational(det3(invariance_system(phi)) - invariance_system_determinant(phi)));
+                                             vars, 6, [&](const auto& v) {
+                                               using S = std::decay_t<decltype(v[0])>;
+                                               const one_step_matrix<S> phi{v[0], v[1], v[2], v[3]};
+                                               return S(det3(invariance_system(phi)) - invariance_system_determinant(phi));
                                              });
   // With the printed Γ the printed product fails as well: at the identity-like point below.
   const one_step_matrix<rational> sample{rational(2), rational(0), rational(0), rational(3)};
@@ -236,13 +239,15 @@ claim_result check_gamma_determinant(const run_context&) {
 }
 
 /// Γ with its last entry as printed in Section 7, (γ² − 1)/2 instead of (δ² − 1)/2.
-std::array<std::array<rational, 3>, 3> printed_invariance_system(const one_step_matrix<rational>& phi) {
+template <class S>
+std::array<std::array<S, 3>, 3> printed_invariance_system(const one_step_matrix<S>& phi) {
   auto g = invariance_system(phi);
   g[2][2] = (phi.gamma * phi.gamma - 1) / 2;
   return g;
 }
 
-rational determinant_3x3(const std::array<std::array<rational, 3>, 3>& g) {
+template <class S>
+S determinant_3x3(const std::array<std::array<S, 3>, 3>& g) {
   return g[0][0] * (g[1][1] * g[2][2] - g[1][2] * g[2][1]) - g[0][1] * (g[1][0] * g[2][2] - g[1][2] * g[2][0]) +
          g[0][2] * (g[1][0] * g[2][1] - g[1][1] * g[2][0]);
 }
@@ -253,9 +258,11 @@ const one_step_matrix<rational> hypotheses_point{rational(1, 2), rational(-1), r
 claim_result check_gamma_singular(const run_context&) {
   // On det Φ = 1, parametrised by δ = (1 + βγ)/α (α ≠ 0): α^6 det Γ is a polynomial of degree <= 12.
   const auto on_unit = [](bool printed) {
-    return [printed](const std::vector<rational>& v) {
-      const one_step_matrix<rational> phi{v[0], v[1], v[2], (1 + v[1] * v[2]) / v[0]};
-      return symbolic(determinant_3x3(printed ? printed_invariance_system(phi) : invariance_system(phi)));
+    return [printed](const auto& v) {
+      using S = std::decay_t<decltype(v[0])>;
+      const one_step_matrix<S> phi{v[0], v[1], v[2], S((1 + v[1] * v[2]) / v[0])};
+      const S alpha6 = v[0] * v[0] * v[0] * v[0] * v[0] * v[0];
+      return S(alpha6 * determinant_3x3(printed ? printed_invariance_system(phi) : invariance_system(phi)));
     };
   };
   const std::string reduction = "det Gamma with delta = (1 + beta gamma)/alpha, i.e. on alpha delta - beta gamma = 1";
@@ -280,15 +287,15 @@ claim_result check_gamma_singular(const run_context&) {
 claim_result check_conserved_form(const run_context&) {
   // α = δ and βγ = α² − 1: γ = (α² − 1)/β with α symbolic and β on a grid (β⁴ Γ Q_c is a polynomial
   // of degree <= 4 in β).
-  const symbolic a = symbolic::variable();
-  const proof p = prove_zero_on_grid("Gamma (gamma, 0, -beta)^T with delta = alpha (symbolic) and gamma = (alpha^2 - 1)/beta",
-                                     {"beta"}, 4, [&](const std::vector<rational>& v) {
-                                       const symbolic b(v[0]);
-                                       const one_step_matrix<symbolic> phi{a, b, (a * a - 1) / b, a};
+  const proof p = prove_zero_on_grid("beta^4 Gamma (gamma, 0, -beta)^T with delta = alpha (symbolic) and gamma = (alpha^2 - 1)/beta",
+                                     {"beta"}, 4, [&](const auto& v) {
+                                       using S = std::decay_t<decltype(v[0])>;
+                                       const S a = theta_variable<S>(), b(v[0]), beta4 = b * b * b * b;
+                                       const one_step_matrix<S> phi{a, b, S((a * a - 1) / b), a};
                                        const auto g = invariance_system(phi);
                                        const auto c = conserved_form_coefficients(phi);
-                                       std::vector<symbolic> rows;
-                                       for (std::size_t r = 0; r < 3; ++r) rows.push_back(g[r][0] * c[0] + g[r][1] * c[1] + g[r][2] * c[2]);
+                                       std::vector<S> rows;
+                                       for (std::size_t r = 0; r < 3; ++r) rows.push_back(beta4 * (g[r][0] * c[0] + g[r][1] * c[1] + g[r][2] * c[2]));
                                        return rows;
                                      });
   // The kernel of Γ is one-dimensional, so (γ, 0, −β) spans it and η = 0 is forced: in GiNaC, with α
@@ -323,14 +330,14 @@ claim_result check_conserved_form(const run_context&) {
   const std::string gcd_string = canonical_text(common);
   // As printed: the printed Γ does not hold (γ, 0, −β) in its kernel; at the hypotheses point it is invertible.
   const proof printed = prove_zero_on_grid("the printed Gamma (gamma, 0, -beta)^T with delta = alpha and gamma = (alpha^2 - 1)/beta",
-                                           {"alpha", "beta"}, 6, [&](const std::vector<rational>& v) {
-                                             const one_step_matrix<rational> phi{v[0], v[1], (v[0] * v[0] - 1) / v[1], v[0]};
+                                           {"alpha", "beta"}, 6, [&](const auto& v) {
+                                             using S = std::decay_t<decltype(v[0])>;
+                                             const one_step_matrix<S> phi{v[0], v[1], S((v[0] * v[0] - 1) / v[1]), v[0]};
                                              const auto g = printed_invariance_system(phi);
                                              const auto c = conserved_form_coefficients(phi);
-                                             std::vector<symbolic> rows;
-                                             for (std::size_t r = 0; r < 3; ++r) {
-                                               rows.push_back(symbolic(rational(g[r][0] * c[0] + g[r][1] * c[1] + g[r][2] * c[2])));
-                                             }
+                                             const S beta4 = v[1] * v[1] * v[1] * v[1];
+                                             std::vector<S> rows;
+                                             for (std::size_t r = 0; r < 3; ++r) rows.push_back(beta4 * (g[r][0] * c[0] + g[r][1] * c[1] + g[r][2] * c[2]));
                                              return rows;
                                            });
   claim_result result = identity(p, "eta = 0 is forced: with beta != 0 the kernel of Gamma is one-dimensional (proved in GiNaC, "
@@ -359,27 +366,27 @@ claim_result check_conserved_form(const run_context&) {
 }
 
 claim_result check_hd_proportional(const run_context&) {
-  const auto par = unit_oscillator_in_theta();
-  const one_step_matrix<symbolic> phi = simpson_map(par);
-  const auto qc = conserved_form_coefficients(phi);
-  const symbolic x = par.omega2_h2();
-  const symbolic scale = (1 + x / 24) / (par.h() * (1 - x / 8));
   const proof p = prove_zero_on_grid(std::string(unit_reduction) + "; H_d - ((1 + x/24)/(h (1 - x/8))) Q_c with Q_c from Phi_3",
-                                     {"p", "q"}, 2, [&](const std::vector<rational>& v) {
-                                       const phase_point<symbolic> y{symbolic(v[0]), symbolic(v[1])};
-                                       return discrete_energy(par, y) - scale * quadratic_form(qc[0], qc[1], qc[2], y);
+                                     {"p", "q"}, 2, [&](const auto& v) {
+                                       using S = std::decay_t<decltype(v[0])>;
+                                       const auto par = theta_oscillator<S>();
+                                       const auto qc = conserved_form_coefficients(simpson_map(par));
+                                       const S x = par.omega2_h2();
+                                       const S scale = (1 + x / 24) / (par.h() * (1 - x / 8));
+                                       const phase_point<S> y{v[0], v[1]};
+                                       return S(discrete_energy(par, y) - scale * quadratic_form(qc[0], qc[1], qc[2], y));
                                      });
   return identity(p, "H_d is Q_c of Phi_3 up to the constant (1 + omega^2 h^2/24)/(h (1 - omega^2 h^2/8)), which makes its "
                      "momentum part p^2/(2m).");
 }
 
 claim_result check_hd_invariance(const run_context& ctx) {
-  const auto par = unit_oscillator_in_theta();
-  const one_step_matrix<symbolic> phi = simpson_map(par);
   const proof exact = prove_zero_on_grid(std::string(unit_reduction) + "; H_d(Phi_3 y) - H_d(y), a quadratic form in y", {"p", "q"}, 2,
-                                         [&](const std::vector<rational>& v) {
-                                           const phase_point<symbolic> y{symbolic(v[0]), symbolic(v[1])};
-                                           return discrete_energy(par, phi * y) - discrete_energy(par, y);
+                                         [&](const auto& v) {
+                                           using S = std::decay_t<decltype(v[0])>;
+                                           const auto par = theta_oscillator<S>();
+                                           const phase_point<S> y{v[0], v[1]};
+                                           return S(discrete_energy(par, simpson_map(par) * y) - discrete_energy(par, y));
                                          });
   bool within = false;
   const json numeric = recheck_with(ctx, "hd-invariance", [](const auto& par, const auto& y) { return discrete_energy_step_check(par, y); }, within);
