@@ -53,8 +53,9 @@ bench: configure
 # time than it saves run time.
 # It is the one other compile of the suite, and each of its two uses needs it:
 #   - `make sanitize` runs the tests of `make test` in it;
-#   - `make fuzz` runs the scene parser's libFuzzer target, built in the same tree (libFuzzer needs
-#     clang): only scene.cpp gets libFuzzer's coverage instrumentation, the rest is reused as it is.
+#   - `make fuzz` runs the libFuzzer targets of the scene parser and the claims-file reader, built in
+#     the same tree (libFuzzer needs clang): only scene.cpp and claims_file.cpp get libFuzzer's
+#     coverage instrumentation, the rest is reused as it is.
 # The Release build of `make test` is not replaced by it: that is what users build (GCC, -O2, whose
 # warnings differ from clang's), so CI compiles the suite twice, once per compiler and purpose.
 # Leak reports from third-party libraries are suppressed in scripts/lsan.supp, each with its reason.
@@ -89,7 +90,8 @@ sanitize: sanitize-build
 
 # The scene parser under libFuzzer for 60 s (the target is built by sanitize-build).
 fuzz: sanitize-build
-	scripts/run-fuzz $(SANITIZE_BUILD)/bin/scene_parser_fuzz 60
+	scripts/run-fuzz $(SANITIZE_BUILD)/bin/scene_parser_fuzz 30
+	scripts/run-fuzz $(SANITIZE_BUILD)/bin/claims_file_fuzz 30
 
 # What CI runs (.ci/run, which times each phase): the tests, then the same under sanitizers, then the fuzzer.
 ci: test sanitize fuzz

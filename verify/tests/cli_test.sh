@@ -238,6 +238,23 @@ bad=$( (grep -rliE ': (null|-?nan|-?inf|NaN|-?Infinity)\b|"-?(nan|inf)"' --inclu
         grep -rliE '\| *-?(nan|inf|null) *\|' --include='*.md' "$work"
         grep -rliE '(^|,)-?(nan|inf|null)(,|$)' --include='*.csv' "$work") 2>/dev/null)
 [ -z "$bad" ] || fail "bare NaN/inf/null in: $bad"
+# Claims files (--claims-file): one that does not read is bad input, named with its line and field;
+# one that reads is the ledger of the run (here: phi3-det expected to be an erratum, so exit 1).
+claims_src="$(dirname "$0")/../../claims/paper.toml"
+check "claims file missing" 2 --claims-file "$work/no-such.toml" --scene quick --out "$work/none-claims1"
+grep -q "claims file '$work/no-such.toml': cannot be read" "$work/err" || fail "claims file missing: not named: $(cat "$work/err")"
+sed '0,/expected = "holds"/s//expected = "hold"/' "$claims_src" >"$work/bad-verdict.toml"
+check "claims file, bad verdict" 2 --claims-file "$work/bad-verdict.toml" --scene quick --out "$work/none-claims2"
+grep -q "claims file '$work/bad-verdict.toml', line [0-9]*, field 'expected': 'hold' is not a verdict" "$work/err" ||
+  fail "claims file, bad verdict: line and field not named: $(cat "$work/err")"
+sed '0,/check = "scaling"/s//check = "no-such-check"/' "$claims_src" >"$work/bad-check.toml"
+check "claims file, unknown check" 2 --claims-file "$work/bad-check.toml" --scene quick --out "$work/none-claims3"
+printf '[[claim]]\nid = "a"\n[[claim]]\nid = "a"\n' >"$work/incomplete.toml"
+check "claims file, incomplete record" 2 --claims-file "$work/incomplete.toml" --scene quick --out "$work/none-claims4"
+for k in 1 2 3 4; do [ -e "$work/none-claims$k" ] && fail "bad claims file wrote $work/none-claims$k"; done
+awk 'BEGIN{p=0} /^id = "phi3-det"/{p=1} p && /^expected = "holds"/{sub(/holds/, "erratum\"\nfinding = \"erratum"); p=0} {print}' "$claims_src" >"$work/phi3-erratum.toml"
+check "claims file read" 1 --claims-file "$work/phi3-erratum.toml" --scene quick --claims phi3-det --out "$work/claims-file"
+grep -q "phi3-det: verdict holds, expected erratum" "$work/err" || fail "claims file read: expectation not from the file: $(cat "$work/err")"
 # The paper's source as an input (--paper, or the scene key "paper"): bad sources are bad input.
 paper_src="$(dirname "$0")/../paper/text/simpson-symplectic-gsi2023.tex"
 check "paper missing" 2 --claims phi3-det --paper "$work/no-such.tex" --out "$work/none-paper1"

@@ -244,6 +244,18 @@ TEST(Provenance, TheEditionTheHashAndTheUnresolvedCitationsAreRead) {
   EXPECT_EQ(std::find(resolved.unresolved.begin(), resolved.unresolved.end(), "KMOW00"), resolved.unresolved.end());
 }
 
+// The attribution a quoted sentence makes: the \cite keys of its whole sentence, before and after the
+// quoted words ("Kane et al.}" does not end the sentence); the sentences around it are not its.
+TEST(Provenance, TheCitationsOfAQuotedSentenceAreThoseOfItsSentence) {
+  const paper_source paper = embedded_paper();
+  EXPECT_EQ(citations_in_sentence(paper, 220, "the discrete flow (\\ref{systeme-symplectique-ordre-2}) is symplectic as observed by"),
+            (std::vector<std::string>{"SS92"}));
+  EXPECT_EQ(citations_in_sentence(paper, 223, "the numerical scheme (\\ref{systeme-symplectique-ordre-2}) is one particular"),
+            (std::vector<std::string>{"KMOW00", "Ne59"}));
+  EXPECT_TRUE(citations_in_sentence(paper, 226, "the discrete Hamiltonian").empty());
+  EXPECT_TRUE(citations_in_sentence(paper, 220, "words the paper does not have").empty());
+}
+
 // The earlier Phi_3 the source keeps commented out is read and checked like the live one: its
 // (2,1) entry h/(m(1 - omega^2 h^2/8)) makes det Phi_3 != 1, so phi3-det fails on it. Without the
 // comment there is no earlier text.

@@ -27,6 +27,8 @@
 #include <unistd.h>
 #include <csignal>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <exception>
 #include <string>
 #include <vector>
@@ -135,7 +137,8 @@ int main(int argc, char** argv) {
       "Exit codes: 0 every verdict as expected (compare: the reports agree); 1 a verdict differs from the expected one, or "
       "coqc rejected a certificate (compare: a difference); 2 bad input (one line on stderr, nothing written); 3 a bug in "
       "the harness; 130 or 143 interrupted by SIGINT or SIGTERM (the previous report left as it was).");
-  std::string scene_name = "paper", out_dir, seed_text, samples_text, enclosure_budget_text, paper_file, timing_runs_text;
+  std::string scene_name = "paper", out_dir, seed_text, samples_text, enclosure_budget_text, paper_file, timing_runs_text,
+      claims_file;
   std::vector<std::string> claim_ids, section_list, precision_names;
   bool want_claims = false, want_scenes = false, want_precisions = false, allow_expensive = false, long_run = false,
        quiet = false, no_timing = false, certify = false, no_certify = false;
@@ -143,6 +146,8 @@ int main(int argc, char** argv) {
   for (const auto& [name, text] : embedded_scenes()) scene_list += (scene_list.empty() ? "" : ", ") + name;
   app.add_option("--scene", scene_name, "embedded scene name (" + scene_list + ") or a scene JSON file")->capture_default_str();
   app.add_option("--paper", paper_file, "the paper's LaTeX source to check (default: the embedded source; the report names the edition it prints and its SHA-256)");
+  app.add_option("--claims-file", claims_file,
+                 "the claims to check, one TOML record each (docs/claims-file.md; default: the embedded claims/paper.toml)");
   app.add_option("--out", out_dir,
                  "report directory (default: reports/out/<scene>; with --claims or --sections, a directory named after the "
                  "selection, e.g. reports/out/paper-claims-phi3-det, so that a subset never replaces the full report)");
@@ -214,6 +219,12 @@ int main(int argc, char** argv) {
   std::filesystem::path out;
   cost_estimate cost;
   try {
+    if (!claims_file.empty()) {
+      std::ifstream in(claims_file, std::ios::binary);
+      if (!in) throw std::invalid_argument("claims file '" + claims_file + "': cannot be read");
+      const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      use_claims_file(text, claims_file);  // a file that does not read is bad input: nothing runs
+    }
     if (want_claims) return list_claims();
     if (want_scenes) return list_scenes();
     if (want_precisions) return list_precisions();
@@ -225,6 +236,7 @@ int main(int argc, char** argv) {
     if (app.count("--sections") > 0) selection.sections = section_list;
     apply_selection(s, selection);
     if (!paper_file.empty()) s.overrides["paper"] = paper_file;
+    if (!claims_file.empty()) s.overrides["claims_file"] = claims_file;
     if (app.count("--precisions") > 0) apply_precisions(s, precision_names);
     const auto parse_count = [](const std::string& flag, const std::string& text, unsigned long long min, unsigned long long max) {
       std::size_t used = 0;

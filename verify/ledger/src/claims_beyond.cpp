@@ -528,24 +528,12 @@ claim_result check_internal_node_solvability(const run_context& ctx) {
 
 }  // namespace
 
-void add_beyond_claims(std::vector<claim>& claims) {
-  claims.push_back({"nonlinear-step-derivation", "beyond", "LLhh",
-                    "(Beyond the paper.) For any smooth V the step (q_j, p_j) -> (q_{j+1}, p_{j+1}) defined by p_j = -dL_h/dq_l, "
-                    "dL_h/dq_m = 0, p_{j+1} = dL_h/dq_r is the core's: one equation in q_m, then explicit updates.",
-                    {"exact"}, verdict::holds, check_step_derivation});
-  claims.push_back({"nonlinear-lobatto-equivalence", "beyond", "LLhh",
-                    "(Beyond the paper.) For any V the Simpson step equals the 3-stage Lobatto IIIA(q)-IIIB(p) step.",
-                    {"exact", "numeric"}, verdict::holds, check_lobatto_equivalence});
-  claims.push_back({"nonlinear-symplectic", "beyond", "LLhh",
-                    "(Beyond the paper.) The Jacobian D of the nonlinear step satisfies D^T J D = J.", {"exact", "numeric"},
-                    verdict::holds, check_nonlinear_symplectic});
-  claims.push_back({"nonlinear-order-4", "beyond", "prose",
-                    "(Beyond the paper.) The Simpson scheme has global order 4 on the pendulum, against its exact solution.",
-                    {"enclosure"}, verdict::holds, check_nonlinear_order});
-  claims.push_back({"internal-node-solvability", "beyond", "equation-milieu-intervalle",
-                    "(Beyond the paper.) q_m is uniquely defined near the data when h^2 sup|V''|/(8m) < 1, and the bound is "
-                    "sharp on the oscillator (omega^2 h^2 = 8).",
-                    {"exact"}, verdict::holds, check_internal_node_solvability});
+void add_beyond_checks(check_registry& checks) {
+  checks.add("step-derivation", check_step_derivation);
+  checks.add("lobatto-equivalence", check_lobatto_equivalence);
+  checks.add("nonlinear-symplectic", check_nonlinear_symplectic);
+  checks.add("nonlinear-order", check_nonlinear_order);
+  checks.add("internal-node-solvability", check_internal_node_solvability);
 }
 
 }  // namespace simpson::verify::detail

@@ -4,12 +4,13 @@
 // paper's claims); the scene key "claims": "beyond" selects them.
 
 #include <simpson/verify/claim.hpp>
+#include "check_registry.hpp"
 
 #include <vector>
 
 namespace simpson::verify::detail {
 
-void add_beyond_claims(std::vector<claim>& claims);
-void add_beyond_ndof_claims(std::vector<claim>& claims);
+void add_beyond_checks(check_registry& checks);
+void add_beyond_ndof_checks(check_registry& checks);
 
 }  // namespace simpson::verify::detail

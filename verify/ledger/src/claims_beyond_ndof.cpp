@@ -306,17 +306,10 @@ claim_result check_ndof_stability(const run_context&) {
 
 }  // namespace
 
-void add_beyond_ndof_claims(std::vector<claim>& claims) {
-  claims.push_back({"ndof-symplectic", "beyond", "Phi3",
-                    "(Beyond the paper.) For L = q'^T M q'/2 - q^T K q/2 the Simpson map Phi_3 (2n x 2n) satisfies Phi^T J Phi = J.",
-                    {"exact"}, verdict::holds, check_ndof_symplectic});
-  claims.push_back({"ndof-energy", "beyond", "hamiltonien-discret",
-                    "(Beyond the paper.) Phi_3 conserves the block analogue of the discrete energy H_d.", {"exact"},
-                    verdict::holds, check_ndof_energy});
-  claims.push_back({"ndof-stability", "beyond", "stabilite",
-                    "(Beyond the paper.) Phi_3 is stable iff every omega_k h lies in the stable set of the scalar case, "
-                    "omega_k^2 the generalized eigenvalues of (K, M).",
-                    {"exact"}, verdict::holds, check_ndof_stability});
+void add_beyond_ndof_checks(check_registry& checks) {
+  checks.add("ndof-symplectic", check_ndof_symplectic);
+  checks.add("ndof-energy", check_ndof_energy);
+  checks.add("ndof-stability", check_ndof_stability);
 }
 
 }  // namespace simpson::verify::detail

@@ -79,13 +79,8 @@ std::vector<proof_goal> family_symplectic_goals() {
   return goals;
 }
 
-void add_family_claims(std::vector<claim>& claims) {
-  claims.push_back({"family-symplectic", "beyond", "LLhh",
-                    fmt::format("(Beyond the paper.) Every Galerkin variational integrator of degree s = 1 … {} with a Newton–Cotes, "
-                                "Lobatto or Gauss rule that gives a one-step map for the harmonic oscillator has det Φ = 1 and "
-                                "conserves the quadratic form W = [[−γ, (α−δ)/2], [(α−δ)/2, β]], for every m, ω, h.",
-                                family_claim_degree),
-                    {"exact"}, verdict::holds, check_family_symplectic});
+void add_family_checks(check_registry& checks) {
+  checks.add("family-symplectic", check_family_symplectic);
 }
 
 }  // namespace simpson::verify::detail

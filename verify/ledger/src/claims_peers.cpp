@@ -177,12 +177,8 @@ claim_result check_peer_schemes(const run_context& ctx) {
 
 }  // namespace
 
-void add_peer_claims(std::vector<claim>& claims) {
-  claims.push_back({"peer-schemes", "9", "(Phi3)",
-                    "Finding, not printed: on the oscillator Phi_3 is exactly the 3-stage Lobatto IIIA-IIIB pair (IIIA "
-                    "for q, IIIB for p). Newmark and Stormer-Verlet differ from it at theta^3; RK4, 2-stage "
-                    "Gauss-Legendre, Yoshida's composition and the swapped Lobatto pair at theta^5.",
-                    {"exact", "numeric"}, verdict::holds, check_peer_schemes, finding::none, "", false, claim_origin::harness});
+void add_peer_checks(check_registry& checks) {
+  checks.add("peer-schemes", check_peer_schemes);
 }
 
 }  // namespace simpson::verify::detail

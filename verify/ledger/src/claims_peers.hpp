@@ -3,13 +3,14 @@
 // Φ₃ as a product of shears.
 
 #include <simpson/verify/claim.hpp>
+#include "check_registry.hpp"
 
 #include <vector>
 
 namespace simpson::verify::detail {
 
-void add_peer_claims(std::vector<claim>& claims);
+void add_peer_checks(check_registry& checks);
 /// Φ₃ as a product of shears (claims_shear.cpp).
-void add_shear_claims(std::vector<claim>& claims);
+void add_shear_checks(check_registry& checks);
 
 }  // namespace simpson::verify::detail

@@ -128,11 +128,8 @@ claim_result check_table_roundoff(const run_context& ctx) {
 
 }  // namespace
 
-void add_roundoff_claims(std::vector<claim>& claims) {
-  claims.push_back({"table-roundoff", "8", "Table 1",
-                    "Table 1's errors of the symplectic Simpson scheme (momentum and state, N = 10, 20, 40, one period) are the "
-                    "scheme's own: a double program's round-off over the period is below half a unit of each printed last digit.",
-                    {"floating (Gappa, Coq)"}, verdict::holds, check_table_roundoff, finding::none, "", false, claim_origin::harness});
+void add_roundoff_checks(check_registry& checks) {
+  checks.add("table-roundoff", check_table_roundoff);
 }
 
 }  // namespace simpson::verify::detail

@@ -273,46 +273,18 @@ claim_result check_hamilton_consistency(const run_context& ctx) {
 
 }  // namespace
 
-void add_section2_claims(std::vector<claim>& claims) {
-  claims.push_back({"classical-action-range", "2", "prose (S_d)",
-                    "Splitting [0, T] into N elements, S_d = sum_{j=1}^{N-1} L_d(q_j, q_{j+1}).", {"exact"},
-                    verdict::erratum, check_action_range, finding::erratum, "", true});
-  claims.push_back({"classical-euler-lagrange", "2", "schema-ordre-deux",
-                    "The discrete Euler-Lagrange equation dL_d/dq_r(q_{j-1}, q_j) + dL_d/dq_l(q_j, q_{j+1}) = 0 "
-                    "with (lagrangien-discret) gives m (q_{j+1} - 2 q_j + q_{j-1})/h^2 + 1/2 [V'((q_j + q_{j+1})/2) "
-                    "+ V'((q_{j-1} + q_j)/2)] = 0.",
-                    {"exact"}, verdict::holds, check_classical_euler_lagrange});
-  claims.push_back({"classical-consistency", "2", "schema-ordre-deux, oscillateur-nonlineaire",
-                    "This numerical scheme is clearly consistent with m q'' + dV/dq = 0.", {"exact series"},
-                    verdict::holds, check_classical_consistency});
-  claims.push_back({"newmark-momentum", "2", "moment",
-                    "p_{j+1} = m (q_{j+1} - q_j)/h - m omega^2 h (q_{j+1} + q_j)/4, with p_r = dL_d/dq_r.", {"exact"},
-                    verdict::holds, check_newmark_momentum});
-  claims.push_back({"newmark-discrete-system", "2", "systeme-dynamique-discret-ordre-2",
-                    "p_{j+1} - p_j = -m omega^2 h (q_{j+1} + q_j)/2 and (q_{j+1} - q_j)/h = (p_{j+1} + p_j)/(2m).",
-                    {"exact"}, verdict::holds, check_newmark_discrete_system});
-  claims.push_back({"hamilton-consistency", "2", "systeme-dynamique-discret-ordre-2",
-                    "These relations are consistent with the first order Hamilton version dp/dt + m omega^2 q = 0, dq/dt = p/m of "
-                    "the equations of an harmonic oscillator.",
-                    {"exact series"}, verdict::holds, check_hamilton_consistency});
-  claims.push_back({"newmark-matrix", "2", "matrice-symplectique-ordre-2",
-                    "The system is (p_{j+1}, q_{j+1}) = Phi (p_j, q_j) with Phi = 1/(1 + omega^2 h^2/4) "
-                    "((1 - omega^2 h^2/4, -m omega^2 h), (h/m, 1 - omega^2 h^2/4)).",
-                    {"exact"}, verdict::holds, check_newmark_matrix});
-  claims.push_back({"newmark-det", "2", "matrice-symplectique-ordre-2",
-                    "det Phi = 1: the discrete flow is symplectic.", {"exact", "numeric"}, verdict::holds,
-                    check_newmark_det});
-  claims.push_back({"newmark-identification", "2", "matrice-symplectique-ordre-2",
-                    "Kane et al.: the scheme (systeme-symplectique-ordre-2)(matrice-symplectique-ordre-2) is one particular "
-                    "version of the Newmark scheme (beta = 1/4, gamma = 1/2).",
-                    {"exact"}, verdict::holds, check_newmark_identification});
-  claims.push_back({"newmark-unconditional-stability", "2", "prose",
-                    "For V = m omega^2 q^2/2 the scheme (schema-ordre-deux) is linearly stable; it is an "
-                    "unconditionally stable version of the Newmark scheme.",
-                    {"exact"}, verdict::holds, check_newmark_stability});
-  claims.push_back({"newmark-energy", "2", "HH-exact",
-                    "H_j = p_j^2/(2m) + m omega^2 q_j^2/2 is conserved: H_{j+1} = H_j.", {"exact", "numeric"},
-                    verdict::holds, check_newmark_energy});
+void add_section2_checks(check_registry& checks) {
+  checks.add("action-range", check_action_range);
+  checks.add("classical-euler-lagrange", check_classical_euler_lagrange);
+  checks.add("classical-consistency", check_classical_consistency);
+  checks.add("newmark-momentum", check_newmark_momentum);
+  checks.add("newmark-discrete-system", check_newmark_discrete_system);
+  checks.add("hamilton-consistency", check_hamilton_consistency);
+  checks.add("newmark-matrix", check_newmark_matrix);
+  checks.add("newmark-det", check_newmark_det);
+  checks.add("newmark-identification", check_newmark_identification);
+  checks.add("newmark-stability", check_newmark_stability);
+  checks.add("newmark-energy", check_newmark_energy);
 }
 
 }  // namespace simpson::verify::detail

@@ -193,30 +193,15 @@ claim_result check_simpson_action_range(const run_context&) {
 
 }  // namespace
 
-void add_section3_4_claims(std::vector<claim>& claims) {
-  claims.push_back({"interpolant-nodal", "3", "fonctions-de-base, q2t",
-                    "q(0) = q_l, q(h/2) = q_m and q(h) = q_r.", {"exact"}, verdict::holds, check_basis_nodal});
-  claims.push_back({"interpolant-derivative", "3", "display after q2t",
-                    "dq/dt = (1/h)[q_l (4 theta - 3) + 4 q_m (1 - 2 theta) + q_r (4 theta - 1)] = g_l (1 - theta) + g_r theta.",
-                    {"exact"}, verdict::holds, check_interpolant_derivative});
-  claims.push_back({"gear-derivatives", "3", "derivees-gear",
-                    "g_l = dq/dt(0) = (-3 q_l + 4 q_m - q_r)/h, g_r = dq/dt(h) = (q_l - 4 q_m + 3 q_r)/h.", {"exact"},
-                    verdict::holds, check_gear});
-  claims.push_back({"centred-derivative", "3", "derivee-centree",
-                    "g_m = dq/dt(h/2) = (g_l + g_r)/2 = (q_r - q_l)/h.", {"exact"}, verdict::holds, check_centred});
-  claims.push_back({"midpoint-exactness", "4", "prose",
-                    "The midpoint rule int_0^1 psi = psi(1/2) is exact for polynomials of degree <= 1.", {"exact"},
-                    verdict::holds, check_midpoint_exactness});
-  claims.push_back({"simpson-exactness", "4", "simpson",
-                    "Simpson's formula is accurate up to polynomials of degree three.", {"exact"}, verdict::holds,
-                    check_simpson_exactness});
-  claims.push_back({"simpson-lagrangian", "4", "LLhh",
-                    "With Simpson's formula and the quadratic interpolant, L_h = (m h/12)(g_l^2 + 4 g_m^2 + g_r^2) - "
-                    "(h/6)(V(q_l) + 4 V(q_m) + V(q_r)).",
-                    {"exact"}, verdict::holds, check_simpson_lagrangian});
-  claims.push_back({"simpson-action-range", "4", "SSdd",
-                    "With N regular intervals, Sigma_d = sum_{j=1}^{N-1} L_h(q_j, q_{j+1/2}, q_{j+1}).", {"exact"},
-                    verdict::erratum, check_simpson_action_range, finding::erratum, "", true});
+void add_section3_4_checks(check_registry& checks) {
+  checks.add("basis-nodal", check_basis_nodal);
+  checks.add("interpolant-derivative", check_interpolant_derivative);
+  checks.add("gear", check_gear);
+  checks.add("centred", check_centred);
+  checks.add("midpoint-exactness", check_midpoint_exactness);
+  checks.add("simpson-exactness", check_simpson_exactness);
+  checks.add("simpson-lagrangian", check_simpson_lagrangian);
+  checks.add("simpson-action-range", check_simpson_action_range);
 }
 
 }  // namespace simpson::verify::detail

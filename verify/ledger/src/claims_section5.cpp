@@ -671,65 +671,27 @@ claim_result check_maupertuis_naming(const run_context& ctx) {
 
 }  // namespace
 
-void add_section5_claims(std::vector<claim>& claims) {
-  claims.push_back({"maupertuis-naming", "5", "prose",
-                    "We first write the Maupertuis's stationary-action principle delta Sigma_d = 0 with a variation of the internal "
-                    "degree of freedom.",
-                    {"exact"}, verdict::erratum, check_maupertuis_naming, finding::naming});
-  claims.push_back({"gear-partials", "5", "prose", "dg_l/dq_m = 4/h, dg_m/dq_m = 0 and dg_r/dq_m = -4/h.", {"exact"},
-                    verdict::holds, check_gear_partials});
-  claims.push_back({"lh-dqm", "5", "prose",
-                    "dL_h/dq_m = (h/12) [(8m/h) g_l - (8m/h) g_r - 8 dV/dq(q_m)].", {"exact"}, verdict::holds, check_lh_dqm});
-  claims.push_back({"gr-minus-gl", "5", "prose", "g_r - g_l = (4/h)(q_l - 2 q_m + q_r).", {"exact"}, verdict::holds,
-                    check_gr_minus_gl});
-  claims.push_back({"internal-equation", "5", "equation-milieu-intervalle",
-                    "dL_h/dq_m = 0 is m (4/h^2)(q_l - 2 q_m + q_r) + dV/dq(q_m) = 0.", {"exact"}, verdict::holds,
-                    check_internal_equation});
-  claims.push_back({"internal-equation-second-order", "5", "equation-milieu-intervalle",
-                    "This is a second order discretization of the continuous Euler-Lagrange equation.", {"exact series"},
-                    verdict::holds, check_internal_second_order});
-  claims.push_back({"qm-harmonic", "5", "qm-oscillateur-harmonique",
-                    "For the harmonic oscillator, q_m = (q_l + q_r)/(2 (1 - omega^2 h^2/8)).", {"exact", "numeric"},
-                    verdict::holds, check_qm_harmonic});
-  claims.push_back({"qm-not-affine", "5", "qm-oscillateur-harmonique",
-                    "This interpolation is not linear if h > 0.", {"exact"}, verdict::erratum, check_qm_not_affine, finding::wording});
-  claims.push_back({"stability-condition", "5", "stabilite", "A stability condition is naturally emerging: 0 < omega h < 2 sqrt(2).",
-                    {"exact"}, verdict::holds, check_stability_condition});
-  claims.push_back({"reduced-lagrangian", "5", "Lagrangien-reduit",
-                    "With q_m eliminated, L_h^r = 1/(1 - omega^2 h^2/8) [m h/2 ((q_r - q_l)/h)^2 - (h/2) m omega^2 "
-                    "((22 - h^2 omega^2)/48 (q_l^2 + q_r^2) + q_l q_r/12)].",
-                    {"exact", "numeric"}, verdict::holds, check_reduced_lagrangian});
-  claims.push_back({"scheme-order-3", "5", "schema-ordre-3",
-                    "The discrete Euler-Lagrange equation of L_h^r is (q_{j+1} - 2 q_j + q_{j-1})/h^2 + (omega^2/24)(q_{j+1} "
-                    "+ 22 q_j + q_{j-1}) - (omega^4 h^2/24) q_j = 0.",
-                    {"exact"}, verdict::holds, check_scheme_order3});
-  claims.push_back({"scheme-consistency", "5", "schema-ordre-3",
-                    "The scheme is consistent with q'' + omega^2 q = 0.", {"exact series"}, verdict::holds,
-                    check_scheme_consistency});
-  claims.push_back({"taylor-display", "5", "prose (display)",
-                    "q_{j+-1} = q_j +- h q' + h^2/2 q'' +- ... +- h^5/120 q^(5) + h^6/720 d^6q/dt^5 + O(h^7).", {"exact"},
-                    verdict::erratum, check_taylor_display, finding::erratum, "", true});
-  claims.push_back({"truncation-1440", "5", "prose (display)", "T_h(q_j) = omega^6 h^4 q_j/1440 + O(h^6).",
-                    {"exact series", "numeric"}, verdict::holds, check_truncation_1440});
-  claims.push_back({"fourth-order-truncation", "5", "schema-ordre-3",
-                    "The numerical scheme is fourth order accurate in the sense of the truncation error.", {"exact series"},
-                    verdict::holds, check_fourth_order_truncation});
-  claims.push_back({"characteristic-equation", "5", "prose",
-                    "With q_{j-1} = 1, q_j = r, q_{j+1} = r^2: a r^2 + b r + c = 0 with a = 1 + h^2 omega^2/24 and "
-                    "b = -(48 - 22 h^2 omega^2 + h^4 omega^4)/24.",
-                    {"exact"}, verdict::holds, check_characteristic_equation});
-  claims.push_back({"root-modulus-criterion", "5", "prose",
-                    "The scheme is stable when the roots of the corresponding equation are of modulus smaller than 1.",
-                    {"exact"}, verdict::erratum, check_root_modulus, finding::wording});
-  claims.push_back({"discriminant-factorization", "5", "prose (display)",
-                    "Delta = b^2 - 4ac = (omega^2 h^2/576)(omega^2 h^2 - 24)(omega^2 h^2 - 12)(omega^2 h^2 - 8).",
-                    {"exact", "numeric"}, verdict::holds, check_discriminant_factorization});
-  claims.push_back({"discriminant-negative", "5", "stabilite",
-                    "Under the stability condition all the factors of Delta are negative and Delta < 0.", {"exact", "exact (GiNaC)"},
-                    verdict::erratum, check_discriminant_negative, finding::wording});
-  claims.push_back({"roots-product-one", "5", "prose",
-                    "The two roots are complex conjugate, their product |r|^2 is 1, and the scheme is stable.", {"exact"},
-                    verdict::holds, check_roots_product});
+void add_section5_checks(check_registry& checks) {
+  checks.add("maupertuis-naming", check_maupertuis_naming);
+  checks.add("gear-partials", check_gear_partials);
+  checks.add("lh-dqm", check_lh_dqm);
+  checks.add("gr-minus-gl", check_gr_minus_gl);
+  checks.add("internal-equation", check_internal_equation);
+  checks.add("internal-second-order", check_internal_second_order);
+  checks.add("qm-harmonic", check_qm_harmonic);
+  checks.add("qm-not-affine", check_qm_not_affine);
+  checks.add("stability-condition", check_stability_condition);
+  checks.add("reduced-lagrangian", check_reduced_lagrangian);
+  checks.add("scheme-order3", check_scheme_order3);
+  checks.add("scheme-consistency", check_scheme_consistency);
+  checks.add("taylor-display", check_taylor_display);
+  checks.add("truncation-1440", check_truncation_1440);
+  checks.add("fourth-order-truncation", check_fourth_order_truncation);
+  checks.add("characteristic-equation", check_characteristic_equation);
+  checks.add("root-modulus", check_root_modulus);
+  checks.add("discriminant-factorization", check_discriminant_factorization);
+  checks.add("discriminant-negative", check_discriminant_negative);
+  checks.add("roots-product", check_roots_product);
 }
 
 }  // namespace simpson::verify::detail

@@ -395,45 +395,19 @@ claim_result check_hd_invariance(const run_context& ctx) {
 
 }  // namespace
 
-void add_section6_7_claims(std::vector<claim>& claims) {
-  claims.push_back({"momentum-order-3", "6", "moment-ordre-3",
-                    "p_r = dL_h^r/dq_r = m (q_r - q_l)/h - h (m omega^2/6)(q_l + 2 q_r)/(1 - omega^2 h^2/8) + h^3 (m omega^4/48) "
-                    "q_r/(1 - omega^2 h^2/8).",
-                    {"exact"}, verdict::holds, check_momentum_order3});
-  claims.push_back({"phi3-elimination", "6", "Phi3",
-                    "Eliminating q_{j-1} between the two momentum relations with (schema-ordre-3) gives y_{j+1} = Phi_3 y_j "
-                    "with Phi_3 as printed.",
-                    {"exact", "numeric"}, verdict::holds, check_phi3_elimination});
-  claims.push_back({"derivation-phi3", "4-6", "LLhh, qm-oscillateur-harmonique, Lagrangien-reduit, schema-ordre-3, moment-ordre-3, Phi3",
-                    "(Not one printed sentence: the derivation of Sections 4 to 6 checked as one claim.) Simpson's rule on the "
-                    "quadratic interpolant gives L_h; dL_h/dq_m = 0 gives q_m and L_h^r; the discrete Euler-Lagrange equation "
-                    "and p_r = dL_h^r/dq_r follow; eliminating q_{j-1} gives Phi_3 as printed.",
-                    {"exact"}, verdict::holds, check_derivation_phi3});
-  claims.push_back({"phi3-explicit", "6", "prose", "The symplectic Simpson scheme defined by Phi_3 is an explicit scheme.",
-                    {"exact"}, verdict::erratum, check_phi3_explicit, finding::wording});
-  claims.push_back({"phi3-det", "6", "Phi3", "det Phi_3 = 1.", {"exact", "numeric"}, verdict::holds, check_phi3_det});
-  claims.push_back({"phi3-symplectic", "6", "prose", "In consequence (det Phi_3 = 1) the scheme is symplectic.", {"exact"},
-                    verdict::holds, check_phi3_symplectic});
-  claims.push_back({"gamma-system", "7", "prose (display)",
-                    "Q(Phi y) = Q(y) for all y iff Gamma (xi, eta, zeta)^T = 0 with Gamma = ((alpha^2-1)/2, alpha gamma, "
-                    "gamma^2/2; alpha beta, alpha delta + beta gamma - 1, gamma delta; beta^2/2, beta delta, (gamma^2-1)/2).",
-                    {"exact"}, verdict::erratum, check_gamma_system, finding::erratum, "", true});
-  claims.push_back({"gamma-determinant", "7", "prose",
-                    "det Gamma = (alpha delta - beta gamma - 1)(1 - alpha - delta + alpha delta - beta gamma)(1 + alpha + "
-                    "delta + alpha delta - beta gamma).",
-                    {"exact"}, verdict::erratum, check_gamma_determinant, finding::erratum, "", true});
-  claims.push_back({"gamma-singular", "7", "prose", "det Gamma vanishes when alpha delta - beta gamma = 1.", {"exact"},
-                    verdict::erratum, check_gamma_singular, finding::derivation_gap, "gamma-system"});
-  claims.push_back({"conserved-form", "7", "prose",
-                    "When alpha = delta, eta = 0 and Q_c(p, q) = gamma p^2/2 - beta q^2/2 is conserved, up to a "
-                    "multiplicative constant.",
-                    {"exact"}, verdict::erratum, check_conserved_form, finding::derivation_gap, "gamma-system"});
-  claims.push_back({"hd-proportional", "7", "hamiltonien-discret",
-                    "H_d = p^2/(2m) + m omega^2 (1 - omega^2 h^2/12)(1 - omega^2 h^2/24) q^2/(2 (1 - omega^2 h^2/8)) is the "
-                    "conserved form Q_c of Phi_3 up to a constant.",
-                    {"exact"}, verdict::holds, check_hd_proportional});
-  claims.push_back({"hd-invariance", "7", "hamiltonien-discret", "H_d(p_{j+1}, q_{j+1}) = H_d(p_j, q_j).", {"exact", "numeric"},
-                    verdict::holds, check_hd_invariance});
+void add_section6_7_checks(check_registry& checks) {
+  checks.add("momentum-order3", check_momentum_order3);
+  checks.add("phi3-elimination", check_phi3_elimination);
+  checks.add("derivation-phi3", check_derivation_phi3);
+  checks.add("phi3-explicit", check_phi3_explicit);
+  checks.add("phi3-det", check_phi3_det);
+  checks.add("phi3-symplectic", check_phi3_symplectic);
+  checks.add("gamma-system", check_gamma_system);
+  checks.add("gamma-determinant", check_gamma_determinant);
+  checks.add("gamma-singular", check_gamma_singular);
+  checks.add("conserved-form", check_conserved_form);
+  checks.add("hd-proportional", check_hd_proportional);
+  checks.add("hd-invariance", check_hd_invariance);
 }
 
 }  // namespace simpson::verify::detail

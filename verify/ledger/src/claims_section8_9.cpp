@@ -554,14 +554,19 @@ claim_result check_figure1(const run_context& ctx) {
                          {"experiment", "Section 8 conventions, N = 15 (Figure 1), errors at the nodes over one period"},
                          {"schemes", schemes},
                          {"reading", "very satisfactory: max error <= 1/10 of the amplitude; very close: <= 1/500"}};
-  // The figure the caption describes, as the source includes it: the \includegraphics before "Figure 1.".
+  // The figure the caption describes, as the source includes it: the last \includegraphics before
+  // the quoted caption sentence (found by the quote itself, not by a typed anchor).
   const std::string& text = paper_of(ctx).source.text;
-  const auto caption = find_ignoring_space(text, "Figure 1. Typical");
+  std::size_t sentence_at = 0;
+  for (int line = 1; line < said.span().line && sentence_at != std::string::npos; ++line) {
+    sentence_at = text.find('\n', sentence_at);
+    if (sentence_at != std::string::npos) ++sentence_at;
+  }
   std::string included;
   bool found = false;
-  if (caption) {
+  if (sentence_at != std::string::npos) {
     static const std::regex graphics(R"(\\includegraphics(\[[^\]]*\])?\{([^}]*)\})");
-    const std::string before = text.substr(0, caption->first);
+    const std::string before = text.substr(0, sentence_at);
     for (auto it = std::sregex_iterator(before.begin(), before.end(), graphics); it != std::sregex_iterator(); ++it) {
       included = folded_space((*it)[2].str());
       found = true;
@@ -656,42 +661,18 @@ claim_result check_nonlinear_internal_node(const run_context& ctx) {
 
 }  // namespace
 
-void add_scaling_lemma(std::vector<claim>& claims) {
-  claims.push_back({"lemma-dimensional-scaling", "harness", "all",
-                    "(Not a claim of the paper; the reduction every exact proof uses.) With S = diag(m omega, 1), Phi_3(m, omega, h) "
-                    "= S Phi_3(1, 1, omega h) S^-1 and likewise for Phi; H_d and H scale by m omega^2 with p/(m omega); "
-                    "(schema-ordre-3) scales by omega^2; q_m is invariant, and p_r, L_h^r, L_h, L_d and its momentum scale by m omega (so "
-                    "the elimination route of Section 6, built from p_r and the scheme, transforms like Phi_3).",
-                    {"exact"}, verdict::holds, check_scaling, finding::none, "", false, claim_origin::harness});
+void add_scaling_lemma_check(check_registry& checks) {
+  checks.add("scaling", check_scaling);
 }
 
-void add_section8_9_claims(std::vector<claim>& claims) {
-  claims.push_back({"table-orders", "8", "Table 1",
-                    "Estimated orders: Newmark 2 for momentum and state, 4 for the energy (hamiltonien-discret); symplectic "
-                    "Simpson 4 for momentum, state and the energy (HH-exact).",
-                    {"numeric"}, verdict::holds, check_table_orders});
-  claims.push_back({"table-conservation", "8", "Table 1",
-                    "Newmark conserves (HH-exact) and symplectic Simpson conserves (hamiltonien-discret) exactly (errors "
-                    "~1e-13).",
-                    {"numeric"}, verdict::holds, check_table_conservation});
-  claims.push_back({"table-values", "8", "Table 1",
-                    "The maximum-norm errors of Table 1 for N = 10, 20, 40 (q = sin omega t, p = m omega cos omega t, one "
-                    "period T = 1).",
-                    {"numeric"}, verdict::erratum, check_table_values, finding::erratum, "experiment-conventions"});
-  claims.push_back({"figure1-statements", "8", "Figure 1",
-                    "Figure 1 (N = 15): both schemes give very satisfactory results; the momentum p is very close to the exact "
-                    "solution with the symplectic Simpson scheme.",
-                    {"numeric"}, verdict::unverifiable, check_figure1, finding::unverifiable});
-  claims.push_back({"conclusion-symplectic-stable", "9", "prose",
-                    "The symplectic Simpson method is symplectic and conditionally stable.", {"exact"}, verdict::holds,
-                    check_conclusion_symplectic_stable});
-  claims.push_back({"conclusion-fourth-order", "9", "prose",
-                    "The method is fourth order accurate for state and momentum.", {"exact series", "numeric"},
-                    verdict::holds, check_conclusion_fourth_order});
-  claims.push_back({"nonlinear-internal-node", "9", "equation-milieu-intervalle",
-                    "An important question is still open concerning the nonlinear case. The elimination of the internal degree "
-                    "of freedom is not possible in that case.",
-                    {"exact (GiNaC)"}, verdict::erratum, check_nonlinear_internal_node, finding::wording});
+void add_section8_9_checks(check_registry& checks) {
+  checks.add("table-orders", check_table_orders);
+  checks.add("table-conservation", check_table_conservation);
+  checks.add("table-values", check_table_values);
+  checks.add("figure1", check_figure1);
+  checks.add("conclusion-symplectic-stable", check_conclusion_symplectic_stable);
+  checks.add("conclusion-fourth-order", check_conclusion_fourth_order);
+  checks.add("nonlinear-internal-node", check_nonlinear_internal_node);
 }
 
 }  // namespace simpson::verify::detail

@@ -80,11 +80,8 @@ claim_result check_phi3_shear_factorization(const run_context& ctx) {
 
 }  // namespace
 
-void add_shear_claims(std::vector<claim>& claims) {
-  claims.push_back({"phi3-shear-factorization", "6", "Phi3",
-                    "(Not in the paper.) Phi_3 = L(c) U(b) L(c) with L(c) = ((1, 0), (c, 1)), U(b) = ((1, b), (0, 1)), "
-                    "b = beta, c = h/(2m(1 - omega^2 h^2/12)), except at omega^2 h^2 = 12 and 24.",
-                    {"exact", "numeric"}, verdict::holds, check_phi3_shear_factorization, finding::none, "", false, claim_origin::harness});
+void add_shear_checks(check_registry& checks) {
+  checks.add("phi3-shear-factorization", check_phi3_shear_factorization);
 }
 
 }  // namespace simpson::verify::detail

@@ -187,19 +187,13 @@ claim_result check_experiment_conventions(const run_context& ctx) {
 
 }  // namespace
 
-void add_abstract_claims(std::vector<claim>& claims) {
-  claims.push_back({"abstract-stable", "abstract", "prose",
-                    "It is a stable, explicit, and symplectic scheme satisfying the conservation of an approximate energy: stable.",
-                    {"exact"}, verdict::erratum, check_abstract_stable, finding::wording});
-  claims.push_back({"abstract-explicit", "abstract", "prose",
-                    "It is a stable, explicit, and symplectic scheme satisfying the conservation of an approximate energy: explicit.",
-                    {"exact"}, verdict::erratum, check_abstract_explicit, finding::wording, "phi3-explicit"});
+void add_abstract_checks(check_registry& checks) {
+  checks.add("abstract-stable", check_abstract_stable);
+  checks.add("abstract-explicit", check_abstract_explicit);
 }
 
-void add_convention_claims(std::vector<claim>& claims) {
-  claims.push_back({"experiment-conventions", "8", "prose",
-                    "We have chosen q(t) = sin omega t and p(t) = m omega cos omega t, with a period T = 1.", {"exact", "numeric (the convention search)"},
-                    verdict::erratum, check_experiment_conventions, finding::erratum});
+void add_convention_checks(check_registry& checks) {
+  checks.add("experiment-conventions", check_experiment_conventions);
 }
 
 }  // namespace simpson::verify::detail

@@ -3,12 +3,13 @@
 // conventions of Section 8's experiment.
 
 #include <simpson/verify/claim.hpp>
+#include "check_registry.hpp"
 
 #include <vector>
 
 namespace simpson::verify::detail {
 
-void add_abstract_claims(std::vector<claim>& claims);
-void add_convention_claims(std::vector<claim>& claims);
+void add_abstract_checks(check_registry& checks);
+void add_convention_checks(check_registry& checks);
 
 }  // namespace simpson::verify::detail

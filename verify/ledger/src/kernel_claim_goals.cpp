@@ -141,38 +141,6 @@ const std::map<std::string, std::function<std::vector<proof_goal>()>>& kernel_cl
   return goals;
 }
 
-std::string without_coq_statement(const std::string& claim_id, const std::string& otherwise) {
-  const std::string consistency =
-      "consistency: the leading term, as h -> 0, of the scheme's series on smooth states (V inside it): a limit, not an identity field can state";
-  const std::string range = "a range of summation (N - 1 terms printed for N elements, an erratum): a count, not an identity";
-  const std::string numeric = "numbers measured in floating point: a numeric claim, nothing for a proof assistant to state";
-  const std::string one_expression = "both sides of each exactness identity are one expression once GiNaC has evaluated them: a lemma X = X would check nothing";
-  static const std::map<std::string, std::string> reasons{
-      {"newmark-identification", "an identification of parameters (Newmark's beta = 1/4, gamma = 1/2): the map it names is newmark-matrix's, certified there"},
-      {"midpoint-exactness", one_expression},
-      {"simpson-exactness", one_expression},
-      {"maupertuis-naming", "a naming erratum (prose): nothing to state in Coq"},
-      {"qm-not-affine", "a statement that something is not an identity (q_m is not (q_l + q_r)/2 for h > 0): its counterexample goal is not written yet"},
-      {"fourth-order-truncation", "the order of a series (O(h^6)): truncation-1440 certifies its leading coefficient and the remainder"},
-      {"roots-product-one", "c/a = 1 is 1 = 1 once GiNaC has evaluated it (c is a by construction); the roots' modulus rests on discriminant-negative, certified"},
-      {"table-orders", numeric},
-      {"table-conservation", numeric},
-      {"table-values", numeric},
-      {"figure1-statements", numeric},
-      {"conclusion-symplectic-stable", "prose resting on phi3-det, phi3-symplectic and discriminant-negative, each certified"},
-      {"conclusion-fourth-order", "prose resting on truncation-1440 (certified) and the measured orders (numeric)"},
-      {"nonlinear-internal-node", "the nonlinear case has no closed form for q_m: beyond field and nra"},
-      {"peer-schemes", "Phi_3 = Lobatto IIIA-IIIB is not stated in Coq yet; the comparisons with Newmark and Stormer-Verlet are numeric"},
-      {"classical-consistency", consistency},
-      {"hamilton-consistency", consistency},
-      {"scheme-consistency", consistency},
-      {"internal-equation-second-order", consistency},
-      {"classical-action-range", range},
-      {"simpson-action-range", range},
-      {"stability-condition", "a bound with sqrt(2), the first positive root of q_m's denominator: not stated yet; discriminant-negative certifies the band 0 < x < 8"},
-      {"taylor-display", "a Taylor display with its O-term (an erratum: a derivative's order misprinted): its negation is not written yet"}};
-  const auto it = reasons.find(claim_id);
-  return it != reasons.end() ? it->second : otherwise;
-}
+std::string without_coq_statement(const claim& c, const std::string& otherwise) { return c.coq_none.empty() ? otherwise : c.coq_none; }
 
 }  // namespace simpson::verify::detail

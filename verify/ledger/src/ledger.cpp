@@ -1,5 +1,8 @@
 #include <simpson/verify/ledger.hpp>
 
+#include <simpson/verify/claims_file.hpp>
+
+#include "check_registry.hpp"
 #include "claims_section2.hpp"
 #include "claims_section3_4.hpp"
 #include "claims_section5.hpp"
@@ -11,30 +14,89 @@
 #include "claims_family.hpp"
 #include "claims_unformulated.hpp"
 
+#include <optional>
+#include <set>
 #include <stdexcept>
 
 namespace simpson::verify {
 
-const std::vector<claim>& ledger() {
-  static const std::vector<claim> claims = [] {
-    std::vector<claim> all;
-    detail::add_scaling_lemma(all);
-    detail::add_abstract_claims(all);
-    detail::add_section2_claims(all);
-    detail::add_section3_4_claims(all);
-    detail::add_section5_claims(all);
-    detail::add_section6_7_claims(all);
-    detail::add_convention_claims(all);
-    detail::add_section8_9_claims(all);
-    detail::add_roundoff_claims(all);
-    detail::add_peer_claims(all);
-    detail::add_shear_claims(all);
-    detail::add_beyond_claims(all);
-    detail::add_beyond_ndof_claims(all);
-    detail::add_family_claims(all);
+namespace detail {
+
+const check_registry& registered_checks() {
+  static const check_registry checks = [] {
+    check_registry all;
+    add_scaling_lemma_check(all);
+    add_abstract_checks(all);
+    add_section2_checks(all);
+    add_section3_4_checks(all);
+    add_section5_checks(all);
+    add_section6_7_checks(all);
+    add_convention_checks(all);
+    add_section8_9_checks(all);
+    add_roundoff_checks(all);
+    add_peer_checks(all);
+    add_shear_checks(all);
+    add_beyond_checks(all);
+    add_beyond_ndof_checks(all);
+    add_family_checks(all);
     return all;
   }();
+  return checks;
+}
+
+}  // namespace detail
+
+std::vector<claim> claims_of(const std::vector<claim_record>& records) {
+  std::vector<claim> out;
+  for (const claim_record& r : records) {
+    const detail::check_function* check = detail::registered_checks().find(r.check);
+    if (!check) throw std::logic_error("claims_of: no check is named '" + r.check + "'");
+    claim c{r.id, r.section, r.equation, r.statement, r.methods, r.expected, *check, r.kind, r.follows_from, r.typographical, r.origin};
+    c.check_name = r.check;
+    c.headline = r.headline;
+    c.coq_none = r.coq_none;
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+std::vector<claim_record> read_claims_with_known_checks(const std::string& text, const std::string& file) {
+  return read_claims_file(text, file, [](const std::string& name) { return detail::registered_checks().find(name) != nullptr; });
+}
+
+namespace {
+
+/// The claims of a file given on the command line, once installed (use_claims_file).
+std::optional<std::vector<claim>>& installed_claims() {
+  static std::optional<std::vector<claim>> claims;
   return claims;
+}
+
+const std::vector<claim>& embedded_ledger() {
+  static const std::vector<claim> claims = [] {
+    std::vector<claim_record> records;
+    try {
+      records = read_claims_with_known_checks(embedded_claims_text(), "claims/paper.toml");
+    } catch (const claims_file_error& e) {
+      throw std::logic_error(std::string("the embedded claims file does not read: ") + e.what());  // a harness fault
+    }
+    // Every registered check decides some claim: a check no record names is dead code.
+    std::set<std::string> named;
+    for (const claim_record& r : records) named.insert(r.check);
+    for (const auto& [name, check] : detail::registered_checks().all()) {
+      if (!named.count(name)) throw std::logic_error("check '" + name + "' is registered but no record of claims/paper.toml names it");
+    }
+    return claims_of(records);
+  }();
+  return claims;
+}
+
+}  // namespace
+
+const std::vector<claim>& ledger() { return installed_claims() ? *installed_claims() : embedded_ledger(); }
+
+void use_claims_file(const std::string& text, const std::string& file) {
+  installed_claims() = claims_of(read_claims_with_known_checks(text, file));
 }
 
 const claim& find_claim(const std::string& id) {

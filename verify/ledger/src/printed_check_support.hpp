@@ -47,8 +47,8 @@ proof_goal sign_goal(const std::string& name, const GiNaC::ex& lhs, int sign, st
 const std::map<std::string, std::function<std::vector<proof_goal>()>>& kernel_claim_goals();
 
 /// Why a claim has no Coq statement (not in kernel_claim_goals(), or a formula claim whose GiNaC
-/// check decides no identity), or `otherwise` when no reason is written for it.
-std::string without_coq_statement(const std::string& claim_id, const std::string& otherwise);
+/// check decides no identity): its record's `coq_none`, or `otherwise` when the record gives none.
+std::string without_coq_statement(const claim& c, const std::string& otherwise);
 
 /// What the GiNaC kernel found for one claim.
 struct printed_outcome {

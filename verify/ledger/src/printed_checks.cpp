@@ -306,7 +306,7 @@ claim_result check_claim(const claim& c, const run_context& ctx) {
     if (!result.certificate.empty()) return result;  // the check wrote its own (the floating claims: Gappa's and the lifting lemma)
     const auto goals = detail::kernel_claim_goals().find(c.id);
     if (goals == detail::kernel_claim_goals().end()) {
-      result.certificate_missing = detail::without_coq_statement(c.id, "its exact proof is our kernel's alone: no Coq statement yet");
+      result.certificate_missing = detail::without_coq_statement(c, "its exact proof is our kernel's alone: no Coq statement yet");
       return result;
     }
     record_certificate(result, detail::coq_certificate(c.id, c.statement, goals->second()));
@@ -337,7 +337,7 @@ claim_result check_claim(const claim& c, const run_context& ctx) {
   result.printed_seconds = seconds;
   decide(result, outcome, c.id);
   detail::coq_export certificate = detail::coq_certificate(c.id, c.statement, outcome.goals);
-  if (outcome.goals.empty()) certificate.not_exported = detail::without_coq_statement(c.id, certificate.not_exported);
+  if (outcome.goals.empty()) certificate.not_exported = detail::without_coq_statement(c, certificate.not_exported);
   record_certificate(result, certificate);
   return result;
 }

@@ -64,11 +64,9 @@ json provenance_json(const paper_reading& paper, const run_context& ctx, const s
   for (const auto& [id, quoted] : quoted_by_claim) {
     std::set<std::string> keys;
     for (const json& q : quoted) {
-      const std::string text = q.value("text", "");
-      for (const citation_use& c : p.citations) {
-        if (text.find("\\cite{" + c.key) != std::string::npos || text.find("," + c.key) != std::string::npos) {
-          if (unresolved.count(c.key)) keys.insert(c.key);
-        }
+      if (!q.value("found", false)) continue;
+      for (const std::string& key : citations_in_sentence(paper.source, q.value("line", 0), q.value("text", ""))) {
+        if (unresolved.count(key)) keys.insert(key);
       }
     }
     if (!keys.empty()) attributed.push_back({{"claim", id}, {"keys", std::vector<std::string>(keys.begin(), keys.end())}});

@@ -3,6 +3,7 @@
 #include <simpson/verify/paper_provenance.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -81,6 +82,33 @@ paper_provenance read_provenance(const paper_source& paper) {
   // A \bibliography{file} resolves through a .bib file this source does not carry: its keys are
   // unresolved here too, unless a \bibitem defines them.
   return p;
+}
+
+std::vector<std::string> citations_in_sentence(const paper_source& paper, int line, const std::string& span_text) {
+  const std::string& text = paper.text;
+  std::size_t from = 0;
+  for (int k = 1; k < line && from != std::string::npos; ++k) {
+    from = text.find('\n', from);
+    if (from != std::string::npos) ++from;
+  }
+  if (from == std::string::npos) return {};
+  const auto span = find_ignoring_space(text, span_text, from);
+  if (!span) return {};
+  const auto ends_sentence = [&](std::size_t at) {
+    return text[at] == '.' && (at + 1 == text.size() || std::isspace(static_cast<unsigned char>(text[at + 1])));
+  };
+  std::size_t begin = span->first;
+  while (begin > 0 && !ends_sentence(begin - 1)) --begin;
+  std::size_t end = span->second;
+  while (end < text.size() && !ends_sentence(end)) ++end;
+  const std::string sentence = text.substr(begin, end - begin);
+  std::vector<std::string> keys;
+  static const std::regex cite(R"(\\cite(\[[^\]]*\])?\{([^}]*)\})");
+  for (auto it = std::sregex_iterator(sentence.begin(), sentence.end(), cite); it != std::sregex_iterator(); ++it) {
+    std::istringstream list((*it)[2].str());
+    for (std::string key; std::getline(list, key, ',');) keys.push_back(folded_space(key));
+  }
+  return keys;
 }
 
 std::vector<earlier_display> commented_displays(const paper_source& paper) {

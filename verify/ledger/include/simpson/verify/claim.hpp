@@ -128,6 +128,11 @@ struct claim {
   std::string follows_from = {};
   bool typographical = false;  // a slip of the pen (a wrong index, a letter for another), not of the mathematics
   claim_origin origin = claim_origin::paper;
+  /// From the claim's record (claims_file.hpp): the name of its check, whether it is a headline
+  /// claim (the report's speed line), and why no Coq statement is exported when none is.
+  std::string check_name = {};
+  bool headline = false;
+  std::string coq_none = {};
 };
 
 }  // namespace simpson::verify

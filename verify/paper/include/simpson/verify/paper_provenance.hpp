@@ -30,6 +30,11 @@ struct paper_provenance {
 /// Reads the provenance from the source's live text (comments excluded).
 paper_provenance read_provenance(const paper_source& paper);
 
+/// The \cite keys of the sentence that holds a quoted span (`span_text`, white space aside, found
+/// from the start of line `line`): the attribution the sentence makes. A sentence ends at a full
+/// stop followed by white space ("et al.}" does not end one).
+std::vector<std::string> citations_in_sentence(const paper_source& paper, int line, const std::string& span_text);
+
 /// A display kept in the comments: its \label and the line of its first line in the source, and the
 /// block uncommented (from "\moneq \label{...}" or "\begin{equation}" to its end).
 struct earlier_display {

@@ -1,0 +1,58 @@
+#pragma once
+// A claims file: one TOML record per claim (docs/claims-file.md). The paper's are claims/paper.toml,
+// embedded in simpson-verify as the paper is; `--claims-file` reads another.
+
+#include <simpson/verify/claim.hpp>
+
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace simpson::verify {
+
+/// One record, as read.
+struct claim_record {
+  std::string id;         // kebab-case, unique in the file
+  std::string section;    // the paper's section ("6"), "abstract", "beyond", "harness"
+  std::string equation;   // the \label of the display the claim reads, or "prose"
+  std::string statement;  // what the paper says, for the reports
+  std::vector<std::string> methods;
+  std::string check;      // the name of the check that decides it
+  verdict expected = verdict::holds;
+  finding kind = finding::none;
+  std::string follows_from;
+  bool typographical = false;
+  claim_origin origin = claim_origin::paper;
+  bool headline = false;  // one of the claims whose GiNaC time the report's speed line sums
+  std::string coq_none;   // why no Coq statement is exported, when none is
+  int line = 0;           // the line of its [[claim]] header
+};
+
+/// A claims file that does not read: "claims file 'NAME', line N, field 'F': why". Bad input
+/// (exit 2 for a file given on the command line).
+class claims_file_error : public std::invalid_argument {
+ public:
+  claims_file_error(const std::string& file, int line, const std::string& field, const std::string& why);
+  const std::string& file() const noexcept { return file_; }
+  int line() const noexcept { return line_; }
+  const std::string& field() const noexcept { return field_; }
+
+ private:
+  std::string file_;
+  int line_;
+  std::string field_;
+};
+
+/// Reads and validates the records of `text` (named `file` in errors): TOML syntax, every field
+/// known and of its type, the required ones present, ids unique, verdicts, classes and origins
+/// spelled as the reports spell them, `finding` given exactly when the expected verdict is a
+/// finding, `follows_from` naming another record with no cycle, and `check` a name `known_check`
+/// accepts. Throws claims_file_error at the first fault.
+std::vector<claim_record> read_claims_file(const std::string& text, const std::string& file,
+                                           const std::function<bool(const std::string&)>& known_check);
+
+/// The text of claims/paper.toml, compiled in.
+std::string embedded_claims_text();
+
+}  // namespace simpson::verify

@@ -1,0 +1,189 @@
+// The claims-file reader (claims_file.hpp), with toml++.
+
+#include <simpson/verify/claims_file.hpp>
+
+#include "embedded_claims.hpp"
+
+#include <toml++/toml.h>
+
+#include <map>
+#include <set>
+
+namespace simpson::verify {
+namespace {
+
+int line_of(const toml::node& node) { return static_cast<int>(node.source().begin.line); }
+
+verdict verdict_named(const std::string& text, const std::string& file, int line) {
+  for (const verdict v : {verdict::holds, verdict::erratum, verdict::fails, verdict::kernels_disagree, verdict::text_changed,
+                          verdict::undecided, verdict::unproved, verdict::skipped, verdict::unverifiable}) {
+    if (to_string(v) == text) return v;
+  }
+  throw claims_file_error(file, line, "expected", "'" + text + "' is not a verdict (holds, erratum, fails, unverifiable, ...)");
+}
+
+finding finding_named(const std::string& text, const std::string& file, int line) {
+  for (const finding f : {finding::erratum, finding::wording, finding::derivation_gap, finding::naming, finding::unverifiable}) {
+    if (to_string(f) == text) return f;
+  }
+  throw claims_file_error(file, line, "finding",
+                          "'" + text + "' is not a class of finding (erratum, wording, derivation gap, naming, unverifiable)");
+}
+
+/// The fields of one record, each read once and checked for its type.
+class record_reader {
+ public:
+  record_reader(const toml::table& table, const std::string& file) : table_(table), file_(file), line_(line_of(table)) {
+    static const std::set<std::string> known{"id",           "section",       "equation", "statement", "methods",
+                                             "check",        "expected",      "finding",  "follows_from",
+                                             "typographical", "origin",       "headline", "coq_none"};
+    for (const auto& [key, node] : table_) {
+      if (!known.count(std::string(key.str()))) {
+        throw claims_file_error(file_, line_of(node), std::string(key.str()), "not a field of a claim record (docs/claims-file.md)");
+      }
+    }
+  }
+
+  int line() const { return line_; }
+
+  std::string text(const std::string& field, bool required) const {
+    const toml::node* node = table_.get(field);
+    if (!node) {
+      if (required) throw claims_file_error(file_, line_, field, "missing (every record has it)");
+      return {};
+    }
+    const auto* value = node->as_string();
+    if (!value) throw claims_file_error(file_, line_of(*node), field, "must be a string");
+    if (required && value->get().empty()) throw claims_file_error(file_, line_of(*node), field, "must not be empty");
+    return value->get();
+  }
+
+  bool flag(const std::string& field) const {
+    const toml::node* node = table_.get(field);
+    if (!node) return false;
+    const auto* value = node->as_boolean();
+    if (!value) throw claims_file_error(file_, line_of(*node), field, "must be true or false");
+    return value->get();
+  }
+
+  std::vector<std::string> texts(const std::string& field) const {
+    const toml::node* node = table_.get(field);
+    if (!node) throw claims_file_error(file_, line_, field, "missing (every record has it)");
+    const auto* array = node->as_array();
+    if (!array || array->empty()) throw claims_file_error(file_, line_of(*node), field, "must be a non-empty array of strings");
+    std::vector<std::string> out;
+    for (const toml::node& item : *array) {
+      const auto* value = item.as_string();
+      if (!value) throw claims_file_error(file_, line_of(item), field, "must be a non-empty array of strings");
+      out.push_back(value->get());
+    }
+    return out;
+  }
+
+  int line_of_field(const std::string& field) const {
+    const toml::node* node = table_.get(field);
+    return node ? line_of(*node) : line_;
+  }
+
+ private:
+  const toml::table& table_;
+  const std::string& file_;
+  int line_;
+};
+
+bool kebab_case(const std::string& id) {
+  if (id.empty() || id.front() == '-' || id.back() == '-') return false;
+  for (const char c : id) {
+    if (!((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-')) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+claims_file_error::claims_file_error(const std::string& file, int line, const std::string& field, const std::string& why)
+    : std::invalid_argument("claims file '" + file + "', line " + std::to_string(line) + (field.empty() ? "" : ", field '" + field + "'") +
+                            ": " + why),
+      file_(file),
+      line_(line),
+      field_(field) {}
+
+std::vector<claim_record> read_claims_file(const std::string& text, const std::string& file,
+                                           const std::function<bool(const std::string&)>& known_check) {
+  toml::table document;
+  try {
+    document = toml::parse(text, file);
+  } catch (const toml::parse_error& e) {
+    throw claims_file_error(file, static_cast<int>(e.source().begin.line), "", std::string(e.description()));
+  }
+  for (const auto& [key, node] : document) {
+    if (key.str() != "claim") throw claims_file_error(file, line_of(node), std::string(key.str()), "not a table of a claims file (only [[claim]])");
+  }
+  const toml::array* claims = document["claim"].as_array();
+  if (!claims || claims->empty()) throw claims_file_error(file, 1, "claim", "no [[claim]] record");
+  std::vector<claim_record> records;
+  std::map<std::string, int> line_of_id;
+  for (const toml::node& node : *claims) {
+    const toml::table* table = node.as_table();
+    if (!table) throw claims_file_error(file, line_of(node), "claim", "must be a table ([[claim]])");
+    const record_reader read(*table, file);
+    claim_record r;
+    r.line = read.line();
+    r.id = read.text("id", true);
+    if (!kebab_case(r.id)) throw claims_file_error(file, read.line_of_field("id"), "id", "'" + r.id + "' is not kebab-case (a-z, 0-9, -)");
+    if (!line_of_id.emplace(r.id, r.line).second) {
+      throw claims_file_error(file, read.line_of_field("id"), "id",
+                              "'" + r.id + "' is already the id of the record at line " + std::to_string(line_of_id[r.id]));
+    }
+    r.section = read.text("section", true);
+    r.equation = read.text("equation", true);
+    r.statement = read.text("statement", true);
+    r.methods = read.texts("methods");
+    r.check = read.text("check", true);
+    if (!known_check(r.check)) throw claims_file_error(file, read.line_of_field("check"), "check", "no check is named '" + r.check + "'");
+    r.expected = verdict_named(read.text("expected", true), file, read.line_of_field("expected"));
+    const std::string kind = read.text("finding", false);
+    const bool is_finding = r.expected == verdict::erratum || r.expected == verdict::fails || r.expected == verdict::unverifiable;
+    if (!kind.empty()) r.kind = finding_named(kind, file, read.line_of_field("finding"));
+    if (is_finding && kind.empty()) {
+      throw claims_file_error(file, read.line_of_field("expected"), "finding",
+                              "missing: an expected '" + to_string(r.expected) + "' is a finding, and says its class");
+    }
+    if (!is_finding && !kind.empty()) {
+      throw claims_file_error(file, read.line_of_field("finding"), "finding", "given for a claim expected to " + to_string(r.expected));
+    }
+    r.follows_from = read.text("follows_from", false);
+    if (r.follows_from == r.id) throw claims_file_error(file, read.line_of_field("follows_from"), "follows_from", "a claim cannot follow from itself");
+    r.typographical = read.flag("typographical");
+    const std::string origin = read.text("origin", false);
+    if (origin == "harness") {
+      r.origin = claim_origin::harness;
+    } else if (!origin.empty() && origin != "paper") {
+      throw claims_file_error(file, read.line_of_field("origin"), "origin", "'" + origin + "' is neither 'paper' nor 'harness'");
+    }
+    r.headline = read.flag("headline");
+    r.coq_none = read.text("coq_none", false);
+    records.push_back(std::move(r));
+  }
+  // Every cause named exists, and following the links never comes back.
+  std::map<std::string, const claim_record*> by_id;
+  for (const claim_record& r : records) by_id[r.id] = &r;
+  for (const claim_record& r : records) {
+    if (r.follows_from.empty()) continue;
+    if (!by_id.count(r.follows_from)) {
+      throw claims_file_error(file, r.line, "follows_from", "no record has the id '" + r.follows_from + "'");
+    }
+    std::set<std::string> seen{r.id};
+    for (const claim_record* at = by_id[r.follows_from]; at; at = at->follows_from.empty() ? nullptr : by_id[at->follows_from]) {
+      if (!seen.insert(at->id).second) {
+        throw claims_file_error(file, r.line, "follows_from",
+                                "following the causes from '" + r.id + "' comes back to '" + at->id + "' (a cycle)");
+      }
+    }
+  }
+  return records;
+}
+
+std::string embedded_claims_text() { return detail::embedded_claims_bytes(); }
+
+}  // namespace simpson::verify

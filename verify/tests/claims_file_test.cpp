@@ -1,0 +1,116 @@
+// Claims files (claims_file.hpp): the embedded claims/paper.toml is the ledger, record for record;
+// a file that does not read is named with its line and field, one fault at a time.
+
+#include <simpson/verify/claims_file.hpp>
+#include <simpson/verify/ledger.hpp>
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+namespace simpson::verify {
+namespace {
+
+bool known(const std::string& name) { return name == "a-check" || name == "b-check"; }
+
+const std::string good_record = R"(
+[[claim]]
+id = "first"
+section = "2"
+equation = "prose"
+statement = 'It holds.'
+methods = ["exact"]
+check = "a-check"
+expected = "holds"
+)";
+
+/// The error a claims file gives, or "" when it reads.
+std::string error_of(const std::string& text) {
+  try {
+    read_claims_file(text, "test.toml", known);
+  } catch (const claims_file_error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ClaimsFile, TheEmbeddedFileIsTheLedgerRecordForRecord) {
+  const std::vector<claim_record> records = read_claims_with_known_checks(embedded_claims_text(), "claims/paper.toml");
+  ASSERT_EQ(records.size(), ledger().size());
+  std::set<std::string> headline;
+  for (std::size_t k = 0; k < records.size(); ++k) {
+    EXPECT_EQ(records[k].id, ledger()[k].id);
+    EXPECT_EQ(records[k].check, ledger()[k].check_name);
+    EXPECT_EQ(records[k].expected, ledger()[k].expected) << records[k].id;
+    if (records[k].headline) headline.insert(records[k].id);
+  }
+  EXPECT_EQ(headline, (std::set<std::string>{"phi3-det", "discriminant-factorization", "hd-invariance", "truncation-1440"}));
+  EXPECT_EQ(find_claim("abstract-explicit").follows_from, "phi3-explicit");
+  EXPECT_FALSE(find_claim("table-orders").coq_none.empty());
+}
+
+TEST(ClaimsFile, AGoodRecordReadsWithItsDefaults) {
+  const std::vector<claim_record> records = read_claims_file(good_record, "test.toml", known);
+  ASSERT_EQ(records.size(), 1u);
+  EXPECT_EQ(records[0].line, 2);
+  EXPECT_EQ(records[0].kind, finding::none);
+  EXPECT_EQ(records[0].origin, claim_origin::paper);
+  EXPECT_FALSE(records[0].headline);
+}
+
+struct bad_file {
+  std::string name, text, message;  // the message names the file, line and field
+};
+
+void PrintTo(const bad_file& f, std::ostream* out) { *out << f.name; }
+
+class BadClaimsFile : public testing::TestWithParam<bad_file> {};
+
+TEST_P(BadClaimsFile, IsNamedWithItsLineAndField) {
+  EXPECT_EQ(error_of(GetParam().text), GetParam().message);
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  text.replace(text.find(from), from.size(), to);
+  return text;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Faults, BadClaimsFile,
+    testing::Values(
+        bad_file{"syntax", "[[claim]]\nid = \"x\nsection = 1\n", "claims file 'test.toml', line 2: Error while parsing string: unescaped control characters other than TAB (U+0009) are "
+                 "explicitly prohibited"},
+        bad_file{"unknown_field", replaced(good_record, "expected", "colour = \"red\"\nexpected"),
+                 "claims file 'test.toml', line 9, field 'colour': not a field of a claim record (docs/claims-file.md)"},
+        bad_file{"missing_field", replaced(good_record, "statement = 'It holds.'\n", ""),
+                 "claims file 'test.toml', line 2, field 'statement': missing (every record has it)"},
+        bad_file{"wrong_type", replaced(good_record, "methods = [\"exact\"]", "methods = \"exact\""),
+                 "claims file 'test.toml', line 7, field 'methods': must be a non-empty array of strings"},
+        bad_file{"duplicate_id", good_record + good_record,
+                 "claims file 'test.toml', line 12, field 'id': 'first' is already the id of the record at line 2"},
+        bad_file{"not_kebab", replaced(good_record, "\"first\"", "\"First_one\""),
+                 "claims file 'test.toml', line 3, field 'id': 'First_one' is not kebab-case (a-z, 0-9, -)"},
+        bad_file{"unknown_check", replaced(good_record, "a-check", "c-check"),
+                 "claims file 'test.toml', line 8, field 'check': no check is named 'c-check'"},
+        bad_file{"bad_verdict", replaced(good_record, "\"holds\"", "\"hold\""),
+                 "claims file 'test.toml', line 9, field 'expected': 'hold' is not a verdict (holds, erratum, fails, unverifiable, ...)"},
+        bad_file{"finding_missing", replaced(good_record, "\"holds\"", "\"erratum\""),
+                 "claims file 'test.toml', line 9, field 'finding': missing: an expected 'erratum' is a finding, and says its class"},
+        bad_file{"finding_for_holds", replaced(good_record, "expected = \"holds\"", "expected = \"holds\"\nfinding = \"wording\""),
+                 "claims file 'test.toml', line 10, field 'finding': given for a claim expected to holds"},
+        bad_file{"bad_finding", replaced(good_record, "expected = \"holds\"", "expected = \"erratum\"\nfinding = \"typo\""),
+                 "claims file 'test.toml', line 10, field 'finding': 'typo' is not a class of finding (erratum, wording, derivation gap, naming, unverifiable)"},
+        bad_file{"unknown_cause", replaced(good_record, "expected = \"holds\"", "expected = \"holds\"\nfollows_from = \"zeroth\""),
+                 "claims file 'test.toml', line 2, field 'follows_from': no record has the id 'zeroth'"},
+        bad_file{"cycle",
+                 replaced(good_record, "expected = \"holds\"", "expected = \"holds\"\nfollows_from = \"second\"") +
+                     replaced(replaced(good_record, "\"first\"", "\"second\""), "expected = \"holds\"", "expected = \"holds\"\nfollows_from = \"first\""),
+                 "claims file 'test.toml', line 2, field 'follows_from': following the causes from 'first' comes back to 'first' (a cycle)"},
+        bad_file{"bad_origin", replaced(good_record, "expected = \"holds\"", "expected = \"holds\"\norigin = \"referee\""),
+                 "claims file 'test.toml', line 10, field 'origin': 'referee' is neither 'paper' nor 'harness'"},
+        bad_file{"other_table", "[claims]\nid = 1\n", "claims file 'test.toml', line 1, field 'claims': not a table of a claims file (only [[claim]])"},
+        bad_file{"empty", "# nothing\n", "claims file 'test.toml', line 1, field 'claim': no [[claim]] record"}),
+    [](const testing::TestParamInfo<bad_file>& info) { return info.param.name; });
+
+}  // namespace
+}  // namespace simpson::verify
