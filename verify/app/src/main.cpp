@@ -66,7 +66,19 @@ int interrupted_exit(const interrupted& e) {
   return 128 + e.signal();
 }
 
-int list_claims() {
+int list_claims(const std::string& format) {
+  if (format == "json") {
+    json out = json::array();
+    for (const claim& c : ledger()) {
+      json one{{"id", c.id},           {"section", c.section},   {"equation", c.equation}, {"statement", c.statement},
+               {"methods", c.methods}, {"check", c.check_name}, {"expected", to_string(c.expected)}};
+      if (c.kind != finding::none) one["finding"] = to_string(c.kind);
+      if (!c.follows_from.empty()) one["follows_from"] = c.follows_from;
+      out.push_back(std::move(one));
+    }
+    fmt::print("{}\n", out.dump(2));
+    return 0;
+  }
   for (const claim& c : ledger()) {
     fmt::print("{:<34} §{:<8} {:<8} {}\n", c.id, c.section, to_string(c.expected), c.equation);
   }
@@ -195,6 +207,13 @@ int main(int argc, char** argv) {
   app.add_flag("--no-timing", no_timing,
                "measure no run time: no timing.json, timing.md or time plot, and every file is the same from run to run");
   app.add_flag("--list-claims", want_claims, "list the claims of the ledger and exit");
+  std::string list_format = "text";
+  app.add_option("--format", list_format, "--list-claims: text (one line each) or json (every field of each record, its statement included)")
+      ->check(CLI::IsMember({"text", "json"}));
+  bool validate = false;
+  app.add_flag("--validate", validate,
+               "judge every claim by whether it holds, not by the verdict its record expects: exit 0 only when every claim "
+               "holds (the recorded errata of the paper then fail)");
   app.add_flag("--list-scenes", want_scenes, "list the embedded scenes and exit");
   app.add_flag("--list-precisions", want_precisions, "list the precisions and exit");
   try {
@@ -225,7 +244,7 @@ int main(int argc, char** argv) {
       const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
       use_claims_file(text, claims_file);  // a file that does not read is bad input: nothing runs
     }
-    if (want_claims) return list_claims();
+    if (want_claims) return list_claims(list_format);
     if (want_scenes) return list_scenes();
     if (want_precisions) return list_precisions();
     s = load_scene(scene_name);
@@ -237,6 +256,10 @@ int main(int argc, char** argv) {
     apply_selection(s, selection);
     if (!paper_file.empty()) s.overrides["paper"] = paper_file;
     if (!claims_file.empty()) s.overrides["claims_file"] = claims_file;
+    if (validate) {
+      for (const std::string& id : s.claims) s.expected_overrides[id] = verdict::holds;
+      s.overrides["validate"] = true;
+    }
     if (app.count("--precisions") > 0) apply_precisions(s, precision_names);
     const auto parse_count = [](const std::string& flag, const std::string& text, unsigned long long min, unsigned long long max) {
       std::size_t used = 0;

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include <fnmatch.h>  // --claims patterns (POSIX)
+
 namespace simpson::verify {
 namespace {
 
@@ -77,6 +79,16 @@ void apply_selection(scene& s, const scene_selection& selection) {
         for (const std::string& own : s.claims) {
           if (std::find(ids.begin(), ids.end(), own) == ids.end()) ids.push_back(own);
         }
+        continue;
+      }
+      if (id.find_first_of("*?[") != std::string::npos) {  // a pattern, as test runners take them: gamma-*
+        bool matched = false;
+        for (const claim& c : ledger()) {
+          if (fnmatch(id.c_str(), c.id.c_str(), 0) != 0) continue;
+          matched = true;
+          if (std::find(ids.begin(), ids.end(), c.id) == ids.end()) ids.push_back(c.id);
+        }
+        if (!matched) throw std::invalid_argument("--claims: the pattern '" + id + "' matches no claim id (see --list-claims)");
         continue;
       }
       const std::string& known = find_claim(id).id;  // throws std::invalid_argument naming an unknown id

@@ -45,7 +45,7 @@ class claims_file_error : public std::invalid_argument {
 };
 
 /// Reads and validates the records of `text` (named `file` in errors): TOML syntax, every field
-/// known and of its type, the required ones present, ids unique, verdicts, classes and origins
+/// known and of its type, the required ones present (`expected` may be left out: holds), ids unique, verdicts, classes and origins
 /// spelled as the reports spell them, `finding` given exactly when the expected verdict is a
 /// finding, `follows_from` naming another record with no cycle, and `check` a name `known_check`
 /// accepts. Throws claims_file_error at the first fault.
