@@ -14,13 +14,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
     const std::vector<claim_record> records =
-        read_claims_file(text, "fuzz", [](const std::string& name) { return name == "phi3-det" || name == "scaling"; });
+        read_claims_file(text, "fuzz", [](const std::string& field, const std::string& name) {
+          return field == "check" ? name == "phi3-det" || name == "scaling" : name == "phi3-det";
+        });
     std::set<std::string> ids;
     for (const claim_record& r : records) {
       if (r.id.empty() || !ids.insert(r.id).second || r.line < 1) __builtin_trap();
       const bool is_finding = r.expected == verdict::erratum || r.expected == verdict::fails || r.expected == verdict::unverifiable;
       if (is_finding != (r.kind != finding::none)) __builtin_trap();
       if (r.check != "phi3-det" && r.check != "scaling") __builtin_trap();
+      if (!r.printed.empty() && r.printed != "phi3-det") __builtin_trap();
+      if (!r.coq_goals.empty() && r.coq_goals != "phi3-det") __builtin_trap();
     }
     for (const claim_record& r : records) {
       if (!r.follows_from.empty() && !ids.count(r.follows_from)) __builtin_trap();

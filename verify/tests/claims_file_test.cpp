@@ -11,7 +11,11 @@
 namespace simpson::verify {
 namespace {
 
-bool known(const std::string& name) { return name == "a-check" || name == "b-check"; }
+bool known(const std::string& field, const std::string& name) {
+  if (field == "printed") return name == "a-printed";
+  if (field == "coq_goals") return name == "a-goals";
+  return name == "a-check" || name == "b-check";
+}
 
 const std::string good_record = R"(
 [[claim]]
@@ -41,12 +45,16 @@ TEST(ClaimsFile, TheEmbeddedFileIsTheLedgerRecordForRecord) {
   for (std::size_t k = 0; k < records.size(); ++k) {
     EXPECT_EQ(records[k].id, ledger()[k].id);
     EXPECT_EQ(records[k].check, ledger()[k].check_name);
+    EXPECT_EQ(records[k].printed, ledger()[k].printed_check);
+    EXPECT_EQ(records[k].coq_goals, ledger()[k].coq_goals);
     EXPECT_EQ(records[k].expected, ledger()[k].expected) << records[k].id;
     if (records[k].headline) headline.insert(records[k].id);
   }
   EXPECT_EQ(headline, (std::set<std::string>{"phi3-det", "discriminant-factorization", "hd-invariance", "truncation-1440"}));
   EXPECT_EQ(find_claim("abstract-explicit").follows_from, "phi3-explicit");
   EXPECT_FALSE(find_claim("table-orders").coq_none.empty());
+  EXPECT_EQ(find_claim("phi3-det").printed_check, "phi3-det");
+  EXPECT_EQ(find_claim("phi3-explicit").coq_goals, "phi3-explicit");
 }
 
 TEST(ClaimsFile, AGoodRecordReadsWithItsDefaults) {
@@ -92,6 +100,10 @@ INSTANTIATE_TEST_SUITE_P(
                  "claims file 'test.toml', line 3, field 'id': 'First_one' is not kebab-case (a-z, 0-9, -)"},
         bad_file{"unknown_check", replaced(good_record, "a-check", "c-check"),
                  "claims file 'test.toml', line 8, field 'check': no check is named 'c-check'"},
+        bad_file{"unknown_printed_check", replaced(good_record, "expected = \"holds\"", "expected = \"holds\"\nprinted = \"b-printed\""),
+                 "claims file 'test.toml', line 10, field 'printed': no check of printed formulas is named 'b-printed'"},
+        bad_file{"unknown_goals", replaced(good_record, "expected = \"holds\"", "expected = \"holds\"\ncoq_goals = \"a-check\""),
+                 "claims file 'test.toml', line 10, field 'coq_goals': no Coq goals are named 'a-check'"},
         bad_file{"bad_verdict", replaced(good_record, "\"holds\"", "\"hold\""),
                  "claims file 'test.toml', line 9, field 'expected': 'hold' is not a verdict (holds, erratum, fails, unverifiable, ...)"},
         bad_file{"finding_missing", replaced(good_record, "\"holds\"", "\"erratum\""),

@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.12627e-08:0.000916521]
+set xrange [5.78858e-08:0.000953503]
 set xtics autofreq
 set mxtics default
 set yrange [4.29802e-15:0.337578]
@@ -37,7 +37,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [9.79725e-08:0.00475829]
+set xrange [1.04422e-07:0.00473459]
 set xtics autofreq
 set mxtics default
 set yrange [3.30045e-15:0.34185]
@@ -61,7 +61,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.14666e-06:0.0436514]
+set xrange [1.14156e-06:0.0382]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -85,7 +85,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [2.37753e-06:0.0658902]
+set xrange [2.4478e-06:0.0675031]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -109,7 +109,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.10504e-06:0.0796116]
+set xrange [3.26143e-06:0.0815669]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -159,7 +159,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.12627e-08:0.000916521]
+set xrange [5.78858e-08:0.000953503]
 set xtics autofreq
 set mxtics default
 set yrange [4.29802e-15:0.337578]
@@ -183,7 +183,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [9.79725e-08:0.00475829]
+set xrange [1.04422e-07:0.00473459]
 set xtics autofreq
 set mxtics default
 set yrange [3.30045e-15:0.34185]
@@ -207,7 +207,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.14666e-06:0.0436514]
+set xrange [1.14156e-06:0.0382]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -231,7 +231,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [2.37753e-06:0.0658902]
+set xrange [2.4478e-06:0.0675031]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -255,7 +255,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.10504e-06:0.0796116]
+set xrange [3.26143e-06:0.0815669]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]

@@ -62,6 +62,31 @@ struct verdict_counts {
   std::vector<std::string> unexpected;
 };
 
+/// How many characters of a display's TeX the claims table shows.
+constexpr std::size_t said_cut = 140;
+
+/// The paper's own words for a claim, for the claims table: the first sentence it quoted, or the
+/// first display it read (its TeX, cut), with the line; a typed claim's record statement.
+std::string what_the_paper_says(const claim_outcome& o) {
+  if (!o.result.quoted.empty() && o.result.quoted.front().value("found", false)) {
+    const json& q = o.result.quoted.front();
+    return "“" + markdown_cell(q.value("text", "")) + "” (line " + std::to_string(q.value("line", 0)) + ")";
+  }
+  if (o.result.printed.is_object() && o.result.printed.contains("formulas") && !o.result.printed["formulas"].empty()) {
+    const json& f = o.result.printed["formulas"].front();
+    std::string tex = f.value("tex", "");
+    if (tex.size() > said_cut) {
+      std::size_t cut = said_cut;
+      while (cut > 0 && (static_cast<unsigned char>(tex[cut]) & 0xC0) == 0x80) --cut;  // not inside a UTF-8 character
+      tex = tex.substr(0, cut) + " …";
+    }
+    std::string cell;  // a | would end the table's cell even inside a code span: GFM takes \| there
+    for (const char ch : tex) cell += ch == '|' ? std::string("\\|") : std::string(1, ch);
+    return "`" + cell + "` (line " + std::to_string(f.value("line", 0)) + ")";
+  }
+  return "*" + markdown_cell(o.checked->statement) + "*";
+}
+
 /// A verdict that is a finding about the paper: false or unsupported as printed.
 bool is_finding(verdict v) { return v == verdict::erratum || v == verdict::fails || v == verdict::unverifiable; }
 
@@ -524,14 +549,15 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
 
   md += "## Claims\n\nStatement: *read* when its formulas are read from the paper's source and proved in both kernels "
         "(our kernel and GiNaC), *quoted* when its prose sentence is quoted from the source and its words parsed, *typed* when "
-        "it quotes nothing of the paper.\n\n"
-        "| id | § | equation | statement | verdict | expected | methods |\n|---|---|---|---|---|---|---|\n";
+        "it quotes nothing of the paper. The paper says: the sentence quoted, or the first display read (its TeX, cut at "
+        + std::to_string(said_cut) + " characters), with its line; for a typed claim, its record's statement.\n\n"
+        "| id | § | equation | statement | the paper says | verdict | expected | methods |\n|---|---|---|---|---|---|---|---|\n";
   for (const claim_outcome& o : r.outcomes) {
     const claim& c = *o.checked;
     const std::string verdict_text = "**" + to_string(o.result.outcome) + "**" + (as_expected(o.result.outcome, o.expected) ? "" : " **(unexpected)**");
-    md += fmt::format("| [{}](#{}) | {} | {} | {} | {} | {} | {} |\n", c.id, heading_slug(c.id), c.section, markdown_cell(c.equation),
-                      !o.result.printed.is_null() ? "read" : !o.result.quoted.empty() ? "quoted" : "typed", verdict_text, to_string(o.expected),
-                      join(c.methods, ", ") + (o.result.printed.is_null() ? "" : ", GiNaC"));
+    md += fmt::format("| [{}](#{}) | {} | {} | {} | {} | {} | {} | {} |\n", c.id, heading_slug(c.id), c.section, markdown_cell(c.equation),
+                      !o.result.printed.is_null() ? "read" : !o.result.quoted.empty() ? "quoted" : "typed", what_the_paper_says(o),
+                      verdict_text, to_string(o.expected), join(c.methods, ", ") + (o.result.printed.is_null() ? "" : ", GiNaC"));
   }
 
   // The claims of one verdict, each with its printed and corrected statements.

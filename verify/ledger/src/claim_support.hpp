@@ -10,7 +10,10 @@
 
 #include <simpson/one_step_map.hpp>
 
+#include <map>
+#include <mutex>
 #include <string>
+#include <typeinfo>
 #include <utility>
 #include <vector>
 
@@ -70,8 +73,27 @@ proof prove_zero_on_grid(const std::string& reduction, const std::vector<std::st
   }
   p.evidence["grid"] = grid;
   p.evidence["points_evaluated"] = points;
-  json premise;
-  const bool premise_holds = grid_premise_holds(variables, bounds, f, premise);
+  // The premise depends on the code of `f` alone (our kernel's transcription, never the paper's
+  // text): computed once per process for each proof site, by the lambda's type and its reduction.
+  static std::mutex premise_mutex;
+  static std::map<std::string, std::pair<bool, json>> premises;
+  std::string key = std::string(typeid(F).name()) + '\x1f' + reduction;
+  for (std::size_t k = 0; k < variables.size(); ++k) key += '\x1f' + variables[k] + ' ' + std::to_string(bounds[k]);
+  json premise = "not needed: the difference is not zero at a grid point";
+  bool premise_holds = false;
+  if (!first.has_value()) {
+    std::unique_lock<std::mutex> lock(premise_mutex);
+    const auto cached = premises.find(key);
+    if (cached != premises.end()) {
+      premise_holds = cached->second.first;
+      premise = cached->second.second;
+    } else {
+      lock.unlock();
+      premise_holds = grid_premise_holds(variables, bounds, f, premise);
+      lock.lock();
+      premises.emplace(key, std::make_pair(premise_holds, premise));
+    }
+  }
   p.evidence["premise"] = premise;
   p.proved = !first.has_value() && premise_holds;
   if (!first.has_value()) {

@@ -34,11 +34,11 @@ finding finding_named(const std::string& text, const std::string& file, int line
 class record_reader {
  public:
   record_reader(const toml::table& table, const std::string& file) : table_(table), file_(file), line_(line_of(table)) {
-    static const std::set<std::string> known{"id",           "section",       "equation", "statement", "methods",
-                                             "check",        "expected",      "finding",  "follows_from",
-                                             "typographical", "origin",       "headline", "coq_none"};
+    static const std::set<std::string> fields{"id",       "section",  "equation",     "statement",     "methods", "check",
+                                              "printed",  "coq_goals", "expected",    "finding",       "follows_from",
+                                              "typographical", "origin", "headline",  "coq_none"};
     for (const auto& [key, node] : table_) {
-      if (!known.count(std::string(key.str()))) {
+      if (!fields.count(std::string(key.str()))) {
         throw claims_file_error(file_, line_of(node), std::string(key.str()), "not a field of a claim record (docs/claims-file.md)");
       }
     }
@@ -108,8 +108,7 @@ claims_file_error::claims_file_error(const std::string& file, int line, const st
       line_(line),
       field_(field) {}
 
-std::vector<claim_record> read_claims_file(const std::string& text, const std::string& file,
-                                           const std::function<bool(const std::string&)>& known_check) {
+std::vector<claim_record> read_claims_file(const std::string& text, const std::string& file, const known_name& known) {
   toml::table document;
   try {
     document = toml::parse(text, file);
@@ -140,7 +139,15 @@ std::vector<claim_record> read_claims_file(const std::string& text, const std::s
     r.statement = read.text("statement", true);
     r.methods = read.texts("methods");
     r.check = read.text("check", true);
-    if (!known_check(r.check)) throw claims_file_error(file, read.line_of_field("check"), "check", "no check is named '" + r.check + "'");
+    if (!known("check", r.check)) throw claims_file_error(file, read.line_of_field("check"), "check", "no check is named '" + r.check + "'");
+    r.printed = read.text("printed", false);
+    if (!r.printed.empty() && !known("printed", r.printed)) {
+      throw claims_file_error(file, read.line_of_field("printed"), "printed", "no check of printed formulas is named '" + r.printed + "'");
+    }
+    r.coq_goals = read.text("coq_goals", false);
+    if (!r.coq_goals.empty() && !known("coq_goals", r.coq_goals)) {
+      throw claims_file_error(file, read.line_of_field("coq_goals"), "coq_goals", "no Coq goals are named '" + r.coq_goals + "'");
+    }
     // Without `expected` a claim is to hold: a file of such records validates a derivation (exit 0
     // when every claim holds) instead of guarding a judged paper against regressions.
     const std::string expected = read.text("expected", false);

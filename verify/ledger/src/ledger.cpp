@@ -3,6 +3,7 @@
 #include <simpson/verify/claims_file.hpp>
 
 #include "check_registry.hpp"
+#include "printed_check_support.hpp"
 #include "claims_section2.hpp"
 #include "claims_section3_4.hpp"
 #include "claims_section5.hpp"
@@ -53,6 +54,8 @@ std::vector<claim> claims_of(const std::vector<claim_record>& records) {
     if (!check) throw std::logic_error("claims_of: no check is named '" + r.check + "'");
     claim c{r.id, r.section, r.equation, r.statement, r.methods, r.expected, *check, r.kind, r.follows_from, r.typographical, r.origin};
     c.check_name = r.check;
+    c.printed_check = r.printed;
+    c.coq_goals = r.coq_goals;
     c.headline = r.headline;
     c.coq_none = r.coq_none;
     out.push_back(std::move(c));
@@ -61,7 +64,11 @@ std::vector<claim> claims_of(const std::vector<claim_record>& records) {
 }
 
 std::vector<claim_record> read_claims_with_known_checks(const std::string& text, const std::string& file) {
-  return read_claims_file(text, file, [](const std::string& name) { return detail::registered_checks().find(name) != nullptr; });
+  return read_claims_file(text, file, [](const std::string& field, const std::string& name) {
+    if (field == "printed") return detail::printed_check_names().count(name) > 0;
+    if (field == "coq_goals") return detail::kernel_claim_goals().count(name) > 0;
+    return detail::registered_checks().find(name) != nullptr;
+  });
 }
 
 namespace {
@@ -80,11 +87,25 @@ const std::vector<claim>& embedded_ledger() {
     } catch (const claims_file_error& e) {
       throw std::logic_error(std::string("the embedded claims file does not read: ") + e.what());  // a harness fault
     }
-    // Every registered check decides some claim: a check no record names is dead code.
-    std::set<std::string> named;
-    for (const claim_record& r : records) named.insert(r.check);
+    // Every registered check, printed check and set of Coq goals is named by some record: one no
+    // record names is dead code.
+    std::set<std::string> named, printed, goals;
+    for (const claim_record& r : records) {
+      named.insert(r.check);
+      printed.insert(r.printed);
+      goals.insert(r.coq_goals);
+    }
+    const auto unnamed = [](const std::string& what, const std::string& name) {
+      return std::logic_error(what + " '" + name + "' is registered but no record of claims/paper.toml names it");
+    };
     for (const auto& [name, check] : detail::registered_checks().all()) {
-      if (!named.count(name)) throw std::logic_error("check '" + name + "' is registered but no record of claims/paper.toml names it");
+      if (!named.count(name)) throw unnamed("check", name);
+    }
+    for (const std::string& name : detail::printed_check_names()) {
+      if (!printed.count(name)) throw unnamed("printed check", name);
+    }
+    for (const auto& [name, make] : detail::kernel_claim_goals()) {
+      if (!goals.count(name)) throw unnamed("Coq goals", name);
     }
     return claims_of(records);
   }();

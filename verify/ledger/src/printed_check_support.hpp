@@ -15,6 +15,7 @@
 #include <functional>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -44,7 +45,11 @@ proof_goal sign_goal(const std::string& name, const GiNaC::ex& lhs, int sign, st
 
 /// The Coq goals of a claim our own kernel proves without reading a printed formula (signs,
 /// intervals, identities of the core's formulas), by claim id.
+/// The Coq goals of our kernel's proofs, by the name a record gives in `coq_goals`.
 const std::map<std::string, std::function<std::vector<proof_goal>()>>& kernel_claim_goals();
+
+/// The names of the GiNaC checks of printed formulas, which a record gives in `printed`.
+std::set<std::string> printed_check_names();
 
 /// Why a claim has no Coq statement (not in kernel_claim_goals(), or a formula claim whose GiNaC
 /// check decides no identity): its record's `coq_none`, or `otherwise` when the record gives none.

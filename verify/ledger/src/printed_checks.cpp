@@ -1,5 +1,6 @@
 #include <simpson/verify/printed_checks.hpp>
 #include <simpson/verify/enclosure_decision.hpp>
+#include <simpson/verify/ledger.hpp>
 
 #include "coq_export.hpp"
 #include "printed_check_support.hpp"
@@ -249,14 +250,25 @@ void record_certificate(claim_result& result, const detail::coq_export& certific
 
 }  // namespace
 
-bool reads_printed_formula(const std::string& claim_id) { return formula_claims().count(claim_id) > 0; }
+namespace detail {
+
+std::set<std::string> printed_check_names() {
+  std::set<std::string> names;
+  for (const auto& [name, entry] : formula_claims()) names.insert(name);
+  return names;
+}
+
+}  // namespace detail
+
+bool reads_printed_formula(const std::string& claim_id) { return !find_claim(claim_id).printed_check.empty(); }
 
 std::vector<std::string> claims_reading_formula(const std::string& label) {
   std::vector<std::string> ids;
-  for (const auto& [id, entry] : formula_claims()) {
-    for (const std::string& name : entry.formulas) {
+  for (const claim& c : ledger()) {
+    if (c.printed_check.empty()) continue;
+    for (const std::string& name : formula_claims().at(c.printed_check).formulas) {
       if (name == label || name.rfind(label + "#", 0) == 0) {
-        ids.push_back(id);
+        ids.push_back(c.id);
         break;
       }
     }
@@ -266,7 +278,11 @@ std::vector<std::string> claims_reading_formula(const std::string& label) {
 
 double ginac_derivation_seconds() { return detail::derivation().seconds; }
 
-std::size_t printed_formula_claim_count() { return formula_claims().size(); }
+std::size_t printed_formula_claim_count() {
+  std::size_t count = 0;
+  for (const claim& c : ledger()) count += c.printed_check.empty() ? 0 : 1;
+  return count;
+}
 
 namespace {
 
@@ -301,10 +317,10 @@ claim_result checked_with_quotes(const claim& c, const run_context& ctx) {
 claim_result check_claim(const claim& c, const run_context& ctx) {
   claim_result result = checked_with_quotes(c, ctx);
   if (result.outcome == verdict::text_changed || result.outcome == verdict::undecided) return result;
-  const auto it = formula_claims().find(c.id);
+  const auto it = c.printed_check.empty() ? formula_claims().end() : formula_claims().find(c.printed_check);
   if (it == formula_claims().end()) {
     if (!result.certificate.empty()) return result;  // the check wrote its own (the floating claims: Gappa's and the lifting lemma)
-    const auto goals = detail::kernel_claim_goals().find(c.id);
+    const auto goals = c.coq_goals.empty() ? detail::kernel_claim_goals().end() : detail::kernel_claim_goals().find(c.coq_goals);
     if (goals == detail::kernel_claim_goals().end()) {
       result.certificate_missing = detail::without_coq_statement(c, "its exact proof is our kernel's alone: no Coq statement yet");
       return result;

@@ -19,6 +19,8 @@ struct claim_record {
   std::string statement;  // what the paper says, for the reports
   std::vector<std::string> methods;
   std::string check;      // the name of the check that decides it
+  std::string printed;    // the name of the GiNaC check of the printed formulas it reads, if any
+  std::string coq_goals;  // the name of the Coq goals of our kernel's proof, if any
   verdict expected = verdict::holds;
   finding kind = finding::none;
   std::string follows_from;
@@ -47,10 +49,10 @@ class claims_file_error : public std::invalid_argument {
 /// Reads and validates the records of `text` (named `file` in errors): TOML syntax, every field
 /// known and of its type, the required ones present (`expected` may be left out: holds), ids unique, verdicts, classes and origins
 /// spelled as the reports spell them, `finding` given exactly when the expected verdict is a
-/// finding, `follows_from` naming another record with no cycle, and `check` a name `known_check`
-/// accepts. Throws claims_file_error at the first fault.
-std::vector<claim_record> read_claims_file(const std::string& text, const std::string& file,
-                                           const std::function<bool(const std::string&)>& known_check);
+/// finding, `follows_from` naming another record with no cycle, and `check`, `printed` and
+/// `coq_goals` names that `known(field, name)` accepts. Throws claims_file_error at the first fault.
+using known_name = std::function<bool(const std::string& field, const std::string& name)>;
+std::vector<claim_record> read_claims_file(const std::string& text, const std::string& file, const known_name& known);
 
 /// The text of claims/paper.toml, compiled in.
 std::string embedded_claims_text();
