@@ -90,8 +90,8 @@ sanitize: sanitize-build
 
 # The scene parser under libFuzzer for 60 s (the target is built by sanitize-build).
 fuzz: sanitize-build
-	scripts/run-fuzz $(SANITIZE_BUILD)/bin/scene_parser_fuzz 30
-	scripts/run-fuzz $(SANITIZE_BUILD)/bin/claims_file_fuzz 30
+	scripts/run-fuzz $(SANITIZE_BUILD)/bin/scene_parser_fuzz 25
+	scripts/run-fuzz $(SANITIZE_BUILD)/bin/claims_file_fuzz 20
 
 # What CI runs (.ci/run, which times each phase): the tests, then the same under sanitizers, then the fuzzer.
 ci: test sanitize fuzz

@@ -114,6 +114,11 @@ INSTANTIATE_TEST_SUITE_P(
                  "claims file 'test.toml', line 10, field 'finding': 'typo' is not a class of finding (erratum, wording, derivation gap, naming, unverifiable)"},
         bad_file{"unknown_cause", replaced(good_record, "expected = \"holds\"", "expected = \"holds\"\nfollows_from = \"zeroth\""),
                  "claims file 'test.toml', line 2, field 'follows_from': no record has the id 'zeroth'"},
+        // Found by the fuzzer: a cause reached first through another record's chain was taken for a record.
+        bad_file{"unknown_cause_down_a_chain",
+                 replaced(good_record, "expected = \"holds\"", "expected = \"holds\"\nfollows_from = \"second\"") +
+                     replaced(replaced(good_record, "\"first\"", "\"second\""), "expected = \"holds\"", "expected = \"holds\"\nfollows_from = \"third\""),
+                 "claims file 'test.toml', line 12, field 'follows_from': no record has the id 'third'"},
         bad_file{"cycle",
                  replaced(good_record, "expected = \"holds\"", "expected = \"holds\"\nfollows_from = \"second\"") +
                      replaced(replaced(good_record, "\"first\"", "\"second\""), "expected = \"holds\"", "expected = \"holds\"\nfollows_from = \"first\""),
