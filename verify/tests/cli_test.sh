@@ -326,6 +326,11 @@ grep -q '"sections": \[\]' "$work/claims-only/report.json" || fail "claims only:
 grep -q '^# simpson-verify report: scene `paper`: claims phi3-det, hd-invariance only; no sections' "$work/claims-only/report.md" \
   || fail "claims only: title does not say so"
 ls "$work/claims-only"/*.csv >/dev/null 2>&1 && fail "claims only: a section ran"
+# The earlier Phi_3 of the source's comments is judged for the run's claims only (phi3-det and
+# hd-invariance, not the other claims that read Phi3), against the verdict the run gave them.
+/usr/bin/python3 -c "import json,sys; p=json.load(open(sys.argv[1]))['provenance']; rows=[c for e in p['earlier_text'] for c in e['claims']]
+assert p['earlier_text_checked'] and [(c['claim'], c['live'], c['earlier']) for c in rows] == [('phi3-det', 'holds', 'fails'), ('hd-invariance', 'holds', 'fails')], rows" \
+  "$work/claims-only/report.json" || fail "claims only: the earlier text was judged for claims the run did not ask for"
 check "sections only" 0 --scene quick --sections stability --out "$work/sections-only"
 grep -q '^0 claims' "$work/out" || fail "sections only: claims ran"
 [ -f "$work/sections-only/stability_extreme.dat" ] || fail "sections only: no stability files"

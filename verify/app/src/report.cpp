@@ -504,7 +504,7 @@ std::string provenance_markdown(const run_record& r) {
         rows.push_back(fmt::format(c["differs"].get<bool>() ? "`{}` {} on the live text, **{}** on the earlier one" : "`{}` {} on both",
                                    c["claim"].get<std::string>(), c["live"].get<std::string>(), c["earlier"].get<std::string>()));
       }
-      md += (rows.empty() ? std::string("no claim reads it") : join(rows, "; ")) + "\n";
+      md += (rows.empty() ? std::string("no claim of this run reads it") : join(rows, "; ")) + "\n";
     }
     md += "\n";
   }

@@ -66,12 +66,11 @@ run_record run(const scene& s, const paper_reading& paper, const progress_callba
       break;
     }
   }
-  // What text was checked; its earlier text judged again only when claims ran (the same claims).
+  // What text was checked; its earlier text judged again for the claims the run checked.
   {
-    std::vector<std::pair<std::string, json>> quoted;
-    for (const claim_outcome& o : r.outcomes) quoted.emplace_back(o.checked->id, o.result.quoted);
-    run_context provenance_ctx = ctx;
-    r.provenance = provenance_json(paper, provenance_ctx, quoted, !s.claims.empty());
+    std::vector<checked_claim> checked;
+    for (const claim_outcome& o : r.outcomes) checked.push_back({o.checked->id, o.result.quoted, o.result.outcome});
+    r.provenance = provenance_json(paper, ctx, checked);
   }
   record_certificates(r, false);  // each claim's evidence "coq": exported or why not (checked by --certify)
   const experiment_settings& e = s.experiments;
