@@ -255,6 +255,26 @@ for k in 1 2 3 4; do [ -e "$work/none-claims$k" ] && fail "bad claims file wrote
 awk 'BEGIN{p=0} /^id = "phi3-det"/{p=1} p && /^expected = "holds"/{sub(/holds/, "erratum\"\nfinding = \"erratum"); p=0} {print}' "$claims_src" >"$work/phi3-erratum.toml"
 check "claims file read" 1 --claims-file "$work/phi3-erratum.toml" --scene quick --claims phi3-det --out "$work/claims-file"
 grep -q "phi3-det: verdict holds, expected erratum" "$work/err" || fail "claims file read: expectation not from the file: $(cat "$work/err")"
+# A note the harness has never seen, checked from its claims file alone: its three deliberate
+# errors are errata with corrections (exit 0: as the file expects); --validate judges them failures.
+note_dir="$(dirname "$0")/notes"
+check "a note from its claims file" 0 --paper "$note_dir/trapezoidal-note.tex" --claims-file "$note_dir/trapezoidal-note.toml" --out "$work/note"
+grep -q '^6 claims: 3 held, 3 errata, 0 failed' "$work/out" || fail "a note: summary: $(cat "$work/out")"
+grep -q '"correction": "stable exactly for 0 < h\*omega < 2"' "$work/note/report.json" || fail "a note: the stability correction is not in the report"
+ls "$work/note"/*.csv >/dev/null 2>&1 && fail "a note: a section of the paper's experiments ran"
+check "a note, validated" 1 --validate --paper "$note_dir/trapezoidal-note.tex" --claims-file "$note_dir/trapezoidal-note.toml" --out "$work/note-validated"
+check "a note without --paper" 2 --claims-file "$note_dir/trapezoidal-note.toml" --out "$work/none-note1"
+grep -q "give its LaTeX with --paper" "$work/err" || fail "a note without --paper: $(cat "$work/err")"
+sed 's/matrix = "map", equals = "det"/matrix = "no-such-label", equals = "det"/' "$note_dir/trapezoidal-note.toml" >"$work/note-label.toml"
+check "a note, label missing" 2 --paper "$note_dir/trapezoidal-note.tex" --claims-file "$work/note-label.toml" --out "$work/none-note2"
+grep -q "claims file '$work/note-label.toml', line [0-9]*, field 'with.matrix': no .label{no-such-label}" "$work/err" ||
+  fail "a note, label missing: not named: $(cat "$work/err")"
+sed 's/shape = "symplectic"/shape = "simplectic"/' "$note_dir/trapezoidal-note.toml" >"$work/note-shape.toml"
+check "a note, unknown shape" 2 --paper "$note_dir/trapezoidal-note.tex" --claims-file "$work/note-shape.toml" --out "$work/none-note3"
+sed "s/real = \['q', /real = [/" "$note_dir/trapezoidal-note.toml" >"$work/note-symbol.toml"
+check "a note, undeclared symbol" 2 --paper "$note_dir/trapezoidal-note.tex" --claims-file "$work/note-symbol.toml" --out "$work/none-note4"
+grep -q "the symbol 'q' is not declared" "$work/err" || fail "a note, undeclared symbol: $(cat "$work/err")"
+for k in 1 2 3 4; do [ -e "$work/none-note$k" ] && fail "a bad note run wrote $work/none-note$k"; done
 # The paper's source as an input (--paper, or the scene key "paper"): bad sources are bad input.
 paper_src="$(dirname "$0")/../paper/text/simpson-symplectic-gsi2023.tex"
 check "paper missing" 2 --claims phi3-det --paper "$work/no-such.tex" --out "$work/none-paper1"

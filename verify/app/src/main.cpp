@@ -252,6 +252,8 @@ int main(int argc, char** argv) {
     paper = read_scene_paper(s);  // a paper that is missing or does not parse is bad input: nothing runs
     scene_selection selection;
     if (app.count("--claims") > 0) selection.claims = claim_ids;
+    // A document's claims file: its claims, and none of the paper's sections unless asked for.
+    if (installed_document() && app.count("--claims") == 0) selection.claims = std::vector<std::string>{"all"};
     if (app.count("--sections") > 0) selection.sections = section_list;
     apply_selection(s, selection);
     if (!paper_file.empty()) s.overrides["paper"] = paper_file;
@@ -397,7 +399,7 @@ int main(int argc, char** argv) {
       return code;
     }
     // The Φ₃ table concerns the scene's claims as a whole: a run of a selection does not print it.
-    if (s.selection.empty() && !record.outcomes.empty()) {
+    if (s.selection.empty() && !record.outcomes.empty() && record.paper_configuration.is_object()) {
       fmt::print("\nPhi3 at the paper's configuration ({})\n{:<12} {:<10} {:<27} {:<11} {:<13} {}\n",
                  record.paper_configuration["parameters"].get<std::string>(), "precision", "epsilon", "alpha = delta",
                  "det-1", "Delta", "Hd(Phi3 y)-Hd(y)");

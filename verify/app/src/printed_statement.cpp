@@ -25,7 +25,7 @@ printed_statement printed_of(const claim_outcome& o) {
   for (const json& f : printed["formulas"]) {
     text += (text.empty() ? "" : " ; ") + f.value("tex", std::string());
     const int line = f.value("line", 0);
-    if (std::find(seen.begin(), seen.end(), line) != seen.end()) continue;  // two formulas of one line
+    if (line == 0 || std::find(seen.begin(), seen.end(), line) != seen.end()) continue;  // a record's own TeX; two formulas of one line
     seen.push_back(line);
     lines += (lines.empty() ? "" : ", ") + std::to_string(line);
   }

@@ -597,16 +597,18 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
     md += fmt::format("- **[{}](#{})**: {}\n", o.checked->id, heading_slug(o.checked->id), markdown_escaped(o.result.note));
   }
   if (!any_note) md += "None in this run.\n";
-  md += "\n## Φ₃ at the paper's configuration\n\n";
-  md += markdown_escaped(r.paper_configuration.value("parameters", "")) + "\n\n";
-  md += "| precision | epsilon | α = δ | β | γ | det Φ₃ − 1 | Δ | H_d(Φ₃y) − H_d(y) |\n|---|---|---|---|---|---|---|---|\n";
-  for (const json& row : r.paper_configuration["rows"]) {
-    md += "|";
-    for (const char* key : {"precision", "epsilon", "alpha_equals_delta", "beta", "gamma", "det_minus_one", "discriminant",
-                            "hd_change_one_step"}) {
-      md += " " + markdown_cell(row[key].get<std::string>()) + " |";
+  if (r.paper_configuration.is_object()) {  // none for a document other than the paper
+    md += "\n## Φ₃ at the paper's configuration\n\n";
+    md += markdown_escaped(r.paper_configuration.value("parameters", "")) + "\n\n";
+    md += "| precision | epsilon | α = δ | β | γ | det Φ₃ − 1 | Δ | H_d(Φ₃y) − H_d(y) |\n|---|---|---|---|---|---|---|---|\n";
+    for (const json& row : r.paper_configuration["rows"]) {
+      md += "|";
+      for (const char* key : {"precision", "epsilon", "alpha_equals_delta", "beta", "gamma", "det_minus_one", "discriminant",
+                              "hd_change_one_step"}) {
+        md += " " + markdown_cell(row[key].get<std::string>()) + " |";
+      }
+      md += "\n";
     }
-    md += "\n";
   }
 
   if (!r.sections.empty()) {
@@ -630,12 +632,18 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
     if (!o.result.printed.is_null()) {
       md += fmt::format("Read from the paper ({}):\n\n", markdown_escaped(o.result.printed["source"].get<std::string>()));
       for (const json& f : o.result.printed["formulas"]) {
+        // A definition a proof shape puts in has no TeX or parse of its own here (its display is listed).
         std::vector<std::string> sides;
-        for (const json& side : f["parsed"]) sides.push_back(markdown_code(side.get<std::string>()));
-        md += fmt::format("- {} (line {}): {}\n  - parsed: {}\n", markdown_escaped(f["label"].get<std::string>()), f["line"].get<int>(),
-                          markdown_code(f["tex"].get<std::string>()), join(sides, " and "));
+        if (f.contains("parsed")) {
+          for (const json& side : f["parsed"]) sides.push_back(markdown_code(side.get<std::string>()));
+        }
+        md += fmt::format("- {} (line {}){}{}\n", markdown_escaped(f["label"].get<std::string>()), f["line"].get<int>(),
+                          f.contains("tex") ? ": " + markdown_code(f["tex"].get<std::string>()) : std::string(),
+                          sides.empty() ? std::string() : "\n  - parsed: " + join(sides, " and "));
       }
       md += "\n";
+    }
+    if (!o.result.printed.is_null() && o.result.evidence.contains("kernels")) {
       const json& kernels = o.result.evidence["kernels"];
       md += fmt::format("What each kernel proved:\n\n- ours: {} ({})\n- GiNaC, printed side: {}\n- GiNaC, derived side: {}\n\n",
                         kernels["own"]["derived_holds"].get<bool>() ? "the derived statement" : "not the derived statement",

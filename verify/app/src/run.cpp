@@ -17,6 +17,16 @@
 namespace simpson::verify {
 
 paper_reading read_scene_paper(const scene& s) {
+  if (const claims_document* document = installed_document()) {
+    // A document other than the paper: its claims read their formulas themselves (proof shapes).
+    if (s.paper_file.empty()) throw std::invalid_argument("the claims file checks a document ([document]): give its LaTeX with --paper");
+    paper_reading reading;
+    reading.source = load_document(s.paper_file, document->title);
+    reading.origin = reading.source.origin;
+    reading.sha256 = reading.source.sha256;
+    check_claims_file_formulas(reading.source);
+    return reading;
+  }
   return read_paper(s.paper_file.empty() ? embedded_paper() : load_paper(s.paper_file));
 }
 
@@ -102,7 +112,8 @@ run_record run(const scene& s, const paper_reading& paper, const progress_callba
   if (e.nonlinear) section([&] { return run_nonlinear(*e.nonlinear); });
   if (e.floating) section([&] { return run_floating(*e.floating); });
   if (e.family) section([&] { return run_family(*e.family); });
-  r.paper_configuration = paper_configuration(s.precisions);
+  // Φ₃ at the paper's configuration: the paper's, not a document's that a claims file checks.
+  if (!installed_document()) r.paper_configuration = paper_configuration(s.precisions);
   r.environment = build_environment(s, paper);
   r.seconds = std::chrono::duration<double>(clock::now() - start).count();
   return r;

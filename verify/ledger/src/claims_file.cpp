@@ -36,7 +36,7 @@ class record_reader {
   record_reader(const toml::table& table, const std::string& file) : table_(table), file_(file), line_(line_of(table)) {
     static const std::set<std::string> fields{"id",       "section",  "equation",     "statement",     "methods", "check",
                                               "printed",  "coq_goals", "expected",    "finding",       "follows_from",
-                                              "typographical", "origin", "headline",  "coq_none"};
+                                              "typographical", "origin", "headline",  "coq_none", "shape", "with"};
     for (const auto& [key, node] : table_) {
       if (!fields.count(std::string(key.str()))) {
         throw claims_file_error(file_, line_of(node), std::string(key.str()), "not a field of a claim record (docs/claims-file.md)");
@@ -80,6 +80,34 @@ class record_reader {
     return out;
   }
 
+  /// `with`: a table of strings and arrays of strings.
+  std::map<std::string, shape_argument> arguments() const {
+    std::map<std::string, shape_argument> out;
+    const toml::node* node = table_.get("with");
+    if (!node) return out;
+    const toml::table* with = node->as_table();
+    if (!with) throw claims_file_error(file_, line_of(*node), "with", "must be a table of the shape's arguments");
+    for (const auto& [key, value] : *with) {
+      const std::string field = "with." + std::string(key.str());
+      shape_argument a;
+      a.line = line_of(value);
+      if (const auto* text = value.as_string()) {
+        a.values.push_back(text->get());
+      } else if (const auto* array = value.as_array()) {
+        a.list = true;
+        for (const toml::node& item : *array) {
+          const auto* text = item.as_string();
+          if (!text) throw claims_file_error(file_, line_of(item), field, "must be a string or an array of strings");
+          a.values.push_back(text->get());
+        }
+      } else {
+        throw claims_file_error(file_, a.line, field, "must be a string or an array of strings");
+      }
+      out.emplace(std::string(key.str()), std::move(a));
+    }
+    return out;
+  }
+
   int line_of_field(const std::string& field) const {
     const toml::node* node = table_.get(field);
     return node ? line_of(*node) : line_;
@@ -108,7 +136,52 @@ claims_file_error::claims_file_error(const std::string& file, int line, const st
       line_(line),
       field_(field) {}
 
+namespace {
+
+/// [document] and [symbols], when the file has them (both, or neither).
+std::optional<claims_document> read_document(const toml::table& file_table, const std::string& file) {
+  const toml::node* document = file_table.get("document");
+  const toml::node* symbols = file_table.get("symbols");
+  if (!document && !symbols) return std::nullopt;
+  if (!document) throw claims_file_error(file, line_of(*symbols), "document", "missing: [symbols] declares the symbols of a [document]");
+  const toml::table* d = document->as_table();
+  if (!d) throw claims_file_error(file, line_of(*document), "document", "must be a table");
+  if (!symbols) throw claims_file_error(file, line_of(*document), "symbols", "missing: a [document] declares its symbols in [symbols]");
+  const toml::table* s = symbols->as_table();
+  if (!s) throw claims_file_error(file, line_of(*symbols), "symbols", "must be a table");
+  claims_document out;
+  out.line = line_of(*document);
+  for (const auto& [key, node] : *d) {
+    if (key.str() != "title") throw claims_file_error(file, line_of(node), "document." + std::string(key.str()), "not a field of [document] (title)");
+  }
+  const toml::node* title = d->get("title");
+  if (!title || !title->as_string() || title->as_string()->get().empty()) {
+    throw claims_file_error(file, title ? line_of(*title) : out.line, "document.title", "missing: a phrase the document prints (its title)");
+  }
+  out.title = title->as_string()->get();
+  std::set<std::string> seen;
+  for (const auto& [key, node] : *s) {
+    const std::string field = "symbols." + std::string(key.str());
+    if (key.str() != "positive" && key.str() != "real") throw claims_file_error(file, line_of(node), field, "not a field of [symbols] (positive, real)");
+    const toml::array* names = node.as_array();
+    if (!names) throw claims_file_error(file, line_of(node), field, "must be an array of symbol names");
+    for (const toml::node& item : *names) {
+      const auto* name = item.as_string();
+      if (!name || name->get().empty()) throw claims_file_error(file, line_of(item), field, "must be an array of symbol names");
+      if (!seen.insert(name->get()).second) throw claims_file_error(file, line_of(item), field, "'" + name->get() + "' is declared twice");
+      (key.str() == "positive" ? out.positive : out.real).push_back(name->get());
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 std::vector<claim_record> read_claims_file(const std::string& text, const std::string& file, const known_name& known) {
+  return read_claims_contents(text, file, known).records;
+}
+
+claims_file_contents read_claims_contents(const std::string& text, const std::string& file, const known_name& known) {
   toml::table document;
   try {
     document = toml::parse(text, file);
@@ -116,8 +189,12 @@ std::vector<claim_record> read_claims_file(const std::string& text, const std::s
     throw claims_file_error(file, static_cast<int>(e.source().begin.line), "", std::string(e.description()));
   }
   for (const auto& [key, node] : document) {
-    if (key.str() != "claim") throw claims_file_error(file, line_of(node), std::string(key.str()), "not a table of a claims file (only [[claim]])");
+    if (key.str() != "claim" && key.str() != "document" && key.str() != "symbols") {
+      throw claims_file_error(file, line_of(node), std::string(key.str()), "not a table of a claims file ([document], [symbols], [[claim]])");
+    }
   }
+  claims_file_contents contents;
+  contents.document = read_document(document, file);
   const toml::array* claims = document["claim"].as_array();
   if (!claims || claims->empty()) throw claims_file_error(file, 1, "claim", "no [[claim]] record");
   std::vector<claim_record> records;
@@ -136,10 +213,22 @@ std::vector<claim_record> read_claims_file(const std::string& text, const std::s
     }
     r.section = read.text("section", true);
     r.equation = read.text("equation", true);
-    r.statement = read.text("statement", true);
     r.methods = read.texts("methods");
-    r.check = read.text("check", true);
-    if (!known("check", r.check)) throw claims_file_error(file, read.line_of_field("check"), "check", "no check is named '" + r.check + "'");
+    r.check = read.text("check", false);
+    r.shape = read.text("shape", false);
+    if (r.check.empty() == r.shape.empty()) {
+      throw claims_file_error(file, r.line, r.check.empty() ? "shape" : "check",
+                              r.check.empty() ? "missing: a record names the proof shape (or the bespoke check) that decides it"
+                                              : "a record names either a check or a shape, not both");
+    }
+    if (!r.check.empty() && !known("check", r.check)) throw claims_file_error(file, read.line_of_field("check"), "check", "no check is named '" + r.check + "'");
+    if (!r.shape.empty() && !known("shape", r.shape)) {
+      throw claims_file_error(file, read.line_of_field("shape"), "shape", "no proof shape is named '" + r.shape + "' (docs/claims-file.md)");
+    }
+    // A shape record may leave its statement out: the reports then show the TeX it reads.
+    r.statement = read.text("statement", r.shape.empty());
+    r.with = read.arguments();
+    if (r.shape.empty() && !r.with.empty()) throw claims_file_error(file, read.line_of_field("with"), "with", "arguments without a shape");
     r.printed = read.text("printed", false);
     if (!r.printed.empty() && !known("printed", r.printed)) {
       throw claims_file_error(file, read.line_of_field("printed"), "printed", "no check of printed formulas is named '" + r.printed + "'");
@@ -195,7 +284,8 @@ std::vector<claim_record> read_claims_file(const std::string& text, const std::s
       }
     }
   }
-  return records;
+  contents.records = std::move(records);
+  return contents;
 }
 
 std::string embedded_claims_text() { return detail::embedded_claims_bytes(); }

@@ -3,6 +3,7 @@
 #include <simpson/verify/claims_file.hpp>
 
 #include "check_registry.hpp"
+#include "proof_shapes.hpp"
 #include "printed_check_support.hpp"
 #include "claims_section2.hpp"
 #include "claims_section3_4.hpp"
@@ -47,13 +48,38 @@ const check_registry& registered_checks() {
 
 }  // namespace detail
 
+namespace {
+
+/// The document of the claims file installed, if it declares one (use_claims_file).
+std::optional<claims_document>& installed_document_storage() {
+  static std::optional<claims_document> document;
+  return document;
+}
+
+/// The check of a record: its bespoke check, or its shape run with its arguments.
+detail::check_function check_of(const claim_record& r) {
+  if (!r.shape.empty()) {
+    const detail::proof_shape& shape = detail::proof_shapes().at(r.shape);
+    detail::shape_call call{r.id, r.statement, r.with, nullptr};
+    return [call, run = shape.run](const run_context& ctx) {
+      detail::shape_call with_document = call;
+      with_document.document = installed_document_storage() ? &*installed_document_storage() : nullptr;
+      if (with_document.statement.empty()) with_document.statement = find_claim(call.claim_id).statement;  // the TeX read
+      return run(with_document, ctx);
+    };
+  }
+  const detail::check_function* check = detail::registered_checks().find(r.check);
+  if (!check) throw std::logic_error("claims_of: no check is named '" + r.check + "'");
+  return *check;
+}
+
+}  // namespace
+
 std::vector<claim> claims_of(const std::vector<claim_record>& records) {
   std::vector<claim> out;
   for (const claim_record& r : records) {
-    const detail::check_function* check = detail::registered_checks().find(r.check);
-    if (!check) throw std::logic_error("claims_of: no check is named '" + r.check + "'");
-    claim c{r.id, r.section, r.equation, r.statement, r.methods, r.expected, *check, r.kind, r.follows_from, r.typographical, r.origin};
-    c.check_name = r.check;
+    claim c{r.id, r.section, r.equation, r.statement, r.methods, r.expected, check_of(r), r.kind, r.follows_from, r.typographical, r.origin};
+    c.check_name = r.shape.empty() ? r.check : "shape " + r.shape;
     c.printed_check = r.printed;
     c.coq_goals = r.coq_goals;
     c.headline = r.headline;
@@ -63,12 +89,21 @@ std::vector<claim> claims_of(const std::vector<claim_record>& records) {
   return out;
 }
 
-std::vector<claim_record> read_claims_with_known_checks(const std::string& text, const std::string& file) {
-  return read_claims_file(text, file, [](const std::string& field, const std::string& name) {
+claims_file_contents read_claims_with_known_names(const std::string& text, const std::string& file) {
+  claims_file_contents contents = read_claims_contents(text, file, [](const std::string& field, const std::string& name) {
     if (field == "printed") return detail::printed_check_names().count(name) > 0;
     if (field == "coq_goals") return detail::kernel_claim_goals().count(name) > 0;
+    if (field == "shape") return detail::proof_shapes().count(name) > 0;
     return detail::registered_checks().find(name) != nullptr;
   });
+  for (const claim_record& r : contents.records) {
+    if (!r.shape.empty()) detail::check_shape_arguments(r, file);
+  }
+  return contents;
+}
+
+std::vector<claim_record> read_claims_with_known_checks(const std::string& text, const std::string& file) {
+  return read_claims_with_known_names(text, file).records;
 }
 
 namespace {
@@ -77,6 +112,16 @@ namespace {
 std::optional<std::vector<claim>>& installed_claims() {
   static std::optional<std::vector<claim>> claims;
   return claims;
+}
+
+/// The records of the file installed, and its name (check_claims_file_formulas).
+std::vector<claim_record>& installed_records() {
+  static std::vector<claim_record> records;
+  return records;
+}
+std::string& installed_file() {
+  static std::string file;
+  return file;
 }
 
 const std::vector<claim>& embedded_ledger() {
@@ -117,7 +162,25 @@ const std::vector<claim>& embedded_ledger() {
 const std::vector<claim>& ledger() { return installed_claims() ? *installed_claims() : embedded_ledger(); }
 
 void use_claims_file(const std::string& text, const std::string& file) {
-  installed_claims() = claims_of(read_claims_with_known_checks(text, file));
+  claims_file_contents contents = read_claims_with_known_names(text, file);
+  installed_claims() = claims_of(contents.records);
+  installed_document_storage() = contents.document;
+  installed_records() = std::move(contents.records);
+  installed_file() = file;
+}
+
+const claims_document* installed_document() { return installed_document_storage() ? &*installed_document_storage() : nullptr; }
+
+void check_claims_file_formulas(const paper_source& document) {
+  for (const claim_record& r : installed_records()) {
+    if (r.shape.empty()) continue;
+    const std::string printed = detail::check_shape_formulas(r, installed_file(), document, installed_document());
+    if (!r.statement.empty() || !installed_claims()) continue;
+    // A record without a statement: the reports show the TeX it reads.
+    for (claim& c : *installed_claims()) {
+      if (c.id == r.id) c.statement = printed;
+    }
+  }
 }
 
 const claim& find_claim(const std::string& id) {

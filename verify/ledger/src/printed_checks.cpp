@@ -319,7 +319,9 @@ claim_result check_claim(const claim& c, const run_context& ctx) {
   if (result.outcome == verdict::text_changed || result.outcome == verdict::undecided) return result;
   const auto it = c.printed_check.empty() ? formula_claims().end() : formula_claims().find(c.printed_check);
   if (it == formula_claims().end()) {
-    if (!result.certificate.empty()) return result;  // the check wrote its own (the floating claims: Gappa's and the lifting lemma)
+    // The check wrote its own, or why there is none (the floating claims: Gappa's and the lifting
+    // lemma; the proof shapes of claims files).
+    if (!result.certificate.empty() || !result.certificate_missing.empty()) return result;
     const auto goals = c.coq_goals.empty() ? detail::kernel_claim_goals().end() : detail::kernel_claim_goals().find(c.coq_goals);
     if (goals == detail::kernel_claim_goals().end()) {
       result.certificate_missing = detail::without_coq_statement(c, "its exact proof is our kernel's alone: no Coq statement yet");

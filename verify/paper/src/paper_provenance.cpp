@@ -55,6 +55,10 @@ paper_provenance read_provenance(const paper_source& paper) {
   for (auto it = std::sregex_iterator(text.begin(), text.end(), large); it != std::sregex_iterator(); ++it) {
     p.title += (p.title.empty() ? "" : " ") + folded_space((*it)[1].str());
   }
+  // Otherwise \title{...}, as a note writes it.
+  static const std::regex title(R"(\\title\{([^}]*)\})");
+  std::smatch t;
+  if (p.title.empty() && std::regex_search(text, t, title)) p.title = folded_space(t[1].str());
   // The edition line: the sentence that begins with "Edition".
   static const std::regex edition(R"(Edition[^.}]*\.)");
   std::smatch m;

@@ -107,25 +107,41 @@ paper_source embedded_paper() {
   return {"embedded", without_comments(embedded_paper_text()), sha256_hex(embedded_paper_text()), embedded_paper_text()};
 }
 
-paper_source load_paper(const std::string& path) {
+namespace {
+
+paper_source read_source(const std::string& path, const std::string& what) {
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) {
-    throw std::invalid_argument("paper '" + path + "': is a directory, not the paper's LaTeX file");
+    throw std::invalid_argument(what + " '" + path + "': is a directory, not a LaTeX file");
   }
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::invalid_argument("paper '" + path + "': missing or unreadable");
+  if (!in) throw std::invalid_argument(what + " '" + path + "': missing or unreadable");
   std::ostringstream text;
   text << in.rdbuf();
-  if (!in.good() && !in.eof()) throw std::invalid_argument("paper '" + path + "': cannot be read");
+  if (!in.good() && !in.eof()) throw std::invalid_argument(what + " '" + path + "': cannot be read");
   if (text.str().find_first_not_of(" \t\r\n") == std::string::npos) {
-    throw std::invalid_argument("paper '" + path + "': the file is empty");
+    throw std::invalid_argument(what + " '" + path + "': the file is empty");
   }
-  paper_source paper{path, without_comments(text.str()), sha256_hex(text.str()), text.str()};
+  return {path, without_comments(text.str()), sha256_hex(text.str()), text.str()};
+}
+
+}  // namespace
+
+paper_source load_paper(const std::string& path) {
+  paper_source paper = read_source(path, "paper");
   if (paper.text.find("symplectic scheme") == std::string::npos || paper.text.find("\\label{Phi3}") == std::string::npos) {
     throw std::invalid_argument("paper '" + path +
                                 "': not the symplectic Simpson paper (no title 'symplectic scheme' or no \\label{Phi3})");
   }
   return paper;
+}
+
+paper_source load_document(const std::string& path, const std::string& title) {
+  paper_source document = read_source(path, "document");
+  if (!find_ignoring_space(document.text, title)) {
+    throw std::invalid_argument("document '" + path + "': does not print its claims file's title '" + title + "'");
+  }
+  return document;
 }
 
 tex_display find_labelled(const paper_source& paper, const std::string& label) {

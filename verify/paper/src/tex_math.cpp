@@ -334,7 +334,7 @@ class parser {
       }
     }
     if (greek().count(t.text)) return symbol_with_subscript(greek().at(t.text));
-    if (t.text == "\\frac") {
+    if (t.text == "\\frac" || t.text == "\\tfrac" || t.text == "\\dfrac") {
       expect("{");
       GiNaC::ex num = group_body();
       expect("}");

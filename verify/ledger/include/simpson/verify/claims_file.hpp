@@ -5,11 +5,21 @@
 #include <simpson/verify/claim.hpp>
 
 #include <functional>
+#include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace simpson::verify {
+
+/// One argument of a proof shape as a record gives it (`with = { matrix = "Phi" }`): a string, or
+/// a list of strings, and the line it is on.
+struct shape_argument {
+  std::vector<std::string> values;
+  bool list = false;
+  int line = 0;
+};
 
 /// One record, as read.
 struct claim_record {
@@ -18,7 +28,9 @@ struct claim_record {
   std::string equation;   // the \label of the display the claim reads, or "prose"
   std::string statement;  // what the paper says, for the reports
   std::vector<std::string> methods;
-  std::string check;      // the name of the check that decides it
+  std::string check;      // the name of the bespoke check that decides it, or
+  std::string shape;      // the name of the proof shape that decides it (proof_shapes.hpp), with
+  std::map<std::string, shape_argument> with;  // its arguments
   std::string printed;    // the name of the GiNaC check of the printed formulas it reads, if any
   std::string coq_goals;  // the name of the Coq goals of our kernel's proof, if any
   verdict expected = verdict::holds;
@@ -46,12 +58,31 @@ class claims_file_error : public std::invalid_argument {
   std::string field_;
 };
 
+/// What a claims file for a document other than the paper declares: its [document] (a phrase the
+/// document prints, its title: the --paper given must contain it) and its [symbols] (every symbol
+/// the formulas read may use, those assumed positive apart).
+struct claims_document {
+  std::string title;
+  std::vector<std::string> positive;  // symbols > 0 (parameters: m, omega, h)
+  std::vector<std::string> real;      // other real symbols (the state: q_0, p_0, ...)
+  int line = 0;
+};
+
+struct claims_file_contents {
+  std::optional<claims_document> document;  // none for the paper's own claims
+  std::vector<claim_record> records;
+};
+
 /// Reads and validates the records of `text` (named `file` in errors): TOML syntax, every field
 /// known and of its type, the required ones present (`expected` may be left out: holds), ids unique, verdicts, classes and origins
 /// spelled as the reports spell them, `finding` given exactly when the expected verdict is a
-/// finding, `follows_from` naming another record with no cycle, and `check`, `printed` and
-/// `coq_goals` names that `known(field, name)` accepts. Throws claims_file_error at the first fault.
+/// finding, `follows_from` naming another record with no cycle, exactly one of `check` and `shape`,
+/// and `check`, `shape`, `printed` and `coq_goals` names that `known(field, name)` accepts. Throws
+/// claims_file_error at the first fault.
 using known_name = std::function<bool(const std::string& field, const std::string& name)>;
+claims_file_contents read_claims_contents(const std::string& text, const std::string& file, const known_name& known);
+
+/// The records alone (read_claims_contents).
 std::vector<claim_record> read_claims_file(const std::string& text, const std::string& file, const known_name& known);
 
 /// The text of claims/paper.toml, compiled in.

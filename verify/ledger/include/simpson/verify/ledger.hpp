@@ -3,6 +3,7 @@
 
 #include <simpson/verify/claim.hpp>
 #include <simpson/verify/claims_file.hpp>
+#include <simpson/verify/paper_source.hpp>
 
 #include <string>
 #include <vector>
@@ -22,6 +23,15 @@ std::vector<claim> claims_of(const std::vector<claim_record>& records);
 /// From now on ledger() is the claims of this file instead of claims/paper.toml (the CLI's
 /// --claims-file, before anything runs). Throws claims_file_error when the file does not read.
 void use_claims_file(const std::string& text, const std::string& file);
+
+/// The [document] and [symbols] of the claims file installed, when it checks a document other than
+/// the paper; null otherwise.
+const claims_document* installed_document();
+
+/// Reads every formula the installed file's shape records name from `document` (before anything
+/// runs): throws claims_file_error naming the record's argument when one is missing, does not
+/// parse, or uses a symbol the file does not declare.
+void check_claims_file_formulas(const paper_source& document);
 
 /// The claim with this id; throws std::invalid_argument naming the id when there is none.
 const claim& find_claim(const std::string& id);

@@ -32,6 +32,11 @@ paper_source embedded_paper();
 /// unreadable, or not this paper (it must carry the title and the \label of Φ₃).
 paper_source load_paper(const std::string& path);
 
+/// A document other than the paper (a note checked with its own claims file), read as the paper
+/// is, comments blanked out. Throws std::invalid_argument naming the file when it is missing,
+/// unreadable, empty, or does not print `title`.
+paper_source load_document(const std::string& path, const std::string& title);
+
 /// The display carrying \label{label}. Throws std::invalid_argument naming the paper and the label
 /// when there is none.
 tex_display find_labelled(const paper_source& paper, const std::string& label);

@@ -1,0 +1,65 @@
+#pragma once
+// Proof shapes: the generic checks a claims-file record names (`shape = "determinant"`), each one
+// C++ function with typed arguments read from the record (`with = { matrix = "phi", equals = "$1$" }`).
+// A shape reads the formulas it is given from the document's LaTeX (formula_reference.hpp), decides
+// its statement in GiNaC's normal form and again in our kernel (kernel_zero.hpp) where the
+// statement is an identity, states what it proved for Coq (coq_export.hpp), and returns the verdict:
+// holds, or erratum with the proved correction (docs/claims-file.md lists the shapes).
+
+#include <simpson/verify/claim.hpp>
+#include <simpson/verify/claims_file.hpp>
+#include <simpson/verify/paper_source.hpp>
+
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace simpson::verify::detail {
+
+/// What an argument holds: a formula reference ("phi#2", "inline:stable for", "$1$"), a list of
+/// definitions (references to displays "x = ..."), or a list of symbol names in TeX ('q_0', '\omega').
+enum class argument_kind { formula, definitions, symbols };
+
+struct shape_parameter {
+  std::string name;
+  argument_kind kind = argument_kind::formula;
+  bool required = true;
+  std::string meaning;  // for docs and errors
+};
+
+/// One call: the claim's id and statement, its arguments, and the symbols its document declares
+/// (none for the paper's own claims: no declaration is then required).
+struct shape_call {
+  std::string claim_id;
+  std::string statement;
+  std::map<std::string, shape_argument> with;
+  const claims_document* document = nullptr;
+};
+
+using shape_function = std::function<claim_result(const shape_call&, const run_context&)>;
+
+struct proof_shape {
+  std::string name;
+  std::string summary;
+  std::string principal;  // the argument whose formula is the printed statement (the reports show its TeX)
+  std::vector<shape_parameter> parameters;
+  shape_function run;
+};
+
+/// Every shape, by name.
+const std::map<std::string, proof_shape>& proof_shapes();
+
+/// The record's arguments against its shape's parameters: each required one given, none unknown,
+/// each of its kind (one string for a formula, a list otherwise). Throws claims_file_error naming
+/// the record's line and the argument ("with.matrix").
+void check_shape_arguments(const claim_record& record, const std::string& file);
+
+/// Every formula, definition and symbol a record's arguments name, read from `document`: throws
+/// claims_file_error naming the argument's line when one is missing, does not parse, or uses a
+/// symbol `declared` does not declare. Returns the TeX of the principal argument's formula, with
+/// where it was read: "$...$ (label det, line 12)".
+std::string check_shape_formulas(const claim_record& record, const std::string& file, const paper_source& document,
+                          const claims_document* declared);
+
+}  // namespace simpson::verify::detail

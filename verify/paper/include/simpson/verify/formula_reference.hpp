@@ -1,0 +1,68 @@
+#pragma once
+// A formula a claims-file record names, read from the document's LaTeX: by the \label of its
+// display, which equation of the display, which side; or by the inline formula at a phrase of the
+// prose; or a TeX fragment of the record itself (for a constant such as 1, or an expression of the
+// declared symbols). The document's own macros are expanded first.
+//
+//   "phi"             the last side of the first equation of the display labelled phi
+//   "phi#2"           ... of its second equation
+//   "phi:lhs"         the first side (phi#2:lhs for the second equation)
+//   "inline:stable for"  the inline formula $...$ at (or first after) the phrase "stable for"
+//   "$\omega h$"      the TeX fragment itself
+
+#include <simpson/verify/paper_source.hpp>
+#include <simpson/verify/tex_macros.hpp>
+
+#include <ginac/ginac.h>
+
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace simpson::verify {
+
+struct formula_reference {
+  enum class kind { labelled, inline_formula, literal };
+  kind where = kind::labelled;
+  std::string key;   // the label, the phrase, or the TeX
+  int equation = 1;  // 1-based, of display_equations()
+  bool first_side = false;
+};
+
+/// Reads the text of a reference; throws std::invalid_argument saying what is wrong with it.
+formula_reference parse_reference(const std::string& text);
+
+/// One formula read: where, its TeX (the equation), its sides' TeX, and the side the reference
+/// names parsed (a GiNaC matrix for a matrix).
+struct referenced_formula {
+  std::string locator;  // "label phi (line 12)", "inline formula at 'stable for' (line 30)", "the record's TeX"
+  int line = 0;
+  std::string tex;
+  std::vector<std::string> sides;
+  GiNaC::ex value;
+};
+
+/// Reads `reference` from `document` (its macros `macros` expanded) into paper_symbols(). Throws
+/// std::invalid_argument with one line saying what is missing or does not parse.
+referenced_formula read_reference(const paper_source& document, const std::map<std::string, tex_macro>& macros, const std::string& reference);
+
+/// Every symbol in `e`, by name.
+std::vector<std::string> symbol_names(const GiNaC::ex& e);
+
+/// A definition read from a display "x = ...": the symbol (its first side, which must parse to a
+/// symbol) and its value (the last side).
+struct definition {
+  GiNaC::symbol name;
+  GiNaC::ex value;
+  std::string locator;
+};
+definition read_definition(const paper_source& document, const std::map<std::string, tex_macro>& macros, const std::string& reference);
+
+/// `e` with the definitions put in, again until none of their symbols is left (a definition may
+/// use another), and its matrices evaluated (a product of two in the one order whose sizes agree).
+/// Throws std::invalid_argument when they never end (a definition that uses itself), or a product
+/// of matrices has no order or none that fits.
+GiNaC::ex with_definitions(const GiNaC::ex& e, const std::vector<definition>& definitions);
+
+}  // namespace simpson::verify

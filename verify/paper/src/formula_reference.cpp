@@ -1,0 +1,212 @@
+// Formulas named by a claims-file record: see formula_reference.hpp.
+
+#include <simpson/verify/formula_reference.hpp>
+
+#include <simpson/verify/tex_math.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <set>
+
+namespace simpson::verify {
+namespace {
+
+/// The display that holds \label{label}, wherever in it the label is: from its start
+/// (\begin{equation}, equation*, \[ or \moneq) to its end, the label taken out.
+tex_display labelled_display(const paper_source& document, const std::string& label) {
+  const std::string key = "\\label{" + label + "}";
+  const std::size_t at = document.text.find(key);
+  if (at == std::string::npos) throw std::invalid_argument("no \\label{" + label + "} in '" + document.origin + "'");
+  if (document.text.find(key, at + key.size()) != std::string::npos) {
+    throw std::invalid_argument("\\label{" + label + "} is in '" + document.origin + "' twice");
+  }
+  std::size_t start = std::string::npos, start_length = 0;
+  for (const char* s : {"\\begin{equation*}", "\\begin{equation}", "\\[", "\\moneqstar", "\\moneq"}) {
+    const std::size_t found = document.text.rfind(s, at);
+    if (found != std::string::npos && (start == std::string::npos || found > start)) {
+      start = found;
+      start_length = std::string(s).size();
+    }
+  }
+  std::size_t end = std::string::npos;
+  for (const char* e : {"\\end{equation", "\\]", "\\monend"}) end = std::min(end, document.text.find(e, at));
+  std::size_t closed_before = std::string::npos;  // a display that ends between the start found and the label
+  if (start != std::string::npos) {
+    for (const char* e : {"\\end{equation", "\\]", "\\monend"}) closed_before = std::min(closed_before, document.text.find(e, start));
+  }
+  if (start == std::string::npos || end == std::string::npos || closed_before < at) {
+    throw std::invalid_argument("\\label{" + label + "} in '" + document.origin + "' is not inside an equation display");
+  }
+  std::string tex = document.text.substr(start + start_length, end - start - start_length);
+  tex.replace(at - start - start_length, key.size(), std::string(key.size(), ' '));
+  std::replace(tex.begin(), tex.end(), '\n', ' ');
+  std::size_t first = start + start_length;
+  while (first < end && std::isspace(static_cast<unsigned char>(document.text[first])) != 0) ++first;
+  return {"label " + label, line_at(document.text, first), tex};
+}
+
+}  // namespace
+
+formula_reference parse_reference(const std::string& text) {
+  formula_reference r;
+  if (text.size() >= 2 && text.front() == '$' && text.back() == '$') {
+    r.where = formula_reference::kind::literal;
+    r.key = text.substr(1, text.size() - 2);
+    if (r.key.find_first_not_of(" \t") == std::string::npos) throw std::invalid_argument("an empty TeX fragment '$$'");
+    return r;
+  }
+  if (text.rfind("inline:", 0) == 0) {
+    r.where = formula_reference::kind::inline_formula;
+    r.key = text.substr(7);
+    if (r.key.find_first_not_of(" \t") == std::string::npos) throw std::invalid_argument("'inline:' names no phrase");
+    return r;
+  }
+  std::string rest = text;
+  if (rest.size() > 4 && rest.compare(rest.size() - 4, 4, ":lhs") == 0) {
+    r.first_side = true;
+    rest.resize(rest.size() - 4);
+  }
+  const std::size_t hash = rest.find('#');
+  if (hash != std::string::npos) {
+    const std::string number = rest.substr(hash + 1);
+    if (number.empty() || number.size() > 2 || number.find_first_not_of("0123456789") != std::string::npos || number == "0" || number == "00") {
+      throw std::invalid_argument("'" + text + "': after '#' an equation number from 1");
+    }
+    r.equation = std::stoi(number);
+    rest.resize(hash);
+  }
+  if (rest.empty() || rest.find_first_of("{}$\\ ") != std::string::npos) {
+    throw std::invalid_argument("'" + text + "' is not a reference (a \\label, label#k, label:lhs, inline:phrase, or $TeX$)");
+  }
+  r.key = rest;
+  return r;
+}
+
+referenced_formula read_reference(const paper_source& document, const std::map<std::string, tex_macro>& macros, const std::string& reference) {
+  const formula_reference r = parse_reference(reference);
+  referenced_formula f;
+  std::string tex;
+  if (r.where == formula_reference::kind::literal) {
+    f.locator = "the record's TeX '" + r.key + "'";
+    tex = r.key;
+  } else {
+    tex_display display;
+    if (r.where == formula_reference::kind::labelled) {
+      display = labelled_display(document, r.key);
+    } else {
+      display = find_inline(document, r.key);
+    }
+    f.locator = display.locator + " (line " + std::to_string(display.line) + ")";
+    f.line = display.line;
+    tex = display.tex;
+  }
+  try {
+    tex = expand_macros(tex, macros);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(f.locator + ": " + e.what());
+  }
+  std::vector<std::string> equations = r.where == formula_reference::kind::literal ? std::vector<std::string>{tex} : display_equations(tex);
+  if (r.equation > static_cast<int>(equations.size())) {
+    throw std::invalid_argument(f.locator + ": equation " + std::to_string(r.equation) + " is not there (the display has " +
+                                std::to_string(equations.size()) + ")");
+  }
+  f.tex = equations[static_cast<std::size_t>(r.equation - 1)];
+  f.sides = relation_sides(f.tex);
+  if (f.sides.empty()) throw std::invalid_argument(f.locator + ": no formula");
+  const std::string& side = r.first_side ? f.sides.front() : f.sides.back();
+  try {
+    // Not evaluated as matrices yet: a symbol a definition makes a matrix (Phi in "Phi (q_0, p_0)")
+    // must not be taken for a scalar factor first.
+    f.value = parse_tex_math(side, paper_symbols());
+  } catch (const tex_parse_error& e) {
+    throw std::invalid_argument(f.locator + ": cannot parse '" + folded_space(side) + "': " + e.what());
+  }
+  return f;
+}
+
+std::vector<std::string> symbol_names(const GiNaC::ex& e) {
+  std::set<std::string> names;
+  for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (GiNaC::is_a<GiNaC::symbol>(*it)) names.insert(GiNaC::ex_to<GiNaC::symbol>(*it).get_name());
+  }
+  return {names.begin(), names.end()};
+}
+
+definition read_definition(const paper_source& document, const std::map<std::string, tex_macro>& macros, const std::string& reference) {
+  formula_reference r = parse_reference(reference);
+  if (r.first_side) throw std::invalid_argument("'" + reference + "': a definition is a whole equation, without ':lhs'");
+  const referenced_formula f = read_reference(document, macros, reference);
+  if (f.sides.size() != 2) throw std::invalid_argument(f.locator + ": a definition is one equation 'x = ...'");
+  GiNaC::ex name;
+  try {
+    name = parse_tex_math(f.sides.front(), paper_symbols());
+  } catch (const tex_parse_error& e) {
+    throw std::invalid_argument(f.locator + ": cannot parse '" + folded_space(f.sides.front()) + "': " + e.what());
+  }
+  if (!GiNaC::is_a<GiNaC::symbol>(name)) {
+    throw std::invalid_argument(f.locator + ": the left side '" + folded_space(f.sides.front()) + "' of a definition is not one symbol");
+  }
+  return {GiNaC::ex_to<GiNaC::symbol>(name), f.value, f.locator};
+}
+
+namespace {
+
+/// evalm, with a product of two matrices (a symbol a definition made a matrix, times a matrix the
+/// formula prints) multiplied in the one order whose sizes agree: GiNaC keeps a product's factors
+/// in its own order, not the TeX's, and takes a second matrix for a scalar.
+GiNaC::ex evaluated_matrices(const GiNaC::ex& e) {
+  if (GiNaC::is_a<GiNaC::mul>(e)) {
+    GiNaC::ex scalar = 1;
+    std::vector<GiNaC::matrix> matrices;
+    for (const GiNaC::ex& factor : e) {
+      const GiNaC::ex f = evaluated_matrices(factor);
+      if (GiNaC::is_a<GiNaC::matrix>(f)) {
+        matrices.push_back(GiNaC::ex_to<GiNaC::matrix>(f));
+      } else {
+        scalar *= f;
+      }
+    }
+    if (matrices.empty()) return scalar;
+    if (matrices.size() > 2) throw std::invalid_argument("a product of more than two matrices: their order is not in the expression");
+    GiNaC::matrix product = matrices.front();
+    if (matrices.size() == 2) {
+      const GiNaC::matrix& a = matrices[0];
+      const GiNaC::matrix& b = matrices[1];
+      const bool ab = a.cols() == b.rows(), ba = b.cols() == a.rows();
+      if (ab && ba) throw std::invalid_argument("a product of two matrices that fit in either order: its order is not in the expression");
+      if (!ab && !ba) throw std::invalid_argument("a product of two matrices whose sizes do not agree");
+      product = ab ? a.mul(b) : b.mul(a);
+    }
+    return product.mul_scalar(scalar);
+  }
+  if (GiNaC::is_a<GiNaC::add>(e)) {
+    GiNaC::ex sum = 0;
+    for (const GiNaC::ex& term : e) sum = (sum + evaluated_matrices(term)).evalm();
+    return sum;
+  }
+  if (GiNaC::is_a<GiNaC::matrix>(e)) {
+    GiNaC::matrix m = GiNaC::ex_to<GiNaC::matrix>(e);
+    for (unsigned r = 0; r < m.rows(); ++r) {
+      for (unsigned c = 0; c < m.cols(); ++c) m(r, c) = evaluated_matrices(m(r, c));
+    }
+    return m;
+  }
+  return e.evalm();
+}
+
+}  // namespace
+
+GiNaC::ex with_definitions(const GiNaC::ex& e, const std::vector<definition>& definitions) {
+  GiNaC::exmap values;
+  for (const definition& d : definitions) values[d.name] = d.value;
+  GiNaC::ex out = e;
+  for (std::size_t round = 0; round <= definitions.size(); ++round) {
+    bool any = false;
+    for (const definition& d : definitions) any = any || out.has(d.name);
+    if (!any) return evaluated_matrices(out);
+    out = evaluated_matrices(out.subs(values));
+  }
+  throw std::invalid_argument("the definitions use each other without end");
+}
+
+}  // namespace simpson::verify

@@ -1,0 +1,255 @@
+// Proof shapes (proof_shapes.hpp) and what they stand on: a document's macros (tex_macros.hpp),
+// formula references (formula_reference.hpp) and our kernel's zero decision (kernel_zero.hpp).
+// Each shape is run on a small document where it holds and on one where a weaker check would
+// pass a wrong statement; a bad record is named with its line and argument.
+
+#include "kernel_zero.hpp"
+#include "proof_shapes.hpp"
+
+#include <simpson/verify/claims_file.hpp>
+#include <simpson/verify/formula_reference.hpp>
+#include <simpson/verify/ledger.hpp>
+#include <simpson/verify/paper_reading.hpp>
+#include <simpson/verify/printed_checks.hpp>
+#include <simpson/verify/tex_macros.hpp>
+#include <simpson/verify/tex_math.hpp>
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace simpson::verify {
+namespace {
+
+paper_source document(const std::string& text) { return {"test.tex", without_comments(text), "", text}; }
+
+// ---- macros ----
+
+TEST(TexMacros, DefinitionsWithArgumentsExpandAsTeXWould) {
+  const auto macros = defined_macros(R"(\newcommand{\om}{\omega} \newcommand\half[1]{\frac{#1}{2}}
+\def\sq#1{#1^2} \renewcommand{\om}{\Omega})");
+  ASSERT_EQ(macros.size(), 3u);
+  EXPECT_EQ(macros.at("\\half").arguments, 1);
+  EXPECT_EQ(expand_macros(R"(\half{\om h} + \sq x)", macros), R"(\frac{{\Omega h}}{2} + {x}^2)");
+  EXPECT_EQ(expand_macros(R"(\omh)", macros), R"(\omh)");  // not \om followed by h
+  EXPECT_THROW(expand_macros(R"(\half)", macros), std::invalid_argument);
+  EXPECT_THROW(expand_macros(R"(\a)", defined_macros(R"(\newcommand{\a}{\a x})")), std::invalid_argument);
+  EXPECT_THROW(defined_macros(R"(\newcommand{\b}[12]{x})"), std::invalid_argument);
+}
+
+// ---- references ----
+
+const std::string note = R"(\newcommand{\om}{\omega}
+\begin{equation}\label{first} a = b + 1, \quad c = 2 \end{equation}
+\begin{equation}
+x = \frac{\om}{2} \label{end}
+\end{equation}
+It is stable for $0 < \om h < 2$.
+)";
+
+TEST(FormulaReference, ByLabelEquationSideInlineAndLiteral) {
+  const paper_source d = document(note);
+  const auto macros = defined_macros(d.text);
+  const GiNaC::ex b = paper_symbols()["b"], omega = paper_symbols()["omega"];
+  EXPECT_TRUE((read_reference(d, macros, "first").value - (b + 1)).is_zero());
+  EXPECT_TRUE((read_reference(d, macros, "first#2").value - 2).is_zero());
+  EXPECT_TRUE((read_reference(d, macros, "first:lhs").value - paper_symbols()["a"]).is_zero());
+  EXPECT_TRUE((read_reference(d, macros, "end").value - omega / 2).is_zero()) << "a label at the end of its display";
+  EXPECT_EQ(read_reference(d, macros, "end").line, 4);
+  EXPECT_EQ(read_reference(d, macros, "inline:stable for").sides.size(), 3u);
+  EXPECT_TRUE((read_reference(d, macros, "$\\om + 1$").value - (omega + 1)).is_zero());
+  EXPECT_THROW(read_reference(d, macros, "missing"), std::invalid_argument);
+  EXPECT_THROW(read_reference(d, macros, "first#3"), std::invalid_argument);
+  EXPECT_THROW(read_reference(d, macros, "$\\unknown$"), std::invalid_argument);
+  EXPECT_THROW(parse_reference("first#0"), std::invalid_argument);
+  EXPECT_THROW(parse_reference("a label"), std::invalid_argument);
+  const definition x = read_definition(d, macros, "end");
+  EXPECT_EQ(x.name.get_name(), "x");
+  EXPECT_TRUE((with_definitions(paper_symbols()["x"] * 2, {x}) - omega).is_zero());
+}
+
+// ---- our kernel ----
+
+using detail::kernel_decides_zero;
+using detail::kernel_decision;
+
+TEST(KernelZero, DecidesIdentitiesAndFindsWhereOneFails) {
+  const GiNaC::ex x = paper_symbols()["x"], y = paper_symbols()["y"];
+  EXPECT_EQ(kernel_decides_zero(GiNaC::pow(x + y, 2) - x * x - 2 * x * y - y * y).outcome, kernel_decision::result::zero);
+  // Written with a removable pole at x = 1, a value of the first grid.
+  EXPECT_EQ(kernel_decides_zero((x * x - 1) / (x - 1) * y - (x + 1) * y).outcome, kernel_decision::result::zero);
+  // Zero at y = 1 and 2 but not identically: a grid of fewer points than the degree + 1 would pass it.
+  const kernel_decision wrong = kernel_decides_zero((y - 1) * (y - 2) * GiNaC::pow(x, 3));
+  EXPECT_EQ(wrong.outcome, kernel_decision::result::nonzero);
+  EXPECT_NE(wrong.evidence.find("y = 3"), std::string::npos) << wrong.evidence;
+  EXPECT_EQ(kernel_decides_zero(GiNaC::matrix{{x - x, 0}, {0, y / y - 1}}).outcome, kernel_decision::result::zero);
+  EXPECT_EQ(kernel_decides_zero(GiNaC::sqrt(x) - 1).outcome, kernel_decision::result::not_applicable);
+}
+
+// ---- the shapes, through a claims file ----
+
+const std::string shape_document = R"(\newcommand{\om}{\omega}
+\title{Shapes under test}
+\begin{equation}\label{ld} L_d = \frac{m}{2h} (q_1 - q_0)^2 - \frac{h m \om^2}{4} (q_0^2 + q_1^2) \end{equation}
+\begin{equation}\label{el} m \frac{q_{j+1} - 2 q_j + q_{j-1}}{h^2} + m \om^2 q_j = 0 \end{equation}
+\begin{equation}\label{elwrong} m \frac{q_{j+1} - 2 q_j + q_{j-1}}{h^2} + m \om^2 q_{j+1} = 0 \end{equation}
+\begin{equation}\label{map} \Phi = \begin{pmatrix} 1 - \frac{\om^2 h^2}{2} & \frac{h}{m} \\
+  - m \om^2 h \Big(1 - \frac{\om^2 h^2}{4}\Big) & 1 - \frac{\om^2 h^2}{2} \end{pmatrix} \end{equation}
+\begin{equation}\label{mapwrong} \Psi = \begin{pmatrix} 1 - \frac{\om^2 h^2}{2} & \frac{h}{m} \\
+  - m \om^2 h & 1 - \frac{\om^2 h^2}{2} \end{pmatrix} \end{equation}
+\begin{equation}\label{one} D = 1 \end{equation}
+\begin{equation}\label{energy} H = \frac{p^2}{2m} + \frac{m \om^2}{2} \Big(1 - \frac{\om^2 h^2}{4}\Big) q^2 \end{equation}
+\begin{equation}\label{energywrong} H = \frac{p^2}{2m} + \frac{m \om^2}{2} q^2 \end{equation}
+\begin{equation}\label{sum} s = (a + b)^2 \end{equation}
+\begin{equation}\label{expanded} t = a^2 + 2 a b + b^2 \end{equation}
+Stable for $0 < \om h < 2$. Also stable for $0 < \om h < 2 \sqrt{2}$. And for $0 < \om h < 1$.
+)";
+
+const std::string declarations = R"(
+[document]
+title = "Shapes under test"
+[symbols]
+positive = ['m', '\omega', 'h']
+real = ['q', 'p', 'q_0', 'q_1', 'q_{j-1}', 'q_j', 'q_{j+1}', 'a', 'b']
+)";
+
+std::string record(const std::string& id, const std::string& shape, const std::string& with) {
+  return "[[claim]]\nid = \"" + id + "\"\nsection = \"1\"\nequation = \"x\"\nstatement = 'x'\nmethods = [\"exact\"]\nshape = \"" + shape +
+         "\"\nwith = " + with + "\n";
+}
+
+/// The verdict of each record run on shape_document.
+class ShapesOnADocument : public ::testing::Test {
+ protected:
+  void TearDown() override { use_claims_file(embedded_claims_text(), "claims/paper.toml"); }
+
+  claim_result run(const std::string& shape, const std::string& with, const std::string& text = shape_document) {
+    use_claims_file(declarations + record("under-test", shape, with), "test.toml");
+    reading_.source = document(text);
+    reading_.origin = "test.tex";
+    check_claims_file_formulas(reading_.source);
+    run_context ctx;
+    ctx.paper = &reading_;
+    return check_claim(find_claim("under-test"), ctx);
+  }
+
+  paper_reading reading_;
+};
+
+TEST_F(ShapesOnADocument, Identity) {
+  const claim_result holds = run("identity", R"({ lhs = "sum", rhs = "expanded" })");
+  EXPECT_EQ(holds.outcome, verdict::holds) << holds.note;
+  EXPECT_NE(holds.evidence["exact"]["own"].get<std::string>().find("holds"), std::string::npos) << holds.evidence.dump();
+  EXPECT_FALSE(holds.certificate.empty());
+  const claim_result wrong = run("identity", R"({ lhs = "sum", rhs = "$a^2 + b^2$" })");
+  EXPECT_EQ(wrong.outcome, verdict::erratum);
+  EXPECT_EQ(wrong.correction, "as derived from (sum): ($a^2 + b^2$) = 2*a*b+a^2+b^2");
+}
+
+TEST_F(ShapesOnADocument, DeterminantAndSymplectic) {
+  EXPECT_EQ(run("determinant", R"({ matrix = "map", equals = "one" })").outcome, verdict::holds);
+  EXPECT_EQ(run("symplectic", R"({ matrix = "map" })").outcome, verdict::holds);
+  // Psi's (2,1) entry lacks its factor: det = 1 + omega^4 h^4 / 4 (its trace is Phi's, so a check
+  // of the trace alone would pass it).
+  const claim_result det = run("determinant", R"({ matrix = "mapwrong", equals = "one" })");
+  EXPECT_EQ(det.outcome, verdict::erratum);
+  EXPECT_NE(det.correction.find("det (mapwrong) = "), std::string::npos) << det.correction;
+  EXPECT_EQ(run("symplectic", R"({ matrix = "mapwrong" })").outcome, verdict::erratum);
+}
+
+TEST_F(ShapesOnADocument, Conserved) {
+  EXPECT_EQ(run("conserved", R"({ map = "map", function = "energy", state = ['q', 'p'] })").outcome, verdict::holds);
+  // The true energy, which is conserved to O(h^2) only: a sampled or small-h check would pass it.
+  const claim_result wrong = run("conserved", R"({ map = "map", function = "energywrong", state = ['q', 'p'] })");
+  EXPECT_EQ(wrong.outcome, verdict::erratum);
+  EXPECT_NE(wrong.evidence["exact"]["own"].get<std::string>().find("fails"), std::string::npos) << wrong.evidence.dump();
+}
+
+TEST_F(ShapesOnADocument, EulerLagrange) {
+  const std::string args = R"(lagrangian = "ld", nodes = ['q_0', 'q_1'], sequence = ['q_{j-1}', 'q_j', 'q_{j+1}'])";
+  const claim_result holds = run("euler-lagrange", "{ " + args + R"(, printed = "el:lhs" })");
+  EXPECT_EQ(holds.outcome, verdict::holds) << holds.note;
+  EXPECT_EQ(holds.evidence["exact"]["factor"], "-h");
+  // q_{j+1} for q_j in the force: the same terms, one index off.
+  const claim_result wrong = run("euler-lagrange", "{ " + args + R"(, printed = "elwrong:lhs" })");
+  EXPECT_EQ(wrong.outcome, verdict::erratum);
+  EXPECT_NE(wrong.correction.find("= 0"), std::string::npos);
+}
+
+TEST_F(ShapesOnADocument, StabilityInterval) {
+  const std::string args = R"(map = "map", variable = '$\omega h$')";
+  const claim_result holds = run("stability-interval", "{ " + args + R"(, condition = "inline:Stable for" })");
+  EXPECT_EQ(holds.outcome, verdict::holds) << holds.note << holds.evidence.dump();
+  // 2 sqrt(2) is Simpson's bound, not this map's; 1 is inside the band but not its end (a check
+  // that the printed interval is stable would pass it).
+  for (const std::string phrase : {"Also stable for", "And for"}) {
+    const claim_result wrong = run("stability-interval", "{ " + args + ", condition = \"inline:" + phrase + "\" }");
+    EXPECT_EQ(wrong.outcome, verdict::erratum) << phrase;
+    EXPECT_NE(wrong.correction.find("0 < h*omega < 2"), std::string::npos) << wrong.correction;
+  }
+  const claim_result not_det_one = run("stability-interval", R"({ map = "mapwrong", variable = '$\omega h$', condition = "inline:Stable for" })");
+  EXPECT_EQ(not_det_one.outcome, verdict::fails);
+}
+
+/// The error a record gives at reading (or at reading its formulas), or "".
+std::string error_of(const std::string& shape, const std::string& with, const std::string& extra = "") {
+  try {
+    use_claims_file(declarations + record("bad", shape, with) + extra, "bad.toml");
+    check_claims_file_formulas(document(shape_document));
+  } catch (const claims_file_error& e) {
+    use_claims_file(embedded_claims_text(), "claims/paper.toml");
+    return e.what();
+  }
+  use_claims_file(embedded_claims_text(), "claims/paper.toml");
+  return "";
+}
+
+TEST(ShapeRecords, BadRecordsAreNamedWithTheirLineAndArgument) {
+  EXPECT_EQ(error_of("identity", R"({ lhs = "sum", rhs = "expanded" })"), "");
+  EXPECT_NE(error_of("no-such-shape", "{}").find("field 'shape': no proof shape is named 'no-such-shape'"), std::string::npos);
+  EXPECT_NE(error_of("identity", R"({ lhs = "sum" })").find("field 'with.rhs': missing"), std::string::npos);
+  EXPECT_NE(error_of("identity", R"({ lhs = "sum", rhs = "expanded", extra = "x" })").find("field 'with.extra': not an argument"),
+            std::string::npos);
+  EXPECT_NE(error_of("identity", R"({ lhs = ["sum"], rhs = "expanded" })").find("field 'with.lhs': must be one string"), std::string::npos);
+  EXPECT_NE(error_of("identity", R"({ lhs = "nolabel", rhs = "expanded" })").find("field 'with.lhs': no \\label{nolabel}"),
+            std::string::npos);
+  EXPECT_NE(error_of("identity", R"({ lhs = "sum", rhs = '$a +* b$' })").find("field 'with.rhs': "), std::string::npos);
+  EXPECT_NE(error_of("identity", R"({ lhs = "sum", rhs = '$z$' })").find("the symbol 'z' is not declared"), std::string::npos);
+  const std::string both = error_of("identity", R"({ lhs = "sum", rhs = "expanded" })", "check = \"x\"\n");
+  EXPECT_NE(both.find("line"), std::string::npos) << both;
+}
+
+// ---- the note of the tests: a derivation the harness has never seen, from its claims file alone ----
+
+std::string file_text(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST(TrapezoidalNote, EveryVerdictIsTheOneItsClaimsFileExpects) {
+  const std::string dir = std::string(SIMPSON_SOURCE_DIR) + "/verify/tests/notes/";
+  use_claims_file(file_text(dir + "trapezoidal-note.toml"), "trapezoidal-note.toml");
+  paper_reading reading;
+  reading.source = load_document(dir + "trapezoidal-note.tex", installed_document()->title);
+  check_claims_file_formulas(reading.source);
+  run_context ctx;
+  ctx.paper = &reading;
+  int errata = 0;
+  for (const claim& c : ledger()) {
+    const claim_result r = check_claim(c, ctx);
+    EXPECT_EQ(r.outcome, c.expected) << c.id << ": " << r.note;
+    if (r.outcome == verdict::erratum) {
+      ++errata;
+      EXPECT_FALSE(r.correction.empty()) << c.id;
+    }
+  }
+  EXPECT_EQ(errata, 3);
+  EXPECT_EQ(check_claim(find_claim("stability-condition"), ctx).correction, "stable exactly for 0 < h*omega < 2");
+  use_claims_file(embedded_claims_text(), "claims/paper.toml");
+}
+
+}  // namespace
+}  // namespace simpson::verify
