@@ -104,6 +104,9 @@ const std::string shape_document = R"(\newcommand{\om}{\omega}
 \begin{equation}\label{sum} s = (a + b)^2 \end{equation}
 \begin{equation}\label{expanded} t = a^2 + 2 a b + b^2 \end{equation}
 Stable for $0 < \om h < 2$. Also stable for $0 < \om h < 2 \sqrt{2}$. And for $0 < \om h < 1$.
+\begin{equation}\label{ldm} L_d = \frac{m}{h} \Big( (q_m - q_0)^2 + (q_1 - q_m)^2 \Big) \end{equation}
+\begin{equation}\label{free} F = \begin{pmatrix} 1 & \frac{h}{m} \\ 0 & 1 \end{pmatrix} \end{equation}
+Coefficient $1 - \frac{\om^2 h^2}{4}$ positive on $0 < \om h < 2$, but not on the wide $0 < \om h < 3$.
 )";
 
 const std::string declarations = R"(
@@ -111,7 +114,7 @@ const std::string declarations = R"(
 title = "Shapes under test"
 [symbols]
 positive = ['m', '\omega', 'h']
-real = ['q', 'p', 'q_0', 'q_1', 'q_{j-1}', 'q_j', 'q_{j+1}', 'a', 'b']
+real = ['q', 'p', 'q_0', 'q_1', 'q_m', 'p_0', 'p_1', 'q_{j-1}', 'q_j', 'q_{j+1}', 'a', 'b']
 )";
 
 std::string record(const std::string& id, const std::string& shape, const std::string& with) {
@@ -192,6 +195,32 @@ TEST_F(ShapesOnADocument, StabilityInterval) {
   EXPECT_EQ(not_det_one.outcome, verdict::fails);
 }
 
+TEST_F(ShapesOnADocument, DiscreteMap) {
+  const std::string ends = R"(nodes = ['q_0', 'q_1'], momenta = ['p_0', 'p_1'])";
+  const claim_result holds = run("discrete-map", "{ map = \"map\", lagrangian = \"ld\", " + ends + " }");
+  EXPECT_EQ(holds.outcome, verdict::holds) << holds.note << holds.evidence.dump();
+  const claim_result wrong = run("discrete-map", "{ map = \"mapwrong\", lagrangian = \"ld\", " + ends + " }");
+  EXPECT_EQ(wrong.outcome, verdict::erratum);
+  EXPECT_NE(wrong.correction.find("[(h^3*m*omega^4-4*h*m*omega^2)/(4), "), std::string::npos) << wrong.correction;
+  // An internal node, eliminated by its equation: the free particle's map. Taking q_m for a
+  // constant instead would leave it in the map.
+  const claim_result internal = run("discrete-map", "{ map = \"free\", lagrangian = \"ldm\", internal = ['q_m'], " + ends + " }");
+  EXPECT_EQ(internal.outcome, verdict::holds) << internal.note << internal.evidence.dump();
+  EXPECT_EQ(run("discrete-map", "{ map = \"free\", lagrangian = \"ldm\", " + ends + " }").outcome, verdict::fails);
+}
+
+TEST_F(ShapesOnADocument, SignOnInterval) {
+  const std::string args = R"(expression = "inline:Coefficient", variable = '$\omega h$')";
+  const claim_result holds = run("sign-on-interval", "{ " + args + R"(, condition = "inline:positive on", sign = "positive" })");
+  EXPECT_EQ(holds.outcome, verdict::holds) << holds.note << holds.evidence.dump();
+  // Positive at the interval's midpoint and at its start, but not beyond omega h = 2: a check at a
+  // point inside would pass it.
+  const claim_result wide = run("sign-on-interval", "{ " + args + R"(, condition = "inline:the wide", sign = "positive" })");
+  EXPECT_EQ(wide.outcome, verdict::erratum);
+  EXPECT_EQ(wide.correction, "(-h^2*omega^2+4)/(4) is positive for 0 < h*omega < 2 only, and changes sign there");
+  EXPECT_EQ(run("sign-on-interval", "{ " + args + R"(, condition = "inline:positive on", sign = "negative" })").outcome, verdict::erratum);
+}
+
 /// The error a record gives at reading (or at reading its formulas), or "".
 std::string error_of(const std::string& shape, const std::string& with, const std::string& extra = "") {
   try {
@@ -216,6 +245,23 @@ TEST(ShapeRecords, BadRecordsAreNamedWithTheirLineAndArgument) {
             std::string::npos);
   EXPECT_NE(error_of("identity", R"({ lhs = "sum", rhs = '$a +* b$' })").find("field 'with.rhs': "), std::string::npos);
   EXPECT_NE(error_of("identity", R"({ lhs = "sum", rhs = '$z$' })").find("the symbol 'z' is not declared"), std::string::npos);
+  // Of the wrong kind or size for the shape: found before anything runs, not when the claim runs.
+  EXPECT_NE(error_of("determinant", R"({ matrix = "sum", equals = "one" })").find("field 'with.matrix': label sum (line 13) is not a square matrix"),
+            std::string::npos);
+  EXPECT_NE(error_of("stability-interval", R"({ map = "map", variable = '$\omega h$', condition = "one" })").find("is not a condition"),
+            std::string::npos);
+  EXPECT_NE(error_of("stability-interval", R"({ map = "map", variable = '$q h$', condition = "inline:Stable for" })")
+                .find("field 'with.variable': the symbol 'q' is not declared positive"),
+            std::string::npos);
+  EXPECT_NE(error_of("conserved", R"({ map = "map", function = "energy", state = ['q', 'p', 'a'] })")
+                .find("field 'with.state': 3 symbols for the 2 rows of 'map'"),
+            std::string::npos);
+  EXPECT_NE(error_of("euler-lagrange", R"({ lagrangian = "ld", nodes = ['q_0'], sequence = ['q_{j-1}', 'q_j', 'q_{j+1}'], printed = "el:lhs" })")
+                .find("field 'with.nodes': 1 symbols, not 2"),
+            std::string::npos);
+  EXPECT_NE(error_of("sign-on-interval", R"({ expression = "inline:Coefficient", variable = '$\omega h$', condition = "inline:positive on", sign = "positve" })")
+                .find("field 'with.sign': 'positve' is not one of: positive, negative"),
+            std::string::npos);
   const std::string both = error_of("identity", R"({ lhs = "sum", rhs = "expanded" })", "check = \"x\"\n");
   EXPECT_NE(both.find("line"), std::string::npos) << both;
 }
@@ -246,7 +292,10 @@ TEST(TrapezoidalNote, EveryVerdictIsTheOneItsClaimsFileExpects) {
       EXPECT_FALSE(r.correction.empty()) << c.id;
     }
   }
-  EXPECT_EQ(errata, 3);
+  EXPECT_EQ(errata, 4);  // three deliberate errors, and one consequence of the energy's
+  EXPECT_EQ(find_claim("energy-positive").follows_from, "modified-energy");
+  EXPECT_EQ(check_claim(find_claim("energy-positive"), ctx).correction,
+            "(-h^2*omega^2+2)/(2) is positive for 0 < h*omega < sqrt(2) only, and changes sign there");
   EXPECT_EQ(check_claim(find_claim("stability-condition"), ctx).correction, "stable exactly for 0 < h*omega < 2");
   use_claims_file(embedded_claims_text(), "claims/paper.toml");
 }

@@ -270,6 +270,86 @@ claim_result euler_lagrange(const shape_call& call, const run_context& ctx) {
   return result;
 }
 
+/// The one-step map of a discrete Lagrangian L(q_0, q_1) of a linear system, derived: each internal
+/// node eliminated by its equation D_{q_m} L = 0, then p_0 = −D_1 L solved for q_1 and p_1 = D_2 L,
+/// as a matrix in (q_0, p_0); compared with the printed map in both kernels.
+claim_result discrete_map(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const GiNaC::matrix printed = as_square_matrix(read.formula("map"), reference_of(call, "map"));
+  const ex lagrangian = read.formula("lagrangian");
+  const std::vector<GiNaC::symbol> nodes = read.symbols("nodes"), momenta = read.symbols("momenta");
+  const std::vector<GiNaC::symbol> internal = read.has("internal") ? read.symbols("internal") : std::vector<GiNaC::symbol>{};
+  const auto no_map = [&](const std::string& why) {
+    claim_result result;
+    result.outcome = verdict::fails;
+    result.note = why;
+    result.printed = read.printed();
+    result.certificate_missing = "no map derived";
+    return result;
+  };
+  const auto not_linear = [&](const std::string& step) {
+    return no_map("The shape derives the map of a linear system: " + step + " is not linear in its unknowns.");
+  };
+  ex reduced = lagrangian;
+  if (!internal.empty()) {
+    GiNaC::lst equations, unknowns;
+    for (const GiNaC::symbol& q : internal) {
+      equations.append(lagrangian.diff(q) == 0);
+      unknowns.append(q);
+    }
+    ex solution;
+    try {
+      solution = GiNaC::lsolve(equations, unknowns);
+    } catch (const std::exception&) {
+      return not_linear("the internal nodes' equations");
+    }
+    if (solution.nops() != internal.size()) return not_linear("the internal nodes' equations");
+    reduced = lagrangian.subs(solution);
+  }
+  // p_0 = −D_1 L(q_0, q_1), solved for q_1; then p_1 = D_2 L.
+  ex q1;
+  try {
+    // GiNaC's lsolve of one equation in one symbol returns the value itself; of lists, a list of
+    // relations, empty when there is no unique solution.
+    const ex solved = GiNaC::lsolve(GiNaC::lst{momenta[0] == -reduced.diff(nodes[0])}, GiNaC::lst{nodes[1]});
+    if (solved.nops() != 1 || !GiNaC::is_a<GiNaC::relational>(solved.op(0))) return not_linear("p_0 = -D_1 L");
+    q1 = GiNaC::normal(solved.op(0).rhs());
+  } catch (const std::exception& e) {
+    return not_linear(std::string("p_0 = -D_1 L (") + e.what() + ")");
+  }
+  const ex p1 = GiNaC::normal(reduced.diff(nodes[1]).subs(nodes[1] == q1));
+  GiNaC::matrix derived(2, 2);
+  const ex state[2] = {nodes[0], momenta[0]};
+  for (unsigned c = 0; c < 2; ++c) {
+    derived(0, c) = GiNaC::normal(q1.diff(GiNaC::ex_to<GiNaC::symbol>(state[c])));
+    derived(1, c) = GiNaC::normal(p1.diff(GiNaC::ex_to<GiNaC::symbol>(state[c])));
+  }
+  // Linear: nothing of the state is left in the matrix; and no other symbol the document declares
+  // real (a node left free: an internal node not named in `internal`).
+  std::set<std::string> real;
+  if (call.document) {
+    for (const std::string& tex : call.document->real) real.insert(symbol_named(tex).get_name());
+  }
+  for (unsigned r = 0; r < 2; ++r) {
+    for (unsigned c = 0; c < 2; ++c) {
+      if (derived(r, c).has(nodes[0]) || derived(r, c).has(momenta[0])) return not_linear("the map");
+      for (const std::string& name : symbol_names(derived(r, c))) {
+        if (real.count(name)) {
+          return no_map("The derived map depends on " + name +
+                        ", which the document declares real (a state, not a parameter): an internal node left free? Name it in 'internal'.");
+        }
+      }
+    }
+  }
+  const std::string what = fmt::format("({}) is the one-step map of ({})", reference_of(call, "map"), reference_of(call, "lagrangian"));
+  claim_result result = identity_verdict(call, read, what, ex(printed), ex(derived),
+                                         fmt::format("as derived from ({}): ({}) = {}", reference_of(call, "lagrangian"), reference_of(call, "map"),
+                                                     text_of(ex(derived))));
+  result.evidence["exact"]["derivation"] = {{"q_1", text_of(q1)}, {"p_1", text_of(p1)},
+                                            {"internal_nodes", internal.empty() ? std::string("none") : std::to_string(internal.size()) + " eliminated"}};
+  return result;
+}
+
 /// GiNaC's polynomial in t (rational coefficients) as our kernel's.
 polynomial as_polynomial(const ex& p, const GiNaC::symbol& t) {
   const ex expanded = GiNaC::expand(p);
@@ -294,6 +374,75 @@ bool even(const polynomial& p) {
   return true;
 }
 
+/// A function of the condition's variable v alone, for our kernel: every symbol of v but one
+/// eliminated by v's scaling (s = t / (v / s) for a symbol s of v with exponent 1), its numerator
+/// and denominator as polynomials in t = v, or in x = v² when both are even (roots exact more often).
+struct one_variable {
+  GiNaC::symbol t{"interval_variable"};
+  ex of_t;  // normal form in t
+  polynomial numerator, denominator;
+  bool in_square = false;
+  std::vector<positive_root> ends;  // positive roots of both, increasing
+
+  int sign_at(const rational& x) const {
+    const rational value = numerator.evaluate(x) / denominator.evaluate(x);
+    return value < 0 ? -1 : value > 0 ? 1 : 0;
+  }
+  std::string text(const positive_root& r) const { return in_square ? omega_h_text(r) : root_text(r); }
+  /// The printed end c as our kernel's rational (c, or c² in x), when it is one.
+  std::optional<rational> exact(const ex& c) const {
+    const ex value = GiNaC::expand(in_square ? c * c : c);
+    if (!GiNaC::is_a<GiNaC::numeric>(value) || !GiNaC::ex_to<GiNaC::numeric>(value).is_rational()) return std::nullopt;
+    const polynomial p = as_polynomial(value, t);
+    return degree(p) < 0 ? rational(0) : p[0];
+  }
+};
+
+/// `f` as a function of v alone, or nothing when it is not one.
+std::optional<one_variable> in_variable(const ex& f, const ex& v) {
+  one_variable out;
+  std::optional<ex> of_t;
+  for (const std::string& name : symbol_names(v)) {
+    const GiNaC::symbol s = paper_symbols()[name];
+    if (v.degree(s) != 1 || v.ldegree(s) != 1 || GiNaC::normal(v / s).has(s)) continue;
+    of_t = GiNaC::normal(f.subs(s == out.t / GiNaC::normal(v / s)));
+    break;
+  }
+  if (!of_t) return std::nullopt;
+  for (const std::string& name : symbol_names(*of_t)) {
+    if (name != out.t.get_name()) return std::nullopt;
+  }
+  out.of_t = *of_t;
+  out.numerator = as_polynomial(GiNaC::numer(out.of_t), out.t);
+  out.denominator = as_polynomial(GiNaC::denom(out.of_t), out.t);
+  out.in_square = even(out.numerator) && even(out.denominator);
+  if (out.in_square) {
+    out.numerator = even_in_theta_to_x(out.numerator);
+    out.denominator = even_in_theta_to_x(out.denominator);
+  }
+  out.ends = positive_roots(out.numerator);
+  for (const positive_root& pole : positive_roots(out.denominator)) out.ends.push_back(pole);
+  std::sort(out.ends.begin(), out.ends.end(), [](const positive_root& a, const positive_root& b) { return a.low < b.low; });
+  return out;
+}
+
+/// The printed condition 0 < v < c: c, or an exception naming the condition when it is not so.
+ex interval_end(const referenced_formula& condition, const ex& v) {
+  if (condition.sides.size() != 3) throw std::invalid_argument(condition.locator + ": not a condition '0 < ... < c'");
+  ex low, middle, high;
+  try {
+    low = parse_tex_math(condition.sides[0], paper_symbols());
+    middle = parse_tex_math(condition.sides[1], paper_symbols());
+    high = parse_tex_math(condition.sides[2], paper_symbols());
+  } catch (const tex_parse_error& e) {
+    throw std::invalid_argument(condition.locator + ": " + e.what());
+  }
+  if (!GiNaC::normal(low).is_zero() || !GiNaC::normal(middle - v).is_zero()) {
+    throw std::invalid_argument(condition.locator + ": the condition is not '0 < " + text_of(v) + " < c'");
+  }
+  return high;
+}
+
 claim_result stability_interval(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const referenced_formula condition = read.raw("condition");
@@ -311,91 +460,50 @@ claim_result stability_interval(const shape_call& call, const run_context& ctx) 
     result.note = "The shape decides maps with det 1; det (" + reference_of(call, "map") + ") = " + text_of(GiNaC::normal(det)) + ".";
     return result;
   }
-  // The printed condition: 0 < v < c.
-  if (condition.sides.size() != 3) throw std::invalid_argument(condition.locator + ": not a condition '0 < ... < c'");
-  ex low, middle, high;
-  try {
-    low = parse_tex_math(condition.sides[0], paper_symbols());
-    middle = parse_tex_math(condition.sides[1], paper_symbols());
-    high = parse_tex_math(condition.sides[2], paper_symbols());
-  } catch (const tex_parse_error& e) {
-    throw std::invalid_argument(condition.locator + ": " + e.what());
-  }
-  if (!GiNaC::normal(low).is_zero() || !GiNaC::normal(middle - v).is_zero()) {
-    throw std::invalid_argument(condition.locator + ": the condition is not '0 < " + text_of(v) + " < c'");
-  }
-  // v as one variable t: a symbol s of v with exponent 1 is t / (v / s).
-  if (call.document) {
-    std::set<std::string> positive;
-    for (const std::string& tex : call.document->positive) positive.insert(symbol_named(tex).get_name());
-    for (const std::string& name : symbol_names(v)) {
-      if (!positive.count(name)) throw std::invalid_argument("the variable's symbol '" + name + "' is not declared positive in [symbols]");
-    }
-  }
-  const GiNaC::symbol t("stability_variable");
-  std::optional<ex> trace;
-  for (const std::string& name : symbol_names(v)) {
-    const GiNaC::symbol s = paper_symbols()[name];
-    if (v.degree(s) != 1 || v.ldegree(s) != 1 || GiNaC::normal(v / s).has(s)) continue;
-    trace = GiNaC::normal((m(0, 0) + m(1, 1)).subs(s == t / GiNaC::normal(v / s)));
-    break;
-  }
-  const std::vector<std::string> left = trace ? symbol_names(*trace) : std::vector<std::string>{"?"};
-  if (!trace || !(left.empty() || (left.size() == 1 && left.front() == t.get_name()))) {
+  const ex high = interval_end(condition, v);
+  const ex trace = m(0, 0) + m(1, 1);
+  const std::optional<one_variable> excess = in_variable(trace * trace - 4, v);  // < 0 exactly on the stable set
+  if (!excess) {
     result.outcome = verdict::fails;
     result.note = "The trace of " + reference_of(call, "map") + " is not a function of " + text_of(v) + " alone.";
     return result;
   }
-  const ex excess = GiNaC::normal(*trace * *trace - 4);  // < 0 exactly on the stable set
-  polynomial numerator = as_polynomial(GiNaC::numer(excess), t), denominator = as_polynomial(GiNaC::denom(excess), t);
-  const bool in_square = even(numerator) && even(denominator);  // roots in x = v², exact more often
-  if (in_square) {
-    numerator = even_in_theta_to_x(numerator);
-    denominator = even_in_theta_to_x(denominator);
-  }
-  std::vector<positive_root> ends = positive_roots(numerator);
-  for (const positive_root& pole : positive_roots(denominator)) ends.push_back(pole);
-  std::sort(ends.begin(), ends.end(), [](const positive_root& a, const positive_root& b) { return a.low < b.low; });
-  const auto sign_at = [&](const rational& x) {
-    const rational value = numerator.evaluate(x) / denominator.evaluate(x);
-    return value < 0 ? -1 : value > 0 ? 1 : 0;
-  };
   const std::string var = text_of(v);
-  const auto text = [&](const positive_root& r) { return in_square ? omega_h_text(r) : root_text(r); };
   // The stable bands: between consecutive ends, where trace² − 4 < 0 at a point inside.
   std::vector<std::string> bands;
   rational from = 0;
   std::string from_text = "0";
-  for (std::size_t k = 0; k <= ends.size(); ++k) {
-    const rational inside = k < ends.size() ? rational((from + ends[k].low) / 2) : rational(from + 1);
-    if (sign_at(inside) < 0) bands.push_back(k < ends.size() ? fmt::format("{} < {} < {}", from_text, var, text(ends[k])) : fmt::format("{} > {}", var, from_text));
-    if (k < ends.size()) {
-      from = ends[k].high;
-      from_text = text(ends[k]);
+  for (std::size_t k = 0; k <= excess->ends.size(); ++k) {
+    const rational inside = k < excess->ends.size() ? rational((from + excess->ends[k].low) / 2) : rational(from + 1);
+    if (excess->sign_at(inside) < 0) {
+      bands.push_back(k < excess->ends.size() ? fmt::format("{} < {} < {}", from_text, var, excess->text(excess->ends[k]))
+                                              : fmt::format("{} > {}", var, from_text));
+    }
+    if (k < excess->ends.size()) {
+      from = excess->ends[k].high;
+      from_text = excess->text(excess->ends[k]);
     }
   }
-  const bool stable_near_zero = !ends.empty() && sign_at(ends.front().low / 2) < 0;
+  const bool stable_near_zero = !excess->ends.empty() && excess->sign_at(excess->ends.front().low / 2) < 0;
   // Is the printed c the first end? Exactly: c (or c² in x) is rational and equal to an exact root,
   // or a root of the numerator inside the first end's isolating interval.
   bool equal = false;
   std::string how;
   if (stable_near_zero) {
-    const ex c = GiNaC::expand(in_square ? high * high : high);
-    const positive_root& first = ends.front();
-    if (GiNaC::is_a<GiNaC::numeric>(c) && GiNaC::ex_to<GiNaC::numeric>(c).is_rational()) {
-      const polynomial as_rational = as_polynomial(c, t);
-      const rational value = degree(as_rational) < 0 ? rational(0) : as_rational[0];
-      equal = first.exact() ? value == first.low : (value >= first.low && value <= first.high && numerator.evaluate(value) == 0);
-      how = fmt::format("{} = {} (exact)", in_square ? "c^2" : "c", value.str());
+    const positive_root& first = excess->ends.front();
+    if (const std::optional<rational> value = excess->exact(high)) {
+      equal = first.exact() ? *value == first.low : (*value >= first.low && *value <= first.high && excess->numerator.evaluate(*value) == 0);
+      how = fmt::format("{} = {} (exact)", excess->in_square ? "c^2" : "c", value->str());
     } else {
-      how = "c = " + text_of(high) + " is not rational" + std::string(in_square ? " in its square" : "") + ": not compared";
+      how = "c = " + text_of(high) + " is not rational" + std::string(excess->in_square ? " in its square" : "") + ": not compared";
     }
   }
+  const ex trace_in_v = GiNaC::normal(trace);
   result.evidence["exact"] = {
       {"statement", fmt::format("the stable set of ({}) in {} > 0 begins with 0 < {} < {}", reference_of(call, "map"), var, var, text_of(high))},
       {"det", "det = 1 (GiNaC normal form; our kernel: " + det_own.evidence + ")"},
-      {"trace", text_of(trace->subs(t == v))},
-      {"boundary_polynomial", to_string(numerator, in_square ? "x" : "t") + (in_square ? " (x = (" + var + ")^2)" : "")},
+      {"trace", text_of(trace_in_v)},
+      {"boundary_polynomial", to_string(excess->numerator, excess->in_square ? "x" : "t") + (excess->in_square ? " (x = (" + var + ")^2)" : "")},
       {"stable_bands", bands},
       {"printed_end", how}};
   if (stable_near_zero && equal) {
@@ -405,7 +513,71 @@ claim_result stability_interval(const shape_call& call, const run_context& ctx) 
   result.outcome = verdict::erratum;
   result.correction = bands.empty() ? "never stable for " + var + " > 0" : "stable exactly for " + fmt::format("{}", fmt::join(bands, ", "));
   result.note = "As printed: " + folded_space(condition.tex) + " is not the first stable band of " + reference_of(call, "map") +
-                " (trace = " + text_of(trace->subs(t == v)) + ", stable where |trace| < 2).";
+                " (trace = " + text_of(trace_in_v) + ", stable where |trace| < 2).";
+  return result;
+}
+
+/// The claimed sign of a function of v on the printed interval 0 < v < c: no root or pole of it
+/// inside (our kernel's Sturm sequences, the end compared exactly), and the sign at a point inside.
+claim_result sign_on_interval(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const ex f = read.formula("expression");
+  const referenced_formula condition = read.raw("condition");
+  const ex v = read.formula("variable");
+  const std::string claimed = call.with.at("sign").values.front();
+  const int want = claimed == "positive" ? 1 : -1;
+  claim_result result;
+  result.printed = read.printed();
+  result.certificate_missing = "a sign on an interval: our kernel's Sturm sequences decide it; no Coq statement for this shape yet";
+  const ex high = interval_end(condition, v);
+  const std::optional<one_variable> g = in_variable(f, v);
+  if (!g) {
+    result.outcome = verdict::fails;
+    result.note = "(" + reference_of(call, "expression") + ") is not a function of " + text_of(v) + " alone.";
+    return result;
+  }
+  const std::string var = text_of(v);
+  const std::optional<rational> c = g->exact(high);
+  if (!c || *c <= 0) {
+    result.outcome = verdict::undecided;
+    result.note = "The interval's end " + text_of(high) + " is not a positive rational" + (g->in_square ? " in its square" : "") +
+                  ": our kernel compares ends exactly, and cannot here.";
+    return result;
+  }
+  // The first root or pole of f inside (0, c), if any.
+  std::optional<positive_root> inside;
+  for (const positive_root& e : g->ends) {
+    if (e.exact() ? e.low < *c : e.high < *c) {
+      inside = e;
+      break;
+    }
+    if (!e.exact() && e.low < *c && g->numerator.evaluate(*c) != 0 && g->denominator.evaluate(*c) != 0) {
+      result.outcome = verdict::undecided;
+      result.note = "A root of " + text_of(f) + " lies within 2^-40 of the interval's end; its isolating interval holds the end.";
+      return result;
+    }
+  }
+  const rational probe = inside ? rational(inside->low / 2) : rational(*c / 2);
+  const int sign = g->sign_at(probe);
+  const std::string expression = text_of(f);
+  result.evidence["exact"] = {
+      {"statement", fmt::format("({}) is {} for 0 < {} < {}", reference_of(call, "expression"), claimed, var, text_of(high))},
+      {"in_variable", text_of(g->of_t.subs(g->t == v))},
+      {"roots_and_poles", [&] {
+         json all = json::array();
+         for (const positive_root& e : g->ends) all.push_back(g->text(e));
+         return all;
+       }()},
+      {"interval_end", fmt::format("{} = {} (exact)", g->in_square ? "c^2" : "c", c->str())}};
+  if (!inside && sign == want) {
+    result.outcome = verdict::holds;
+    return result;
+  }
+  result.outcome = verdict::erratum;
+  const std::string sign_text = sign > 0 ? "positive" : "negative";
+  result.correction = inside ? fmt::format("{} is {} for 0 < {} < {} only, and changes sign there", expression, sign_text, var, g->text(*inside))
+                             : fmt::format("{} is {} for 0 < {} < {}", expression, sign_text, var, text_of(high));
+  result.note = "As printed: (" + reference_of(call, "expression") + ") is said to be " + claimed + " for " + folded_space(condition.tex) + ".";
   return result;
 }
 
@@ -427,26 +599,39 @@ const std::map<std::string, proof_shape>& proof_shapes() {
          with_where({{"lhs", argument_kind::formula, true, "a formula"}, {"rhs", argument_kind::formula, true, "the formula it equals"}}),
          identity});
     add({"determinant", "det matrix = equals", "equals",
-         with_where({{"matrix", argument_kind::formula, true, "a square matrix"}, {"equals", argument_kind::formula, true, "its determinant"}}),
+         with_where({{"matrix", argument_kind::matrix, true, "a square matrix"}, {"equals", argument_kind::formula, true, "its determinant"}}),
          determinant});
     add({"symplectic", "matrix^T J matrix = J, J = [[0, I], [-I, 0]]", "matrix",
-         with_where({{"matrix", argument_kind::formula, true, "a one-step map of (q, p)"}}), symplectic});
+         with_where({{"matrix", argument_kind::matrix, true, "a one-step map of (q, p)"}}), symplectic});
     add({"conserved", "function(map y) = function(y), y the state", "function",
-         with_where({{"map", argument_kind::formula, true, "a one-step map"},
+         with_where({{"map", argument_kind::matrix, true, "a one-step map"},
                      {"function", argument_kind::formula, true, "a function of the state"},
-                     {"state", argument_kind::symbols, true, "the state's symbols, in the map's order"}}),
+                     {"state", argument_kind::symbols, true, "the state's symbols, in the map's order", 0, "map"}}),
          conserved});
     add({"euler-lagrange", "printed = 0 is D_2 L(q_{j-1}, q_j) + D_1 L(q_j, q_{j+1}) = 0, up to a factor free of the states", "printed",
          with_where({{"lagrangian", argument_kind::formula, true, "the discrete Lagrangian L(q_0, q_1)"},
-                     {"nodes", argument_kind::symbols, true, "its two arguments"},
-                     {"sequence", argument_kind::symbols, true, "three consecutive states"},
+                     {"nodes", argument_kind::symbols, true, "its two arguments", 2},
+                     {"sequence", argument_kind::symbols, true, "three consecutive states", 3},
                      {"printed", argument_kind::formula, true, "the printed equation's side that is 0"}}),
          euler_lagrange});
     add({"stability-interval", "the printed 0 < variable < c is the first band where the map (det 1) is power-bounded", "condition",
-         with_where({{"map", argument_kind::formula, true, "a 2 x 2 one-step map with det 1"},
-                     {"variable", argument_kind::formula, true, "the variable of the condition, a product of positive symbols"},
-                     {"condition", argument_kind::formula, true, "the printed condition 0 < variable < c"}}),
+         with_where({{"map", argument_kind::matrix, true, "a 2 x 2 one-step map with det 1", 2},
+                     {"variable", argument_kind::formula, true, "the variable of the condition, a product of positive symbols", 0, "", true},
+                     {"condition", argument_kind::condition, true, "the printed condition 0 < variable < c"}}),
          stability_interval});
+    add({"discrete-map", "map is the one-step map of the discrete Lagrangian (internal nodes eliminated), p_0 = -D_1 L, p_1 = D_2 L", "map",
+         with_where({{"map", argument_kind::matrix, true, "the printed one-step map of (q_0, p_0)", 2},
+                     {"lagrangian", argument_kind::formula, true, "the discrete Lagrangian L(q_0, q_1), quadratic"},
+                     {"nodes", argument_kind::symbols, true, "its end nodes q_0, q_1", 2},
+                     {"momenta", argument_kind::symbols, true, "the momenta p_0, p_1", 2},
+                     {"internal", argument_kind::symbols, false, "its internal nodes, eliminated by their equations"}}),
+         discrete_map});
+    add({"sign-on-interval", "expression has the stated sign on the printed interval 0 < variable < c", "expression",
+         with_where({{"expression", argument_kind::formula, true, "a function of the variable alone once scaled"},
+                     {"variable", argument_kind::formula, true, "the variable of the condition, a product of positive symbols", 0, "", true},
+                     {"condition", argument_kind::condition, true, "the printed interval 0 < variable < c"},
+                     {"sign", argument_kind::word, true, "positive or negative", 0, "", false, {"positive", "negative"}}}),
+         sign_on_interval});
     return all;
   }();
   return shapes;
@@ -454,14 +639,16 @@ const std::map<std::string, proof_shape>& proof_shapes() {
 
 void check_shape_arguments(const claim_record& record, const std::string& file) {
   const proof_shape& shape = proof_shapes().at(record.shape);
-  for (const auto& [name, argument] : record.with) {
+  for (const auto& entry : record.with) {
+    const std::string& name = entry.first;  // not a structured binding: clang's C++17 lambdas cannot capture one
+    const shape_argument& argument = entry.second;
     const auto it = std::find_if(shape.parameters.begin(), shape.parameters.end(), [&](const shape_parameter& p) { return p.name == name; });
     if (it == shape.parameters.end()) {
       std::string names;
       for (const shape_parameter& p : shape.parameters) names += (names.empty() ? "" : ", ") + p.name;
       throw claims_file_error(file, argument.line, "with." + name, "not an argument of the shape '" + shape.name + "' (" + names + ")");
     }
-    const bool list = it->kind != argument_kind::formula;
+    const bool list = it->kind == argument_kind::definitions || it->kind == argument_kind::symbols;
     if (argument.list != list) {
       throw claims_file_error(file, argument.line, "with." + name, list ? "must be an array of strings" : "must be one string (a formula reference)");
     }
@@ -476,8 +663,11 @@ void check_shape_arguments(const claim_record& record, const std::string& file) 
 
 std::string check_shape_formulas(const claim_record& record, const std::string& file, const paper_source& document, const claims_document* declared) {
   const std::map<std::string, tex_macro> macros = defined_macros(document.text);
-  std::set<std::string> names;
-  if (declared) names = declared_names(*declared);
+  std::set<std::string> names, positive;
+  if (declared) {
+    names = declared_names(*declared);
+    for (const std::string& tex : declared->positive) positive.insert(symbol_named(tex).get_name());
+  }
   const auto declared_only = [&](const ex& e, const std::string& field, int line) {
     if (!declared) return;
     for (const std::string& name : symbol_names(e)) {
@@ -486,36 +676,74 @@ std::string check_shape_formulas(const claim_record& record, const std::string& 
   };
   const proof_shape& shape = proof_shapes().at(record.shape);
   std::string principal;
+  std::vector<definition> definitions;
   const auto where = record.with.find("where");
-  if (where != record.with.end() && declared) {
+  if (where != record.with.end()) {
     for (const std::string& value : where->second.values) {
       try {
-        names.insert(read_definition(document, macros, value).name.get_name());
+        definitions.push_back(read_definition(document, macros, value));
       } catch (const std::invalid_argument& e) {
         throw claims_file_error(file, where->second.line, "with.where", e.what());
       }
+      names.insert(definitions.back().name.get_name());  // a defined symbol is declared by its definition
     }
   }
+  std::map<std::string, unsigned> rows;  // of each matrix argument
   for (const shape_parameter& p : shape.parameters) {
     const auto it = record.with.find(p.name);
     if (it == record.with.end()) continue;
     const std::string field = "with." + p.name;
-    for (const std::string& value : it->second.values) {
-      try {
-        switch (p.kind) {
-          case argument_kind::formula: {
-            const referenced_formula f = read_reference(document, macros, value);
-            declared_only(f.value, field, it->second.line);
-            if (p.name == shape.principal) principal = "$" + folded_space(f.tex) + "$ (" + f.locator + ")";
-            break;
+    const int line = it->second.line;
+    try {
+      switch (p.kind) {
+        case argument_kind::formula:
+        case argument_kind::matrix:
+        case argument_kind::condition: {
+          const referenced_formula f = read_reference(document, macros, it->second.values.front());
+          declared_only(f.value, field, line);
+          if (p.name == shape.principal) principal = "$" + folded_space(f.tex) + "$ (" + f.locator + ")";
+          if (p.kind == argument_kind::matrix) {
+            const ex m = with_definitions(f.value, definitions);
+            if (!GiNaC::is_a<GiNaC::matrix>(m) || GiNaC::ex_to<GiNaC::matrix>(m).rows() != GiNaC::ex_to<GiNaC::matrix>(m).cols()) {
+              throw claims_file_error(file, line, field, f.locator + " is not a square matrix");
+            }
+            rows[p.name] = GiNaC::ex_to<GiNaC::matrix>(m).rows();
+            if (p.size != 0 && rows[p.name] != p.size) {
+              throw claims_file_error(file, line, field, fmt::format("{} is {} x {}, not {} x {}", f.locator, rows[p.name], rows[p.name], p.size, p.size));
+            }
           }
-          case argument_kind::definitions: declared_only(read_definition(document, macros, value).value, field, it->second.line); break;
-          case argument_kind::symbols: declared_only(symbol_named(value), field, it->second.line); break;
+          if (p.kind == argument_kind::condition && f.sides.size() != 3) {
+            throw claims_file_error(file, line, field, f.locator + " is not a condition 'a < x < b' (it has " + std::to_string(f.sides.size()) + " sides)");
+          }
+          if (p.positive && declared) {
+            for (const std::string& name : symbol_names(f.value)) {
+              if (!positive.count(name)) throw claims_file_error(file, line, field, "the symbol '" + name + "' is not declared positive in [symbols]");
+            }
+          }
+          break;
         }
-      } catch (const std::invalid_argument& e) {
-        if (dynamic_cast<const claims_file_error*>(&e)) throw;
-        throw claims_file_error(file, it->second.line, field, e.what());
+        case argument_kind::definitions: break;  // read above
+        case argument_kind::word:
+          if (std::find(p.words.begin(), p.words.end(), it->second.values.front()) == p.words.end()) {
+            throw claims_file_error(file, line, field, "'" + it->second.values.front() + "' is not one of: " + fmt::format("{}", fmt::join(p.words, ", ")));
+          }
+          break;
+        case argument_kind::symbols: {
+          for (const std::string& value : it->second.values) declared_only(symbol_named(value), field, line);
+          if (p.size != 0 && it->second.values.size() != p.size) {
+            throw claims_file_error(file, line, field, fmt::format("{} symbols, not {}", it->second.values.size(), p.size));
+          }
+          if (!p.same_size_as.empty() && rows.count(p.same_size_as) && it->second.values.size() != rows[p.same_size_as]) {
+            throw claims_file_error(file, line, field, fmt::format("{} symbols for the {} rows of '{}'", it->second.values.size(),
+                                                                   rows[p.same_size_as], p.same_size_as));
+          }
+          break;
+        }
       }
+    } catch (const claims_file_error&) {
+      throw;
+    } catch (const std::invalid_argument& e) {
+      throw claims_file_error(file, line, field, e.what());
     }
   }
   return principal;

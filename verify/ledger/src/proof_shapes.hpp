@@ -17,15 +17,21 @@
 
 namespace simpson::verify::detail {
 
-/// What an argument holds: a formula reference ("phi#2", "inline:stable for", "$1$"), a list of
-/// definitions (references to displays "x = ..."), or a list of symbol names in TeX ('q_0', '\omega').
-enum class argument_kind { formula, definitions, symbols };
+/// What an argument holds: a formula reference ("phi#2", "inline:stable for", "$1$"); one that must
+/// be a square matrix once the definitions are put in; a printed condition "a < x < b" (three
+/// sides); a word of the record's own, one of a few (a sign: "positive"); a list of definitions
+/// (references to displays "x = ..."); or a list of symbol names in TeX ('q_0', '\omega').
+enum class argument_kind { formula, matrix, condition, word, definitions, symbols };
 
 struct shape_parameter {
   std::string name;
   argument_kind kind = argument_kind::formula;
   bool required = true;
-  std::string meaning;  // for docs and errors
+  std::string meaning;         // for docs and errors
+  unsigned size = 0;           // symbols: exactly so many; matrix: so many rows (0: any)
+  std::string same_size_as{};  // symbols: as many as the rows of this matrix argument
+  bool positive = false;       // formula: every symbol of it declared positive (with a [document])
+  std::vector<std::string> words{};  // word: the values it may take
 };
 
 /// One call: the claim's id and statement, its arguments, and the symbols its document declares
@@ -56,8 +62,9 @@ const std::map<std::string, proof_shape>& proof_shapes();
 void check_shape_arguments(const claim_record& record, const std::string& file);
 
 /// Every formula, definition and symbol a record's arguments name, read from `document`: throws
-/// claims_file_error naming the argument's line when one is missing, does not parse, or uses a
-/// symbol `declared` does not declare. Returns the TeX of the principal argument's formula, with
+/// claims_file_error naming the argument's line when one is missing, does not parse, uses a symbol
+/// `declared` does not declare, or is not of its parameter's kind and size (a matrix that is not
+/// square, a condition without three sides, a state of another size than its map). Returns the TeX of the principal argument's formula, with
 /// where it was read: "$...$ (label det, line 12)".
 std::string check_shape_formulas(const claim_record& record, const std::string& file, const paper_source& document,
                           const claims_document* declared);
