@@ -106,6 +106,10 @@ const std::string shape_document = R"(\newcommand{\om}{\omega}
 Stable for $0 < \om h < 2$. Also stable for $0 < \om h < 2 \sqrt{2}$. And for $0 < \om h < 1$.
 \begin{equation}\label{ldm} L_d = \frac{m}{h} \Big( (q_m - q_0)^2 + (q_1 - q_m)^2 \Big) \end{equation}
 \begin{equation}\label{free} F = \begin{pmatrix} 1 & \frac{h}{m} \\ 0 & 1 \end{pmatrix} \end{equation}
+\begin{equation}\label{sv} \frac{q_{j+1} - 2 q_j + q_{j-1}}{h^2} + \om^2 q_j = 0 \end{equation}
+\begin{equation}\label{trunc} \frac{\om^4 h^2}{12} q_j + {\rm O}(h^4) \end{equation}
+\begin{equation}\label{truncwrong} \frac{\om^4 h^2}{24} q_j + {\rm O}(h^4) \end{equation}
+\begin{equation}\label{truncshort} {\rm O}(h^4) \end{equation}
 Coefficient $1 - \frac{\om^2 h^2}{4}$ positive on $0 < \om h < 2$, but not on the wide $0 < \om h < 3$.
 )";
 
@@ -207,6 +211,18 @@ TEST_F(ShapesOnADocument, DiscreteMap) {
   const claim_result internal = run("discrete-map", "{ map = \"free\", lagrangian = \"ldm\", internal = ['q_m'], " + ends + " }");
   EXPECT_EQ(internal.outcome, verdict::holds) << internal.note << internal.evidence.dump();
   EXPECT_EQ(run("discrete-map", "{ map = \"free\", lagrangian = \"ldm\", " + ends + " }").outcome, verdict::fails);
+}
+
+TEST_F(ShapesOnADocument, Truncation) {
+  const std::string args = R"(scheme = "sv:lhs", sequence = ['q_{j-1}', 'q_j', 'q_{j+1}'], step = ['h'], frequency = '$\omega$')";
+  const claim_result holds = run("truncation", "{ printed = \"trunc\", " + args + " }");
+  EXPECT_EQ(holds.outcome, verdict::holds) << holds.note << holds.evidence.dump();
+  EXPECT_EQ(holds.evidence["exact"]["leading_power"], 2);
+  const claim_result wrong = run("truncation", "{ printed = \"truncwrong\", " + args + " }");
+  EXPECT_EQ(wrong.outcome, verdict::erratum);
+  EXPECT_EQ(wrong.correction, "as derived: (h^2*omega^4*q_j)/(12) + O(h^4)");
+  // An order claimed without its leading term: a check of the printed terms alone (none) would pass.
+  EXPECT_EQ(run("truncation", "{ printed = \"truncshort\", " + args + " }").outcome, verdict::erratum);
 }
 
 TEST_F(ShapesOnADocument, SignOnInterval) {

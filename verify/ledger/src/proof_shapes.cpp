@@ -350,6 +350,70 @@ claim_result discrete_map(const shape_call& call, const run_context& ctx) {
   return result;
 }
 
+/// A printed truncation error: the scheme (an expression in three consecutive states, = 0) on the
+/// exact solution of q'' = −ω² q through the middle state, q(t_j ± h) = q_j cos ωh ± (v_j/ω) sin ωh,
+/// as GiNaC's series in h, against the printed terms and order O(h^N).
+claim_result truncation(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const ex printed = read.formula("printed");
+  const ex scheme = read.formula("scheme");
+  const ex omega = read.formula("frequency");
+  const std::vector<GiNaC::symbol> sequence = read.symbols("sequence"), step = read.symbols("step");
+  const GiNaC::symbol& h = step.front();
+  claim_result result;
+  result.printed = read.printed();
+  result.certificate_missing = "a series in h to an order: no Coq statement for this shape yet";
+  // The printed terms and its order term O(h^N).
+  ex terms = 0;
+  int order = 0;
+  const ex expanded = GiNaC::expand(printed);
+  for (std::size_t k = 0; k < (GiNaC::is_a<GiNaC::add>(expanded) ? expanded.nops() : 1); ++k) {
+    const ex term = GiNaC::is_a<GiNaC::add>(expanded) ? expanded.op(k) : expanded;
+    if (GiNaC::is_a<GiNaC::function>(term) && GiNaC::ex_to<GiNaC::function>(term).get_name() == "Order") {
+      order = term.op(0).degree(h);
+    } else {
+      terms += term;
+    }
+  }
+  if (order <= 0) throw std::invalid_argument(reference_of(call, "printed") + " has no order term O(" + h.get_name() + "^k)");
+  // cos ωh and sin ωh as Taylor polynomials through h^(order + 2): the scheme divides by h² at most.
+  const GiNaC::symbol velocity("v_j");
+  ex c = 0, sn = 0, term = 1;
+  for (int k = 0; k <= order + 2; ++k) {
+    if (k > 0) term = term * omega * h / k;
+    if (k % 2 == 0) c += (k % 4 == 0 ? 1 : -1) * term;
+    else sn += (k % 4 == 1 ? 1 : -1) * term;
+  }
+  const ex shift = velocity / omega * sn;
+  const ex on_solution = scheme.subs(GiNaC::lst{sequence[0] == sequence[1] * c - shift, sequence[2] == sequence[1] * c + shift});
+  const ex series = GiNaC::expand(GiNaC::series_to_poly(GiNaC::series(on_solution, h == 0, order)));
+  const ex gap = GiNaC::normal(series - terms);
+  const std::string what = fmt::format("({}) on the exact solution = ({}) + O({}^{})", reference_of(call, "scheme"), reference_of(call, "printed"),
+                                       h.get_name(), order);
+  // The first nonzero power of the series: the scheme's order.
+  int lowest = -1;
+  for (int k = series.ldegree(h); k <= series.degree(h); ++k) {
+    if (!GiNaC::normal(series.coeff(h, k)).is_zero()) {
+      lowest = k;
+      break;
+    }
+  }
+  result.evidence["exact"] = {{"statement", what},
+                              {"series", text_of(series) + " + O(" + h.get_name() + "^" + std::to_string(order) + ")"},
+                              {"leading_power", lowest},
+                              {"ginac", gap.is_zero() ? "holds: series − printed terms = 0 through the printed order"
+                                                      : "fails: series − printed terms = " + text_of(gap)},
+                              {"own", "not applicable: a series (GiNaC's alone)"}};
+  if (gap.is_zero()) {
+    result.outcome = verdict::holds;
+    return result;
+  }
+  result.outcome = verdict::erratum;
+  result.correction = "as derived: " + text_of(series) + " + O(" + h.get_name() + "^" + std::to_string(order) + ")";
+  result.note = "As printed: " + what + " is false; the series differs by " + text_of(gap) + ".";
+  return result;
+}
+
 /// GiNaC's polynomial in t (rational coefficients) as our kernel's.
 polynomial as_polynomial(const ex& p, const GiNaC::symbol& t) {
   const ex expanded = GiNaC::expand(p);
@@ -626,6 +690,13 @@ const std::map<std::string, proof_shape>& proof_shapes() {
                      {"momenta", argument_kind::symbols, true, "the momenta p_0, p_1", 2},
                      {"internal", argument_kind::symbols, false, "its internal nodes, eliminated by their equations"}}),
          discrete_map});
+    add({"truncation", "the scheme on the exact solution of q'' = -omega^2 q is the printed series, to its printed order", "printed",
+         with_where({{"printed", argument_kind::formula, true, "the printed truncation error, with its order term O(h^N)"},
+                     {"scheme", argument_kind::formula, true, "the scheme's expression (= 0) in three consecutive states"},
+                     {"sequence", argument_kind::symbols, true, "the three states q_{j-1}, q_j, q_{j+1}", 3},
+                     {"step", argument_kind::symbols, true, "the step h", 1},
+                     {"frequency", argument_kind::formula, true, "omega of q'' = -omega^2 q"}}),
+         truncation});
     add({"sign-on-interval", "expression has the stated sign on the printed interval 0 < variable < c", "expression",
          with_where({{"expression", argument_kind::formula, true, "a function of the variable alone once scaled"},
                      {"variable", argument_kind::formula, true, "the variable of the condition, a product of positive symbols", 0, "", true},
