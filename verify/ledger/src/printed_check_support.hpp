@@ -17,6 +17,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace simpson::verify::detail {
@@ -127,6 +128,9 @@ std::optional<GiNaC::ex> equation_factor(const GiNaC::ex& e1, const GiNaC::ex& e
 
 /// Merges two outcomes of the same claim: holds when both hold; texts joined.
 printed_outcome both(const printed_outcome& a, const printed_outcome& b);
+
+/// The polynomial part of e (its Order terms dropped) and the order k of its O(h^k), 0 when none.
+std::pair<GiNaC::ex, int> split_order(const GiNaC::ex& e, const GiNaC::ex& h);
 
 /// T_h(q_j) of the derived scheme, normalised as `normalised_like` (a scheme whose q_{j+1}
 /// coefficient fixes the scale, the core's (schema-ordre-3)), on the exact solution, to O(h^order).

@@ -134,21 +134,6 @@ printed_outcome scheme_order_3(const paper_reading& r) {
                        three_term_residual(parameters(d), d.q_prev, d.q_j, d.q_next), {d.q_prev, d.q_j, d.q_next});
 }
 
-/// The polynomial part of e (its Order terms dropped) and the order k of its O(h^k), 0 when none.
-std::pair<ex, int> split_order(const ex& e, const ex& h) {
-  const ex expanded = GiNaC::expand(e);
-  ex terms = 0;
-  int order = 0;
-  for (std::size_t k = 0; k < (GiNaC::is_a<GiNaC::add>(expanded) ? expanded.nops() : 1); ++k) {
-    const ex term = GiNaC::is_a<GiNaC::add>(expanded) ? expanded.op(k) : expanded;
-    if (GiNaC::is_a<GiNaC::function>(term) && GiNaC::ex_to<GiNaC::function>(term).get_name() == "Order") {
-      order = term.op(0).degree(h);
-    } else {
-      terms += term;
-    }
-  }
-  return {terms, order};
-}
 
 /// q(t_j ± h) by GiNaC's series of an uninterpreted q, to O(h^order), the k-th derivative at t_j
 /// named as the reader names d^kq/dt^k and q(t_j) as q_j.
@@ -264,6 +249,22 @@ printed_outcome truncation(const paper_reading& r) {
 }
 
 }  // namespace
+
+/// The polynomial part of e (its Order terms dropped) and the order k of its O(h^k), 0 when none.
+std::pair<GiNaC::ex, int> split_order(const GiNaC::ex& e, const GiNaC::ex& h) {
+  const ex expanded = GiNaC::expand(e);
+  ex terms = 0;
+  int order = 0;
+  for (std::size_t k = 0; k < (GiNaC::is_a<GiNaC::add>(expanded) ? expanded.nops() : 1); ++k) {
+    const ex term = GiNaC::is_a<GiNaC::add>(expanded) ? expanded.op(k) : expanded;
+    if (GiNaC::is_a<GiNaC::function>(term) && GiNaC::ex_to<GiNaC::function>(term).get_name() == "Order") {
+      order = term.op(0).degree(h);
+    } else {
+      terms += term;
+    }
+  }
+  return {terms, order};
+}
 
 GiNaC::ex normalised_scheme(const symbolic_derivation& d, const GiNaC::ex& normalised_like) {
   const ex derived = d.scheme(d.q_prev, d.q_j, d.q_next);

@@ -364,17 +364,7 @@ claim_result truncation(const shape_call& call, const run_context& ctx) {
   result.printed = read.printed();
   result.certificate_missing = "a series in h to an order: no Coq statement for this shape yet";
   // The printed terms and its order term O(h^N).
-  ex terms = 0;
-  int order = 0;
-  const ex expanded = GiNaC::expand(printed);
-  for (std::size_t k = 0; k < (GiNaC::is_a<GiNaC::add>(expanded) ? expanded.nops() : 1); ++k) {
-    const ex term = GiNaC::is_a<GiNaC::add>(expanded) ? expanded.op(k) : expanded;
-    if (GiNaC::is_a<GiNaC::function>(term) && GiNaC::ex_to<GiNaC::function>(term).get_name() == "Order") {
-      order = term.op(0).degree(h);
-    } else {
-      terms += term;
-    }
-  }
+  const auto [terms, order] = split_order(printed, h);
   if (order <= 0) throw std::invalid_argument(reference_of(call, "printed") + " has no order term O(" + h.get_name() + "^k)");
   // cos ωh and sin ωh as Taylor polynomials through h^(order + 2): the scheme divides by h² at most.
   const GiNaC::symbol velocity("v_j");
