@@ -249,11 +249,17 @@ int main(int argc, char** argv) {
     if (want_precisions) return list_precisions();
     s = load_scene(scene_name);
     if (!paper_file.empty()) s.paper_file = paper_file;
+    if (const claims_document* document = installed_document()) {
+      // A document's claims file: its claims alone, in a scene named after the file (its report in
+      // reports/out/<name>); none of the paper's sections unless --sections asks for them.
+      s.name = std::filesystem::path(claims_file).stem().string();
+      s.description = fmt::format("The claims of {} on “{}” ({}): formulas read from its LaTeX, decided by proof shapes.", claims_file,
+                                  document->title, paper_file.empty() ? std::string("no --paper") : paper_file);
+      s.experiments = experiment_settings{};
+    }
     paper = read_scene_paper(s);  // a paper that is missing or does not parse is bad input: nothing runs
     scene_selection selection;
     if (app.count("--claims") > 0) selection.claims = claim_ids;
-    // A document's claims file: its claims, and none of the paper's sections unless asked for.
-    if (installed_document() && app.count("--claims") == 0) selection.claims = std::vector<std::string>{"all"};
     if (app.count("--sections") > 0) selection.sections = section_list;
     apply_selection(s, selection);
     if (!paper_file.empty()) s.overrides["paper"] = paper_file;
