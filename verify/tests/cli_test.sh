@@ -259,7 +259,7 @@ grep -q "phi3-det: verdict holds, expected erratum" "$work/err" || fail "claims 
 # errors are errata with corrections (exit 0: as the file expects); --validate judges them failures.
 note_dir="$(dirname "$0")/notes"
 check "a note from its claims file" 0 --paper "$note_dir/trapezoidal-note.tex" --claims-file "$note_dir/trapezoidal-note.toml" --out "$work/note"
-grep -q '^9 claims: 5 held, 4 errata, 0 failed' "$work/out" || fail "a note: summary: $(cat "$work/out")"
+grep -q '^10 claims: 6 held, 4 errata, 0 failed' "$work/out" || fail "a note: summary: $(cat "$work/out")"
 grep -q '"correction": "stable exactly for 0 < h\*omega < 2"' "$work/note/report.json" || fail "a note: the stability correction is not in the report"
 ls "$work/note"/*.csv >/dev/null 2>&1 && fail "a note: a section of the paper's experiments ran"
 check "a note, validated" 1 --validate --paper "$note_dir/trapezoidal-note.tex" --claims-file "$note_dir/trapezoidal-note.toml" --out "$work/note-validated"

@@ -110,6 +110,7 @@ Stable for $0 < \om h < 2$. Also stable for $0 < \om h < 2 \sqrt{2}$. And for $0
 \begin{equation}\label{trunc} \frac{\om^4 h^2}{12} q_j + {\rm O}(h^4) \end{equation}
 \begin{equation}\label{truncwrong} \frac{\om^4 h^2}{24} q_j + {\rm O}(h^4) \end{equation}
 \begin{equation}\label{truncshort} {\rm O}(h^4) \end{equation}
+This scheme is of fourth order. The same scheme is of second order.
 Coefficient $1 - \frac{\om^2 h^2}{4}$ positive on $0 < \om h < 2$, but not on the wide $0 < \om h < 3$.
 )";
 
@@ -223,6 +224,20 @@ TEST_F(ShapesOnADocument, Truncation) {
   EXPECT_EQ(wrong.correction, "as derived: (h^2*omega^4*q_j)/(12) + O(h^4)");
   // An order claimed without its leading term: a check of the printed terms alone (none) would pass.
   EXPECT_EQ(run("truncation", "{ printed = \"truncshort\", " + args + " }").outcome, verdict::erratum);
+}
+
+TEST_F(ShapesOnADocument, StatedOrder) {
+  const std::string args = R"(scheme = "sv:lhs", sequence = ['q_{j-1}', 'q_j', 'q_{j+1}'], step = ['h'], frequency = '$\omega$')";
+  const claim_result holds = run("stated-order", "{ sentence = 'The same scheme is of {order} order', " + args + " }");
+  EXPECT_EQ(holds.outcome, verdict::holds) << holds.note << holds.evidence.dump();
+  ASSERT_FALSE(holds.quoted.empty());
+  EXPECT_EQ(holds.quoted[0]["words"]["order"], "second");
+  // "fourth": the words parse, and only the computed order refutes them.
+  const claim_result wrong = run("stated-order", "{ sentence = 'This scheme is of {order} order', " + args + " }");
+  EXPECT_EQ(wrong.outcome, verdict::erratum);
+  EXPECT_EQ(wrong.correction, "the scheme is of order 2");
+  EXPECT_EQ(run("stated-order", "{ sentence = 'A sentence the document does not have, of {order} order', " + args + " }").outcome,
+            verdict::text_changed);
 }
 
 TEST_F(ShapesOnADocument, SignOnInterval) {

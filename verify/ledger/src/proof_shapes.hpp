@@ -31,7 +31,7 @@ struct shape_parameter {
   unsigned size = 0;           // symbols: exactly so many; matrix: so many rows (0: any)
   std::string same_size_as{};  // symbols: as many as the rows of this matrix argument
   bool positive = false;       // formula: every symbol of it declared positive (with a [document])
-  std::vector<std::string> words{};  // word: the values it may take
+  std::vector<std::string> words{};  // word: the values it may take (none: any text, such as a sentence's pattern)
 };
 
 /// One call: the claim's id and statement, its arguments, and the symbols its document declares
