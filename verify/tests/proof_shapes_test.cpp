@@ -48,6 +48,24 @@ x = \frac{\om}{2} \label{end}
 It is stable for $0 < \om h < 2$.
 )";
 
+// An align environment: each labelled row is a formula of its own, its '&' dropped; a matrix's
+// rows inside it are not the environment's.
+TEST(FormulaReference, ARowOfAnAlignEnvironment) {
+  const paper_source d = document(R"(\begin{align}
+x &= a + 1 \label{ax} \\
+y &= \begin{pmatrix} a \\ b \end{pmatrix} \label{ay} \\
+z &= 3 \nonumber
+\end{align})");
+  const auto macros = defined_macros(d.text);
+  const GiNaC::ex a = paper_symbols()["a"], b = paper_symbols()["b"];
+  EXPECT_TRUE((read_reference(d, macros, "ax").value - (a + 1)).is_zero());
+  EXPECT_TRUE((read_reference(d, macros, "ax:lhs").value - paper_symbols()["x"]).is_zero());
+  const referenced_formula y = read_reference(d, macros, "ay");
+  ASSERT_TRUE(GiNaC::is_a<GiNaC::matrix>(y.value));
+  EXPECT_EQ(GiNaC::ex_to<GiNaC::matrix>(y.value).rows(), 2u);
+  EXPECT_EQ(y.line, 3);
+}
+
 TEST(FormulaReference, ByLabelEquationSideInlineAndLiteral) {
   const paper_source d = document(note);
   const auto macros = defined_macros(d.text);

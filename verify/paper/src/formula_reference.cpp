@@ -11,8 +11,28 @@
 namespace simpson::verify {
 namespace {
 
+/// The rows of a multi-line environment's body, split at its top-level "\\" (not those of a
+/// matrix inside it): [begin, end) of each in `body`.
+std::vector<std::pair<std::size_t, std::size_t>> environment_rows(const std::string& body) {
+  std::vector<std::pair<std::size_t, std::size_t>> rows;
+  std::size_t from = 0;
+  int depth = 0;
+  for (std::size_t k = 0; k < body.size(); ++k) {
+    if (body.compare(k, 7, "\\begin{") == 0) ++depth;
+    if (body.compare(k, 5, "\\end{") == 0) --depth;
+    if (depth == 0 && body.compare(k, 2, "\\\\") == 0) {
+      rows.emplace_back(from, k);
+      from = k + 2;
+      ++k;
+    }
+  }
+  rows.emplace_back(from, body.size());
+  return rows;
+}
+
 /// The display that holds \label{label}, wherever in it the label is: from its start
-/// (\begin{equation}, equation*, \[ or \moneq) to its end, the label taken out.
+/// (\begin{equation}, equation*, \[ or \moneq) to its end, the label taken out; in an align or
+/// gather environment, the row that holds the label, its alignment marks dropped.
 tex_display labelled_display(const paper_source& document, const std::string& label) {
   const std::string key = "\\label{" + label + "}";
   const std::size_t at = document.text.find(key);
@@ -20,27 +40,45 @@ tex_display labelled_display(const paper_source& document, const std::string& la
   if (document.text.find(key, at + key.size()) != std::string::npos) {
     throw std::invalid_argument("\\label{" + label + "} is in '" + document.origin + "' twice");
   }
+  static const std::vector<std::string> starts{"\\begin{equation*}", "\\begin{equation}", "\\[", "\\moneqstar", "\\moneq",
+                                               "\\begin{align*}", "\\begin{align}", "\\begin{gather*}", "\\begin{gather}"};
+  static const std::vector<std::string> ends{"\\end{equation", "\\]", "\\monend", "\\end{align", "\\end{gather"};
   std::size_t start = std::string::npos, start_length = 0;
-  for (const char* s : {"\\begin{equation*}", "\\begin{equation}", "\\[", "\\moneqstar", "\\moneq"}) {
+  bool rows = false;
+  for (const std::string& s : starts) {
     const std::size_t found = document.text.rfind(s, at);
     if (found != std::string::npos && (start == std::string::npos || found > start)) {
       start = found;
-      start_length = std::string(s).size();
+      start_length = s.size();
+      rows = s.find("align") != std::string::npos || s.find("gather") != std::string::npos;
     }
   }
   std::size_t end = std::string::npos;
-  for (const char* e : {"\\end{equation", "\\]", "\\monend"}) end = std::min(end, document.text.find(e, at));
+  for (const std::string& e : ends) end = std::min(end, document.text.find(e, at));
   std::size_t closed_before = std::string::npos;  // a display that ends between the start found and the label
   if (start != std::string::npos) {
-    for (const char* e : {"\\end{equation", "\\]", "\\monend"}) closed_before = std::min(closed_before, document.text.find(e, start));
+    for (const std::string& e : ends) closed_before = std::min(closed_before, document.text.find(e, start));
   }
   if (start == std::string::npos || end == std::string::npos || closed_before < at) {
     throw std::invalid_argument("\\label{" + label + "} in '" + document.origin + "' is not inside an equation display");
   }
-  std::string tex = document.text.substr(start + start_length, end - start - start_length);
-  tex.replace(at - start - start_length, key.size(), std::string(key.size(), ' '));
+  const std::size_t body_from = start + start_length;
+  std::string tex = document.text.substr(body_from, end - body_from);
+  tex.replace(at - body_from, key.size(), std::string(key.size(), ' '));
+  std::size_t first = body_from;
+  if (rows) {
+    for (const auto& [from, to] : environment_rows(tex)) {
+      if (at - body_from < from || at - body_from >= to) continue;
+      first = body_from + from;
+      tex = tex.substr(from, to - from);
+      break;
+    }
+    std::replace(tex.begin(), tex.end(), '&', ' ');
+  }
+  for (const std::string tag : {"\\nonumber", "\\notag"}) {
+    for (std::size_t k = tex.find(tag); k != std::string::npos; k = tex.find(tag, k)) tex.replace(k, tag.size(), std::string(tag.size(), ' '));
+  }
   std::replace(tex.begin(), tex.end(), '\n', ' ');
-  std::size_t first = start + start_length;
   while (first < end && std::isspace(static_cast<unsigned char>(document.text[first])) != 0) ++first;
   return {"label " + label, line_at(document.text, first), tex};
 }
