@@ -1,0 +1,87 @@
+#pragma once
+// What the proof shapes share (proof_shapes.hpp): reading a call's formulas from the run's
+// document with its definitions put in and its symbols checked against the declared ones, the
+// verdict on an identity in both kernels with its Coq certificate, and each shape's function, by
+// family: identities (shapes_identities.cpp), derivations (shapes_derivation.cpp), series
+// (shapes_series.cpp), intervals (shapes_intervals.cpp).
+
+#include "proof_shapes.hpp"
+
+#include <simpson/verify/formula_reference.hpp>
+
+#include <ginac/ginac.h>
+
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace simpson::verify::detail {
+
+/// The symbol a TeX name parses to ('q_0', '\omega', 'q_{j+1}'); throws std::invalid_argument.
+GiNaC::symbol symbol_named(const std::string& tex);
+
+/// The GiNaC names of the symbols a document declares.
+std::set<std::string> declared_names(const claims_document& d);
+
+/// Reads the formulas of one call from the run's document, with the call's definitions put in, and
+/// keeps what it read for the report.
+class shape_reader {
+ public:
+  shape_reader(const shape_call& call, const paper_source& document);
+
+  bool has(const std::string& parameter) const { return call_.with.count(parameter) > 0; }
+
+  /// The formula the argument names, definitions put in.
+  GiNaC::ex formula(const std::string& parameter);
+
+  /// The formula as read, no definition put in.
+  referenced_formula raw(const std::string& parameter);
+
+  std::vector<GiNaC::symbol> symbols(const std::string& parameter) const;
+
+  /// What was read, the principal formula first (each shape reads it first), the definitions last.
+  json printed() const;
+
+ private:
+  void declared_only(const GiNaC::ex& e, const std::string& where) const;
+  void record(const std::string& reference, const std::string& locator, int line, const std::string& tex, const std::optional<GiNaC::ex>& value);
+
+  const shape_call& call_;
+  const paper_source& document_;
+  std::map<std::string, tex_macro> macros_;
+  std::set<std::string> declared_;
+  std::vector<definition> definitions_;
+  json read_ = json::array();
+  json definitions_read_ = json::array();
+};
+
+/// The run's document; throws std::invalid_argument when the run has none.
+const paper_source& document_of(const run_context& ctx);
+
+/// The verdict on an identity lhs = rhs, decided by GiNaC's normal form and by our kernel's grid:
+/// holds when both find it zero, `when_false` (erratum, with `correction`) when both find it not,
+/// kernels-disagree otherwise; our kernel not applicable leaves GiNaC's verdict, and says so.
+claim_result identity_verdict(const shape_call& call, shape_reader& read, const std::string& what, const GiNaC::ex& lhs,
+                              const GiNaC::ex& rhs, const std::string& correction, verdict when_false = verdict::erratum);
+
+/// e as a square matrix; throws std::invalid_argument naming `what` when it is not one.
+GiNaC::matrix as_square_matrix(const GiNaC::ex& e, const std::string& what);
+
+/// The reference an argument gives.
+std::string reference_of(const shape_call& call, const std::string& parameter);
+
+// The shapes.
+claim_result identity_shape(const shape_call& call, const run_context& ctx);
+claim_result determinant_shape(const shape_call& call, const run_context& ctx);
+claim_result symplectic_shape(const shape_call& call, const run_context& ctx);
+claim_result conserved_shape(const shape_call& call, const run_context& ctx);
+claim_result euler_lagrange_shape(const shape_call& call, const run_context& ctx);
+claim_result discrete_map_shape(const shape_call& call, const run_context& ctx);
+claim_result truncation_shape(const shape_call& call, const run_context& ctx);
+claim_result stated_order_shape(const shape_call& call, const run_context& ctx);
+claim_result stability_interval_shape(const shape_call& call, const run_context& ctx);
+claim_result sign_on_interval_shape(const shape_call& call, const run_context& ctx);
+
+}  // namespace simpson::verify::detail

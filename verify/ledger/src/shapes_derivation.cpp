@@ -1,0 +1,126 @@
+// The derivation shapes (shape_support.hpp): the discrete Euler-Lagrange equation, and the one-step map of a
+// discrete Lagrangian with its internal nodes eliminated.
+
+#include "shape_support.hpp"
+
+#include "printed_check_support.hpp"
+
+#include <fmt/format.h>
+
+#include <set>
+
+namespace simpson::verify::detail {
+
+using GiNaC::ex;
+
+claim_result euler_lagrange_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const ex printed = read.formula("printed"), lagrangian = read.formula("lagrangian");
+  const std::vector<GiNaC::symbol> nodes = read.symbols("nodes"), sequence = read.symbols("sequence");
+  if (nodes.size() != 2) throw std::invalid_argument("'nodes' names the Lagrangian's two arguments (q_0, q_1)");
+  if (sequence.size() != 3) throw std::invalid_argument("'sequence' names three consecutive states (q_{j-1}, q_j, q_{j+1})");
+  const auto at = [&](const ex& e, const ex& a, const ex& b) { return e.subs(GiNaC::lst{nodes[0] == a, nodes[1] == b}); };
+  // D_2 L(q_{j-1}, q_j) + D_1 L(q_j, q_{j+1}) = 0.
+  const ex derived = at(lagrangian.diff(nodes[1]), sequence[0], sequence[1]) + at(lagrangian.diff(nodes[0]), sequence[1], sequence[2]);
+  const std::vector<ex> unknowns(sequence.begin(), sequence.end());
+  const auto factor = equation_factor(printed, derived, unknowns);
+  const std::string what = fmt::format("({}) = 0 is the discrete Euler-Lagrange equation of ({})", reference_of(call, "printed"),
+                                       reference_of(call, "lagrangian"));
+  if (factor) {
+    // The printed equation times the factor GiNaC found is the derived one: an identity both kernels decide.
+    claim_result result = identity_verdict(call, read, what, *factor * printed, derived, "");
+    result.evidence["exact"]["factor"] = text_of(*factor);
+    return result;
+  }
+  claim_result result;
+  result.outcome = verdict::erratum;
+  result.correction = "as derived: " + text_of(GiNaC::normal(derived)) + " = 0";
+  result.note = "As printed: no factor free of the states makes the printed equation the derived one (GiNaC: the ratio depends on them); our kernel decides identities only, not this refutation.";
+  result.evidence["exact"] = {{"statement", what}, {"ginac", "fails: derived / printed depends on the states"},
+                              {"own", "not applicable: a refutation of proportionality"}};
+  result.printed = read.printed();
+  result.certificate_missing = "a refuted proportionality: no identity to state";
+  return result;
+}
+
+/// The one-step map of a discrete Lagrangian L(q_0, q_1) of a linear system, derived: each internal
+/// node eliminated by its equation D_{q_m} L = 0, then p_0 = −D_1 L solved for q_1 and p_1 = D_2 L,
+/// as a matrix in (q_0, p_0); compared with the printed map in both kernels.
+claim_result discrete_map_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const GiNaC::matrix printed = as_square_matrix(read.formula("map"), reference_of(call, "map"));
+  const ex lagrangian = read.formula("lagrangian");
+  const std::vector<GiNaC::symbol> nodes = read.symbols("nodes"), momenta = read.symbols("momenta");
+  const std::vector<GiNaC::symbol> internal = read.has("internal") ? read.symbols("internal") : std::vector<GiNaC::symbol>{};
+  const auto no_map = [&](const std::string& why) {
+    claim_result result;
+    result.outcome = verdict::fails;
+    result.note = why;
+    result.printed = read.printed();
+    result.certificate_missing = "no map derived";
+    return result;
+  };
+  const auto not_linear = [&](const std::string& step) {
+    return no_map("The shape derives the map of a linear system: " + step + " is not linear in its unknowns.");
+  };
+  ex reduced = lagrangian;
+  if (!internal.empty()) {
+    GiNaC::lst equations, unknowns;
+    for (const GiNaC::symbol& q : internal) {
+      equations.append(lagrangian.diff(q) == 0);
+      unknowns.append(q);
+    }
+    ex solution;
+    try {
+      solution = GiNaC::lsolve(equations, unknowns);
+    } catch (const std::exception&) {
+      return not_linear("the internal nodes' equations");
+    }
+    if (solution.nops() != internal.size()) return not_linear("the internal nodes' equations");
+    reduced = lagrangian.subs(solution);
+  }
+  // p_0 = −D_1 L(q_0, q_1), solved for q_1; then p_1 = D_2 L.
+  ex q1;
+  try {
+    // GiNaC's lsolve of one equation in one symbol returns the value itself; of lists, a list of
+    // relations, empty when there is no unique solution.
+    const ex solved = GiNaC::lsolve(GiNaC::lst{momenta[0] == -reduced.diff(nodes[0])}, GiNaC::lst{nodes[1]});
+    if (solved.nops() != 1 || !GiNaC::is_a<GiNaC::relational>(solved.op(0))) return not_linear("p_0 = -D_1 L");
+    q1 = GiNaC::normal(solved.op(0).rhs());
+  } catch (const std::exception& e) {
+    return not_linear(std::string("p_0 = -D_1 L (") + e.what() + ")");
+  }
+  const ex p1 = GiNaC::normal(reduced.diff(nodes[1]).subs(nodes[1] == q1));
+  GiNaC::matrix derived(2, 2);
+  const ex state[2] = {nodes[0], momenta[0]};
+  for (unsigned c = 0; c < 2; ++c) {
+    derived(0, c) = GiNaC::normal(q1.diff(GiNaC::ex_to<GiNaC::symbol>(state[c])));
+    derived(1, c) = GiNaC::normal(p1.diff(GiNaC::ex_to<GiNaC::symbol>(state[c])));
+  }
+  // Linear: nothing of the state is left in the matrix; and no other symbol the document declares
+  // real (a node left free: an internal node not named in `internal`).
+  std::set<std::string> real;
+  if (call.document) {
+    for (const std::string& tex : call.document->real) real.insert(symbol_named(tex).get_name());
+  }
+  for (unsigned r = 0; r < 2; ++r) {
+    for (unsigned c = 0; c < 2; ++c) {
+      if (derived(r, c).has(nodes[0]) || derived(r, c).has(momenta[0])) return not_linear("the map");
+      for (const std::string& name : symbol_names(derived(r, c))) {
+        if (real.count(name)) {
+          return no_map("The derived map depends on " + name +
+                        ", which the document declares real (a state, not a parameter): an internal node left free? Name it in 'internal'.");
+        }
+      }
+    }
+  }
+  const std::string what = fmt::format("({}) is the one-step map of ({})", reference_of(call, "map"), reference_of(call, "lagrangian"));
+  claim_result result = identity_verdict(call, read, what, ex(printed), ex(derived),
+                                         fmt::format("as derived from ({}): ({}) = {}", reference_of(call, "lagrangian"), reference_of(call, "map"),
+                                                     text_of(ex(derived))));
+  result.evidence["exact"]["derivation"] = {{"q_1", text_of(q1)}, {"p_1", text_of(p1)},
+                                            {"internal_nodes", internal.empty() ? std::string("none") : std::to_string(internal.size()) + " eliminated"}};
+  return result;
+}
+
+}  // namespace simpson::verify::detail

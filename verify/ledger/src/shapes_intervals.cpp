@@ -1,0 +1,256 @@
+// The interval shapes (shape_support.hpp): a map's first stability band, and a sign on a printed interval,
+// decided by our kernel's Sturm sequences with the printed end compared exactly.
+
+#include "shape_support.hpp"
+
+#include "printed_check_support.hpp"
+
+#include <simpson/verify/stability_analysis.hpp>
+#include <simpson/verify/tex_math.hpp>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <optional>
+#include <sstream>
+
+namespace simpson::verify::detail {
+
+using GiNaC::ex;
+
+namespace {
+
+/// GiNaC's polynomial in t (rational coefficients) as our kernel's.
+polynomial as_polynomial(const ex& p, const GiNaC::symbol& t) {
+  const ex expanded = GiNaC::expand(p);
+  std::vector<rational> c;
+  for (int k = 0; k <= expanded.degree(t); ++k) {
+    const ex coefficient = expanded.coeff(t, k);
+    if (!GiNaC::is_a<GiNaC::numeric>(coefficient) || !GiNaC::ex_to<GiNaC::numeric>(coefficient).is_rational()) {
+      throw std::invalid_argument("a coefficient that is not a rational number: " + text_of(coefficient));
+    }
+    std::ostringstream num, den;
+    num << GiNaC::ex_to<GiNaC::numeric>(coefficient).numer();
+    den << GiNaC::ex_to<GiNaC::numeric>(coefficient).denom();
+    c.emplace_back(boost::multiprecision::cpp_int(num.str()), boost::multiprecision::cpp_int(den.str()));
+  }
+  return make_polynomial(c);
+}
+
+bool even(const polynomial& p) {
+  for (long k = 1; k <= degree(p); k += 2) {
+    if (p[static_cast<std::size_t>(k)] != 0) return false;
+  }
+  return true;
+}
+
+/// A function of the condition's variable v alone, for our kernel: every symbol of v but one
+/// eliminated by v's scaling (s = t / (v / s) for a symbol s of v with exponent 1), its numerator
+/// and denominator as polynomials in t = v, or in x = v² when both are even (roots exact more often).
+struct one_variable {
+  GiNaC::symbol t{"interval_variable"};
+  ex of_t;  // normal form in t
+  polynomial numerator, denominator;
+  bool in_square = false;
+  std::vector<positive_root> ends;  // positive roots of both, increasing
+
+  int sign_at(const rational& x) const {
+    const rational value = numerator.evaluate(x) / denominator.evaluate(x);
+    return value < 0 ? -1 : value > 0 ? 1 : 0;
+  }
+  std::string text(const positive_root& r) const { return in_square ? omega_h_text(r) : root_text(r); }
+  /// The printed end c as our kernel's rational (c, or c² in x), when it is one.
+  std::optional<rational> exact(const ex& c) const {
+    const ex value = GiNaC::expand(in_square ? c * c : c);
+    if (!GiNaC::is_a<GiNaC::numeric>(value) || !GiNaC::ex_to<GiNaC::numeric>(value).is_rational()) return std::nullopt;
+    const polynomial p = as_polynomial(value, t);
+    return degree(p) < 0 ? rational(0) : p[0];
+  }
+};
+
+/// `f` as a function of v alone, or nothing when it is not one.
+std::optional<one_variable> in_variable(const ex& f, const ex& v) {
+  one_variable out;
+  std::optional<ex> of_t;
+  for (const std::string& name : symbol_names(v)) {
+    const GiNaC::symbol s = paper_symbols()[name];
+    if (v.degree(s) != 1 || v.ldegree(s) != 1 || GiNaC::normal(v / s).has(s)) continue;
+    of_t = GiNaC::normal(f.subs(s == out.t / GiNaC::normal(v / s)));
+    break;
+  }
+  if (!of_t) return std::nullopt;
+  for (const std::string& name : symbol_names(*of_t)) {
+    if (name != out.t.get_name()) return std::nullopt;
+  }
+  out.of_t = *of_t;
+  out.numerator = as_polynomial(GiNaC::numer(out.of_t), out.t);
+  out.denominator = as_polynomial(GiNaC::denom(out.of_t), out.t);
+  out.in_square = even(out.numerator) && even(out.denominator);
+  if (out.in_square) {
+    out.numerator = even_in_theta_to_x(out.numerator);
+    out.denominator = even_in_theta_to_x(out.denominator);
+  }
+  out.ends = positive_roots(out.numerator);
+  for (const positive_root& pole : positive_roots(out.denominator)) out.ends.push_back(pole);
+  std::sort(out.ends.begin(), out.ends.end(), [](const positive_root& a, const positive_root& b) { return a.low < b.low; });
+  return out;
+}
+
+/// The printed condition 0 < v < c: c, or an exception naming the condition when it is not so.
+ex interval_end(const referenced_formula& condition, const ex& v) {
+  if (condition.sides.size() != 3) throw std::invalid_argument(condition.locator + ": not a condition '0 < ... < c'");
+  ex low, middle, high;
+  try {
+    low = parse_tex_math(condition.sides[0], paper_symbols());
+    middle = parse_tex_math(condition.sides[1], paper_symbols());
+    high = parse_tex_math(condition.sides[2], paper_symbols());
+  } catch (const tex_parse_error& e) {
+    throw std::invalid_argument(condition.locator + ": " + e.what());
+  }
+  if (!GiNaC::normal(low).is_zero() || !GiNaC::normal(middle - v).is_zero()) {
+    throw std::invalid_argument(condition.locator + ": the condition is not '0 < " + text_of(v) + " < c'");
+  }
+  return high;
+}
+
+}  // namespace
+
+claim_result stability_interval_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const referenced_formula condition = read.raw("condition");
+  const GiNaC::matrix m = as_square_matrix(read.formula("map"), reference_of(call, "map"));
+  if (m.rows() != 2) throw std::invalid_argument(reference_of(call, "map") + " is not a 2 x 2 map");
+  const ex v = read.formula("variable");
+  claim_result result;
+  result.printed = read.printed();
+  result.certificate_missing = "a stability set: our kernel's Sturm sequences decide it; no Coq statement for this shape yet";
+  // det = 1, in both kernels: then the map is power-bounded exactly where |trace| < 2.
+  const ex det = m.determinant();
+  const kernel_decision det_own = kernel_decides_zero(det - 1);
+  if (!GiNaC::normal(det - 1).is_zero() || det_own.outcome == kernel_decision::result::nonzero) {
+    result.outcome = verdict::fails;
+    result.note = "The shape decides maps with det 1; det (" + reference_of(call, "map") + ") = " + text_of(GiNaC::normal(det)) + ".";
+    return result;
+  }
+  const ex high = interval_end(condition, v);
+  const ex trace = m(0, 0) + m(1, 1);
+  const std::optional<one_variable> excess = in_variable(trace * trace - 4, v);  // < 0 exactly on the stable set
+  if (!excess) {
+    result.outcome = verdict::fails;
+    result.note = "The trace of " + reference_of(call, "map") + " is not a function of " + text_of(v) + " alone.";
+    return result;
+  }
+  const std::string var = text_of(v);
+  // The stable bands: between consecutive ends, where trace² − 4 < 0 at a point inside.
+  std::vector<std::string> bands;
+  rational from = 0;
+  std::string from_text = "0";
+  for (std::size_t k = 0; k <= excess->ends.size(); ++k) {
+    const rational inside = k < excess->ends.size() ? rational((from + excess->ends[k].low) / 2) : rational(from + 1);
+    if (excess->sign_at(inside) < 0) {
+      bands.push_back(k < excess->ends.size() ? fmt::format("{} < {} < {}", from_text, var, excess->text(excess->ends[k]))
+                                              : fmt::format("{} > {}", var, from_text));
+    }
+    if (k < excess->ends.size()) {
+      from = excess->ends[k].high;
+      from_text = excess->text(excess->ends[k]);
+    }
+  }
+  const bool stable_near_zero = !excess->ends.empty() && excess->sign_at(excess->ends.front().low / 2) < 0;
+  // Is the printed c the first end? Exactly: c (or c² in x) is rational and equal to an exact root,
+  // or a root of the numerator inside the first end's isolating interval.
+  bool equal = false;
+  std::string how;
+  if (stable_near_zero) {
+    const positive_root& first = excess->ends.front();
+    if (const std::optional<rational> value = excess->exact(high)) {
+      equal = first.exact() ? *value == first.low : (*value >= first.low && *value <= first.high && excess->numerator.evaluate(*value) == 0);
+      how = fmt::format("{} = {} (exact)", excess->in_square ? "c^2" : "c", value->str());
+    } else {
+      how = "c = " + text_of(high) + " is not rational" + std::string(excess->in_square ? " in its square" : "") + ": not compared";
+    }
+  }
+  const ex trace_in_v = GiNaC::normal(trace);
+  result.evidence["exact"] = {
+      {"statement", fmt::format("the stable set of ({}) in {} > 0 begins with 0 < {} < {}", reference_of(call, "map"), var, var, text_of(high))},
+      {"det", "det = 1 (GiNaC normal form; our kernel: " + det_own.evidence + ")"},
+      {"trace", text_of(trace_in_v)},
+      {"boundary_polynomial", to_string(excess->numerator, excess->in_square ? "x" : "t") + (excess->in_square ? " (x = (" + var + ")^2)" : "")},
+      {"stable_bands", bands},
+      {"printed_end", how}};
+  if (stable_near_zero && equal) {
+    result.outcome = verdict::holds;
+    return result;
+  }
+  result.outcome = verdict::erratum;
+  result.correction = bands.empty() ? "never stable for " + var + " > 0" : "stable exactly for " + fmt::format("{}", fmt::join(bands, ", "));
+  result.note = "As printed: " + folded_space(condition.tex) + " is not the first stable band of " + reference_of(call, "map") +
+                " (trace = " + text_of(trace_in_v) + ", stable where |trace| < 2).";
+  return result;
+}
+
+/// The claimed sign of a function of v on the printed interval 0 < v < c: no root or pole of it
+/// inside (our kernel's Sturm sequences, the end compared exactly), and the sign at a point inside.
+claim_result sign_on_interval_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const ex f = read.formula("expression");
+  const referenced_formula condition = read.raw("condition");
+  const ex v = read.formula("variable");
+  const std::string claimed = call.with.at("sign").values.front();
+  const int want = claimed == "positive" ? 1 : -1;
+  claim_result result;
+  result.printed = read.printed();
+  result.certificate_missing = "a sign on an interval: our kernel's Sturm sequences decide it; no Coq statement for this shape yet";
+  const ex high = interval_end(condition, v);
+  const std::optional<one_variable> g = in_variable(f, v);
+  if (!g) {
+    result.outcome = verdict::fails;
+    result.note = "(" + reference_of(call, "expression") + ") is not a function of " + text_of(v) + " alone.";
+    return result;
+  }
+  const std::string var = text_of(v);
+  const std::optional<rational> c = g->exact(high);
+  if (!c || *c <= 0) {
+    result.outcome = verdict::undecided;
+    result.note = "The interval's end " + text_of(high) + " is not a positive rational" + (g->in_square ? " in its square" : "") +
+                  ": our kernel compares ends exactly, and cannot here.";
+    return result;
+  }
+  // The first root or pole of f inside (0, c), if any.
+  std::optional<positive_root> inside;
+  for (const positive_root& e : g->ends) {
+    if (e.exact() ? e.low < *c : e.high < *c) {
+      inside = e;
+      break;
+    }
+    if (!e.exact() && e.low < *c && g->numerator.evaluate(*c) != 0 && g->denominator.evaluate(*c) != 0) {
+      result.outcome = verdict::undecided;
+      result.note = "A root of " + text_of(f) + " lies within 2^-40 of the interval's end; its isolating interval holds the end.";
+      return result;
+    }
+  }
+  const rational probe = inside ? rational(inside->low / 2) : rational(*c / 2);
+  const int sign = g->sign_at(probe);
+  const std::string expression = text_of(f);
+  result.evidence["exact"] = {
+      {"statement", fmt::format("({}) is {} for 0 < {} < {}", reference_of(call, "expression"), claimed, var, text_of(high))},
+      {"in_variable", text_of(g->of_t.subs(g->t == v))},
+      {"roots_and_poles", [&] {
+         json all = json::array();
+         for (const positive_root& e : g->ends) all.push_back(g->text(e));
+         return all;
+       }()},
+      {"interval_end", fmt::format("{} = {} (exact)", g->in_square ? "c^2" : "c", c->str())}};
+  if (!inside && sign == want) {
+    result.outcome = verdict::holds;
+    return result;
+  }
+  result.outcome = verdict::erratum;
+  const std::string sign_text = sign > 0 ? "positive" : "negative";
+  result.correction = inside ? fmt::format("{} is {} for 0 < {} < {} only, and changes sign there", expression, sign_text, var, g->text(*inside))
+                             : fmt::format("{} is {} for 0 < {} < {}", expression, sign_text, var, text_of(high));
+  result.note = "As printed: (" + reference_of(call, "expression") + ") is said to be " + claimed + " for " + folded_space(condition.tex) + ".";
+  return result;
+}
+
+}  // namespace simpson::verify::detail
