@@ -261,6 +261,8 @@ note_dir="$(dirname "$0")/notes"
 check "a note from its claims file" 0 --paper "$note_dir/trapezoidal-note.tex" --claims-file "$note_dir/trapezoidal-note.toml" --out "$work/note"
 grep -q '^10 claims: 6 held, 4 errata, 0 failed' "$work/out" || fail "a note: summary: $(cat "$work/out")"
 grep -q '"correction": "stable exactly for 0 < h\*omega < 2"' "$work/note/report.json" || fail "a note: the stability correction is not in the report"
+grep -q "^Exit code 0: every verdict is the expected one, the claims file's expected verdicts for its document" "$work/note/report.md" ||
+  fail "a note: the exit line speaks of the paper"
 ls "$work/note"/*.csv >/dev/null 2>&1 && fail "a note: a section of the paper's experiments ran"
 check "a note, validated" 1 --validate --paper "$note_dir/trapezoidal-note.tex" --claims-file "$note_dir/trapezoidal-note.toml" --out "$work/note-validated"
 check "a note without --paper" 2 --claims-file "$note_dir/trapezoidal-note.toml" --out "$work/none-note1"

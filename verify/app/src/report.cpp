@@ -2,6 +2,7 @@
 
 #include <simpson/verify/certify.hpp>
 #include <simpson/verify/junit.hpp>
+#include <simpson/verify/ledger.hpp>
 #include <simpson/verify/markdown_text.hpp>
 #include <simpson/verify/printed_statement.hpp>
 #include <simpson/verify/report_html.hpp>
@@ -160,19 +161,23 @@ std::string expectation_line(const run_record& r) {
   }
   const int code = run_exit_code(r);
   if (code == 3) return "Exit code 3: a check threw (a bug in the harness); see Failures.";
+  // What the expected verdicts are: the paper's, as the ledger judges it, or a claims file's for its document.
+  const bool document = installed_document() != nullptr;
+  const std::string judgment = document ? "the claims file's expected verdicts for its document" : "the ledger's recorded judgment of the printed paper";
+  const std::string changed = document ? "the document" : "the paper";
   const bool rejected = !rejected_certificates(r).empty();
   if (code != 0) {
     std::string why;
     if (!c.unexpected.empty()) {
-      why = fmt::format("{} verdict{} differ{} from the expected one (the ledger's recorded judgment of the printed paper): "
-                        "either the paper or the harness changed",
-                        c.unexpected.size(), c.unexpected.size() == 1 ? "" : "s", c.unexpected.size() == 1 ? "s" : "");
+      why = fmt::format("{} verdict{} differ{} from the expected one ({}): either {} or the harness changed", c.unexpected.size(),
+                        c.unexpected.size() == 1 ? "" : "s", c.unexpected.size() == 1 ? "s" : "", judgment, changed);
     }
     if (rejected) why += (why.empty() ? "" : "; ") + std::string("coqc rejected a certificate");
     return "Exit code 1: " + why + "; see Failures.";
   }
-  std::string line = "Exit code 0: every verdict is the expected one, the ledger's recorded judgment of the printed paper (a "
-                     "regression check: a difference would mean that the paper or the harness changed), not a validation";
+  std::string line = fmt::format("Exit code 0: every verdict is the expected one, {} (a regression check: a difference would "
+                                 "mean that {} or the harness changed), not a validation",
+                                 judgment, changed);
   std::vector<std::string> findings;
   if (c.errata > 0) findings.push_back(fmt::format("{} {} (false as printed, a correction proved)", c.errata, c.errata == 1 ? "erratum" : "errata"));
   if (!expected_failures.empty()) {
