@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <optional>
 #include <set>
 
 namespace simpson::verify::detail {
@@ -21,6 +22,18 @@ using GiNaC::ex;
 
 const std::vector<shape_parameter> where_parameter{
     {"where", argument_kind::definitions, false, "displays 'x = ...' whose definitions are put in the other formulas"}};
+
+/// The scheme and the equation a series shape expands on: what truncation and stated-order share.
+std::vector<shape_parameter> with_series(std::vector<shape_parameter> parameters) {
+  for (shape_parameter p : std::vector<shape_parameter>{
+           {"scheme", argument_kind::formula, true, "the scheme's expression (= 0) in three consecutive states"},
+           {"sequence", argument_kind::symbols, true, "the three states q_{j-1}, q_j, q_{j+1}", 3},
+           {"step", argument_kind::symbols, true, "the step h", 1},
+           {"frequency", argument_kind::formula, true, "omega of q'' = -omega^2 q"}}) {
+    parameters.push_back(std::move(p));
+  }
+  return parameters;
+}
 
 std::vector<shape_parameter> with_where(std::vector<shape_parameter> parameters) {
   parameters.push_back(where_parameter.front());
@@ -65,18 +78,10 @@ const std::map<std::string, proof_shape>& proof_shapes() {
                      {"internal", argument_kind::symbols, false, "its internal nodes, eliminated by their equations"}}),
          discrete_map_shape});
     add({"truncation", "the scheme on the exact solution of q'' = -omega^2 q is the printed series, to its printed order", "printed",
-         with_where({{"printed", argument_kind::formula, true, "the printed truncation error, with its order term O(h^N)"},
-                     {"scheme", argument_kind::formula, true, "the scheme's expression (= 0) in three consecutive states"},
-                     {"sequence", argument_kind::symbols, true, "the three states q_{j-1}, q_j, q_{j+1}", 3},
-                     {"step", argument_kind::symbols, true, "the step h", 1},
-                     {"frequency", argument_kind::formula, true, "omega of q'' = -omega^2 q"}}),
+         with_where(with_series({{"printed", argument_kind::formula, true, "the printed truncation error, with its order term O(h^N)"}})),
          truncation_shape});
     add({"stated-order", "the order a sentence states ({order} in its pattern) is the scheme's order on q'' = -omega^2 q", "scheme",
-         with_where({{"sentence", argument_kind::word, true, "the sentence's pattern, with the hole {order}", 0, "", false, {}},
-                     {"scheme", argument_kind::formula, true, "the scheme's expression (= 0) in three consecutive states"},
-                     {"sequence", argument_kind::symbols, true, "the three states q_{j-1}, q_j, q_{j+1}", 3},
-                     {"step", argument_kind::symbols, true, "the step h", 1},
-                     {"frequency", argument_kind::formula, true, "omega of q'' = -omega^2 q"}}),
+         with_where(with_series({{"sentence", argument_kind::word, true, "the sentence's pattern, with the hole {order}"}})),
          stated_order_shape});
     add({"sign-on-interval", "expression has the stated sign on the printed interval 0 < variable < c", "expression",
          with_where({{"expression", argument_kind::formula, true, "a function of the variable alone once scaled"},
@@ -114,36 +119,25 @@ void check_shape_arguments(const claim_record& record, const std::string& file) 
 }
 
 std::string check_shape_formulas(const claim_record& record, const std::string& file, const paper_source& document, const claims_document* declared) {
-  const std::map<std::string, tex_macro> macros = defined_macros(document.text);
-  std::set<std::string> names, positive;
+  // Read as the shape will read them when it runs (shape_reader): the definitions put in, every
+  // symbol declared; what a shape checks only when it runs is checked here, before anything runs.
+  const shape_call call{record.id, record.statement, record.with, declared};
+  std::optional<shape_reader> read;
+  try {
+    read.emplace(call, document);
+  } catch (const std::invalid_argument& e) {
+    throw claims_file_error(file, record.with.at("where").line, "with.where", e.what());
+  }
+  std::set<std::string> positive;
   if (declared) {
-    names = declared_names(*declared);
     for (const std::string& tex : declared->positive) positive.insert(symbol_named(tex).get_name());
   }
-  const auto declared_only = [&](const ex& e, const std::string& field, int line) {
-    if (!declared) return;
-    for (const std::string& name : symbol_names(e)) {
-      if (!names.count(name)) throw claims_file_error(file, line, field, "the symbol '" + name + "' is not declared in [symbols]");
-    }
-  };
   const proof_shape& shape = proof_shapes().at(record.shape);
   std::string principal;
-  std::vector<definition> definitions;
-  const auto where = record.with.find("where");
-  if (where != record.with.end()) {
-    for (const std::string& value : where->second.values) {
-      try {
-        definitions.push_back(read_definition(document, macros, value));
-      } catch (const std::invalid_argument& e) {
-        throw claims_file_error(file, where->second.line, "with.where", e.what());
-      }
-      names.insert(definitions.back().name.get_name());  // a defined symbol is declared by its definition
-    }
-  }
   std::map<std::string, unsigned> rows;  // of each matrix argument
   for (const shape_parameter& p : shape.parameters) {
     const auto it = record.with.find(p.name);
-    if (it == record.with.end()) continue;
+    if (it == record.with.end() || p.kind == argument_kind::definitions) continue;  // the definitions: read above
     const std::string field = "with." + p.name;
     const int line = it->second.line;
     try {
@@ -151,11 +145,10 @@ std::string check_shape_formulas(const claim_record& record, const std::string& 
         case argument_kind::formula:
         case argument_kind::matrix:
         case argument_kind::condition: {
-          const referenced_formula f = read_reference(document, macros, it->second.values.front());
-          declared_only(f.value, field, line);
+          const referenced_formula f = read->raw(p.name);
           if (p.name == shape.principal) principal = "$" + folded_space(f.tex) + "$ (" + f.locator + ")";
           if (p.kind == argument_kind::matrix) {
-            const ex m = with_definitions(f.value, definitions);
+            const ex m = read->formula(p.name);
             if (!GiNaC::is_a<GiNaC::matrix>(m) || GiNaC::ex_to<GiNaC::matrix>(m).rows() != GiNaC::ex_to<GiNaC::matrix>(m).cols()) {
               throw claims_file_error(file, line, field, f.locator + " is not a square matrix");
             }
@@ -174,14 +167,14 @@ std::string check_shape_formulas(const claim_record& record, const std::string& 
           }
           break;
         }
-        case argument_kind::definitions: break;  // read above
+        case argument_kind::definitions: break;
         case argument_kind::word:
           if (!p.words.empty() && std::find(p.words.begin(), p.words.end(), it->second.values.front()) == p.words.end()) {
             throw claims_file_error(file, line, field, "'" + it->second.values.front() + "' is not one of: " + fmt::format("{}", fmt::join(p.words, ", ")));
           }
           break;
         case argument_kind::symbols: {
-          for (const std::string& value : it->second.values) declared_only(symbol_named(value), field, line);
+          read->symbols(p.name);  // each one symbol, and declared
           if (p.size != 0 && it->second.values.size() != p.size) {
             throw claims_file_error(file, line, field, fmt::format("{} symbols, not {}", it->second.values.size(), p.size));
           }

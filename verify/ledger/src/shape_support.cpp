@@ -63,7 +63,10 @@ referenced_formula shape_reader::raw(const std::string& parameter) {
 
 std::vector<GiNaC::symbol> shape_reader::symbols(const std::string& parameter) const {
   std::vector<GiNaC::symbol> out;
-  for (const std::string& tex : call_.with.at(parameter).values) out.push_back(symbol_named(tex));
+  for (const std::string& tex : call_.with.at(parameter).values) {
+    out.push_back(symbol_named(tex));
+    declared_only(out.back(), "'" + tex + "'");
+  }
   return out;
 }
 
