@@ -3,6 +3,9 @@
 
 #include <simpson/verify/claims_file.hpp>
 #include <simpson/verify/ledger.hpp>
+#include <simpson/verify/printed_checks.hpp>
+
+#include "check_registry.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,9 +14,7 @@
 namespace simpson::verify {
 namespace {
 
-bool known(const std::string& field, const std::string& name) {
-  if (field == "printed") return name == "a-printed";
-  if (field == "coq_goals") return name == "a-goals";
+bool known(const std::string& /*field*/, const std::string& name) {
   return name == "a-check" || name == "b-check";
 }
 
@@ -45,16 +46,35 @@ TEST(ClaimsFile, TheEmbeddedFileIsTheLedgerRecordForRecord) {
   for (std::size_t k = 0; k < records.size(); ++k) {
     EXPECT_EQ(records[k].id, ledger()[k].id);
     EXPECT_EQ(records[k].check, ledger()[k].check_name);
-    EXPECT_EQ(records[k].printed, ledger()[k].printed_check);
-    EXPECT_EQ(records[k].coq_goals, ledger()[k].coq_goals);
     EXPECT_EQ(records[k].expected, ledger()[k].expected) << records[k].id;
     if (records[k].headline) headline.insert(records[k].id);
   }
   EXPECT_EQ(headline, (std::set<std::string>{"phi3-det", "discriminant-factorization", "hd-invariance", "truncation-1440"}));
   EXPECT_EQ(find_claim("abstract-explicit").follows_from, "phi3-explicit");
   EXPECT_FALSE(find_claim("table-orders").coq_none.empty());
-  EXPECT_EQ(find_claim("phi3-det").printed_check, "phi3-det");
-  EXPECT_EQ(find_claim("phi3-explicit").coq_goals, "phi3-explicit");
+}
+
+TEST(ClaimsFile, ACheckBringsItsFacetsUnderItsOneName) {
+  // The record names the check alone; the printed formulas it reads and its Coq goals are the
+  // check's, registered with it (check_registry.hpp).
+  const detail::registered_check* det = detail::registered_checks().find("phi3-det");
+  ASSERT_NE(det, nullptr);
+  EXPECT_EQ(det->formulas, (std::vector<std::string>{"Phi3"}));
+  EXPECT_TRUE(reads_printed_formula("phi3-det"));
+  EXPECT_FALSE(det->coq_goals);
+  const detail::registered_check* explicit_map = detail::registered_checks().find("phi3-explicit");
+  ASSERT_NE(explicit_map, nullptr);
+  EXPECT_TRUE(explicit_map->coq_goals);
+  EXPECT_FALSE(reads_printed_formula("phi3-explicit"));
+  // Named under the check, not the claim: interpolant-nodal's check is basis-nodal.
+  EXPECT_EQ(find_claim("interpolant-nodal").check_name, "basis-nodal");
+  EXPECT_TRUE(reads_printed_formula("interpolant-nodal"));
+  // A facet for a check that is not registered is a harness fault.
+  detail::check_registry registry;
+  EXPECT_THROW(registry.add_coq_goals("nowhere", [] { return std::vector<detail::proof_goal>{}; }), std::logic_error);
+  registry.add("somewhere", [](const run_context&) { return claim_result{}; });
+  registry.add_coq_goals("somewhere", [] { return std::vector<detail::proof_goal>{}; });
+  EXPECT_THROW(registry.add_coq_goals("somewhere", [] { return std::vector<detail::proof_goal>{}; }), std::logic_error);
 }
 
 TEST(ClaimsFile, AGoodRecordReadsWithItsDefaults) {
@@ -100,10 +120,8 @@ INSTANTIATE_TEST_SUITE_P(
                  "claims file 'test.toml', line 3, field 'id': 'First_one' is not kebab-case (a-z, 0-9, -)"},
         bad_file{"unknown_check", replaced(good_record, "a-check", "c-check"),
                  "claims file 'test.toml', line 8, field 'check': no check is named 'c-check'"},
-        bad_file{"unknown_printed_check", replaced(good_record, "expected = \"holds\"", "expected = \"holds\"\nprinted = \"b-printed\""),
-                 "claims file 'test.toml', line 10, field 'printed': no check of printed formulas is named 'b-printed'"},
-        bad_file{"unknown_goals", replaced(good_record, "expected = \"holds\"", "expected = \"holds\"\ncoq_goals = \"a-check\""),
-                 "claims file 'test.toml', line 10, field 'coq_goals': no Coq goals are named 'a-check'"},
+        bad_file{"printed_is_the_checks", replaced(good_record, "expected = \"holds\"", "expected = \"holds\"\nprinted = \"a-check\""),
+                 "claims file 'test.toml', line 10, field 'printed': not a field of a claim record (docs/claims-file.md)"},
         bad_file{"bad_verdict", replaced(good_record, "\"holds\"", "\"hold\""),
                  "claims file 'test.toml', line 9, field 'expected': 'hold' is not a verdict (holds, erratum, fails, unverifiable, ...)"},
         bad_file{"finding_missing", replaced(good_record, "\"holds\"", "\"erratum\""),

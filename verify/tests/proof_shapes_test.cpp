@@ -38,6 +38,20 @@ TEST(TexMacros, DefinitionsWithArgumentsExpandAsTeXWould) {
   EXPECT_THROW(defined_macros(R"(\newcommand{\b}[12]{x})"), std::invalid_argument);
 }
 
+TEST(TexMacros, ADefWithDelimitersReadsButDoesNotExpand) {
+  // The paper's own preamble: \def\section*#1{} (delimited parameter text). The source reads; a
+  // formula that used the macro would not, rather than expand it wrongly.
+  const auto macros = defined_macros(R"(\def\br {\break}
+\def\section*#1{} \newcommand{\dd}{{\rm d}})");
+  ASSERT_EQ(macros.size(), 3u);
+  EXPECT_TRUE(macros.at("\\section").delimited);
+  EXPECT_EQ(macros.at("\\section").arguments, 1);
+  EXPECT_FALSE(macros.at("\\br").delimited);
+  EXPECT_EQ(expand_macros(R"(\dd q)", macros), R"({\rm d} q)");
+  EXPECT_THROW(expand_macros(R"(\section*{x})", macros), std::invalid_argument);
+  EXPECT_THROW(defined_macros(R"(\def\x*#1)"), std::invalid_argument);  // no body
+}
+
 // ---- references ----
 
 const std::string note = R"(\newcommand{\om}{\omega}
@@ -46,6 +60,8 @@ const std::string note = R"(\newcommand{\om}{\omega}
 x = \frac{\om}{2} \label{end}
 \end{equation}
 It is stable for $0 < \om h < 2$.
+Unlabelled, as the first display after a phrase:
+\begin{equation*} y = \om - 1 \end{equation*}
 )";
 
 // An align environment: each labelled row is a formula of its own, its '&' dropped; a matrix's
@@ -76,6 +92,11 @@ TEST(FormulaReference, ByLabelEquationSideInlineAndLiteral) {
   EXPECT_TRUE((read_reference(d, macros, "end").value - omega / 2).is_zero()) << "a label at the end of its display";
   EXPECT_EQ(read_reference(d, macros, "end").line, 4);
   EXPECT_EQ(read_reference(d, macros, "inline:stable for").sides.size(), 3u);
+  const referenced_formula after = read_reference(d, macros, "after:as the first display after");
+  EXPECT_TRUE((after.value - (omega - 1)).is_zero()) << after.tex;
+  EXPECT_EQ(after.line, 8);
+  EXPECT_THROW(read_reference(d, macros, "after:a phrase the note does not have"), std::invalid_argument);
+  EXPECT_THROW(parse_reference("after: "), std::invalid_argument);
   EXPECT_TRUE((read_reference(d, macros, "$\\om + 1$").value - (omega + 1)).is_zero());
   EXPECT_THROW(read_reference(d, macros, "missing"), std::invalid_argument);
   EXPECT_THROW(read_reference(d, macros, "first#3"), std::invalid_argument);
@@ -207,12 +228,21 @@ TEST_F(ShapesOnADocument, StabilityInterval) {
   const std::string args = R"(map = "map", variable = '$\omega h$')";
   const claim_result holds = run("stability-interval", "{ " + args + R"(, condition = "inline:Stable for" })");
   EXPECT_EQ(holds.outcome, verdict::holds) << holds.note << holds.evidence.dump();
+  // Coq is told det = 1 as written (a d - b c) and trace^2 - 4 < 0 on the printed band, in x = (omega h)^2.
+  ASSERT_EQ(holds.certificate_lemmas.size(), 2u) << holds.certificate_missing;
+  EXPECT_NE(holds.certificate_lemmas[0].find("_det"), std::string::npos);
+  EXPECT_NE(holds.certificate_lemmas[1].find("_stable_band"), std::string::npos);
+  EXPECT_NE(holds.certificate.find("0 < (((-1) * x) + 4)"), std::string::npos) << holds.certificate;
   // 2 sqrt(2) is Simpson's bound, not this map's; 1 is inside the band but not its end (a check
-  // that the printed interval is stable would pass it).
+  // that the printed interval is stable would pass it). The certificate states the correction's
+  // band, (0, 2), never the printed one.
   for (const std::string phrase : {"Also stable for", "And for"}) {
     const claim_result wrong = run("stability-interval", "{ " + args + ", condition = \"inline:" + phrase + "\" }");
     EXPECT_EQ(wrong.outcome, verdict::erratum) << phrase;
     EXPECT_NE(wrong.correction.find("0 < h*omega < 2"), std::string::npos) << wrong.correction;
+    ASSERT_EQ(wrong.certificate_lemmas.size(), 2u) << wrong.certificate_missing;
+    EXPECT_NE(wrong.certificate_lemmas[1].find("_first_band"), std::string::npos);
+    EXPECT_NE(wrong.certificate.find("0 < (((-1) * x) + 4)"), std::string::npos) << wrong.certificate;
   }
   const claim_result not_det_one = run("stability-interval", R"({ map = "mapwrong", variable = '$\omega h$', condition = "inline:Stable for" })");
   EXPECT_EQ(not_det_one.outcome, verdict::fails);
@@ -267,6 +297,12 @@ TEST_F(ShapesOnADocument, SignOnInterval) {
   const claim_result wide = run("sign-on-interval", "{ " + args + R"(, condition = "inline:the wide", sign = "positive" })");
   EXPECT_EQ(wide.outcome, verdict::erratum);
   EXPECT_EQ(wide.correction, "(-h^2*omega^2+4)/(4) is positive for 0 < h*omega < 2 only, and changes sign there");
+  // Coq: the sign on the printed interval when it holds, on the correction's (0, 2) when not.
+  ASSERT_EQ(holds.certificate_lemmas.size(), 1u) << holds.certificate_missing;
+  EXPECT_NE(holds.certificate_lemmas[0].find("_sign"), std::string::npos);
+  ASSERT_EQ(wide.certificate_lemmas.size(), 1u) << wide.certificate_missing;
+  EXPECT_NE(wide.certificate_lemmas[0].find("_sign_before_root"), std::string::npos);
+  EXPECT_NE(wide.certificate.find("0 < (((-1) * x) + 4)"), std::string::npos) << wide.certificate;
   EXPECT_EQ(run("sign-on-interval", "{ " + args + R"(, condition = "inline:positive on", sign = "negative" })").outcome, verdict::erratum);
 }
 

@@ -345,6 +345,9 @@ int main(int argc, char** argv) {
   } catch (const std::domain_error& e) {
     std::fprintf(stderr, "simpson-verify: %s\n", e.what());
     return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "simpson-verify: internal error (a bug in the harness): %s\n", e.what());
+    return 3;
   }
 
   if (s.experiments.any() && !quiet) {

@@ -5,7 +5,7 @@
 #include <simpson/verify/printed_checks.hpp>
 #include <simpson/verify/printed_table1.hpp>
 #include <simpson/verify/provenance.hpp>
-#include <simpson/verify/quoted_words.hpp>
+#include <simpson/verify/quoted_sentence.hpp>
 #include <simpson/verify/run.hpp>
 
 #include <simpson/verify/certify.hpp>
@@ -97,7 +97,7 @@ run_record run(const scene& s, const paper_reading& paper, const progress_callba
       // transcription when the table can no longer be read (table-values then says text-changed).
       table1_settings settings = *e.table1;
       try {
-        const printed_table1 printed = read_table1(paper);
+        const printed_table1 printed = read_table1(paper.source);
         settings.printed_values = printed.values;
         settings.printed_digits = printed.digits;
         settings.printed_orders = printed.orders;

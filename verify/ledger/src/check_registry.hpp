@@ -1,6 +1,11 @@
 #pragma once
-// The checks a claims file can name: each a C++ function registered under its name. A record of
-// claims/paper.toml says which check decides it (`check = "phi3-det"`); the ledger joins the two.
+// The bespoke checks a claims file can name: each registered once under its name, with all its
+// facets: the check itself (our kernel), the GiNaC check of the printed formulas it reads, if any
+// (printed_checks_section*.cpp), and the Coq goals of our kernel's proof, if any
+// (kernel_claim_goals.cpp). A record names the check (`check = "phi3-det"`), nothing else: the
+// ledger finds every facet through that one name.
+
+#include "printed_check_support.hpp"
 
 #include <simpson/verify/claim.hpp>
 
@@ -8,29 +13,69 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace simpson::verify::detail {
 
 using check_function = std::function<claim_result(const run_context&)>;
+using coq_goals_function = std::function<std::vector<proof_goal>()>;
+
+struct registered_check {
+  check_function check;
+  /// The printed formulas the claim reads (names of printed_formula_locations()) and GiNaC's check of
+  /// them; empty when the claim reads none.
+  std::vector<std::string> formulas;
+  printed_check printed;
+  /// The Coq goals of our kernel's proof; empty when the check writes its own certificate, reads a
+  /// printed formula (the goals are then GiNaC's), or its record says why there is none (coq_none).
+  coq_goals_function coq_goals;
+};
 
 class check_registry {
  public:
   /// Registers `check` under `name`; throws std::logic_error for a name registered twice.
   void add(const std::string& name, check_function check) {
-    if (!checks_.emplace(name, std::move(check)).second) throw std::logic_error("check '" + name + "' registered twice");
+    if (!checks_.emplace(name, registered_check{std::move(check), {}, {}, {}}).second) {
+      throw std::logic_error("check '" + name + "' registered twice");
+    }
+  }
+  /// The GiNaC check of the printed formulas for the check `name`, registered before.
+  void add_printed(const std::string& name, std::vector<std::string> formulas, printed_check printed) {
+    registered_check& c = existing(name, "printed check");
+    if (c.printed) throw std::logic_error("check '" + name + "' has two printed checks");
+    c.formulas = std::move(formulas);
+    c.printed = std::move(printed);
+  }
+  /// The Coq goals of our kernel's proof for the check `name`, registered before.
+  void add_coq_goals(const std::string& name, coq_goals_function goals) {
+    registered_check& c = existing(name, "Coq goals");
+    if (c.coq_goals) throw std::logic_error("check '" + name + "' has two sets of Coq goals");
+    c.coq_goals = std::move(goals);
   }
   /// The check registered under `name`, or null.
-  const check_function* find(const std::string& name) const {
+  const registered_check* find(const std::string& name) const {
     const auto it = checks_.find(name);
     return it == checks_.end() ? nullptr : &it->second;
   }
-  const std::map<std::string, check_function>& all() const { return checks_; }
+  const std::map<std::string, registered_check>& all() const { return checks_; }
 
  private:
-  std::map<std::string, check_function> checks_;
+  registered_check& existing(const std::string& name, const std::string& facet) {
+    const auto it = checks_.find(name);
+    if (it == checks_.end()) throw std::logic_error(facet + " for '" + name + "', which is not a registered check");
+    return it->second;
+  }
+
+  std::map<std::string, registered_check> checks_;
 };
 
-/// Every check of the ledger, registered once.
+/// Every check of the ledger, registered once with its facets.
 const check_registry& registered_checks();
+
+// The facets, registered onto the checks (after every check is added).
+void add_printed_checks_section2_4(check_registry& checks);
+void add_printed_checks_section5(check_registry& checks);
+void add_printed_checks_section6_7(check_registry& checks);
+void add_kernel_claim_goals(check_registry& checks);
 
 }  // namespace simpson::verify::detail

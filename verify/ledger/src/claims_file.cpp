@@ -35,7 +35,7 @@ class record_reader {
  public:
   record_reader(const toml::table& table, const std::string& file) : table_(table), file_(file), line_(line_of(table)) {
     static const std::set<std::string> fields{"id",       "section",  "equation",     "statement",     "methods", "check",
-                                              "printed",  "coq_goals", "expected",    "finding",       "follows_from",
+                                              "expected",    "finding",       "follows_from",
                                               "typographical", "origin", "headline",  "coq_none", "shape", "with"};
     for (const auto& [key, node] : table_) {
       if (!fields.count(std::string(key.str()))) {
@@ -229,14 +229,6 @@ claims_file_contents read_claims_contents(const std::string& text, const std::st
     r.statement = read.text("statement", r.shape.empty());
     r.with = read.arguments();
     if (r.shape.empty() && !r.with.empty()) throw claims_file_error(file, read.line_of_field("with"), "with", "arguments without a shape");
-    r.printed = read.text("printed", false);
-    if (!r.printed.empty() && !known("printed", r.printed)) {
-      throw claims_file_error(file, read.line_of_field("printed"), "printed", "no check of printed formulas is named '" + r.printed + "'");
-    }
-    r.coq_goals = read.text("coq_goals", false);
-    if (!r.coq_goals.empty() && !known("coq_goals", r.coq_goals)) {
-      throw claims_file_error(file, read.line_of_field("coq_goals"), "coq_goals", "no Coq goals are named '" + r.coq_goals + "'");
-    }
     // Without `expected` a claim is to hold: a file of such records validates a derivation (exit 0
     // when every claim holds) instead of guarding a judged paper against regressions.
     const std::string expected = read.text("expected", false);

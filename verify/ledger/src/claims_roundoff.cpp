@@ -12,6 +12,7 @@
 #include <simpson/verify/gappa_run.hpp>
 #include <simpson/verify/global_roundoff.hpp>
 #include <simpson/verify/paper_table.hpp>
+#include <simpson/verify/paper_reading.hpp>
 #include <simpson/verify/printed_table1.hpp>
 #include <simpson/verify/stepper_roundoff.hpp>
 
@@ -50,7 +51,7 @@ claim_result check_table_roundoff(const run_context& ctx) {
   std::array<std::array<double, 3>, 8> values{};
   std::array<std::array<int, 3>, 8> digits{};
   if (ctx.paper != nullptr) {
-    const printed_table1 printed = read_table1(*ctx.paper);  // text_changed when the rows are gone
+    const printed_table1 printed = read_table1(ctx.paper->source);  // text_changed when the rows are gone
     values = printed.values;
     digits = printed.digits;
   } else {

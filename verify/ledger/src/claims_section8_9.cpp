@@ -139,67 +139,8 @@ std::string estimated_order(const std::array<double, 3>& errors, double H0) {
   return first == second ? std::to_string(first) : "inconsistent (" + std::to_string(first) + ", " + std::to_string(second) + ")";
 }
 
-/// The TeX of Table 1's first two cells for each of published_rows(), in order.
-constexpr std::array<const char*, 8> table_row_labels{
-    "Newmark & momentum",         "Symplectic Simpson & momentum",
-    "Newmark & state",            "Symplectic Simpson & state",
-    "Newmark & energy (\\ref{HH-exact})", "Symplectic Simpson & energy (\\ref{HH-exact})",
-    "Newmark & energy (\\ref{hamiltonien-discret})", "Symplectic Simpson & energy (\\ref{hamiltonien-discret})"};
-
-/// Table 1 as printed: each row quoted from the paper, its three values ("$ 1.91 \\,\\, 10^{0} $")
-/// and its order cell ("2", "4" or "exact") parsed.
-struct printed_table_row {
-  std::array<double, 3> values{};
-  std::array<int, 3> digits{};  // significant digits printed
-  std::string order;
-};
-
-/// "1.91 10^{0}" or "1.91 10^{-1}": mantissa and power of ten; none when the words are not so.
-/// A number printed as "1.91 10^{0}" or "1.91 10^{-1}": its value (as the literal 1.91e-1 reads,
-/// correctly rounded) and its significant digits; none when the words are not so.
-std::optional<std::pair<double, int>> table_number(const std::string& words) {
-  const std::size_t space = words.find(' ');
-  const std::size_t power = words.find("10^{");
-  if (space == std::string::npos || power == std::string::npos || words.back() != '}') return std::nullopt;
-  const std::string mantissa = words.substr(0, space), exponent = words.substr(power + 4, words.size() - power - 5);
-  if (mantissa.empty() || mantissa.find_first_not_of("0123456789.") != std::string::npos) return std::nullopt;
-  try {
-    std::size_t used = 0;
-    const int e = std::stoi(exponent, &used);
-    if (used != exponent.size()) return std::nullopt;
-    std::string digits = mantissa;
-    digits.erase(std::remove(digits.begin(), digits.end(), '.'), digits.end());
-    digits.erase(0, std::min(digits.find_first_not_of('0'), digits.size()));
-    return std::make_pair(std::stod(mantissa + "e" + std::to_string(e)), std::max<int>(1, static_cast<int>(digits.size())));
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
-}
-
-std::array<printed_table_row, 8> printed_table(const run_context& ctx) {
-  std::array<printed_table_row, 8> table;
-  for (std::size_t k = 0; k < table_row_labels.size(); ++k) {
-    const quoted_sentence row = quote(ctx, std::string(table_row_labels[k]) + " & {n_ten} & {n_twenty} & {n_forty} & {order} \\\\");
-    const char* holes[] = {"n_ten", "n_twenty", "n_forty"};
-    for (std::size_t c = 0; c < 3; ++c) {
-      const auto v = table_number(row.words(holes[c]));
-      if (!v) row.unparsed(holes[c], "a number printed as 'm 10^{e}'");
-      row.record(holes[c], row.words(holes[c]));
-      table[k].values[c] = v->first;
-      table[k].digits[c] = v->second;
-    }
-    if (row.words("order") == "exact") {
-      row.record("order", "exact");
-      table[k].order = "exact";
-    } else {
-      table[k].order = std::to_string(row.number("order"));
-    }
-  }
-  return table;
-}
-
 json table_evidence(bool& orders_match, bool& conservation_match,
-                    const std::array<printed_table_row, 8>& printed) {
+                    const printed_table1& printed) {
   orders_match = conservation_match = true;
   std::array<std::array<table_errors, 3>, 2> runs{};
   for (int s = 0; s < 2; ++s) {
@@ -211,8 +152,8 @@ json table_evidence(bool& orders_match, bool& conservation_match,
   json rows = json::array();
   for (std::size_t index = 0; index < published_rows().size(); ++index) {
     const published_row& row = published_rows()[index];
-    const std::string& published_order = printed[index].order;
-    const std::array<double, 3>& published = printed[index].values;
+    const std::string& published_order = printed.orders[index];
+    const std::array<double, 3>& published = printed.values[index];
     std::array<double, 3> ours{};
     json ratios = json::array(), values = json::array();
     for (std::size_t k = 0; k < 3; ++k) {
@@ -264,14 +205,14 @@ json table_evidence(bool& orders_match, bool& conservation_match,
 claim_result check_table_orders(const run_context& ctx) {
   bool orders = false, conservation = false;
   json evidence;
-  evidence["numeric"] = table_evidence(orders, conservation, printed_table(ctx));
+  evidence["numeric"] = table_evidence(orders, conservation, read_table1(paper_of(ctx).source, ctx.quotes));
   return confirmed_if(orders, evidence);
 }
 
 claim_result check_table_conservation(const run_context& ctx) {
   bool orders = false, conservation = false;
   json evidence;
-  evidence["numeric"] = table_evidence(orders, conservation, printed_table(ctx));
+  evidence["numeric"] = table_evidence(orders, conservation, read_table1(paper_of(ctx).source, ctx.quotes));
   return confirmed_if(conservation, evidence,
                       "'exact' means conserved to round-off: the errors grow with N only through rounding.");
 }
@@ -297,15 +238,10 @@ json candidate_json(const convention_candidate& c, const std::vector<printed_ent
 }
 
 claim_result check_table_values(const run_context& ctx) {
-  const std::array<printed_table_row, 8> printed = printed_table(ctx);
-  std::array<std::array<double, 3>, 8> published{};
-  std::array<std::array<int, 3>, 8> digits{};
-  std::array<std::string, 8> orders;
-  for (std::size_t k = 0; k < printed.size(); ++k) {
-    published[k] = printed[k].values;
-    digits[k] = printed[k].digits;
-    orders[k] = printed[k].order;
-  }
+  const printed_table1 printed = read_table1(paper_of(ctx).source, ctx.quotes);
+  const std::array<std::array<double, 3>, 8>& published = printed.values;
+  const std::array<std::array<int, 3>, 8>& digits = printed.digits;
+  const std::array<std::string, 8>& orders = printed.orders;
   // The values are decided by the search below (printed digits), not by a ratio tolerance.
   bool orders_match = false, conservation = false;
   json evidence;
@@ -676,20 +612,3 @@ void add_section8_9_checks(check_registry& checks) {
 }
 
 }  // namespace simpson::verify::detail
-
-namespace simpson::verify {
-
-printed_table1 read_table1(const paper_reading& paper) {
-  run_context ctx;
-  ctx.paper = &paper;
-  printed_table1 t;
-  const auto rows = detail::printed_table(ctx);
-  for (std::size_t k = 0; k < rows.size(); ++k) {
-    t.values[k] = rows[k].values;
-    t.digits[k] = rows[k].digits;
-    t.orders[k] = rows[k].order;
-  }
-  return t;
-}
-
-}  // namespace simpson::verify

@@ -4,6 +4,7 @@
 #include "claim_support.hpp"
 #include "claims_unformulated.hpp"
 
+#include <simpson/verify/paper_reading.hpp>
 #include <simpson/verify/printed_table1.hpp>
 #include <simpson/verify/quoted_words.hpp>
 #include <simpson/verify/table1_conventions.hpp>
@@ -163,7 +164,7 @@ claim_result check_experiment_conventions(const run_context& ctx) {
   if (!(period == 1 && q == "sin(omega t)")) return confirmed_if(false, evidence);
   // Whether these are the conventions of the experiment the section reports: do they reproduce Table 1
   // as printed? The convention search (shared with table-values, run once per table) decides.
-  const printed_table1 printed = read_table1(paper_of(ctx));
+  const printed_table1 printed = read_table1(paper_of(ctx).source);
   const convention_search_result search = search_table1(table1_printed(printed.values, printed.orders, &printed.digits));
   evidence["table1"] = {{"stated_reproduce", std::to_string(search.stated.reproduced) + " of " + std::to_string(search.stated.entries.size()) +
                                                  " entries of Table 1 within their printed digits"},

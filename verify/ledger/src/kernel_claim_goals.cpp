@@ -1,8 +1,9 @@
-// The Coq goals of the claims our own kernel proves without a printed formula (printed_check_support.hpp):
+// The Coq goals of the claims our own kernel proves without a printed formula, registered onto their checks (check_registry.hpp):
 // the signs of Section 5 (Δ < 0 on the stable bands), Φ₃'s shear factorization, and Φ₃'s symplecticity and
 // regular denominators, stated on the core's formulas in GiNaC. Our kernel's proofs (Sturm sequences
 // on rational functions of θ) stay the claims' exact evidence; these goals are what coqc checks again.
 
+#include "check_registry.hpp"
 #include "printed_check_support.hpp"
 #include "claims_family.hpp"
 
@@ -130,15 +131,15 @@ proof_goal sign_goal(const std::string& name, const ex& lhs, int sign, std::vect
   return g;
 }
 
-const std::map<std::string, std::function<std::vector<proof_goal>()>>& kernel_claim_goals() {
-  static const std::map<std::string, std::function<std::vector<proof_goal>()>> goals{
-      {"discriminant-negative", discriminant_negative}, {"root-modulus-criterion", root_modulus_bands},
-      {"phi3-symplectic", phi3_symplectic},             {"phi3-explicit", phi3_explicit},
-      {"phi3-shear-factorization", phi3_shear_factorization},
-      {"newmark-unconditional-stability", newmark_unconditional_stability},
-      {"lemma-dimensional-scaling", dimensional_scaling},
-      {"family-symplectic", family_symplectic_goals}};
-  return goals;
+void add_kernel_claim_goals(check_registry& checks) {
+  checks.add_coq_goals("discriminant-negative", discriminant_negative);
+  checks.add_coq_goals("root-modulus", root_modulus_bands);
+  checks.add_coq_goals("phi3-symplectic", phi3_symplectic);
+  checks.add_coq_goals("phi3-explicit", phi3_explicit);
+  checks.add_coq_goals("phi3-shear-factorization", phi3_shear_factorization);
+  checks.add_coq_goals("newmark-stability", newmark_unconditional_stability);
+  checks.add_coq_goals("scaling", dimensional_scaling);
+  checks.add_coq_goals("family-symplectic", family_symplectic_goals);
 }
 
 std::string without_coq_statement(const claim& c, const std::string& otherwise) { return c.coq_none.empty() ? otherwise : c.coq_none; }

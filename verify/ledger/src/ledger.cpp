@@ -41,6 +41,10 @@ const check_registry& registered_checks() {
     add_beyond_checks(all);
     add_beyond_ndof_checks(all);
     add_family_checks(all);
+    add_printed_checks_section2_4(all);
+    add_printed_checks_section5(all);
+    add_printed_checks_section6_7(all);
+    add_kernel_claim_goals(all);
     return all;
   }();
   return checks;
@@ -68,9 +72,9 @@ detail::check_function check_of(const claim_record& r) {
       return run(with_document, ctx);
     };
   }
-  const detail::check_function* check = detail::registered_checks().find(r.check);
+  const detail::registered_check* check = detail::registered_checks().find(r.check);
   if (!check) throw std::logic_error("claims_of: no check is named '" + r.check + "'");
-  return *check;
+  return check->check;
 }
 
 }  // namespace
@@ -80,8 +84,6 @@ std::vector<claim> claims_of(const std::vector<claim_record>& records) {
   for (const claim_record& r : records) {
     claim c{r.id, r.section, r.equation, r.statement, r.methods, r.expected, check_of(r), r.kind, r.follows_from, r.typographical, r.origin};
     c.check_name = r.shape.empty() ? r.check : "shape " + r.shape;
-    c.printed_check = r.printed;
-    c.coq_goals = r.coq_goals;
     c.headline = r.headline;
     c.coq_none = r.coq_none;
     out.push_back(std::move(c));
@@ -91,8 +93,6 @@ std::vector<claim> claims_of(const std::vector<claim_record>& records) {
 
 claims_file_contents read_claims_with_known_names(const std::string& text, const std::string& file) {
   claims_file_contents contents = read_claims_contents(text, file, [](const std::string& field, const std::string& name) {
-    if (field == "printed") return detail::printed_check_names().count(name) > 0;
-    if (field == "coq_goals") return detail::kernel_claim_goals().count(name) > 0;
     if (field == "shape") return detail::proof_shapes().count(name) > 0;
     return detail::registered_checks().find(name) != nullptr;
   });
@@ -132,25 +132,12 @@ const std::vector<claim>& embedded_ledger() {
     } catch (const claims_file_error& e) {
       throw std::logic_error(std::string("the embedded claims file does not read: ") + e.what());  // a harness fault
     }
-    // Every registered check, printed check and set of Coq goals is named by some record: one no
-    // record names is dead code.
-    std::set<std::string> named, printed, goals;
-    for (const claim_record& r : records) {
-      named.insert(r.check);
-      printed.insert(r.printed);
-      goals.insert(r.coq_goals);
-    }
-    const auto unnamed = [](const std::string& what, const std::string& name) {
-      return std::logic_error(what + " '" + name + "' is registered but no record of claims/paper.toml names it");
-    };
+    // Every registered check (its facets with it) is named by some record: one no record names is
+    // dead code.
+    std::set<std::string> named;
+    for (const claim_record& r : records) named.insert(r.check);
     for (const auto& [name, check] : detail::registered_checks().all()) {
-      if (!named.count(name)) throw unnamed("check", name);
-    }
-    for (const std::string& name : detail::printed_check_names()) {
-      if (!printed.count(name)) throw unnamed("printed check", name);
-    }
-    for (const auto& [name, make] : detail::kernel_claim_goals()) {
-      if (!goals.count(name)) throw unnamed("Coq goals", name);
+      if (!named.count(name)) throw std::logic_error("check '" + name + "' is registered but no record of claims/paper.toml names it");
     }
     return claims_of(records);
   }();

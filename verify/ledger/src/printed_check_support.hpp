@@ -44,15 +44,7 @@ struct proof_goal {
 /// decides the lemma on the whole region.
 proof_goal sign_goal(const std::string& name, const GiNaC::ex& lhs, int sign, std::vector<GiNaC::ex> positive, GiNaC::exmap inside);
 
-/// The Coq goals of a claim our own kernel proves without reading a printed formula (signs,
-/// intervals, identities of the core's formulas), by claim id.
-/// The Coq goals of our kernel's proofs, by the name a record gives in `coq_goals`.
-const std::map<std::string, std::function<std::vector<proof_goal>()>>& kernel_claim_goals();
-
-/// The names of the GiNaC checks of printed formulas, which a record gives in `printed`.
-std::set<std::string> printed_check_names();
-
-/// Why a claim has no Coq statement (not in kernel_claim_goals(), or a formula claim whose GiNaC
+/// Why a claim has no Coq statement (its check has no Coq goals, or a formula claim whose GiNaC
 /// check decides no identity): its record's `coq_none`, or `otherwise` when the record gives none.
 std::string without_coq_statement(const claim& c, const std::string& otherwise);
 
@@ -68,17 +60,6 @@ struct printed_outcome {
 };
 
 using printed_check = std::function<printed_outcome(const paper_reading&)>;
-
-struct formula_claim {
-  std::vector<std::string> formulas;  // the printed formulas the claim reads (names of ledger_formulas())
-  printed_check check;
-};
-
-using formula_claim_table = std::map<std::string, formula_claim>;
-
-void add_printed_checks_section2_4(formula_claim_table& claims);
-void add_printed_checks_section5(formula_claim_table& claims);
-void add_printed_checks_section6_7(formula_claim_table& claims);
 
 // ---- helpers ----
 

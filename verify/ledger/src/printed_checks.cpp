@@ -3,6 +3,7 @@
 #include <simpson/verify/ledger.hpp>
 
 #include "coq_export.hpp"
+#include "check_registry.hpp"
 #include "printed_check_support.hpp"
 
 #include <simpson/verify/paper_reading.hpp>
@@ -176,18 +177,15 @@ ex general_force(const ex& x) {
 
 namespace {
 
-using detail::formula_claim_table;
 using detail::printed_outcome;
 
-const formula_claim_table& formula_claims() {
-  static const formula_claim_table claims = [] {
-    formula_claim_table t;
-    detail::add_printed_checks_section2_4(t);
-    detail::add_printed_checks_section5(t);
-    detail::add_printed_checks_section6_7(t);
-    return t;
-  }();
-  return claims;
+/// The registered check that decides `c`, with its facets; null for a claim a proof shape decides.
+const detail::registered_check* bespoke_check(const claim& c) { return detail::registered_checks().find(c.check_name); }
+
+/// The GiNaC check of the printed formulas `c` reads; null when it reads none.
+const detail::registered_check* printed_facet(const claim& c) {
+  const detail::registered_check* check = bespoke_check(c);
+  return check != nullptr && check->printed ? check : nullptr;
 }
 
 /// Two pieces of prose as sentences: a full stop after the first unless it has one.
@@ -250,23 +248,14 @@ void record_certificate(claim_result& result, const detail::coq_export& certific
 
 }  // namespace
 
-namespace detail {
-
-std::set<std::string> printed_check_names() {
-  std::set<std::string> names;
-  for (const auto& [name, entry] : formula_claims()) names.insert(name);
-  return names;
-}
-
-}  // namespace detail
-
-bool reads_printed_formula(const std::string& claim_id) { return !find_claim(claim_id).printed_check.empty(); }
+bool reads_printed_formula(const std::string& claim_id) { return printed_facet(find_claim(claim_id)) != nullptr; }
 
 std::vector<std::string> claims_reading_formula(const std::string& label) {
   std::vector<std::string> ids;
   for (const claim& c : ledger()) {
-    if (c.printed_check.empty()) continue;
-    for (const std::string& name : formula_claims().at(c.printed_check).formulas) {
+    const detail::registered_check* check = printed_facet(c);
+    if (check == nullptr) continue;
+    for (const std::string& name : check->formulas) {
       if (name == label || name.rfind(label + "#", 0) == 0) {
         ids.push_back(c.id);
         break;
@@ -280,7 +269,7 @@ double ginac_derivation_seconds() { return detail::derivation().seconds; }
 
 std::size_t printed_formula_claim_count() {
   std::size_t count = 0;
-  for (const claim& c : ledger()) count += c.printed_check.empty() ? 0 : 1;
+  for (const claim& c : ledger()) count += printed_facet(c) != nullptr ? 1 : 0;
   return count;
 }
 
@@ -317,17 +306,17 @@ claim_result checked_with_quotes(const claim& c, const run_context& ctx) {
 claim_result check_claim(const claim& c, const run_context& ctx) {
   claim_result result = checked_with_quotes(c, ctx);
   if (result.outcome == verdict::text_changed || result.outcome == verdict::undecided) return result;
-  const auto it = c.printed_check.empty() ? formula_claims().end() : formula_claims().find(c.printed_check);
-  if (it == formula_claims().end()) {
+  const detail::registered_check* facet = printed_facet(c);
+  if (facet == nullptr) {
     // The check wrote its own, or why there is none (the floating claims: Gappa's and the lifting
     // lemma; the proof shapes of claims files).
     if (!result.certificate.empty() || !result.certificate_missing.empty()) return result;
-    const auto goals = c.coq_goals.empty() ? detail::kernel_claim_goals().end() : detail::kernel_claim_goals().find(c.coq_goals);
-    if (goals == detail::kernel_claim_goals().end()) {
+    const detail::registered_check* check = bespoke_check(c);
+    if (check == nullptr || !check->coq_goals) {
       result.certificate_missing = detail::without_coq_statement(c, "its exact proof is our kernel's alone: no Coq statement yet");
       return result;
     }
-    record_certificate(result, detail::coq_certificate(c.id, c.statement, goals->second()));
+    record_certificate(result, detail::coq_certificate(c.id, c.statement, check->coq_goals()));
     return result;
   }
   if (!ctx.paper) {
@@ -336,10 +325,10 @@ claim_result check_claim(const claim& c, const run_context& ctx) {
   }
   const paper_reading& reading = *ctx.paper;
   const auto start = std::chrono::steady_clock::now();
-  const printed_outcome outcome = it->second.check(reading);
+  const printed_outcome outcome = facet->printed(reading);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   json printed = json::array();
-  for (const std::string& name : it->second.formulas) {
+  for (const std::string& name : facet->formulas) {
     const printed_formula& f = reading.at(name);
     json parsed = json::array();
     for (const GiNaC::ex& side : f.sides) parsed.push_back(detail::text_of(side));

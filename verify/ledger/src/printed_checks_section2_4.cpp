@@ -1,6 +1,7 @@
 // §2–4 as printed: the discrete action's range, L_d and its scheme, Newmark's momentum, system,
 // matrix and energy; the Gear derivatives and the interpolant's velocity; Simpson's L_h.
 
+#include "check_registry.hpp"
 #include "printed_check_support.hpp"
 
 #include <simpson/classical_lagrangian.hpp>
@@ -239,25 +240,23 @@ printed_outcome simpson_lagrangian_check(const paper_reading& r) {
 
 }  // namespace
 
-void add_printed_checks_section2_4(formula_claim_table& claims) {
-  claims["classical-action-range"] = {{"S_d"}, [](const paper_reading& r) { return action_range(r, "S_d", "S_d"); }};
-  claims["classical-euler-lagrange"] = {{"lagrangien-discret", "schema-ordre-deux"}, classical_euler_lagrange};
-  claims["classical-consistency"] = {{"schema-ordre-deux", "oscillateur-nonlineaire"}, classical_consistency};
-  claims["hamilton-consistency"] = {{"systeme-dynamique-discret-ordre-2#0", "systeme-dynamique-discret-ordre-2#1", "Hamilton dp/dt",
-                                     "Hamilton dq/dt"},
-                                    hamilton_consistency};
-  claims["newmark-momentum"] = {{"p_{j+1} (Newmark)"}, newmark_momentum};
-  claims["newmark-discrete-system"] = {{"systeme-dynamique-discret-ordre-2#0", "systeme-dynamique-discret-ordre-2#1"}, newmark_system};
-  claims["newmark-matrix"] = {{"matrice-symplectique-ordre-2"}, newmark_matrix};
-  claims["newmark-det"] = {{"matrice-symplectique-ordre-2"}, newmark_det};
-  claims["newmark-energy"] = {{"HH-exact", "matrice-symplectique-ordre-2"}, newmark_energy};
-  claims["interpolant-nodal"] = {{"fonctions-de-base#0", "fonctions-de-base#1", "fonctions-de-base#2", "q2t", "q(0)", "q(h/2)", "q(h)"},
-                                 interpolant_nodal};
-  claims["gear-derivatives"] = {{"derivees-gear#0", "derivees-gear#1"}, gear_derivatives};
-  claims["centred-derivative"] = {{"derivee-centree"}, centred_derivative_check};
-  claims["interpolant-derivative"] = {{"dq/dt"}, interpolant_derivative};
-  claims["simpson-lagrangian"] = {{"LLhh"}, simpson_lagrangian_check};
-  claims["simpson-action-range"] = {{"SSdd"}, [](const paper_reading& r) { return action_range(r, "SSdd", "Sigma_d"); }};
+void add_printed_checks_section2_4(check_registry& checks) {
+  checks.add_printed("action-range", {"S_d"}, [](const paper_reading& r) { return action_range(r, "S_d", "S_d"); });
+  checks.add_printed("classical-euler-lagrange", {"lagrangien-discret", "schema-ordre-deux"}, classical_euler_lagrange);
+  checks.add_printed("classical-consistency", {"schema-ordre-deux", "oscillateur-nonlineaire"}, classical_consistency);
+  checks.add_printed("hamilton-consistency", {"systeme-dynamique-discret-ordre-2#0", "systeme-dynamique-discret-ordre-2#1", "Hamilton dp/dt",
+                                     "Hamilton dq/dt"}, hamilton_consistency);
+  checks.add_printed("newmark-momentum", {"p_{j+1} (Newmark)"}, newmark_momentum);
+  checks.add_printed("newmark-discrete-system", {"systeme-dynamique-discret-ordre-2#0", "systeme-dynamique-discret-ordre-2#1"}, newmark_system);
+  checks.add_printed("newmark-matrix", {"matrice-symplectique-ordre-2"}, newmark_matrix);
+  checks.add_printed("newmark-det", {"matrice-symplectique-ordre-2"}, newmark_det);
+  checks.add_printed("newmark-energy", {"HH-exact", "matrice-symplectique-ordre-2"}, newmark_energy);
+  checks.add_printed("basis-nodal", {"fonctions-de-base#0", "fonctions-de-base#1", "fonctions-de-base#2", "q2t", "q(0)", "q(h/2)", "q(h)"}, interpolant_nodal);
+  checks.add_printed("gear", {"derivees-gear#0", "derivees-gear#1"}, gear_derivatives);
+  checks.add_printed("centred", {"derivee-centree"}, centred_derivative_check);
+  checks.add_printed("interpolant-derivative", {"dq/dt"}, interpolant_derivative);
+  checks.add_printed("simpson-lagrangian", {"LLhh"}, simpson_lagrangian_check);
+  checks.add_printed("simpson-action-range", {"SSdd"}, [](const paper_reading& r) { return action_range(r, "SSdd", "Sigma_d"); });
 }
 
 }  // namespace simpson::verify::detail

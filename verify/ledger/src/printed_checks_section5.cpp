@@ -2,6 +2,7 @@
 // L_hʳ, the three-term scheme, the Taylor display, the truncation error, the characteristic
 // equation and the discriminant.
 
+#include "check_registry.hpp"
 #include "printed_check_support.hpp"
 
 #include <simpson/internal_node.hpp>
@@ -278,21 +279,21 @@ GiNaC::ex truncation_series(const symbolic_derivation& d, const GiNaC::ex& norma
   return exact_solution_series(d, normalised_scheme(d, normalised_like), order);
 }
 
-void add_printed_checks_section5(formula_claim_table& claims) {
-  claims["gear-partials"] = {{"dg_l/dq_m", "dg_m/dq_m", "dg_r/dq_m"}, gear_partials};
-  claims["lh-dqm"] = {{"dL_h/dq_m"}, lh_dqm};
-  claims["gr-minus-gl"] = {{"g_r - g_l"}, gr_minus_gl};
-  claims["internal-equation"] = {{"equation-milieu-intervalle"}, internal_equation};
-  claims["internal-equation-second-order"] = {{"equation-milieu-intervalle", "oscillateur-nonlineaire"}, internal_equation_second_order};
-  claims["scheme-consistency"] = {{"schema-ordre-3", "harmonic equation"}, scheme_consistency};
-  claims["qm-harmonic"] = {{"qm-oscillateur-harmonique"}, qm_harmonic};
-  claims["stability-condition"] = {{"stabilite"}, stability_condition};
-  claims["reduced-lagrangian"] = {{"Lagrangien-reduit"}, reduced_lagrangian_check};
-  claims["scheme-order-3"] = {{"schema-ordre-3"}, scheme_order_3};
-  claims["taylor-display"] = {{"Taylor q_{j+1}", "Taylor q_{j-1}"}, taylor_display};
-  claims["truncation-1440"] = {{"truncation-error", "schema-ordre-3"}, truncation};
-  claims["characteristic-equation"] = {{"a", "b", "schema-ordre-3"}, characteristic_equation};
-  claims["discriminant-factorization"] = {{"discriminant-factorized", "a", "b"}, discriminant_factorization};
+void add_printed_checks_section5(check_registry& checks) {
+  checks.add_printed("gear-partials", {"dg_l/dq_m", "dg_m/dq_m", "dg_r/dq_m"}, gear_partials);
+  checks.add_printed("lh-dqm", {"dL_h/dq_m"}, lh_dqm);
+  checks.add_printed("gr-minus-gl", {"g_r - g_l"}, gr_minus_gl);
+  checks.add_printed("internal-equation", {"equation-milieu-intervalle"}, internal_equation);
+  checks.add_printed("internal-second-order", {"equation-milieu-intervalle", "oscillateur-nonlineaire"}, internal_equation_second_order);
+  checks.add_printed("scheme-consistency", {"schema-ordre-3", "harmonic equation"}, scheme_consistency);
+  checks.add_printed("qm-harmonic", {"qm-oscillateur-harmonique"}, qm_harmonic);
+  checks.add_printed("stability-condition", {"stabilite"}, stability_condition);
+  checks.add_printed("reduced-lagrangian", {"Lagrangien-reduit"}, reduced_lagrangian_check);
+  checks.add_printed("scheme-order3", {"schema-ordre-3"}, scheme_order_3);
+  checks.add_printed("taylor-display", {"Taylor q_{j+1}", "Taylor q_{j-1}"}, taylor_display);
+  checks.add_printed("truncation-1440", {"truncation-error", "schema-ordre-3"}, truncation);
+  checks.add_printed("characteristic-equation", {"a", "b", "schema-ordre-3"}, characteristic_equation);
+  checks.add_printed("discriminant-factorization", {"discriminant-factorized", "a", "b"}, discriminant_factorization);
 }
 
 }  // namespace simpson::verify::detail

@@ -1,5 +1,6 @@
 // §6–7 as printed: p_r, Φ₃ (against the end-to-end derivation), det Φ₃, Γ, det Γ, Q_c and H_d.
 
+#include "check_registry.hpp"
 #include "printed_check_support.hpp"
 
 #include <simpson/energy.hpp>
@@ -249,17 +250,17 @@ printed_outcome derivation_phi3(const paper_reading& r) {
 
 }  // namespace
 
-void add_printed_checks_section6_7(formula_claim_table& claims) {
-  claims["momentum-order-3"] = {{"moment-ordre-3"}, momentum_order_3};
-  claims["phi3-elimination"] = {{"Phi3"}, phi3_elimination};
-  claims["phi3-det"] = {{"Phi3"}, phi3_det};
-  claims["derivation-phi3"] = {{"Phi3"}, derivation_phi3};
-  claims["gamma-system"] = {{"Gamma"}, gamma_system};
-  claims["gamma-determinant"] = {{"det Gamma"}, gamma_determinant};
-  claims["gamma-singular"] = {{"Gamma", "det Gamma"}, gamma_singular};
-  claims["conserved-form"] = {{"Gamma", "Q_c"}, conserved_form};
-  claims["hd-proportional"] = {{"hamiltonien-discret", "Q_c", "Phi3"}, hd_proportional};
-  claims["hd-invariance"] = {{"hamiltonien-discret", "Phi3"}, hd_invariance};
+void add_printed_checks_section6_7(check_registry& checks) {
+  checks.add_printed("momentum-order3", {"moment-ordre-3"}, momentum_order_3);
+  checks.add_printed("phi3-elimination", {"Phi3"}, phi3_elimination);
+  checks.add_printed("phi3-det", {"Phi3"}, phi3_det);
+  checks.add_printed("derivation-phi3", {"Phi3"}, derivation_phi3);
+  checks.add_printed("gamma-system", {"Gamma"}, gamma_system);
+  checks.add_printed("gamma-determinant", {"det Gamma"}, gamma_determinant);
+  checks.add_printed("gamma-singular", {"Gamma", "det Gamma"}, gamma_singular);
+  checks.add_printed("conserved-form", {"Gamma", "Q_c"}, conserved_form);
+  checks.add_printed("hd-proportional", {"hamiltonien-discret", "Q_c", "Phi3"}, hd_proportional);
+  checks.add_printed("hd-invariance", {"hamiltonien-discret", "Phi3"}, hd_invariance);
 }
 
 }  // namespace simpson::verify::detail

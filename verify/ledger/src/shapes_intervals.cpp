@@ -3,6 +3,7 @@
 
 #include "shape_support.hpp"
 
+#include "coq_export.hpp"
 #include "printed_check_support.hpp"
 
 #include <simpson/verify/stability_analysis.hpp>
@@ -44,6 +45,21 @@ bool even(const polynomial& p) {
   return true;
 }
 
+/// Our kernel's rational as GiNaC's.
+GiNaC::numeric as_numeric(const rational& r) {
+  std::ostringstream num, den;
+  num << boost::multiprecision::numerator(r);
+  den << boost::multiprecision::denominator(r);
+  return GiNaC::numeric(num.str().c_str()) / GiNaC::numeric(den.str().c_str());
+}
+
+/// Our kernel's polynomial as GiNaC's, in `x`.
+ex as_ginac(const polynomial& p, const GiNaC::symbol& x) {
+  ex out = 0;
+  for (long k = 0; k <= degree(p); ++k) out += as_numeric(p[static_cast<std::size_t>(k)]) * GiNaC::pow(x, k);
+  return out;
+}
+
 /// A function of the condition's variable v alone, for our kernel: every symbol of v but one
 /// eliminated by v's scaling (s = t / (v / s) for a symbol s of v with exponent 1), its numerator
 /// and denominator as polynomials in t = v, or in x = v² when both are even (roots exact more often).
@@ -59,6 +75,16 @@ struct one_variable {
     return value < 0 ? -1 : value > 0 ? 1 : 0;
   }
   std::string text(const positive_root& r) const { return in_square ? omega_h_text(r) : root_text(r); }
+  /// What Coq is asked (coq_export.hpp): `sign` times the function is positive on 0 < v < c, stated
+  /// in the kernel's variable (x = v² when both polynomials are even, else t = v) with the end
+  /// `end` (c² or c) rational. The reduction of the printed expression to this one-variable function
+  /// (v's scaling) is GiNaC's; nra proves each factor's sign from the two bounds.
+  proof_goal sign_goal_on(const std::string& name, int sign, const rational& end) const {
+    static const GiNaC::symbol x("x"), t("t");
+    const GiNaC::symbol& u = in_square ? x : t;
+    const GiNaC::numeric c = as_numeric(end);
+    return sign_goal(name, as_ginac(numerator, u) / as_ginac(denominator, u), sign, {u, c - u}, GiNaC::exmap{{u, c / 2}});
+  }
   /// The printed end c as our kernel's rational (c, or c² in x), when it is one.
   std::optional<rational> exact(const ex& c) const {
     const ex value = GiNaC::expand(in_square ? c * c : c);
@@ -113,6 +139,14 @@ ex interval_end(const referenced_formula& condition, const ex& v) {
   return high;
 }
 
+/// The Coq certificate of `goals` into `result`, or why there is none.
+void certify(claim_result& result, const shape_call& call, const std::vector<proof_goal>& goals) {
+  const coq_export certificate = coq_certificate(call.claim_id, call.statement, goals);
+  result.certificate = certificate.text;
+  result.certificate_lemmas = certificate.lemmas;
+  result.certificate_missing = certificate.not_exported;
+}
+
 }  // namespace
 
 claim_result stability_interval_shape(const shape_call& call, const run_context& ctx) {
@@ -123,7 +157,6 @@ claim_result stability_interval_shape(const shape_call& call, const run_context&
   const ex v = read.formula("variable");
   claim_result result;
   result.printed = read.printed();
-  result.certificate_missing = "a stability set: our kernel's Sturm sequences decide it; no Coq statement for this shape yet";
   // det = 1, in both kernels: then the map is power-bounded exactly where |trace| < 2.
   const ex det = m.determinant();
   const kernel_decision det_own = kernel_decides_zero(det - 1);
@@ -178,10 +211,17 @@ claim_result stability_interval_shape(const shape_call& call, const run_context&
       {"boundary_polynomial", to_string(excess->numerator, excess->in_square ? "x" : "t") + (excess->in_square ? " (x = (" + var + ")^2)" : "")},
       {"stable_bands", bands},
       {"printed_end", how}};
+  // Coq: det = 1, and trace² − 4 < 0 on the printed band (holds) or on the first band (the
+  // correction's), when its end is rational. That the band ends there is our kernel's alone.
+  std::vector<proof_goal> goals{decided("det", determinant_2x2(m), 1)};  // a d − b c as written, not GiNaC's value
   if (stable_near_zero && equal) {
+    goals.push_back(excess->sign_goal_on("stable_band", -1, *excess->exact(high)));
+    certify(result, call, goals);
     result.outcome = verdict::holds;
     return result;
   }
+  if (stable_near_zero && excess->ends.front().exact()) goals.push_back(excess->sign_goal_on("first_band", -1, excess->ends.front().low));
+  certify(result, call, goals);
   result.outcome = verdict::erratum;
   result.correction = bands.empty() ? "never stable for " + var + " > 0" : "stable exactly for " + fmt::format("{}", fmt::join(bands, ", "));
   result.note = "As printed: " + folded_space(condition.tex) + " is not the first stable band of " + reference_of(call, "map") +
@@ -200,7 +240,6 @@ claim_result sign_on_interval_shape(const shape_call& call, const run_context& c
   const int want = claimed == "positive" ? 1 : -1;
   claim_result result;
   result.printed = read.printed();
-  result.certificate_missing = "a sign on an interval: our kernel's Sturm sequences decide it; no Coq statement for this shape yet";
   const ex high = interval_end(condition, v);
   const std::optional<one_variable> g = in_variable(f, v);
   if (!g) {
@@ -241,9 +280,19 @@ claim_result sign_on_interval_shape(const shape_call& call, const run_context& c
          return all;
        }()},
       {"interval_end", fmt::format("{} = {} (exact)", g->in_square ? "c^2" : "c", c->str())}};
+  // Coq: the sign on the printed interval (holds), or the correction's: the sign found on (0, c),
+  // or on (0, r) up to the first root or pole r when it is rational.
   if (!inside && sign == want) {
+    certify(result, call, {g->sign_goal_on("sign", want, *c)});
     result.outcome = verdict::holds;
     return result;
+  }
+  if (!inside) {
+    certify(result, call, {g->sign_goal_on("sign", sign, *c)});
+  } else if (inside->exact()) {
+    certify(result, call, {g->sign_goal_on("sign_before_root", sign, inside->low)});
+  } else {
+    result.certificate_missing = "the sign changes at an irrational root, which the certificate cannot name as a bound; our kernel's Sturm sequences decide it";
   }
   result.outcome = verdict::erratum;
   const std::string sign_text = sign > 0 ? "positive" : "negative";

@@ -93,10 +93,12 @@ formula_reference parse_reference(const std::string& text) {
     if (r.key.find_first_not_of(" \t") == std::string::npos) throw std::invalid_argument("an empty TeX fragment '$$'");
     return r;
   }
-  if (text.rfind("inline:", 0) == 0) {
-    r.where = formula_reference::kind::inline_formula;
-    r.key = text.substr(7);
-    if (r.key.find_first_not_of(" \t") == std::string::npos) throw std::invalid_argument("'inline:' names no phrase");
+  for (const auto& [prefix, kind] : {std::pair<std::string, formula_reference::kind>{"inline:", formula_reference::kind::inline_formula},
+                                     {"after:", formula_reference::kind::display_after}}) {
+    if (text.rfind(prefix, 0) != 0) continue;
+    r.where = kind;
+    r.key = text.substr(prefix.size());
+    if (r.key.find_first_not_of(" \t") == std::string::npos) throw std::invalid_argument("'" + prefix + "' names no phrase");
     return r;
   }
   std::string rest = text;
@@ -114,7 +116,7 @@ formula_reference parse_reference(const std::string& text) {
     rest.resize(hash);
   }
   if (rest.empty() || rest.find_first_of("{}$\\ ") != std::string::npos) {
-    throw std::invalid_argument("'" + text + "' is not a reference (a \\label, label#k, label:lhs, inline:phrase, or $TeX$)");
+    throw std::invalid_argument("'" + text + "' is not a reference (a \\label, label#k, label:lhs, inline:phrase, after:phrase, or $TeX$)");
   }
   r.key = rest;
   return r;
@@ -131,6 +133,8 @@ referenced_formula read_reference(const paper_source& document, const std::map<s
     tex_display display;
     if (r.where == formula_reference::kind::labelled) {
       display = labelled_display(document, r.key);
+    } else if (r.where == formula_reference::kind::display_after) {
+      display = find_anchored(document, r.key);
     } else {
       display = find_inline(document, r.key);
     }

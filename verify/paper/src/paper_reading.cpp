@@ -4,7 +4,7 @@
 
 namespace simpson::verify {
 
-const std::vector<formula_location>& ledger_formulas() {
+const std::vector<formula_location>& printed_formula_locations() {
   using k = formula_location::kind;
   static const std::vector<formula_location> formulas{
       // §2
@@ -119,7 +119,7 @@ paper_reading read_paper(const paper_source& paper) {
   reading.origin = paper.origin;
   reading.sha256 = paper.sha256;
   reading.source = paper;
-  for (const formula_location& where : ledger_formulas()) reading.formulas.emplace(where.name, read_formula(paper, where));
+  for (const formula_location& where : printed_formula_locations()) reading.formulas.emplace(where.name, read_formula(paper, where));
   return reading;
 }
 

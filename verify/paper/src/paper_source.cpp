@@ -167,6 +167,10 @@ tex_display find_anchored(const paper_source& paper, const std::string& anchor) 
   if (start == std::string::npos) {
     throw std::invalid_argument("paper '" + paper.origin + "': no display after the anchor '" + anchor + "'");
   }
+  if (paper.text.compare(start, 6, "\\begin") == 0) {  // \begin{equation} or \begin{equation*}: after its '}'
+    const std::size_t close = paper.text.find('}', start);
+    length = close == std::string::npos ? length : close + 1 - start;
+  }
   return display_from(paper, start + length, "anchor '" + anchor + "'");
 }
 

@@ -4,6 +4,7 @@
 
 #include <simpson/verify/paper_source.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <vector>
 
@@ -86,10 +87,15 @@ std::map<std::string, tex_macro> defined_macros(const std::string& text) {
       k = skip_space(text, close + 1);
       if (k < text.size() && text[k] == '[') throw bad("an optional argument with a default is not supported");
     }
-    if (def) {  // \def\name#1#2{...}
-      while (k + 1 < text.size() && text[k] == '#' && std::isdigit(static_cast<unsigned char>(text[k + 1])) != 0) {
-        ++macro.arguments;
-        k += 2;
+    if (def) {  // \def\name#1#2{...}, or with delimiters in the parameter text: \def\name*#1{...}
+      while (k < text.size() && text[k] != '{') {
+        if (text[k] == '#' && k + 1 < text.size() && std::isdigit(static_cast<unsigned char>(text[k + 1])) != 0) {
+          ++macro.arguments;
+          k += 2;
+        } else {
+          macro.delimited = true;
+          k += text[k] == '\\' ? std::max<std::size_t>(control_sequence(text, k).size(), 1) : 1;
+        }
       }
     }
     std::size_t end = 0;
@@ -114,6 +120,10 @@ std::string expand_macros(const std::string& tex, const std::map<std::string, te
       continue;
     }
     if (++expansions > most_expansions) throw std::invalid_argument("the macro " + command + " expands without end");
+    if (it->second.delimited) {
+      throw std::invalid_argument("the macro " + command + " (line " + std::to_string(it->second.line) +
+                                  ") has delimiters in its parameter text, which the reader does not expand");
+    }
     std::size_t k = at + command.size();
     std::vector<std::string> arguments;
     for (int a = 1; a <= it->second.arguments; ++a) {

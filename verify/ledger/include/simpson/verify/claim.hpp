@@ -131,8 +131,6 @@ struct claim {
   /// From the claim's record (claims_file.hpp): the name of its check, whether it is a headline
   /// claim (the report's speed line), and why no Coq statement is exported when none is.
   std::string check_name = {};
-  std::string printed_check = {};  // the GiNaC check of the printed formulas it reads (printed_checks.hpp), if any
-  std::string coq_goals = {};      // the Coq goals of our kernel's proof (kernel_claim_goals.cpp), if any
   bool headline = false;
   std::string coq_none = {};
 };

@@ -31,8 +31,6 @@ struct claim_record {
   std::string check;      // the name of the bespoke check that decides it, or
   std::string shape;      // the name of the proof shape that decides it (proof_shapes.hpp), with
   std::map<std::string, shape_argument> with;  // its arguments
-  std::string printed;    // the name of the GiNaC check of the printed formulas it reads, if any
-  std::string coq_goals;  // the name of the Coq goals of our kernel's proof, if any
   verdict expected = verdict::holds;
   finding kind = finding::none;
   std::string follows_from;
@@ -77,7 +75,7 @@ struct claims_file_contents {
 /// known and of its type, the required ones present (`expected` may be left out: holds), ids unique, verdicts, classes and origins
 /// spelled as the reports spell them, `finding` given exactly when the expected verdict is a
 /// finding, `follows_from` naming another record with no cycle, exactly one of `check` and `shape`,
-/// and `check`, `shape`, `printed` and `coq_goals` names that `known(field, name)` accepts. Throws
+/// and `check` and `shape` names that `known(field, name)` accepts. Throws
 /// claims_file_error at the first fault.
 using known_name = std::function<bool(const std::string& field, const std::string& name)>;
 claims_file_contents read_claims_contents(const std::string& text, const std::string& file, const known_name& known);

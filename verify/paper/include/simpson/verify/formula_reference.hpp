@@ -1,13 +1,14 @@
 #pragma once
 // A formula a claims-file record names, read from the document's LaTeX: by the \label of its
 // display, which equation of the display, which side; or by the inline formula at a phrase of the
-// prose; or a TeX fragment of the record itself (for a constant such as 1, or an expression of the
+// prose, or the first display after one; or a TeX fragment of the record itself (for a constant such as 1, or an expression of the
 // declared symbols). The document's own macros are expanded first.
 //
 //   "phi"             the last side of the first equation of the display labelled phi
 //   "phi#2"           ... of its second equation
 //   "phi:lhs"         the first side (phi#2:lhs for the second equation)
 //   "inline:stable for"  the inline formula $...$ at (or first after) the phrase "stable for"
+//   "after:can be factorized"  the first display after the phrase (for an unlabelled display)
 //   "$\omega h$"      the TeX fragment itself
 
 #include <simpson/verify/paper_source.hpp>
@@ -23,7 +24,7 @@
 namespace simpson::verify {
 
 struct formula_reference {
-  enum class kind { labelled, inline_formula, literal };
+  enum class kind { labelled, inline_formula, display_after, literal };
   kind where = kind::labelled;
   std::string key;   // the label, the phrase, or the TeX
   int equation = 1;  // 1-based, of display_equations()

@@ -35,7 +35,7 @@ struct formula_location {
 };
 
 /// The formulas the ledger reads, in the order of the paper.
-const std::vector<formula_location>& ledger_formulas();
+const std::vector<formula_location>& printed_formula_locations();
 
 struct paper_reading {
   std::string origin;  // "embedded" or the file read
@@ -45,7 +45,7 @@ struct paper_reading {
   const printed_formula& at(const std::string& name) const;
 };
 
-/// Reads every formula of ledger_formulas() from the paper, in paper_symbols(). Throws
+/// Reads every formula of printed_formula_locations() from the paper, in paper_symbols(). Throws
 /// std::invalid_argument with one line naming the paper, the label (or anchor), the line and the
 /// token when one is missing or does not parse.
 paper_reading read_paper(const paper_source& paper);

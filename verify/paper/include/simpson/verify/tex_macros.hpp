@@ -13,6 +13,9 @@ struct tex_macro {
   int arguments = 0;  // #1 ... #9
   std::string body;
   int line = 0;       // where it is defined
+  /// A \def whose parameter text has delimiters (\def\section*#1{}): read, so that the source
+  /// reads, but never expanded: a formula that uses it does not read.
+  bool delimited = false;
 };
 
 /// The macros `text` defines, by name with its backslash ("\\om"); a later definition replaces an

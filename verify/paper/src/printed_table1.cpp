@@ -1,0 +1,67 @@
+// Table 1 as printed: see printed_table1.hpp.
+
+#include <simpson/verify/printed_table1.hpp>
+
+#include <simpson/verify/quoted_sentence.hpp>
+
+#include <algorithm>
+#include <optional>
+#include <utility>
+
+namespace simpson::verify {
+namespace {
+
+/// The TeX of Table 1's first two cells for each row, in the order of published_rows().
+constexpr std::array<const char*, 8> table_row_labels{
+    "Newmark & momentum",         "Symplectic Simpson & momentum",
+    "Newmark & state",            "Symplectic Simpson & state",
+    "Newmark & energy (\\ref{HH-exact})", "Symplectic Simpson & energy (\\ref{HH-exact})",
+    "Newmark & energy (\\ref{hamiltonien-discret})", "Symplectic Simpson & energy (\\ref{hamiltonien-discret})"};
+
+/// A number printed as "1.91 10^{0}" or "1.91 10^{-1}": its value (as the literal 1.91e-1 reads,
+/// correctly rounded) and its significant digits; none when the words are not so.
+std::optional<std::pair<double, int>> table_number(const std::string& words) {
+  const std::size_t space = words.find(' ');
+  const std::size_t power = words.find("10^{");
+  if (space == std::string::npos || power == std::string::npos || words.back() != '}') return std::nullopt;
+  const std::string mantissa = words.substr(0, space), exponent = words.substr(power + 4, words.size() - power - 5);
+  if (mantissa.empty() || mantissa.find_first_not_of("0123456789.") != std::string::npos) return std::nullopt;
+  try {
+    std::size_t used = 0;
+    const int e = std::stoi(exponent, &used);
+    if (used != exponent.size()) return std::nullopt;
+    std::string digits = mantissa;
+    digits.erase(std::remove(digits.begin(), digits.end(), '.'), digits.end());
+    digits.erase(0, std::min(digits.find_first_not_of('0'), digits.size()));
+    return std::make_pair(std::stod(mantissa + "e" + std::to_string(e)), std::max<int>(1, static_cast<int>(digits.size())));
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace
+
+printed_table1 read_table1(const paper_source& paper, json* quotes) {
+  printed_table1 table;
+  for (std::size_t k = 0; k < table_row_labels.size(); ++k) {
+    const quoted_sentence row =
+        quote_sentence(paper, std::string(table_row_labels[k]) + " & {n_ten} & {n_twenty} & {n_forty} & {order} \\\\", quotes);
+    const char* holes[] = {"n_ten", "n_twenty", "n_forty"};
+    for (std::size_t c = 0; c < 3; ++c) {
+      const auto v = table_number(row.words(holes[c]));
+      if (!v) row.unparsed(holes[c], "a number printed as 'm 10^{e}'");
+      row.record(holes[c], row.words(holes[c]));
+      table.values[k][c] = v->first;
+      table.digits[k][c] = v->second;
+    }
+    if (row.words("order") == "exact") {
+      row.record("order", "exact");
+      table.orders[k] = "exact";
+    } else {
+      table.orders[k] = std::to_string(row.number("order"));
+    }
+  }
+  return table;
+}
+
+}  // namespace simpson::verify
