@@ -45,7 +45,7 @@ TEST(ClaimsFile, TheEmbeddedFileIsTheLedgerRecordForRecord) {
   std::set<std::string> headline;
   for (std::size_t k = 0; k < records.size(); ++k) {
     EXPECT_EQ(records[k].id, ledger()[k].id);
-    EXPECT_EQ(records[k].check, ledger()[k].check_name);
+    EXPECT_EQ(records[k].shape.empty() ? records[k].check : "shape " + records[k].shape, ledger()[k].check_name);
     EXPECT_EQ(records[k].expected, ledger()[k].expected) << records[k].id;
     if (records[k].headline) headline.insert(records[k].id);
   }
@@ -57,11 +57,16 @@ TEST(ClaimsFile, TheEmbeddedFileIsTheLedgerRecordForRecord) {
 TEST(ClaimsFile, ACheckBringsItsFacetsUnderItsOneName) {
   // The record names the check alone; the printed formulas it reads and its Coq goals are the
   // check's, registered with it (check_registry.hpp).
-  const detail::registered_check* det = detail::registered_checks().find("phi3-det");
+  const detail::registered_check* det = detail::registered_checks().find("newmark-det");
   ASSERT_NE(det, nullptr);
-  EXPECT_EQ(det->formulas, (std::vector<std::string>{"Phi3"}));
-  EXPECT_TRUE(reads_printed_formula("phi3-det"));
+  EXPECT_EQ(det->formulas, (std::vector<std::string>{"matrice-symplectique-ordre-2"}));
+  EXPECT_TRUE(reads_printed_formula("newmark-det"));
   EXPECT_FALSE(det->coq_goals);
+  // A claim a proof shape decides names no check: it reads the displays its arguments name.
+  EXPECT_EQ(detail::registered_checks().find("phi3-det"), nullptr);
+  EXPECT_EQ(find_claim("phi3-det").check_name, "shape determinant");
+  EXPECT_EQ(find_claim("hd-invariance").labels_read, (std::vector<std::string>{"Phi3", "hamiltonien-discret"}));
+  EXPECT_TRUE(reads_printed_formula("phi3-det"));
   const detail::registered_check* explicit_map = detail::registered_checks().find("phi3-explicit");
   ASSERT_NE(explicit_map, nullptr);
   EXPECT_TRUE(explicit_map->coq_goals);

@@ -4,6 +4,7 @@
 // pass a wrong statement; a bad record is named with its line and argument.
 
 #include "kernel_zero.hpp"
+#include "printed_check_support.hpp"
 #include "proof_shapes.hpp"
 
 #include <simpson/verify/claims_file.hpp>
@@ -199,10 +200,12 @@ TEST_F(ShapesOnADocument, DeterminantAndSymplectic) {
   EXPECT_EQ(run("symplectic", R"({ matrix = "map" })").outcome, verdict::holds);
   // Psi's (2,1) entry lacks its factor: det = 1 + omega^4 h^4 / 4 (its trace is Phi's, so a check
   // of the trace alone would pass it).
+  // Properties of the printed matrix: false, they fail (no corrected matrix), the value in the note.
   const claim_result det = run("determinant", R"({ matrix = "mapwrong", equals = "one" })");
-  EXPECT_EQ(det.outcome, verdict::erratum);
-  EXPECT_NE(det.correction.find("det (mapwrong) = "), std::string::npos) << det.correction;
-  EXPECT_EQ(run("symplectic", R"({ matrix = "mapwrong" })").outcome, verdict::erratum);
+  EXPECT_EQ(det.outcome, verdict::fails);
+  EXPECT_TRUE(det.correction.empty());
+  EXPECT_NE(det.note.find("det (mapwrong) = "), std::string::npos) << det.note;
+  EXPECT_EQ(run("symplectic", R"({ matrix = "mapwrong" })").outcome, verdict::fails);
 }
 
 TEST_F(ShapesOnADocument, Conserved) {
@@ -211,6 +214,21 @@ TEST_F(ShapesOnADocument, Conserved) {
   const claim_result wrong = run("conserved", R"({ map = "map", function = "energywrong", state = ['q', 'p'] })");
   EXPECT_EQ(wrong.outcome, verdict::erratum);
   EXPECT_NE(wrong.evidence["exact"]["own"].get<std::string>().find("fails"), std::string::npos) << wrong.evidence.dump();
+  // Not conserved: the correction is the map's conserved quadratic form with the printed coefficient
+  // of p^2 (keep), i.e. the modified energy "energy", not a restatement of the change in one step.
+  const claim_result kept = run("conserved", R"({ map = "map", function = "energywrong", state = ['q', 'p'], keep = ['p'] })");
+  EXPECT_EQ(kept.outcome, verdict::erratum);
+  EXPECT_EQ(kept.correction.rfind("the quadratic form (map) conserves, with the coefficient of p^2 that (energywrong) prints: ", 0), 0u)
+      << kept.correction;
+  const GiNaC::ex m = paper_symbols()["m"], w = paper_symbols()["omega"], h = paper_symbols()["h"], q = paper_symbols()["q"],
+                  p = paper_symbols()["p"];
+  EXPECT_EQ(kept.evidence["corrected"]["conserved_form"].get<std::string>(),
+            detail::text_of(GiNaC::normal(p * p / (2 * m) + m * w * w / 2 * (1 - w * w * h * h / 4) * q * q))) << kept.evidence.dump();
+  // Left out, keep is the first of the state: q^2's coefficient kept, p^2's modified.
+  EXPECT_EQ(wrong.evidence["corrected"]["conserved_form"].get<std::string>(),
+            detail::text_of(GiNaC::normal(p * p / (2 * m * (1 - w * w * h * h / 4)) + m * w * w / 2 * q * q))) << wrong.evidence.dump();
+  // A map with det != 1 conserves no quadratic form: no correction, the claim fails.
+  EXPECT_EQ(run("conserved", R"({ map = "mapwrong", function = "energy", state = ['q', 'p'] })").outcome, verdict::fails);
 }
 
 TEST_F(ShapesOnADocument, EulerLagrange) {
@@ -337,6 +355,9 @@ TEST(ShapeRecords, BadRecordsAreNamedWithTheirLineAndArgument) {
             std::string::npos);
   EXPECT_NE(error_of("stability-interval", R"({ map = "map", variable = '$q h$', condition = "inline:Stable for" })")
                 .find("field 'with.variable': the symbol 'q' is not declared positive"),
+            std::string::npos);
+  EXPECT_NE(error_of("conserved", R"({ map = "map", function = "energy", state = ['q', 'p'], keep = ['h'] })")
+                .find("field 'with.keep': 'h' is not one of the symbols of 'state'"),
             std::string::npos);
   EXPECT_NE(error_of("conserved", R"({ map = "map", function = "energy", state = ['q', 'p', 'a'] })")
                 .find("field 'with.state': 3 symbols for the 2 rows of 'map'"),

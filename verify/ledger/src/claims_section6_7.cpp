@@ -135,13 +135,6 @@ claim_result check_phi3_explicit(const run_context& ctx) {
                            : "");
 }
 
-claim_result check_phi3_det(const run_context& ctx) {
-  const proof exact = prove_zero(std::string(unit_reduction) + "; det Phi_3 - 1", determinant(simpson_map(unit_oscillator_in_theta())) - 1);
-  bool within = false;
-  const json numeric = recheck_with(ctx, "phi3-det", [](const auto& par, const auto&) { return simpson_map_determinant_check(par); }, within);
-  return identity(exact, within, numeric);
-}
-
 claim_result check_phi3_symplectic(const run_context& ctx) {
   const quoted_sentence said = quote(ctx, "and in consequence the scheme is {property}.");
   const std::string stated = said.choice("property", {{"symplectic", "symplectic"}, {"not symplectic", "not symplectic"}});
@@ -380,18 +373,6 @@ claim_result check_hd_proportional(const run_context&) {
                      "momentum part p^2/(2m).");
 }
 
-claim_result check_hd_invariance(const run_context& ctx) {
-  const proof exact = prove_zero_on_grid(std::string(unit_reduction) + "; H_d(Phi_3 y) - H_d(y), a quadratic form in y", {"p", "q"}, 2,
-                                         [&](const auto& v) {
-                                           using S = std::decay_t<decltype(v[0])>;
-                                           const auto par = theta_oscillator<S>();
-                                           const phase_point<S> y{v[0], v[1]};
-                                           return S(discrete_energy(par, simpson_map(par) * y) - discrete_energy(par, y));
-                                         });
-  bool within = false;
-  const json numeric = recheck_with(ctx, "hd-invariance", [](const auto& par, const auto& y) { return discrete_energy_step_check(par, y); }, within);
-  return identity(exact, within, numeric);
-}
 
 }  // namespace
 
@@ -400,14 +381,12 @@ void add_section6_7_checks(check_registry& checks) {
   checks.add("phi3-elimination", check_phi3_elimination);
   checks.add("derivation-phi3", check_derivation_phi3);
   checks.add("phi3-explicit", check_phi3_explicit);
-  checks.add("phi3-det", check_phi3_det);
   checks.add("phi3-symplectic", check_phi3_symplectic);
   checks.add("gamma-system", check_gamma_system);
   checks.add("gamma-determinant", check_gamma_determinant);
   checks.add("gamma-singular", check_gamma_singular);
   checks.add("conserved-form", check_conserved_form);
   checks.add("hd-proportional", check_hd_proportional);
-  checks.add("hd-invariance", check_hd_invariance);
 }
 
 }  // namespace simpson::verify::detail

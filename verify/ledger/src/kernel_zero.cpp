@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -65,6 +66,72 @@ symbolic evaluate(const GiNaC::ex& e, const std::map<std::string, symbolic>& val
   throw outside_kernel("'" + text.str() + "'");
 }
 
+/// A bound on the degree in one symbol of the numerator of an expression written as one fraction
+/// the way the tree builds it, and its denominator as the factors the tree divides by (each keyed by
+/// its text, with its multiplicity and its degree): a sum takes the least common multiple of its
+/// terms' denominators (the same factor twice is one factor), a product adds, an integer power
+/// multiplies or turns its base into a denominator. From the tree alone: GiNaC's normal form is not
+/// consulted.
+struct degree_bound {
+  long numerator = 0;
+  std::map<std::string, std::pair<long, long>> denominator;  // factor -> (multiplicity, degree)
+  long denominator_degree() const {
+    long d = 0;
+    for (const auto& [factor, md] : denominator) d += md.first * md.second;
+    return d;
+  }
+};
+
+std::string text_of_factor(const GiNaC::ex& e) {
+  std::ostringstream out;
+  out << e;
+  return out.str();
+}
+
+degree_bound bound_in(const GiNaC::ex& e, const std::string& name) {
+  if (GiNaC::is_a<GiNaC::symbol>(e)) return {GiNaC::ex_to<GiNaC::symbol>(e).get_name() == name ? 1 : 0, {}};
+  if (GiNaC::is_a<GiNaC::add>(e)) {
+    std::vector<degree_bound> terms;
+    degree_bound out;
+    for (const GiNaC::ex& term : e) {
+      terms.push_back(bound_in(term, name));
+      for (const auto& [factor, md] : terms.back().denominator) {
+        auto& lcm = out.denominator[factor];
+        lcm = {std::max(lcm.first, md.first), md.second};
+      }
+    }
+    const long lcm_degree = out.denominator_degree();
+    for (const degree_bound& t : terms) out.numerator = std::max(out.numerator, t.numerator + lcm_degree - t.denominator_degree());
+    return out;
+  }
+  if (GiNaC::is_a<GiNaC::mul>(e)) {
+    degree_bound out;
+    for (const GiNaC::ex& factor : e) {
+      const degree_bound f = bound_in(factor, name);
+      out.numerator += f.numerator;
+      for (const auto& [key, md] : f.denominator) {
+        auto& sum = out.denominator[key];
+        sum = {sum.first + md.first, md.second};
+      }
+    }
+    return out;
+  }
+  if (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1)) && GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_integer()) {
+    const degree_bound base = bound_in(e.op(0), name);
+    const long k = GiNaC::ex_to<GiNaC::numeric>(e.op(1)).to_long();
+    degree_bound out;
+    if (k >= 0) {
+      out.numerator = k * base.numerator;
+      for (const auto& [key, md] : base.denominator) out.denominator[key] = {k * md.first, md.second};
+    } else {  // (N/D)^-k = D^k / N^k: the base's numerator, as a factor of its own
+      out.numerator = -k * base.denominator_degree();
+      out.denominator[text_of_factor(e.op(0))] = {-k, base.numerator};
+    }
+    return out;
+  }
+  return {};  // a number (anything else is outside the kernel: evaluate says so)
+}
+
 struct entry_decision {
   kernel_decision::result outcome = kernel_decision::result::zero;
   std::string evidence;
@@ -79,16 +146,15 @@ entry_decision decide_entry(const GiNaC::ex& e, std::size_t most_points) {
     for (const GiNaC::symbol& t : symbols) seen = seen || t.get_name() == s.get_name();
     if (!seen) symbols.push_back(s);
   }
-  // The premise, from GiNaC: the numerator's degree in each symbol, and the denominator.
-  const GiNaC::ex normal = GiNaC::normal(e);
-  const GiNaC::ex numerator = GiNaC::expand(GiNaC::numer(normal)), denominator = GiNaC::expand(GiNaC::denom(normal));
+  // By name: GiNaC's order of a tree's operands is not the same from run to run.
+  std::sort(symbols.begin(), symbols.end(), [](const GiNaC::symbol& a, const GiNaC::symbol& b) { return a.get_name() < b.get_name(); });
+  // The premise, from the tree itself (bound_in): the degree of its numerator in each symbol. The
+  // symbol of the highest bound stays free (our rational functions are in it); the others take a
+  // grid of that many values plus one.
   std::vector<int> degrees;
   std::size_t theta = 0;
   for (std::size_t k = 0; k < symbols.size(); ++k) {
-    if (!numerator.is_polynomial(symbols[k]) || !denominator.is_polynomial(symbols[k])) {
-      throw outside_kernel("not a rational function of " + symbols[k].get_name());
-    }
-    degrees.push_back(numerator.degree(symbols[k]));
+    degrees.push_back(static_cast<int>(bound_in(e, symbols[k].get_name()).numerator));
     if (degrees[k] > degrees[theta]) theta = k;
   }
   std::size_t points = 1;
@@ -119,16 +185,12 @@ entry_decision decide_entry(const GiNaC::ex& e, std::size_t most_points) {
         point += (point.empty() ? "" : ", ") + symbols[k].get_name() + " = " + v.str();
       }
       try {
-        if (evaluate(denominator, values).is_zero()) {
-          defined = false;
-          break;
-        }
         if (!evaluate(e, values).is_zero()) {
           return {kernel_decision::result::nonzero,
                   fmt::format("not zero at {}{}", point.empty() ? "" : point + ", ",
                               symbols.empty() ? "a constant" : "as a function of " + symbols[theta].get_name())};
         }
-      } catch (const std::domain_error&) {  // a pole of the expression as written at this point
+      } catch (const std::domain_error&) {  // a pole of the expression as written (of a denominator in it) at this point
         defined = false;
         break;
       }
@@ -143,7 +205,7 @@ entry_decision decide_entry(const GiNaC::ex& e, std::size_t most_points) {
     if (defined) {
       return {kernel_decision::result::zero,
               symbols.empty() ? "zero (a constant)"
-                              : fmt::format("zero as a rational function of {} on a grid of {} point(s) ({}; degrees from GiNaC's numerator)",
+                              : fmt::format("zero as a rational function of {} on a grid of {} point(s) ({}; degrees bounded from the expression as read)",
                                             symbols[theta].get_name(), points, grid.empty() ? "no other symbol" : grid)};
     }
   }

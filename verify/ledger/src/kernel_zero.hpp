@@ -3,9 +3,12 @@
 // GiNaC's normal form: the expression tree as read (not normalised) is evaluated in our exact
 // arithmetic (rational functions of one variable θ over cpp_rational) on a grid of rational values
 // of every other symbol. The grid lemma: a polynomial of degree ≤ d_i in each grid variable that
-// vanishes on d_i + 1 values of each is zero. Its premise is computed by GiNaC (the degrees of the
-// numerator of the normal form, and its denominator, evaluated by our kernel at each grid point,
-// not zero there), as for the ledger's other grid proofs (grid_lemma.hpp).
+// vanishes on d_i + 1 values of each is zero. Its premise is our kernel's too: d_i bounds the degree
+// of the numerator the tree builds (a sum over the product of its terms' denominators, products
+// adding degrees, integer powers multiplying them), read from the tree, not from GiNaC's normal
+// form; and every denominator in the tree is nonzero at each grid point, or the evaluation there
+// stops (a pole) and the grid is moved. GiNaC is not consulted, so a wrong normal form cannot make
+// our kernel's grid too small.
 
 #include <ginac/ginac.h>
 

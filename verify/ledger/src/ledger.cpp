@@ -1,6 +1,7 @@
 #include <simpson/verify/ledger.hpp>
 
 #include <simpson/verify/claims_file.hpp>
+#include <simpson/verify/formula_reference.hpp>
 
 #include "check_registry.hpp"
 #include "proof_shapes.hpp"
@@ -16,6 +17,7 @@
 #include "claims_family.hpp"
 #include "claims_unformulated.hpp"
 
+#include <chrono>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -60,6 +62,22 @@ std::optional<claims_document>& installed_document_storage() {
   return document;
 }
 
+/// The labels of the displays a shape record reads (its formula, matrix, condition and definition
+/// arguments that name a \label).
+std::vector<std::string> labels_read(const claim_record& r) {
+  std::vector<std::string> labels;
+  if (r.shape.empty()) return labels;
+  for (const detail::shape_parameter& p : detail::proof_shapes().at(r.shape).parameters) {
+    const auto it = r.with.find(p.name);
+    if (it == r.with.end() || p.kind == detail::argument_kind::word || p.kind == detail::argument_kind::symbols) continue;
+    for (const std::string& value : it->second.values) {
+      const formula_reference reference = parse_reference(value);
+      if (reference.where == formula_reference::kind::labelled) labels.push_back(reference.key);
+    }
+  }
+  return labels;
+}
+
 /// The check of a record: its bespoke check, or its shape run with its arguments.
 detail::check_function check_of(const claim_record& r) {
   if (!r.shape.empty()) {
@@ -69,7 +87,10 @@ detail::check_function check_of(const claim_record& r) {
       detail::shape_call with_document = call;
       with_document.document = installed_document_storage() ? &*installed_document_storage() : nullptr;
       if (with_document.statement.empty()) with_document.statement = find_claim(call.claim_id).statement;  // the TeX read
-      return run(with_document, ctx);
+      const auto start = std::chrono::steady_clock::now();
+      claim_result result = run(with_document, ctx);
+      result.printed_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();  // GiNaC's and ours
+      return result;
     };
   }
   const detail::registered_check* check = detail::registered_checks().find(r.check);
@@ -84,6 +105,7 @@ std::vector<claim> claims_of(const std::vector<claim_record>& records) {
   for (const claim_record& r : records) {
     claim c{r.id, r.section, r.equation, r.statement, r.methods, r.expected, check_of(r), r.kind, r.follows_from, r.typographical, r.origin};
     c.check_name = r.shape.empty() ? r.check : "shape " + r.shape;
+    c.labels_read = labels_read(r);
     c.headline = r.headline;
     c.coq_none = r.coq_none;
     out.push_back(std::move(c));

@@ -5,6 +5,8 @@
 
 #include "symbolic_derivation.hpp"
 
+#include <simpson/verify/claim.hpp>
+
 #include <simpson/verify/paper_reading.hpp>
 
 #include <simpson/one_step_map.hpp>

@@ -248,14 +248,24 @@ void record_certificate(claim_result& result, const detail::coq_export& certific
 
 }  // namespace
 
-bool reads_printed_formula(const std::string& claim_id) { return printed_facet(find_claim(claim_id)) != nullptr; }
+namespace {
+
+/// A claim a proof shape decides: it reads every formula from the run's document.
+bool decided_by_shape(const claim& c) { return c.check_name.rfind("shape ", 0) == 0; }
+
+bool reads_printed(const claim& c) { return printed_facet(c) != nullptr || decided_by_shape(c); }
+
+}  // namespace
+
+bool reads_printed_formula(const std::string& claim_id) { return reads_printed(find_claim(claim_id)); }
 
 std::vector<std::string> claims_reading_formula(const std::string& label) {
   std::vector<std::string> ids;
   for (const claim& c : ledger()) {
     const detail::registered_check* check = printed_facet(c);
-    if (check == nullptr) continue;
-    for (const std::string& name : check->formulas) {
+    std::vector<std::string> names = check != nullptr ? check->formulas : std::vector<std::string>{};
+    names.insert(names.end(), c.labels_read.begin(), c.labels_read.end());
+    for (const std::string& name : names) {
       if (name == label || name.rfind(label + "#", 0) == 0) {
         ids.push_back(c.id);
         break;
@@ -269,7 +279,7 @@ double ginac_derivation_seconds() { return detail::derivation().seconds; }
 
 std::size_t printed_formula_claim_count() {
   std::size_t count = 0;
-  for (const claim& c : ledger()) count += printed_facet(c) != nullptr ? 1 : 0;
+  for (const claim& c : ledger()) count += reads_printed(c) ? 1 : 0;
   return count;
 }
 

@@ -28,53 +28,10 @@ printed_outcome phi3_elimination(const paper_reading& r) {
   return compare("Phi_3", printed_side(r, "Phi3"), d.phi3, as_matrix(simpson_map(parameters(d))));
 }
 
-printed_outcome phi3_det(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
-  const ex& printed = printed_side(r, "Phi3");
-  printed_outcome o;
-  o.property = true;
-  const ex derived_det = GiNaC::normal(d.phi3.determinant() - 1);
-  const GiNaC::matrix core_phi = as_matrix(simpson_map(parameters(d)));
-  const ex core_det = GiNaC::normal(core_phi.determinant() - 1);
-  o.derived_holds = derived_det.is_zero() && core_det.is_zero();
-  o.goals.push_back({"derived", determinant_2x2(d.phi3), 1, derived_det.is_zero()});
-  o.goals.push_back({"core", determinant_2x2(core_phi), 1, core_det.is_zero()});
-  o.derived = "det(derived Phi_3) − 1 = " + text_of(derived_det) + ", det(core Phi_3) − 1 = " + text_of(core_det);
-  if (!is_square(printed, 2)) {
-    o.proved = "the printed Phi_3 is not a 2 x 2 matrix: " + text_of(printed);
-    return o;
-  }
-  const ex det = GiNaC::normal(GiNaC::ex_to<GiNaC::matrix>(printed).determinant() - 1);
-  o.holds = det.is_zero();
-  o.goals.insert(o.goals.begin(), proof_goal{"printed", determinant_2x2(printed), 1, o.holds});
-  o.proved = "det(printed Phi_3) − 1 = " + text_of(det) + " (normal form, symbolic m, omega, h)";
-  return o;
-}
 
 /// H(Φ y) − H(y), normalised.
 ex change_under(const ex& H, const ex& phi, const ex& p, const ex& q) { return GiNaC::normal(after_step(H, phi, p, q) - H); }
 
-printed_outcome hd_invariance(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
-  const ex H = printed_side(r, "hamiltonien-discret");
-  const ex& printed_phi = printed_side(r, "Phi3");
-  printed_outcome o;
-  o.property = true;
-  const ex core_H = discrete_energy(parameters(d), phase_point<ex>{d.p, d.q});
-  const ex derived_change = change_under(core_H, d.phi3, d.p, d.q);
-  o.derived_holds = derived_change.is_zero();
-  o.goals.push_back({"derived", after_step(core_H, d.phi3, d.p, d.q), core_H, o.derived_holds});
-  o.derived = "core H_d(derived Phi_3 y) − H_d(y) = " + text_of(derived_change);
-  if (!is_square(printed_phi, 2)) {
-    o.proved = "the printed Phi_3 is not a 2 x 2 matrix";
-    return o;
-  }
-  const ex change = change_under(H, printed_phi, d.p, d.q);
-  o.holds = change.is_zero();
-  o.goals.insert(o.goals.begin(), proof_goal{"printed", after_step(H, printed_phi, d.p, d.q), H, o.holds});
-  o.proved = "printed H_d(printed Phi_3 y) − H_d(y) = " + text_of(change) + " (normal form, symbolic m, omega, h, p, q)";
-  return o;
-}
 
 /// Γ derived: the coefficients of p², pq, q² in Q(Φy) − Q(y), Φ = ((α, β), (γ, δ)), as a matrix acting on (ξ, η, ζ).
 GiNaC::matrix derived_gamma() {
@@ -253,14 +210,12 @@ printed_outcome derivation_phi3(const paper_reading& r) {
 void add_printed_checks_section6_7(check_registry& checks) {
   checks.add_printed("momentum-order3", {"moment-ordre-3"}, momentum_order_3);
   checks.add_printed("phi3-elimination", {"Phi3"}, phi3_elimination);
-  checks.add_printed("phi3-det", {"Phi3"}, phi3_det);
   checks.add_printed("derivation-phi3", {"Phi3"}, derivation_phi3);
   checks.add_printed("gamma-system", {"Gamma"}, gamma_system);
   checks.add_printed("gamma-determinant", {"det Gamma"}, gamma_determinant);
   checks.add_printed("gamma-singular", {"Gamma", "det Gamma"}, gamma_singular);
   checks.add_printed("conserved-form", {"Gamma", "Q_c"}, conserved_form);
   checks.add_printed("hd-proportional", {"hamiltonien-discret", "Q_c", "Phi3"}, hd_proportional);
-  checks.add_printed("hd-invariance", {"hamiltonien-discret", "Phi3"}, hd_invariance);
 }
 
 }  // namespace simpson::verify::detail

@@ -57,7 +57,10 @@ const std::map<std::string, proof_shape>& proof_shapes() {
     add({"conserved", "function(map y) = function(y), y the state", "function",
          with_where({{"map", argument_kind::matrix, true, "a one-step map"},
                      {"function", argument_kind::formula, true, "a function of the state"},
-                     {"state", argument_kind::symbols, true, "the state's symbols, in the map's order", 0, "map"}}),
+                     {"state", argument_kind::symbols, true, "the state's symbols, in the map's order", 0, "map"},
+                     {"keep", argument_kind::symbols, false,
+                      "a state symbol whose square's coefficient a correction keeps as printed (the first of the state when left out)", 1, "",
+                      false, {}, "state"}}),
          conserved_shape});
     add({"euler-lagrange", "printed = 0 is D_2 L(q_{j-1}, q_j) + D_1 L(q_j, q_{j+1}) = 0, up to a factor free of the states", "printed",
          with_where({{"lagrangian", argument_kind::formula, true, "the discrete Lagrangian L(q_0, q_1)"},
@@ -188,6 +191,13 @@ std::string check_shape_formulas(const claim_record& record, const std::string& 
           if (!p.same_size_as.empty() && rows.count(p.same_size_as) && it->second.values.size() != rows[p.same_size_as]) {
             throw claims_file_error(file, line, field, fmt::format("{} symbols for the {} rows of '{}'", it->second.values.size(),
                                                                    rows[p.same_size_as], p.same_size_as));
+          }
+          if (!p.among.empty() && record.with.count(p.among)) {
+            const std::vector<GiNaC::symbol> allowed = read->symbols(p.among);
+            for (const GiNaC::symbol& s : read->symbols(p.name)) {
+              const bool found = std::any_of(allowed.begin(), allowed.end(), [&](const GiNaC::symbol& a) { return a.get_name() == s.get_name(); });
+              if (!found) throw claims_file_error(file, line, field, "'" + s.get_name() + "' is not one of the symbols of '" + p.among + "'");
+            }
           }
           break;
         }

@@ -32,6 +32,7 @@ struct shape_parameter {
   std::string same_size_as{};  // symbols: as many as the rows of this matrix argument
   bool positive = false;       // formula: every symbol of it declared positive (with a [document])
   std::vector<std::string> words{};  // word: the values it may take (none: any text, such as a sentence's pattern)
+  std::string among{};               // symbols: each one of this symbols argument's
 };
 
 /// One call: the claim's id and statement, its arguments, and the symbols its document declares

@@ -7,6 +7,7 @@
 #include "printed_check_support.hpp"
 
 #include <simpson/verify/paper_reading.hpp>
+#include <simpson/verify/quoted_words.hpp>
 #include <simpson/verify/tex_math.hpp>
 
 namespace simpson::verify::detail {
@@ -57,7 +58,16 @@ referenced_formula shape_reader::raw(const std::string& parameter) {
   const std::string& reference = call_.with.at(parameter).values.front();
   referenced_formula f = read_reference(document_, macros_, reference);
   declared_only(f.value, f.locator);
-  record(reference, f.locator, f.line, f.tex, f.value);
+  // Shown with its matrix products multiplied out (1/(1 + x) times a matrix, as printed), unless a
+  // definition is still to make one of its symbols a matrix.
+  GiNaC::ex shown = f.value;
+  if (definitions_.empty()) {
+    try {
+      shown = with_definitions(f.value, {});
+    } catch (const std::exception&) {
+    }
+  }
+  record(reference, f.place, f.line, f.tex, shown);
   return f;
 }
 
@@ -95,8 +105,9 @@ void shape_reader::record(const std::string& reference, const std::string& locat
 }
 
 const paper_source& document_of(const run_context& ctx) {
-  if (!ctx.paper) throw std::invalid_argument("a proof shape reads its formulas from the run's document, and this run has none");
-  return ctx.paper->source;
+  // The run's paper, or the embedded one when the run has none (a note's run always has one: its
+  // claims file's [document] requires --paper).
+  return paper_of(ctx).source;
 }
 
 claim_result identity_verdict(const shape_call& call, shape_reader& read, const std::string& what, const ex& lhs, const ex& rhs,

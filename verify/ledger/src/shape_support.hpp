@@ -57,7 +57,7 @@ class shape_reader {
   json definitions_read_ = json::array();
 };
 
-/// The run's document; throws std::invalid_argument when the run has none.
+/// The run's document: its paper, or the embedded one when it has none.
 const paper_source& document_of(const run_context& ctx);
 
 /// The verdict on an identity lhs = rhs, decided by GiNaC's normal form and by our kernel's grid:

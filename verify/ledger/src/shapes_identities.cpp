@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include <optional>
+
 namespace simpson::verify::detail {
 
 using GiNaC::ex;
@@ -19,6 +21,80 @@ GiNaC::matrix canonical_j(unsigned n) {
     j(n + k, k) = -1;
   }
   return j;
+}
+
+/// The quadratic form y^T Q y that `m` conserves (Q symmetric, from the linear system m^T Q m = Q,
+/// as Section 7 of the paper derives its Q_c) and that agrees with `printed`, a quadratic form in
+/// `state`, in the coefficient of state[keep]^2 (else the first coefficient both have): none when the printed function is not a quadratic
+/// form, or the map conserves no form or more than one family of them.
+struct conserved_form {
+  std::optional<ex> form;
+  std::string why_none;  // when there is none
+  std::string matched;   // the monomial whose coefficient the two share
+};
+
+conserved_form conserved_quadratic_form(const GiNaC::matrix& m, const std::vector<GiNaC::symbol>& state, const ex& printed, unsigned keep) {
+  const unsigned n = m.rows();
+  GiNaC::matrix q(n, n), y(n, 1);
+  GiNaC::lst unknowns;
+  for (unsigned i = 0; i < n; ++i) {
+    y(i, 0) = state[i];
+    for (unsigned j = i; j < n; ++j) {
+      const GiNaC::symbol u("conserved_form_" + std::to_string(i) + std::to_string(j));
+      unknowns.append(u);
+      q(i, j) = q(j, i) = u;
+    }
+  }
+  const GiNaC::matrix defect = GiNaC::ex_to<GiNaC::matrix>((m.transpose() * q * m - q).evalm());
+  GiNaC::lst equations;
+  for (unsigned i = 0; i < n; ++i) {
+    for (unsigned j = i; j < n; ++j) equations.append(GiNaC::numer(GiNaC::normal(defect(i, j))) == 0);
+  }
+  GiNaC::ex solution;
+  try {
+    solution = GiNaC::lsolve(equations, unknowns);
+  } catch (const std::exception& e) {
+    return {std::nullopt, std::string("the linear system for the conserved forms does not solve: ") + e.what(), ""};
+  }
+  if (!GiNaC::is_a<GiNaC::lst>(solution) || solution.nops() == 0) return {std::nullopt, "the map conserves no quadratic form", ""};
+  GiNaC::matrix family(n, n);
+  std::vector<GiNaC::symbol> free;
+  for (unsigned i = 0; i < n; ++i) {
+    for (unsigned j = 0; j < n; ++j) family(i, j) = GiNaC::normal(q(i, j).subs(solution));
+  }
+  for (const ex& u : unknowns) {
+    bool appears = false;
+    for (unsigned k = 0; k < n * n; ++k) appears = appears || family(k / n, k % n).has(u);
+    if (appears) free.push_back(GiNaC::ex_to<GiNaC::symbol>(u));
+  }
+  if (free.empty()) return {std::nullopt, "the map conserves no quadratic form but 0", ""};
+  if (free.size() > 1) return {std::nullopt, "the map conserves " + std::to_string(free.size()) + " independent quadratic forms: no one correction", ""};
+  // The printed function as y^T P y.
+  GiNaC::matrix p(n, n);
+  for (unsigned i = 0; i < n; ++i) {
+    for (unsigned j = 0; j < n; ++j) p(i, j) = GiNaC::normal(GiNaC::diff(GiNaC::diff(printed, state[i]), state[j]) / 2);
+  }
+  const ex as_form = ((y.transpose() * p * y).evalm()).op(0);
+  if (!GiNaC::normal(printed - as_form).is_zero()) return {std::nullopt, "the printed function is not a quadratic form in the state", ""};
+  // The coefficient of keep^2 first, then the others in the state's order.
+  std::vector<std::pair<unsigned, unsigned>> order{{keep, keep}};
+  for (unsigned i = 0; i < n; ++i) {
+    for (unsigned j = i; j < n; ++j) {
+      if (i != keep || j != keep) order.emplace_back(i, j);
+    }
+  }
+  for (const auto& [i, j] : order) {
+    {
+      const ex unit = GiNaC::normal(family(i, j).subs(free[0] == 1));
+      if (unit.is_zero() || GiNaC::normal(p(i, j)).is_zero()) continue;
+      const ex scale = GiNaC::normal(p(i, j) / unit);
+      GiNaC::matrix scaled(n, n);
+      for (unsigned k = 0; k < n * n; ++k) scaled(k / n, k % n) = GiNaC::normal(family(k / n, k % n).subs(free[0] == scale));
+      const ex form = GiNaC::normal(((y.transpose() * scaled * y).evalm()).op(0));
+      return {form, "", text_of(i == j ? ex(GiNaC::pow(state[i], 2)) : ex(state[i] * state[j]))};
+    }
+  }
+  return {std::nullopt, "the conserved forms and the printed function share no coefficient to scale by", ""};
 }
 
 }  // namespace
@@ -38,8 +114,13 @@ claim_result determinant_shape(const shape_call& call, const run_context& ctx) {
   // As written (a d − b c for 2 × 2): the statement a certificate proves, not GiNaC's evaluated value.
   const ex det = m.rows() == 2 ? determinant_2x2(m) : m.determinant(GiNaC::determinant_algo::laplace);
   const std::string what = fmt::format("det ({}) = {}", reference_of(call, "matrix"), text_of(equals));
-  return identity_verdict(call, read, what, det, equals,
-                          fmt::format("det ({}) = {}", reference_of(call, "matrix"), text_of(GiNaC::normal(det))));
+  // A property of the printed matrix: false, it fails (no corrected matrix is derived); the note
+  // gives the determinant.
+  claim_result result = identity_verdict(call, read, what, det, equals, "", verdict::fails);
+  if (result.outcome == verdict::fails) {
+    result.note += fmt::format(" det ({}) = {}.", reference_of(call, "matrix"), text_of(GiNaC::normal(det)));
+  }
+  return result;
 }
 
 claim_result symplectic_shape(const shape_call& call, const run_context& ctx) {
@@ -53,7 +134,12 @@ claim_result symplectic_shape(const shape_call& call, const run_context& ctx) {
   for (unsigned r = 0; r < normal.rows(); ++r) {
     for (unsigned c = 0; c < normal.cols(); ++c) normal(r, c) = GiNaC::normal(normal(r, c));
   }
-  return identity_verdict(call, read, what, lhs, ex(j), fmt::format("({})^T J ({}) = {}", reference_of(call, "matrix"), reference_of(call, "matrix"), text_of(normal)));
+  // A property of the printed matrix: false, it fails, the note giving M^T J M.
+  claim_result result = identity_verdict(call, read, what, lhs, ex(j), "", verdict::fails);
+  if (result.outcome == verdict::fails) {
+    result.note += fmt::format(" ({})^T J ({}) = {}.", reference_of(call, "matrix"), reference_of(call, "matrix"), text_of(normal));
+  }
+  return result;
 }
 
 claim_result conserved_shape(const shape_call& call, const run_context& ctx) {
@@ -71,9 +157,30 @@ claim_result conserved_shape(const shape_call& call, const run_context& ctx) {
   for (unsigned k = 0; k < m.rows(); ++k) step.append(state[k] == next(k, 0));
   const ex after = h.subs(step);
   const std::string what = fmt::format("({})(({}) y) = ({})(y)", reference_of(call, "function"), reference_of(call, "map"), reference_of(call, "function"));
-  return identity_verdict(call, read, what, after, h,
-                          fmt::format("({})(({}) y) − ({})(y) = {}", reference_of(call, "function"), reference_of(call, "map"),
-                                      reference_of(call, "function"), text_of(GiNaC::normal(after - h))));
+  claim_result result = identity_verdict(call, read, what, after, h, "");
+  if (result.outcome != verdict::erratum) return result;
+  // Not conserved as printed: the correction is the map's conserved quadratic form, scaled to agree
+  // with the printed function in one coefficient (proved conserved in GiNaC); without one, fails.
+  unsigned keep = 0;
+  if (read.has("keep")) {
+    const GiNaC::symbol kept = read.symbols("keep").front();
+    while (keep + 1 < state.size() && state[keep].get_name() != kept.get_name()) ++keep;  // one of them: checked at reading
+  }
+  const conserved_form corrected = conserved_quadratic_form(m, state, h, keep);
+  const std::string change = fmt::format("({})(({}) y) − ({})(y) = {}", reference_of(call, "function"), reference_of(call, "map"),
+                                         reference_of(call, "function"), text_of(GiNaC::normal(after - h)));
+  if (!corrected.form || !GiNaC::normal(corrected.form->subs(step) - *corrected.form).is_zero()) {
+    result.outcome = verdict::fails;
+    result.correction.clear();
+    result.note += " No correction: " + (corrected.form ? std::string("the form found is not conserved") : corrected.why_none) + " (" + change + ").";
+    return result;
+  }
+  result.correction = fmt::format("the quadratic form ({}) conserves, with the coefficient of {} that ({}) prints: {}", reference_of(call, "map"),
+                                  corrected.matched, reference_of(call, "function"), text_of(*corrected.form));
+  result.evidence["corrected"] = {{"conserved_form", text_of(*corrected.form)},
+                                  {"how", "Q symmetric solved from (map)^T Q (map) = Q (GiNaC lsolve), one family t Q_0, t set by the coefficient of " +
+                                              corrected.matched + "; conserved: checked in normal form"}};
+  return result;
 }
 
 }  // namespace simpson::verify::detail

@@ -79,7 +79,16 @@ tex_display labelled_display(const paper_source& document, const std::string& la
     for (std::size_t k = tex.find(tag); k != std::string::npos; k = tex.find(tag, k)) tex.replace(k, tag.size(), std::string(tag.size(), ' '));
   }
   std::replace(tex.begin(), tex.end(), '\n', ' ');
-  while (first < end && std::isspace(static_cast<unsigned char>(document.text[first])) != 0) ++first;
+  // The display's line is its formula's first, after the label when the label comes first (as the
+  // paper reader counts it: paper_reading.hpp).
+  const auto skip_space = [&] {
+    while (first < end && std::isspace(static_cast<unsigned char>(document.text[first])) != 0) ++first;
+  };
+  skip_space();
+  if (first == at) {
+    first += key.size();
+    skip_space();
+  }
   return {"label " + label, line_at(document.text, first), tex};
 }
 
@@ -127,7 +136,7 @@ referenced_formula read_reference(const paper_source& document, const std::map<s
   referenced_formula f;
   std::string tex;
   if (r.where == formula_reference::kind::literal) {
-    f.locator = "the record's TeX '" + r.key + "'";
+    f.locator = f.place = "the record's TeX '" + r.key + "'";
     tex = r.key;
   } else {
     tex_display display;
@@ -138,6 +147,7 @@ referenced_formula read_reference(const paper_source& document, const std::map<s
     } else {
       display = find_inline(document, r.key);
     }
+    f.place = display.locator;
     f.locator = display.locator + " (line " + std::to_string(display.line) + ")";
     f.line = display.line;
     tex = display.tex;

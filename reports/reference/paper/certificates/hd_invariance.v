@@ -13,7 +13,7 @@ Ltac nonzero :=
           end
         | apply pow_nonzero; nonzero ].
 
-Lemma hd_invariance_printed :
+Lemma hd_invariance__hamiltonien_discret___Phi3__y_____hamiltonien_discret__y_ :
   forall h m omega p q : R,
   0 < m ->
   0 < h ->
@@ -21,20 +21,6 @@ Lemma hd_invariance_printed :
   (((-1) * (h ^ 2) * (omega ^ 2)) + 8) <> 0 ->
   m <> 0 ->
   (((1/288) * ((((((-1) * (h ^ 2) * (omega ^ 2)) + 12) * (((-1) * (h ^ 2) * (omega ^ 2)) + 24) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24))) * (omega ^ 2) * h * m * q) + (6 * (((-1) * (h ^ 4) * (omega ^ 4)) + (-48) + (22 * (h ^ 2) * (omega ^ 2))) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24))) * p)) ^ 2) * (/ m)) + ((1/288) * ((((((-1) * (h ^ 4) * (omega ^ 4)) + (-48) + (22 * (h ^ 2) * (omega ^ 2))) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24))) * q) + ((-6) * (((-1) * (h ^ 2) * (omega ^ 2)) + 8) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24))) * (/ m) * h * p)) ^ 2) * (((-1) * (h ^ 2) * (omega ^ 2)) + 12) * (((-1) * (h ^ 2) * (omega ^ 2)) + 24) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)) * (omega ^ 2) * m))
-  = (((1/2) * (/ m) * (p ^ 2)) + ((1/72) * (((-1) * (h ^ 2) * (omega ^ 2)) + 12) * (((-1) * (h ^ 2) * (omega ^ 2)) + 24) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)) * (omega ^ 2) * (q ^ 2) * m)).
-Proof.
-  intros.
-  field; repeat split; nonzero.
-Qed.
-
-Lemma hd_invariance_derived :
-  forall h m omega p q : R,
-  0 < m ->
-  0 < h ->
-  (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) <> 0 ->
-  (((-1) * (h ^ 2) * (omega ^ 2)) + 8) <> 0 ->
-  m <> 0 ->
-  (((1/288) * ((((((-1) * (h ^ 4) * (omega ^ 4)) + (-48) + (22 * (h ^ 2) * (omega ^ 2))) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24))) * q) + ((-6) * (((-1) * (h ^ 3) * (omega ^ 2)) + (8 * h)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24))) * (/ m) * p)) ^ 2) * (((-1) * (h ^ 2) * (omega ^ 2)) + 12) * (((-1) * (h ^ 2) * (omega ^ 2)) + 24) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)) * (omega ^ 2) * m) + ((1/288) * ((((((-1) * (h ^ 5) * (omega ^ 6) * m) + ((-288) * (omega ^ 2) * h * m) + (36 * (h ^ 3) * (omega ^ 4) * m)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24))) * q) + ((-6) * (((-1) * (h ^ 4) * (omega ^ 4)) + (-48) + (22 * (h ^ 2) * (omega ^ 2))) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24))) * p)) ^ 2) * (/ m)))
   = (((1/2) * (/ m) * (p ^ 2)) + ((1/72) * (((-1) * (h ^ 2) * (omega ^ 2)) + 12) * (((-1) * (h ^ 2) * (omega ^ 2)) + 24) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)) * (omega ^ 2) * (q ^ 2) * m)).
 Proof.
   intros.

@@ -13,31 +13,7 @@ Ltac nonzero :=
           end
         | apply pow_nonzero; nonzero ].
 
-Lemma phi3_det_printed :
-  forall h omega : R,
-  0 < h ->
-  (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) <> 0 ->
-  (((1/4) * ((((-1) * (h ^ 4) * (omega ^ 4)) + (-48) + (22 * (h ^ 2) * (omega ^ 2))) ^ 2) * (/ ((((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) ^ 2))) + ((1/4) * (((-1) * (h ^ 2) * (omega ^ 2)) + 12) * (((-1) * (h ^ 2) * (omega ^ 2)) + 24) * (((-1) * (h ^ 2) * (omega ^ 2)) + 8) * (/ ((((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) ^ 2)) * (h ^ 2) * (omega ^ 2)))
-  = 1.
-Proof.
-  intros.
-  field; repeat split; nonzero.
-Qed.
-
-Lemma phi3_det_derived :
-  forall h m omega : R,
-  0 < m ->
-  0 < h ->
-  (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) <> 0 ->
-  m <> 0 ->
-  (((-1/4) * (((-1) * (h ^ 3) * (omega ^ 2)) + (8 * h)) * (((-1) * (h ^ 5) * (omega ^ 6) * m) + ((-288) * (omega ^ 2) * h * m) + (36 * (h ^ 3) * (omega ^ 4) * m)) * (/ ((((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) ^ 2)) * (/ m)) + ((1/4) * ((((-1) * (h ^ 4) * (omega ^ 4)) + (-48) + (22 * (h ^ 2) * (omega ^ 2))) ^ 2) * (/ ((((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) ^ 2))))
-  = 1.
-Proof.
-  intros.
-  field; repeat split; nonzero.
-Qed.
-
-Lemma phi3_det_core :
+Lemma phi3_det_det__Phi3____1 :
   forall h omega : R,
   0 < h ->
   (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) <> 0 ->

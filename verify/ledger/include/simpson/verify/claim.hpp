@@ -131,6 +131,9 @@ struct claim {
   /// From the claim's record (claims_file.hpp): the name of its check, whether it is a headline
   /// claim (the report's speed line), and why no Coq statement is exported when none is.
   std::string check_name = {};
+  /// For a claim a proof shape decides: the labels of the displays it reads (provenance finds the
+  /// claims that read a display through them).
+  std::vector<std::string> labels_read = {};
   bool headline = false;
   std::string coq_none = {};
 };

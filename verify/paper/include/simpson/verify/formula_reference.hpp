@@ -38,6 +38,7 @@ formula_reference parse_reference(const std::string& text);
 /// names parsed (a GiNaC matrix for a matrix).
 struct referenced_formula {
   std::string locator;  // "label phi (line 12)", "inline formula at 'stable for' (line 30)", "the record's TeX"
+  std::string place;    // the same without its line: "label phi"
   int line = 0;
   std::string tex;
   std::vector<std::string> sides;
