@@ -152,6 +152,7 @@ Stable for $0 < \om h < 2$. Also stable for $0 < \om h < 2 \sqrt{2}$. And for $0
 \begin{equation}\label{truncshort} {\rm O}(h^4) \end{equation}
 This scheme is of fourth order. The same scheme is of second order.
 Coefficient $1 - \frac{\om^2 h^2}{4}$ positive on $0 < \om h < 2$, but not on the wide $0 < \om h < 3$.
+That map is symplectic indeed. This map is not symplectic, some say. Another map is wonderful here.
 )";
 
 const std::string declarations = R"(
@@ -206,6 +207,22 @@ TEST_F(ShapesOnADocument, DeterminantAndSymplectic) {
   EXPECT_TRUE(det.correction.empty());
   EXPECT_NE(det.note.find("det (mapwrong) = "), std::string::npos) << det.note;
   EXPECT_EQ(run("symplectic", R"({ matrix = "mapwrong" })").outcome, verdict::fails);
+}
+
+// The words of a sentence against what the shape proves: affirmed, it holds; denied, a wording
+// erratum corrected by the fact; words that are neither, text-changed. A shape that ignored the
+// words would hold on all three.
+TEST_F(ShapesOnADocument, TheSentenceThatSaysIt) {
+  const claim_result affirmed = run("symplectic", R"({ matrix = "map", says = 'That map is {property} indeed.', property = "symplectic" })");
+  EXPECT_EQ(affirmed.outcome, verdict::holds) << affirmed.note;
+  ASSERT_EQ(affirmed.quoted.size(), 1u);
+  EXPECT_EQ(affirmed.quoted[0]["words"]["property"], "symplectic");
+  const claim_result denied = run("symplectic", R"({ matrix = "map", says = 'This map is {property}, some say.', property = "symplectic" })");
+  EXPECT_EQ(denied.outcome, verdict::erratum);
+  EXPECT_EQ(denied.correction.rfind("It is symplectic: ", 0), 0u) << denied.correction;
+  EXPECT_FALSE(denied.certificate.empty()) << "the fact proved is still certified";
+  EXPECT_EQ(run("symplectic", R"({ matrix = "map", says = 'Another map is {property} here.', property = "symplectic" })").outcome,
+            verdict::text_changed);
 }
 
 TEST_F(ShapesOnADocument, Conserved) {
@@ -355,6 +372,11 @@ TEST(ShapeRecords, BadRecordsAreNamedWithTheirLineAndArgument) {
             std::string::npos);
   EXPECT_NE(error_of("stability-interval", R"({ map = "map", variable = '$q h$', condition = "inline:Stable for" })")
                 .find("field 'with.variable': the symbol 'q' is not declared positive"),
+            std::string::npos);
+  EXPECT_NE(error_of("symplectic", R"({ matrix = "map", says = 'That map is {property} indeed.' })").find("field 'with.property': missing"),
+            std::string::npos);
+  EXPECT_NE(error_of("symplectic", R"({ matrix = "map", says = 'That map is symplectic.', property = "symplectic" })")
+                .find("field 'with.says': the sentence's pattern has no hole {property}"),
             std::string::npos);
   EXPECT_NE(error_of("conserved", R"({ map = "map", function = "energy", state = ['q', 'p'], keep = ['h'] })")
                 .find("field 'with.keep': 'h' is not one of the symbols of 'state'"),

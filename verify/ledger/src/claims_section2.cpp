@@ -159,25 +159,6 @@ claim_result check_newmark_det(const run_context& ctx) {
   return as_the_words_say(check_newmark_det_computed(ctx), affirmed, "The discrete flow is symplectic: det Phi = 1");
 }
 
-claim_result check_newmark_energy_computed(const run_context& ctx) {
-  const proof exact = prove_zero_on_grid(std::string(unit_reduction) + "; H(Phi y) - H(y), a quadratic form in y",
-                                         {"p", "q"}, 2, [&](const auto& v) {
-                                           using S = std::decay_t<decltype(v[0])>;
-                                           const auto par = theta_oscillator<S>();
-                                           const phase_point<S> y{v[0], v[1]};
-                                           return S(energy(par, newmark_map(par) * y) - energy(par, y));
-                                         });
-  bool within = false;
-  const json numeric = recheck_with(ctx, "newmark-energy", [](const auto& par, const auto& y) { return newmark_energy_step_check(par, y); }, within);
-  return identity(exact, within, numeric);
-}
-
-claim_result check_newmark_energy(const run_context& ctx) {
-  const quoted_sentence said = quote(ctx, "\\monend is {property}: we have $ \\, H_{j+1} = H_j");
-  const bool affirmed = said.choice("property", affirmed_or_denied("conserved")) == "affirmed";
-  return as_the_words_say(check_newmark_energy_computed(ctx), affirmed, "H_j is conserved: H_{j+1} = H_j");
-}
-
 claim_result check_newmark_stability(const run_context& ctx) {
   const quoted_sentence linearly = quote(ctx, "the scheme (\\ref{schema-ordre-deux}) is {stability}.");
   const std::string stated = linearly.choice("stability", {{"linearly stable", "stable"}, {"stable", "stable"},
@@ -284,7 +265,6 @@ void add_section2_checks(check_registry& checks) {
   checks.add("newmark-det", check_newmark_det);
   checks.add("newmark-identification", check_newmark_identification);
   checks.add("newmark-stability", check_newmark_stability);
-  checks.add("newmark-energy", check_newmark_energy);
 }
 
 }  // namespace simpson::verify::detail

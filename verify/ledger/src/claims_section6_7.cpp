@@ -135,24 +135,6 @@ claim_result check_phi3_explicit(const run_context& ctx) {
                            : "");
 }
 
-claim_result check_phi3_symplectic(const run_context& ctx) {
-  const quoted_sentence said = quote(ctx, "and in consequence the scheme is {property}.");
-  const std::string stated = said.choice("property", {{"symplectic", "symplectic"}, {"not symplectic", "not symplectic"}});
-  // Phi_3^T J Phi_3 - J computed as matrix products (symplectic_form_defect), entry by entry, in theta.
-  symbolic worst(0);
-  for (const symbolic& e : symplectic_form_defect(simpson_map(unit_oscillator_in_theta()))) {
-    if (!e.is_zero()) worst = e;
-  }
-  const proof exact = prove_zero(std::string(unit_reduction) + "; (Phi_3^T J Phi_3 - J)_{ij}, the products computed", worst);
-  json evidence;
-  evidence["exact"] = exact.evidence;
-  evidence["stated"] = stated;
-  if (!exact.proved || stated == "symplectic") {
-    return confirmed_if(exact.proved, evidence, "Phi_3^T J Phi_3 = J, the products computed entry by entry (not through det Phi_3).");
-  }
-  return words_erratum(evidence, "The scheme is symplectic: Phi_3^T J Phi_3 = J");
-}
-
 /// The coefficients of p², pq, q² of Q(Φy) − Q(y) for Q = (ξ, η, ζ), read off at (1,0), (1,1), (0,1).
 template <class S>
 std::array<S, 3> invariance_defect(const one_step_matrix<S>& phi, const S& xi, const S& eta, const S& zeta) {
@@ -381,7 +363,6 @@ void add_section6_7_checks(check_registry& checks) {
   checks.add("phi3-elimination", check_phi3_elimination);
   checks.add("derivation-phi3", check_derivation_phi3);
   checks.add("phi3-explicit", check_phi3_explicit);
-  checks.add("phi3-symplectic", check_phi3_symplectic);
   checks.add("gamma-system", check_gamma_system);
   checks.add("gamma-determinant", check_gamma_determinant);
   checks.add("gamma-singular", check_gamma_singular);

@@ -1,5 +1,5 @@
 // The Coq goals of the claims our own kernel proves without a printed formula, registered onto their checks (check_registry.hpp):
-// the signs of Section 5 (Δ < 0 on the stable bands), Φ₃'s shear factorization, and Φ₃'s symplecticity and
+// the signs of Section 5 (Δ < 0 on the stable bands), Φ₃'s shear factorization, and Φ₃'s
 // regular denominators, stated on the core's formulas in GiNaC. Our kernel's proofs (Sturm sequences
 // on rational functions of θ) stay the claims' exact evidence; these goals are what coqc checks again.
 
@@ -54,13 +54,6 @@ std::vector<proof_goal> root_modulus_bands() {
 }
 
 GiNaC::matrix core_phi3() { return as_matrix(simpson_map(parameters(derivation()))); }
-
-/// Φ₃ᵀ J Φ₃ = J with J = ((0, 1), (−1, 0)): symplectic, as the matrices multiply out.
-std::vector<proof_goal> phi3_symplectic() {
-  const GiNaC::matrix J{{0, 1}, {-1, 0}};
-  const GiNaC::matrix phi = core_phi3();
-  return {decided("core", phi.transpose().mul(J).mul(phi), J)};
-}
 
 /// The reduction every exact proof of our kernel uses: with S = diag(mω, 1), Φ(m, ω, h) =
 /// S Φ(1, 1, ωh) S⁻¹ for Φ₃ and Newmark's Φ, and H_d(m, ω, h; p, q) = mω² H_d(1, 1, ωh; p/(mω), q).
@@ -134,7 +127,6 @@ proof_goal sign_goal(const std::string& name, const ex& lhs, int sign, std::vect
 void add_kernel_claim_goals(check_registry& checks) {
   checks.add_coq_goals("discriminant-negative", discriminant_negative);
   checks.add_coq_goals("root-modulus", root_modulus_bands);
-  checks.add_coq_goals("phi3-symplectic", phi3_symplectic);
   checks.add_coq_goals("phi3-explicit", phi3_explicit);
   checks.add_coq_goals("phi3-shear-factorization", phi3_shear_factorization);
   checks.add_coq_goals("newmark-stability", newmark_unconditional_stability);

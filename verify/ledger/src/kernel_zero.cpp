@@ -29,42 +29,64 @@ rational rational_of(const GiNaC::numeric& n) {
   return rational(boost::multiprecision::cpp_int(num.str()), boost::multiprecision::cpp_int(den.str()));
 }
 
-symbolic power_of(const symbolic& base, long exponent) {
-  symbolic out(1);
+template <class T>
+T power_of(const T& base, long exponent) {
+  T out(1);
   for (long k = 0; k < (exponent < 0 ? -exponent : exponent); ++k) out = out * base;
-  return exponent < 0 ? symbolic(1) / out : out;
+  return exponent < 0 ? T(1) / out : out;  // 1/0 throws (cpp_rational: std::overflow_error): a pole
 }
 
-/// The tree as GiNaC holds it, evaluated in our kernel: sums, products, integer powers, rationals
-/// and the symbols' values.
-symbolic evaluate(const GiNaC::ex& e, const std::map<std::string, symbolic>& values) {
-  if (GiNaC::is_a<GiNaC::numeric>(e)) return symbolic(rational_of(GiNaC::ex_to<GiNaC::numeric>(e)));
-  if (GiNaC::is_a<GiNaC::symbol>(e)) {
-    const auto it = values.find(GiNaC::ex_to<GiNaC::symbol>(e).get_name());
-    if (it == values.end()) throw std::logic_error("kernel_decides_zero: no value for " + GiNaC::ex_to<GiNaC::symbol>(e).get_name());
-    return it->second;
-  }
-  if (GiNaC::is_a<GiNaC::add>(e)) {
-    symbolic sum(0);
-    for (const GiNaC::ex& term : e) sum = sum + evaluate(term, values);
-    return sum;
-  }
-  if (GiNaC::is_a<GiNaC::mul>(e)) {
-    symbolic product(1);
-    for (const GiNaC::ex& factor : e) product = product * evaluate(factor, values);
-    return product;
-  }
-  if (GiNaC::is_a<GiNaC::power>(e)) {
-    const GiNaC::ex exponent = e.op(1);
-    if (!GiNaC::is_a<GiNaC::numeric>(exponent) || !GiNaC::ex_to<GiNaC::numeric>(exponent).is_integer()) {
-      throw outside_kernel("a power that is not an integer one");
+/// The tree as GiNaC holds it, evaluated at one point in our kernel's exact arithmetic T (rationals,
+/// or rational functions of one free symbol): sums, products, integer powers, rationals and the
+/// symbols' values. A subtree met twice (a matrix entry put in twice) is evaluated once (`seen`,
+/// keyed by the subtree itself: GiNaC rebuilds the operands of a sum or a product on each visit, so
+/// an object's address is no key).
+template <class T>
+class point_evaluation {
+ public:
+  explicit point_evaluation(const std::map<std::string, T>& values) : values_(values) {}
+
+  T operator()(const GiNaC::ex& e) {
+    if (GiNaC::is_a<GiNaC::numeric>(e)) return T(rational_of(GiNaC::ex_to<GiNaC::numeric>(e)));
+    if (GiNaC::is_a<GiNaC::symbol>(e)) {
+      const auto it = values_.find(GiNaC::ex_to<GiNaC::symbol>(e).get_name());
+      if (it == values_.end()) throw std::logic_error("kernel_decides_zero: no value for " + GiNaC::ex_to<GiNaC::symbol>(e).get_name());
+      return it->second;
     }
-    return power_of(evaluate(e.op(0), values), GiNaC::ex_to<GiNaC::numeric>(exponent).to_long());
+    const auto it = seen_.find(e);
+    if (it != seen_.end()) return it->second;
+    T v = compute(e);
+    seen_.emplace(e, v);
+    return v;
   }
-  std::ostringstream text;
-  text << e;
-  throw outside_kernel("'" + text.str() + "'");
-}
+
+ private:
+  T compute(const GiNaC::ex& e) {
+    if (GiNaC::is_a<GiNaC::add>(e)) {
+      T sum(0);
+      for (const GiNaC::ex& term : e) sum = sum + (*this)(term);
+      return sum;
+    }
+    if (GiNaC::is_a<GiNaC::mul>(e)) {
+      T product(1);
+      for (const GiNaC::ex& factor : e) product = product * (*this)(factor);
+      return product;
+    }
+    if (GiNaC::is_a<GiNaC::power>(e)) {
+      const GiNaC::ex exponent = e.op(1);
+      if (!GiNaC::is_a<GiNaC::numeric>(exponent) || !GiNaC::ex_to<GiNaC::numeric>(exponent).is_integer()) {
+        throw outside_kernel("a power that is not an integer one");
+      }
+      return power_of((*this)(e.op(0)), GiNaC::ex_to<GiNaC::numeric>(exponent).to_long());
+    }
+    std::ostringstream text;
+    text << e;
+    throw outside_kernel("'" + text.str() + "'");
+  }
+
+  const std::map<std::string, T>& values_;
+  std::map<GiNaC::ex, T, GiNaC::ex_is_less> seen_;
+};
 
 /// A bound on the degree in one symbol of the numerator of an expression written as one fraction
 /// the way the tree builds it, and its denominator as the factors the tree divides by (each keyed by
@@ -149,8 +171,8 @@ entry_decision decide_entry(const GiNaC::ex& e, std::size_t most_points) {
   // By name: GiNaC's order of a tree's operands is not the same from run to run.
   std::sort(symbols.begin(), symbols.end(), [](const GiNaC::symbol& a, const GiNaC::symbol& b) { return a.get_name() < b.get_name(); });
   // The premise, from the tree itself (bound_in): the degree of its numerator in each symbol. The
-  // symbol of the highest bound stays free (our rational functions are in it); the others take a
-  // grid of that many values plus one.
+  // symbol of the highest bound stays free (the values are rational functions of it); each other
+  // takes a grid of that many values plus one.
   std::vector<int> degrees;
   std::size_t theta = 0;
   for (std::size_t k = 0; k < symbols.size(); ++k) {
@@ -158,17 +180,15 @@ entry_decision decide_entry(const GiNaC::ex& e, std::size_t most_points) {
     if (degrees[k] > degrees[theta]) theta = k;
   }
   std::size_t points = 1;
+  std::string grid;
   for (std::size_t k = 0; k < symbols.size(); ++k) {
     if (k == theta) continue;
     points *= static_cast<std::size_t>(degrees[k] + 1);
     if (points > most_points) return {kernel_decision::result::not_applicable, fmt::format("a grid of more than {} points", most_points)};
+    grid += (grid.empty() ? "" : ", ") + fmt::format("{} {}", symbols[k].get_name(), degrees[k] + 1);
   }
-  std::string grid;
-  for (std::size_t k = 0; k < symbols.size(); ++k) {
-    if (k != theta) grid += (grid.empty() ? "" : ", ") + fmt::format("{} {}", symbols[k].get_name(), degrees[k] + 1);
-  }
-  // Three grids in turn (values k + 1, then shifted by 1/7, 2/7): the first whose every point keeps
-  // the expression and the denominator defined and the denominator nonzero decides.
+  // Three grids in turn (values k + 1, then shifted by 1/7, 2/7): the first on which every point
+  // keeps every denominator of the tree nonzero decides.
   for (int attempt = 0; attempt < 3; ++attempt) {
     std::vector<std::size_t> index(symbols.size(), 0);
     bool defined = true;
@@ -185,12 +205,15 @@ entry_decision decide_entry(const GiNaC::ex& e, std::size_t most_points) {
         point += (point.empty() ? "" : ", ") + symbols[k].get_name() + " = " + v.str();
       }
       try {
-        if (!evaluate(e, values).is_zero()) {
+        if (!point_evaluation<symbolic>(values)(e).is_zero()) {
           return {kernel_decision::result::nonzero,
                   fmt::format("not zero at {}{}", point.empty() ? "" : point + ", ",
                               symbols.empty() ? "a constant" : "as a function of " + symbols[theta].get_name())};
         }
       } catch (const std::domain_error&) {  // a pole of the expression as written (of a denominator in it) at this point
+        defined = false;
+        break;
+      } catch (const std::overflow_error&) {  // cpp_rational's division by zero: the same
         defined = false;
         break;
       }

@@ -2,8 +2,10 @@
 
 #include <simpson/verify/claims_file.hpp>
 #include <simpson/verify/formula_reference.hpp>
+#include <simpson/verify/quoted_words.hpp>
 
 #include "check_registry.hpp"
+#include "claim_support.hpp"
 #include "proof_shapes.hpp"
 #include "printed_check_support.hpp"
 #include "claims_section2.hpp"
@@ -78,6 +80,23 @@ std::vector<std::string> labels_read(const claim_record& r) {
   return labels;
 }
 
+/// A shape's verdict against the sentence that states it (`says`, `property`): a fact that holds
+/// while the words deny it is a wording erratum, corrected by the fact; words that are neither the
+/// property nor its denial make the verdict text-changed (quote throws).
+claim_result as_the_sentence_says(claim_result result, const detail::shape_call& call, const run_context& ctx) {
+  const auto says = call.with.find("says"), property = call.with.find("property");
+  if (says == call.with.end() || property == call.with.end()) return result;
+  const quoted_sentence said = quote(ctx, says->second.values.front());
+  const bool affirmed = said.choice("property", detail::affirmed_or_denied(property->second.values.front())) == "affirmed";
+  result.evidence["stated"] = affirmed ? property->second.values.front() : "not " + property->second.values.front();
+  if (result.outcome != verdict::holds || affirmed) return result;
+  result.outcome = verdict::erratum;
+  const json& statement = result.evidence["exact"]["statement"];
+  result.correction = "It is " + property->second.values.front() + ": " + (statement.is_string() ? statement.get<std::string>() : call.statement);
+  result.note = "Wording: the sentence denies what the formulas it judges prove.";
+  return result;
+}
+
 /// The check of a record: its bespoke check, or its shape run with its arguments.
 detail::check_function check_of(const claim_record& r) {
   if (!r.shape.empty()) {
@@ -90,7 +109,7 @@ detail::check_function check_of(const claim_record& r) {
       const auto start = std::chrono::steady_clock::now();
       claim_result result = run(with_document, ctx);
       result.printed_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();  // GiNaC's and ours
-      return result;
+      return as_the_sentence_says(std::move(result), with_document, ctx);
     };
   }
   const detail::registered_check* check = detail::registered_checks().find(r.check);

@@ -148,22 +148,6 @@ printed_outcome newmark_det(const paper_reading& r) {
   return o;
 }
 
-printed_outcome newmark_energy(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
-  const ex H = printed_side(r, "HH-exact");
-  const ex& phi_printed = printed_side(r, "matrice-symplectique-ordre-2");
-  printed_outcome o = compare("H_j", H, d.p_j * d.p_j / (2 * d.m) + d.harmonic_V(d.q_j),
-                              energy(parameters(d), phase_point<ex>{d.p_j, d.q_j}));
-  if (!GiNaC::is_a<GiNaC::matrix>(phi_printed)) return o;
-  const GiNaC::matrix& phi = GiNaC::ex_to<GiNaC::matrix>(phi_printed);
-  const ex change = GiNaC::normal(
-      H.subs(GiNaC::lst{d.p_j == phi(0, 0) * d.p_j + phi(0, 1) * d.q_j, d.q_j == phi(1, 0) * d.p_j + phi(1, 1) * d.q_j}) - H);
-  o.property = !change.is_zero() && o.holds;
-  add_goal(o, {"printed_conservation", after_step(H, phi, d.p_j, d.q_j), H, change.is_zero()}, true);
-  o.proved += "; printed H_j(printed Phi y) − H_j(y) = " + text_of(change);
-  return o;
-}
-
 /// (q2t) with the printed basis functions (fonctions-de-base), t = h theta: at the printed points it
 /// takes the printed values. The core's interpolant is the derived one (solved through the nodes).
 printed_outcome interpolant_nodal(const paper_reading& r) {
@@ -250,7 +234,6 @@ void add_printed_checks_section2_4(check_registry& checks) {
   checks.add_printed("newmark-discrete-system", {"systeme-dynamique-discret-ordre-2#0", "systeme-dynamique-discret-ordre-2#1"}, newmark_system);
   checks.add_printed("newmark-matrix", {"matrice-symplectique-ordre-2"}, newmark_matrix);
   checks.add_printed("newmark-det", {"matrice-symplectique-ordre-2"}, newmark_det);
-  checks.add_printed("newmark-energy", {"HH-exact", "matrice-symplectique-ordre-2"}, newmark_energy);
   checks.add_printed("basis-nodal", {"fonctions-de-base#0", "fonctions-de-base#1", "fonctions-de-base#2", "q2t", "q(0)", "q(h/2)", "q(h)"}, interpolant_nodal);
   checks.add_printed("gear", {"derivees-gear#0", "derivees-gear#1"}, gear_derivatives);
   checks.add_printed("centred", {"derivee-centree"}, centred_derivative_check);

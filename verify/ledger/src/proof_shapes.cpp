@@ -20,8 +20,12 @@ namespace {
 
 using GiNaC::ex;
 
-const std::vector<shape_parameter> where_parameter{
-    {"where", argument_kind::definitions, false, "displays 'x = ...' whose definitions are put in the other formulas"}};
+/// What every shape takes besides its own arguments: definitions, and the sentence that states the
+/// claim in words (its hole {property} must affirm `property`, or deny it: "not symplectic").
+const std::vector<shape_parameter> common_parameters{
+    {"where", argument_kind::definitions, false, "displays 'x = ...' whose definitions are put in the other formulas"},
+    {"says", argument_kind::word, false, "the sentence that states the claim, a pattern with the hole {property}"},
+    {"property", argument_kind::word, false, "the word the sentence's hole must say (or deny: 'not ...')"}};
 
 /// The scheme and the equation a series shape expands on: what truncation and stated-order share.
 std::vector<shape_parameter> with_series(std::vector<shape_parameter> parameters) {
@@ -36,7 +40,7 @@ std::vector<shape_parameter> with_series(std::vector<shape_parameter> parameters
 }
 
 std::vector<shape_parameter> with_where(std::vector<shape_parameter> parameters) {
-  parameters.push_back(where_parameter.front());
+  parameters.insert(parameters.end(), common_parameters.begin(), common_parameters.end());
   return parameters;
 }
 
@@ -118,6 +122,16 @@ void check_shape_arguments(const claim_record& record, const std::string& file) 
     if (p.required && !record.with.count(p.name)) {
       throw claims_file_error(file, record.line, "with." + p.name, "missing: the shape '" + shape.name + "' needs it (" + p.meaning + ")");
     }
+  }
+  // The words: a sentence and the property it states, both or neither.
+  const auto says = record.with.find("says"), property = record.with.find("property");
+  if ((says == record.with.end()) != (property == record.with.end())) {
+    const bool has_says = says != record.with.end();
+    throw claims_file_error(file, has_says ? says->second.line : property->second.line, has_says ? "with.property" : "with.says",
+                            has_says ? "missing: the word the sentence's hole {property} must say" : "missing: the sentence that says the property");
+  }
+  if (says != record.with.end() && says->second.values.front().find("{property}") == std::string::npos) {
+    throw claims_file_error(file, says->second.line, "with.says", "the sentence's pattern has no hole {property}");
   }
 }
 

@@ -111,11 +111,11 @@ const paper_source& document_of(const run_context& ctx) {
 }
 
 claim_result identity_verdict(const shape_call& call, shape_reader& read, const std::string& what, const ex& lhs, const ex& rhs,
-                              const std::string& correction, verdict when_false) {
+                              const std::string& correction, verdict when_false, const std::optional<kernel_decision>& given) {
   claim_result result;
   const ex difference = normal_difference(lhs, rhs);
   const bool ginac_zero = is_zero_expression(difference);
-  const kernel_decision own = kernel_decides_zero((lhs - rhs).evalm());
+  const kernel_decision own = given ? *given : kernel_decides_zero((lhs - rhs).evalm());
   result.evidence["exact"] = {
       {"statement", what},
       {"ginac", ginac_zero ? "holds: lhs − rhs = 0 (normal form, every symbol free)" : "fails: lhs − rhs = " + text_of(difference) + " ≠ 0"},

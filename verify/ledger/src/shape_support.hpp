@@ -5,6 +5,7 @@
 // family: identities (shapes_identities.cpp), derivations (shapes_derivation.cpp), series
 // (shapes_series.cpp), intervals (shapes_intervals.cpp).
 
+#include "kernel_zero.hpp"
 #include "proof_shapes.hpp"
 
 #include <simpson/verify/formula_reference.hpp>
@@ -62,9 +63,12 @@ const paper_source& document_of(const run_context& ctx);
 
 /// The verdict on an identity lhs = rhs, decided by GiNaC's normal form and by our kernel's grid:
 /// holds when both find it zero, `when_false` (erratum, with `correction`) when both find it not,
-/// kernels-disagree otherwise; our kernel not applicable leaves GiNaC's verdict, and says so.
+/// kernels-disagree otherwise; our kernel not applicable leaves GiNaC's verdict, and says so. `own`,
+/// when given, is our kernel's decision of an equivalent statement (the shape says which) instead of
+/// its decision of lhs − rhs.
 claim_result identity_verdict(const shape_call& call, shape_reader& read, const std::string& what, const GiNaC::ex& lhs,
-                              const GiNaC::ex& rhs, const std::string& correction, verdict when_false = verdict::erratum);
+                              const GiNaC::ex& rhs, const std::string& correction, verdict when_false = verdict::erratum,
+                              const std::optional<kernel_decision>& own = std::nullopt);
 
 /// e as a square matrix; throws std::invalid_argument naming `what` when it is not one.
 GiNaC::matrix as_square_matrix(const GiNaC::ex& e, const std::string& what);

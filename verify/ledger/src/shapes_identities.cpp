@@ -97,6 +97,24 @@ conserved_form conserved_quadratic_form(const GiNaC::matrix& m, const std::vecto
   return {std::nullopt, "the conserved forms and the printed function share no coefficient to scale by", ""};
 }
 
+/// Our kernel's decision of function(map y) = function(y) when the function is a quadratic form
+/// y^T P y: then it holds exactly when map^T P map = P, which our kernel decides without the state's
+/// symbols (its grid the map's alone), after deciding function = y^T P y itself. P is read off by
+/// GiNaC (second derivatives), but both identities are our kernel's: a wrong P fails one of them.
+/// None (our kernel then decides the statement as written) when the function is not such a form.
+std::optional<kernel_decision> own_decision_as_forms(const GiNaC::matrix& m, const GiNaC::matrix& y, const ex& h) {
+  const unsigned n = m.rows();
+  GiNaC::matrix p(n, n);
+  for (unsigned i = 0; i < n; ++i) {
+    for (unsigned j = 0; j < n; ++j) p(i, j) = GiNaC::diff(GiNaC::diff(h, GiNaC::ex_to<GiNaC::symbol>(y(i, 0))), GiNaC::ex_to<GiNaC::symbol>(y(j, 0))) / 2;
+  }
+  const kernel_decision form = kernel_decides_zero(h - (y.transpose() * p * y).evalm().op(0));
+  if (form.outcome != kernel_decision::result::zero) return std::nullopt;
+  kernel_decision invariant = kernel_decides_zero((m.transpose() * p * m - p).evalm());
+  invariant.evidence = "as quadratic forms: function = y^T P y (" + form.evidence + "); map^T P map = P (" + invariant.evidence + ")";
+  return invariant;
+}
+
 }  // namespace
 
 claim_result identity_shape(const shape_call& call, const run_context& ctx) {
@@ -157,7 +175,7 @@ claim_result conserved_shape(const shape_call& call, const run_context& ctx) {
   for (unsigned k = 0; k < m.rows(); ++k) step.append(state[k] == next(k, 0));
   const ex after = h.subs(step);
   const std::string what = fmt::format("({})(({}) y) = ({})(y)", reference_of(call, "function"), reference_of(call, "map"), reference_of(call, "function"));
-  claim_result result = identity_verdict(call, read, what, after, h, "");
+  claim_result result = identity_verdict(call, read, what, after, h, "", verdict::erratum, own_decision_as_forms(m, y, h));
   if (result.outcome != verdict::erratum) return result;
   // Not conserved as printed: the correction is the map's conserved quadratic form, scaled to agree
   // with the printed function in one coefficient (proved conserved in GiNaC); without one, fails.

@@ -12,9 +12,8 @@ Ltac nonzero :=
           | [ H : 0 < ?Y |- ?X <> 0 ] => replace X with Y by ring; apply Rgt_not_eq; exact H
           end
         | apply pow_nonzero; nonzero ].
-(* Not stated: newmark_energy_printed, newmark_energy_core, whose two sides GiNaC evaluates to one expression (X = X checks nothing). *)
 
-Lemma newmark_energy_printed_conservation :
+Lemma newmark_energy__HH_exact___matrice_symplectique_ordre_2__y_____HH_exact__y_ :
   forall h m omega p_j q_j : R,
   0 < m ->
   0 < h ->
