@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.11188e-08:0.000972264]
+set xrange [5.11434e-08:0.000962507]
 set xtics autofreq
 set mxtics default
 set yrange [4.29802e-15:0.337578]
@@ -37,7 +37,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.04351e-07:0.00480227]
+set xrange [1.04441e-07:0.00471655]
 set xtics autofreq
 set mxtics default
 set yrange [3.30045e-15:0.34185]
@@ -61,7 +61,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.1351e-06:0.0381558]
+set xrange [1.14177e-06:0.0380538]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -85,7 +85,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [2.40596e-06:0.0685125]
+set xrange [2.38369e-06:0.0665146]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -109,7 +109,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [3.20171e-06:0.0817013]
+set xrange [3.18077e-06:0.0819522]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -159,7 +159,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.11188e-08:0.000972264]
+set xrange [5.11434e-08:0.000962507]
 set xtics autofreq
 set mxtics default
 set yrange [4.29802e-15:0.337578]
@@ -183,7 +183,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.04351e-07:0.00480227]
+set xrange [1.04441e-07:0.00471655]
 set xtics autofreq
 set mxtics default
 set yrange [3.30045e-15:0.34185]
@@ -207,7 +207,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.1351e-06:0.0381558]
+set xrange [1.14177e-06:0.0380538]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -231,7 +231,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [2.40596e-06:0.0685125]
+set xrange [2.38369e-06:0.0665146]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -255,7 +255,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [3.20171e-06:0.0817013]
+set xrange [3.18077e-06:0.0819522]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]

@@ -656,6 +656,12 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
                         markdown_escaped(kernels["ginac"]["printed"].get<std::string>()),
                         markdown_escaped(kernels["ginac"]["derived"].get<std::string>()));
     }
+    // A proof shape's identity: both kernels on the statement as read (shape_support.hpp).
+    const json& exact = o.result.evidence.contains("exact") ? o.result.evidence["exact"] : json();
+    if (!o.result.printed.is_null() && exact.is_object() && exact.contains("own") && exact.contains("ginac") && exact.contains("statement")) {
+      md += fmt::format("What each kernel proved, of {}:\n\n- ours: {}\n- GiNaC: {}\n\n", markdown_escaped(exact["statement"].get<std::string>()),
+                        markdown_escaped(exact["own"].get<std::string>()), markdown_escaped(exact["ginac"].get<std::string>()));
+    }
     for (const json& q : o.result.quoted) md += quoted_markdown(q);
     if (o.result.printed.is_null() && o.result.quoted.empty()) md += "Statement typed into the ledger: it quotes no words of the paper.\n\n";
     if (!o.result.correction.empty()) md += "Corrected: " + markdown_escaped(o.result.correction) + "\n\n";
