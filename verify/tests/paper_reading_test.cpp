@@ -8,6 +8,8 @@
 #include <simpson/verify/printed_checks.hpp>
 #include <simpson/verify/run.hpp>
 
+#include "altered_paper.hpp"
+
 #include <gtest/gtest.h>
 
 namespace simpson::verify {
@@ -15,17 +17,6 @@ namespace {
 
 /// The embedded text with `from` replaced by `to` in the display after `\label{label}` (or after the
 /// anchor): comments keep an older Φ₃, so the replacement is made where the reader looks.
-paper_source altered(const std::string& after, const std::string& from, const std::string& to) {
-  paper_source p = embedded_paper();
-  const std::size_t start = p.text.find(after);
-  EXPECT_NE(start, std::string::npos) << after;
-  const std::size_t at = p.text.find(from, start);
-  EXPECT_NE(at, std::string::npos) << from;
-  p.text.replace(at, from.size(), to);
-  p.origin = "altered copy";
-  return p;
-}
-
 verdict verdict_of(const std::string& id, const paper_reading& paper) {
   const run_context ctx{{precision::parse("double"), precision::parse("rational")}, 20230830, 2, &paper};
   return check_claim(find_claim(id), ctx).outcome;

@@ -9,6 +9,8 @@
 #include <simpson/verify/paper_reading.hpp>
 #include <simpson/verify/printed_checks.hpp>
 
+#include "altered_paper.hpp"
+
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -25,17 +27,6 @@ std::string shape_records() {
   std::ifstream in(std::string(SIMPSON_SOURCE_DIR) + "/verify/tests/notes/simpson-paper-shapes.toml", std::ios::binary);
   EXPECT_TRUE(in.good());
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-paper_source altered(const std::string& after, const std::string& from, const std::string& to) {
-  paper_source p = embedded_paper();
-  const std::size_t start = p.text.find(after);
-  EXPECT_NE(start, std::string::npos) << after;
-  const std::size_t at = p.text.find(from, start);
-  EXPECT_NE(at, std::string::npos) << from;
-  p.text.replace(at, from.size(), to);
-  p.origin = "altered copy";
-  return p;
 }
 
 /// The verdicts of `ids` on `paper`: the ledger's bespoke checks (first), the shape records (second).

@@ -190,7 +190,9 @@ inline claim_result words_erratum(json evidence, std::string correction, std::st
 /// words deny it ("not consistent", "not symplectic"), an erratum whose correction is `computed_statement`.
 inline claim_result as_the_words_say(claim_result computed, bool words_affirm, std::string computed_statement) {
   if (computed.outcome != verdict::holds || words_affirm) return computed;
-  return words_erratum(std::move(computed.evidence), std::move(computed_statement), std::move(computed.note));
+  computed.outcome = verdict::erratum;  // the rest of what was computed (its formulas read, its certificate) stands
+  computed.correction = std::move(computed_statement);
+  return computed;
 }
 
 /// Whether quoted words affirm or deny a property: `word`, or "not word" / "in"/"un" + word.

@@ -514,4 +514,12 @@ coq_export coq_certificate(const std::string& claim_id, const std::string& state
   return out;
 }
 
+void record_certificate(claim_result& result, const coq_export& certificate) {
+  result.certificate = certificate.text;
+  result.certificate_lemmas = certificate.lemmas;
+  result.certificate_missing = certificate.not_exported;
+  result.refutation = certificate.refutation;
+  result.refutation_lemmas = certificate.refutation_lemmas;
+}
+
 }  // namespace simpson::verify::detail

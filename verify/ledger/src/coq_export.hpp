@@ -31,6 +31,9 @@ struct coq_export {
 /// such as V, a non-integer power, a floating-point number) makes the whole export fail with the reason.
 coq_export coq_certificate(const std::string& claim_id, const std::string& statement, const std::vector<proof_goal>& goals);
 
+/// The certificate, or why there is none, and the refuted statements' negations, into `result`.
+void record_certificate(claim_result& result, const coq_export& certificate);
+
 /// A Coq identifier from a claim id or a symbol name: letters, digits and '_'.
 std::string coq_identifier(const std::string& name);
 

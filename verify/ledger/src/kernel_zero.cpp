@@ -90,25 +90,19 @@ class point_evaluation {
 
 /// A bound on the degree in one symbol of the numerator of an expression written as one fraction
 /// the way the tree builds it, and its denominator as the factors the tree divides by (each keyed by
-/// its text, with its multiplicity and its degree): a sum takes the least common multiple of its
+/// itself, with its multiplicity and its degree): a sum takes the least common multiple of its
 /// terms' denominators (the same factor twice is one factor), a product adds, an integer power
 /// multiplies or turns its base into a denominator. From the tree alone: GiNaC's normal form is not
 /// consulted.
 struct degree_bound {
   long numerator = 0;
-  std::map<std::string, std::pair<long, long>> denominator;  // factor -> (multiplicity, degree)
+  std::map<GiNaC::ex, std::pair<long, long>, GiNaC::ex_is_less> denominator;  // factor -> (multiplicity, degree)
   long denominator_degree() const {
     long d = 0;
     for (const auto& [factor, md] : denominator) d += md.first * md.second;
     return d;
   }
 };
-
-std::string text_of_factor(const GiNaC::ex& e) {
-  std::ostringstream out;
-  out << e;
-  return out.str();
-}
 
 degree_bound bound_in(const GiNaC::ex& e, const std::string& name) {
   if (GiNaC::is_a<GiNaC::symbol>(e)) return {GiNaC::ex_to<GiNaC::symbol>(e).get_name() == name ? 1 : 0, {}};
@@ -147,7 +141,7 @@ degree_bound bound_in(const GiNaC::ex& e, const std::string& name) {
       for (const auto& [key, md] : base.denominator) out.denominator[key] = {k * md.first, md.second};
     } else {  // (N/D)^-k = D^k / N^k: the base's numerator, as a factor of its own
       out.numerator = -k * base.denominator_degree();
-      out.denominator[text_of_factor(e.op(0))] = {-k, base.numerator};
+      out.denominator[e.op(0)] = {-k, base.numerator};
     }
     return out;
   }

@@ -2,6 +2,7 @@
 
 #include <simpson/verify/claims_file.hpp>
 #include <simpson/verify/formula_reference.hpp>
+#include <simpson/verify/tex_macros.hpp>
 #include <simpson/verify/quoted_words.hpp>
 
 #include "check_registry.hpp"
@@ -89,11 +90,11 @@ claim_result as_the_sentence_says(claim_result result, const detail::shape_call&
   const quoted_sentence said = quote(ctx, says->second.values.front());
   const bool affirmed = said.choice("property", detail::affirmed_or_denied(property->second.values.front())) == "affirmed";
   result.evidence["stated"] = affirmed ? property->second.values.front() : "not " + property->second.values.front();
-  if (result.outcome != verdict::holds || affirmed) return result;
-  result.outcome = verdict::erratum;
   const json& statement = result.evidence["exact"]["statement"];
-  result.correction = "It is " + property->second.values.front() + ": " + (statement.is_string() ? statement.get<std::string>() : call.statement);
-  result.note = "Wording: the sentence denies what the formulas it judges prove.";
+  const std::string fact = "It is " + property->second.values.front() + ": " + (statement.is_string() ? statement.get<std::string>() : call.statement);
+  const bool denied = result.outcome == verdict::holds && !affirmed;
+  result = detail::as_the_words_say(std::move(result), affirmed, fact);
+  if (denied) result.note = "Wording: the sentence denies what the formulas it judges prove.";
   return result;
 }
 
@@ -200,6 +201,11 @@ void use_claims_file(const std::string& text, const std::string& file) {
 const claims_document* installed_document() { return installed_document_storage() ? &*installed_document_storage() : nullptr; }
 
 void check_claims_file_formulas(const paper_source& document) {
+  try {
+    defined_macros(document.text);  // a macro definition that does not read: the document is at fault, and named, once
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("paper '" + document.origin + "', " + e.what());
+  }
   for (const claim_record& r : installed_records()) {
     if (r.shape.empty()) continue;
     const std::string printed = detail::check_shape_formulas(r, installed_file(), document, installed_document());

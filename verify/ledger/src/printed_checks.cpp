@@ -237,14 +237,6 @@ void decide(claim_result& result, const printed_outcome& g, const std::string& c
                      result.note);
 }
 
-/// A claim's Coq files, or why it has none, into its result.
-void record_certificate(claim_result& result, const detail::coq_export& certificate) {
-  result.certificate = certificate.text;
-  result.certificate_lemmas = certificate.lemmas;
-  result.certificate_missing = certificate.not_exported;
-  result.refutation = certificate.refutation;
-  result.refutation_lemmas = certificate.refutation_lemmas;
-}
 
 }  // namespace
 
@@ -326,7 +318,7 @@ claim_result check_claim(const claim& c, const run_context& ctx) {
       result.certificate_missing = detail::without_coq_statement(c, "its exact proof is our kernel's alone: no Coq statement yet");
       return result;
     }
-    record_certificate(result, detail::coq_certificate(c.id, c.statement, check->coq_goals()));
+    detail::record_certificate(result, detail::coq_certificate(c.id, c.statement, check->coq_goals()));
     return result;
   }
   if (!ctx.paper) {
@@ -355,7 +347,7 @@ claim_result check_claim(const claim& c, const run_context& ctx) {
   decide(result, outcome, c.id);
   detail::coq_export certificate = detail::coq_certificate(c.id, c.statement, outcome.goals);
   if (outcome.goals.empty()) certificate.not_exported = detail::without_coq_statement(c, certificate.not_exported);
-  record_certificate(result, certificate);
+  detail::record_certificate(result, certificate);
   return result;
 }
 

@@ -141,11 +141,6 @@ std::string check_shape_formulas(const claim_record& record, const std::string& 
   const shape_call call{record.id, record.statement, record.with, declared};
   std::optional<shape_reader> read;
   try {
-    defined_macros(document.text);  // a macro definition that does not read: the document is at fault, and named
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument("paper '" + document.origin + "', " + e.what());
-  }
-  try {
     read.emplace(call, document);
   } catch (const std::invalid_argument& e) {
     const auto where = record.with.find("where");

@@ -138,12 +138,7 @@ claim_result identity_verdict(const shape_call& call, shape_reader& read, const 
     if (!own_decided) result.note += " Our kernel could not decide it (" + own.evidence + "): GiNaC's proof alone.";
   }
   result.printed = read.printed();
-  const coq_export certificate = coq_certificate(call.claim_id, call.statement, {decided(what, lhs, rhs)});
-  result.certificate = certificate.text;
-  result.certificate_lemmas = certificate.lemmas;
-  result.certificate_missing = certificate.not_exported;
-  result.refutation = certificate.refutation;
-  result.refutation_lemmas = certificate.refutation_lemmas;
+  record_certificate(result, coq_certificate(call.claim_id, call.statement, {decided(what, lhs, rhs)}));
   return result;
 }
 

@@ -23,6 +23,17 @@ GiNaC::matrix canonical_j(unsigned n) {
   return j;
 }
 
+/// P with f = y^T P y when f is a quadratic form in y (P_ij = ∂²f/∂y_i∂y_j / 2, as written, not
+/// normalised); whether f is one is the caller's to decide.
+GiNaC::matrix form_matrix(const ex& f, const GiNaC::matrix& y) {
+  const unsigned n = y.rows();
+  GiNaC::matrix p(n, n);
+  for (unsigned i = 0; i < n; ++i) {
+    for (unsigned j = 0; j < n; ++j) p(i, j) = GiNaC::diff(GiNaC::diff(f, GiNaC::ex_to<GiNaC::symbol>(y(i, 0))), GiNaC::ex_to<GiNaC::symbol>(y(j, 0))) / 2;
+  }
+  return p;
+}
+
 /// The quadratic form y^T Q y that `m` conserves (Q symmetric, from the linear system m^T Q m = Q,
 /// as Section 7 of the paper derives its Q_c) and that agrees with `printed`, a quadratic form in
 /// `state`, in the coefficient of state[keep]^2 (else the first coefficient both have): none when the printed function is not a quadratic
@@ -70,10 +81,8 @@ conserved_form conserved_quadratic_form(const GiNaC::matrix& m, const std::vecto
   if (free.empty()) return {std::nullopt, "the map conserves no quadratic form but 0", ""};
   if (free.size() > 1) return {std::nullopt, "the map conserves " + std::to_string(free.size()) + " independent quadratic forms: no one correction", ""};
   // The printed function as y^T P y.
-  GiNaC::matrix p(n, n);
-  for (unsigned i = 0; i < n; ++i) {
-    for (unsigned j = 0; j < n; ++j) p(i, j) = GiNaC::normal(GiNaC::diff(GiNaC::diff(printed, state[i]), state[j]) / 2);
-  }
+  GiNaC::matrix p = form_matrix(printed, y);
+  for (unsigned k = 0; k < n * n; ++k) p(k / n, k % n) = GiNaC::normal(p(k / n, k % n));
   const ex as_form = ((y.transpose() * p * y).evalm()).op(0);
   if (!GiNaC::normal(printed - as_form).is_zero()) return {std::nullopt, "the printed function is not a quadratic form in the state", ""};
   // The coefficient of keep^2 first, then the others in the state's order.
@@ -103,11 +112,7 @@ conserved_form conserved_quadratic_form(const GiNaC::matrix& m, const std::vecto
 /// GiNaC (second derivatives), but both identities are our kernel's: a wrong P fails one of them.
 /// None (our kernel then decides the statement as written) when the function is not such a form.
 std::optional<kernel_decision> own_decision_as_forms(const GiNaC::matrix& m, const GiNaC::matrix& y, const ex& h) {
-  const unsigned n = m.rows();
-  GiNaC::matrix p(n, n);
-  for (unsigned i = 0; i < n; ++i) {
-    for (unsigned j = 0; j < n; ++j) p(i, j) = GiNaC::diff(GiNaC::diff(h, GiNaC::ex_to<GiNaC::symbol>(y(i, 0))), GiNaC::ex_to<GiNaC::symbol>(y(j, 0))) / 2;
-  }
+  const GiNaC::matrix p = form_matrix(h, y);
   const kernel_decision form = kernel_decides_zero(h - (y.transpose() * p * y).evalm().op(0));
   if (form.outcome != kernel_decision::result::zero) return std::nullopt;
   kernel_decision invariant = kernel_decides_zero((m.transpose() * p * m - p).evalm());

@@ -139,13 +139,6 @@ ex interval_end(const referenced_formula& condition, const ex& v) {
   return high;
 }
 
-/// The Coq certificate of `goals` into `result`, or why there is none.
-void certify(claim_result& result, const shape_call& call, const std::vector<proof_goal>& goals) {
-  const coq_export certificate = coq_certificate(call.claim_id, call.statement, goals);
-  result.certificate = certificate.text;
-  result.certificate_lemmas = certificate.lemmas;
-  result.certificate_missing = certificate.not_exported;
-}
 
 }  // namespace
 
@@ -216,12 +209,12 @@ claim_result stability_interval_shape(const shape_call& call, const run_context&
   std::vector<proof_goal> goals{decided("det", determinant_2x2(m), 1)};  // a d − b c as written, not GiNaC's value
   if (stable_near_zero && equal) {
     goals.push_back(excess->sign_goal_on("stable_band", -1, *excess->exact(high)));
-    certify(result, call, goals);
+    record_certificate(result, coq_certificate(call.claim_id, call.statement, goals));
     result.outcome = verdict::holds;
     return result;
   }
   if (stable_near_zero && excess->ends.front().exact()) goals.push_back(excess->sign_goal_on("first_band", -1, excess->ends.front().low));
-  certify(result, call, goals);
+  record_certificate(result, coq_certificate(call.claim_id, call.statement, goals));
   result.outcome = verdict::erratum;
   result.correction = bands.empty() ? "never stable for " + var + " > 0" : "stable exactly for " + fmt::format("{}", fmt::join(bands, ", "));
   result.note = "As printed: " + folded_space(condition.tex) + " is not the first stable band of " + reference_of(call, "map") +
@@ -283,14 +276,14 @@ claim_result sign_on_interval_shape(const shape_call& call, const run_context& c
   // Coq: the sign on the printed interval (holds), or the correction's: the sign found on (0, c),
   // or on (0, r) up to the first root or pole r when it is rational.
   if (!inside && sign == want) {
-    certify(result, call, {g->sign_goal_on("sign", want, *c)});
+    record_certificate(result, coq_certificate(call.claim_id, call.statement, {g->sign_goal_on("sign", want, *c)}));
     result.outcome = verdict::holds;
     return result;
   }
   if (!inside) {
-    certify(result, call, {g->sign_goal_on("sign", sign, *c)});
+    record_certificate(result, coq_certificate(call.claim_id, call.statement, {g->sign_goal_on("sign", sign, *c)}));
   } else if (inside->exact()) {
-    certify(result, call, {g->sign_goal_on("sign_before_root", sign, inside->low)});
+    record_certificate(result, coq_certificate(call.claim_id, call.statement, {g->sign_goal_on("sign_before_root", sign, inside->low)}));
   } else {
     result.certificate_missing = "the sign changes at an irrational root, which the certificate cannot name as a bound; our kernel's Sturm sequences decide it";
   }
