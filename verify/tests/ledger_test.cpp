@@ -71,17 +71,3 @@ INSTANTIATE_TEST_SUITE_P(Ledger, ClaimVerdict, ::testing::ValuesIn(all_ids()), [
 
 }  // namespace
 }  // namespace simpson::verify
-
-namespace simpson::verify {
-namespace {
-
-// truncation-1440's numeric samples are decisive: each bound is below half the θ⁴ term, in double
-// as in the finer precisions, so a leading coefficient off by half of 1/1440 could not pass.
-TEST(TruncationRecheck, EverySampleIsDecisive) {
-  const run_context ctx{{precision::parse("double"), precision::parse("mpfr:100")}, 7, 32};
-  const claim_result r = find_claim("truncation-1440").check(ctx);
-  EXPECT_EQ(r.evidence["numeric"]["decisive"], true) << r.evidence["numeric"].dump(2);
-}
-
-}  // namespace
-}  // namespace simpson::verify

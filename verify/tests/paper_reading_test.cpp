@@ -83,7 +83,9 @@ TEST(PaperReading, AChangedCoefficientInTheTextChangesTheVerdict) {
       {"\\label{lagrangien-discret}", "{{m\\,h}\\over2}", "{{m\\,h}\\over3}", {"classical-euler-lagrange"}},
       {"\\label{schema-ordre-deux}", "{1\\over2} \\, \\Big[", "{1\\over3} \\, \\Big[", {"classical-euler-lagrange"}},
       {"\\label{equation-milieu-intervalle}", "{{4}\\over{h^2}}", "{{3}\\over{h^2}}", {"internal-equation"}},
-      {"\\label{schema-ordre-3}", "22 \\, q_j", "21 \\, q_j", {"scheme-order-3"}},
+      // The truncation error and its order are the printed scheme's (the paper: "the order of
+      // truncation of the scheme (schema-ordre-3)"), so a misprinted scheme takes them along.
+      {"\\label{schema-ordre-3}", "22 \\, q_j", "21 \\, q_j", {"scheme-order-3", "truncation-1440", "fourth-order-truncation"}},
       {"\\label{matrice-symplectique-ordre-2}", "- m \\, \\omega^2 \\, h", "- m \\, \\omega^2 \\, h^2", {"newmark-matrix", "newmark-det"}},
       // The band every "under the stability condition" judges is read: 2 sqrt(3) covers the unstable gap
       // (8, 12), where Delta > 0 and the roots are real.

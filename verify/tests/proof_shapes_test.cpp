@@ -150,6 +150,8 @@ Stable for $0 < \om h < 2$. Also stable for $0 < \om h < 2 \sqrt{2}$. And for $0
 \begin{equation}\label{trunc} \frac{\om^4 h^2}{12} q_j + {\rm O}(h^4) \end{equation}
 \begin{equation}\label{truncwrong} \frac{\om^4 h^2}{24} q_j + {\rm O}(h^4) \end{equation}
 \begin{equation}\label{truncshort} {\rm O}(h^4) \end{equation}
+\begin{equation}\label{steep} \frac{q_{j+1} - 2 q_j + q_{j-1}}{h^6} + \frac{\om^2 q_j}{h^4} - \frac{\om^4 q_j}{12 h^2} = 0 \end{equation}
+\begin{equation}\label{steepzero} 0 + {\rm O}(h^2) \end{equation}
 This scheme is of fourth order. The same scheme is of second order.
 Coefficient $1 - \frac{\om^2 h^2}{4}$ positive on $0 < \om h < 2$, but not on the wide $0 < \om h < 3$.
 That map is symplectic indeed. This map is not symplectic, some say. Another map is wonderful here.
@@ -307,6 +309,25 @@ TEST_F(ShapesOnADocument, Truncation) {
   EXPECT_EQ(wrong.correction, "as derived: (h^2*omega^4*q_j)/(12) + O(h^4)");
   // An order claimed without its leading term: a check of the printed terms alone (none) would pass.
   EXPECT_EQ(run("truncation", "{ printed = \"truncshort\", " + args + " }").outcome, verdict::erratum);
+  // Our kernel confirms each: the printed terms, or GiNaC's series and that the printed terms differ.
+  EXPECT_EQ(holds.evidence["exact"]["own"].get<std::string>().rfind("holds: ", 0), 0u) << holds.evidence.dump();
+  EXPECT_NE(wrong.evidence["exact"]["own"].get<std::string>().find("printed terms differ"), std::string::npos) << wrong.evidence.dump();
+  EXPECT_EQ(wrong.evidence["exact"]["own"].get<std::string>().rfind("fails: ", 0), 0u) << wrong.evidence.dump();
+  // The identity our kernel decided is the Coq certificate: the scheme on the Taylor polynomials is
+  // the printed terms plus h^4 times the remainder.
+  EXPECT_FALSE(holds.certificate.empty()) << holds.certificate_missing;
+  EXPECT_EQ(holds.certificate_lemmas.size(), 1u);
+}
+
+TEST_F(ShapesOnADocument, TruncationOfASchemeWithADeepPole) {
+  // A scheme with h^-6 in it: the solution's Taylor polynomials through h^(N+2) (enough for h^-2)
+  // cancel every term through h^2 and would pass "0 + O(h^2)"; the term that remains, -omega^6/360
+  // q_j, comes from h^6 of cos, which the degree read from the tree's denominators (6) keeps.
+  const std::string args = R"(scheme = "steep:lhs", sequence = ['q_{j-1}', 'q_j', 'q_{j+1}'], step = ['h'], frequency = '$\omega$')";
+  const claim_result r = run("truncation", "{ printed = \"steepzero\", " + args + " }");
+  EXPECT_EQ(r.outcome, verdict::erratum) << r.note << r.evidence.dump();
+  EXPECT_EQ(r.correction, "as derived: (-omega^6*q_j)/(360) + O(h^2)");
+  EXPECT_EQ(r.evidence["exact"]["taylor_degree"], 7);
 }
 
 TEST_F(ShapesOnADocument, StatedOrder) {
@@ -319,6 +340,7 @@ TEST_F(ShapesOnADocument, StatedOrder) {
   const claim_result wrong = run("stated-order", "{ sentence = 'This scheme is of {order} order', " + args + " }");
   EXPECT_EQ(wrong.outcome, verdict::erratum);
   EXPECT_EQ(wrong.correction, "the scheme is of order 2");
+  EXPECT_EQ(holds.evidence["exact"]["own"].get<std::string>().rfind("holds: ", 0), 0u) << holds.evidence.dump();
   EXPECT_EQ(run("stated-order", "{ sentence = 'A sentence the document does not have, of {order} order', " + args + " }").outcome,
             verdict::text_changed);
 }

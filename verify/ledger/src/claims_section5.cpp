@@ -256,13 +256,6 @@ std::vector<std::pair<long, rational>> truncation_series(long below) {
   return laurent_coefficients(three_term_residual(par, c, symbolic(1), c), below);
 }
 
-rational coefficient(const std::vector<std::pair<long, rational>>& series, long power) {
-  for (const auto& [k, c] : series) {
-    if (k == power) return c;
-  }
-  return 0;
-}
-
 claim_result check_scheme_consistency_computed() {
   const auto series = truncation_series(10);
   json evidence;
@@ -316,90 +309,6 @@ claim_result check_taylor_display(const run_context&) {
   return erratum(printed, corrected, "q_{j+-1} = q_j +- h q' + ... +- h^5/120 q^(5) + h^6/720 d^6q/dt^6 + O(h^7)",
                  "Typographical: the h^6 term of both expansions is printed with d^6q/dt^5. The truncation error below uses "
                  "the correct sixth derivative.");
-}
-
-claim_result check_truncation_1440(const run_context& ctx) {
-  const auto series = truncation_series(14);
-  const rational c4 = coefficient(series, 4), c6 = coefficient(series, 6), c8 = coefficient(series, 8);
-  const rational c10 = coefficient(series, 10), c12 = coefficient(series, 12);
-  bool lower_vanish = true;
-  for (const auto& [k, c] : series) lower_vanish = lower_vanish && (k >= 4 || c == 0);
-  const bool holds = lower_vanish && c4 == rational(1, 1440);
-  json exact = {{"method", "exact series"},
-                {"reduction", std::string(unit_reduction) +
-                                  "; T_h(q_j)/q_j = omega^2 F(omega h) for every exact solution, since q_{j+1} + q_{j-1} = 2 cos(omega h) q_j"},
-                {"F_theta", series_to_string(series, "θ") + " + O(θ^14)"},
-                {"T_h_over_q_j", "omega^6 h^4 " + simpson::to_string(c4) + " + omega^8 h^6 (" + simpson::to_string(c6) +
-                                     ") + omega^10 h^8 " + simpson::to_string(c8) + " + O(h^10)"},
-                {"leading_coefficient", simpson::to_string(c4)}};
-  // Numeric: T_h against omega^2 (c4 θ^4 + c6 θ^6 + c8 θ^8) q_j for θ in [θ_min, 0.5], where the tail
-  // after θ^8 is at most |c10| θ^10 + |c12| θ^12 (alternating, decreasing terms), doubled for safety.
-  // Each sample must be decisive: its bound below half the θ^4 term, so that a coefficient off by
-  // half of 1/1440 fails. The round-off bound is about 256 eps |q| omega^2/θ^2 (below), so θ_min =
-  // (512 · 1440 eps)^(1/6) in the run's precision (0.023 in double), and the samples start at p = 0,
-  // where q_j is the whole amplitude.
-  bool within = false, decisive = true;
-  const json numeric = numeric_recheck<false>(ctx, "truncation-1440", [&](auto tag, const sample& s) {
-    using Real = typename decltype(tag)::type;
-    using std::pow;
-    // Intervals take double's θ range: their enclosure must be narrower than the tail, which
-    // vanishes like θ^10, so a θ_min that fell with the digits would never decide.
-    const Real theta_min = pow(Real(512 * 1440) * (is_interval_v<Real> ? Real(eps<double>()) : eps<Real>()), Real(1) / 6);
-    const Real theta = theta_min + (Real(1) / 2 - theta_min) * Real(s.omega * s.h / 2.7);
-    const oscillator_parameters<Real> par{Real(s.m), Real(s.omega), Real(theta / Real(s.omega))};
-    const phase_point<Real> y{Real(0), Real(s.q)};
-    const Real q_prev = exact_solution(par, y, Real(-par.h())).q;
-    const Real q_next = exact_solution(par, y, par.h()).q;
-    const Real T = three_term_residual(par, q_prev, y.q, q_next);
-    const Real th = par.omega_h(), x = th * th;
-    const Real series_value = par.omega() * par.omega() * x * x *
-                              (Real(boost::multiprecision::numerator(c4)) / Real(boost::multiprecision::denominator(c4)) + x * (Real(boost::multiprecision::numerator(c6)) / Real(boost::multiprecision::denominator(c6)) +
-                                                                                    x * Real(boost::multiprecision::numerator(c8)) / Real(boost::multiprecision::denominator(c8)))) *
-                              y.q;
-    using std::abs;
-    const Real omega2 = par.omega() * par.omega();
-    const Real tail = 2 * omega2 * x * x * x * x * x * (abs(Real(boost::multiprecision::numerator(c10)) / Real(boost::multiprecision::denominator(c10))) +
-                                                       x * abs(Real(boost::multiprecision::numerator(c12)) / Real(boost::multiprecision::denominator(c12)))) * abs(y.q);
-    // Round-off: q_{j+-1} carry ~8 roundings of the amplitude A = |q| + |p|/(m omega); the second
-    // difference divides them by h^2, the other terms by 1/omega^2: 64 eps A (4/h^2 + omega^2 (2 + x)).
-    const Real amplitude = abs(y.q) + abs(y.p) / (par.m() * par.omega());
-    // (None for an interval: its round-off is inside its enclosure.)
-    const Real round_off = is_interval_v<Real> ? Real(0) : Real(64 * eps<Real>() * amplitude * (4 / (par.h() * par.h()) + omega2 * (2 + x)));
-    const Real leading = abs(Real(omega2 * x * x * Real(boost::multiprecision::numerator(c4)) /
-                                  Real(boost::multiprecision::denominator(c4)) * y.q));
-    if constexpr (is_interval_v<Real>) {
-      decisive = decisive && upper(Real(2 * tail)) < lower(leading);
-    } else {
-      decisive = decisive && 2 * (tail + round_off) < leading;
-    }
-    return residual_and_bound<Real>{Real(T - series_value), Real(tail + round_off), false};
-  }, within);
-  json evidence;
-  evidence["exact"] = exact;
-  evidence["numeric"] = numeric;
-  evidence["numeric"]["decisive"] = decisive;
-  evidence["numeric"]["sampling"] = "theta in [(512 1440 eps)^(1/6), 1/2] in each precision, p = 0: every bound below half "
-                                    "the theta^4 term, so a leading coefficient off by half of 1/1440 fails";
-  return confirmed_if(holds && within && decisive, evidence,
-                      "The next terms are -omega^8 h^6/15120 q_j and +11 omega^10 h^8/7257600 q_j. In double the round-off "
-                      "bound 256 eps |q| omega^2/theta^2 exceeds the theta^4 term below theta = 0.023, where 1/1440 is "
-                      "invisible in double: the samples start there, and lower in finer precisions.");
-}
-
-claim_result check_fourth_order_truncation(const run_context& ctx) {
-  const quoted_sentence said =
-      quote(ctx, "The numerical scheme (\\ref{schema-ordre-3}) is {order} order accurate in the sense of the truncation error.");
-  const int stated = said.number("order");
-  const auto series = truncation_series(10);
-  const long leading = series.empty() ? 0 : series.front().first;
-  json evidence;
-  evidence["exact"] = {{"method", "exact series"},
-                       {"reduction", "T_h(q_j)/q_j = omega^2 F(omega h), (schema-ordre-3) normalised as q'' + omega^2 q"},
-                       {"leading_power_of_h", leading},
-                       {"stated_order", stated}};
-  if (series.empty() || leading == stated) return confirmed_if(!series.empty(), evidence);
-  return words_erratum(evidence, "The truncation error is of order h^" + std::to_string(leading) + " (the printed words say '" +
-                                     said.words("order") + "')");
 }
 
 claim_result check_characteristic_equation(const run_context&) {
@@ -685,8 +594,6 @@ void add_section5_checks(check_registry& checks) {
   checks.add("scheme-order3", check_scheme_order3);
   checks.add("scheme-consistency", check_scheme_consistency);
   checks.add("taylor-display", check_taylor_display);
-  checks.add("truncation-1440", check_truncation_1440);
-  checks.add("fourth-order-truncation", check_fourth_order_truncation);
   checks.add("characteristic-equation", check_characteristic_equation);
   checks.add("root-modulus", check_root_modulus);
   checks.add("discriminant-factorization", check_discriminant_factorization);

@@ -262,4 +262,6 @@ kernel_decision kernel_decides_zero(const GiNaC::ex& given, std::size_t most_poi
   return out;
 }
 
+long kernel_denominator_degree(const GiNaC::ex& e, const std::string& symbol) { return bound_in(e.evalm(), symbol).denominator_degree(); }
+
 }  // namespace simpson::verify::detail

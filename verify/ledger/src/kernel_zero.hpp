@@ -26,4 +26,9 @@ struct kernel_decision {
 /// compute (a square root, a function such as V) or the grid would exceed `most_points`.
 kernel_decision kernel_decides_zero(const GiNaC::ex& e, std::size_t most_points = 20000);
 
+/// A bound, from the tree as read, on the degree in `symbol` of the denominator e is written over
+/// (the product of the factors it divides by): 0 when the symbol is in no denominator; at least the
+/// order of e's pole in that symbol at 0.
+long kernel_denominator_degree(const GiNaC::ex& e, const std::string& symbol);
+
 }  // namespace simpson::verify::detail

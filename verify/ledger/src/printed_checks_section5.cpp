@@ -212,42 +212,6 @@ printed_outcome discriminant_factorization(const paper_reading& r) {
   return compare("Delta", printed_side(r, "discriminant-factorized"), b * b - 4 * a * a, discriminant(x));
 }
 
-/// T_h(q_j): the left side of (schema-ordre-3) on the exact solution through (p_j, q_j), with the
-/// derived scheme normalised as (schema-ordre-3) is (the core's coefficient of q_{j+1}, 1/h² + ω²/24).
-/// The printed display claims ω⁶h⁴q_j/1440 + O(h⁶).
-printed_outcome truncation(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
-  const ex core_scheme = three_term_residual(parameters(d), d.q_prev, d.q_j, d.q_next);
-  const auto [printed_terms, order] = split_order(printed_side(r, "truncation-error"), d.h);
-  printed_outcome o;
-  if (order == 0) {
-    o.proved = "the printed truncation error has no order term O(h^k)";
-    o.property = true;
-    return o;
-  }
-  const ex derived = truncation_series(d, core_scheme, order);
-  const ex low = GiNaC::normal(derived - printed_terms);
-  o.holds = low.is_zero();
-  // The certificate: the scheme on the Taylor polynomials of the exact solution is the printed terms
-  // plus h^order times an explicit remainder (a polynomial in h when the printed terms are right).
-  if (o.holds) {
-    const ex on_taylor = on_taylor_solution(d, normalised_scheme(d, core_scheme), order);
-    const ex remainder = GiNaC::normal((on_taylor - printed_terms) / GiNaC::pow(d.h, order));
-    o.goals.push_back({"printed_taylor_remainder", on_taylor, printed_terms + GiNaC::pow(d.h, order) * remainder, true});
-  } else {
-    o.goals.push_back({"printed", derived, printed_terms, false});
-  }
-  o.proved = "T_h(q_j) − printed terms = " + text_of(low) + " + O(h^" + std::to_string(order) +
-             ") (GiNaC series in h of the derived scheme on the exact solution, symbolic m, omega, p_j, q_j)";
-  if (!o.holds) o.correction = "as derived: T_h(q_j) = " + text_of(derived) + " + O(h^" + std::to_string(order) + ")";
-  // The derived side: the core's scheme is the derived one up to a constant factor, which the
-  // normalisation to the core's q_{j+1} coefficient makes 1 (no second series needed).
-  const auto factor = equation_factor(core_scheme, d.scheme(d.q_prev, d.q_j, d.q_next), {d.q_prev, d.q_j, d.q_next});
-  o.derived_holds = factor.has_value();
-  o.derived = factor ? "derived scheme = (" + text_of(*factor) + ") x the core's three_term_residual; T_h is the core's, normalised alike"
-                     : "the core's three_term_residual is not a multiple of the derived scheme";
-  return o;
-}
 
 }  // namespace
 
@@ -291,7 +255,6 @@ void add_printed_checks_section5(check_registry& checks) {
   checks.add_printed("reduced-lagrangian", {"Lagrangien-reduit"}, reduced_lagrangian_check);
   checks.add_printed("scheme-order3", {"schema-ordre-3"}, scheme_order_3);
   checks.add_printed("taylor-display", {"Taylor q_{j+1}", "Taylor q_{j-1}"}, taylor_display);
-  checks.add_printed("truncation-1440", {"truncation-error", "schema-ordre-3"}, truncation);
   checks.add_printed("characteristic-equation", {"a", "b", "schema-ordre-3"}, characteristic_equation);
   checks.add_printed("discriminant-factorization", {"discriminant-factorized", "a", "b"}, discriminant_factorization);
 }

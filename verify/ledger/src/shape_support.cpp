@@ -42,7 +42,12 @@ shape_reader::shape_reader(const shape_call& call, const paper_source& document)
   if (where == call.with.end()) return;
   for (const std::string& reference : where->second.values) {
     definitions_.push_back(read_definition(document_, macros_, reference));
-    definitions_read_.push_back({{"reference", reference}, {"label", definitions_.back().locator + ", put in"}, {"line", 0}});
+    const definition& d = definitions_.back();
+    definitions_read_.push_back({{"reference", reference},
+                                 {"label", d.locator + ", put in"},
+                                 {"line", d.line},
+                                 {"tex", folded_space(d.tex)},
+                                 {"parsed", json::array({text_of(d.name) + " = " + text_of(d.value)})}});
   }
   // A symbol a definition defines is declared by it (Phi = (map)); what it is defined as must be declared.
   for (const definition& d : definitions_) declared_.insert(d.name.get_name());
@@ -95,6 +100,7 @@ void shape_reader::declared_only(const ex& e, const std::string& where) const {
 
 void shape_reader::record(const std::string& reference, const std::string& locator, int line, const std::string& tex,
                           const std::optional<ex>& value) {
+  if (line < 1) return;  // the record's own TeX ('$\omega h$'): not read from the document
   json entry = {{"reference", reference}, {"label", locator}, {"line", line}};
   if (!tex.empty()) entry["tex"] = folded_space(tex);
   if (value) entry["parsed"] = json::array({text_of(*value)});

@@ -1,7 +1,9 @@
-// The series shapes (shape_support.hpp): a printed truncation error, and the order a sentence states.
+// The series shapes (shape_support.hpp): a printed truncation error, and the order a sentence states,
+// each a series GiNaC expands and our kernel confirms on the solution's Taylor polynomials.
 
 #include "shape_support.hpp"
 
+#include "coq_export.hpp"
 #include "printed_check_support.hpp"
 
 #include <simpson/verify/quoted_words.hpp>
@@ -16,20 +18,38 @@ using GiNaC::ex;
 
 namespace {
 
-/// The scheme (= 0, in three consecutive states) on the exact solution of q'' = −ω² q through the
-/// middle state, q(t_j ± h) = q_j cos ωh ± (v_j/ω) sin ωh, as GiNaC's series in h to O(h^order):
-/// cos and sin as Taylor polynomials through h^(order + 2), the scheme dividing by h² at most.
-ex series_on_solution(const ex& scheme, const std::vector<GiNaC::symbol>& sequence, const GiNaC::symbol& h, const ex& omega, int order) {
+/// The degree K of the Taylor polynomials of the exact solution that makes the scheme's series exact
+/// through h^(order − 1): the scheme is a polynomial in its states (none of them in a denominator)
+/// whose coefficients have a pole at h = 0 of order at most d, the degree in h of the denominators of
+/// the tree as read (our kernel's bound, kernel_zero.hpp), so states wrong by O(h^(K+1)) change it by
+/// O(h^(K+1−d)). Throws std::invalid_argument when a state is in a denominator.
+int taylor_degree(const shape_call& call, const ex& scheme, const std::vector<GiNaC::symbol>& sequence, const GiNaC::symbol& h, int order) {
+  for (const GiNaC::symbol& state : sequence) {
+    if (kernel_denominator_degree(scheme, state.get_name()) > 0) {
+      throw std::invalid_argument(reference_of(call, "scheme") + " has " + state.get_name() +
+                                  " in a denominator: the series shapes take a scheme polynomial in its states");
+    }
+  }
+  return order - 1 + static_cast<int>(kernel_denominator_degree(scheme, h.get_name()));
+}
+
+/// The scheme (= 0, in three consecutive states) on the Taylor polynomials of degree `degree` of the
+/// exact solution of q'' = −ω² q through the middle state, q(t_j ± h) = q_j cos ωh ± (v_j/ω) sin ωh.
+ex on_taylor_solution(const ex& scheme, const std::vector<GiNaC::symbol>& sequence, const GiNaC::symbol& h, const ex& omega, int degree) {
   const GiNaC::symbol velocity("v_j");
   ex c = 0, sn = 0, term = 1;
-  for (int k = 0; k <= order + 2; ++k) {
+  for (int k = 0; k <= degree; ++k) {
     if (k > 0) term = term * omega * h / k;
     if (k % 2 == 0) c += (k % 4 == 0 ? 1 : -1) * term;
     else sn += (k % 4 == 1 ? 1 : -1) * term;
   }
   const ex shift = velocity / omega * sn;
-  const ex on_solution = scheme.subs(GiNaC::lst{sequence[0] == sequence[1] * c - shift, sequence[2] == sequence[1] * c + shift});
-  return GiNaC::expand(GiNaC::series_to_poly(GiNaC::series(on_solution, h == 0, order)));
+  return scheme.subs(GiNaC::lst{sequence[0] == sequence[1] * c - shift, sequence[2] == sequence[1] * c + shift});
+}
+
+/// GiNaC's series in h to O(h^order) of the scheme on the solution (on_taylor_solution, exact to that order).
+ex series_of(const ex& on_taylor, const GiNaC::symbol& h, int order) {
+  return GiNaC::expand(GiNaC::series_to_poly(GiNaC::series(on_taylor, h == 0, order)));
 }
 
 /// The lowest power of h with a nonzero coefficient, or nothing.
@@ -41,11 +61,54 @@ std::optional<int> lowest_power(const ex& e, const GiNaC::symbol& h) {
   return std::nullopt;
 }
 
+/// Our kernel's decision that f = h^power w with w regular at h = 0 (and, when `exact`, w(0) ≠ 0):
+/// w = n/d is GiNaC's witness, normal(f / h^power); our kernel decides f − h^power n/d = 0 as read,
+/// and that d (and n, when exact) at h = 0 is not zero. `zero` when all three hold, `nonzero` when
+/// one of them fails: the witness is then not one, and the claim is not confirmed.
+kernel_decision kernel_confirms_order(const ex& f, const GiNaC::symbol& h, int power, bool exact) {
+  const ex w = GiNaC::normal(f / GiNaC::pow(h, power));
+  const ex n = GiNaC::numer(w), d = GiNaC::denom(w);
+  const kernel_decision identity = kernel_decides_zero(f - GiNaC::pow(h, power) * n * GiNaC::pow(d, -1));
+  if (identity.outcome != kernel_decision::result::zero) {
+    return {identity.outcome, "f − " + h.get_name() + "^" + std::to_string(power) + " w as written: " + identity.evidence};
+  }
+  const kernel_decision regular = kernel_decides_zero(d.subs(h == 0));
+  if (regular.outcome != kernel_decision::result::nonzero) {
+    return {regular.outcome == kernel_decision::result::zero ? kernel_decision::result::nonzero : regular.outcome,
+            "w's denominator at " + h.get_name() + " = 0: " + regular.evidence};
+  }
+  std::string evidence = fmt::format("f = {}^{} w, w = n/d: f − {}^{} n/d {}; d at {} = 0 {}", h.get_name(), power, h.get_name(), power,
+                                     identity.evidence, h.get_name(), regular.evidence);
+  if (exact) {
+    const kernel_decision leading = kernel_decides_zero(n.subs(h == 0));
+    if (leading.outcome != kernel_decision::result::nonzero) {
+      return {leading.outcome == kernel_decision::result::zero ? kernel_decision::result::nonzero : leading.outcome,
+              "w's numerator at " + h.get_name() + " = 0: " + leading.evidence};
+    }
+    evidence += "; n at " + h.get_name() + " = 0 " + leading.evidence;
+  }
+  return {kernel_decision::result::zero, evidence};
+}
+
+/// Our kernel's line of evidence: `verdict` ("holds" or "fails", the claim's as our kernel decided it)
+/// and what it proved, or where it contradicts GiNaC's witness, or why it could not decide.
+std::string own_text(const kernel_decision& own, const std::string& verdict, const std::string& what) {
+  switch (own.outcome) {
+    case kernel_decision::result::zero: return verdict + ": " + what + " (" + own.evidence + ")";
+    case kernel_decision::result::nonzero: return "contradicts GiNaC: " + own.evidence;
+    default: return "not applicable: " + own.evidence;
+  }
+}
+
 }  // namespace
 
 /// A printed truncation error: the scheme (an expression in three consecutive states, = 0) on the
 /// exact solution of q'' = −ω² q through the middle state, q(t_j ± h) = q_j cos ωh ± (v_j/ω) sin ωh,
-/// as GiNaC's series in h, against the printed terms and order O(h^N).
+/// as a series in h, against the printed terms and order O(h^N). GiNaC expands the series; our kernel
+/// decides, on the Taylor polynomials of the solution (exact through h^(N−1), taylor_degree), that
+/// the scheme there is the terms plus h^N times a function regular at h = 0, GiNaC's quotient being
+/// only the witness: the printed terms when they hold, GiNaC's series (and that it differs from the
+/// printed terms) when they do not. That identity is the Coq certificate.
 claim_result truncation_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const ex printed = read.formula("printed");
@@ -55,34 +118,69 @@ claim_result truncation_shape(const shape_call& call, const run_context& ctx) {
   const GiNaC::symbol& h = step.front();
   claim_result result;
   result.printed = read.printed();
-  result.certificate_missing = "a series in h to an order: no Coq statement for this shape yet";
   // The printed terms and its order term O(h^N).
   const auto [terms, order] = split_order(printed, h);
   if (order <= 0) throw std::invalid_argument(reference_of(call, "printed") + " has no order term O(" + h.get_name() + "^k)");
-  const ex series = series_on_solution(scheme, sequence, h, omega, order);
+  const int degree = taylor_degree(call, scheme, sequence, h, order);
+  const ex on_taylor = on_taylor_solution(scheme, sequence, h, omega, degree);
+  const ex series = series_of(on_taylor, h, order);
+  // The next terms, for the reader (two more even powers), from the Taylor polynomials of a higher degree.
+  const int further = order + 4;
+  const ex series_further = series_of(on_taylor_solution(scheme, sequence, h, omega, taylor_degree(call, scheme, sequence, h, further)), h, further);
   const ex gap = GiNaC::normal(series - terms);
-  const std::string what = fmt::format("({}) on the exact solution = ({}) + O({}^{})", reference_of(call, "scheme"), reference_of(call, "printed"),
-                                       h.get_name(), order);
-  const int lowest = lowest_power(series, h).value_or(-1);  // the series' first nonzero power
+  const std::string big_o = "O(" + h.get_name() + "^" + std::to_string(order) + ")";
+  const std::string what = fmt::format("({}) on the exact solution = ({}) + {}", reference_of(call, "scheme"), reference_of(call, "printed"), big_o);
+  const bool ginac_holds = gap.is_zero();
+  // Our kernel: the printed terms when GiNaC finds them right, else GiNaC's series and its difference
+  // from the printed terms.
+  kernel_decision own = kernel_confirms_order(on_taylor - (ginac_holds ? terms : series), h, order, false);
+  std::string own_claim = fmt::format("the scheme on the solution's Taylor polynomials of degree {} = {} + {}", degree,
+                                      ginac_holds ? "the printed terms" : "GiNaC's series", big_o);
+  if (!ginac_holds && own.outcome == kernel_decision::result::zero) {
+    const kernel_decision differs = kernel_decides_zero(series - terms);
+    if (differs.outcome == kernel_decision::result::nonzero) {
+      own.evidence += "; series − printed terms " + differs.evidence;
+    } else {
+      own = {differs.outcome == kernel_decision::result::zero ? kernel_decision::result::nonzero : differs.outcome,
+             "series − printed terms: " + differs.evidence};
+    }
+    own_claim += ", and the printed terms differ from it";
+  }
   result.evidence["exact"] = {{"statement", what},
-                              {"series", text_of(series) + " + O(" + h.get_name() + "^" + std::to_string(order) + ")"},
-                              {"leading_power", lowest},
-                              {"ginac", gap.is_zero() ? "holds: series − printed terms = 0 through the printed order"
-                                                      : "fails: series − printed terms = " + text_of(gap)},
-                              {"own", "not applicable: a series (GiNaC's alone)"}};
-  if (gap.is_zero()) {
+                              {"series", text_of(series) + " + " + big_o},
+                              {"series_further", text_of(series_further) + " + O(" + h.get_name() + "^" + std::to_string(further) + ")"},
+                              {"leading_power", lowest_power(series, h).value_or(-1)},
+                              {"taylor_degree", degree},
+                              {"ginac", ginac_holds ? "holds: series − printed terms = 0 through the printed order"
+                                                    : "fails: series − printed terms = " + text_of(gap)},
+                              {"own", own_text(own, ginac_holds ? "holds" : "fails", own_claim)}};
+  // What Coq certifies: the scheme on the Taylor polynomials is the terms plus h^N times GiNaC's quotient.
+  const ex remainder = GiNaC::normal((on_taylor - (ginac_holds ? terms : series)) / GiNaC::pow(h, order));
+  std::vector<proof_goal> goals{decided(ginac_holds ? "printed_taylor_remainder" : "derived_taylor_remainder", on_taylor,
+                                        (ginac_holds ? terms : series) + GiNaC::pow(h, order) * remainder)};
+  if (!ginac_holds) goals.push_back(decided("printed", series, terms));
+  record_certificate(result, coq_certificate(call.claim_id, call.statement, goals));
+  if (own.outcome == kernel_decision::result::nonzero) {
+    result.outcome = verdict::kernels_disagree;
+    result.note = "GiNaC and our kernel reached different conclusions on " + what + ": a bug in one of them.";
+    return result;
+  }
+  if (own.outcome == kernel_decision::result::not_applicable) result.note = "Our kernel could not decide it (" + own.evidence + "): GiNaC's series alone. ";
+  if (ginac_holds) {
     result.outcome = verdict::holds;
     return result;
   }
   result.outcome = verdict::erratum;
-  result.correction = "as derived: " + text_of(series) + " + O(" + h.get_name() + "^" + std::to_string(order) + ")";
-  result.note = "As printed: " + what + " is false; the series differs by " + text_of(gap) + ".";
+  result.correction = "as derived: " + text_of(series) + " + " + big_o;
+  result.note += "As printed: " + what + " is false; the series differs by " + text_of(gap) + ".";
   return result;
 }
 
 /// The order a sentence states ("the scheme is of {order} order"), its words quoted from the
 /// document and parsed, against the order computed: the scheme on the exact solution of
 /// q'' = −ω² q is O(h^(p + s + 2)) when its q_{j+1} coefficient is of order h^s, so p = that power − s − 2.
+/// GiNaC finds both powers; our kernel decides each (f = h^k w, w(0) finite and nonzero, as in
+/// kernel_confirms_order).
 claim_result stated_order_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const ex scheme = read.formula("scheme");
@@ -93,10 +191,11 @@ claim_result stated_order_shape(const shape_call& call, const run_context& ctx) 
   const int stated = sentence.number("order");
   claim_result result;
   result.printed = read.printed();
-  result.certificate_missing = "an order of accuracy: a statement about a series, no Coq statement for this shape yet";
-  const std::optional<int> scale = lowest_power(GiNaC::expand(GiNaC::normal(scheme)).coeff(sequence[2], 1), h);
+  const ex next_coefficient = GiNaC::diff(scheme, sequence[2]);
+  const std::optional<int> scale = lowest_power(GiNaC::expand(GiNaC::normal(next_coefficient)), h);
   constexpr int series_order = 10;
-  const ex series = series_on_solution(scheme, sequence, h, omega, series_order);
+  const ex on_taylor = on_taylor_solution(scheme, sequence, h, omega, taylor_degree(call, scheme, sequence, h, series_order));
+  const ex series = series_of(on_taylor, h, series_order);
   const std::optional<int> leading = lowest_power(series, h);
   if (!scale) throw std::invalid_argument(reference_of(call, "scheme") + " has no " + sequence[2].get_name() + " term");
   result.evidence["exact"] = {{"statement", "the order the sentence states, against the order computed"},
@@ -111,14 +210,37 @@ claim_result stated_order_shape(const shape_call& call, const run_context& ctx) 
   }
   const int order = *leading - *scale - 2;
   result.evidence["exact"]["computed"] = order;
+  kernel_decision own = kernel_confirms_order(next_coefficient, h, *scale, true);
+  if (own.outcome == kernel_decision::result::zero) {
+    const kernel_decision on_solution = kernel_confirms_order(on_taylor, h, *leading, true);
+    own = {on_solution.outcome, "the " + sequence[2].get_name() + " coefficient: " + own.evidence + "; the scheme on the solution: " + on_solution.evidence};
+  }
+  // What Coq certifies: the two factorisations by powers of h (that their cofactors are finite and
+  // nonzero at h = 0 is our kernel's alone).
+  const auto factored = [&h](const std::string& name, const ex& f, int power) {
+    return decided(name, f, GiNaC::pow(h, power) * GiNaC::normal(f / GiNaC::pow(h, power)));
+  };
+  record_certificate(result, coq_certificate(call.claim_id, call.statement,
+                                              {factored("next_coefficient", next_coefficient, *scale), factored("taylor_order", on_taylor, *leading)}));
+  const std::string verdict_word = order == stated ? "holds" : "fails";
+  result.evidence["exact"]["ginac"] = fmt::format("{}: the series' leading power {}^{} less the {} coefficient's {}^{} less 2 is order {}",
+                                                  verdict_word, h.get_name(), *leading, sequence[2].get_name(), h.get_name(), *scale, order);
+  result.evidence["exact"]["own"] = own_text(own, verdict_word, fmt::format("the {} coefficient is of order {}^{} and the scheme on the solution of order {}^{}",
+                                                              sequence[2].get_name(), h.get_name(), *scale, h.get_name(), *leading));
+  if (own.outcome == kernel_decision::result::nonzero) {
+    result.outcome = verdict::kernels_disagree;
+    result.note = "GiNaC and our kernel reached different conclusions on the powers of the series: a bug in one of them.";
+    return result;
+  }
+  if (own.outcome == kernel_decision::result::not_applicable) result.note = "Our kernel could not decide it (" + own.evidence + "): GiNaC's series alone. ";
   if (order == stated) {
     result.outcome = verdict::holds;
     return result;
   }
   result.outcome = verdict::erratum;
   result.correction = fmt::format("the scheme is of order {}", order);
-  result.note = fmt::format("As printed: the sentence states order {}; on the exact solution the scheme is {} + O(h^{}).", stated,
-                            text_of(series), series_order);
+  result.note += fmt::format("As printed: the sentence states order {}; on the exact solution the scheme is {} + O(h^{}).", stated,
+                             text_of(series), series_order);
   return result;
 }
 

@@ -198,7 +198,7 @@ definition read_definition(const paper_source& document, const std::map<std::str
   if (!GiNaC::is_a<GiNaC::symbol>(name)) {
     throw std::invalid_argument(f.locator + ": the left side '" + folded_space(f.sides.front()) + "' of a definition is not one symbol");
   }
-  return {GiNaC::ex_to<GiNaC::symbol>(name), f.value, f.locator};
+  return {GiNaC::ex_to<GiNaC::symbol>(name), f.value, f.locator, f.line, f.tex};
 }
 
 namespace {

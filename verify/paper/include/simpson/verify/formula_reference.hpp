@@ -58,6 +58,8 @@ struct definition {
   GiNaC::symbol name;
   GiNaC::ex value;
   std::string locator;
+  int line = 0;     // where it was read
+  std::string tex;  // as printed
 };
 definition read_definition(const paper_source& document, const std::map<std::string, tex_macro>& macros, const std::string& reference);
 
