@@ -57,11 +57,11 @@ TEST(ClaimsFile, TheEmbeddedFileIsTheLedgerRecordForRecord) {
 TEST(ClaimsFile, ACheckBringsItsFacetsUnderItsOneName) {
   // The record names the check alone; the printed formulas it reads and its Coq goals are the
   // check's, registered with it (check_registry.hpp).
-  const detail::registered_check* det = detail::registered_checks().find("newmark-det");
-  ASSERT_NE(det, nullptr);
-  EXPECT_EQ(det->formulas, (std::vector<std::string>{"matrice-symplectique-ordre-2"}));
-  EXPECT_TRUE(reads_printed_formula("newmark-det"));
-  EXPECT_FALSE(det->coq_goals);
+  const detail::registered_check* delta = detail::registered_checks().find("discriminant-factorization");
+  ASSERT_NE(delta, nullptr);
+  EXPECT_EQ(delta->formulas, (std::vector<std::string>{"discriminant-factorized", "a", "b"}));
+  EXPECT_TRUE(reads_printed_formula("discriminant-factorization"));
+  EXPECT_FALSE(delta->coq_goals);
   // A claim a proof shape decides names no check: it reads the displays its arguments name.
   EXPECT_EQ(detail::registered_checks().find("phi3-det"), nullptr);
   EXPECT_EQ(find_claim("phi3-det").check_name, "shape determinant");

@@ -168,7 +168,7 @@ check "bad seed" 2 --scene quick --seed -4 --out "$work/none5"
 check "bad samples" 2 --scene quick --samples 0 --out "$work/none6"
 check "bad enclosure budget" 2 --scene quick --enclosure-budget 39 --out "$work/none6b"
 grep -q -- "--enclosure-budget '39'" "$work/err" || { echo "FAIL bad enclosure budget: not named: $(cat "$work/err")"; failures=$((failures + 1)); }
-check "enclosure budget" 0 --scene quick --claims newmark-det --enclosure-budget 80 --out "$work/budget"
+check "enclosure budget" 0 --scene quick --claims discriminant-factorization --enclosure-budget 80 --out "$work/budget"
 grep -q '"enclosure_budget_digits": 80' "$work/budget/report.json" || { echo "FAIL enclosure budget: not in report.json"; failures=$((failures + 1)); }
 grep -q '"decision": "holds"' "$work/budget/report.json" || { echo "FAIL enclosure budget: no enclosure decision"; failures=$((failures + 1)); }
 echo '{"name": "x", "claims": [,]}' >"$work/malformed.json"
@@ -271,9 +271,6 @@ if command -v coqc >/dev/null 2>&1; then  # every certificate the shapes export,
   grep -q '"status": "failed"' "$work/note-certified/report.json" && fail "a note: a Coq certificate did not check"
   cat "$work/out" "$work/err" | grep -q "^\[coqc\] 9 certificate files checked" || fail "a note, certified: $(cat "$work/out" "$work/err" | grep coqc)"
 fi
-# The paper itself through proof shapes: its preamble (\def\section*#1{}) reads, and each shape holds.
-check "the paper through shapes" 0 --paper "$(dirname "$0")/../paper/text/simpson-symplectic-gsi2023.tex" --claims-file "$note_dir/simpson-paper-shapes.toml" --out "$work/paper-shapes"
-grep -q "^2 claims: 2 held" "$work/out" || fail "the paper through shapes: $(cat "$work/out")"
 check "a note, validated" 1 --validate --paper "$note_dir/trapezoidal-note.tex" --claims-file "$note_dir/trapezoidal-note.toml" --out "$work/note-validated"
 check "a note without --paper" 2 --claims-file "$note_dir/trapezoidal-note.toml" --out "$work/none-note1"
 grep -q "give its LaTeX with --paper" "$work/err" || fail "a note without --paper: $(cat "$work/err")"
@@ -467,7 +464,7 @@ grep -q '"precisions_applied_to": \[' "$work/prec/report.json" && grep -q '"prec
 grep -q '"precision": "float128"' "$work/prec/report.json" && fail "precisions to sections: a scene precision survived"
 check "precisions with long_time" 2 --scene quick --precisions double --out "$work/none-prec1"
 grep -q 'long_time' "$work/err" || fail "precisions with long_time: the section is not named"
-check "rechecks over the budget" 2 --claims newmark-det --precisions mpfr:100000 --samples 10000 --out "$work/none-prec5"
+check "rechecks over the budget" 2 --claims discriminant-factorization --precisions mpfr:100000 --samples 10000 --out "$work/none-prec5"
 grep -q 'numeric rechecks: .* (1 claim x 10000 samples x 1 precision)' "$work/err" || fail "rechecks over the budget: $(cat "$work/err")"
 # --certify without coqc on PATH: bad input, named, nothing written.
 # (PATH only for the binary: the checks below need wc and grep.)

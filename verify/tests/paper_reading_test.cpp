@@ -162,15 +162,15 @@ TEST(PaperReading, ACopyWithTheErrataCorrectedMakesThemHold) {
 
 TEST(PaperReading, KernelsThatDisagreeOnTheDerivedStatementAreItsOwnVerdict) {
   const paper_reading paper = read_paper(embedded_paper());
-  claim broken = find_claim("newmark-det");
-  broken.check = [](const run_context&) {  // our kernel, pretending not to prove det Phi = 1
+  claim broken = find_claim("discriminant-factorization");
+  broken.check = [](const run_context&) {  // our kernel, pretending not to prove the factorisation
     claim_result r;
     r.outcome = verdict::fails;
     return r;
   };
   const claim_result r = check_claim(broken, run_context{{precision::parse("double")}, 20230830, 2, &paper});
   EXPECT_EQ(r.outcome, verdict::kernels_disagree);
-  EXPECT_NE(r.note.find("newmark-det"), std::string::npos) << r.note;
+  EXPECT_NE(r.note.find("discriminant-factorization"), std::string::npos) << r.note;
   EXPECT_EQ(to_string(r.outcome), "kernels-disagree");
 }
 

@@ -146,19 +146,6 @@ claim_result check_newmark_matrix(const run_context&) {
   return identity(p);
 }
 
-claim_result check_newmark_det_computed(const run_context& ctx) {
-  const proof exact = prove_zero(std::string(unit_reduction) + "; det Phi - 1", determinant(newmark_map(unit_oscillator_in_theta())) - 1);
-  bool within = false;
-  const json numeric = recheck_with(ctx, "newmark-det", [](const auto& par, const auto&) { return newmark_map_determinant_check(par); }, within);
-  return identity(exact, within, numeric);
-}
-
-claim_result check_newmark_det(const run_context& ctx) {
-  const quoted_sentence said = quote(ctx, "the discrete flow (\\ref{systeme-symplectique-ordre-2}) is {property} as observed by");
-  const bool affirmed = said.choice("property", affirmed_or_denied("symplectic")) == "affirmed";
-  return as_the_words_say(check_newmark_det_computed(ctx), affirmed, "The discrete flow is symplectic: det Phi = 1");
-}
-
 claim_result check_newmark_stability(const run_context& ctx) {
   const quoted_sentence linearly = quote(ctx, "the scheme (\\ref{schema-ordre-deux}) is {stability}.");
   const std::string stated = linearly.choice("stability", {{"linearly stable", "stable"}, {"stable", "stable"},
@@ -262,7 +249,6 @@ void add_section2_checks(check_registry& checks) {
   checks.add("newmark-discrete-system", check_newmark_discrete_system);
   checks.add("hamilton-consistency", check_hamilton_consistency);
   checks.add("newmark-matrix", check_newmark_matrix);
-  checks.add("newmark-det", check_newmark_det);
   checks.add("newmark-identification", check_newmark_identification);
   checks.add("newmark-stability", check_newmark_stability);
 }

@@ -167,14 +167,6 @@ stability_report simpson_stability() {
   });
 }
 
-/// True when (lo, hi) of x = ω²h² is a stable band of the exact analysis, hi an exact root.
-bool has_stable_band(const stability_report& r, const rational& lo, const rational& hi) {
-  for (const stability_band& b : r.bands) {
-    if (b.stable && b.x_from == lo && b.to && b.to->exact() && b.to->low == hi) return true;
-  }
-  return false;
-}
-
 /// Whether (lo, hi) of x = ω²h² lies inside one stable band of the exact analysis.
 bool within_stable_band(const stability_report& r, const rational& lo, const rational& hi) {
   for (const stability_band& b : r.bands) {
@@ -193,26 +185,6 @@ std::string stable_bands_text(const stability_report& report) {
 }
 
 rational band_end_of(const printed_stability_band& band) { return rational(band.numerator) / rational(band.denominator); }
-
-claim_result check_stability_condition(const run_context&) {
-  // Our kernel proves the derived statement (GiNaC judges the printed bound, printed_checks_section5):
-  // the condition emerges from q_m, and the first stable band of the scheme ends exactly where q_m's
-  // denominator (core, qm-oscillateur-harmonique) vanishes.
-  const stability_report report = simpson_stability();
-  const auto par = unit_oscillator_in_theta();
-  const std::vector<positive_root> qm_poles =
-      positive_roots(even_in_theta_to_x(harmonic_internal_node(par, symbolic(1), symbolic(1)).denominator()));
-  json evidence;
-  evidence["exact"] = report.evidence;
-  evidence["exact"]["q_m_undefined_at_omega2_h2"] = qm_poles.empty() ? "nowhere" : root_text(qm_poles.front());
-  const bool first_band = !qm_poles.empty() && qm_poles.front().exact() && has_stable_band(report, rational(0), qm_poles.front().low);
-  const std::string bands = stable_bands_text(report);
-  return confirmed_if(first_band, evidence,
-                      "Sufficient, not necessary: the scheme (schema-ordre-3) is stable exactly for omega^2 h^2 in " + bands +
-                          ", i.e. 0 < omega h < 2 sqrt(2) and also 2 sqrt(3) < omega h < 2 sqrt(6). At omega h = 2 sqrt(2), "
-                          "2 sqrt(3), 2 sqrt(6) the characteristic roots are double (-1, -1, +1) and solutions grow linearly. "
-                          "The condition emerges from q_m, which is undefined at omega h = 2 sqrt(2) only.");
-}
 
 claim_result check_reduced_lagrangian(const run_context& ctx) {
   const proof exact = prove_zero_on_grid(std::string(unit_reduction) + "; (Lagrangien-reduit) - (LLhh) at q_m of (qm-oscillateur-harmonique)",
@@ -589,7 +561,6 @@ void add_section5_checks(check_registry& checks) {
   checks.add("internal-second-order", check_internal_second_order);
   checks.add("qm-harmonic", check_qm_harmonic);
   checks.add("qm-not-affine", check_qm_not_affine);
-  checks.add("stability-condition", check_stability_condition);
   checks.add("reduced-lagrangian", check_reduced_lagrangian);
   checks.add("scheme-order3", check_scheme_order3);
   checks.add("scheme-consistency", check_scheme_consistency);

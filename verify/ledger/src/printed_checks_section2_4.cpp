@@ -129,25 +129,6 @@ printed_outcome newmark_matrix(const paper_reading& r) {
   return o;
 }
 
-printed_outcome newmark_det(const paper_reading& r) {
-  const ex& phi = printed_side(r, "matrice-symplectique-ordre-2");
-  printed_outcome o;
-  o.property = true;
-  if (!GiNaC::is_a<GiNaC::matrix>(phi) || GiNaC::ex_to<GiNaC::matrix>(phi).rows() != 2 || GiNaC::ex_to<GiNaC::matrix>(phi).cols() != 2) {
-    o.proved = "the printed Phi is not a 2 x 2 matrix";
-    return o;
-  }
-  const ex det = GiNaC::normal(GiNaC::ex_to<GiNaC::matrix>(phi).determinant() - 1);
-  o.holds = det.is_zero();
-  o.goals.push_back({"printed", determinant_2x2(phi), 1, o.holds});
-  o.proved = "det(printed Phi) − 1 = " + text_of(det);
-  const ex derived_det = GiNaC::normal(newmark_derivation().newmark_phi.determinant() - 1);
-  o.derived_holds = derived_det.is_zero();
-  o.goals.push_back({"derived", determinant_2x2(newmark_derivation().newmark_phi), 1, o.derived_holds});
-  o.derived = "det(derived Phi) − 1 = " + text_of(derived_det);
-  return o;
-}
-
 /// (q2t) with the printed basis functions (fonctions-de-base), t = h theta: at the printed points it
 /// takes the printed values. The core's interpolant is the derived one (solved through the nodes).
 printed_outcome interpolant_nodal(const paper_reading& r) {
@@ -233,7 +214,6 @@ void add_printed_checks_section2_4(check_registry& checks) {
   checks.add_printed("newmark-momentum", {"p_{j+1} (Newmark)"}, newmark_momentum);
   checks.add_printed("newmark-discrete-system", {"systeme-dynamique-discret-ordre-2#0", "systeme-dynamique-discret-ordre-2#1"}, newmark_system);
   checks.add_printed("newmark-matrix", {"matrice-symplectique-ordre-2"}, newmark_matrix);
-  checks.add_printed("newmark-det", {"matrice-symplectique-ordre-2"}, newmark_det);
   checks.add_printed("basis-nodal", {"fonctions-de-base#0", "fonctions-de-base#1", "fonctions-de-base#2", "q2t", "q(0)", "q(h/2)", "q(h)"}, interpolant_nodal);
   checks.add_printed("gear", {"derivees-gear#0", "derivees-gear#1"}, gear_derivatives);
   checks.add_printed("centred", {"derivee-centree"}, centred_derivative_check);

@@ -101,29 +101,6 @@ printed_outcome qm_harmonic(const paper_reading& r) {
   return o;
 }
 
-/// 0 < omega h < bound: the derived q_m is defined while its denominator, a polynomial in h that is
-/// positive at h = 0, has not vanished; the printed bound must be its first positive root in omega h.
-printed_outcome stability_condition(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
-  const ex lower = printed_side(r, "stabilite", 0), middle = printed_side(r, "stabilite", 1), upper = printed_side(r, "stabilite", 2);
-  const ex denominator = GiNaC::denom(GiNaC::normal(d.harmonic_qm / (d.q_l + d.q_r)));
-  const GiNaC::symbol x("x");  // omega h
-  const ex in_x = GiNaC::normal(denominator.subs(d.h == x / d.omega));
-  printed_outcome o;
-  const bool variable = GiNaC::normal(middle - d.omega * d.h).is_zero() && GiNaC::normal(lower).is_zero();
-  const ex at_bound = GiNaC::normal(in_x.subs(x == upper));
-  // The bound is the first positive root: in_x vanishes there, and in_x is a polynomial of degree 1
-  // in y = x², so it has no other positive root.
-  const ex in_y = GiNaC::normal(in_x.subs(x == GiNaC::sqrt(sym("y"))));
-  const bool linear_in_y = in_y.is_polynomial(sym("y")) && in_y.degree(sym("y")) == 1;
-  o.holds = variable && at_bound.is_zero() && linear_in_y;
-  o.proved = "the derived q_m has denominator " + text_of(in_x) + " in x = omega h (degree 1 in x^2); at the printed bound x = " +
-             text_of(upper) + " it is " + text_of(at_bound) + (variable ? "" : "; the printed variable or lower bound is not 0 < omega h");
-  if (!o.holds) o.correction = "0 < omega h < the positive root of " + text_of(in_x);
-  o.derived = "q_m derived by solving dL_h/dq_m = 0 (lsolve)";
-  return o;
-}
-
 printed_outcome reduced_lagrangian_check(const paper_reading& r) {
   const symbolic_derivation& d = derivation();
   return compare("L_h^r", printed_side(r, "Lagrangien-reduit"), d.reduced_lagrangian, reduced_lagrangian(parameters(d), d.q_l, d.q_r));
@@ -251,7 +228,6 @@ void add_printed_checks_section5(check_registry& checks) {
   checks.add_printed("internal-second-order", {"equation-milieu-intervalle", "oscillateur-nonlineaire"}, internal_equation_second_order);
   checks.add_printed("scheme-consistency", {"schema-ordre-3", "harmonic equation"}, scheme_consistency);
   checks.add_printed("qm-harmonic", {"qm-oscillateur-harmonique"}, qm_harmonic);
-  checks.add_printed("stability-condition", {"stabilite"}, stability_condition);
   checks.add_printed("reduced-lagrangian", {"Lagrangien-reduit"}, reduced_lagrangian_check);
   checks.add_printed("scheme-order3", {"schema-ordre-3"}, scheme_order_3);
   checks.add_printed("taylor-display", {"Taylor q_{j+1}", "Taylor q_{j-1}"}, taylor_display);

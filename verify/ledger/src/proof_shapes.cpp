@@ -72,8 +72,14 @@ const std::map<std::string, proof_shape>& proof_shapes() {
                      {"sequence", argument_kind::symbols, true, "three consecutive states", 3},
                      {"printed", argument_kind::formula, true, "the printed equation's side that is 0"}}),
          euler_lagrange_shape});
-    add({"stability-interval", "the printed 0 < variable < c is the first band where the map (det 1) is power-bounded", "condition",
-         with_where({{"map", argument_kind::matrix, true, "a 2 x 2 one-step map with det 1", 2},
+    add({"stability-interval", "the printed 0 < variable < c is the first band where the map (det 1), or the three-term scheme (reversible), is power-bounded",
+         "condition",
+         with_where({{"map", argument_kind::matrix, false, "a 2 x 2 one-step map with det 1", 2},
+                     {"scheme", argument_kind::formula, false,
+                      "instead of a map: a linear three-term scheme (= 0) whose q_{j+1} and q_{j-1} coefficients are equal", 0, "", false, {}, "",
+                      "map"},
+                     {"sequence", argument_kind::symbols, false, "the scheme's three states q_{j-1}, q_j, q_{j+1}", 3, "", false, {}, "", "",
+                      "scheme"},
                      {"variable", argument_kind::formula, true, "the variable of the condition, a product of positive symbols", 0, "", true},
                      {"condition", argument_kind::condition, true, "the printed condition 0 < variable < c"}}),
          stability_interval_shape});
@@ -121,6 +127,24 @@ void check_shape_arguments(const claim_record& record, const std::string& file) 
   for (const shape_parameter& p : shape.parameters) {
     if (p.required && !record.with.count(p.name)) {
       throw claims_file_error(file, record.line, "with." + p.name, "missing: the shape '" + shape.name + "' needs it (" + p.meaning + ")");
+    }
+  }
+  // Alternatives (one of the two) and companions (given exactly with another).
+  for (const shape_parameter& p : shape.parameters) {
+    const bool given = record.with.count(p.name) > 0;
+    if (!p.instead_of.empty()) {
+      const bool other = record.with.count(p.instead_of) > 0;
+      if (given && other) {
+        throw claims_file_error(file, record.with.at(p.name).line, "with." + p.name, "give '" + p.name + "' or '" + p.instead_of + "', not both");
+      }
+      if (!given && !other) {
+        throw claims_file_error(file, record.line, "with." + p.instead_of,
+                                "missing: the shape '" + shape.name + "' needs it, or '" + p.name + "' instead (" + p.meaning + ")");
+      }
+    }
+    if (!p.only_with.empty() && given != (record.with.count(p.only_with) > 0)) {
+      throw claims_file_error(file, given ? record.with.at(p.name).line : record.with.at(p.only_with).line, "with." + p.name,
+                              given ? "given without '" + p.only_with + "'" : "missing: '" + p.only_with + "' needs it (" + p.meaning + ")");
     }
   }
   // The words: a sentence and the property it states, both or neither.

@@ -33,6 +33,8 @@ struct shape_parameter {
   bool positive = false;       // formula: every symbol of it declared positive (with a [document])
   std::vector<std::string> words{};  // word: the values it may take (none: any text, such as a sentence's pattern)
   std::string among{};               // symbols: each one of this symbols argument's
+  std::string instead_of{};          // given instead of this argument: exactly one of the two (neither `required`)
+  std::string only_with{};           // given exactly when this argument is
 };
 
 /// One call: the claim's id and statement, its arguments, and the symbols its document declares

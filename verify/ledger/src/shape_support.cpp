@@ -116,7 +116,7 @@ const paper_source& document_of(const run_context& ctx) {
   return paper_of(ctx).source;
 }
 
-claim_result identity_verdict(const shape_call& call, shape_reader& read, const std::string& what, const ex& lhs, const ex& rhs,
+claim_result identity_verdict(const shape_call& call, shape_reader& read, const std::string& goal, const std::string& what, const ex& lhs, const ex& rhs,
                               const std::string& correction, verdict when_false, const std::optional<kernel_decision>& given) {
   claim_result result;
   const ex difference = normal_difference(lhs, rhs);
@@ -144,7 +144,7 @@ claim_result identity_verdict(const shape_call& call, shape_reader& read, const 
     if (!own_decided) result.note += " Our kernel could not decide it (" + own.evidence + "): GiNaC's proof alone.";
   }
   result.printed = read.printed();
-  record_certificate(result, coq_certificate(call.claim_id, call.statement, {decided(what, lhs, rhs)}));
+  record_certificate(result, coq_certificate(call.claim_id, call.statement, {decided(goal, lhs, rhs)}));
   return result;
 }
 

@@ -65,8 +65,8 @@ const paper_source& document_of(const run_context& ctx);
 /// holds when both find it zero, `when_false` (erratum, with `correction`) when both find it not,
 /// kernels-disagree otherwise; our kernel not applicable leaves GiNaC's verdict, and says so. `own`,
 /// when given, is our kernel's decision of an equivalent statement (the shape says which) instead of
-/// its decision of lhs − rhs.
-claim_result identity_verdict(const shape_call& call, shape_reader& read, const std::string& what, const GiNaC::ex& lhs,
+/// its decision of lhs − rhs. `goal` names the Coq lemma (<claim>_<goal>).
+claim_result identity_verdict(const shape_call& call, shape_reader& read, const std::string& goal, const std::string& what, const GiNaC::ex& lhs,
                               const GiNaC::ex& rhs, const std::string& correction, verdict when_false = verdict::erratum,
                               const std::optional<kernel_decision>& own = std::nullopt);
 

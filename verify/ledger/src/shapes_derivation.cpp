@@ -28,7 +28,7 @@ claim_result euler_lagrange_shape(const shape_call& call, const run_context& ctx
                                        reference_of(call, "lagrangian"));
   if (factor) {
     // The printed equation times the factor GiNaC found is the derived one: an identity both kernels decide.
-    claim_result result = identity_verdict(call, read, what, *factor * printed, derived, "");
+    claim_result result = identity_verdict(call, read, "euler_lagrange", what, *factor * printed, derived, "");
     result.evidence["exact"]["factor"] = text_of(*factor);
     return result;
   }
@@ -115,7 +115,7 @@ claim_result discrete_map_shape(const shape_call& call, const run_context& ctx) 
     }
   }
   const std::string what = fmt::format("({}) is the one-step map of ({})", reference_of(call, "map"), reference_of(call, "lagrangian"));
-  claim_result result = identity_verdict(call, read, what, ex(printed), ex(derived),
+  claim_result result = identity_verdict(call, read, "one_step_map", what, ex(printed), ex(derived),
                                          fmt::format("as derived from ({}): ({}) = {}", reference_of(call, "lagrangian"), reference_of(call, "map"),
                                                      text_of(ex(derived))));
   result.evidence["exact"]["derivation"] = {{"q_1", text_of(q1)}, {"p_1", text_of(p1)},

@@ -126,7 +126,7 @@ claim_result identity_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const ex rhs = read.formula("rhs"), lhs = read.formula("lhs");
   const std::string what = fmt::format("({}) = ({})", reference_of(call, "lhs"), reference_of(call, "rhs"));
-  return identity_verdict(call, read, what, lhs, rhs,
+  return identity_verdict(call, read, "identity", what, lhs, rhs,
                           fmt::format("as derived from ({}): ({}) = {}", reference_of(call, "lhs"), reference_of(call, "rhs"), text_of(lhs)));
 }
 
@@ -139,7 +139,7 @@ claim_result determinant_shape(const shape_call& call, const run_context& ctx) {
   const std::string what = fmt::format("det ({}) = {}", reference_of(call, "matrix"), text_of(equals));
   // A property of the printed matrix: false, it fails (no corrected matrix is derived); the note
   // gives the determinant.
-  claim_result result = identity_verdict(call, read, what, det, equals, "", verdict::fails);
+  claim_result result = identity_verdict(call, read, "determinant", what, det, equals, "", verdict::fails);
   if (result.outcome == verdict::fails) {
     result.note += fmt::format(" det ({}) = {}.", reference_of(call, "matrix"), text_of(GiNaC::normal(det)));
   }
@@ -158,7 +158,7 @@ claim_result symplectic_shape(const shape_call& call, const run_context& ctx) {
     for (unsigned c = 0; c < normal.cols(); ++c) normal(r, c) = GiNaC::normal(normal(r, c));
   }
   // A property of the printed matrix: false, it fails, the note giving M^T J M.
-  claim_result result = identity_verdict(call, read, what, lhs, ex(j), "", verdict::fails);
+  claim_result result = identity_verdict(call, read, "symplectic", what, lhs, ex(j), "", verdict::fails);
   if (result.outcome == verdict::fails) {
     result.note += fmt::format(" ({})^T J ({}) = {}.", reference_of(call, "matrix"), reference_of(call, "matrix"), text_of(normal));
   }
@@ -180,7 +180,7 @@ claim_result conserved_shape(const shape_call& call, const run_context& ctx) {
   for (unsigned k = 0; k < m.rows(); ++k) step.append(state[k] == next(k, 0));
   const ex after = h.subs(step);
   const std::string what = fmt::format("({})(({}) y) = ({})(y)", reference_of(call, "function"), reference_of(call, "map"), reference_of(call, "function"));
-  claim_result result = identity_verdict(call, read, what, after, h, "", verdict::erratum, own_decision_as_forms(m, y, h));
+  claim_result result = identity_verdict(call, read, "conserved", what, after, h, "", verdict::erratum, own_decision_as_forms(m, y, h));
   if (result.outcome != verdict::erratum) return result;
   // Not conserved as printed: the correction is the map's conserved quadratic form, scaled to agree
   // with the printed function in one coefficient (proved conserved in GiNaC); without one, fails.

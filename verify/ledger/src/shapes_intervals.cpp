@@ -145,25 +145,58 @@ ex interval_end(const referenced_formula& condition, const ex& v) {
 claim_result stability_interval_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const referenced_formula condition = read.raw("condition");
-  const GiNaC::matrix m = as_square_matrix(read.formula("map"), reference_of(call, "map"));
-  if (m.rows() != 2) throw std::invalid_argument(reference_of(call, "map") + " is not a 2 x 2 map");
-  const ex v = read.formula("variable");
+  const bool of_map = read.has("map");
+  const std::string what = reference_of(call, of_map ? "map" : "scheme");
   claim_result result;
-  result.printed = read.printed();
-  // det = 1, in both kernels: then the map is power-bounded exactly where |trace| < 2.
-  const ex det = m.determinant();
-  const kernel_decision det_own = kernel_decides_zero(det - 1);
-  if (!GiNaC::normal(det - 1).is_zero() || det_own.outcome == kernel_decision::result::nonzero) {
-    result.outcome = verdict::fails;
-    result.note = "The shape decides maps with det 1; det (" + reference_of(call, "map") + ") = " + text_of(GiNaC::normal(det)) + ".";
-    return result;
+  // The trace of the map, or −b/a of the reversible scheme's a r² + b r + a (its roots' sum, their
+  // product 1): either way power-bounded exactly where |trace| < 2. The premise (det = 1, or a = c)
+  // in both kernels.
+  ex trace;
+  std::string premise;
+  proof_goal premise_goal;
+  if (of_map) {
+    const GiNaC::matrix m = as_square_matrix(read.formula("map"), what);
+    if (m.rows() != 2) throw std::invalid_argument(what + " is not a 2 x 2 map");
+    const ex det = m.determinant();
+    const kernel_decision det_own = kernel_decides_zero(det - 1);
+    if (!GiNaC::normal(det - 1).is_zero() || det_own.outcome == kernel_decision::result::nonzero) {
+      result.printed = read.printed();
+      result.outcome = verdict::fails;
+      result.note = "The shape decides maps with det 1; det (" + what + ") = " + text_of(GiNaC::normal(det)) + ".";
+      return result;
+    }
+    trace = m(0, 0) + m(1, 1);
+    premise = "det = 1 (GiNaC normal form; our kernel: " + det_own.evidence + ")";
+    premise_goal = decided("det", determinant_2x2(m), 1);  // a d − b c as written, not GiNaC's value
+  } else {
+    const ex scheme = read.formula("scheme");
+    const std::vector<GiNaC::symbol> q = read.symbols("sequence");
+    const ex previous = GiNaC::diff(scheme, q[0]), current = GiNaC::diff(scheme, q[1]), next = GiNaC::diff(scheme, q[2]);
+    const ex linear = scheme - (previous * q[0] + current * q[1] + next * q[2]);
+    bool linear_three_term = GiNaC::normal(linear).is_zero();
+    for (const GiNaC::symbol& state : q) {
+      linear_three_term = linear_three_term && !GiNaC::normal(previous).has(state) && !GiNaC::normal(current).has(state) && !GiNaC::normal(next).has(state);
+    }
+    const kernel_decision reversible_own = kernel_decides_zero(next - previous);
+    if (!linear_three_term || !GiNaC::normal(next - previous).is_zero() || reversible_own.outcome == kernel_decision::result::nonzero) {
+      result.printed = read.printed();
+      result.outcome = verdict::fails;
+      result.note = "The shape decides linear three-term schemes whose " + q[2].get_name() + " and " + q[0].get_name() + " coefficients are equal; (" +
+                    what + ") " + (linear_three_term ? "has " + text_of(GiNaC::normal(next)) + " and " + text_of(GiNaC::normal(previous)) : "is not linear in its states") + ".";
+      return result;
+    }
+    trace = -current / next;
+    premise = fmt::format("the scheme is linear, its {} and {} coefficients equal: the characteristic roots' product is 1 (GiNaC normal form; our kernel: {})",
+                          q[2].get_name(), q[0].get_name(), reversible_own.evidence);
+    premise_goal = decided("reversible", next, previous);
   }
+  const ex v = read.formula("variable");
+  result.printed = read.printed();
   const ex high = interval_end(condition, v);
-  const ex trace = m(0, 0) + m(1, 1);
   const std::optional<one_variable> excess = in_variable(trace * trace - 4, v);  // < 0 exactly on the stable set
   if (!excess) {
     result.outcome = verdict::fails;
-    result.note = "The trace of " + reference_of(call, "map") + " is not a function of " + text_of(v) + " alone.";
+    result.note = "The trace of " + what + " is not a function of " + text_of(v) + " alone.";
     return result;
   }
   const std::string var = text_of(v);
@@ -198,26 +231,40 @@ claim_result stability_interval_shape(const shape_call& call, const run_context&
   }
   const ex trace_in_v = GiNaC::normal(trace);
   result.evidence["exact"] = {
-      {"statement", fmt::format("the stable set of ({}) in {} > 0 begins with 0 < {} < {}", reference_of(call, "map"), var, var, text_of(high))},
-      {"det", "det = 1 (GiNaC normal form; our kernel: " + det_own.evidence + ")"},
-      {"trace", text_of(trace_in_v)},
+      {"statement", fmt::format("the stable set of ({}) in {} > 0 begins with 0 < {} < {}", what, var, var, text_of(high))},
+      {of_map ? "det" : "reversible", premise},
+      {of_map ? "trace" : "roots_sum", text_of(trace_in_v)},
       {"boundary_polynomial", to_string(excess->numerator, excess->in_square ? "x" : "t") + (excess->in_square ? " (x = (" + var + ")^2)" : "")},
       {"stable_bands", bands},
       {"printed_end", how}};
+  // Who decided what: GiNaC the premise and the reduction to one variable, our kernel the premise
+  // again and the bands (Sturm sequences), the printed end compared exactly.
+  const std::string verdict_word = stable_near_zero && equal ? "holds" : "fails";
+  result.evidence["exact"]["ginac"] = verdict_word + ": the premise in normal form, and " + std::string(of_map ? "the trace" : "the roots' sum") +
+                                      " as a function of " + var + " alone; the bands are our kernel's";
+  result.evidence["exact"]["own"] = verdict_word + ": the premise on its grid, and the stable bands by Sturm sequences: " +
+                                    (bands.empty() ? std::string("none") : fmt::format("{}", fmt::join(bands, ", "))) + "; " + how;
   // Coq: det = 1, and trace² − 4 < 0 on the printed band (holds) or on the first band (the
   // correction's), when its end is rational. That the band ends there is our kernel's alone.
-  std::vector<proof_goal> goals{decided("det", determinant_2x2(m), 1)};  // a d − b c as written, not GiNaC's value
+  std::vector<proof_goal> goals{premise_goal};
   if (stable_near_zero && equal) {
     goals.push_back(excess->sign_goal_on("stable_band", -1, *excess->exact(high)));
     record_certificate(result, coq_certificate(call.claim_id, call.statement, goals));
     result.outcome = verdict::holds;
+    // What the condition leaves out: the other bands, and the ends, where |trace| = 2 (a double root ±1).
+    if (bands.size() > 1) {
+      std::vector<std::string> ends;
+      for (const positive_root& end : positive_roots(excess->numerator)) ends.push_back(excess->text(end));  // not its poles
+      result.note = fmt::format("Sufficient, not necessary: ({}) is stable exactly for {}. At {} = {} the characteristic roots are double (|trace| = 2).",
+                                what, fmt::join(bands, ", "), var, fmt::join(ends, ", "));
+    }
     return result;
   }
   if (stable_near_zero && excess->ends.front().exact()) goals.push_back(excess->sign_goal_on("first_band", -1, excess->ends.front().low));
   record_certificate(result, coq_certificate(call.claim_id, call.statement, goals));
   result.outcome = verdict::erratum;
   result.correction = bands.empty() ? "never stable for " + var + " > 0" : "stable exactly for " + fmt::format("{}", fmt::join(bands, ", "));
-  result.note = "As printed: " + folded_space(condition.tex) + " is not the first stable band of " + reference_of(call, "map") +
+  result.note = "As printed: " + folded_space(condition.tex) + " is not the first stable band of " + what +
                 " (trace = " + text_of(trace_in_v) + ", stable where |trace| < 2).";
   return result;
 }

@@ -13,7 +13,7 @@ Ltac nonzero :=
           end
         | apply pow_nonzero; nonzero ].
 
-Lemma hd_invariance__hamiltonien_discret___Phi3__y_____hamiltonien_discret__y_ :
+Lemma hd_invariance_conserved :
   forall h m omega p q : R,
   0 < m ->
   0 < h ->

@@ -13,18 +13,7 @@ Ltac nonzero :=
           end
         | apply pow_nonzero; nonzero ].
 
-Lemma newmark_det_printed :
-  forall h omega : R,
-  0 < h ->
-  (((-1) * (h ^ 2) * (omega ^ 2)) + (-4)) <> 0 ->
-  ((((((-1) * (h ^ 2) * (omega ^ 2)) + 4) ^ 2) * (/ ((((-1) * (h ^ 2) * (omega ^ 2)) + (-4)) ^ 2))) + (16 * (/ ((((-1) * (h ^ 2) * (omega ^ 2)) + (-4)) ^ 2)) * (h ^ 2) * (omega ^ 2)))
-  = 1.
-Proof.
-  intros.
-  field; repeat split; nonzero.
-Qed.
-
-Lemma newmark_det_derived :
+Lemma newmark_det_determinant :
   forall h omega : R,
   0 < h ->
   (((-1) * (h ^ 2) * (omega ^ 2)) + (-4)) <> 0 ->

@@ -13,7 +13,7 @@ Ltac nonzero :=
           end
         | apply pow_nonzero; nonzero ].
 
-Lemma newmark_energy__HH_exact___matrice_symplectique_ordre_2__y_____HH_exact__y_ :
+Lemma newmark_energy_conserved :
   forall h m omega p_j q_j : R,
   0 < m ->
   0 < h ->

@@ -13,7 +13,7 @@ Ltac nonzero :=
           end
         | apply pow_nonzero; nonzero ].
 
-Lemma phi3_det_det__Phi3____1 :
+Lemma phi3_det_determinant :
   forall h omega : R,
   0 < h ->
   (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) <> 0 ->

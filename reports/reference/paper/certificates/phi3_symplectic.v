@@ -12,9 +12,9 @@ Ltac nonzero :=
           | [ H : 0 < ?Y |- ?X <> 0 ] => replace X with Y by ring; apply Rgt_not_eq; exact H
           end
         | apply pow_nonzero; nonzero ].
-(* Not stated: phi3_symplectic__Phi3__T_J__Phi3____J_11, phi3_symplectic__Phi3__T_J__Phi3____J_22, whose two sides GiNaC evaluates to one expression (X = X checks nothing). *)
+(* Not stated: phi3_symplectic_symplectic_11, phi3_symplectic_symplectic_22, whose two sides GiNaC evaluates to one expression (X = X checks nothing). *)
 
-Lemma phi3_symplectic__Phi3__T_J__Phi3____J_12 :
+Lemma phi3_symplectic_symplectic_12 :
   forall h omega : R,
   0 < h ->
   (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) <> 0 ->
@@ -25,7 +25,7 @@ Proof.
   field; repeat split; nonzero.
 Qed.
 
-Lemma phi3_symplectic__Phi3__T_J__Phi3____J_21 :
+Lemma phi3_symplectic_symplectic_21 :
   forall h omega : R,
   0 < h ->
   (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) <> 0 ->
