@@ -74,6 +74,10 @@ TEST(PaperReading, AChangedCoefficientInTheTextChangesTheVerdict) {
       {"\\label{hamiltonien-discret}", "\\over12} \\Big)", "\\over13} \\Big)", {"hd-invariance"}},
       {"\\label{qm-oscillateur-harmonique}", "{{q_\\ell + q_r}\\over2}", "{{q_\\ell + q_r}\\over3}", {"qm-harmonic"}},
       {"\\label{Lagrangien-reduit}", "{{22-h^2", "{{21-h^2", {"reduced-lagrangian"}},
+      {"We observe that $ \\, g_r", "-2 \\,  q_m", "-3 \\,  q_m", {"gr-minus-gl"}},
+      {"{{\\partial L_h}\\over{\\partial q_m}} =  {{h}", "{{8\\, m}\\over{h}} \\,  g_\\ell", "{{7\\, m}\\over{h}} \\,  g_\\ell", {"lh-dqm"}},
+      // V'(q_m) put in as printed: a q_m that does not solve the harmonic internal equation.
+      {"\\label{oscillateur harmonique}", "{1\\over2} \\, m", "{1\\over3} \\, m", {"qm-harmonic", "reduced-lagrangian"}},
       {"one obtains without difficulty", "{1\\over1440}", "{1\\over1441}", {"truncation-1440"}},
       {"one obtains without difficulty", "h^4", "h^3", {"truncation-1440"}},
       // ω⁴ → ω⁶ in p_r: invisible once m = ω = 1, caught with every symbol free.
@@ -219,6 +223,14 @@ TEST(TexMath, ReadsTheSubsetThePaperUses) {
   ASSERT_EQ(sides.size(), 2u);
   EXPECT_TRUE((parse_tex_math(sides[1], s) - s["p"] * s["p"] / 2).is_zero());
   EXPECT_THROW(parse_tex_math("h + \\foo", s), tex_parse_error);
+  // A derivative with the paper's \dd, with \partial, and with what \dd expands to ({\rm d}, \mathrm{d}):
+  // the derivative of V at x each time, not a product of symbols named V and q.
+  const GiNaC::symbol t("t");
+  const GiNaC::ex v_prime = GiNaC::diff(apply_function("V", {t}), t).subs(t == s["x"]);
+  for (const char* tex : {"{{\\dd V}\\over{\\dd q}}(x)", "{{\\partial V}\\over{\\partial q}}(x)", "{{{\\rm d} V}\\over{{\\rm d} q}}(x)",
+                          "{{\\mathrm{d} V}\\over{\\mathrm{d} q}}(x)"}) {
+    EXPECT_TRUE((parse_tex_math(tex, s) - v_prime).is_zero()) << tex << ": " << parse_tex_math(tex, s);
+  }
 }
 
 

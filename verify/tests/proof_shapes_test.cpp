@@ -103,10 +103,29 @@ TEST(FormulaReference, ByLabelEquationSideInlineAndLiteral) {
   EXPECT_THROW(read_reference(d, macros, "first#3"), std::invalid_argument);
   EXPECT_THROW(read_reference(d, macros, "$\\unknown$"), std::invalid_argument);
   EXPECT_THROW(parse_reference("first#0"), std::invalid_argument);
-  EXPECT_THROW(parse_reference("a label"), std::invalid_argument);
+  // A \label may hold spaces (the paper's own "oscillateur harmonique"), not at its ends.
+  EXPECT_EQ(parse_reference("a label").key, "a label");
+  EXPECT_THROW(parse_reference(" a label"), std::invalid_argument);
+  // The first side of an inline formula.
+  EXPECT_TRUE(read_reference(d, macros, "inline:stable for:lhs").value.is_zero());
   const definition x = read_definition(d, macros, "end");
   EXPECT_EQ(x.name.get_name(), "x");
   EXPECT_TRUE((with_definitions(paper_symbols()["x"] * 2, {x}) - omega).is_zero());
+}
+
+TEST(FormulaReference, DefinitionsOfAFunctionAndByAChain) {
+  const paper_source d = document(R"(\begin{equation}\label{potential energy} V(q) = \frac{k}{2} q^2 \end{equation}
+\begin{equation}\label{chain} g = \frac{a + b}{2} = a \end{equation}
+\begin{equation}\label{two} V(q) + W(q) = 1 \end{equation})");
+  const auto macros = defined_macros(d.text);
+  const GiNaC::ex k = paper_symbols()["k"], x = paper_symbols()["x"], a = paper_symbols()["a"];
+  const definition v = read_definition(d, macros, "potential energy");
+  EXPECT_EQ(v.function, "V");
+  // V(x) and V'(x) and V''(x) at any argument, and a definition by the last side of a chain.
+  const GiNaC::ex applied = read_reference(d, macros, "$V(2 x) + {{\\partial V}\\over{\\partial q}}(x) + {{\\partial^2 V}\\over{\\partial q^2}}(x)$").value;
+  EXPECT_TRUE(GiNaC::normal(with_definitions(applied, {v}) - (2 * k * x * x + k * x + k)).is_zero()) << with_definitions(applied, {v});
+  EXPECT_TRUE((with_definitions(paper_symbols()["g"], {read_definition(d, macros, "chain")}) - a).is_zero());
+  EXPECT_THROW(read_definition(d, macros, "two"), std::invalid_argument);  // its left side is no function of one symbol
 }
 
 // ---- our kernel ----
@@ -125,6 +144,25 @@ TEST(KernelZero, DecidesIdentitiesAndFindsWhereOneFails) {
   EXPECT_NE(wrong.evidence.find("y = 3"), std::string::npos) << wrong.evidence;
   EXPECT_EQ(kernel_decides_zero(GiNaC::matrix{{x - x, 0}, {0, y / y - 1}}).outcome, kernel_decision::result::zero);
   EXPECT_EQ(kernel_decides_zero(GiNaC::sqrt(x) - 1).outcome, kernel_decision::result::not_applicable);
+}
+
+// An uninterpreted V: an identity linear in it is decided for V(x) = x^k, k <= 4.
+TEST(KernelZero, AnUninterpretedFunctionLinearlyForEachMonomialUpToTheFourth) {
+  const GiNaC::ex x = paper_symbols()["x"], y = paper_symbols()["y"];
+  const GiNaC::symbol t("t");
+  const auto V = [](const GiNaC::ex& at) { return apply_function("V", {at}); };
+  // The chain rule, V' at one argument written two ways (GiNaC does not cancel the two as written).
+  const GiNaC::ex chain = GiNaC::diff(V(GiNaC::pow(t + 1, 2)), t).subs(t == x) - 2 * (x + 1) * GiNaC::diff(V(t), t).subs(t == x * x + 2 * x + 1);
+  const kernel_decision d = kernel_decides_zero(chain);
+  EXPECT_EQ(d.outcome, kernel_decision::result::zero) << d.evidence;
+  EXPECT_NE(d.evidence.find("every polynomial V of degree <= 4"), std::string::npos) << d.evidence;
+  // Additive: true for V of degree <= 1 only, so a kernel that tried V = 1 and V = x alone would pass it.
+  const kernel_decision additive = kernel_decides_zero(V(x + y) - V(x) - V(y) + V(0));
+  EXPECT_EQ(additive.outcome, kernel_decision::result::nonzero) << additive.evidence;
+  EXPECT_NE(additive.evidence.find("V(x) = x^2"), std::string::npos) << additive.evidence;
+  // Not linear in V, or two functions: not for our kernel.
+  EXPECT_EQ(kernel_decides_zero(V(x) * V(y) - V(y) * V(x) + V(x) * V(x) - x).outcome, kernel_decision::result::not_applicable);
+  EXPECT_EQ(kernel_decides_zero(V(x) - apply_function("W", {x})).outcome, kernel_decision::result::not_applicable);
 }
 
 // ---- the shapes, through a claims file ----
@@ -152,6 +190,10 @@ Stable for $0 < \om h < 2$. Also stable for $0 < \om h < 2 \sqrt{2}$. And for $0
 \begin{equation}\label{truncshort} {\rm O}(h^4) \end{equation}
 \begin{equation}\label{steep} \frac{q_{j+1} - 2 q_j + q_{j-1}}{h^6} + \frac{\om^2 q_j}{h^4} - \frac{\om^4 q_j}{12 h^2} = 0 \end{equation}
 \begin{equation}\label{steepzero} 0 + {\rm O}(h^2) \end{equation}
+\begin{equation}\label{potential energy} V(q) = \frac{k}{2} q^2 \end{equation}
+\begin{equation}\label{force} F = - {{\partial V}\over{\partial q}}(x) \end{equation}
+\begin{equation}\label{balance} k q - 2 = 0 \end{equation}
+\begin{equation}\label{square} q^2 - 4 = 0 \end{equation}
 This scheme is of fourth order. The same scheme is of second order.
 Coefficient $1 - \frac{\om^2 h^2}{4}$ positive on $0 < \om h < 2$, but not on the wide $0 < \om h < 3$.
 That map is symplectic indeed. This map is not symplectic, some say. Another map is wonderful here.
@@ -162,7 +204,7 @@ const std::string declarations = R"(
 title = "Shapes under test"
 [symbols]
 positive = ['m', '\omega', 'h']
-real = ['q', 'p', 'q_0', 'q_1', 'q_m', 'p_0', 'p_1', 'q_{j-1}', 'q_j', 'q_{j+1}', 'a', 'b']
+real = ['q', 'p', 'q_0', 'q_1', 'q_m', 'p_0', 'p_1', 'q_{j-1}', 'q_j', 'q_{j+1}', 'a', 'b', 'k', 'x']
 )";
 
 std::string record(const std::string& id, const std::string& shape, const std::string& with) {
@@ -343,6 +385,39 @@ TEST_F(ShapesOnADocument, StatedOrder) {
   EXPECT_EQ(holds.evidence["exact"]["own"].get<std::string>().rfind("holds: ", 0), 0u) << holds.evidence.dump();
   EXPECT_EQ(run("stated-order", "{ sentence = 'A sentence the document does not have, of {order} order', " + args + " }").outcome,
             verdict::text_changed);
+}
+
+TEST_F(ShapesOnADocument, IdentityWithAFunctionDefined) {
+  // V(q) = k q^2/2 put in F = -V'(x): -k x. Without the definition V' stays uninterpreted.
+  const claim_result holds = run("identity", R"({ lhs = "force", rhs = '$-k x$', where = ["potential energy"] })");
+  EXPECT_EQ(holds.outcome, verdict::holds) << holds.note << holds.evidence.dump();
+  EXPECT_EQ(run("identity", R"({ lhs = "force", rhs = '$-2 k x$', where = ["potential energy"] })").outcome, verdict::erratum);
+  EXPECT_EQ(run("identity", R"({ lhs = "force", rhs = '$-k x$' })").outcome, verdict::erratum);
+}
+
+TEST_F(ShapesOnADocument, Derivative) {
+  const claim_result holds = run("derivative", R"({ function = "potential energy", variable = ['q'], printed = '$k q$' })");
+  EXPECT_EQ(holds.outcome, verdict::holds) << holds.note << holds.evidence.dump();
+  const claim_result wrong = run("derivative", R"({ function = "potential energy", variable = ['q'], printed = '$k q^2$' })");
+  EXPECT_EQ(wrong.outcome, verdict::erratum);
+  EXPECT_EQ(wrong.correction, "as derived: d(potential energy)/dq = k*q");
+  // V uninterpreted: the chain rule, in both kernels (ours for every polynomial V of degree <= 4).
+  const claim_result chain =
+      run("derivative", R"({ function = '$V(q^2 + q)$', variable = ['q'], printed = '$(2 q + 1) {{\partial V}\over{\partial q}}((q + 1) q)$' })");
+  EXPECT_EQ(chain.outcome, verdict::holds) << chain.note << chain.evidence.dump();
+  EXPECT_NE(chain.evidence["exact"]["own"].get<std::string>().find("every polynomial V"), std::string::npos) << chain.evidence.dump();
+  EXPECT_EQ(run("derivative", R"({ function = '$V(q^2 + q)$', variable = ['q'], printed = '$2 q {{\partial V}\over{\partial q}}((q + 1) q)$' })").outcome,
+            verdict::erratum);
+}
+
+TEST_F(ShapesOnADocument, Solves) {
+  EXPECT_EQ(run("solves", R"({ equation = "balance:lhs", unknown = ['q'], solution = '$\frac{2}{k}$' })").outcome, verdict::holds);
+  const claim_result wrong = run("solves", R"({ equation = "balance:lhs", unknown = ['q'], solution = '$\frac{1}{k}$' })");
+  EXPECT_EQ(wrong.outcome, verdict::erratum);
+  EXPECT_EQ(wrong.correction, "as derived from (balance:lhs): q = (2)/(k)");
+  // Not linear in the unknown: no solution to correct it with, so a wrong one fails.
+  EXPECT_EQ(run("solves", R"({ equation = "square:lhs", unknown = ['q'], solution = '$2$' })").outcome, verdict::holds);
+  EXPECT_EQ(run("solves", R"({ equation = "square:lhs", unknown = ['q'], solution = '$3$' })").outcome, verdict::fails);
 }
 
 TEST_F(ShapesOnADocument, SignOnInterval) {

@@ -37,32 +37,6 @@ claim_result check_gear_partials(const run_context&) {
   return identity(p);
 }
 
-claim_result check_lh_dqm(const run_context&) {
-  return identity_for_quartic_potentials(
-      "h = theta; printed dL_h/dq_m minus the exact difference of (LLhh) in q_m", {"m", "q_l", "q_m", "q_r"}, {1, 4, 4, 4},
-      [&](const monomial_potential& V, const auto& v) {
-        using S = std::decay_t<decltype(v[0])>;
-        const S h = theta_variable<S>();
-        const S m(v[0]), ql(v[1]), qm(v[2]), qr(v[3]);
-        const auto potential = [&](const S& x) { return V(x); };
-        const auto dV = [&](const S& x) { return V.derivative(x); };
-        return S(simpson_lagrangian_dq_mid(m, h, dV, ql, qm, qr) -
-                 exact_derivative([&](const S& x) { return simpson_lagrangian(m, h, potential, ql, x, qr); }, qm));
-      },
-      "Proved for every polynomial V of degree <= 4 (the identity is linear in V).");
-}
-
-claim_result check_gr_minus_gl(const run_context&) {
-  const proof p = prove_zero_on_grid("h = theta; g_r - g_l - (4/h)(q_l - 2 q_m + q_r)", {"q_l", "q_m", "q_r"}, 1,
-                                     [&](const auto& v) {
-                                       using S = std::decay_t<decltype(v[0])>;
-                                       const S h = theta_variable<S>();
-                                       const S ql(v[0]), qm(v[1]), qr(v[2]);
-                                       return S(gear_right(ql, qm, qr, h) - gear_left(ql, qm, qr, h) - 4 / h * (ql - 2 * qm + qr));
-                                     });
-  return identity(p);
-}
-
 claim_result check_internal_equation(const run_context&) {
   return identity_for_quartic_potentials(
       "h = theta; dL_h/dq_m + (2h/3) (equation-milieu-intervalle): the two vanish together", {"m", "q_l", "q_m", "q_r"},
@@ -103,24 +77,6 @@ claim_result check_internal_second_order(const run_context& ctx) {
   }
   return words_erratum(evidence, "The discretization (equation-milieu-intervalle) is of order 2: its truncation error is (omega h)^2 "
                                  "omega^2/48 q_m + O(h^4) (the printed words say '" + said.words("order") + "')");
-}
-
-claim_result check_qm_harmonic(const run_context& ctx) {
-  const proof exact = prove_zero_on_grid(std::string(unit_reduction) + "; (equation-milieu-intervalle) at q_m of (qm-oscillateur-harmonique)",
-                                         {"q_l", "q_r"}, 1, [&](const auto& v) {
-                                           using S = std::decay_t<decltype(v[0])>;
-                                           const auto par = theta_oscillator<S>();
-                                           const auto gradient = [&](const S& x) { return par.force_gradient(x); };
-                                           const S ql(v[0]), qr(v[1]);
-                                           return S(internal_equation_residual(par.m(), par.h(), gradient, ql,
-                                                                               harmonic_internal_node(par, ql, qr), qr));
-                                         });
-  bool within = false;
-  // q_l = q, q_r = p/(m omega): two states of the same scale.
-  const json numeric = recheck_with(ctx, "qm-harmonic", [](const auto& par, const auto& y) {
-    return harmonic_internal_node_check(par, y.q, decltype(y.p)(y.p / (par.m() * par.omega())));
-  }, within);
-  return identity(exact, within, numeric);
 }
 
 claim_result check_qm_not_affine(const run_context& ctx) {
@@ -185,23 +141,6 @@ std::string stable_bands_text(const stability_report& report) {
 }
 
 rational band_end_of(const printed_stability_band& band) { return rational(band.numerator) / rational(band.denominator); }
-
-claim_result check_reduced_lagrangian(const run_context& ctx) {
-  const proof exact = prove_zero_on_grid(std::string(unit_reduction) + "; (Lagrangien-reduit) - (LLhh) at q_m of (qm-oscillateur-harmonique)",
-                                         {"q_l", "q_r"}, 2, [&](const auto& v) {
-                                           using S = std::decay_t<decltype(v[0])>;
-                                           const auto par = theta_oscillator<S>();
-                                           const auto V = [&](const S& x) { return par.potential(x); };
-                                           const S ql(v[0]), qr(v[1]);
-                                           return S(reduced_lagrangian(par, ql, qr) -
-                                                    simpson_lagrangian(par.m(), par.h(), V, ql, harmonic_internal_node(par, ql, qr), qr));
-                                         });
-  bool within = false;
-  const json numeric = recheck_with(ctx, "reduced-lagrangian", [](const auto& par, const auto& y) {
-    return reduced_lagrangian_check(par, y.q, decltype(y.p)(y.p / (par.m() * par.omega())));
-  }, within);
-  return identity(exact, within, numeric);
-}
 
 claim_result check_scheme_order3(const run_context&) {
   const proof p = prove_zero_on_grid(
@@ -555,13 +494,9 @@ claim_result check_maupertuis_naming(const run_context& ctx) {
 void add_section5_checks(check_registry& checks) {
   checks.add("maupertuis-naming", check_maupertuis_naming);
   checks.add("gear-partials", check_gear_partials);
-  checks.add("lh-dqm", check_lh_dqm);
-  checks.add("gr-minus-gl", check_gr_minus_gl);
   checks.add("internal-equation", check_internal_equation);
   checks.add("internal-second-order", check_internal_second_order);
-  checks.add("qm-harmonic", check_qm_harmonic);
   checks.add("qm-not-affine", check_qm_not_affine);
-  checks.add("reduced-lagrangian", check_reduced_lagrangian);
   checks.add("scheme-order3", check_scheme_order3);
   checks.add("scheme-consistency", check_scheme_consistency);
   checks.add("taylor-display", check_taylor_display);

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -229,10 +230,74 @@ entry_decision decide_entry(const GiNaC::ex& e, std::size_t most_points) {
   return {kernel_decision::result::not_applicable, "every grid tried meets a pole of the expression"};
 }
 
+
+/// The functions of one argument `e` applies (V(x), and V'(x) as V), Order(h^k) aside.
+std::set<std::string> applied_functions(const GiNaC::ex& e) {
+  std::set<std::string> names;
+  for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (GiNaC::is_a<GiNaC::function>(*it) && it->nops() == 1 && GiNaC::ex_to<GiNaC::function>(*it).get_name() != "Order") {
+      names.insert(GiNaC::ex_to<GiNaC::function>(*it).get_name());
+    }
+  }
+  return names;
+}
+
+/// Each application of the function `name` (or a derivative of it) at a replaced by `scale` times
+/// itself, or, without a scale, by the monomial a^power (its derivative).
+struct function_replaced : GiNaC::map_function {
+  std::string name;
+  int power = 0;
+  GiNaC::ex scale{};
+  function_replaced(std::string n, int p, GiNaC::ex s = GiNaC::ex()) : name(std::move(n)), power(p), scale(std::move(s)) {}
+  GiNaC::ex operator()(const GiNaC::ex& e) override {
+    if (!GiNaC::is_a<GiNaC::function>(e) || e.nops() != 1 || GiNaC::ex_to<GiNaC::function>(e).get_name() != name) return e.map(*this);
+    if (!scale.is_zero()) return scale * e;
+    const GiNaC::ex at = (*this)(e.op(0));
+    const long order = GiNaC::is_a<GiNaC::fderivative>(e) ? static_cast<long>(GiNaC::ex_to<GiNaC::fderivative>(e).derivatives().size()) : 0;
+    if (order > power) return 0;
+    long factor = 1;
+    for (long k = 0; k < order; ++k) factor *= power - k;
+    return power == order ? GiNaC::ex(factor) : factor * GiNaC::pow(at, power - order);  // no 0^0 at a = 0
+  }
+};
+
+kernel_decision decide_entries(const GiNaC::ex& e, std::size_t most_points);
+
 }  // namespace
+
+/// The degree of the polynomial potentials an identity linear in an uninterpreted V is proved for.
+constexpr int potential_degree = 4;
 
 kernel_decision kernel_decides_zero(const GiNaC::ex& given, std::size_t most_points) {
   const GiNaC::ex e = given.evalm();
+  const std::set<std::string> functions = applied_functions(e);
+  if (functions.size() > 1) return {kernel_decision::result::not_applicable, "holds what our kernel does not compute: more than one function (" + fmt::format("{}", fmt::join(functions, ", ")) + ")"};
+  if (functions.size() == 1) {
+    // An uninterpreted V: when e is linear in V's applications (each one times λ, e of degree 1 in λ
+    // and λ in no denominator, from the tree), e is zero for every polynomial V of degree at most
+    // `potential_degree` when it is zero for each monomial V(x) = x^k up to it.
+    const std::string& name = *functions.begin();
+    const GiNaC::symbol lambda("kernel_lambda");
+    const GiNaC::ex scaled = function_replaced(name, 0, lambda)(e);
+    if (bound_in(scaled, lambda.get_name()).numerator > 1 || bound_in(scaled, lambda.get_name()).denominator_degree() > 0) {
+      return {kernel_decision::result::not_applicable, "not linear in " + name + ": our kernel decides identities linear in an uninterpreted function"};
+    }
+    std::string last;
+    for (int k = 0; k <= potential_degree; ++k) {
+      const kernel_decision d = decide_entries(function_replaced(name, k)(e), most_points);
+      if (d.outcome != kernel_decision::result::zero) return {d.outcome, fmt::format("for {}(x) = x^{}: {}", name, k, d.evidence)};
+      last = d.evidence;
+    }
+    return {kernel_decision::result::zero,
+            fmt::format("zero for {0}(x) = x^k, k = 0..{1}, and linear in {0}: for every polynomial {0} of degree <= {1} (at k = {1}: {2})", name,
+                        potential_degree, last)};
+  }
+  return decide_entries(e, most_points);
+}
+
+namespace {
+
+kernel_decision decide_entries(const GiNaC::ex& e, std::size_t most_points) {
   std::vector<GiNaC::ex> entries;
   if (GiNaC::is_a<GiNaC::matrix>(e)) {
     const GiNaC::matrix& m = GiNaC::ex_to<GiNaC::matrix>(e);
@@ -261,6 +326,8 @@ kernel_decision kernel_decides_zero(const GiNaC::ex& given, std::size_t most_poi
   out.evidence = all;
   return out;
 }
+
+}  // namespace
 
 long kernel_denominator_degree(const GiNaC::ex& e, const std::string& symbol) { return bound_in(e.evalm(), symbol).denominator_degree(); }
 

@@ -22,8 +22,11 @@ struct kernel_decision {
   std::string evidence;  // one line: the grid and its premise, the point where it is not zero, or why the kernel cannot decide
 };
 
-/// Decides e = 0 (a matrix entry by entry). Not applicable when e holds what our kernel does not
-/// compute (a square root, a function such as V) or the grid would exceed `most_points`.
+/// Decides e = 0 (a matrix entry by entry). An uninterpreted function of one argument, V, when e is
+/// linear in its applications (and their derivatives): zero for each monomial V(x) = x^k, k ≤ 4, so
+/// for every polynomial V of degree ≤ 4, the evidence says so. Not applicable when e holds what our
+/// kernel does not compute (a square root, two such functions, one not linearly) or the grid would
+/// exceed `most_points`.
 kernel_decision kernel_decides_zero(const GiNaC::ex& e, std::size_t most_points = 20000);
 
 /// A bound, from the tree as read, on the degree in `symbol` of the denominator e is written over

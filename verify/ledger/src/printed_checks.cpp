@@ -29,22 +29,47 @@ ex with_gear(const ex& e, const symbolic_derivation& d) {
   return e.subs(GiNaC::lst{sym("g_l") == d.g_l, sym("g_m") == d.g_m, sym("g_r") == d.g_r});
 }
 
+namespace {
+
+/// Each function application's arguments in their expanded normal form, inside out: GiNaC's normal
+/// form takes V(q (q + 1)) and V(q^2 + q) for two unknowns unless their arguments are one expression.
+struct canonical_arguments : GiNaC::map_function {
+  ex operator()(const ex& e) override {
+    if (!GiNaC::is_a<GiNaC::function>(e)) return e.map(*this);
+    ex out = e;
+    for (std::size_t k = 0; k < e.nops(); ++k) {
+      const ex argument = (*this)(e.op(k));
+      const ex normal = GiNaC::normal(argument);
+      out.let_op(k) = GiNaC::expand(GiNaC::numer(normal)) / GiNaC::expand(GiNaC::denom(normal));
+    }
+    return out;
+  }
+};
+
+/// GiNaC's normal form, function arguments first made canonical.
+ex normal_form(const ex& e) {
+  canonical_arguments canonical;
+  return GiNaC::normal(canonical(e));
+}
+
+}  // namespace
+
 ex normal_difference(const ex& a, const ex& b) {
   const ex difference = (a - b).evalm();
-  if (!GiNaC::is_a<GiNaC::matrix>(difference)) return GiNaC::normal(difference);
+  if (!GiNaC::is_a<GiNaC::matrix>(difference)) return normal_form(difference);
   GiNaC::matrix m = GiNaC::ex_to<GiNaC::matrix>(difference);
   for (unsigned r = 0; r < m.rows(); ++r) {
-    for (unsigned c = 0; c < m.cols(); ++c) m(r, c) = GiNaC::normal(m(r, c));
+    for (unsigned c = 0; c < m.cols(); ++c) m(r, c) = normal_form(m(r, c));
   }
   return m;
 }
 
 bool is_zero_expression(const ex& e) {
-  if (!GiNaC::is_a<GiNaC::matrix>(e)) return GiNaC::normal(e).is_zero();
+  if (!GiNaC::is_a<GiNaC::matrix>(e)) return normal_form(e).is_zero();
   const GiNaC::matrix& m = GiNaC::ex_to<GiNaC::matrix>(e);
   for (unsigned r = 0; r < m.rows(); ++r) {
     for (unsigned c = 0; c < m.cols(); ++c) {
-      if (!GiNaC::normal(m(r, c)).is_zero()) return false;
+      if (!normal_form(m(r, c)).is_zero()) return false;
     }
   }
   return true;

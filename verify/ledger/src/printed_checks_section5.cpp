@@ -33,18 +33,6 @@ printed_outcome gear_partials(const paper_reading& r) {
   return o;
 }
 
-printed_outcome lh_dqm(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
-  return compare("dL_h/dq_m", with_gear(printed_side(r, "dL_h/dq_m"), d), d.lh_dqm,
-                 simpson_lagrangian_dq_mid(d.m, d.h, general_force, d.q_l, d.q_m, d.q_r));
-}
-
-printed_outcome gr_minus_gl(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
-  return compare("g_r - g_l", printed_side(r, "g_r - g_l"), d.g_r - d.g_l,
-                 gear_right(d.q_l, d.q_m, d.q_r, d.h) - gear_left(d.q_l, d.q_m, d.q_r, d.h));
-}
-
 /// An equation E = 0 as printed against the derived one: the same when their ratio is free of the unknowns.
 printed_outcome same_equation(const std::string& what, const ex& printed, const ex& derived, const ex& core,
                               const std::vector<ex>& unknowns) {
@@ -87,23 +75,6 @@ printed_outcome scheme_consistency(const paper_reading& r) {
                           .subs(apply_function("q", {d.t}) == sym("q"));
   return consistent_with("(schema-ordre-3)", printed_side(r, "schema-ordre-3"),
                          three_term_residual(parameters(d), d.q_prev, d.q_j, d.q_next), equation, states, d.h);
-}
-
-printed_outcome qm_harmonic(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
-  const ex core = harmonic_internal_node(parameters(d), d.q_l, d.q_r);
-  printed_outcome o = compare("q_m", printed_side(r, "qm-oscillateur-harmonique"), d.harmonic_qm, core);
-  // What a certificate states (q_m = derived is one normal form for GiNaC): q_m solves the internal
-  // equation dL_h/dq_m = 0 of the harmonic L_h.
-  const ex internal = d.simpson_lagrangian([&d](const ex& x) { return d.harmonic_V(x); }).diff(as_symbol(d.q_m));
-  add_goal(o, decided("printed_internal", internal.subs(d.q_m == printed_side(r, "qm-oscillateur-harmonique")), 0), true);
-  add_goal(o, decided("core_internal", internal.subs(d.q_m == core), 0), false);
-  return o;
-}
-
-printed_outcome reduced_lagrangian_check(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
-  return compare("L_h^r", printed_side(r, "Lagrangien-reduit"), d.reduced_lagrangian, reduced_lagrangian(parameters(d), d.q_l, d.q_r));
 }
 
 printed_outcome scheme_order_3(const paper_reading& r) {
@@ -222,13 +193,9 @@ GiNaC::ex truncation_series(const symbolic_derivation& d, const GiNaC::ex& norma
 
 void add_printed_checks_section5(check_registry& checks) {
   checks.add_printed("gear-partials", {"dg_l/dq_m", "dg_m/dq_m", "dg_r/dq_m"}, gear_partials);
-  checks.add_printed("lh-dqm", {"dL_h/dq_m"}, lh_dqm);
-  checks.add_printed("gr-minus-gl", {"g_r - g_l"}, gr_minus_gl);
   checks.add_printed("internal-equation", {"equation-milieu-intervalle"}, internal_equation);
   checks.add_printed("internal-second-order", {"equation-milieu-intervalle", "oscillateur-nonlineaire"}, internal_equation_second_order);
   checks.add_printed("scheme-consistency", {"schema-ordre-3", "harmonic equation"}, scheme_consistency);
-  checks.add_printed("qm-harmonic", {"qm-oscillateur-harmonique"}, qm_harmonic);
-  checks.add_printed("reduced-lagrangian", {"Lagrangien-reduit"}, reduced_lagrangian_check);
   checks.add_printed("scheme-order3", {"schema-ordre-3"}, scheme_order_3);
   checks.add_printed("taylor-display", {"Taylor q_{j+1}", "Taylor q_{j-1}"}, taylor_display);
   checks.add_printed("characteristic-equation", {"a", "b", "schema-ordre-3"}, characteristic_equation);

@@ -53,6 +53,16 @@ const std::map<std::string, proof_shape>& proof_shapes() {
     add({"identity", "lhs = rhs, the definitions put in", "rhs",
          with_where({{"lhs", argument_kind::formula, true, "a formula"}, {"rhs", argument_kind::formula, true, "the formula it equals"}}),
          identity_shape});
+    add({"derivative", "d function / d variable = printed, the definitions put in", "printed",
+         with_where({{"function", argument_kind::formula, true, "the formula differentiated"},
+                     {"variable", argument_kind::symbols, true, "the symbol it is differentiated by", 1},
+                     {"printed", argument_kind::formula, true, "the printed derivative"}}),
+         derivative_shape});
+    add({"solves", "the equation (= 0) holds with the unknown replaced by the printed solution, the definitions put in", "solution",
+         with_where({{"equation", argument_kind::formula, true, "the equation's side that is 0"},
+                     {"unknown", argument_kind::symbols, true, "the symbol it is solved for", 1},
+                     {"solution", argument_kind::formula, true, "the printed solution"}}),
+         solves_shape});
     add({"determinant", "det matrix = equals", "equals",
          with_where({{"matrix", argument_kind::matrix, true, "a square matrix"}, {"equals", argument_kind::formula, true, "its determinant"}}),
          determinant_shape});

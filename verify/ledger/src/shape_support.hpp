@@ -78,6 +78,8 @@ std::string reference_of(const shape_call& call, const std::string& parameter);
 
 // The shapes.
 claim_result identity_shape(const shape_call& call, const run_context& ctx);
+claim_result derivative_shape(const shape_call& call, const run_context& ctx);
+claim_result solves_shape(const shape_call& call, const run_context& ctx);
 claim_result determinant_shape(const shape_call& call, const run_context& ctx);
 claim_result symplectic_shape(const shape_call& call, const run_context& ctx);
 claim_result conserved_shape(const shape_call& call, const run_context& ctx);

@@ -130,6 +130,39 @@ claim_result identity_shape(const shape_call& call, const run_context& ctx) {
                           fmt::format("as derived from ({}): ({}) = {}", reference_of(call, "lhs"), reference_of(call, "rhs"), text_of(lhs)));
 }
 
+/// A printed partial derivative: d function / d variable = printed, the definitions put in both. The
+/// derivative is GiNaC's (structural differentiation of the tree as read, an uninterpreted V
+/// differentiated to V'); the identity with the printed one is decided in both kernels.
+claim_result derivative_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const ex printed = read.formula("printed"), function = read.formula("function");
+  const GiNaC::symbol variable = read.symbols("variable").front();
+  const ex derived = GiNaC::diff(function, variable);
+  const std::string what = fmt::format("d({})/d{} = ({})", reference_of(call, "function"), variable.get_name(), reference_of(call, "printed"));
+  return identity_verdict(call, read, "derivative", what, derived, printed,
+                          fmt::format("as derived: d({})/d{} = {}", reference_of(call, "function"), variable.get_name(), text_of(GiNaC::normal(derived))));
+}
+
+/// A printed solution: the equation (= 0) is 0 with the unknown replaced by the solution, the
+/// definitions put in. Else an erratum corrected by the solution GiNaC finds when the equation is
+/// linear in the unknown, or fails when it is not.
+claim_result solves_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const ex solution = read.formula("solution"), equation = read.formula("equation");
+  const GiNaC::symbol unknown = read.symbols("unknown").front();
+  const std::string what = fmt::format("({}) = 0 at {} = ({})", reference_of(call, "equation"), unknown.get_name(), reference_of(call, "solution"));
+  std::string correction;
+  try {
+    const ex solved = GiNaC::lsolve(equation == 0, unknown);
+    if (!solved.has(unknown) && !(GiNaC::is_a<GiNaC::lst>(solved) && solved.nops() == 0)) {
+      correction = fmt::format("as derived from ({}): {} = {}", reference_of(call, "equation"), unknown.get_name(), text_of(GiNaC::normal(solved)));
+    }
+  } catch (const std::exception&) {  // not linear in the unknown: no correction
+  }
+  return identity_verdict(call, read, "solution", what, equation.subs(unknown == solution), 0, correction,
+                          correction.empty() ? verdict::fails : verdict::erratum);
+}
+
 claim_result determinant_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const ex equals = read.formula("equals");

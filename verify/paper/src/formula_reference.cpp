@@ -107,6 +107,10 @@ formula_reference parse_reference(const std::string& text) {
     if (text.rfind(prefix, 0) != 0) continue;
     r.where = kind;
     r.key = text.substr(prefix.size());
+    if (r.key.size() > 4 && r.key.compare(r.key.size() - 4, 4, ":lhs") == 0) {  // the phrase's formula's first side
+      r.first_side = true;
+      r.key.resize(r.key.size() - 4);
+    }
     if (r.key.find_first_not_of(" \t") == std::string::npos) throw std::invalid_argument("'" + prefix + "' names no phrase");
     return r;
   }
@@ -124,7 +128,7 @@ formula_reference parse_reference(const std::string& text) {
     r.equation = std::stoi(number);
     rest.resize(hash);
   }
-  if (rest.empty() || rest.find_first_of("{}$\\ ") != std::string::npos) {
+  if (rest.empty() || rest.find_first_of("{}$\\") != std::string::npos || rest.front() == ' ' || rest.back() == ' ') {  // a \label may hold spaces
     throw std::invalid_argument("'" + text + "' is not a reference (a \\label, label#k, label:lhs, inline:phrase, after:phrase, or $TeX$)");
   }
   r.key = rest;
@@ -188,17 +192,21 @@ definition read_definition(const paper_source& document, const std::map<std::str
   formula_reference r = parse_reference(reference);
   if (r.first_side) throw std::invalid_argument("'" + reference + "': a definition is a whole equation, without ':lhs'");
   const referenced_formula f = read_reference(document, macros, reference);
-  if (f.sides.size() != 2) throw std::invalid_argument(f.locator + ": a definition is one equation 'x = ...'");
+  if (f.sides.size() < 2) throw std::invalid_argument(f.locator + ": a definition is an equation 'x = ...'");
   GiNaC::ex name;
   try {
     name = parse_tex_math(f.sides.front(), paper_symbols());
   } catch (const tex_parse_error& e) {
     throw std::invalid_argument(f.locator + ": cannot parse '" + folded_space(f.sides.front()) + "': " + e.what());
   }
-  if (!GiNaC::is_a<GiNaC::symbol>(name)) {
-    throw std::invalid_argument(f.locator + ": the left side '" + folded_space(f.sides.front()) + "' of a definition is not one symbol");
+  if (GiNaC::is_a<GiNaC::symbol>(name)) return {GiNaC::ex_to<GiNaC::symbol>(name), f.value, f.locator, f.line, f.tex};
+  // V(q) = ...: a function of one symbol.
+  if (GiNaC::is_exactly_a<GiNaC::function>(name) && name.nops() == 1 && GiNaC::is_a<GiNaC::symbol>(name.op(0))) {
+    const std::string function = GiNaC::ex_to<GiNaC::function>(name).get_name();
+    return {GiNaC::symbol(function), f.value, f.locator, f.line, f.tex, function, GiNaC::ex_to<GiNaC::symbol>(name.op(0))};
   }
-  return {GiNaC::ex_to<GiNaC::symbol>(name), f.value, f.locator, f.line, f.tex};
+  throw std::invalid_argument(f.locator + ": the left side '" + folded_space(f.sides.front()) +
+                              "' of a definition is not one symbol, nor a function of one symbol");
 }
 
 namespace {
@@ -248,15 +256,47 @@ GiNaC::ex evaluated_matrices(const GiNaC::ex& e) {
 
 }  // namespace
 
+namespace {
+
+/// Whether `e` applies the function `name`, or a derivative of it.
+bool applies(const GiNaC::ex& e, const std::string& name) {
+  for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (GiNaC::is_a<GiNaC::function>(*it) && GiNaC::ex_to<GiNaC::function>(*it).get_name() == name) return true;
+  }
+  return false;
+}
+
+/// Each application of a defined function, V(x) or its k-th derivative V^(k)(x), replaced by the
+/// definition's value (its k-th derivative) at x.
+struct function_values : GiNaC::map_function {
+  const definition& d;
+  explicit function_values(const definition& given) : d(given) {}
+  GiNaC::ex operator()(const GiNaC::ex& e) override {
+    if (!GiNaC::is_a<GiNaC::function>(e) || GiNaC::ex_to<GiNaC::function>(e).get_name() != d.function || e.nops() != 1) return e.map(*this);
+    const GiNaC::ex at = (*this)(e.op(0));
+    unsigned order = 0;
+    if (GiNaC::is_a<GiNaC::fderivative>(e)) order = static_cast<unsigned>(GiNaC::ex_to<GiNaC::fderivative>(e).derivatives().size());
+    return GiNaC::diff(d.value, *d.parameter, order).subs(*d.parameter == at);
+  }
+};
+
+}  // namespace
+
 GiNaC::ex with_definitions(const GiNaC::ex& e, const std::vector<definition>& definitions) {
   GiNaC::exmap values;
-  for (const definition& d : definitions) values[d.name] = d.value;
+  for (const definition& d : definitions) {
+    if (d.function.empty()) values[d.name] = d.value;
+  }
   GiNaC::ex out = e;
   for (std::size_t round = 0; round <= definitions.size(); ++round) {
     bool any = false;
-    for (const definition& d : definitions) any = any || out.has(d.name);
+    for (const definition& d : definitions) any = any || (d.function.empty() ? out.has(d.name) : applies(out, d.function));
     if (!any) return evaluated_matrices(out);
-    out = evaluated_matrices(out.subs(values));
+    out = out.subs(values);
+    for (const definition& d : definitions) {
+      if (!d.function.empty()) out = function_values(d)(out);
+    }
+    out = evaluated_matrices(out);
   }
   throw std::invalid_argument("the definitions use each other without end");
 }

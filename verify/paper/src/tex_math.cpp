@@ -245,23 +245,35 @@ class parser {
     return t.text[0] - '0';
   }
 
-  // After the outer '{': {\dd^k x}\over{\dd t^n}} (or \partial). Only when the group starts so;
-  // otherwise nothing is consumed.
+  // The differential: \dd, \partial, or {\rm d} and \mathrm{d} (what a document's own \dd
+  // expands to), consumed when there; nothing consumed otherwise.
+  bool accept_differential() {
+    if (accept("\\dd") || accept("\\partial")) return true;
+    const std::size_t saved = at_;
+    if (accept("{") && accept("\\rm") && accept("d") && accept("}")) return true;
+    at_ = saved;
+    if (accept("\\mathrm") && accept("{") && accept("d") && accept("}")) return true;
+    at_ = saved;
+    return false;
+  }
+
+  // After the outer '{': {\dd^k x}\over{\dd t^n}} (or \partial, {\rm d}). Only when the group starts
+  // so; otherwise nothing is consumed.
   bool starts_derivative() {
     const std::size_t saved = at_;
-    const bool is = accept("{") && (peek().text == "\\dd" || peek().text == "\\partial");
+    const bool is = accept("{") && accept_differential();
     at_ = saved;
     return is;
   }
   GiNaC::ex derivative() {
     expect("{");
-    next();  // \dd or \partial
+    accept_differential();
     const int k = derivative_order();
     const std::string of = derivative_operand();
     expect("}");
     expect("\\over");
     expect("{");
-    if (!accept("\\dd") && !accept("\\partial")) fail("expected \\dd in the denominator of a derivative");
+    if (!accept_differential()) fail("expected \\dd in the denominator of a derivative");
     const std::string by = derivative_operand();
     const int n = derivative_order();
     expect("}");

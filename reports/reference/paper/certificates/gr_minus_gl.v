@@ -12,14 +12,13 @@ Ltac nonzero :=
           | [ H : 0 < ?Y |- ?X <> 0 ] => replace X with Y by ring; apply Rgt_not_eq; exact H
           end
         | apply pow_nonzero; nonzero ].
-(* Not stated: gr_minus_gl_core, whose two sides GiNaC evaluates to one expression (X = X checks nothing). *)
 
-Lemma gr_minus_gl_printed :
+Lemma gr_minus_gl_identity :
   forall h q_l q_m q_r : R,
   0 < h ->
   h <> 0 ->
-  ((-4) * (((-1) * q_l) + ((-1) * q_r) + (2 * q_m)) * (/ h))
-  = (((-1) * (((-1) * q_l) + ((-3) * q_r) + (4 * q_m)) * (/ h)) + ((-1) * (((-1) * q_r) + ((-3) * q_l) + (4 * q_m)) * (/ h))).
+  (((-1) * (((-1) * q_l) + ((-3) * q_r) + (4 * q_m)) * (/ h)) + ((-1) * (((-1) * q_r) + ((-3) * q_l) + (4 * q_m)) * (/ h)))
+  = ((-4) * (((-1) * q_l) + ((-1) * q_r) + (2 * q_m)) * (/ h)).
 Proof.
   intros.
   field; repeat split; nonzero.

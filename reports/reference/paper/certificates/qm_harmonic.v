@@ -12,28 +12,14 @@ Ltac nonzero :=
           | [ H : 0 < ?Y |- ?X <> 0 ] => replace X with Y by ring; apply Rgt_not_eq; exact H
           end
         | apply pow_nonzero; nonzero ].
-(* Not stated: qm_harmonic_printed, qm_harmonic_core, whose two sides GiNaC evaluates to one expression (X = X checks nothing). *)
 
-Lemma qm_harmonic_printed_internal :
+Lemma qm_harmonic_solution :
   forall h m omega q_l q_r : R,
   0 < m ->
   0 < h ->
   (((-1) * (h ^ 2) * (omega ^ 2)) + 8) <> 0 ->
   h <> 0 ->
-  ((2/3) * (((((-1) * h * q_l) + ((-16) * (((-1) * q_l) + ((-1) * q_r)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)) * h) + ((-3) * h * q_r)) * (/ (h ^ 3)) * m) + ((((-1) * h * q_r) + ((-16) * (((-1) * q_l) + ((-1) * q_r)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)) * h) + ((-3) * h * q_l)) * (/ (h ^ 3)) * m) + (4 * (((-1) * q_l) + ((-1) * q_r)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)) * (omega ^ 2) * m)) * h)
-  = 0.
-Proof.
-  intros.
-  field; repeat split; nonzero.
-Qed.
-
-Lemma qm_harmonic_core_internal :
-  forall h m omega q_l q_r : R,
-  0 < m ->
-  0 < h ->
-  (((-1) * (h ^ 2) * (omega ^ 2)) + 8) <> 0 ->
-  h <> 0 ->
-  ((2/3) * (((((-1) * h * q_l) + ((-16) * (((-1) * q_l) + ((-1) * q_r)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)) * h) + ((-3) * h * q_r)) * (/ (h ^ 3)) * m) + ((((-1) * h * q_r) + ((-16) * (((-1) * q_l) + ((-1) * q_r)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)) * h) + ((-3) * h * q_l)) * (/ (h ^ 3)) * m) + (4 * (((-1) * q_l) + ((-1) * q_r)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)) * (omega ^ 2) * m)) * h)
+  (((-4) * (((-1) * q_l) + ((-1) * q_r) + ((-8) * (((-1) * q_l) + ((-1) * q_r)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)))) * (/ (h ^ 2)) * m) + ((-4) * (((-1) * q_l) + ((-1) * q_r)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)) * (omega ^ 2) * m))
   = 0.
 Proof.
   intros.

@@ -13,27 +13,14 @@ Ltac nonzero :=
           end
         | apply pow_nonzero; nonzero ].
 
-Lemma reduced_lagrangian_printed :
+Lemma reduced_lagrangian_identity :
   forall h m omega q_l q_r : R,
   0 < m ->
   0 < h ->
   (((-1) * (h ^ 2) * (omega ^ 2)) + 8) <> 0 ->
   h <> 0 ->
   ((1/12) * (((((((-1) * (h ^ 2) * (omega ^ 2)) + 22) * (((-1) * (q_l ^ 2)) + ((-1) * (q_r ^ 2)))) + ((-4) * q_l * q_r)) * (omega ^ 2) * h * m) + (48 * ((((-1) * q_l) + q_r) ^ 2) * (/ h) * m)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)))
-  = ((-1/12) * (((-1) * (h ^ 4) * (omega ^ 4) * (q_l ^ 2) * m) + ((-1) * (h ^ 4) * (omega ^ 4) * (q_r ^ 2) * m) + ((-48) * (q_l ^ 2) * m) + ((-48) * (q_r ^ 2) * m) + (22 * (h ^ 2) * (omega ^ 2) * (q_l ^ 2) * m) + (22 * (h ^ 2) * (omega ^ 2) * (q_r ^ 2) * m) + (4 * (h ^ 2) * (omega ^ 2) * m * q_l * q_r) + (96 * m * q_l * q_r)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)) * (/ h)).
-Proof.
-  intros.
-  field; repeat split; nonzero.
-Qed.
-
-Lemma reduced_lagrangian_core :
-  forall h m omega q_l q_r : R,
-  0 < m ->
-  0 < h ->
-  (((-1) * (h ^ 2) * (omega ^ 2)) + 8) <> 0 ->
-  h <> 0 ->
-  ((1/12) * (((((((-1) * (h ^ 2) * (omega ^ 2)) + 22) * (((-1) * (q_l ^ 2)) + ((-1) * (q_r ^ 2)))) + ((-4) * q_l * q_r)) * (omega ^ 2) * h * m) + (48 * ((((-1) * q_l) + q_r) ^ 2) * (/ h) * m)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)))
-  = ((-1/12) * (((-1) * (h ^ 4) * (omega ^ 4) * (q_l ^ 2) * m) + ((-1) * (h ^ 4) * (omega ^ 4) * (q_r ^ 2) * m) + ((-48) * (q_l ^ 2) * m) + ((-48) * (q_r ^ 2) * m) + (22 * (h ^ 2) * (omega ^ 2) * (q_l ^ 2) * m) + (22 * (h ^ 2) * (omega ^ 2) * (q_r ^ 2) * m) + (4 * (h ^ 2) * (omega ^ 2) * m * q_l * q_r) + (96 * m * q_l * q_r)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)) * (/ h)).
+  = (((1/12) * ((((((-1) * q_l) + ((-16) * (((-1) * q_l) + ((-1) * q_r)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8))) + ((-3) * q_r)) ^ 2) * (/ (h ^ 2))) + (((((-1) * q_r) + ((-16) * (((-1) * q_l) + ((-1) * q_r)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8))) + ((-3) * q_l)) ^ 2) * (/ (h ^ 2))) + (4 * ((((-1) * q_l) + q_r) ^ 2) * (/ (h ^ 2)))) * h * m) + ((1/12) * (((-1) * (omega ^ 2) * (q_l ^ 2) * m) + ((-1) * (omega ^ 2) * (q_r ^ 2) * m) + ((-64) * ((((-1) * q_l) + ((-1) * q_r)) ^ 2) * (/ ((((-1) * (h ^ 2) * (omega ^ 2)) + 8) ^ 2)) * (omega ^ 2) * m)) * h)).
 Proof.
   intros.
   field; repeat split; nonzero.

@@ -18,6 +18,7 @@
 
 #include <map>
 #include <stdexcept>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,18 +53,22 @@ referenced_formula read_reference(const paper_source& document, const std::map<s
 /// Every symbol in `e`, by name.
 std::vector<std::string> symbol_names(const GiNaC::ex& e);
 
-/// A definition read from a display "x = ...": the symbol (its first side, which must parse to a
-/// symbol) and its value (the last side).
+/// A definition read from a display "x = ..." or "V(q) = ...": its first side, a symbol or a function
+/// of one symbol, and its value, the last side (a chain "g = dq/dt(0) = ..." defines g by its last
+/// side; that the sides between are equal is another claim's).
 struct definition {
-  GiNaC::symbol name;
+  GiNaC::symbol name;  // the symbol, or the function's name as a symbol
   GiNaC::ex value;
   std::string locator;
   int line = 0;     // where it was read
   std::string tex;  // as printed
+  std::string function{};               // a function's name ("V"): V(x) is value at parameter = x, and V' its derivative
+  std::optional<GiNaC::symbol> parameter{};
 };
 definition read_definition(const paper_source& document, const std::map<std::string, tex_macro>& macros, const std::string& reference);
 
-/// `e` with the definitions put in, again until none of their symbols is left (a definition may
+/// `e` with the definitions put in (a function's at each of its applications and derivatives, V'(x)
+/// as the derivative of V's value), again until none of their symbols or functions is left (a definition may
 /// use another), and its matrices evaluated (a product of two in the one order whose sizes agree).
 /// Throws std::invalid_argument when they never end (a definition that uses itself), or a product
 /// of matrices has no order or none that fits.
