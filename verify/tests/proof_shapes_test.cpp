@@ -184,6 +184,8 @@ const std::string shape_document = R"(\newcommand{\om}{\omega}
 Stable for $0 < \om h < 2$. Also stable for $0 < \om h < 2 \sqrt{2}$. And for $0 < \om h < 1$.
 \begin{equation}\label{ldm} L_d = \frac{m}{h} \Big( (q_m - q_0)^2 + (q_1 - q_m)^2 \Big) \end{equation}
 \begin{equation}\label{free} F = \begin{pmatrix} 1 & \frac{h}{m} \\ 0 & 1 \end{pmatrix} \end{equation}
+\begin{equation}\label{internal} q_0 - 2 q_m + q_1 = 0 \end{equation}
+\begin{equation}\label{internalwrong} q_0 - q_m + q_1 = 0 \end{equation}
 \begin{equation}\label{sv} \frac{q_{j+1} - 2 q_j + q_{j-1}}{h^2} + \om^2 q_j = 0 \end{equation}
 \begin{equation}\label{trunc} \frac{\om^4 h^2}{12} q_j + {\rm O}(h^4) \end{equation}
 \begin{equation}\label{truncwrong} \frac{\om^4 h^2}{24} q_j + {\rm O}(h^4) \end{equation}
@@ -408,6 +410,18 @@ TEST_F(ShapesOnADocument, Derivative) {
   EXPECT_NE(chain.evidence["exact"]["own"].get<std::string>().find("every polynomial V"), std::string::npos) << chain.evidence.dump();
   EXPECT_EQ(run("derivative", R"({ function = '$V(q^2 + q)$', variable = ['q'], printed = '$2 q {{\partial V}\over{\partial q}}((q + 1) q)$' })").outcome,
             verdict::erratum);
+}
+
+TEST_F(ShapesOnADocument, Stationary) {
+  // dL/dq_m = (2m/h)(2 q_m - q_0 - q_1): the printed equation up to the factor -2m/h, free of the states.
+  const std::string args = R"(function = "ldm", variable = ['q_m'], unknowns = ['q_0', 'q_m', 'q_1'])";
+  const claim_result holds = run("stationary", "{ printed = \"internal:lhs\", " + args + " }");
+  EXPECT_EQ(holds.outcome, verdict::holds) << holds.note << holds.evidence.dump();
+  EXPECT_EQ(holds.evidence["exact"]["factor"], "(-2*m)/(h)");
+  const claim_result wrong = run("stationary", "{ printed = \"internalwrong:lhs\", " + args + " }");
+  EXPECT_EQ(wrong.outcome, verdict::erratum);
+  // Corrected by the derived equation: a ratio that holds a state is no factor.
+  EXPECT_EQ(wrong.correction, "as derived: (-2*m*q_0-2*m*q_1+4*m*q_m)/(h) = 0") << wrong.correction;
 }
 
 TEST_F(ShapesOnADocument, Solves) {

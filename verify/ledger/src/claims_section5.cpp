@@ -37,20 +37,6 @@ claim_result check_gear_partials(const run_context&) {
   return identity(p);
 }
 
-claim_result check_internal_equation(const run_context&) {
-  return identity_for_quartic_potentials(
-      "h = theta; dL_h/dq_m + (2h/3) (equation-milieu-intervalle): the two vanish together", {"m", "q_l", "q_m", "q_r"},
-      {1, 3, 3, 3},
-      [&](const monomial_potential& V, const auto& v) {
-        using S = std::decay_t<decltype(v[0])>;
-        const S h = theta_variable<S>();
-        const S m(v[0]), ql(v[1]), qm(v[2]), qr(v[3]);
-        const auto dV = [&](const S& x) { return V.derivative(x); };
-        return S(simpson_lagrangian_dq_mid(m, h, dV, ql, qm, qr) + 2 * h / 3 * internal_equation_residual(m, h, dV, ql, qm, qr));
-      },
-      "Proved for every polynomial V of degree <= 4 (the identity is linear in V).");
-}
-
 claim_result check_internal_second_order(const run_context& ctx) {
   const quoted_sentence said = quote(ctx, "We have put in evidence  a {order} order discretization of the continuous Euler-Lagrange equation");
   const int stated = said.number("order");
@@ -494,7 +480,6 @@ claim_result check_maupertuis_naming(const run_context& ctx) {
 void add_section5_checks(check_registry& checks) {
   checks.add("maupertuis-naming", check_maupertuis_naming);
   checks.add("gear-partials", check_gear_partials);
-  checks.add("internal-equation", check_internal_equation);
   checks.add("internal-second-order", check_internal_second_order);
   checks.add("qm-not-affine", check_qm_not_affine);
   checks.add("scheme-order3", check_scheme_order3);

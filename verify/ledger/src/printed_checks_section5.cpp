@@ -51,12 +51,6 @@ printed_outcome same_equation(const std::string& what, const ex& printed, const 
   return o;
 }
 
-printed_outcome internal_equation(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
-  return same_equation("internal equation", printed_side(r, "equation-milieu-intervalle"), d.lh_dqm,
-                       internal_equation_residual(d.m, d.h, general_force, d.q_l, d.q_m, d.q_r), {d.q_l, d.q_m, d.q_r});
-}
-
 /// (equation-milieu-intervalle) on a smooth q(t) at t - h/2, t, t + h/2, V uninterpreted: its leading
 /// term is (oscillateur-nonlineaire).
 printed_outcome internal_equation_second_order(const paper_reading& r) {
@@ -193,7 +187,6 @@ GiNaC::ex truncation_series(const symbolic_derivation& d, const GiNaC::ex& norma
 
 void add_printed_checks_section5(check_registry& checks) {
   checks.add_printed("gear-partials", {"dg_l/dq_m", "dg_m/dq_m", "dg_r/dq_m"}, gear_partials);
-  checks.add_printed("internal-equation", {"equation-milieu-intervalle"}, internal_equation);
   checks.add_printed("internal-second-order", {"equation-milieu-intervalle", "oscillateur-nonlineaire"}, internal_equation_second_order);
   checks.add_printed("scheme-consistency", {"schema-ordre-3", "harmonic equation"}, scheme_consistency);
   checks.add_printed("scheme-order3", {"schema-ordre-3"}, scheme_order_3);

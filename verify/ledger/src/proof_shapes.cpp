@@ -82,6 +82,12 @@ const std::map<std::string, proof_shape>& proof_shapes() {
                      {"sequence", argument_kind::symbols, true, "three consecutive states", 3},
                      {"printed", argument_kind::formula, true, "the printed equation's side that is 0"}}),
          euler_lagrange_shape});
+    add({"stationary", "the printed equation (= 0) is d function / d variable = 0, up to a factor free of the unknowns", "printed",
+         with_where({{"printed", argument_kind::formula, true, "the printed equation's side that is 0"},
+                     {"function", argument_kind::formula, true, "the function made stationary (a discrete Lagrangian)"},
+                     {"variable", argument_kind::symbols, true, "the variable it is stationary in (an internal node)", 1},
+                     {"unknowns", argument_kind::symbols, true, "the states the factor must be free of"}}),
+         stationary_shape});
     add({"stability-interval", "the printed 0 < variable < c is the first band where the map (det 1), or the three-term scheme (reversible), is power-bounded",
          "condition",
          with_where({{"map", argument_kind::matrix, false, "a 2 x 2 one-step map with det 1", 2},

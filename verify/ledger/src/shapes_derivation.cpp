@@ -13,6 +13,31 @@ namespace simpson::verify::detail {
 
 using GiNaC::ex;
 
+namespace {
+
+/// The printed equation (= 0) against the derived one (= 0): the same when the printed one times a
+/// factor free of the unknowns (GiNaC finds it) is the derived one, an identity both kernels decide.
+claim_result same_equation_verdict(const shape_call& call, shape_reader& read, const std::string& goal, const std::string& what, const ex& printed,
+                                   const ex& derived, const std::vector<GiNaC::symbol>& unknowns) {
+  const auto factor = equation_factor(printed, derived, std::vector<ex>(unknowns.begin(), unknowns.end()));
+  if (factor) {
+    claim_result result = identity_verdict(call, read, goal, what, *factor * printed, derived, "");
+    result.evidence["exact"]["factor"] = text_of(*factor);
+    return result;
+  }
+  claim_result result;
+  result.outcome = verdict::erratum;
+  result.correction = "as derived: " + text_of(GiNaC::normal(derived)) + " = 0";
+  result.note = "As printed: no factor free of the unknowns makes the printed equation the derived one (GiNaC: the ratio depends on them); our kernel decides identities only, not this refutation.";
+  result.evidence["exact"] = {{"statement", what}, {"ginac", "fails: derived / printed depends on the unknowns"},
+                              {"own", "not applicable: a refutation of proportionality"}};
+  result.printed = read.printed();
+  result.certificate_missing = "a refuted proportionality: no identity to state";
+  return result;
+}
+
+}  // namespace
+
 claim_result euler_lagrange_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const ex printed = read.formula("printed"), lagrangian = read.formula("lagrangian");
@@ -22,25 +47,19 @@ claim_result euler_lagrange_shape(const shape_call& call, const run_context& ctx
   const auto at = [&](const ex& e, const ex& a, const ex& b) { return e.subs(GiNaC::lst{nodes[0] == a, nodes[1] == b}); };
   // D_2 L(q_{j-1}, q_j) + D_1 L(q_j, q_{j+1}) = 0.
   const ex derived = at(lagrangian.diff(nodes[1]), sequence[0], sequence[1]) + at(lagrangian.diff(nodes[0]), sequence[1], sequence[2]);
-  const std::vector<ex> unknowns(sequence.begin(), sequence.end());
-  const auto factor = equation_factor(printed, derived, unknowns);
   const std::string what = fmt::format("({}) = 0 is the discrete Euler-Lagrange equation of ({})", reference_of(call, "printed"),
                                        reference_of(call, "lagrangian"));
-  if (factor) {
-    // The printed equation times the factor GiNaC found is the derived one: an identity both kernels decide.
-    claim_result result = identity_verdict(call, read, "euler_lagrange", what, *factor * printed, derived, "");
-    result.evidence["exact"]["factor"] = text_of(*factor);
-    return result;
-  }
-  claim_result result;
-  result.outcome = verdict::erratum;
-  result.correction = "as derived: " + text_of(GiNaC::normal(derived)) + " = 0";
-  result.note = "As printed: no factor free of the states makes the printed equation the derived one (GiNaC: the ratio depends on them); our kernel decides identities only, not this refutation.";
-  result.evidence["exact"] = {{"statement", what}, {"ginac", "fails: derived / printed depends on the states"},
-                              {"own", "not applicable: a refutation of proportionality"}};
-  result.printed = read.printed();
-  result.certificate_missing = "a refuted proportionality: no identity to state";
-  return result;
+  return same_equation_verdict(call, read, "euler_lagrange", what, printed, derived, sequence);
+}
+
+/// The printed equation (= 0) is the stationarity condition d function / d variable = 0 (an internal
+/// node's equation), up to a factor free of the unknowns.
+claim_result stationary_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const ex printed = read.formula("printed"), function = read.formula("function");
+  const GiNaC::symbol variable = read.symbols("variable").front();
+  const std::string what = fmt::format("({}) = 0 is d({})/d{} = 0", reference_of(call, "printed"), reference_of(call, "function"), variable.get_name());
+  return same_equation_verdict(call, read, "stationary", what, printed, GiNaC::diff(function, variable), read.symbols("unknowns"));
 }
 
 /// The one-step map of a discrete Lagrangian L(q_0, q_1) of a linear system, derived: each internal

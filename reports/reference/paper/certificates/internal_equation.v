@@ -13,25 +13,13 @@ Ltac nonzero :=
           end
         | apply pow_nonzero; nonzero ].
 
-Lemma internal_equation_printed :
+Lemma internal_equation_stationary :
   forall (dV : R -> R) (h m q_l q_m q_r : R),
   0 < m ->
   0 < h ->
   h <> 0 ->
-  (((-2/3) * (dV q_m) * h) + ((-8/3) * (/ h) * m * q_l) + ((-8/3) * (/ h) * m * q_r) + ((16/3) * (/ h) * m * q_m))
-  = ((2/3) * (((-1) * (dV q_m)) + (4 * (((-1) * q_l) + ((-1) * q_r) + (2 * q_m)) * (/ (h ^ 2)) * m)) * h).
-Proof.
-  intros.
-  field; repeat split; nonzero.
-Qed.
-
-Lemma internal_equation_core :
-  forall (dV : R -> R) (h m q_l q_m q_r : R),
-  0 < m ->
-  0 < h ->
-  h <> 0 ->
-  (((-2/3) * (dV q_m) * h) + ((-8/3) * (/ h) * m * q_l) + ((-8/3) * (/ h) * m * q_r) + ((16/3) * (/ h) * m * q_m))
-  = ((2/3) * (((-1) * (dV q_m)) + (4 * (((-1) * q_l) + ((-1) * q_r) + (2 * q_m)) * (/ (h ^ 2)) * m)) * h).
+  ((2/3) * (((-1) * (dV q_m)) + (4 * (((-1) * q_l) + ((-1) * q_r) + (2 * q_m)) * (/ (h ^ 2)) * m)) * h)
+  = (((-2/3) * (dV q_m) * h) + ((2/3) * (((((-1) * q_l) + ((-3) * q_r) + (4 * q_m)) * (/ (h ^ 2))) + ((((-1) * q_r) + ((-3) * q_l) + (4 * q_m)) * (/ (h ^ 2)))) * h * m)).
 Proof.
   intros.
   field; repeat split; nonzero.
