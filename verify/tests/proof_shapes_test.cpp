@@ -176,6 +176,8 @@ const std::string shape_document = R"(\newcommand{\om}{\omega}
   - m \om^2 h \Big(1 - \frac{\om^2 h^2}{4}\Big) & 1 - \frac{\om^2 h^2}{2} \end{pmatrix} \end{equation}
 \begin{equation}\label{mapwrong} \Psi = \begin{pmatrix} 1 - \frac{\om^2 h^2}{2} & \frac{h}{m} \\
   - m \om^2 h & 1 - \frac{\om^2 h^2}{2} \end{pmatrix} \end{equation}
+\begin{equation}\label{mappq} \Phi = \begin{pmatrix} 1 - \frac{\om^2 h^2}{2} & - m \om^2 h \Big(1 - \frac{\om^2 h^2}{4}\Big) \\
+  \frac{h}{m} & 1 - \frac{\om^2 h^2}{2} \end{pmatrix} \end{equation}
 \begin{equation}\label{one} D = 1 \end{equation}
 \begin{equation}\label{energy} H = \frac{p^2}{2m} + \frac{m \om^2}{2} \Big(1 - \frac{\om^2 h^2}{4}\Big) q^2 \end{equation}
 \begin{equation}\label{energywrong} H = \frac{p^2}{2m} + \frac{m \om^2}{2} q^2 \end{equation}
@@ -333,6 +335,11 @@ TEST_F(ShapesOnADocument, DiscreteMap) {
   const std::string ends = R"(nodes = ['q_0', 'q_1'], momenta = ['p_0', 'p_1'])";
   const claim_result holds = run("discrete-map", "{ map = \"map\", lagrangian = \"ld\", " + ends + " }");
   EXPECT_EQ(holds.outcome, verdict::holds) << holds.note << holds.evidence.dump();
+  // The same map printed in (p, q): it holds with order "p q" only, and the (q, p) map does not.
+  const claim_result pq = run("discrete-map", "{ map = \"mappq\", lagrangian = \"ld\", order = \"p q\", " + ends + " }");
+  EXPECT_EQ(pq.outcome, verdict::holds) << pq.note << pq.evidence.dump();
+  EXPECT_EQ(run("discrete-map", "{ map = \"mappq\", lagrangian = \"ld\", " + ends + " }").outcome, verdict::erratum);
+  EXPECT_EQ(run("discrete-map", "{ map = \"map\", lagrangian = \"ld\", order = \"p q\", " + ends + " }").outcome, verdict::erratum);
   const claim_result wrong = run("discrete-map", "{ map = \"mapwrong\", lagrangian = \"ld\", " + ends + " }");
   EXPECT_EQ(wrong.outcome, verdict::erratum);
   EXPECT_NE(wrong.correction.find("[(h^3*m*omega^4-4*h*m*omega^2)/(4), "), std::string::npos) << wrong.correction;
@@ -477,7 +484,7 @@ TEST(ShapeRecords, BadRecordsAreNamedWithTheirLineAndArgument) {
   EXPECT_NE(error_of("identity", R"({ lhs = "sum", rhs = '$a +* b$' })").find("field 'with.rhs': "), std::string::npos);
   EXPECT_NE(error_of("identity", R"({ lhs = "sum", rhs = '$z$' })").find("the symbol 'z' is not declared"), std::string::npos);
   // Of the wrong kind or size for the shape: found before anything runs, not when the claim runs.
-  EXPECT_NE(error_of("determinant", R"({ matrix = "sum", equals = "one" })").find("field 'with.matrix': label sum (line 13) is not a square matrix"),
+  EXPECT_NE(error_of("determinant", R"({ matrix = "sum", equals = "one" })").find("field 'with.matrix': label sum (line 15) is not a square matrix"),
             std::string::npos);
   EXPECT_NE(error_of("stability-interval", R"({ map = "map", variable = '$\omega h$', condition = "one" })").find("is not a condition"),
             std::string::npos);

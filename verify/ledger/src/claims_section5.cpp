@@ -128,22 +128,6 @@ std::string stable_bands_text(const stability_report& report) {
 
 rational band_end_of(const printed_stability_band& band) { return rational(band.numerator) / rational(band.denominator); }
 
-claim_result check_scheme_order3(const run_context&) {
-  const proof p = prove_zero_on_grid(
-      std::string(unit_reduction) +
-          "; dL^r/dq_r(q_{j-1},q_j) + dL^r/dq_l(q_j,q_{j+1}) (exact differences of Lagrangien-reduit) + (m h/(1 - x/8)) (schema-ordre-3)",
-      {"q_{j-1}", "q_j", "q_{j+1}"}, 1, [&](const auto& v) {
-        using S = std::decay_t<decltype(v[0])>;
-        const auto par = theta_oscillator<S>();
-        const S qp(v[0]), q(v[1]), qn(v[2]);
-        const S euler_lagrange = exact_derivative([&](const S& x) { return reduced_lagrangian(par, qp, x); }, q) +
-                                 exact_derivative([&](const S& x) { return reduced_lagrangian(par, x, qn); }, q);
-        return S(euler_lagrange + par.m() * par.h() / (1 - par.omega2_h2() / 8) * three_term_residual(par, qp, q, qn));
-      });
-  return identity(p, "The discrete Euler-Lagrange equation equals -(m h/(1 - omega^2 h^2/8)) times (schema-ordre-3): the same "
-                     "scheme for omega h != 2 sqrt(2).");
-}
-
 /// T_h(q_j)/q_j for m = ω = 1 as an exact series in θ, from the core's residual at the exact
 /// solution q(t) = cos t (q_{j±1} = cos θ, q_j = 1); cos through θ^20 makes every coefficient below
 /// θ^18 exact. For any exact solution q_{j+1} + q_{j−1} = 2 cos(θ) q_j, so T_h(q_j) = ω² F(ωh) q_j.
@@ -482,7 +466,6 @@ void add_section5_checks(check_registry& checks) {
   checks.add("gear-partials", check_gear_partials);
   checks.add("internal-second-order", check_internal_second_order);
   checks.add("qm-not-affine", check_qm_not_affine);
-  checks.add("scheme-order3", check_scheme_order3);
   checks.add("scheme-consistency", check_scheme_consistency);
   checks.add("taylor-display", check_taylor_display);
   checks.add("characteristic-equation", check_characteristic_equation);

@@ -28,33 +28,6 @@
 namespace simpson::verify::detail {
 namespace {
 
-claim_result check_momentum_order3(const run_context&) {
-  const proof p = prove_zero_on_grid(std::string(unit_reduction) + "; (moment-ordre-3) - dL_h^r/dq_r by exact differences",
-                                     {"q_l", "q_r"}, 1, [&](const auto& v) {
-                                       using S = std::decay_t<decltype(v[0])>;
-                                       const auto par = theta_oscillator<S>();
-                                       const S ql(v[0]), qr(v[1]);
-                                       return S(simpson_momentum(par, ql, qr) -
-                                                exact_derivative([&](const S& x) { return reduced_lagrangian(par, ql, x); }, qr));
-                                     });
-  return identity(p);
-}
-
-claim_result check_phi3_elimination(const run_context& ctx) {
-  const proof exact = prove_zero_on_grid(
-      std::string(unit_reduction) + "; (Phi3) y minus the state obtained by eliminating q_{j-1}", {"p_j", "q_j"}, 1,
-      [&](const auto& v) {
-        using S = std::decay_t<decltype(v[0])>;
-        const auto par = theta_oscillator<S>();
-        const phase_point<S> y{v[0], v[1]};
-        const phase_point<S> by_formula = simpson_map(par) * y, by_elimination = simpson_step_by_elimination(par, y);
-        return std::vector<S>{by_formula.p - by_elimination.p, by_formula.q - by_elimination.q};
-      });
-  bool within = false;
-  const json numeric = recheck_with(ctx, "phi3-elimination", [](const auto& par, const auto& y) { return elimination_check(par, y); }, within);
-  return identity(exact, within, numeric);
-}
-
 /// Our kernel's route through the same derivation, in θ: L_h (simpson_lagrangian, Simpson's rule on
 /// the quadratic interpolant) at the harmonic q_m is L_hʳ; q_m makes ∂L_h/∂q_m vanish; eliminating
 /// q_{j-1} with p_r and the scheme gives Φ₃.
@@ -359,8 +332,6 @@ claim_result check_hd_proportional(const run_context&) {
 }  // namespace
 
 void add_section6_7_checks(check_registry& checks) {
-  checks.add("momentum-order3", check_momentum_order3);
-  checks.add("phi3-elimination", check_phi3_elimination);
   checks.add("derivation-phi3", check_derivation_phi3);
   checks.add("phi3-explicit", check_phi3_explicit);
   checks.add("gamma-system", check_gamma_system);

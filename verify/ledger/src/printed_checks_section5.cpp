@@ -33,24 +33,6 @@ printed_outcome gear_partials(const paper_reading& r) {
   return o;
 }
 
-/// An equation E = 0 as printed against the derived one: the same when their ratio is free of the unknowns.
-printed_outcome same_equation(const std::string& what, const ex& printed, const ex& derived, const ex& core,
-                              const std::vector<ex>& unknowns) {
-  printed_outcome o;
-  const auto factor = equation_factor(printed, derived, unknowns);
-  o.holds = factor.has_value();
-  o.proved = factor ? "derived " + what + " = (" + text_of(*factor) + ") x printed " + what
-                    : "printed " + what + " is not a multiple of the derived one";
-  if (!o.holds) o.correction = "as derived: " + text_of(derived) + " = 0";
-  if (factor) o.goals.push_back(decided("printed", derived, *factor * printed));
-  const auto core_factor = equation_factor(core, derived, unknowns);
-  o.derived_holds = core_factor.has_value();
-  if (core_factor) o.goals.push_back(decided("core", derived, *core_factor * core));
-  o.derived = core_factor ? "derived " + what + " = (" + text_of(*core_factor) + ") x core " + what
-                          : "the core's " + what + " is not a multiple of the derived one";
-  return o;
-}
-
 /// (equation-milieu-intervalle) on a smooth q(t) at t - h/2, t, t + h/2, V uninterpreted: its leading
 /// term is (oscillateur-nonlineaire).
 printed_outcome internal_equation_second_order(const paper_reading& r) {
@@ -69,12 +51,6 @@ printed_outcome scheme_consistency(const paper_reading& r) {
                           .subs(apply_function("q", {d.t}) == sym("q"));
   return consistent_with("(schema-ordre-3)", printed_side(r, "schema-ordre-3"),
                          three_term_residual(parameters(d), d.q_prev, d.q_j, d.q_next), equation, states, d.h);
-}
-
-printed_outcome scheme_order_3(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
-  return same_equation("scheme (schema-ordre-3)", printed_side(r, "schema-ordre-3"), d.scheme(d.q_prev, d.q_j, d.q_next),
-                       three_term_residual(parameters(d), d.q_prev, d.q_j, d.q_next), {d.q_prev, d.q_j, d.q_next});
 }
 
 
@@ -189,7 +165,6 @@ void add_printed_checks_section5(check_registry& checks) {
   checks.add_printed("gear-partials", {"dg_l/dq_m", "dg_m/dq_m", "dg_r/dq_m"}, gear_partials);
   checks.add_printed("internal-second-order", {"equation-milieu-intervalle", "oscillateur-nonlineaire"}, internal_equation_second_order);
   checks.add_printed("scheme-consistency", {"schema-ordre-3", "harmonic equation"}, scheme_consistency);
-  checks.add_printed("scheme-order3", {"schema-ordre-3"}, scheme_order_3);
   checks.add_printed("taylor-display", {"Taylor q_{j+1}", "Taylor q_{j-1}"}, taylor_display);
   checks.add_printed("characteristic-equation", {"a", "b", "schema-ordre-3"}, characteristic_equation);
   checks.add_printed("discriminant-factorization", {"discriminant-factorized", "a", "b"}, discriminant_factorization);

@@ -18,16 +18,6 @@ bool is_square(const ex& e, unsigned n) {
   return GiNaC::is_a<GiNaC::matrix>(e) && GiNaC::ex_to<GiNaC::matrix>(e).rows() == n && GiNaC::ex_to<GiNaC::matrix>(e).cols() == n;
 }
 
-printed_outcome momentum_order_3(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
-  return compare("p_r", printed_side(r, "moment-ordre-3"), d.momentum, simpson_momentum(parameters(d), d.q_l, d.q_r));
-}
-
-printed_outcome phi3_elimination(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
-  return compare("Phi_3", printed_side(r, "Phi3"), d.phi3, as_matrix(simpson_map(parameters(d))));
-}
-
 
 /// H(Φ y) − H(y), normalised.
 ex change_under(const ex& H, const ex& phi, const ex& p, const ex& q) { return GiNaC::normal(after_step(H, phi, p, q) - H); }
@@ -208,8 +198,6 @@ printed_outcome derivation_phi3(const paper_reading& r) {
 }  // namespace
 
 void add_printed_checks_section6_7(check_registry& checks) {
-  checks.add_printed("momentum-order3", {"moment-ordre-3"}, momentum_order_3);
-  checks.add_printed("phi3-elimination", {"Phi3"}, phi3_elimination);
   checks.add_printed("derivation-phi3", {"Phi3"}, derivation_phi3);
   checks.add_printed("gamma-system", {"Gamma"}, gamma_system);
   checks.add_printed("gamma-determinant", {"det Gamma"}, gamma_determinant);

@@ -104,7 +104,8 @@ const std::map<std::string, proof_shape>& proof_shapes() {
                      {"lagrangian", argument_kind::formula, true, "the discrete Lagrangian L(q_0, q_1), quadratic"},
                      {"nodes", argument_kind::symbols, true, "its end nodes q_0, q_1", 2},
                      {"momenta", argument_kind::symbols, true, "the momenta p_0, p_1", 2},
-                     {"internal", argument_kind::symbols, false, "its internal nodes, eliminated by their equations"}}),
+                     {"internal", argument_kind::symbols, false, "its internal nodes, eliminated by their equations"},
+                     {"order", argument_kind::word, false, "the printed map's state order: 'q p' (the default) or 'p q'", 0, "", false, {"q p", "p q"}}}),
          discrete_map_shape});
     add({"truncation", "the scheme on the exact solution of q'' = -omega^2 q is the printed series, to its printed order", "printed",
          with_where(with_series({{"printed", argument_kind::formula, true, "the printed truncation error, with its order term O(h^N)"}})),

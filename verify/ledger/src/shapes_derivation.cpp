@@ -64,7 +64,8 @@ claim_result stationary_shape(const shape_call& call, const run_context& ctx) {
 
 /// The one-step map of a discrete Lagrangian L(q_0, q_1) of a linear system, derived: each internal
 /// node eliminated by its equation D_{q_m} L = 0, then p_0 = −D_1 L solved for q_1 and p_1 = D_2 L,
-/// as a matrix in (q_0, p_0); compared with the printed map in both kernels.
+/// as a matrix in (q_0, p_0), or in (p_0, q_0) when the record's `order` says "p q"; compared with
+/// the printed map in both kernels.
 claim_result discrete_map_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const GiNaC::matrix printed = as_square_matrix(read.formula("map"), reference_of(call, "map"));
@@ -133,7 +134,11 @@ claim_result discrete_map_shape(const shape_call& call, const run_context& ctx) 
       }
     }
   }
-  const std::string what = fmt::format("({}) is the one-step map of ({})", reference_of(call, "map"), reference_of(call, "lagrangian"));
+  // The printed map's state order: (q, p) as derived, or (p, q) (rows and columns swapped).
+  const bool momentum_first = read.has("order") && call.with.at("order").values.front() == "p q";
+  if (momentum_first) derived = GiNaC::matrix{{derived(1, 1), derived(1, 0)}, {derived(0, 1), derived(0, 0)}};
+  const std::string what = fmt::format("({}) is the one-step map of ({}), in ({})", reference_of(call, "map"), reference_of(call, "lagrangian"),
+                                       momentum_first ? "p, q" : "q, p");
   claim_result result = identity_verdict(call, read, "one_step_map", what, ex(printed), ex(derived),
                                          fmt::format("as derived from ({}): ({}) = {}", reference_of(call, "lagrangian"), reference_of(call, "map"),
                                                      text_of(ex(derived))));

@@ -13,27 +13,14 @@ Ltac nonzero :=
           end
         | apply pow_nonzero; nonzero ].
 
-Lemma momentum_order_3_printed :
+Lemma momentum_order_3_derivative :
   forall h m omega q_l q_r : R,
   0 < m ->
   0 < h ->
   (((-1) * (h ^ 2) * (omega ^ 2)) + 8) <> 0 ->
   h <> 0 ->
-  (((((-1) * q_l) + q_r) * (/ h) * m) + ((1/6) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)) * (h ^ 3) * (omega ^ 4) * m * q_r) + ((4/3) * (((-1) * q_l) + ((-2) * q_r)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)) * (omega ^ 2) * h * m))
-  = ((-1/6) * (((-1) * (h ^ 4) * (omega ^ 4) * m * q_r) + ((-48) * m * q_r) + (2 * (h ^ 2) * (omega ^ 2) * m * q_l) + (22 * (h ^ 2) * (omega ^ 2) * m * q_r) + (48 * m * q_l)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)) * (/ h)).
-Proof.
-  intros.
-  field; repeat split; nonzero.
-Qed.
-
-Lemma momentum_order_3_core :
-  forall h m omega q_l q_r : R,
-  0 < m ->
-  0 < h ->
-  (((-1) * (h ^ 2) * (omega ^ 2)) + 8) <> 0 ->
-  h <> 0 ->
-  (((((-1) * q_l) + q_r) * (/ h) * m) + ((1/6) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)) * (h ^ 3) * (omega ^ 4) * m * q_r) + ((4/3) * (((-1) * q_l) + ((-2) * q_r)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)) * (omega ^ 2) * h * m))
-  = ((-1/6) * (((-1) * (h ^ 4) * (omega ^ 4) * m * q_r) + ((-48) * m * q_r) + (2 * (h ^ 2) * (omega ^ 2) * m * q_l) + (22 * (h ^ 2) * (omega ^ 2) * m * q_r) + (48 * m * q_l)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)) * (/ h)).
+  ((-1/6) * (((((((-1) * (h ^ 2) * (omega ^ 2)) + 22) * q_r) + (2 * q_l)) * (omega ^ 2) * h * m) + ((-48) * (((-1) * q_l) + q_r) * (/ h) * m)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)))
+  = (((((-1) * q_l) + q_r) * (/ h) * m) + ((1/6) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)) * (h ^ 3) * (omega ^ 4) * m * q_r) + ((4/3) * (((-1) * q_l) + ((-2) * q_r)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)) * (omega ^ 2) * h * m)).
 Proof.
   intros.
   field; repeat split; nonzero.

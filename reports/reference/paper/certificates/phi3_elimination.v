@@ -12,9 +12,9 @@ Ltac nonzero :=
           | [ H : 0 < ?Y |- ?X <> 0 ] => replace X with Y by ring; apply Rgt_not_eq; exact H
           end
         | apply pow_nonzero; nonzero ].
-(* Not stated: phi3_elimination_printed_11, phi3_elimination_printed_22, phi3_elimination_core_11, phi3_elimination_core_22, whose two sides GiNaC evaluates to one expression (X = X checks nothing). *)
+(* Not stated: phi3_elimination_one_step_map_11, phi3_elimination_one_step_map_22, whose two sides GiNaC evaluates to one expression (X = X checks nothing). *)
 
-Lemma phi3_elimination_printed_12 :
+Lemma phi3_elimination_one_step_map_12 :
   forall h m omega : R,
   0 < m ->
   0 < h ->
@@ -26,39 +26,15 @@ Proof.
   field; repeat split; nonzero.
 Qed.
 
-Lemma phi3_elimination_printed_21 :
+Lemma phi3_elimination_one_step_map_21 :
   forall h m omega : R,
   0 < m ->
   0 < h ->
+  (((-1) * (h ^ 2) * (omega ^ 2) * m) + ((-24) * m)) <> 0 ->
   (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) <> 0 ->
   m <> 0 ->
   ((-3) * (((-1) * (h ^ 2) * (omega ^ 2)) + 8) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24))) * (/ m) * h)
-  = ((-3) * (((-1) * (h ^ 3) * (omega ^ 2)) + (8 * h)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24))) * (/ m)).
-Proof.
-  intros.
-  field; repeat split; nonzero.
-Qed.
-
-Lemma phi3_elimination_core_12 :
-  forall h m omega : R,
-  0 < m ->
-  0 < h ->
-  (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) <> 0 ->
-  ((1/12) * (((-1) * (h ^ 2) * (omega ^ 2)) + 12) * (((-1) * (h ^ 2) * (omega ^ 2)) + 24) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24))) * (omega ^ 2) * h * m)
-  = ((-1/12) * (((-1) * (h ^ 5) * (omega ^ 6) * m) + ((-288) * (omega ^ 2) * h * m) + (36 * (h ^ 3) * (omega ^ 4) * m)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)))).
-Proof.
-  intros.
-  field; repeat split; nonzero.
-Qed.
-
-Lemma phi3_elimination_core_21 :
-  forall h m omega : R,
-  0 < m ->
-  0 < h ->
-  (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) <> 0 ->
-  m <> 0 ->
-  ((-3) * (((-1) * (h ^ 2) * (omega ^ 2)) + 8) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24))) * (/ m) * h)
-  = ((-3) * (((-1) * (h ^ 3) * (omega ^ 2)) + (8 * h)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24))) * (/ m)).
+  = ((-3) * (((-1) * (h ^ 3) * (omega ^ 2)) + (8 * h)) * (/ (((-1) * (h ^ 2) * (omega ^ 2) * m) + ((-24) * m)))).
 Proof.
   intros.
   field; repeat split; nonzero.
