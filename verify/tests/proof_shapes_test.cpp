@@ -508,6 +508,20 @@ TEST(ShapeRecords, BadRecordsAreNamedWithTheirLineAndArgument) {
   EXPECT_NE(error_of("sign-on-interval", R"({ expression = "inline:Coefficient", variable = '$\omega h$', condition = "inline:positive on", sign = "positve" })")
                 .find("field 'with.sign': 'positve' is not one of: positive, negative"),
             std::string::npos);
+  // A map or a scheme, not both, not neither; a scheme's sequence only with it.
+  EXPECT_NE(error_of("stability-interval", R"({ map = "map", scheme = "sv:lhs", sequence = ['q_{j-1}', 'q_j', 'q_{j+1}'], variable = '$\omega h$', condition = "inline:Stable for" })")
+                .find("give 'scheme' or 'map', not both"),
+            std::string::npos);
+  EXPECT_NE(error_of("stability-interval", R"({ variable = '$\omega h$', condition = "inline:Stable for" })").find("field 'with.map': missing"),
+            std::string::npos);
+  EXPECT_NE(error_of("stability-interval", R"({ scheme = "sv:lhs", variable = '$\omega h$', condition = "inline:Stable for" })")
+                .find("field 'with.sequence': missing"),
+            std::string::npos);
+  EXPECT_NE(error_of("discrete-map", R"({ map = "map", lagrangian = "ld", nodes = ['q_0', 'q_1'], momenta = ['p_0', 'p_1'], order = "pq" })")
+                .find("field 'with.order': 'pq' is not one of: q p, p q"),
+            std::string::npos);
+  EXPECT_NE(error_of("derivative", R"({ function = "energy", variable = ['q', 'p'], printed = "one" })").find("field 'with.variable': 2 symbols, not 1"),
+            std::string::npos);
   const std::string both = error_of("identity", R"({ lhs = "sum", rhs = "expanded" })", "check = \"x\"\n");
   EXPECT_NE(both.find("line"), std::string::npos) << both;
 }
