@@ -3,6 +3,8 @@
 #include "kernel_zero.hpp"
 
 #include <simpson/verify/exact_proof.hpp>
+#include <simpson/verify/formula_reference.hpp>
+#include <simpson/verify/tex_math.hpp>
 
 #include <fmt/format.h>
 
@@ -231,35 +233,49 @@ entry_decision decide_entry(const GiNaC::ex& e, std::size_t most_points) {
 }
 
 
-/// The functions of one argument `e` applies (V(x), and V'(x) as V), Order(h^k) aside.
+/// The uninterpreted functions of one argument `e` applies (V(x), and V'(x) as V): those the TeX
+/// reader makes (function_names), not GiNaC's own (sin, exp, Order), which stay outside the kernel.
 std::set<std::string> applied_functions(const GiNaC::ex& e) {
+  const std::vector<std::string>& uninterpreted = function_names();
   std::set<std::string> names;
   for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
-    if (GiNaC::is_a<GiNaC::function>(*it) && it->nops() == 1 && GiNaC::ex_to<GiNaC::function>(*it).get_name() != "Order") {
-      names.insert(GiNaC::ex_to<GiNaC::function>(*it).get_name());
-    }
+    if (!GiNaC::is_a<GiNaC::function>(*it) || it->nops() != 1) continue;
+    const std::string name = GiNaC::ex_to<GiNaC::function>(*it).get_name();
+    if (std::find(uninterpreted.begin(), uninterpreted.end(), name) != uninterpreted.end()) names.insert(name);
   }
   return names;
 }
 
-/// Each application of the function `name` (or a derivative of it) at a replaced by `scale` times
-/// itself, or, without a scale, by the monomial a^power (its derivative).
-struct function_replaced : GiNaC::map_function {
+/// Whether an application of `name` holds another in its argument (V(V(x)): not linear in V).
+bool nested(const GiNaC::ex& e, const std::string& name) {
+  for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (GiNaC::is_a<GiNaC::function>(*it) && GiNaC::ex_to<GiNaC::function>(*it).get_name() == name && it->nops() == 1 &&
+        !applied_functions(it->op(0)).empty()) {
+      return true;
+    }
+  }
+  return false;
+}
+
+/// Each application of the function `name` (or a derivative of it) times `scale`: linear in the
+/// function when the result is of degree 1 in the scale.
+struct function_scaled : GiNaC::map_function {
   std::string name;
-  int power = 0;
-  GiNaC::ex scale{};
-  function_replaced(std::string n, int p, GiNaC::ex s = GiNaC::ex()) : name(std::move(n)), power(p), scale(std::move(s)) {}
+  GiNaC::ex scale;
+  function_scaled(std::string n, GiNaC::ex s) : name(std::move(n)), scale(std::move(s)) {}
   GiNaC::ex operator()(const GiNaC::ex& e) override {
-    if (!GiNaC::is_a<GiNaC::function>(e) || e.nops() != 1 || GiNaC::ex_to<GiNaC::function>(e).get_name() != name) return e.map(*this);
-    if (!scale.is_zero()) return scale * e;
-    const GiNaC::ex at = (*this)(e.op(0));
-    const long order = GiNaC::is_a<GiNaC::fderivative>(e) ? static_cast<long>(GiNaC::ex_to<GiNaC::fderivative>(e).derivatives().size()) : 0;
-    if (order > power) return 0;
-    long factor = 1;
-    for (long k = 0; k < order; ++k) factor *= power - k;
-    return power == order ? GiNaC::ex(factor) : factor * GiNaC::pow(at, power - order);  // no 0^0 at a = 0
+    if (GiNaC::is_a<GiNaC::function>(e) && e.nops() == 1 && GiNaC::ex_to<GiNaC::function>(e).get_name() == name) return scale * e;
+    return e.map(*this);
   }
 };
+
+/// e with the function `name` defined as the monomial x^power (its derivatives at each argument
+/// too): the paper layer's definitions, as a document's `V(q) = ...` is put in.
+GiNaC::ex with_monomial(const GiNaC::ex& e, const std::string& name, int power) {
+  const GiNaC::symbol x("monomial_variable");
+  definition monomial{GiNaC::symbol(name), GiNaC::pow(x, power), "V(x) = x^k", 0, "", name, x};
+  return with_definitions(e, {monomial});
+}
 
 kernel_decision decide_entries(const GiNaC::ex& e, std::size_t most_points);
 
@@ -278,13 +294,14 @@ kernel_decision kernel_decides_zero(const GiNaC::ex& given, std::size_t most_poi
     // `potential_degree` when it is zero for each monomial V(x) = x^k up to it.
     const std::string& name = *functions.begin();
     const GiNaC::symbol lambda("kernel_lambda");
-    const GiNaC::ex scaled = function_replaced(name, 0, lambda)(e);
-    if (bound_in(scaled, lambda.get_name()).numerator > 1 || bound_in(scaled, lambda.get_name()).denominator_degree() > 0) {
+    const GiNaC::ex scaled = function_scaled(name, lambda)(e);
+    const degree_bound in_lambda = bound_in(scaled, lambda.get_name());
+    if (nested(e, name) || in_lambda.numerator > 1 || in_lambda.denominator_degree() > 0) {
       return {kernel_decision::result::not_applicable, "not linear in " + name + ": our kernel decides identities linear in an uninterpreted function"};
     }
     std::string last;
     for (int k = 0; k <= potential_degree; ++k) {
-      const kernel_decision d = decide_entries(function_replaced(name, k)(e), most_points);
+      const kernel_decision d = decide_entries(with_monomial(e, name, k), most_points);
       if (d.outcome != kernel_decision::result::zero) return {d.outcome, fmt::format("for {}(x) = x^{}: {}", name, k, d.evidence)};
       last = d.evidence;
     }
