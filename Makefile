@@ -77,6 +77,10 @@ sanitize-build: deps
 #   - ReferenceReport.PaperSceneReproducesTheCommittedReport: the full paper scene (10^7 steps of
 #     long_time) compared with the committed report; its claims run in Ledger/ClaimVerdict and its
 #     sections, at a small size, in the quick scene (cli.exit_codes, report.*).
+#   - report.schema and report.reproducible: the quick scene again (four runs of it in
+#     report.reproducible, 46 s under ASan), to check properties of the files it writes (their schema,
+#     the same bytes for the same seed). Its code runs under the sanitizers in cli.exit_codes' quick
+#     scene; the two properties are checked in the Release suite.
 #   - PaperReading.AChangedCoefficientInTheTextChangesTheVerdict: the paper's claims again, on 21
 #     altered copies; the reading of an altered copy and the verdicts that differ (errata, failures)
 #     run in the cases kept: the altered papers of cli.exit_codes, the errata of the paper itself in
@@ -86,7 +90,7 @@ sanitize-build: deps
 # interrupts the process group at each kind of moment once (cli_test.sh interruption-reduced);
 # ConventionSearch.RandomHiddenConventionsOverTheWholeFamilyAreAllRecovered draws 2 hidden conventions
 # instead of 20 (SIMPSON_SANITIZED: each search is the same code, several seconds at -O0 under ASan).
-SANITIZE_SKIP = ReferenceReport\.PaperSceneReproducesTheCommittedReport|PaperReading\.AChangedCoefficientInTheTextChangesTheVerdict|Gappa\.TheBoundsCoqProofIsCheckedByCoqc|GappaGlobal\.TheLiftingLemmaIsCheckedByCoqc|CoqBatch\.OneProcess
+SANITIZE_SKIP = report\.schema|report\.reproducible|ReferenceReport\.PaperSceneReproducesTheCommittedReport|PaperReading\.AChangedCoefficientInTheTextChangesTheVerdict|Gappa\.TheBoundsCoqProofIsCheckedByCoqc|GappaGlobal\.TheLiftingLemmaIsCheckedByCoqc|CoqBatch\.OneProcess
 sanitize: sanitize-build
 	cd $(SANITIZE_BUILD) && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
 	  LSAN_OPTIONS=suppressions=$(CURDIR)/scripts/lsan.supp:print_suppressions=0 \
