@@ -81,16 +81,18 @@ sanitize-build: deps
 #     report.reproducible, 46 s under ASan), to check properties of the files it writes (their schema,
 #     the same bytes for the same seed). Its code runs under the sanitizers in cli.exit_codes' quick
 #     scene; the two properties are checked in the Release suite.
+#   - PaperReading.EveryFormulaOfTheEmbeddedPaperParsesAndKeepsItsVerdict: every claim of the paper
+#     again (37 s under ASan), each of which runs in Ledger/ClaimVerdict.IsAsExpected/*, one test per claim.
 #   - PaperReading.AChangedCoefficientInTheTextChangesTheVerdict: the paper's claims again, on 21
 #     altered copies; the reading of an altered copy and the verdicts that differ (errata, failures)
 #     run in the cases kept: the altered papers of cli.exit_codes, the errata of the paper itself in
 #     PaperReading.EveryFormula*, each shape's breaking input in ShapesOnADocument.*.
-# Reduced: cli.beyond_scene runs the beyond scene's claims with 4 samples and its nonlinear section
+# Reduced: cli.exit_codes runs the family scene to s = 2 (cli_test.sh main-reduced); cli.beyond_scene runs the beyond scene's claims with 4 samples and its nonlinear section
 # at a small size (every problem and table; cli_test.sh beyond-scene-reduced); cli.interruption
 # interrupts the process group at each kind of moment once (cli_test.sh interruption-reduced);
 # ConventionSearch.RandomHiddenConventionsOverTheWholeFamilyAreAllRecovered draws 2 hidden conventions
 # instead of 20 (SIMPSON_SANITIZED: each search is the same code, several seconds at -O0 under ASan).
-SANITIZE_SKIP = report\.schema|report\.reproducible|ReferenceReport\.PaperSceneReproducesTheCommittedReport|PaperReading\.AChangedCoefficientInTheTextChangesTheVerdict|Gappa\.TheBoundsCoqProofIsCheckedByCoqc|GappaGlobal\.TheLiftingLemmaIsCheckedByCoqc|CoqBatch\.OneProcess
+SANITIZE_SKIP = report\.schema|report\.reproducible|PaperReading\.EveryFormulaOfTheEmbeddedPaperParsesAndKeepsItsVerdict|ReferenceReport\.PaperSceneReproducesTheCommittedReport|PaperReading\.AChangedCoefficientInTheTextChangesTheVerdict|Gappa\.TheBoundsCoqProofIsCheckedByCoqc|GappaGlobal\.TheLiftingLemmaIsCheckedByCoqc|CoqBatch\.OneProcess
 sanitize: sanitize-build
 	cd $(SANITIZE_BUILD) && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
 	  LSAN_OPTIONS=suppressions=$(CURDIR)/scripts/lsan.supp:print_suppressions=0 \

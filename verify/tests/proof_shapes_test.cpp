@@ -205,6 +205,13 @@ Stable for $0 < \om h < 2$. Also stable for $0 < \om h < 2 \sqrt{2}$. And for $0
 This scheme is of fourth order. The same scheme is of second order.
 Coefficient $1 - \frac{\om^2 h^2}{4}$ positive on $0 < \om h < 2$, but not on the wide $0 < \om h < 3$.
 That map is symplectic indeed. This map is not symplectic, some say. Another map is wonderful here.
+Its roots solve $r^2 - (2 - \om^2 h^2) r + c = 0$. Misprinted, $r^2 - (2 + \om^2 h^2) r + c = 0$. With the constant, $r^2 - (2 - \om^2 h^2) r + 2 = 0$.
+\begin{equation}\label{disc} P = \frac{\om^2 h^2}{36} (\om^2 h^2 - 4) (\om^2 h^2 - 9) \end{equation}
+\begin{equation}\label{disc2} Q = (\om^2 h^2 - 4) (\om^2 h^2 - 9) \end{equation}
+First, on $0 < \om h < 2$ all the factors of $P$ are negative and $P > 0$.
+Then, on $0 < \om h < 2$ all the factors of $Q$ are negative and $Q > 0$.
+Wide, on $0 < \om h < 3$ all the factors of $Q$ are negative and $Q > 0$.
+Last, on $0 < \om h < 2$ all the factors of $P$ are positive and $P > 0$.
 )";
 
 const std::string declarations = R"(
@@ -212,7 +219,7 @@ const std::string declarations = R"(
 title = "Shapes under test"
 [symbols]
 positive = ['m', '\omega', 'h']
-real = ['q', 'p', 'q_0', 'q_1', 'q_m', 'p_0', 'p_1', 'q_{j-1}', 'q_j', 'q_{j+1}', 'a', 'b', 'k', 'x']
+real = ['q', 'p', 'q_0', 'q_1', 'q_m', 'p_0', 'p_1', 'q_{j-1}', 'q_j', 'q_{j+1}', 'a', 'b', 'k', 'x', 'r', 'c']
 )";
 
 std::string record(const std::string& id, const std::string& shape, const std::string& with) {
@@ -463,6 +470,54 @@ TEST_F(ShapesOnADocument, SignOnInterval) {
   EXPECT_EQ(run("sign-on-interval", "{ " + args + R"(, condition = "inline:positive on", sign = "negative" })").outcome, verdict::erratum);
 }
 
+// The characteristic polynomial of (sv), r^2 - (2 - omega^2 h^2) r + 1 times 1/h^2: the printed one
+// with c unprinted holds, and c = 1 is solved for. A misprinted middle coefficient is an erratum (a
+// check of the leading coefficient alone, or one that solved every coefficient, would pass it), and
+// so is a printed c that is not 1.
+TEST_F(ShapesOnADocument, Characteristic) {
+  const std::string scheme = R"(scheme = "sv:lhs", sequence = ['q_{j-1}', 'q_j', 'q_{j+1}'], root = ['r'])";
+  const claim_result holds = run("characteristic", "{ " + scheme + R"(, printed = "inline:Its roots solve:lhs", unprinted = ['c'] })");
+  EXPECT_EQ(holds.outcome, verdict::holds) << holds.note << holds.evidence.dump();
+  EXPECT_EQ(holds.note, "Not printed, solved from the scheme: c = 1, the printed r^2 coefficient.");
+  EXPECT_NE(holds.evidence["exact"]["own"].get<std::string>().find("holds"), std::string::npos) << holds.evidence.dump();
+  EXPECT_FALSE(holds.certificate.empty());
+  const claim_result misprinted = run("characteristic", "{ " + scheme + R"(, printed = "inline:Misprinted:lhs", unprinted = ['c'] })");
+  EXPECT_EQ(misprinted.outcome, verdict::erratum);
+  EXPECT_EQ(misprinted.correction, "as derived from (sv:lhs), scaled to the printed r^2 coefficient: (1) r^2 + (h^2*omega^2-2) r + (1)");
+  EXPECT_EQ(run("characteristic", "{ " + scheme + R"(, printed = "inline:With the constant:lhs" })").outcome, verdict::erratum);
+  // c named unprinted but printed as a number: not one whole coefficient of the polynomial.
+  const claim_result no_hole = run("characteristic", "{ " + scheme + R"(, printed = "inline:With the constant:lhs", unprinted = ['c'] })");
+  EXPECT_EQ(no_hole.outcome, verdict::fails);
+  EXPECT_NE(no_hole.note.find("The unprinted c is not one whole coefficient"), std::string::npos) << no_hole.note;
+  // Not a three-term scheme in the sequence given.
+  EXPECT_EQ(run("characteristic", R"({ scheme = "sv:lhs", sequence = ['q_0', 'q_j', 'q_1'], root = ['r'], printed = "inline:Its roots solve:lhs", unprinted = ['c'] })").outcome,
+            verdict::fails);
+}
+
+// The signs of a printed product's factors on a printed interval, against a sentence. Q's two factors
+// are negative on (0, 2) and Q > 0: holds. P's prefactor omega^2 h^2/36 is positive: "all the
+// factors are negative" is then a wording erratum, the product's sign being right. On (0, 3) a factor
+// changes sign at omega h = 2: a check at a point inside (omega h = 1.5) would pass it.
+TEST_F(ShapesOnADocument, FactorSigns) {
+  const auto with = [](const std::string& expression, const std::string& condition, const std::string& sentence) {
+    return "{ expression = \"" + expression + "\", condition = \"inline:" + condition + "\", variable = '$\\omega h$', sentence = '" + sentence + "' }";
+  };
+  const claim_result holds = run("factor-signs", with("disc2", "Then, on", "Then, on $0 < \\om h < 2$ all the factors of $Q$ are {sign} and $Q {relation}$."));
+  EXPECT_EQ(holds.outcome, verdict::holds) << holds.note << holds.evidence.dump();
+  ASSERT_EQ(holds.certificate_lemmas.size(), 2u) << holds.certificate_missing;
+  const claim_result wording = run("factor-signs", with("disc", "First, on", "First, on $0 < \\om h < 2$ all the factors of $P$ are {sign} and $P {relation}$."));
+  EXPECT_EQ(wording.outcome, verdict::erratum);
+  EXPECT_EQ(wording.note.rfind("Wording:", 0), 0u) << wording.note;
+  EXPECT_EQ(wording.correction, "As proved: on 0 < h*omega < 2: (h^2*omega^2)/(36) positive, h^2*omega^2-4 negative, h^2*omega^2-9 negative; the product is positive");
+  ASSERT_EQ(wording.certificate_lemmas.size(), 3u) << wording.certificate_missing;
+  const claim_result positive = run("factor-signs", with("disc", "Last, on", "Last, on $0 < \\om h < 2$ all the factors of $P$ are {sign} and $P {relation}$."));
+  EXPECT_EQ(positive.outcome, verdict::erratum);
+  EXPECT_EQ(positive.note.find("Wording:"), std::string::npos) << positive.note;
+  const claim_result wide = run("factor-signs", with("disc2", "Wide, on", "Wide, on $0 < \\om h < 3$ all the factors of $Q$ are {sign} and $Q {relation}$."));
+  EXPECT_EQ(wide.outcome, verdict::erratum);
+  EXPECT_NE(wide.correction.find("h^2*omega^2-4 of no one sign"), std::string::npos) << wide.correction;
+}
+
 /// The error a record gives at reading (or at reading its formulas), or "".
 std::string error_of(const std::string& shape, const std::string& with, const std::string& extra = "") {
   try {
@@ -525,6 +580,12 @@ TEST(ShapeRecords, BadRecordsAreNamedWithTheirLineAndArgument) {
                 .find("field 'with.order': 'pq' is not one of: q p, p q"),
             std::string::npos);
   EXPECT_NE(error_of("derivative", R"({ function = "energy", variable = ['q', 'p'], printed = "one" })").find("field 'with.variable': 2 symbols, not 1"),
+            std::string::npos);
+  EXPECT_NE(error_of("factor-signs", R"({ expression = "disc", condition = "inline:First, on", variable = '$\omega h$', sentence = 'all the factors are negative' })")
+                .find("field 'with.sentence': the sentence's pattern has no hole {sign}"),
+            std::string::npos);
+  EXPECT_NE(error_of("characteristic", R"({ scheme = "sv:lhs", sequence = ['q_{j-1}', 'q_j'], root = ['r'], printed = "inline:Its roots solve:lhs" })")
+                .find("field 'with.sequence': 2 symbols, not 3"),
             std::string::npos);
   const std::string both = error_of("identity", R"({ lhs = "sum", rhs = "expanded" })", "check = \"x\"\n");
   EXPECT_NE(both.find("line"), std::string::npos) << both;

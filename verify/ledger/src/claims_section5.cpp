@@ -3,7 +3,7 @@
 
 #include "claim_support.hpp"
 #include "claims_section5.hpp"
-#include "printed_factor_signs.hpp"
+#include "printed_stability_band.hpp"
 
 #include <simpson/verify/quoted_words.hpp>
 #include <simpson/verify/stability_analysis.hpp>
@@ -192,28 +192,6 @@ claim_result check_taylor_display(const run_context&) {
                  "the correct sixth derivative.");
 }
 
-claim_result check_characteristic_equation(const run_context&) {
-  // (schema-ordre-3) times h^2 at (1, r, r^2) against a r^2 + b r + c of the core, for r = 0, 1, -1, 2
-  // (a quadratic in r is fixed by three values; the fourth is a check), and c = a.
-  const auto par = unit_oscillator_in_theta();
-  const characteristic_coefficients<symbolic> k = characteristic_polynomial(par.omega2_h2());
-  std::vector<symbolic> gaps;
-  for (const int r : {0, 1, -1, 2}) {
-    const symbolic rr(r);
-    gaps.push_back(par.h() * par.h() * three_term_residual(par, symbolic(1), rr, rr * rr) - (k.a * rr * rr + k.b * rr + k.c));
-  }
-  gaps.push_back(k.a - 1 - par.omega2_h2() / 24);
-  gaps.push_back(k.c - k.a);
-  symbolic worst(0);
-  for (const symbolic& g : gaps) {
-    if (!g.is_zero()) worst = g;
-  }
-  return identity(prove_zero(std::string(unit_reduction) +
-                                 "; h^2 (schema-ordre-3) at (1, r, r^2) - (a r^2 + b r + c), r = 0, 1, -1, 2; a - 1 - x/24; c - a",
-                             worst),
-                  "c = 1 + omega^2 h^2/24 = a is not printed; it is the coefficient of q_{j-1}.");
-}
-
 /// The root structure of a r² + b r + c with c = a (product of the roots 1) on each region of x:
 /// Δ < 0, two simple roots of modulus 1; Δ = 0, a double root ±1; Δ > 0, real roots ρ and 1/ρ with
 /// ρ > 1 (taking every value near 1 close to the region's ends). Whether a stated modulus criterion
@@ -288,101 +266,6 @@ claim_result check_discriminant_factorization(const run_context& ctx) {
     return discriminant_factorization_check(par.omega2_h2());
   }, within);
   return identity(exact, within, numeric);
-}
-
-/// The sign of p on 0 < x < end, or 0 when it changes sign there: p's factors x stripped, no
-/// root of the rest in (0, end) (Sturm), and its sign at end/2.
-int sign_on_band(polynomial p, const rational& end) {
-  while (degree(p) >= 1 && p[0] == 0) p = boost::math::tools::quotient_remainder(p, make_polynomial({rational(0), rational(1)})).first;
-  if (degree(p) >= 1) {
-    const std::size_t roots = count_real_roots(p, rational(0), end) - (p.evaluate(end) == 0 ? 1 : 0);
-    if (p.evaluate(rational(0)) == 0 || roots != 0) return 0;
-  }
-  const rational middle = p.evaluate(end / 2);
-  return middle > 0 ? 1 : (middle < 0 ? -1 : 0);
-}
-
-std::string sign_word(int sign) { return sign > 0 ? "positive" : sign < 0 ? "negative" : "of no one sign"; }
-
-claim_result check_discriminant_negative(const run_context& ctx) {
-  const quoted_sentence said = quote(ctx, "Under the stability condition (\\ref{stabilite}), all the factors in the expression of the "
-                                          "discriminant are {sign} and $ \\, \\Delta {relation} $.");
-  const int stated_sign = said.choice("sign", {{"negative", "-1"}, {"positive", "1"}}) == "-1" ? -1 : 1;
-  const stated_bound stated_delta = said.bound("relation");
-  if (stated_delta.value != 0 || !stated_delta.rest.empty()) said.unparsed("relation", "a relation to 0");
-  // The band the sentence's "under the stability condition (stabilite)" refers to, as printed.
-  const printed_stability_band band = read_stability_band(paper_of(ctx));
-  const rational band_end = band_end_of(band);
-  // Our kernel: the core's factors (discriminant_factors), as polynomials in x = theta^2.
-  const auto par = unit_oscillator_in_theta();
-  const auto factors = discriminant_factors(par.omega2_h2());
-  json ours = json::array();
-  std::vector<int> own_signs;
-  for (const symbolic& f : factors) {
-    const polynomial numerator = even_in_theta_to_x(f.numerator());
-    const polynomial denominator = even_in_theta_to_x(f.denominator());
-    const int sign = sign_on_band(numerator, band_end) * sign_on_band(denominator, band_end);
-    own_signs.push_back(sign);
-    ours.push_back({{"factor", to_string(f.numerator(), "θ") + " / " + to_string(f.denominator(), "θ")}, {"sign", sign_word(sign)}});
-  }
-  // GiNaC: the factors as the paper prints them.
-  json printed = json::array();
-  std::vector<int> binomial_signs;
-  int delta_sign = 1;
-  for (const printed_factor_sign& f : printed_discriminant_factor_signs(paper_of(ctx), band)) {
-    printed.push_back({{"factor", f.factor}, {"prefactor", f.prefactor}, {"sign", sign_word(f.sign)}, {"proof", f.proof}});
-    if (!f.prefactor) binomial_signs.push_back(f.sign);
-    delta_sign *= f.sign;
-  }
-  // The two kernels on the same statement: the core's factors, ours by Sturm, GiNaC by the substitution.
-  json ginac_core = json::array();
-  bool kernels_agree = true;
-  const std::vector<printed_factor_sign> core_in_ginac = core_discriminant_factor_signs(band);
-  for (std::size_t k = 0; k < core_in_ginac.size(); ++k) {
-    kernels_agree = kernels_agree && k < own_signs.size() && own_signs[k] == core_in_ginac[k].sign;
-    ginac_core.push_back({{"factor", core_in_ginac[k].factor}, {"sign", sign_word(core_in_ginac[k].sign)}, {"proof", core_in_ginac[k].proof}});
-  }
-  kernels_agree = kernels_agree && core_in_ginac.size() == own_signs.size();
-  // "all the factors": the prefactor omega^2 h^2/576 is one of them.
-  int prefactor_sign = 1;
-  for (const printed_factor_sign& f : printed_discriminant_factor_signs(paper_of(ctx), band)) {
-    if (f.prefactor) prefactor_sign = f.sign;
-  }
-  const bool binomials_as_stated = !binomial_signs.empty() &&
-                                   std::all_of(binomial_signs.begin(), binomial_signs.end(), [&](int s) { return s == stated_sign; }) &&
-                                   delta_sign != 0 && stated_delta.admits(delta_sign);
-  const bool words_hold = binomials_as_stated && prefactor_sign == stated_sign;
-  json evidence;
-  evidence["exact"] = {{"method", "exact"},
-                       {"band", band.text()},
-                       {"stated", {{"factors", said.words("sign")}, {"delta", said.words("relation")}}},
-                       {"own_kernel", {{"factors", ours}, {"proof", "Sturm count of the roots in (0, " + band_end.str() + ") and the sign at " +
-                                                                     rational(band_end / 2).str()}}},
-                       {"ginac", {{"core_factors", ginac_core}, {"printed_factors", printed}, {"printed_delta_sign", sign_word(delta_sign)}}}};
-  claim_result r;
-  r.evidence = evidence;
-  if (!kernels_agree) {
-    r.outcome = verdict::kernels_disagree;
-    r.note = "Our kernel's (Sturm) and GiNaC's (substitution) signs of the core's factors differ.";
-    return r;
-  }
-  const std::string proved = "on 0 < omega^2 h^2 < " + band_end.str() + " the binomial factors (omega^2 h^2 - 24), (omega^2 h^2 - 12), "
-                             "(omega^2 h^2 - 8) are each " + sign_word(binomial_signs.empty() ? 0 : binomial_signs.front()) +
-                             ", the prefactor omega^2 h^2/576 is positive, so Delta is " + sign_word(delta_sign);
-  if (words_hold) {
-    r.outcome = verdict::holds;
-    r.note = "Proved in both kernels, each factor's sign on the whole band (no sample): " + proved + ".";
-  } else if (binomials_as_stated) {
-    r.outcome = verdict::erratum;
-    r.correction = "As proved: " + proved;
-    r.note = "Wording: 'all the factors' is false of the prefactor omega^2 h^2/576, which is positive; the intended content (the "
-             "three binomial factors negative, Delta < 0 on the band) is proved in both kernels, each factor's sign on the whole "
-             "band (no sample).";
-  } else {
-    r.outcome = delta_sign == 0 ? verdict::fails : verdict::erratum;
-    r.correction = "As proved: " + proved;
-  }
-  return r;
 }
 
 claim_result check_roots_product(const run_context& ctx) {
@@ -468,10 +351,8 @@ void add_section5_checks(check_registry& checks) {
   checks.add("qm-not-affine", check_qm_not_affine);
   checks.add("scheme-consistency", check_scheme_consistency);
   checks.add("taylor-display", check_taylor_display);
-  checks.add("characteristic-equation", check_characteristic_equation);
   checks.add("root-modulus", check_root_modulus);
   checks.add("discriminant-factorization", check_discriminant_factorization);
-  checks.add("discriminant-negative", check_discriminant_negative);
   checks.add("roots-product", check_roots_product);
 }
 

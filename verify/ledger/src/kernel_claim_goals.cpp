@@ -37,14 +37,6 @@ ex discriminant(const ex& x) {
   return k.b * k.b - 4 * k.a * k.c;
 }
 
-std::vector<proof_goal> discriminant_negative() {
-  const band_point b = at_x(1);  // inside 0 < x < 8
-  const std::vector<ex> band{b.x, 8 - b.x};
-  std::vector<proof_goal> goals{sign_goal("delta", discriminant(b.x), -1, band, b.inside)};
-  for (const int root : {24, 12, 8}) goals.push_back(sign_goal("factor_" + std::to_string(root), b.x - root, -1, band, b.inside));
-  return goals;
-}
-
 /// The corrected criterion's two stable bands: Δ < 0 on 0 < x < 8 and on 12 < x < 24, where the
 /// roots are complex conjugate (and of product 1: modulus 1).
 std::vector<proof_goal> root_modulus_bands() {
@@ -125,7 +117,6 @@ proof_goal sign_goal(const std::string& name, const ex& lhs, int sign, std::vect
 }
 
 void add_kernel_claim_goals(check_registry& checks) {
-  checks.add_coq_goals("discriminant-negative", discriminant_negative);
   checks.add_coq_goals("root-modulus", root_modulus_bands);
   checks.add_coq_goals("phi3-explicit", phi3_explicit);
   checks.add_coq_goals("phi3-shear-factorization", phi3_shear_factorization);

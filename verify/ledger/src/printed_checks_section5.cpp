@@ -103,25 +103,6 @@ ex exact_solution_series(const symbolic_derivation& d, const ex& scheme, int ord
   return GiNaC::expand(GiNaC::series_to_poly(GiNaC::series(on_taylor_solution(d, scheme, order), d.h == 0, order)));
 }
 
-/// a r² + b r + c from h² × the printed scheme at q_{j-1} = 1, q_j = r, q_{j+1} = r²; c = a.
-printed_outcome characteristic_equation(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
-  const ex rr = sym("r");
-  const ex polynomial = GiNaC::expand(d.h * d.h * printed_side(r, "schema-ordre-3").subs(
-                                                      GiNaC::lst{d.q_prev == 1, d.q_j == rr, d.q_next == rr * rr}));
-  const ex a = polynomial.coeff(rr, 2), b = polynomial.coeff(rr, 1), c = polynomial.coeff(rr, 0);
-  const auto k = characteristic_polynomial(ex(d.omega * d.omega * d.h * d.h));
-  printed_outcome o = both(compare("a", printed_side(r, "a"), a, k.a), compare("b", printed_side(r, "b"), b, k.b));
-  // What a certificate states (a, b = derived is one normal form for GiNaC): h² × the scheme on the
-  // geometric sequence 1, r, r², as written, is a r² + b r + a with the printed a and b.
-  add_goal(o, decided("printed_polynomial", d.h * d.h * printed_side(r, "schema-ordre-3").subs(GiNaC::lst{d.q_prev == 1, d.q_j == rr, d.q_next == rr * rr}),
-                      printed_side(r, "a") * rr * rr + printed_side(r, "b") * rr + printed_side(r, "a")), true);
-  const bool symmetric = GiNaC::normal(a - c).is_zero();
-  o.derived += symmetric ? "; c = a" : "; c ≠ a: " + text_of(c);
-  o.derived_holds = o.derived_holds && symmetric;
-  return o;
-}
-
 /// Δ = b² − 4ac with a and b as printed (and c = a), against the printed factorisation.
 printed_outcome discriminant_factorization(const paper_reading& r) {
   const symbolic_derivation& d = derivation();
@@ -166,7 +147,6 @@ void add_printed_checks_section5(check_registry& checks) {
   checks.add_printed("internal-second-order", {"equation-milieu-intervalle", "oscillateur-nonlineaire"}, internal_equation_second_order);
   checks.add_printed("scheme-consistency", {"schema-ordre-3", "harmonic equation"}, scheme_consistency);
   checks.add_printed("taylor-display", {"Taylor q_{j+1}", "Taylor q_{j-1}"}, taylor_display);
-  checks.add_printed("characteristic-equation", {"a", "b", "schema-ordre-3"}, characteristic_equation);
   checks.add_printed("discriminant-factorization", {"discriminant-factorized", "a", "b"}, discriminant_factorization);
 }
 

@@ -39,6 +39,13 @@ std::vector<shape_parameter> with_series(std::vector<shape_parameter> parameters
   return parameters;
 }
 
+/// A sentence's pattern that must hold the hole {name}.
+shape_parameter pattern_with_hole(std::string name, std::string meaning, std::string hole) {
+  shape_parameter p{std::move(name), argument_kind::word, true, std::move(meaning)};
+  p.hole = std::move(hole);
+  return p;
+}
+
 std::vector<shape_parameter> with_where(std::vector<shape_parameter> parameters) {
   parameters.insert(parameters.end(), common_parameters.begin(), common_parameters.end());
   return parameters;
@@ -111,7 +118,7 @@ const std::map<std::string, proof_shape>& proof_shapes() {
          with_where(with_series({{"printed", argument_kind::formula, true, "the printed truncation error, with its order term O(h^N)"}})),
          truncation_shape});
     add({"stated-order", "the order a sentence states ({order} in its pattern) is the scheme's order on q'' = -omega^2 q", "scheme",
-         with_where(with_series({{"sentence", argument_kind::word, true, "the sentence's pattern, with the hole {order}"}})),
+         with_where(with_series({pattern_with_hole("sentence", "the sentence's pattern, with the hole {order}", "order")})),
          stated_order_shape});
     add({"sign-on-interval", "expression has the stated sign on the printed interval 0 < variable < c", "expression",
          with_where({{"expression", argument_kind::formula, true, "a function of the variable alone once scaled"},
@@ -119,6 +126,22 @@ const std::map<std::string, proof_shape>& proof_shapes() {
                      {"condition", argument_kind::condition, true, "the printed interval 0 < variable < c"},
                      {"sign", argument_kind::word, true, "positive or negative", 0, "", false, {"positive", "negative"}}}),
          sign_on_interval_shape});
+    add({"factor-signs", "each factor of the printed product, and the product, have the signs a sentence states on the printed interval 0 < variable < c",
+         "expression",
+         with_where({{"expression", argument_kind::formula, true, "the printed product: its sums are its factors, the rest one prefactor"},
+                     {"variable", argument_kind::formula, true, "the variable of the condition, a product of positive symbols", 0, "", true},
+                     {"condition", argument_kind::condition, true, "the printed interval 0 < variable < c"},
+                     pattern_with_hole("sentence", "the sentence's pattern: the hole {sign} (the factors' sign), optionally {relation} (the product's, to 0)",
+                                       "sign")}),
+         factor_signs_shape});
+    add({"characteristic", "the printed polynomial in the root is the scheme at (1, r, r^2), up to a factor free of r; unprinted coefficients solved for",
+         "printed",
+         with_where({{"printed", argument_kind::formula, true, "the printed polynomial (its side that is 0), of degree at most 2 in the root"},
+                     {"scheme", argument_kind::formula, true, "a linear three-term scheme (= 0)"},
+                     {"sequence", argument_kind::symbols, true, "its three states q_{j-1}, q_j, q_{j+1}", 3},
+                     {"root", argument_kind::symbols, true, "the root r: q_{j-1} = 1, q_j = r, q_{j+1} = r^2", 1},
+                     {"unprinted", argument_kind::symbols, false, "coefficients the text names but does not print (c), each one whole coefficient"}}),
+         characteristic_shape});
     return all;
   }();
   return shapes;
@@ -162,6 +185,12 @@ void check_shape_arguments(const claim_record& record, const std::string& file) 
     if (!p.only_with.empty() && given != (record.with.count(p.only_with) > 0)) {
       throw claims_file_error(file, given ? record.with.at(p.name).line : record.with.at(p.only_with).line, "with." + p.name,
                               given ? "given without '" + p.only_with + "'" : "missing: '" + p.only_with + "' needs it (" + p.meaning + ")");
+    }
+  }
+  for (const shape_parameter& p : shape.parameters) {
+    const auto it = record.with.find(p.name);
+    if (!p.hole.empty() && it != record.with.end() && it->second.values.front().find("{" + p.hole + "}") == std::string::npos) {
+      throw claims_file_error(file, it->second.line, "with." + p.name, "the sentence's pattern has no hole {" + p.hole + "}");
     }
   }
   // The words: a sentence and the property it states, both or neither.

@@ -35,6 +35,7 @@ struct shape_parameter {
   std::string among{};               // symbols: each one of this symbols argument's
   std::string instead_of{};          // given instead of this argument: exactly one of the two (neither `required`)
   std::string only_with{};           // given exactly when this argument is
+  std::string hole{};                // word: a sentence's pattern, which must hold the hole {hole}
 };
 
 /// One call: the claim's id and statement, its arguments, and the symbols its document declares

@@ -156,6 +156,17 @@ GiNaC::matrix as_square_matrix(const ex& e, const std::string& what) {
   return out;
 }
 
+std::optional<three_term_coefficients> linear_three_term(const ex& scheme, const std::vector<GiNaC::symbol>& q) {
+  const three_term_coefficients c{GiNaC::diff(scheme, q[0]), GiNaC::diff(scheme, q[1]), GiNaC::diff(scheme, q[2])};
+  if (!GiNaC::normal(scheme - (c.previous * q[0] + c.current * q[1] + c.next * q[2])).is_zero()) return std::nullopt;
+  for (const GiNaC::symbol& state : q) {
+    for (const ex& coefficient : {c.previous, c.current, c.next}) {
+      if (GiNaC::normal(coefficient).has(state)) return std::nullopt;
+    }
+  }
+  return c;
+}
+
 std::string reference_of(const shape_call& call, const std::string& parameter) { return call.with.at(parameter).values.front(); }
 
 }  // namespace simpson::verify::detail

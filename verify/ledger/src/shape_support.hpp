@@ -3,7 +3,8 @@
 // document with its definitions put in and its symbols checked against the declared ones, the
 // verdict on an identity in both kernels with its Coq certificate, and each shape's function, by
 // family: identities (shapes_identities.cpp), derivations (shapes_derivation.cpp), series
-// (shapes_series.cpp), intervals (shapes_intervals.cpp).
+// (shapes_series.cpp), intervals (shapes_intervals.cpp), characteristic polynomials
+// (shapes_characteristic.cpp).
 
 #include "kernel_zero.hpp"
 #include "proof_shapes.hpp"
@@ -73,6 +74,14 @@ claim_result identity_verdict(const shape_call& call, shape_reader& read, const 
 /// e as a square matrix; throws std::invalid_argument naming `what` when it is not one.
 GiNaC::matrix as_square_matrix(const GiNaC::ex& e, const std::string& what);
 
+/// A linear three-term scheme's coefficients: scheme = previous q_{j-1} + current q_j + next q_{j+1}
+/// (`sequence` = q_{j-1}, q_j, q_{j+1}), each free of the states (GiNaC's derivatives of the tree
+/// as read, not normalised); none when the scheme is not one.
+struct three_term_coefficients {
+  GiNaC::ex previous, current, next;
+};
+std::optional<three_term_coefficients> linear_three_term(const GiNaC::ex& scheme, const std::vector<GiNaC::symbol>& sequence);
+
 /// The reference an argument gives.
 std::string reference_of(const shape_call& call, const std::string& parameter);
 
@@ -90,5 +99,7 @@ claim_result truncation_shape(const shape_call& call, const run_context& ctx);
 claim_result stated_order_shape(const shape_call& call, const run_context& ctx);
 claim_result stability_interval_shape(const shape_call& call, const run_context& ctx);
 claim_result sign_on_interval_shape(const shape_call& call, const run_context& ctx);
+claim_result factor_signs_shape(const shape_call& call, const run_context& ctx);
+claim_result characteristic_shape(const shape_call& call, const run_context& ctx);
 
 }  // namespace simpson::verify::detail

@@ -12,14 +12,13 @@ Ltac nonzero :=
           | [ H : 0 < ?Y |- ?X <> 0 ] => replace X with Y by ring; apply Rgt_not_eq; exact H
           end
         | apply pow_nonzero; nonzero ].
-(* Not stated: characteristic_equation_printed, characteristic_equation_core, characteristic_equation_printed_2, characteristic_equation_core_2, whose two sides GiNaC evaluates to one expression (X = X checks nothing). *)
 
-Lemma characteristic_equation_printed_polynomial :
+Lemma characteristic_equation_characteristic :
   forall h omega r : R,
   0 < h ->
   h <> 0 ->
-  ((-1/24) * (((((-1) * (r ^ 2)) + ((-22) * r) + (-1)) * (omega ^ 2)) + ((h ^ 2) * (omega ^ 4) * r) + (24 * (((-1) * (r ^ 2)) + (-1) + (2 * r)) * (/ (h ^ 2)))) * (h ^ 2))
-  = (((-1/24) * (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) * (r ^ 2)) + ((1/24) * (((-1) * (h ^ 4) * (omega ^ 4)) + (-48) + (22 * (h ^ 2) * (omega ^ 2))) * r) + ((1/24) * (h ^ 2) * (omega ^ 2)) + 1).
+  ((1/576) * (((((-1) * (r ^ 2)) + ((-22) * r) + (-1)) * (omega ^ 2)) + ((h ^ 2) * (omega ^ 4) * r) + (24 * (((-1) * (r ^ 2)) + (-1) + (2 * r)) * (/ (h ^ 2)))) * (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)))
+  = ((1/576) * (((((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) * (r ^ 2)) + ((-1) * (((-1) * (h ^ 4) * (omega ^ 4)) + (-48) + (22 * (h ^ 2) * (omega ^ 2))) * r) + ((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) * (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) * (/ (h ^ 2))).
 Proof.
   intros.
   field; repeat split; nonzero.

@@ -13,38 +13,18 @@ Ltac nonzero :=
           end
         | apply pow_nonzero; nonzero ].
 
-Lemma discriminant_negative_delta :
+Lemma discriminant_negative_factor_1 :
   forall x : R,
   0 < x ->
   0 < (((-1) * x) + 8) ->
-  (((-1/144) * ((((-1) * x) + (-24)) ^ 2)) + ((1/576) * ((((-1) * (x ^ 2)) + (-48) + (22 * x)) ^ 2))) < 0.
+  0 < ((1/576) * x).
 Proof.
   intros.
-  replace (((-1/144) * ((((-1) * x) + (-24)) ^ 2)) + ((1/576) * ((((-1) * (x ^ 2)) + (-48) + (22 * x)) ^ 2)))
-    with ((-1/576) * (((-1) * x) + 12) * (((-1) * x) + 24) * (((-1) * x) + 8) * x)
-    by (field; repeat split; nonzero).
-  assert (0 < (((-1) * x) + 12)) by nra.
-  assert (0 < (((-1) * x) + 24)) by nra.
-  assert (0 < ((((-1) * x) + 12) * (((-1) * x) + 24))) by (apply Rmult_lt_0_compat; assumption).
-  assert (0 < (((-1) * x) + 8)) by nra.
-  assert (0 < (((((-1) * x) + 12) * (((-1) * x) + 24)) * (((-1) * x) + 8))) by (apply Rmult_lt_0_compat; assumption).
   assert (0 < x) by nra.
-  assert (0 < ((((((-1) * x) + 12) * (((-1) * x) + 24)) * (((-1) * x) + 8)) * x)) by (apply Rmult_lt_0_compat; assumption).
   nra.
 Qed.
 
-Lemma discriminant_negative_factor_24 :
-  forall x : R,
-  0 < x ->
-  0 < (((-1) * x) + 8) ->
-  ((-24) + x) < 0.
-Proof.
-  intros.
-  assert (0 < (((-1) * x) + 24)) by nra.
-  nra.
-Qed.
-
-Lemma discriminant_negative_factor_12 :
+Lemma discriminant_negative_factor_2 :
   forall x : R,
   0 < x ->
   0 < (((-1) * x) + 8) ->
@@ -55,7 +35,18 @@ Proof.
   nra.
 Qed.
 
-Lemma discriminant_negative_factor_8 :
+Lemma discriminant_negative_factor_3 :
+  forall x : R,
+  0 < x ->
+  0 < (((-1) * x) + 8) ->
+  ((-24) + x) < 0.
+Proof.
+  intros.
+  assert (0 < (((-1) * x) + 24)) by nra.
+  nra.
+Qed.
+
+Lemma discriminant_negative_factor_4 :
   forall x : R,
   0 < x ->
   0 < (((-1) * x) + 8) ->
