@@ -123,11 +123,11 @@ TEST(PaperReading, TheStabilityBandIsReadFromTheDisplay) {
   const run_context ctx{{precision::parse("double")}, 20230830, 2, &paper};
   const claim_result r = check_claim(find_claim("discriminant-negative"), ctx);
   EXPECT_EQ(r.evidence["exact"]["statement"], "the factors of (after:can be factorized) on 0 < h*omega < 2") << r.evidence["exact"].dump();
-  // Printed as 0 < omega h < pi: no rational band. The factors' signs there are not decided (our
-  // kernel compares ends exactly); the bespoke claim that reads the band says its text changed.
+  // Printed as 0 < omega h < pi: no rational band, so the signs on it are not decided (our kernel
+  // compares ends exactly).
   const paper_reading irrational = read_paper(altered("\\label{stabilite}", "2 \\, \\sqrt{2}", "\\pi"));
   EXPECT_EQ(verdict_of("discriminant-negative", irrational), verdict::undecided);
-  EXPECT_EQ(verdict_of("roots-product-one", irrational), verdict::text_changed);
+  EXPECT_EQ(verdict_of("roots-product-one", irrational), verdict::undecided);
 }
 
 TEST(PaperReading, AnErratumOfAFormulaIsCorrectedByTheDerivedOne) {

@@ -99,23 +99,6 @@ claim_result check_classical_consistency(const run_context& ctx) {
   return as_the_words_say(check_classical_consistency_computed(ctx), affirmed, "The scheme (schema-ordre-deux) is consistent with (oscillateur-nonlineaire): its truncation error is O(h^2)");
 }
 
-claim_result check_newmark_momentum(const run_context&) {
-  const proof p = prove_zero_on_grid(
-      std::string(unit_reduction) + "; printed p_{j+1} - dL_d/dq_r(q_j, q_{j+1}) (exact difference) and - (moment) of the core",
-      {"q_j", "q_{j+1}"}, 1, [&](const auto& v) {
-        using S = std::decay_t<decltype(v[0])>;
-        const auto par = theta_oscillator<S>();
-        const auto V = [&](const S& x) { return par.potential(x); };
-        const auto gradient = [&](const S& x) { return par.force_gradient(x); };
-        const S q(v[0]), qn(v[1]);
-        const S printed = par.m() * (qn - q) / par.h() - par.m() * par.omega() * par.omega() * par.h() / 4 * (qn + q);
-        const S by_difference = exact_derivative([&](const S& x) { return classical_lagrangian(par.m(), par.h(), V, q, x); }, qn);
-        const S by_core = classical_momentum(par.m(), par.h(), gradient, q, qn);
-        return std::vector<S>{printed - by_difference, printed - by_core};
-      });
-  return identity(p);
-}
-
 /// y_{j+1} from Φ, with p_j = −∂L_d/∂q_l(q_j, q_{j+1}) and p_{j+1} = ∂L_d/∂q_r(q_j, q_{j+1}).
 claim_result check_newmark_discrete_system(const run_context&) {
   const proof p = prove_zero_on_grid(
@@ -245,7 +228,6 @@ void add_section2_checks(check_registry& checks) {
   checks.add("action-range", check_action_range);
   checks.add("classical-euler-lagrange", check_classical_euler_lagrange);
   checks.add("classical-consistency", check_classical_consistency);
-  checks.add("newmark-momentum", check_newmark_momentum);
   checks.add("newmark-discrete-system", check_newmark_discrete_system);
   checks.add("hamilton-consistency", check_hamilton_consistency);
   checks.add("newmark-matrix", check_newmark_matrix);

@@ -3,7 +3,6 @@
 
 #include "claim_support.hpp"
 #include "claims_section5.hpp"
-#include "printed_stability_band.hpp"
 
 #include <simpson/verify/quoted_words.hpp>
 #include <simpson/verify/stability_analysis.hpp>
@@ -109,14 +108,6 @@ stability_report simpson_stability() {
   });
 }
 
-/// Whether (lo, hi) of x = ω²h² lies inside one stable band of the exact analysis.
-bool within_stable_band(const stability_report& r, const rational& lo, const rational& hi) {
-  for (const stability_band& b : r.bands) {
-    if (b.stable && b.x_from <= lo && (!b.to || hi <= b.to->low)) return true;
-  }
-  return false;
-}
-
 /// The stable bands of the exact analysis, "(0, 8) and (12, 24)", in x = ω²h².
 std::string stable_bands_text(const stability_report& report) {
   std::string bands;
@@ -125,8 +116,6 @@ std::string stable_bands_text(const stability_report& report) {
   }
   return bands;
 }
-
-rational band_end_of(const printed_stability_band& band) { return rational(band.numerator) / rational(band.denominator); }
 
 /// T_h(q_j)/q_j for m = ω = 1 as an exact series in θ, from the core's residual at the exact
 /// solution q(t) = cos t (q_{j±1} = cos θ, q_j = 1); cos through θ^20 makes every coefficient below
@@ -268,35 +257,6 @@ claim_result check_discriminant_factorization(const run_context& ctx) {
   return identity(exact, within, numeric);
 }
 
-claim_result check_roots_product(const run_context& ctx) {
-  const quoted_sentence said = quote(
-      ctx, "has two {roots} roots $ \\, r \\, $ and $ \\, \\overline{r} $. Their product $ \\, r \\, \\overline{r} = | r |^2 \\, $ "
-           "is {product} and the scheme (\\ref{schema-ordre-3}) is {conclusion}.");
-  const std::string roots = said.choice("roots", {{"conjugate complex", "complex conjugate"}, {"complex conjugate", "complex conjugate"},
-                                                  {"real", "real"}, {"distinct real", "real"}, {"real distinct", "real"}});
-  const stated_bound product = said.bound("product");
-  if (!product.rest.empty()) said.unparsed("product", "a relation and a number");
-  const std::string conclusion = said.choice("conclusion", {{"stable", "stable"}, {"unstable", "unstable"}, {"not stable", "unstable"}});
-  const stability_report report = simpson_stability();
-  // The sentence continues the one under the stability condition (stabilite): its band, as printed,
-  // must lie inside a band where Delta < 0 (two complex conjugate roots of modulus 1, stable).
-  const printed_stability_band printed_band = read_stability_band(paper_of(ctx));
-  const bool band = within_stable_band(report, rational(0), band_end_of(printed_band));
-  json evidence;
-  evidence["exact"] = report.evidence;
-  evidence["exact"]["printed_band"] = printed_band.text();
-  evidence["stated"] = {{"roots", roots}, {"product", said.words("product")}, {"conclusion", conclusion}};
-  const bool words_hold = roots == "complex conjugate" && product.relation == "=" && product.value == 1 && conclusion == "stable";
-  if (!report.product_of_roots_is_one) return confirmed_if(false, evidence);
-  if (!band) {
-    return words_erratum(evidence, "Under " + printed_band.text() + " the roots are not complex conjugate throughout: Delta < 0, "
-                                   "|r|^2 = c/a = 1 and stability hold exactly for omega^2 h^2 in " + stable_bands_text(report));
-  }
-  if (words_hold) return confirmed_if(true, evidence);
-  return words_erratum(evidence, "On " + printed_band.text() + ", Delta < 0: two complex conjugate roots, product c/a = 1 = |r|^2, and "
-                                 "the scheme is stable");
-}
-
 /// "Maupertuis's stationary-action principle delta Sigma_d = 0": Sigma_d sums L_h, Simpson's rule on
 /// the Lagrangian m q'^2/2 - V along the interpolant, at fixed times: Hamilton's action. Maupertuis's
 /// principle varies the abbreviated action, the integral of p q' = m q'^2, at fixed energy. Shown: L_h
@@ -353,7 +313,6 @@ void add_section5_checks(check_registry& checks) {
   checks.add("taylor-display", check_taylor_display);
   checks.add("root-modulus", check_root_modulus);
   checks.add("discriminant-factorization", check_discriminant_factorization);
-  checks.add("roots-product", check_roots_product);
 }
 
 }  // namespace simpson::verify::detail

@@ -82,13 +82,6 @@ printed_outcome classical_consistency(const paper_reading& r) {
                          printed_side(r, "oscillateur-nonlineaire", 0) - printed_side(r, "oscillateur-nonlineaire", 1), states, d.h);
 }
 
-printed_outcome newmark_momentum(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
-  const auto par = parameters(d);
-  return compare("p_{j+1}", printed_side(r, "p_{j+1} (Newmark)"), newmark_derivation().momentum_right,
-                 classical_momentum(d.m, d.h, [&par](const ex& x) { return par.force_gradient(x); }, d.q_j, d.q_next));
-}
-
 printed_outcome newmark_system(const paper_reading& r) {
   const symbolic_derivation& d = derivation();
   // p_{j+1} = dL_d/dq_r (q_j, q_{j+1}) and p_j = -dL_d/dq_l (q_j, q_{j+1}), as derived.
@@ -211,7 +204,6 @@ void add_printed_checks_section2_4(check_registry& checks) {
   checks.add_printed("classical-consistency", {"schema-ordre-deux", "oscillateur-nonlineaire"}, classical_consistency);
   checks.add_printed("hamilton-consistency", {"systeme-dynamique-discret-ordre-2#0", "systeme-dynamique-discret-ordre-2#1", "Hamilton dp/dt",
                                      "Hamilton dq/dt"}, hamilton_consistency);
-  checks.add_printed("newmark-momentum", {"p_{j+1} (Newmark)"}, newmark_momentum);
   checks.add_printed("newmark-discrete-system", {"systeme-dynamique-discret-ordre-2#0", "systeme-dynamique-discret-ordre-2#1"}, newmark_system);
   checks.add_printed("newmark-matrix", {"matrice-symplectique-ordre-2"}, newmark_matrix);
   checks.add_printed("basis-nodal", {"fonctions-de-base#0", "fonctions-de-base#1", "fonctions-de-base#2", "q2t", "q(0)", "q(h/2)", "q(h)"}, interpolant_nodal);

@@ -63,7 +63,11 @@ const std::map<std::string, proof_shape>& proof_shapes() {
     add({"derivative", "d function / d variable = printed, the definitions put in", "printed",
          with_where({{"function", argument_kind::formula, true, "the formula differentiated"},
                      {"variable", argument_kind::symbols, true, "the symbol it is differentiated by", 1},
-                     {"printed", argument_kind::formula, true, "the printed derivative"}}),
+                     {"printed", argument_kind::formula, true, "the printed derivative"},
+                     {"arguments", argument_kind::symbols, false, "the function's arguments, when the printed derivative is taken at others", 0, "",
+                      false, {}, "", "", "at"},
+                     {"at", argument_kind::symbols, false, "the values of the arguments in the printed derivative (q_j, q_{j+1} for q_l, q_r)", 0,
+                      "arguments", false, {}, "", "", "arguments"}}),
          derivative_shape});
     add({"solves", "the equation (= 0) holds with the unknown replaced by the printed solution, the definitions put in", "solution",
          with_where({{"equation", argument_kind::formula, true, "the equation's side that is 0"},
@@ -142,6 +146,15 @@ const std::map<std::string, proof_shape>& proof_shapes() {
                      {"root", argument_kind::symbols, true, "the root r: q_{j-1} = 1, q_j = r, q_{j+1} = r^2", 1},
                      {"unprinted", argument_kind::symbols, false, "coefficients the text names but does not print (c), each one whole coefficient"}}),
          characteristic_shape});
+    add({"characteristic-roots", "what a sentence says of the roots of the scheme's characteristic polynomial on the printed interval: complex or real, their product, stability",
+         "condition",
+         with_where({{"scheme", argument_kind::formula, true, "a linear three-term scheme (= 0)"},
+                     {"sequence", argument_kind::symbols, true, "its three states q_{j-1}, q_j, q_{j+1}", 3},
+                     {"variable", argument_kind::formula, true, "the variable of the condition, a product of positive symbols", 0, "", true},
+                     {"condition", argument_kind::condition, true, "the printed interval 0 < variable < c"},
+                     pattern_with_hole("sentence", "the sentence's pattern: the hole {roots} (complex conjugate, real), optionally {product} and {conclusion} (stable, unstable)",
+                                       "roots")}),
+         characteristic_roots_shape});
     return all;
   }();
   return shapes;
@@ -270,6 +283,11 @@ std::string check_shape_formulas(const claim_record& record, const std::string& 
           if (!p.same_size_as.empty() && rows.count(p.same_size_as) && it->second.values.size() != rows[p.same_size_as]) {
             throw claims_file_error(file, line, field, fmt::format("{} symbols for the {} rows of '{}'", it->second.values.size(),
                                                                    rows[p.same_size_as], p.same_size_as));
+          }
+          if (!p.same_size_as.empty() && !rows.count(p.same_size_as) && record.with.count(p.same_size_as) &&
+              it->second.values.size() != record.with.at(p.same_size_as).values.size()) {
+            throw claims_file_error(file, line, field, fmt::format("{} symbols for the {} of '{}'", it->second.values.size(),
+                                                                   record.with.at(p.same_size_as).values.size(), p.same_size_as));
           }
           if (!p.among.empty() && record.with.count(p.among)) {
             const std::vector<GiNaC::symbol> allowed = read->symbols(p.among);

@@ -101,5 +101,6 @@ claim_result stability_interval_shape(const shape_call& call, const run_context&
 claim_result sign_on_interval_shape(const shape_call& call, const run_context& ctx);
 claim_result factor_signs_shape(const shape_call& call, const run_context& ctx);
 claim_result characteristic_shape(const shape_call& call, const run_context& ctx);
+claim_result characteristic_roots_shape(const shape_call& call, const run_context& ctx);
 
 }  // namespace simpson::verify::detail

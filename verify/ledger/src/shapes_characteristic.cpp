@@ -1,10 +1,14 @@
-// The characteristic-polynomial shape (shape_support.hpp): a printed polynomial in r is the
-// characteristic polynomial of a linear three-term scheme, the scheme taken at the geometric
-// sequence q_{j-1} = 1, q_j = r, q_{j+1} = r², up to a factor free of r.
+// The characteristic-polynomial shapes (shape_support.hpp) of a linear three-term scheme, the scheme
+// taken at the geometric sequence q_{j-1} = 1, q_j = r, q_{j+1} = r²: a printed polynomial in r is
+// it up to a factor free of r (characteristic), and what a sentence says of its roots on a printed
+// interval (characteristic-roots).
 
 #include "shape_support.hpp"
 
+#include "one_variable.hpp"
 #include "printed_check_support.hpp"
+
+#include <simpson/verify/quoted_words.hpp>
 
 #include <fmt/format.h>
 
@@ -126,6 +130,108 @@ claim_result characteristic_shape(const shape_call& call, const run_context& ctx
     const std::string said = "Not printed, solved from the scheme: " + named + ".";
     result.note = result.note.empty() ? said : result.note + " " + said;
   }
+  return result;
+}
+
+/// "has two {roots} roots r and r̄. Their product r r̄ = |r|² is {product} and the scheme is
+/// {conclusion}", on the printed interval 0 < v < c: the discriminant (P₁² − 4P₀P₂)/P₂² of the scheme's
+/// characteristic polynomial has one sign on the whole interval (our kernel's Sturm sequences, the
+/// end compared exactly, and GiNaC's coefficients again), so the roots are complex conjugate (Δ < 0)
+/// or real (Δ > 0) throughout; their product is P₀/P₂, a number (both kernels); the scheme is
+/// power-bounded when the roots are complex with a product at most 1 (|r|² is the product, and a pair
+/// of modulus 1 is simple since Δ ≠ 0), and not when they are real with product 1 (r and 1/r, one
+/// outside the unit circle) on all or part of the interval. The words are judged against these facts; holes {product} and
+/// {conclusion} are optional.
+claim_result characteristic_roots_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const ex scheme = read.formula("scheme");
+  const std::vector<GiNaC::symbol> q = read.symbols("sequence");
+  const referenced_formula condition = read.raw("condition");
+  const ex v = read.formula("variable");
+  const std::string pattern = call.with.at("sentence").values.front();
+  const quoted_sentence said = quote(ctx, pattern);
+  const std::string roots_said = said.choice("roots", {{"conjugate complex", "complex conjugate"}, {"complex conjugate", "complex conjugate"},
+                                                       {"complex", "complex conjugate"}, {"real", "real"}, {"distinct real", "real"},
+                                                       {"real distinct", "real"}});
+  std::optional<stated_bound> product_said;
+  if (pattern.find("{product}") != std::string::npos) {
+    product_said = said.bound("product");
+    if (!product_said->rest.empty()) said.unparsed("product", "a relation and a number");
+  }
+  std::optional<std::string> conclusion_said;
+  if (pattern.find("{conclusion}") != std::string::npos) {
+    conclusion_said = said.choice("conclusion", {{"stable", "stable"}, {"unstable", "unstable"}, {"not stable", "unstable"}});
+  }
+  const std::string scheme_ref = reference_of(call, "scheme");
+  claim_result result;
+  result.printed = read.printed();
+  const auto cannot = [&](verdict outcome, const std::string& why) {
+    result.outcome = outcome;
+    result.note = why;
+    return result;
+  };
+  const std::optional<three_term_coefficients> terms = linear_three_term(scheme, q);
+  if (!terms) return cannot(verdict::fails, "The shape decides linear three-term schemes; (" + scheme_ref + ") is not linear in its states.");
+  // The product of the roots, P₀/P₂: a number, in both kernels.
+  const ex product = GiNaC::normal(terms->previous / terms->next);
+  if (!GiNaC::is_a<GiNaC::numeric>(product) || !GiNaC::ex_to<GiNaC::numeric>(product).is_rational()) {
+    return cannot(verdict::fails, "The roots' product " + text_of(product) + " of (" + scheme_ref + ") is not a number: the shape does not judge it.");
+  }
+  const kernel_decision product_own = kernel_decides_zero(terms->previous - product * terms->next);
+  // The discriminant's sign on the interval, in both kernels.
+  const ex high = interval_end(condition, v);
+  // The monic polynomial's discriminant (P₁² − 4P₀P₂)/P₂²: the same sign, and a function of the
+  // condition's variable alone when the scheme is (a scheme in ω and h, of ωh once divided by P₂).
+  const ex delta = GiNaC::normal((terms->current * terms->current - 4 * terms->previous * terms->next) / (terms->next * terms->next));
+  const std::optional<one_variable> g = in_variable(delta, v);
+  const std::optional<rational> c = g ? g->exact(high) : std::nullopt;
+  if (!g || !c || *c <= 0) {
+    return cannot(verdict::undecided, "The discriminant " + text_of(delta) + (g ? " on an interval whose end is not a positive rational" : " is not a function of " + text_of(v) + " alone") +
+                                          ": our kernel cannot decide its sign.");
+  }
+  const one_variable::inside_of found = g->first_inside(*c);
+  if (found.ambiguous) return cannot(verdict::undecided, "A root of the discriminant lies within 2^-40 of the interval's end.");
+  const int sign = found.first ? 0 : g->sign_at(*c / 2);
+  std::string ginac_proof;
+  const int ginac_sign = ginac_sign_on(*g, v, high, ginac_proof);
+  if ((ginac_sign != 0 && ginac_sign != sign) || product_own.outcome == kernel_decision::result::nonzero) {
+    return cannot(verdict::kernels_disagree, "GiNaC and our kernel differ on the discriminant's sign or the roots' product: a bug in one of them.");
+  }
+  const GiNaC::numeric p = GiNaC::ex_to<GiNaC::numeric>(product);
+  const std::string nature = sign < 0 ? "complex conjugate" : sign > 0 ? "real" : "complex conjugate on part of the interval, real on the rest";
+  std::optional<std::string> stability;  // "stable" or "unstable", when the facts decide it
+  if (sign < 0) stability = p <= 1 ? "stable" : "unstable";
+  if (sign >= 0 && p == 1) stability = "unstable";  // real r and 1/r where the discriminant is positive: on all or part of it
+  const std::string var = text_of(v);
+  const std::string stability_text =
+      !stability ? std::string() : sign == 0 ? ", and the scheme is not stable on all of it" : ", and the scheme is " + *stability;
+  const std::string facts = fmt::format("on 0 < {} < {} the discriminant is {}: the roots are {}, their product {}{}", var, text_of(high),
+                                        sign < 0 ? "negative" : sign > 0 ? "positive" : "of both signs", nature, text_of(product), stability_text);
+  result.evidence["exact"] = {
+      {"statement", fmt::format("the roots of ({}) at (1, r, r^2) on 0 < {} < {}", scheme_ref, var, text_of(high))},
+      {"stated", {{"roots", roots_said}, {"product", product_said ? said.words("product") : "(not stated)"},
+                  {"conclusion", conclusion_said ? *conclusion_said : "(not stated)"}}},
+      {"discriminant", text_of(delta)},
+      {"product", text_of(product) + " = P0/P2"},
+      {"own", std::string(sign != 0 ? "holds" : "fails") + ": the discriminant's roots in (0, c) by Sturm sequences, c compared exactly; the product: " +
+                  product_own.evidence},
+      {"ginac", std::string(ginac_sign != 0 ? "holds: " : "not decided: ") + ginac_proof + "; the product in normal form"}};
+  std::vector<proof_goal> goals{decided("product", terms->previous, product * terms->next)};
+  if (sign != 0) goals.push_back(g->sign_goal_on("discriminant", sign, *c));
+  record_certificate(result, coq_certificate(call.claim_id, call.statement, goals));
+  const bool product_right = !product_said || (p.is_integer() && product_said->admits(static_cast<int>(p.to_long())));
+  const bool words_hold = roots_said == nature && product_right && (!conclusion_said || (stability && *conclusion_said == *stability));
+  if (words_hold) {
+    result.outcome = verdict::holds;
+    result.note = "Proved in both kernels on the whole interval (no sample): " + facts + ".";
+    return result;
+  }
+  if (conclusion_said && !stability) {
+    return cannot(verdict::fails, "The facts do not decide stability here (" + facts + "): the words' '" + *conclusion_said + "' is not judged.");
+  }
+  result.outcome = verdict::erratum;
+  result.correction = "As proved: " + facts;
+  result.note = "As printed, the sentence's words are not the facts proved on the interval.";
   return result;
 }
 

@@ -137,10 +137,20 @@ claim_result derivative_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const ex printed = read.formula("printed"), function = read.formula("function");
   const GiNaC::symbol variable = read.symbols("variable").front();
-  const ex derived = GiNaC::diff(function, variable);
-  const std::string what = fmt::format("d({})/d{} = ({})", reference_of(call, "function"), variable.get_name(), reference_of(call, "printed"));
+  ex derived = GiNaC::diff(function, variable);
+  std::string at;
+  if (read.has("arguments")) {  // taken at other arguments: each put in at once
+    const std::vector<GiNaC::symbol> arguments = read.symbols("arguments"), values = read.symbols("at");
+    GiNaC::exmap to;
+    for (std::size_t k = 0; k < arguments.size(); ++k) {
+      to[arguments[k]] = values[k];
+      at += (at.empty() ? " at " : ", ") + arguments[k].get_name() + " = " + values[k].get_name();
+    }
+    derived = derived.subs(to, GiNaC::subs_options::no_pattern);
+  }
+  const std::string what = fmt::format("d({})/d{}{} = ({})", reference_of(call, "function"), variable.get_name(), at, reference_of(call, "printed"));
   return identity_verdict(call, read, "derivative", what, derived, printed,
-                          fmt::format("as derived: d({})/d{} = {}", reference_of(call, "function"), variable.get_name(), text_of(GiNaC::normal(derived))));
+                          fmt::format("as derived: d({})/d{}{} = {}", reference_of(call, "function"), variable.get_name(), at, text_of(GiNaC::normal(derived))));
 }
 
 /// A printed solution: the equation (= 0) is 0 with the unknown replaced by the solution, the

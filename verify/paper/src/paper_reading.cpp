@@ -13,7 +13,6 @@ const std::vector<formula_location>& printed_formula_locations() {
       {"schema-ordre-deux", k::labelled, "schema-ordre-deux", 0, {0}},
       {"oscillateur-nonlineaire", k::labelled, "oscillateur-nonlineaire", 0, {0, 1}},
       {"oscillateur harmonique", k::labelled, "oscillateur harmonique"},
-      {"p_{j+1} (Newmark)", k::inline_formula, "p_{j+1} = m \\, {{q_{j+1} - q_j}\\over{h}}"},
       {"systeme-dynamique-discret-ordre-2#0", k::labelled, "systeme-dynamique-discret-ordre-2", 0, {0, 1}},
       {"systeme-dynamique-discret-ordre-2#1", k::labelled, "systeme-dynamique-discret-ordre-2", 1, {0, 1}},
       {"Hamilton dp/dt", k::inline_formula, "consistent with the first order Hamilton version", 0, {0, 1}},
