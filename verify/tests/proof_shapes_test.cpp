@@ -217,6 +217,9 @@ Narrow: on $0 < \om h < 2$ the equation has two complex conjugate roots, of prod
 Wide: on $0 < \om h < 3$ the equation has two complex conjugate roots, of product equal to 1, and the scheme is stable.
 Real: on $0 < \om h < 2$ the equation has two real roots, of product equal to 1, and the scheme is stable.
 Double: on $0 < \om h < 2$ the equation has two complex conjugate roots, of product equal to 2, and the scheme is stable.
+Criterion one: the scheme is stable when the roots are of modulus smaller than 1.
+Criterion two: the scheme is stable when the roots are of modulus at most 1 and simple.
+Criterion three: the scheme is stable when the roots are of modulus at most 1.
 )";
 
 const std::string declarations = R"(
@@ -554,6 +557,25 @@ TEST_F(ShapesOnADocument, CharacteristicRoots) {
   EXPECT_NE(wide.correction.find("of both signs"), std::string::npos) << wide.correction;
   EXPECT_EQ(run("characteristic-roots", with("Real:")).outcome, verdict::erratum);
   EXPECT_EQ(run("characteristic-roots", with("Double:")).outcome, verdict::erratum);
+}
+
+// A criterion stated on the roots' modulus, against the root condition on every region of omega h > 0
+// for (sv): a simple conjugate pair of modulus 1 on (0, 2), a double root -1 at 2, real roots beyond.
+// "at most 1" alone calls the double root stable (linear growth): a check of the open regions alone
+// would pass it.
+TEST_F(ShapesOnADocument, RootCriterion) {
+  const auto with = [](const std::string& which) {
+    return "{ scheme = \"sv:lhs\", sequence = ['q_{j-1}', 'q_j', 'q_{j+1}'], variable = '$\\omega h$', sentence = 'Criterion " + which +
+           ": the scheme is stable when the roots are of modulus {modulus}.' }";
+  };
+  const claim_result holds = run("root-criterion", with("two"));
+  EXPECT_EQ(holds.outcome, verdict::holds) << holds.note << holds.evidence.dump();
+  ASSERT_EQ(holds.certificate_lemmas.size(), 1u) << holds.certificate_missing << holds.certificate;  // the band; reversible is X = X here
+  EXPECT_NE(holds.certificate_lemmas[0].find("_stable_band_1"), std::string::npos);
+  const claim_result smaller = run("root-criterion", with("one"));
+  EXPECT_EQ(smaller.outcome, verdict::erratum);
+  EXPECT_NE(smaller.correction.find("for h*omega in (0, 2)"), std::string::npos) << smaller.correction;
+  EXPECT_EQ(run("root-criterion", with("three")).outcome, verdict::erratum);
 }
 
 /// The error a record gives at reading (or at reading its formulas), or "".

@@ -101,22 +101,6 @@ claim_result check_qm_not_affine(const run_context& ctx) {
   return identity(p, "What was proved: " + proved + ".");
 }
 
-stability_report simpson_stability() {
-  const auto par = unit_oscillator_in_theta();
-  return analyse_three_term_scheme([&](const symbolic& qp, const symbolic& q, const symbolic& qn) {
-    return three_term_residual(par, qp, q, qn);
-  });
-}
-
-/// The stable bands of the exact analysis, "(0, 8) and (12, 24)", in x = ω²h².
-std::string stable_bands_text(const stability_report& report) {
-  std::string bands;
-  for (const auto& [lo, hi] : report.stable_intervals) {
-    bands += (bands.empty() ? "" : " and ") + std::string("(") + lo + ", " + (hi.empty() ? "infinity" : hi) + ")";
-  }
-  return bands;
-}
-
 /// T_h(q_j)/q_j for m = ω = 1 as an exact series in θ, from the core's residual at the exact
 /// solution q(t) = cos t (q_{j±1} = cos θ, q_j = 1); cos through θ^20 makes every coefficient below
 /// θ^18 exact. For any exact solution q_{j+1} + q_{j−1} = 2 cos(θ) q_j, so T_h(q_j) = ω² F(ωh) q_j.
@@ -179,71 +163,6 @@ claim_result check_taylor_display(const run_context&) {
   return erratum(printed, corrected, "q_{j+-1} = q_j +- h q' + ... +- h^5/120 q^(5) + h^6/720 d^6q/dt^6 + O(h^7)",
                  "Typographical: the h^6 term of both expansions is printed with d^6q/dt^5. The truncation error below uses "
                  "the correct sixth derivative.");
-}
-
-/// The root structure of a r² + b r + c with c = a (product of the roots 1) on each region of x:
-/// Δ < 0, two simple roots of modulus 1; Δ = 0, a double root ±1; Δ > 0, real roots ρ and 1/ρ with
-/// ρ > 1 (taking every value near 1 close to the region's ends). Whether a stated modulus criterion
-/// calls each stable, against the root condition (stable exactly when Δ < 0).
-struct modulus_criterion {
-  stated_bound bound;
-  bool simple_required = false;
-  bool on_unit_pair() const { return bound.admits(1); }
-  bool on_double_root() const { return bound.admits(1) && !simple_required; }
-  bool on_real_pair() const {  // both ρ > 1 (near 1) and 1/ρ < 1 (near 1) admitted
-    if (bound.relation == "<" || bound.relation == "<=") return bound.value > 1;
-    if (bound.relation == ">" || bound.relation == ">=") return bound.value < 1;
-    return false;
-  }
-};
-
-claim_result check_root_modulus(const run_context& ctx) {
-  const quoted_sentence said =
-      quote(ctx, "The scheme is stable when the roots of the corresponding equation are of modulus {modulus}.");
-  modulus_criterion printed_criterion{said.bound("modulus")};
-  if (!printed_criterion.bound.rest.empty()) {
-    if (printed_criterion.bound.rest.find("simple") == std::string::npos) said.unparsed("modulus", "a bound, optionally with 'simple'");
-    printed_criterion.simple_required = true;
-  }
-  const stability_report report = simpson_stability();
-  json regions = json::array();
-  bool agrees = report.product_of_roots_is_one;
-  for (const stability_band& b : report.bands) {
-    const bool stable = b.discriminant_negative;
-    const bool said_stable = stable ? printed_criterion.on_unit_pair() : printed_criterion.on_real_pair();
-    agrees = agrees && said_stable == stable;
-    regions.push_back({{"omega_h", "(" + b.omega_h_from + ", " + (b.omega_h_to.empty() ? "infinity" : b.omega_h_to) + ")"},
-                       {"roots", stable ? "conjugate, simple, modulus 1" : "real, rho and 1/rho, rho > 1"},
-                       {"root_condition", stable ? "stable" : "unstable"},
-                       {"printed_criterion", said_stable ? "stable" : "unstable"}});
-  }
-  for (const positive_root& root : report.roots) {
-    const bool said_stable = printed_criterion.on_double_root();
-    agrees = agrees && !said_stable;
-    regions.push_back({{"omega_h", omega_h_text(root)}, {"roots", "double, modulus 1"}, {"root_condition", "unstable (linear growth)"},
-                       {"printed_criterion", said_stable ? "stable" : "unstable"}});
-  }
-  proof printed;
-  printed.proved = agrees;
-  printed.evidence = {{"method", "exact"},
-                      {"stated", said.words("modulus")},
-                      {"reduction", "product of the roots c/a of a r^2 + b r + c; the sign of Delta on each region (Sturm)"},
-                      {"product_of_roots", report.evidence["product_of_roots_c_over_a"]},
-                      {"regions", regions},
-                      {"result", agrees ? "the stated criterion calls stable exactly the regions where the root condition holds"
-                                        : "the stated criterion and the root condition disagree on a region above"}};
-  proof corrected;
-  corrected.proved = report.product_of_roots_is_one && !report.stable_intervals.empty();
-  corrected.evidence = report.evidence;
-  if (agrees) {
-    json evidence;
-    evidence["exact"] = printed.evidence;
-    return confirmed_if(true, evidence);
-  }
-  return erratum(printed, corrected,
-                 "The scheme is stable when the roots have modulus <= 1 and the roots of modulus 1 are simple (root "
-                 "condition); here they are simple, conjugate and of modulus 1 for omega^2 h^2 in " + stable_bands_text(report) + ".",
-                 "The following sentences use modulus 1 correctly; only the stated criterion is wrong.");
 }
 
 claim_result check_discriminant_factorization(const run_context& ctx) {
@@ -311,7 +230,6 @@ void add_section5_checks(check_registry& checks) {
   checks.add("qm-not-affine", check_qm_not_affine);
   checks.add("scheme-consistency", check_scheme_consistency);
   checks.add("taylor-display", check_taylor_display);
-  checks.add("root-modulus", check_root_modulus);
   checks.add("discriminant-factorization", check_discriminant_factorization);
 }
 

@@ -18,33 +18,6 @@ namespace {
 
 using GiNaC::ex;
 
-/// x = ω²h², the one variable of Section 5's characteristic polynomial (three_term_scheme.hpp), and a
-/// point of a band. Stated in x, the signs are polynomial facts nra decides; in ω and h, GiNaC would
-/// split x into ω² and h², whose signs 0 < x alone does not give.
-struct band_point {
-  ex x;
-  GiNaC::exmap inside;
-};
-
-band_point at_x(const GiNaC::numeric& value) {
-  static const GiNaC::symbol x("x");
-  return {x, GiNaC::exmap{{x, value}}};
-}
-
-/// Δ = b² − 4ac of the core's characteristic polynomial.
-ex discriminant(const ex& x) {
-  const auto k = characteristic_polynomial(x);
-  return k.b * k.b - 4 * k.a * k.c;
-}
-
-/// The corrected criterion's two stable bands: Δ < 0 on 0 < x < 8 and on 12 < x < 24, where the
-/// roots are complex conjugate (and of product 1: modulus 1).
-std::vector<proof_goal> root_modulus_bands() {
-  const band_point first = at_x(1), second = at_x(16);
-  return {sign_goal("delta_first_band", discriminant(first.x), -1, {first.x, 8 - first.x}, first.inside),
-          sign_goal("delta_second_band", discriminant(second.x), -1, {second.x - 12, 24 - second.x}, second.inside)};
-}
-
 GiNaC::matrix core_phi3() { return as_matrix(simpson_map(parameters(derivation()))); }
 
 /// The reduction every exact proof of our kernel uses: with S = diag(mω, 1), Φ(m, ω, h) =
@@ -117,7 +90,6 @@ proof_goal sign_goal(const std::string& name, const ex& lhs, int sign, std::vect
 }
 
 void add_kernel_claim_goals(check_registry& checks) {
-  checks.add_coq_goals("root-modulus", root_modulus_bands);
   checks.add_coq_goals("phi3-explicit", phi3_explicit);
   checks.add_coq_goals("phi3-shear-factorization", phi3_shear_factorization);
   checks.add_coq_goals("newmark-stability", newmark_unconditional_stability);

@@ -80,6 +80,13 @@ proof_goal one_variable::sign_goal_on(const std::string& name, int sign, const r
   return sign_goal(name, as_ginac(numerator, u) / as_ginac(denominator, u), sign, {u, c - u}, GiNaC::exmap{{u, c / 2}});
 }
 
+proof_goal one_variable::sign_goal_between(const std::string& name, int sign, const rational& from, const rational& to) const {
+  static const GiNaC::symbol x("x"), t("t");
+  const GiNaC::symbol& u = in_square ? x : t;
+  const GiNaC::numeric a = as_numeric(from), b = as_numeric(to);
+  return sign_goal(name, as_ginac(numerator, u) / as_ginac(denominator, u), sign, {u - a, b - u}, GiNaC::exmap{{u, (a + b) / 2}});
+}
+
 std::optional<rational> one_variable::exact(const ex& c) const {
   const ex value = GiNaC::expand(in_square ? c * c : c);
   if (!GiNaC::is_a<GiNaC::numeric>(value) || !GiNaC::ex_to<GiNaC::numeric>(value).is_rational()) return std::nullopt;

@@ -52,6 +52,8 @@ struct one_variable {
   /// `end` (c² or c) rational. The reduction of the printed expression to this one-variable function
   /// (v's scaling) is GiNaC's; nra proves each factor's sign from the two bounds.
   proof_goal sign_goal_on(const std::string& name, int sign, const rational& end) const;
+  /// The same on from < (v or v²) < to, both rational.
+  proof_goal sign_goal_between(const std::string& name, int sign, const rational& from, const rational& to) const;
   /// The printed end c as our kernel's rational (c, or c² in x), when it is one.
   std::optional<rational> exact(const GiNaC::ex& c) const;
 };

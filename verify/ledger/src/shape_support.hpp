@@ -102,5 +102,6 @@ claim_result sign_on_interval_shape(const shape_call& call, const run_context& c
 claim_result factor_signs_shape(const shape_call& call, const run_context& ctx);
 claim_result characteristic_shape(const shape_call& call, const run_context& ctx);
 claim_result characteristic_roots_shape(const shape_call& call, const run_context& ctx);
+claim_result root_criterion_shape(const shape_call& call, const run_context& ctx);
 
 }  // namespace simpson::verify::detail

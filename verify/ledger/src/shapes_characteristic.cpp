@@ -235,4 +235,100 @@ claim_result characteristic_roots_shape(const shape_call& call, const run_contex
   return result;
 }
 
+/// "The scheme is stable when the roots of the corresponding equation are of modulus {modulus}": the
+/// stated criterion against the root condition (every root of modulus at most 1, those of modulus 1
+/// simple) on every region of v > 0, for a reversible scheme (P₀ = P₂: the roots' product is 1). The
+/// regions are cut at the roots and poles of the discriminant (Sturm sequences): where it is negative,
+/// a simple conjugate pair of modulus 1 (stable); where positive, ρ and 1/ρ with ρ > 1 taking every
+/// value near 1 at the region's ends (unstable); at its roots, a double root ±1 (unstable: linear
+/// growth). "{modulus}" is a bound ("smaller than 1", "at most 1"), optionally with "simple".
+claim_result root_criterion_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const ex scheme = read.formula("scheme");
+  const std::vector<GiNaC::symbol> q = read.symbols("sequence");
+  const ex v = read.formula("variable");
+  const quoted_sentence said = quote(ctx, call.with.at("sentence").values.front());
+  const stated_bound bound = said.bound("modulus");
+  const bool simple_required = !bound.rest.empty();
+  if (simple_required && bound.rest.find("simple") == std::string::npos) said.unparsed("modulus", "a bound, optionally with 'simple'");
+  const std::string scheme_ref = reference_of(call, "scheme");
+  claim_result result;
+  result.printed = read.printed();
+  const std::optional<three_term_coefficients> terms = linear_three_term(scheme, q);
+  const kernel_decision reversible_own = terms ? kernel_decides_zero(terms->next - terms->previous) : kernel_decision{};
+  if (!terms || !GiNaC::normal(terms->next - terms->previous).is_zero() || reversible_own.outcome == kernel_decision::result::nonzero) {
+    result.outcome = verdict::fails;
+    result.note = "The shape judges criteria for linear three-term schemes whose first and last coefficients are equal; (" + scheme_ref + ") is not one.";
+    return result;
+  }
+  const ex delta = GiNaC::normal((terms->current * terms->current - 4 * terms->previous * terms->next) / (terms->next * terms->next));
+  const std::optional<one_variable> g = in_variable(delta, v);
+  if (!g) {
+    result.outcome = verdict::fails;
+    result.note = "The discriminant " + text_of(delta) + " is not a function of " + text_of(v) + " alone.";
+    return result;
+  }
+  // What the criterion calls stable: a simple pair of modulus 1; real ρ, 1/ρ with ρ near 1; a double root ±1.
+  const bool says_unit_pair = bound.admits(1);
+  const bool says_real_pair = (bound.relation == "<" || bound.relation == "<=") ? bound.value > 1
+                              : (bound.relation == ">" || bound.relation == ">=") ? bound.value < 1
+                                                                                  : false;
+  const bool says_double = bound.admits(1) && !simple_required;
+  const std::string var = text_of(v), var_in = g->in_square ? "(" + var + ")^2" : var;
+  json regions = json::array();
+  std::vector<std::string> stable_bands;
+  std::vector<proof_goal> goals{decided("reversible", terms->next, terms->previous)};
+  bool agrees = true;
+  rational from = 0;
+  std::string from_text = "0";
+  for (std::size_t k = 0; k <= g->ends.size(); ++k) {
+    const bool last = k == g->ends.size();
+    const rational inside = last ? rational(from + 1) : rational((from + g->ends[k].low) / 2);
+    const bool stable = g->sign_at(inside) < 0;
+    const std::string to_text = last ? "infinity" : g->text(g->ends[k]);
+    const bool said_stable = stable ? says_unit_pair : says_real_pair;
+    agrees = agrees && said_stable == stable;
+    regions.push_back({{var, "(" + from_text + ", " + to_text + ")"},
+                       {"roots", stable ? "conjugate, simple, modulus 1" : "real, rho and 1/rho, rho > 1"},
+                       {"root_condition", stable ? "stable" : "unstable"},
+                       {"stated_criterion", said_stable ? "stable" : "unstable"}});
+    if (stable) {
+      stable_bands.push_back("(" + from_text + ", " + to_text + ")");
+      if (!last && g->ends[k].exact() && (k == 0 || g->ends[k - 1].exact())) {
+        goals.push_back(g->sign_goal_between("stable_band_" + std::to_string(stable_bands.size()), -1, from, g->ends[k].low));
+      }
+    }
+    if (!last) {
+      const positive_root& end = g->ends[k];  // a root of the numerator (a double root ±1), or a pole
+      const bool root = end.exact() ? g->numerator.evaluate(end.low) == 0
+                                    : (g->numerator.evaluate(end.low) < 0) != (g->numerator.evaluate(end.high) < 0);
+      if (root) {
+        agrees = agrees && !says_double;
+        regions.push_back({{var, to_text}, {"roots", "double, modulus 1"}, {"root_condition", "unstable (linear growth)"},
+                           {"stated_criterion", says_double ? "stable" : "unstable"}});
+      }
+      from = g->ends[k].high;
+      from_text = to_text;
+    }
+  }
+  result.evidence["exact"] = {
+      {"statement", fmt::format("the criterion '{}' against the root condition on every region of {} > 0, for ({})", said.words("modulus"), var, scheme_ref)},
+      {"stated", said.words("modulus")},
+      {"reversible", "the first and last coefficients are equal, so the roots' product is 1 (GiNaC normal form; our kernel: " + reversible_own.evidence + ")"},
+      {"discriminant", text_of(delta) + " (over the leading coefficient squared)"},
+      {"regions", regions},
+      {"own", std::string("holds: the regions by Sturm sequences of the discriminant, in ") + var_in},
+      {"ginac", "holds: the premise in normal form, and the discriminant as a function of " + var + " alone; the regions are our kernel's"}};
+  record_certificate(result, coq_certificate(call.claim_id, call.statement, goals));
+  if (agrees) {
+    result.outcome = verdict::holds;
+    return result;
+  }
+  result.outcome = verdict::erratum;
+  result.correction = fmt::format("The scheme is stable when the roots have modulus <= 1 and the roots of modulus 1 are simple (root condition); here they "
+                                  "are simple, conjugate and of modulus 1 for {} in {}.", var, fmt::join(stable_bands, " and "));
+  result.note = "As printed, '" + said.words("modulus") + "' and the root condition disagree on a region above.";
+  return result;
+}
+
 }  // namespace simpson::verify::detail

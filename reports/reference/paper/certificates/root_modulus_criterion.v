@@ -12,43 +12,52 @@ Ltac nonzero :=
           | [ H : 0 < ?Y |- ?X <> 0 ] => replace X with Y by ring; apply Rgt_not_eq; exact H
           end
         | apply pow_nonzero; nonzero ].
+(* Not stated: root_modulus_criterion_reversible, whose two sides GiNaC evaluates to one expression (X = X checks nothing). *)
 
-Lemma root_modulus_criterion_delta_first_band :
+Lemma root_modulus_criterion_stable_band_1 :
   forall x : R,
+  (((-1) * (x ^ 2)) + ((-48) * x) + (-576)) <> 0 ->
+  (((-1) * x) + (-24)) <> 0 ->
   0 < x ->
   0 < (((-1) * x) + 8) ->
-  (((-1/144) * ((((-1) * x) + (-24)) ^ 2)) + ((1/576) * ((((-1) * (x ^ 2)) + (-48) + (22 * x)) ^ 2))) < 0.
+  ((((-1) * (x ^ 4)) + ((-576) * (x ^ 2)) + (2304 * x) + (44 * (x ^ 3))) * (/ (((-1) * (x ^ 2)) + ((-48) * x) + (-576)))) < 0.
 Proof.
   intros.
-  replace (((-1/144) * ((((-1) * x) + (-24)) ^ 2)) + ((1/576) * ((((-1) * (x ^ 2)) + (-48) + (22 * x)) ^ 2)))
-    with ((-1/576) * (((-1) * x) + 12) * (((-1) * x) + 24) * (((-1) * x) + 8) * x)
+  replace ((((-1) * (x ^ 4)) + ((-576) * (x ^ 2)) + (2304 * x) + (44 * (x ^ 3))) * (/ (((-1) * (x ^ 2)) + ((-48) * x) + (-576))))
+    with ((-1) * (((-1) * x) + 12) * (((-1) * x) + 24) * (((-1) * x) + 8) * (/ ((((-1) * x) + (-24)) ^ 2)) * x)
     by (field; repeat split; nonzero).
   assert (0 < (((-1) * x) + 12)) by nra.
   assert (0 < (((-1) * x) + 24)) by nra.
   assert (0 < ((((-1) * x) + 12) * (((-1) * x) + 24))) by (apply Rmult_lt_0_compat; assumption).
   assert (0 < (((-1) * x) + 8)) by nra.
   assert (0 < (((((-1) * x) + 12) * (((-1) * x) + 24)) * (((-1) * x) + 8))) by (apply Rmult_lt_0_compat; assumption).
+  assert (0 < (/ ((((-1) * x) + (-24)) ^ 2))) by (apply Rinv_0_lt_compat; nra).
+  assert (0 < ((((((-1) * x) + 12) * (((-1) * x) + 24)) * (((-1) * x) + 8)) * (/ ((((-1) * x) + (-24)) ^ 2)))) by (apply Rmult_lt_0_compat; assumption).
   assert (0 < x) by nra.
-  assert (0 < ((((((-1) * x) + 12) * (((-1) * x) + 24)) * (((-1) * x) + 8)) * x)) by (apply Rmult_lt_0_compat; assumption).
+  assert (0 < (((((((-1) * x) + 12) * (((-1) * x) + 24)) * (((-1) * x) + 8)) * (/ ((((-1) * x) + (-24)) ^ 2))) * x)) by (apply Rmult_lt_0_compat; assumption).
   nra.
 Qed.
 
-Lemma root_modulus_criterion_delta_second_band :
+Lemma root_modulus_criterion_stable_band_2 :
   forall x : R,
+  (((-1) * (x ^ 2)) + ((-48) * x) + (-576)) <> 0 ->
+  (((-1) * x) + (-24)) <> 0 ->
   0 < ((-12) + x) ->
   0 < (((-1) * x) + 24) ->
-  (((-1/144) * ((((-1) * x) + (-24)) ^ 2)) + ((1/576) * ((((-1) * (x ^ 2)) + (-48) + (22 * x)) ^ 2))) < 0.
+  ((((-1) * (x ^ 4)) + ((-576) * (x ^ 2)) + (2304 * x) + (44 * (x ^ 3))) * (/ (((-1) * (x ^ 2)) + ((-48) * x) + (-576)))) < 0.
 Proof.
   intros.
-  replace (((-1/144) * ((((-1) * x) + (-24)) ^ 2)) + ((1/576) * ((((-1) * (x ^ 2)) + (-48) + (22 * x)) ^ 2)))
-    with ((-1/576) * (((-1) * x) + 12) * (((-1) * x) + 24) * (((-1) * x) + 8) * x)
+  replace ((((-1) * (x ^ 4)) + ((-576) * (x ^ 2)) + (2304 * x) + (44 * (x ^ 3))) * (/ (((-1) * (x ^ 2)) + ((-48) * x) + (-576))))
+    with ((-1) * (((-1) * x) + 12) * (((-1) * x) + 24) * (((-1) * x) + 8) * (/ ((((-1) * x) + (-24)) ^ 2)) * x)
     by (field; repeat split; nonzero).
   assert (0 < (((-1) * x) + 24)) by nra.
   assert (0 < ((-12) + x)) by nra.
   assert (0 < ((((-1) * x) + 24) * ((-12) + x))) by (apply Rmult_lt_0_compat; assumption).
   assert (0 < ((-8) + x)) by nra.
   assert (0 < (((((-1) * x) + 24) * ((-12) + x)) * ((-8) + x))) by (apply Rmult_lt_0_compat; assumption).
+  assert (0 < (/ ((((-1) * x) + (-24)) ^ 2))) by (apply Rinv_0_lt_compat; nra).
+  assert (0 < ((((((-1) * x) + 24) * ((-12) + x)) * ((-8) + x)) * (/ ((((-1) * x) + (-24)) ^ 2)))) by (apply Rmult_lt_0_compat; assumption).
   assert (0 < x) by nra.
-  assert (0 < ((((((-1) * x) + 24) * ((-12) + x)) * ((-8) + x)) * x)) by (apply Rmult_lt_0_compat; assumption).
+  assert (0 < (((((((-1) * x) + 24) * ((-12) + x)) * ((-8) + x)) * (/ ((((-1) * x) + (-24)) ^ 2))) * x)) by (apply Rmult_lt_0_compat; assumption).
   nra.
 Qed.
