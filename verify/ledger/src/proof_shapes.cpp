@@ -147,7 +147,7 @@ const std::map<std::string, proof_shape>& proof_shapes() {
                      {"unprinted", argument_kind::symbols, false, "coefficients the text names but does not print (c), each one whole coefficient"}}),
          characteristic_shape});
     add({"characteristic-roots", "what a sentence says of the roots of the scheme's characteristic polynomial on the printed interval: complex or real, their product, stability",
-         "condition",
+         "scheme",
          with_where({{"scheme", argument_kind::formula, true, "a linear three-term scheme (= 0)"},
                      {"sequence", argument_kind::symbols, true, "its three states q_{j-1}, q_j, q_{j+1}", 3},
                      {"variable", argument_kind::formula, true, "the variable of the condition, a product of positive symbols", 0, "", true},
