@@ -167,6 +167,15 @@ std::optional<three_term_coefficients> linear_three_term(const ex& scheme, const
   return c;
 }
 
+bool reversible(const three_term_coefficients& terms, kernel_decision& own) {
+  own = kernel_decides_zero(terms.next - terms.previous);
+  return GiNaC::normal(terms.next - terms.previous).is_zero() && own.outcome != kernel_decision::result::nonzero;
+}
+
+ex monic_discriminant(const three_term_coefficients& terms) {
+  return GiNaC::normal((terms.current * terms.current - 4 * terms.previous * terms.next) / (terms.next * terms.next));
+}
+
 std::string reference_of(const shape_call& call, const std::string& parameter) { return call.with.at(parameter).values.front(); }
 
 }  // namespace simpson::verify::detail

@@ -82,6 +82,15 @@ struct three_term_coefficients {
 };
 std::optional<three_term_coefficients> linear_three_term(const GiNaC::ex& scheme, const std::vector<GiNaC::symbol>& sequence);
 
+/// Whether the scheme is reversible, its q_{j+1} and q_{j-1} coefficients equal (the characteristic
+/// roots' product is 1): in GiNaC's normal form, and not refuted by our kernel, whose decision is `own`.
+bool reversible(const three_term_coefficients& terms, kernel_decision& own);
+
+/// The discriminant of the characteristic polynomial divided by its leading coefficient squared,
+/// (P₁² − 4P₀P₂)/P₂², in normal form: the sign of the discriminant, and a function of ωh alone for a
+/// scheme in ω and h (the unscaled one carries powers of h).
+GiNaC::ex monic_discriminant(const three_term_coefficients& terms);
+
 /// The reference an argument gives.
 std::string reference_of(const shape_call& call, const std::string& parameter);
 

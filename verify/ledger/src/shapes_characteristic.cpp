@@ -36,9 +36,13 @@ std::optional<std::array<ex, 3>> quadratic_coefficients(const ex& p, const GiNaC
   return c;
 }
 
+/// r^k as a term's factor ("" for k = 0, "r", "r^2").
 std::string power_text(const GiNaC::symbol& r, std::size_t k) {
-  return k == 0 ? std::string("1") : k == 1 ? r.get_name() : r.get_name() + "^" + std::to_string(k);
+  return k == 0 ? std::string() : k == 1 ? r.get_name() : r.get_name() + "^" + std::to_string(k);
 }
+
+/// The name of the coefficient of r^k: "r^0", "r", "r^2".
+std::string coefficient_name(const GiNaC::symbol& r, std::size_t k) { return k == 0 ? r.get_name() + "^0" : power_text(r, k); }
 
 }  // namespace
 
@@ -100,14 +104,14 @@ claim_result characteristic_shape(const shape_call& call, const run_context& ctx
   for (const auto& [k, u] : holes) {
     solved[u] = GiNaC::normal(derived[k] * scale);
     solved_text[u.get_name()] = fmt::format("{} (the {} coefficient of ({}) at (1, {}, {}^2), times {})", text_of(solved[u]),
-                                            k == 0 ? r.get_name() + "^0" : power_text(r, k), scheme_ref, r.get_name(), r.get_name(), text_of(scale));
+                                            coefficient_name(r, k), scheme_ref, r.get_name(), r.get_name(), text_of(scale));
   }
   // The statement: Q_lead · scheme(1, r, r²) = P_lead · printed, the unprinted coefficients put in.
   const ex lhs = (*stated)[*lead] * scheme.subs(geometric);
   const ex rhs = derived[*lead] * printed.subs(solved);
   const std::string what = fmt::format("({}) at {} = 1, {} = {}, {} = {}^2 is ({}) times {}", scheme_ref, q[0].get_name(), q[1].get_name(), r.get_name(),
                                        q[2].get_name(), r.get_name(), printed_ref, text_of(GiNaC::normal(1 / scale)));
-  std::string correction = "as derived from (" + scheme_ref + "), scaled to the printed " + power_text(r, *lead) + " coefficient:";
+  std::string correction = "as derived from (" + scheme_ref + "), scaled to the printed " + coefficient_name(r, *lead) + " coefficient:";
   for (std::size_t k = 3; k-- > 0;) {
     correction += fmt::format(" ({}){}{}", text_of(GiNaC::normal(derived[k] * scale)), k > 0 ? " " + power_text(r, k) : std::string(), k > 0 ? " +" : "");
   }
@@ -122,7 +126,7 @@ claim_result characteristic_shape(const shape_call& call, const run_context& ctx
       named += (named.empty() ? "" : ", ") + u.get_name() + " = " + text_of(solved[u]);
       for (std::size_t other = 3; other-- > 0;) {  // equal to a printed one (c = a: the roots' product is 1)
         if (!holes.count(other) && GiNaC::normal(solved[u] - (*stated)[other]).is_zero()) {
-          named += ", the printed " + (other == 0 ? r.get_name() + "^0" : power_text(r, other)) + " coefficient";
+          named += ", the printed " + coefficient_name(r, other) + " coefficient";
           break;
         }
       }
@@ -180,9 +184,7 @@ claim_result characteristic_roots_shape(const shape_call& call, const run_contex
   const kernel_decision product_own = kernel_decides_zero(terms->previous - product * terms->next);
   // The discriminant's sign on the interval, in both kernels.
   const ex high = interval_end(condition, v);
-  // The monic polynomial's discriminant (P₁² − 4P₀P₂)/P₂²: the same sign, and a function of the
-  // condition's variable alone when the scheme is (a scheme in ω and h, of ωh once divided by P₂).
-  const ex delta = GiNaC::normal((terms->current * terms->current - 4 * terms->previous * terms->next) / (terms->next * terms->next));
+  const ex delta = monic_discriminant(*terms);
   const std::optional<one_variable> g = in_variable(delta, v);
   const std::optional<rational> c = g ? g->exact(high) : std::nullopt;
   if (!g || !c || *c <= 0) {
@@ -255,13 +257,13 @@ claim_result root_criterion_shape(const shape_call& call, const run_context& ctx
   claim_result result;
   result.printed = read.printed();
   const std::optional<three_term_coefficients> terms = linear_three_term(scheme, q);
-  const kernel_decision reversible_own = terms ? kernel_decides_zero(terms->next - terms->previous) : kernel_decision{};
-  if (!terms || !GiNaC::normal(terms->next - terms->previous).is_zero() || reversible_own.outcome == kernel_decision::result::nonzero) {
+  kernel_decision reversible_own;
+  if (!terms || !reversible(*terms, reversible_own)) {
     result.outcome = verdict::fails;
     result.note = "The shape judges criteria for linear three-term schemes whose first and last coefficients are equal; (" + scheme_ref + ") is not one.";
     return result;
   }
-  const ex delta = GiNaC::normal((terms->current * terms->current - 4 * terms->previous * terms->next) / (terms->next * terms->next));
+  const ex delta = monic_discriminant(*terms);
   const std::optional<one_variable> g = in_variable(delta, v);
   if (!g) {
     result.outcome = verdict::fails;

@@ -24,15 +24,17 @@ using GiNaC::ex;
 
 namespace {
 
-/// The factors of a printed product as the text writes them: each sum (or power of one), and the
-/// rest (numbers, symbols and their powers) multiplied into one prefactor, listed first; the sums by
+/// A factor the text writes as a sum, or a power of one.
+bool written_as_sum(const ex& f) { return GiNaC::is_a<GiNaC::add>(f) || (GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::add>(f.op(0))); }
+
+/// The factors of a printed product as the text writes them: each sum (written_as_sum), and the rest
+/// (numbers, symbols and their powers) multiplied into one prefactor, listed first; the sums by
 /// their text (GiNaC orders a product by hash, which differs from run to run).
 std::vector<ex> printed_factors(const ex& product) {
   std::vector<ex> sums;
   ex prefactor = 1;
   for (const ex& f : GiNaC::is_a<GiNaC::mul>(product) ? GiNaC::exvector(product.begin(), product.end()) : GiNaC::exvector{product}) {
-    const bool sum = GiNaC::is_a<GiNaC::add>(f) || (GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::add>(f.op(0)));
-    if (sum) {
+    if (written_as_sum(f)) {
       sums.push_back(f);
     } else {
       prefactor *= f;
@@ -79,8 +81,8 @@ claim_result stability_interval_shape(const shape_call& call, const run_context&
     const ex scheme = read.formula("scheme");
     const std::vector<GiNaC::symbol> q = read.symbols("sequence");
     const std::optional<three_term_coefficients> terms = linear_three_term(scheme, q);
-    const kernel_decision reversible_own = terms ? kernel_decides_zero(terms->next - terms->previous) : kernel_decision{};
-    if (!terms || !GiNaC::normal(terms->next - terms->previous).is_zero() || reversible_own.outcome == kernel_decision::result::nonzero) {
+    kernel_decision reversible_own;
+    if (!terms || !reversible(*terms, reversible_own)) {
       result.printed = read.printed();
       result.outcome = verdict::fails;
       result.note = "The shape decides linear three-term schemes whose " + q[2].get_name() + " and " + q[0].get_name() + " coefficients are equal; (" +
@@ -264,13 +266,11 @@ claim_result factor_signs_shape(const shape_call& call, const run_context& ctx) 
   const ex high = interval_end(condition, v);
   const std::string var = text_of(v), expression = reference_of(call, "expression");
   json factors = json::array();
-  std::vector<int> signs;
   std::vector<proof_goal> goals;
   std::vector<std::string> proved, unlike;
   bool kernels_agree = true, sums_as_stated = true, ginac_decided = true;
   int product_sign = 1;
-  const std::vector<ex> all_factors = printed_factors(product);
-  for (const ex& f : all_factors) {
+  for (const ex& f : printed_factors(product)) {
     const std::optional<one_variable> g = in_variable(f, v);
     const std::optional<rational> c = g ? g->exact(high) : std::nullopt;
     if (!g || !c || *c <= 0) {
@@ -292,14 +292,12 @@ claim_result factor_signs_shape(const shape_call& call, const run_context& ctx) 
     const int theirs = ginac_sign_on(*g, v, high, ginac_proof);
     kernels_agree = kernels_agree && (theirs == 0 || theirs == own);
     ginac_decided = ginac_decided && theirs != 0;
-    signs.push_back(own);
     product_sign *= own;
     const std::string text = text_of(f);
     factors.push_back({{"factor", text}, {"own", sign_word(own) + (inside ? ": a root or pole inside" : "")}, {"ginac", ginac_proof}});
     proved.push_back(text + " " + sign_word(own));
     if (own != stated) unlike.push_back(text);
-    const bool prefactor = &f == &all_factors.front() && !GiNaC::is_a<GiNaC::add>(f) && !(GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::add>(f.op(0)));
-    if (own != stated && !prefactor) sums_as_stated = false;
+    if (own != stated && written_as_sum(f)) sums_as_stated = false;  // the prefactor is the one factor that is not a sum
     if (own != 0) goals.push_back(g->sign_goal_on("factor_" + std::to_string(goals.size() + 1), own, *c));
   }
   const bool factors_as_stated = unlike.empty();
