@@ -128,6 +128,28 @@ TEST(FormulaReference, DefinitionsOfAFunctionAndByAChain) {
   EXPECT_THROW(read_definition(d, macros, "two"), std::invalid_argument);  // its left side is no function of one symbol
 }
 
+TEST(FormulaReference, AFunctionDefinedInAnotherVariableAndItsDerivative) {
+  // q(t) printed in theta, with t = h theta: read in t (theta = t/h), so q(h) = b and dq/dt = (b - a)/h.
+  const paper_source d = document(R"(\begin{equation}\label{basis} \varphi_0(\theta) = 1 - \theta \,,\,\, \varphi_1(\theta) = \theta \end{equation}
+\begin{equation}\label{interp} q(t) = a \, \varphi_0(\theta) + b \, \varphi_1(\theta) \end{equation}
+Set $t = h \, \theta$ and $t = 2 \, h \, \theta$.)");
+  const auto macros = defined_macros(d.text);
+  const GiNaC::ex a = paper_symbols()["a"], b = paper_symbols()["b"], h = paper_symbols()["h"], theta = paper_symbols()["theta"];
+  std::vector<definition> defs{read_definition(d, macros, "basis#1"), read_definition(d, macros, "basis#2"), read_definition(d, macros, "interp"),
+                               read_definition(d, macros, "inline:t = h")};
+  const auto value = [&](const std::string& tex, const std::vector<definition>& with) { return with_definitions(read_reference(d, macros, tex).value, with); };
+  EXPECT_TRUE(GiNaC::normal(value("$q(h)$", defs) - b).is_zero()) << value("$q(h)$", defs);
+  EXPECT_TRUE(GiNaC::normal(value("${{\\dd q}\\over{\\dd t}}(0)$", defs) - (b - a) / h).is_zero()) << value("${{\\dd q}\\over{\\dd t}}(0)$", defs);
+  // Without an argument: dq/dt in t, then t = h theta put in (a constant here).
+  EXPECT_TRUE(GiNaC::normal(value("${{\\dd q}\\over{\\dd t}}$", defs) - (b - a) / h).is_zero());
+  // The change read as printed: t = 2 h theta makes q(h) the value at theta = 1/2.
+  defs.back() = read_definition(d, macros, "inline:t = 2");
+  EXPECT_TRUE(GiNaC::normal(value("$q(h)$", defs) - (a + b) / 2).is_zero()) << value("$q(h)$", defs);
+  // Without it, q's value is in theta, not in t: q(h) stays a function of theta.
+  defs.pop_back();
+  EXPECT_TRUE(value("$q(h)$", defs).has(theta));
+}
+
 // ---- our kernel ----
 
 using detail::kernel_decides_zero;
@@ -220,6 +242,22 @@ Double: on $0 < \om h < 2$ the equation has two complex conjugate roots, of prod
 Criterion one: the scheme is stable when the roots are of modulus smaller than 1.
 Criterion two: the scheme is stable when the roots are of modulus at most 1 and simple.
 Criterion three: the scheme is stable when the roots are of modulus at most 1.
+\begin{equation}\label{phis} \varphi_0(\theta) = 1 - \theta \,,\,\, \varphi_1(\theta) = \theta \end{equation}
+\begin{equation}\label{linear} q(t) = a \, \varphi_0(\theta) + b \, \varphi_1(\theta) \end{equation}
+With $t = h \, \theta$ the nodes are $q(0) = a$ and $q(h) = b$, not $q(h) = a$; one side alone, $q(h)$.
+\begin{equation}\label{slope} g = {{\dd q}\over{\dd t}}(0) = \frac{b - a}{h} = {{\dd q}\over{\dd t}} \end{equation}
+\begin{equation}\label{trapezoid} \int_0^1 \psi(x) \, \dd x \simeq \frac{1}{2} \big( \psi(0) + \psi(1) \big) \end{equation}
+\begin{equation}\label{midpoint} \int_0^h \psi(t) \, \dd t \simeq h \, \psi\Big( \frac{h}{2} \Big) \end{equation}
+Trapezoids are exact for polynomials of degree one. Trapezoids, some say, are exact for polynomials of degree two.
+Trapezoids, said loosely, are exact for polynomials of degree zero. Trapezoids are exact for polynomials of degree at most 1.
+One step's action, $\int_0^h \Big[ \frac{m}{2} \Big( {{\dd q}\over{\dd t}} \Big)^2 - V(q) \Big] \, \dd t$, by a rule:
+\begin{equation}\label{ltrap} L = \frac{m}{2 h} (b - a)^2 - \frac{h}{2} \big( V(a) + V(b) \big) \end{equation}
+\begin{equation}\label{lmid} L = \frac{m}{2 h} (b - a)^2 - h \, V\Big( \frac{a + b}{2} \Big) \end{equation}
+\begin{equation}\label{ode} {{\dd^2 q}\over{\dd t^2}} + \om^2 q = 0 \end{equation}
+\begin{equation}\label{odewrong} {{\dd^2 q}\over{\dd t^2}} + 2 \om^2 q = 0 \end{equation}
+\begin{equation}\label{euler} p_{j+1} - p_j = - h \om^2 q_{j+1} \,,\,\, q_{j+1} - q_j = h \, p_j \end{equation}
+\begin{equation}\label{hamilton} {{\dd p}\over{\dd t}} + \om^2 q = 0 \,,\,\, {{\dd q}\over{\dd t}} = p \end{equation}
+\begin{equation}\label{slopemiddle} g = {{\dd q}\over{\dd t}}(0) = \frac{b - a}{2 h} = \frac{b - a}{h} \end{equation}
 )";
 
 const std::string declarations = R"(
@@ -227,7 +265,7 @@ const std::string declarations = R"(
 title = "Shapes under test"
 [symbols]
 positive = ['m', '\omega', 'h']
-real = ['q', 'p', 'q_0', 'q_1', 'q_m', 'p_0', 'p_1', 'q_{j-1}', 'q_j', 'q_{j+1}', 'a', 'b', 'k', 'x', 'r', 'c']
+real = ['q', 'p', 'q_0', 'q_1', 'q_m', 'p_0', 'p_1', 'q_{j-1}', 'q_j', 'q_{j+1}', 'a', 'b', 'k', 'x', 'r', 'c', '\theta', '\psi', 'p_j', 'p_{j+1}']
 )";
 
 std::string record(const std::string& id, const std::string& shape, const std::string& with) {
@@ -415,6 +453,84 @@ TEST_F(ShapesOnADocument, StatedOrder) {
             verdict::text_changed);
 }
 
+TEST_F(ShapesOnADocument, EqualSides) {
+  const std::string where = R"(where = ["phis#1", "phis#2", "linear", 'inline:t = h \, \theta'])";
+  const claim_result holds = run("equal-sides", "{ equations = ['inline:q(0) = a', 'inline:q(h) = b', 'slope'], " + where + " }");
+  EXPECT_EQ(holds.outcome, verdict::holds) << holds.note << holds.evidence.dump();
+  // g names what the chain defines: not compared; the three other sides are, against dq/dt(0).
+  EXPECT_EQ(holds.evidence["exact"]["sides"].size(), 4u) << holds.evidence.dump();
+  EXPECT_EQ(holds.evidence["exact"]["own"].get<std::string>().rfind("holds", 0), 0u) << holds.evidence.dump();
+  EXPECT_FALSE(holds.certificate.empty());
+  // A wrong node; and a wrong middle side whose chain's first and last sides agree (a check of the
+  // ends alone would pass it).
+  const claim_result node = run("equal-sides", "{ equations = ['inline:q(h) = a'], " + where + " }");
+  EXPECT_EQ(node.outcome, verdict::erratum);
+  EXPECT_EQ(node.correction, "as derived from the definitions: q(h) = b, not a");
+  const claim_result middle = run("equal-sides", "{ equations = ['slopemiddle'], " + where + " }");
+  EXPECT_EQ(middle.outcome, verdict::erratum) << middle.evidence.dump();
+  EXPECT_NE(middle.correction.find("not \\frac{b - a}{2 h}"), std::string::npos) << middle.correction;
+  // The change of variable is needed: without it q's value stays in theta.
+  EXPECT_EQ(run("equal-sides", R"({ equations = ['inline:q(h) = b'], where = ["phis#1", "phis#2", "linear"] })").outcome, verdict::erratum);
+}
+
+TEST_F(ShapesOnADocument, QuadratureExactness) {
+  const auto on = [&](const std::string& rule, const std::string& sentence) {
+    return run("quadrature-exactness", "{ rule = \"" + rule + "\", integral = \"" + rule + ":lhs\", function = ['\\psi'], sentence = '" + sentence + "' }");
+  };
+  const claim_result holds = on("trapezoid", "Trapezoids are exact for polynomials of degree {degree}.");
+  EXPECT_EQ(holds.outcome, verdict::holds) << holds.note << holds.evidence.dump();
+  EXPECT_EQ(holds.evidence["exact"]["exact_up_to_degree"], 1);
+  EXPECT_EQ(holds.evidence["exact"]["monomials"].size(), 3u);  // degrees 0 and 1 exact, 2 not
+  EXPECT_EQ(on("trapezoid", "Trapezoids are exact for polynomials of degree at most {degree}.").outcome, verdict::holds);
+  const claim_result two = on("trapezoid", "Trapezoids, some say, are exact for polynomials of degree {degree}.");
+  EXPECT_EQ(two.outcome, verdict::erratum);
+  EXPECT_EQ(two.correction, "The rule is exact for every polynomial of degree <= 1 and not for degree 2 (the printed words say 'two')");
+  // The stated degree is the sharp one: exact for degree 0 is true but not what the rule does (a check
+  // of the stated degree alone would pass it).
+  EXPECT_EQ(on("trapezoid", "Trapezoids, said loosely, are exact for polynomials of degree {degree}.").outcome, verdict::erratum);
+  // Over [0, h], the limits symbolic: the midpoint rule is exact through degree 1.
+  const claim_result midpoint = on("midpoint", "Trapezoids are exact for polynomials of degree {degree}.");
+  EXPECT_EQ(midpoint.outcome, verdict::holds) << midpoint.note << midpoint.evidence.dump();
+  EXPECT_EQ(midpoint.evidence["exact"]["monomials"][1]["rule"], "(h^2)/(2)");
+}
+
+TEST_F(ShapesOnADocument, DiscreteLagrangian) {
+  // The action of one step along the affine interpolant, by the trapezoidal rule (on [0, 1], its
+  // nodes mapped to 0 and h) and by the midpoint rule (printed on [0, h]): each gives its own L,
+  // and V stays uninterpreted (our kernel: every polynomial V of degree <= 4).
+  const auto by = [&](const std::string& rule, const std::string& printed) {
+    return run("discrete-lagrangian", "{ printed = \"" + printed + "\", integral = 'inline:One step', rule = \"" + rule +
+                                          "\", function = ['\\psi'], state = ['q'], where = [\"phis#1\", \"phis#2\", \"linear\", 'inline:t = h \\, \\theta'] }");
+  };
+  const claim_result trapezoid = by("trapezoid", "ltrap");
+  EXPECT_EQ(trapezoid.outcome, verdict::holds) << trapezoid.note << trapezoid.evidence.dump();
+  EXPECT_NE(trapezoid.evidence["exact"]["own"].get<std::string>().find("every polynomial V"), std::string::npos) << trapezoid.evidence.dump();
+  EXPECT_FALSE(trapezoid.certificate.empty());
+  EXPECT_EQ(by("midpoint", "lmid").outcome, verdict::holds);
+  // The rule is read: each L against the other rule is an erratum, corrected by the derived one.
+  const claim_result crossed = by("trapezoid", "lmid");
+  EXPECT_EQ(crossed.outcome, verdict::erratum);
+  EXPECT_NE(crossed.correction.find("as derived: (lmid) = "), std::string::npos) << crossed.correction;
+  EXPECT_EQ(by("midpoint", "ltrap").outcome, verdict::erratum);
+}
+
+TEST_F(ShapesOnADocument, Consistency) {
+  const std::string on = R"(step = ['h'], index = "j")";
+  const claim_result holds = run("consistency", R"({ scheme = ["sv"], equation = ["ode"], )" + on + " }");
+  EXPECT_EQ(holds.outcome, verdict::holds) << holds.note << holds.evidence.dump();
+  EXPECT_EQ(holds.evidence["exact"]["own"].get<std::string>().rfind("holds", 0), 0u) << holds.evidence.dump();
+  const claim_result wrong = run("consistency", R"({ scheme = ["sv"], equation = ["odewrong"], )" + on + " }");
+  EXPECT_EQ(wrong.outcome, verdict::erratum);
+  EXPECT_EQ(wrong.correction, "as derived: label sv is consistent with omega^2*q+d^2q/dt^2 = 0") << wrong.correction;
+  // A first-order system, each relation against its own equation, in order; swapped, neither
+  // relation's leading term is a multiple of the equation it is paired with.
+  EXPECT_EQ(run("consistency", R"({ scheme = ["euler#1", "euler#2"], equation = ["hamilton#1", "hamilton#2"], )" + on + " }").outcome, verdict::holds);
+  EXPECT_EQ(run("consistency", R"({ scheme = ["euler#1", "euler#2"], equation = ["hamilton#2", "hamilton#1"], )" + on + " }").outcome, verdict::erratum);
+  // With V uninterpreted: our kernel for V(x) = x^k, k = 0..4.
+  const claim_result general = run("consistency", R"({ scheme = ["el"], equation = ['$m {{\dd^2 q}\over{\dd t^2}} + m \omega^2 q = 0$'], )" + on + " }");
+  EXPECT_EQ(general.outcome, verdict::holds) << general.evidence.dump();
+}
+
 TEST_F(ShapesOnADocument, IdentityWithAFunctionDefined) {
   // V(q) = k q^2/2 put in F = -V'(x): -k x. Without the definition V' stays uninterpreted.
   const claim_result holds = run("identity", R"({ lhs = "force", rhs = '$-k x$', where = ["potential energy"] })");
@@ -598,6 +714,9 @@ TEST(ShapeRecords, BadRecordsAreNamedWithTheirLineAndArgument) {
   EXPECT_NE(error_of("identity", R"({ lhs = "sum", rhs = "expanded", extra = "x" })").find("field 'with.extra': not an argument"),
             std::string::npos);
   EXPECT_NE(error_of("identity", R"({ lhs = ["sum"], rhs = "expanded" })").find("field 'with.lhs': must be one string"), std::string::npos);
+  EXPECT_NE(error_of("equal-sides", R"({ equations = "sum" })").find("field 'with.equations': must be an array"), std::string::npos);
+  EXPECT_NE(error_of("equal-sides", R"({ equations = ['inline:one side alone'] })").find("field 'with.equations'"), std::string::npos);
+  EXPECT_NE(error_of("equal-sides", R"({ equations = ['inline:one side alone'] })").find("is not an equation"), std::string::npos);
   EXPECT_NE(error_of("identity", R"({ lhs = "nolabel", rhs = "expanded" })").find("field 'with.lhs': no \\label{nolabel}"),
             std::string::npos);
   EXPECT_NE(error_of("identity", R"({ lhs = "sum", rhs = '$a +* b$' })").find("field 'with.rhs': "), std::string::npos);

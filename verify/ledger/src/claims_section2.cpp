@@ -75,30 +75,6 @@ claim_result check_classical_euler_lagrange(const run_context&) {
       "chain rule on V((q_l + q_r)/2).");
 }
 
-claim_result check_classical_consistency_computed(const run_context&) {
-  // Truncation error of (schema-ordre-deux)/m for V = m w^2 q^2/2 at the exact solution q = cos t:
-  // q_{j+-1} = cos(theta), q_j = 1; cos through theta^14 leaves the series exact below theta^12.
-  const auto par = unit_oscillator_in_theta();
-  const symbolic c(cos_taylor(14), make_polynomial({rational(1)}));
-  const auto gradient = [&](const symbolic& v) { return par.force_gradient(v); };
-  const symbolic T = classical_scheme_residual(par.m(), par.h(), gradient, c, symbolic(1), c);
-  const auto series = laurent_coefficients(T, 8);
-  json evidence;
-  evidence["exact"] = {{"method", "exact series"},
-                       {"reduction", std::string(unit_reduction) + "; exact solution q(t) = cos t, q_j = 1"},
-                       {"truncation_error_over_q_j", series_to_string(series, "θ") + " + O(θ^8)"}};
-  const bool consistent = !series.empty() && series.front().first == 2;
-  return confirmed_if(consistent, evidence,
-                      "Checked for the harmonic potential: the truncation error is -(omega h)^2 omega^2/6 q_j + O(h^4), "
-                      "second order.");
-}
-
-claim_result check_classical_consistency(const run_context& ctx) {
-  const quoted_sentence said = quote(ctx, "This numerical scheme is clearly {relation} with the second order");
-  const bool affirmed = said.choice("relation", affirmed_or_denied("consistent")) == "affirmed";
-  return as_the_words_say(check_classical_consistency_computed(ctx), affirmed, "The scheme (schema-ordre-deux) is consistent with (oscillateur-nonlineaire): its truncation error is O(h^2)");
-}
-
 /// y_{j+1} from Φ, with p_j = −∂L_d/∂q_l(q_j, q_{j+1}) and p_{j+1} = ∂L_d/∂q_r(q_j, q_{j+1}).
 claim_result check_newmark_discrete_system(const run_context&) {
   const proof p = prove_zero_on_grid(
@@ -189,47 +165,12 @@ claim_result check_newmark_identification(const run_context& ctx) {
                       "Over the whole family det - 1 = " + det_string + ", which vanishes for gamma = 1/2 and any beta.");
 }
 
-/// (systeme-dynamique-discret-ordre-2), the first relation divided by h, on the exact solutions
-/// (q, p) = (cos t, -sin t) and (sin t, cos t) at m = omega = 1: both residuals are O(theta^2) and
-/// O(theta^3), so the relations tend to dp/dt + m omega^2 q = 0 and dq/dt = p/m.
-claim_result check_hamilton_consistency_computed(const run_context&) {
-  const auto par = unit_oscillator_in_theta();
-  const symbolic c(cos_taylor(14), make_polynomial({rational(1)})), s(sin_taylor(14), make_polynomial({rational(1)}));
-  json runs = json::array();
-  bool consistent = true;
-  for (const bool cosine : {true, false}) {
-    const phase_point<symbolic> y = cosine ? phase_point<symbolic>{symbolic(0), symbolic(1)} : phase_point<symbolic>{symbolic(1), symbolic(0)};
-    const phase_point<symbolic> next = cosine ? phase_point<symbolic>{symbolic(0) - s, c} : phase_point<symbolic>{c, s};
-    const phase_point<symbolic> r = newmark_system_residual(par, y, next);
-    const auto first = laurent_coefficients(r.p / par.h(), 8), second = laurent_coefficients(r.q, 8);
-    consistent = consistent && !first.empty() && first.front().first >= 1 && !second.empty() && second.front().first >= 1;
-    runs.push_back({{"solution", cosine ? "q = cos t, p = -sin t" : "q = sin t, p = cos t"},
-                    {"first_over_h", series_to_string(first, "θ") + " + O(θ^8)"},
-                    {"second", series_to_string(second, "θ") + " + O(θ^8)"}});
-  }
-  json evidence;
-  evidence["exact"] = {{"method", "exact series"},
-                       {"reduction", std::string(unit_reduction) + "; the two relations on two exact solutions (Taylor through theta^14)"},
-                       {"residuals", runs}};
-  return confirmed_if(consistent, evidence,
-                      "Both residuals vanish as h -> 0 (the first, divided by h, is O(h^2); the second O(h^2) as well): the "
-                      "system is a consistent, second-order discretization of dp/dt + m omega^2 q = 0, dq/dt = p/m.");
-}
-
-claim_result check_hamilton_consistency(const run_context& ctx) {
-  const quoted_sentence said = quote(ctx, "These relations are {relation} with the first order Hamilton version");
-  const bool affirmed = said.choice("relation", affirmed_or_denied("consistent")) == "affirmed";
-  return as_the_words_say(check_hamilton_consistency_computed(ctx), affirmed, "The relations (systeme-dynamique-discret-ordre-2) are consistent with dp/dt + m omega^2 q = 0, dq/dt = p/m");
-}
-
 }  // namespace
 
 void add_section2_checks(check_registry& checks) {
   checks.add("action-range", check_action_range);
   checks.add("classical-euler-lagrange", check_classical_euler_lagrange);
-  checks.add("classical-consistency", check_classical_consistency);
   checks.add("newmark-discrete-system", check_newmark_discrete_system);
-  checks.add("hamilton-consistency", check_hamilton_consistency);
   checks.add("newmark-matrix", check_newmark_matrix);
   checks.add("newmark-identification", check_newmark_identification);
   checks.add("newmark-stability", check_newmark_stability);

@@ -101,31 +101,6 @@ claim_result check_qm_not_affine(const run_context& ctx) {
   return identity(p, "What was proved: " + proved + ".");
 }
 
-/// T_h(q_j)/q_j for m = ω = 1 as an exact series in θ, from the core's residual at the exact
-/// solution q(t) = cos t (q_{j±1} = cos θ, q_j = 1); cos through θ^20 makes every coefficient below
-/// θ^18 exact. For any exact solution q_{j+1} + q_{j−1} = 2 cos(θ) q_j, so T_h(q_j) = ω² F(ωh) q_j.
-std::vector<std::pair<long, rational>> truncation_series(long below) {
-  const auto par = unit_oscillator_in_theta();
-  const symbolic c(cos_taylor(20), make_polynomial({rational(1)}));
-  return laurent_coefficients(three_term_residual(par, c, symbolic(1), c), below);
-}
-
-claim_result check_scheme_consistency_computed() {
-  const auto series = truncation_series(10);
-  json evidence;
-  evidence["exact"] = {{"method", "exact series"},
-                       {"reduction", std::string(unit_reduction) + "; exact solution q = cos t"},
-                       {"truncation_error_over_q_j", series_to_string(series, "θ") + " + O(θ^10)"}};
-  return confirmed_if(!series.empty() && series.front().first > 0, evidence);
-}
-
-claim_result check_scheme_consistency(const run_context& ctx) {
-  const quoted_sentence said = quote(ctx, "The scheme (\\ref{schema-ordre-3}) is {relation} with the ordinary differential equation");
-  const bool affirmed = said.choice("relation", affirmed_or_denied("consistent")) == "affirmed";
-  return as_the_words_say(check_scheme_consistency_computed(), affirmed,
-                          "The scheme (schema-ordre-3) is consistent with q'' + omega^2 q = 0: its truncation error vanishes as h -> 0");
-}
-
 claim_result check_taylor_display(const run_context&) {
   // q(t) = t^k about t_j, k = 0..6: q(t_j ± h) against the printed and the corrected sixth term.
   const symbolic h = symbolic::variable();
@@ -228,7 +203,6 @@ void add_section5_checks(check_registry& checks) {
   checks.add("gear-partials", check_gear_partials);
   checks.add("internal-second-order", check_internal_second_order);
   checks.add("qm-not-affine", check_qm_not_affine);
-  checks.add("scheme-consistency", check_scheme_consistency);
   checks.add("taylor-display", check_taylor_display);
   checks.add("discriminant-factorization", check_discriminant_factorization);
 }

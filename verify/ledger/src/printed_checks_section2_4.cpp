@@ -62,26 +62,6 @@ printed_outcome classical_euler_lagrange(const paper_reading& r) {
   return both(o, scheme);
 }
 
-/// (systeme-dynamique-discret-ordre-2) on smooth p(t), q(t): its leading terms are the printed
-/// first-order Hamilton equations.
-printed_outcome hamilton_consistency(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
-  const std::vector<smooth_state> states{{d.p_j, "p", 0}, {d.p_next, "p", d.h}, {d.q_j, "q", 0}, {d.q_next, "q", d.h}};
-  const auto relation = [&r](const char* name) { return printed_side(r, name, 0) - printed_side(r, name, 1); };
-  const phase_point<ex> core = newmark_system_residual(parameters(d), phase_point<ex>{d.p_j, d.q_j}, phase_point<ex>{d.p_next, d.q_next});
-  return both(consistent_with("first relation", relation("systeme-dynamique-discret-ordre-2#0"), core.p, relation("Hamilton dp/dt"), states, d.h),
-              consistent_with("second relation", relation("systeme-dynamique-discret-ordre-2#1"), core.q, relation("Hamilton dq/dt"), states, d.h));
-}
-
-/// (schema-ordre-deux) on a smooth q(t), V uninterpreted: its leading term is (oscillateur-nonlineaire).
-printed_outcome classical_consistency(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
-  const std::vector<smooth_state> states{{d.q_prev, "q", -d.h}, {d.q_j, "q", 0}, {d.q_next, "q", d.h}};
-  return consistent_with("(schema-ordre-deux)", printed_side(r, "schema-ordre-deux"),
-                         classical_scheme_residual(d.m, d.h, general_force, d.q_prev, d.q_j, d.q_next),
-                         printed_side(r, "oscillateur-nonlineaire", 0) - printed_side(r, "oscillateur-nonlineaire", 1), states, d.h);
-}
-
 printed_outcome newmark_system(const paper_reading& r) {
   const symbolic_derivation& d = derivation();
   // p_{j+1} = dL_d/dq_r (q_j, q_{j+1}) and p_j = -dL_d/dq_l (q_j, q_{j+1}), as derived.
@@ -122,95 +102,13 @@ printed_outcome newmark_matrix(const paper_reading& r) {
   return o;
 }
 
-/// (q2t) with the printed basis functions (fonctions-de-base), t = h theta: at the printed points it
-/// takes the printed values. The core's interpolant is the derived one (solved through the nodes).
-printed_outcome interpolant_nodal(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
-  const char* basis[] = {"varphi_0", "varphi_1/2", "varphi_1"};
-  ex q_of_theta = printed_side(r, "q2t");
-  for (int k = 0; k < 3; ++k) {
-    q_of_theta = q_of_theta.subs(apply_function(basis[k], {d.theta}) == printed_side(r, "fonctions-de-base#" + std::to_string(k)));
-  }
-  printed_outcome o;
-  o.property = true;
-  o.holds = true;
-  for (const char* name : {"q(0)", "q(h/2)", "q(h)"}) {
-    const ex& at = printed_side(r, name, 0);  // q(t_0), as read
-    const ex t0 = GiNaC::is_a<GiNaC::function>(at) && at.nops() == 1 ? at.op(0) : ex(GiNaC::symbol("not_q_of_t"));
-    const ex gap = GiNaC::normal(q_of_theta.subs(d.theta == t0 / d.h) - printed_side(r, name, 1));
-    o.holds = o.holds && gap.is_zero();
-    o.proved += std::string(o.proved.empty() ? "" : "; ") + "printed (q2t) at t = " + text_of(t0) + " minus the printed value = " + text_of(gap);
-  }
-  const ex core = quadratic_interpolant(d.q_l, d.q_m, d.q_r, d.theta);
-  compare_core(o, "q(h theta)", GiNaC::normal(d.interpolant.subs(d.t == d.h * d.theta)), core);
-  const ex printed_gap = GiNaC::normal(q_of_theta - core);
-  o.derived += "; printed (q2t) with (fonctions-de-base) − core = " + text_of(printed_gap);
-  o.holds = o.holds && printed_gap.is_zero();
-  return o;
-}
-
-/// A derivative formula of q_l, q_m, q_r (the values at t = 0, h/2, h) is exact on quadratics: on
-/// the values of c0 + c1 t + c2 t², as written, it is the derivative c1 + 2 c2 t at `at`. That is
-/// what a certificate states (formula = derived is one normal form for GiNaC).
-proof_goal exact_on_quadratics(const std::string& name, const ex& formula, const ex& at) {
-  const symbolic_derivation& d = derivation();
-  const GiNaC::symbol c0("c0"), c1("c1"), c2("c2");
-  const auto P = [&](const ex& t) { return c0 + c1 * t + c2 * t * t; };
-  return decided(name, formula.subs(GiNaC::lst{d.q_l == P(0), d.q_m == P(d.h / 2), d.q_r == P(d.h)}), c1 + 2 * c2 * at);
-}
-
-printed_outcome gear_derivatives(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
-  printed_outcome o = both(compare("g_l", printed_side(r, "derivees-gear#0"), d.g_l, gear_left(d.q_l, d.q_m, d.q_r, d.h)),
-                           compare("g_r", printed_side(r, "derivees-gear#1"), d.g_r, gear_right(d.q_l, d.q_m, d.q_r, d.h)));
-  add_goal(o, exact_on_quadratics("printed_exact", printed_side(r, "derivees-gear#0"), 0), true);
-  add_goal(o, exact_on_quadratics("printed_exact", printed_side(r, "derivees-gear#1"), d.h), true);
-  add_goal(o, exact_on_quadratics("core_exact", gear_left(d.q_l, d.q_m, d.q_r, d.h), 0), false);
-  add_goal(o, exact_on_quadratics("core_exact", gear_right(d.q_l, d.q_m, d.q_r, d.h), d.h), false);
-  return o;
-}
-
-printed_outcome centred_derivative_check(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
-  const ex core = centred_derivative(d.q_l, d.q_r, d.h);
-  printed_outcome o = both(compare("(g_l + g_r)/2", with_gear(printed_side(r, "derivee-centree", 0), d), d.g_m, core),
-                           compare("g_m", printed_side(r, "derivee-centree", 1), d.g_m, core));
-  add_goal(o, exact_on_quadratics("printed_exact", printed_side(r, "derivee-centree", 1), d.h / 2), true);
-  add_goal(o, exact_on_quadratics("core_exact", core, d.h / 2), false);
-  return o;
-}
-
-printed_outcome interpolant_derivative(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
-  // dq/dt at t = h theta, for symbolic h.
-  const ex derived = GiNaC::normal(d.velocity.subs(d.t == d.h * d.theta));
-  const ex core = quadratic_interpolant_derivative(d.q_l, d.q_m, d.q_r, d.h, d.theta);
-  return both(compare("dq/dt", printed_side(r, "dq/dt", 0), derived, core),
-              compare("g_l (1 - theta) + g_r theta", with_gear(printed_side(r, "dq/dt", 1), d), derived, core));
-}
-
-printed_outcome simpson_lagrangian_check(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
-  const potential_function V = [&d](const ex& x) { return d.general_V(x); };
-  return compare("L_h", with_gear(printed_side(r, "LLhh"), d), d.simpson_lagrangian(V),
-                 simpson_lagrangian(d.m, d.h, V, d.q_l, d.q_m, d.q_r));
-}
-
 }  // namespace
 
 void add_printed_checks_section2_4(check_registry& checks) {
   checks.add_printed("action-range", {"S_d"}, [](const paper_reading& r) { return action_range(r, "S_d", "S_d"); });
   checks.add_printed("classical-euler-lagrange", {"lagrangien-discret", "schema-ordre-deux"}, classical_euler_lagrange);
-  checks.add_printed("classical-consistency", {"schema-ordre-deux", "oscillateur-nonlineaire"}, classical_consistency);
-  checks.add_printed("hamilton-consistency", {"systeme-dynamique-discret-ordre-2#0", "systeme-dynamique-discret-ordre-2#1", "Hamilton dp/dt",
-                                     "Hamilton dq/dt"}, hamilton_consistency);
   checks.add_printed("newmark-discrete-system", {"systeme-dynamique-discret-ordre-2#0", "systeme-dynamique-discret-ordre-2#1"}, newmark_system);
   checks.add_printed("newmark-matrix", {"matrice-symplectique-ordre-2"}, newmark_matrix);
-  checks.add_printed("basis-nodal", {"fonctions-de-base#0", "fonctions-de-base#1", "fonctions-de-base#2", "q2t", "q(0)", "q(h/2)", "q(h)"}, interpolant_nodal);
-  checks.add_printed("gear", {"derivees-gear#0", "derivees-gear#1"}, gear_derivatives);
-  checks.add_printed("centred", {"derivee-centree"}, centred_derivative_check);
-  checks.add_printed("interpolant-derivative", {"dq/dt"}, interpolant_derivative);
-  checks.add_printed("simpson-lagrangian", {"LLhh"}, simpson_lagrangian_check);
   checks.add_printed("simpson-action-range", {"SSdd"}, [](const paper_reading& r) { return action_range(r, "SSdd", "Sigma_d"); });
 }
 

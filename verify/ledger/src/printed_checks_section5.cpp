@@ -43,15 +43,6 @@ printed_outcome internal_equation_second_order(const paper_reading& r) {
                          printed_side(r, "oscillateur-nonlineaire", 0) - printed_side(r, "oscillateur-nonlineaire", 1), states, d.h);
 }
 
-/// (schema-ordre-3) on a smooth q(t): its leading term is q'' + omega^2 q as printed.
-printed_outcome scheme_consistency(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
-  const std::vector<smooth_state> states{{d.q_prev, "q", -d.h}, {d.q_j, "q", 0}, {d.q_next, "q", d.h}};
-  const ex equation = (printed_side(r, "harmonic equation", 0) - printed_side(r, "harmonic equation", 1))
-                          .subs(apply_function("q", {d.t}) == sym("q"));
-  return consistent_with("(schema-ordre-3)", printed_side(r, "schema-ordre-3"),
-                         three_term_residual(parameters(d), d.q_prev, d.q_j, d.q_next), equation, states, d.h);
-}
 
 
 /// q(t_j ± h) by GiNaC's series of an uninterpreted q, to O(h^order), the k-th derivative at t_j
@@ -145,7 +136,6 @@ GiNaC::ex truncation_series(const symbolic_derivation& d, const GiNaC::ex& norma
 void add_printed_checks_section5(check_registry& checks) {
   checks.add_printed("gear-partials", {"dg_l/dq_m", "dg_m/dq_m", "dg_r/dq_m"}, gear_partials);
   checks.add_printed("internal-second-order", {"equation-milieu-intervalle", "oscillateur-nonlineaire"}, internal_equation_second_order);
-  checks.add_printed("scheme-consistency", {"schema-ordre-3", "harmonic equation"}, scheme_consistency);
   checks.add_printed("taylor-display", {"Taylor q_{j+1}", "Taylor q_{j-1}"}, taylor_display);
   checks.add_printed("discriminant-factorization", {"discriminant-factorized", "a", "b"}, discriminant_factorization);
 }

@@ -69,6 +69,10 @@ const std::map<std::string, proof_shape>& proof_shapes() {
                      {"at", argument_kind::symbols, false, "the values of the arguments in the printed derivative (q_j, q_{j+1} for q_l, q_r)", 0,
                       "arguments", false, {}, "", "", "arguments"}}),
          derivative_shape});
+    add({"equal-sides", "every side of each printed equation is equal to its first, the definitions put in", "equations",
+         with_where({{"equations", argument_kind::equations, true,
+                      "printed equations 'a = b = ...', each read whole (a chain's first side, a symbol nothing defines, names what it defines)"}}),
+         equal_sides_shape});
     add({"solves", "the equation (= 0) holds with the unknown replaced by the printed solution, the definitions put in", "solution",
          with_where({{"equation", argument_kind::formula, true, "the equation's side that is 0"},
                      {"unknown", argument_kind::symbols, true, "the symbol it is solved for", 1},
@@ -121,9 +125,31 @@ const std::map<std::string, proof_shape>& proof_shapes() {
     add({"truncation", "the scheme on the exact solution of q'' = -omega^2 q is the printed series, to its printed order", "printed",
          with_where(with_series({{"printed", argument_kind::formula, true, "the printed truncation error, with its order term O(h^N)"}})),
          truncation_shape});
+    add({"consistency", "each printed relation of the scheme, on smooth states x_{j+k} = x(t + k h), is h^p times a multiple of its printed differential equation",
+         "scheme",
+         with_where({{"scheme", argument_kind::equations, true, "the scheme's printed relations 'a = b' (or 'a = 0')"},
+                     {"equation", argument_kind::equations, true, "the printed differential equations, one per relation, in order"},
+                     {"step", argument_kind::symbols, true, "the step h", 1},
+                     {"index", argument_kind::word, true, "the index of the states, 'j' for x_j, x_{j+1}, x_{j-1}"}}),
+         consistency_shape});
     add({"stated-order", "the order a sentence states ({order} in its pattern) is the scheme's order on q'' = -omega^2 q", "scheme",
          with_where(with_series({pattern_with_hole("sentence", "the sentence's pattern, with the hole {order}", "order")})),
          stated_order_shape});
+    add({"quadrature-exactness", "the degree of exactness a sentence states ({degree}) is the printed rule's, for the printed integral it approximates", "rule",
+         with_where({{"rule", argument_kind::formula, true, "the printed rule, a combination of the function's values"},
+                     {"integral", argument_kind::formula, true, "the printed integral it approximates, \\int_a^b f(x) \\dd x"},
+                     {"function", argument_kind::symbols, true, "the function integrated (psi)", 1},
+                     pattern_with_hole("sentence", "the sentence's pattern, with the hole {degree} (a number: 'degree three'; or a bound: 'smaller or equal to 1')",
+                                       "degree")}),
+         quadrature_exactness_shape});
+    add({"discrete-lagrangian", "the printed discrete Lagrangian is the printed rule applied to the printed action integral along the interpolant the definitions give",
+         "printed",
+         with_where({{"printed", argument_kind::formula, true, "the printed discrete Lagrangian"},
+                     {"integral", argument_kind::formula, true, "the action integral of one interval, \\int_a^b f \\dd t, f written in the state and its derivative"},
+                     {"rule", argument_kind::formula, true, "the printed rule: an equation \\int_{a0}^{b0} psi(x) \\dd x = (or \\simeq) a combination of psi's values"},
+                     {"function", argument_kind::symbols, true, "the rule's function (psi)", 1},
+                     {"state", argument_kind::symbols, true, "the state q, a function the definitions give (q(t) = ...)", 1}}),
+         discrete_lagrangian_shape});
     add({"sign-on-interval", "expression has the stated sign on the printed interval 0 < variable < c", "expression",
          with_where({{"expression", argument_kind::formula, true, "a function of the variable alone once scaled"},
                      {"variable", argument_kind::formula, true, "the variable of the condition, a product of positive symbols", 0, "", true},
@@ -177,7 +203,7 @@ void check_shape_arguments(const claim_record& record, const std::string& file) 
       for (const shape_parameter& p : shape.parameters) names += (names.empty() ? "" : ", ") + p.name;
       throw claims_file_error(file, argument.line, "with." + name, "not an argument of the shape '" + shape.name + "' (" + names + ")");
     }
-    const bool list = it->kind == argument_kind::definitions || it->kind == argument_kind::symbols;
+    const bool list = it->kind == argument_kind::definitions || it->kind == argument_kind::symbols || it->kind == argument_kind::equations;
     if (argument.list != list) {
       throw claims_file_error(file, argument.line, "with." + name, list ? "must be an array of strings" : "must be one string (a formula reference)");
     }
@@ -276,6 +302,15 @@ std::string check_shape_formulas(const claim_record& record, const std::string& 
           break;
         }
         case argument_kind::definitions: break;
+        case argument_kind::equations: {
+          std::string shown;
+          for (const referenced_formula& f : read->equations(p.name)) {
+            if (f.sides.size() < 2) throw claims_file_error(file, line, field, f.locator + " is not an equation 'a = b'");
+            shown += (shown.empty() ? "" : "; ") + ("$" + folded_space(f.tex) + "$ (" + f.locator + ")");
+          }
+          if (p.name == shape.principal) principal = shown;
+          break;
+        }
         case argument_kind::word:
           if (!p.words.empty() && std::find(p.words.begin(), p.words.end(), it->second.values.front()) == p.words.end()) {
             throw claims_file_error(file, line, field, "'" + it->second.values.front() + "' is not one of: " + fmt::format("{}", fmt::join(p.words, ", ")));

@@ -20,8 +20,9 @@ namespace simpson::verify::detail {
 /// What an argument holds: a formula reference ("phi#2", "inline:stable for", "$1$"); one that must
 /// be a square matrix once the definitions are put in; a printed condition "a < x < b" (three
 /// sides); a word of the record's own, one of a few (a sign: "positive"); a list of definitions
-/// (references to displays "x = ..."); or a list of symbol names in TeX ('q_0', '\omega').
-enum class argument_kind { formula, matrix, condition, word, definitions, symbols };
+/// (references to displays "x = ..."); a list of symbol names in TeX ('q_0', '\omega'); or a list of
+/// equations, each read whole, every side ("a = b = c").
+enum class argument_kind { formula, matrix, condition, word, definitions, symbols, equations };
 
 struct shape_parameter {
   std::string name;

@@ -50,7 +50,10 @@ shape_reader::shape_reader(const shape_call& call, const paper_source& document)
                                  {"parsed", json::array({text_of(d.name) + " = " + text_of(d.value)})}});
   }
   // A symbol a definition defines is declared by it (Phi = (map)); what it is defined as must be declared.
-  for (const definition& d : definitions_) declared_.insert(d.name.get_name());
+  for (const definition& d : definitions_) {
+    declared_.insert(d.name.get_name());
+    for (int k = 1; d.parameter && k <= 4; ++k) declared_.insert(derivative_name(d.function, d.parameter->get_name(), k, k));  // dq/dt, q(t) defined
+  }
   for (const definition& d : definitions_) declared_only(d.value, d.locator);
 }
 
@@ -85,6 +88,42 @@ std::vector<GiNaC::symbol> shape_reader::symbols(const std::string& parameter) c
   return out;
 }
 
+std::vector<referenced_formula> shape_reader::equations(const std::string& parameter) {
+  std::vector<referenced_formula> out;
+  for (const std::string& reference : call_.with.at(parameter).values) {
+    out.push_back(read_reference(document_, macros_, reference));
+    const referenced_formula& f = out.back();
+    json parsed = json::array();
+    for (const std::string& tex : f.sides) parsed.push_back(text_of(parsed_side(f, tex)));
+    json entry = {{"reference", reference}, {"label", f.place}, {"line", f.line}, {"tex", folded_space(f.tex)}, {"parsed", parsed}};
+    if (f.line >= 1 && std::find(read_.begin(), read_.end(), entry) == read_.end()) read_.push_back(entry);
+  }
+  return out;
+}
+
+ex shape_reader::parsed_side(const referenced_formula& equation, const std::string& tex) const {
+  ex side;
+  try {
+    side = parse_tex_math(tex, paper_symbols());
+  } catch (const tex_parse_error& e) {
+    throw std::invalid_argument(equation.locator + ": cannot parse '" + folded_space(tex) + "': " + e.what());
+  }
+  // A chain's first side, one symbol, may be the name the chain defines (g = dq/dt(0) = ...).
+  const bool named = equation.sides.size() > 2 && &tex == &equation.sides.front() && GiNaC::is_a<GiNaC::symbol>(side);
+  if (!named) declared_only(side, equation.locator);
+  return side;
+}
+
+std::vector<ex> shape_reader::sides(const referenced_formula& equation) const {
+  std::vector<ex> out;
+  for (const std::string& tex : equation.sides) out.push_back(with_definitions(parsed_side(equation, tex), definitions_));
+  return out;
+}
+
+bool shape_reader::defines(const GiNaC::symbol& name) const {
+  return std::any_of(definitions_.begin(), definitions_.end(), [&](const definition& d) { return d.name.get_name() == name.get_name(); });
+}
+
 json shape_reader::printed() const {
   json all = read_;
   for (const json& d : definitions_read_) all.push_back(d);
@@ -93,8 +132,22 @@ json shape_reader::printed() const {
 
 void shape_reader::declared_only(const ex& e, const std::string& where) const {
   if (!call_.document) return;
+  std::set<std::string> bound;  // an integral's variable: bound in it, not a symbol of the document
+  for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (GiNaC::is_a<GiNaC::integral>(*it)) bound.insert(GiNaC::ex_to<GiNaC::symbol>(it->op(0)).get_name());
+  }
+  // A derivative of a declared symbol, d^kx/dt^k (the state's, in a differential equation), is declared.
+  const auto derivative_of_declared = [&](const std::string& name) {
+    const std::size_t slash = name.find("/d");
+    if (name.size() < 4 || name[0] != 'd' || slash == std::string::npos) return false;
+    std::size_t from = 1;
+    if (name[1] == '^') from = name.find_first_not_of("0123456789", 2);
+    return from != std::string::npos && from < slash && declared_.count(name.substr(from, slash - from)) > 0;
+  };
   for (const std::string& name : symbol_names(e)) {
-    if (!declared_.count(name)) throw std::invalid_argument(where + ": the symbol '" + name + "' is not declared in [symbols]");
+    if (!declared_.count(name) && !bound.count(name) && !derivative_of_declared(name)) {
+      throw std::invalid_argument(where + ": the symbol '" + name + "' is not declared in [symbols]");
+    }
   }
 }
 

@@ -4,7 +4,7 @@
 // verdict on an identity in both kernels with its Coq certificate, and each shape's function, by
 // family: identities (shapes_identities.cpp), derivations (shapes_derivation.cpp), series
 // (shapes_series.cpp), intervals (shapes_intervals.cpp), characteristic polynomials
-// (shapes_characteristic.cpp).
+// (shapes_characteristic.cpp), quadrature (shapes_quadrature.cpp).
 
 #include "kernel_zero.hpp"
 #include "proof_shapes.hpp"
@@ -43,11 +43,24 @@ class shape_reader {
 
   std::vector<GiNaC::symbol> symbols(const std::string& parameter) const;
 
+  /// The equations the argument names, as read (every side's TeX), each once recorded.
+  std::vector<referenced_formula> equations(const std::string& parameter);
+
+  /// Every side of one equation read, parsed, the definitions put in.
+  std::vector<GiNaC::ex> sides(const referenced_formula& equation) const;
+
+  /// `e` with the call's definitions put in.
+  GiNaC::ex defined(const GiNaC::ex& e) const { return with_definitions(e, definitions_); }
+
+  /// Whether a definition gives `name` a value.
+  bool defines(const GiNaC::symbol& name) const;
+
   /// What was read, the principal formula first (each shape reads it first), the definitions last.
   json printed() const;
 
  private:
   void declared_only(const GiNaC::ex& e, const std::string& where) const;
+  GiNaC::ex parsed_side(const referenced_formula& equation, const std::string& tex) const;
   void record(const std::string& reference, const std::string& locator, int line, const std::string& tex, const std::optional<GiNaC::ex>& value);
 
   const shape_call& call_;
@@ -96,6 +109,7 @@ std::string reference_of(const shape_call& call, const std::string& parameter);
 
 // The shapes.
 claim_result identity_shape(const shape_call& call, const run_context& ctx);
+claim_result equal_sides_shape(const shape_call& call, const run_context& ctx);
 claim_result derivative_shape(const shape_call& call, const run_context& ctx);
 claim_result solves_shape(const shape_call& call, const run_context& ctx);
 claim_result determinant_shape(const shape_call& call, const run_context& ctx);
@@ -112,5 +126,8 @@ claim_result factor_signs_shape(const shape_call& call, const run_context& ctx);
 claim_result characteristic_shape(const shape_call& call, const run_context& ctx);
 claim_result characteristic_roots_shape(const shape_call& call, const run_context& ctx);
 claim_result root_criterion_shape(const shape_call& call, const run_context& ctx);
+claim_result quadrature_exactness_shape(const shape_call& call, const run_context& ctx);
+claim_result discrete_lagrangian_shape(const shape_call& call, const run_context& ctx);
+claim_result consistency_shape(const shape_call& call, const run_context& ctx);
 
 }  // namespace simpson::verify::detail

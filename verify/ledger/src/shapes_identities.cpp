@@ -1,11 +1,15 @@
-// The identity shapes (shape_support.hpp): identity, determinant, symplectic, conserved.
+// The identity shapes (shape_support.hpp): identity, equal-sides, derivative, solves, determinant,
+// symplectic, conserved.
 
 #include "shape_support.hpp"
 
+#include "coq_export.hpp"
 #include "printed_check_support.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <optional>
 
 namespace simpson::verify::detail {
@@ -128,6 +132,75 @@ claim_result identity_shape(const shape_call& call, const run_context& ctx) {
   const std::string what = fmt::format("({}) = ({})", reference_of(call, "lhs"), reference_of(call, "rhs"));
   return identity_verdict(call, read, "identity", what, lhs, rhs,
                           fmt::format("as derived from ({}): ({}) = {}", reference_of(call, "lhs"), reference_of(call, "rhs"), text_of(lhs)));
+}
+
+/// Printed equations whose sides are all equal ("q(0) = q_l", "g_l = dq/dt(0) = (1/h)(...)"), the
+/// definitions put in: each side against the equation's first, decided in both kernels, one Coq
+/// goal each. A chain's first side that is a symbol nothing defines (g_l) names what the chain
+/// defines and is not compared; the next one is then the reference. An erratum's correction gives
+/// each side that differs as derived from the reference.
+claim_result equal_sides_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const std::vector<referenced_formula> equations = read.equations("equations");
+  claim_result result;
+  std::vector<proof_goal> goals;
+  json decided_sides = json::array();
+  std::vector<std::string> corrections, not_decided;
+  bool any_false = false, disagree = false, own_any_nonzero = false;
+  for (std::size_t i = 0; i < equations.size(); ++i) {
+    const referenced_formula& equation = equations[i];
+    const std::vector<ex> sides = read.sides(equation);
+    std::size_t first = 0;
+    if (sides.size() > 2 && GiNaC::is_a<GiNaC::symbol>(sides.front()) && !read.defines(GiNaC::ex_to<GiNaC::symbol>(sides.front()))) {
+      const bool elsewhere = std::any_of(sides.begin() + 1, sides.end(), [&](const ex& side) { return side.has(sides.front()); });
+      if (!elsewhere) first = 1;  // the name the chain defines
+    }
+    for (std::size_t k = first + 1; k < sides.size(); ++k) {
+      const std::string what = fmt::format("({}) = ({}) of {}", folded_space(equation.sides[first]), folded_space(equation.sides[k]), equation.place);
+      const ex difference = normal_difference(sides[first], sides[k]);
+      const bool ginac_zero = is_zero_expression(difference);
+      const kernel_decision own = kernel_decides_zero((sides[first] - sides[k]).evalm());
+      const bool own_decided = own.outcome != kernel_decision::result::not_applicable;
+      if (own_decided && (own.outcome == kernel_decision::result::zero) != ginac_zero) disagree = true;
+      if (!own_decided) not_decided.push_back(what + " (" + own.evidence + ")");
+      own_any_nonzero = own_any_nonzero || own.outcome == kernel_decision::result::nonzero;
+      any_false = any_false || !ginac_zero;
+      if (!ginac_zero) {
+        corrections.push_back(fmt::format("{} = {}, not {}", folded_space(equation.sides[first]), text_of(GiNaC::normal(sides[first])),
+                                          folded_space(equation.sides[k])));
+      }
+      decided_sides.push_back({{"statement", what},
+                               {"with_definitions", text_of(sides[first]) + " = " + text_of(sides[k])},
+                               {"ginac", ginac_zero ? "holds: lhs − rhs = 0 (normal form, every symbol free)" : "fails: lhs − rhs = " + text_of(difference)},
+                               {"own", (own.outcome == kernel_decision::result::zero      ? "holds: "
+                                        : own.outcome == kernel_decision::result::nonzero ? "fails: "
+                                                                                          : "not applicable: ") +
+                                           own.evidence}});
+      goals.push_back(decided(fmt::format("equation_{}_side_{}", i + 1, k + 1), sides[first], sides[k]));
+    }
+  }
+  if (goals.empty()) throw std::invalid_argument(reference_of(call, "equations") + ": no two sides to compare");
+  result.evidence["exact"] = {{"statement", fmt::format("every side of {} printed equation(s) equals its first, the definitions put in", equations.size())},
+                              {"ginac", any_false ? fmt::format("fails: {} side(s) differ from their equation's first", corrections.size())
+                                                  : "holds: every side equals its equation's first (normal form, every symbol free)"},
+                              {"own", own_any_nonzero        ? std::string("fails: a side differs from its equation's first")
+                                      : !not_decided.empty() ? "not applicable: " + fmt::format("{}", fmt::join(not_decided, "; "))
+                                                             : std::string("holds: every side equals its equation's first (each grid below)")},
+                              {"sides", decided_sides}};
+  if (disagree) {
+    result.outcome = verdict::kernels_disagree;
+    result.note = "GiNaC and our kernel reached different conclusions on a side: a bug in one of them.";
+  } else if (!any_false) {
+    result.outcome = verdict::holds;
+  } else {
+    result.outcome = verdict::erratum;
+    result.correction = fmt::format("as derived from the definitions: {}", fmt::join(corrections, "; "));
+    result.note = fmt::format("As printed: {} side(s) differ from the first of their equation.", corrections.size());
+  }
+  if (!not_decided.empty()) result.note += fmt::format("{}Our kernel could not decide {}: GiNaC's proof alone.", result.note.empty() ? "" : " ", fmt::join(not_decided, "; "));
+  result.printed = read.printed();
+  record_certificate(result, coq_certificate(call.claim_id, call.statement, goals));
+  return result;
 }
 
 /// A printed partial derivative: d function / d variable = printed, the definitions put in both. The

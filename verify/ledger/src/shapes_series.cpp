@@ -7,8 +7,10 @@
 #include "printed_check_support.hpp"
 
 #include <simpson/verify/quoted_words.hpp>
+#include <simpson/verify/tex_math.hpp>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <optional>
 
@@ -100,7 +102,147 @@ std::string own_text(const kernel_decision& own, const std::string& verdict, con
   }
 }
 
+/// The states of `e` named <base>_<index>±k ("q_j+1", "p_j", "q_j-1/2"): each the smooth function
+/// <base> at t + k h.
+std::vector<smooth_state> indexed_states(const ex& e, const std::string& index, const ex& h) {
+  std::vector<smooth_state> states;
+  for (const std::string& name : symbol_names(e)) {
+    const std::size_t bar = name.find('_');
+    if (bar == std::string::npos || bar == 0 || name.compare(bar + 1, index.size(), index) != 0) continue;
+    const std::string rest = name.substr(bar + 1 + index.size());
+    GiNaC::numeric k = 0;
+    if (!rest.empty()) {
+      if (rest[0] != '+' && rest[0] != '-') continue;
+      const std::string digits = rest.substr(1);
+      if (digits.empty() || digits.find_first_not_of("0123456789/") != std::string::npos || digits.front() == '/' || digits.back() == '/') continue;
+      k = GiNaC::numeric(digits.c_str());
+      if (rest[0] == '-') k = -k;
+    }
+    states.push_back({paper_symbols()[name], name.substr(0, bar), k * h});
+  }
+  return states;
+}
+
+/// e with each state replaced by its smooth function's Taylor polynomial of degree `degree` about t,
+/// the k-th derivative named as the reader names d^kx/dt^k (x itself for k = 0).
+ex on_taylor_polynomials(const ex& e, const std::vector<smooth_state>& states, int degree) {
+  GiNaC::exmap on;
+  for (const smooth_state& s : states) {
+    ex sum = 0, term = 1;
+    for (int k = 0; k <= degree; ++k) {
+      if (k > 0) term = term * s.shift / k;
+      sum += term * (k == 0 ? paper_symbols()[s.function] : paper_symbols()[derivative_name(s.function, "t", k, k)]);
+    }
+    on[s.state] = sum;
+  }
+  return e.subs(on, GiNaC::subs_options::no_pattern);
+}
+
 }  // namespace
+
+/// Printed relations of a scheme consistent with printed differential equations: each relation
+/// a = b, its states x_{j+k} put on smooth functions x(t + k h), is as a series in h (GiNaC's) h^p
+/// times a nonzero multiple, free of the unknowns, of its equation a' = b' (x(t) read as x). Our
+/// kernel decides, on the Taylor polynomials of the states (exact through h^p, taylor_degree), that
+/// the relation is h^p times GiNaC's leading term plus h^(p+1) times a function regular at h = 0, and
+/// that this term is the factor times the printed equation; V uninterpreted, for every polynomial V
+/// of degree <= 4.
+claim_result consistency_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const std::vector<referenced_formula> relations = read.equations("scheme"), equations = read.equations("equation");
+  const GiNaC::symbol h = read.symbols("step").front();
+  const std::string index = call.with.at("index").values.front();
+  if (relations.size() != equations.size()) {
+    throw std::invalid_argument(fmt::format("{} relations of the scheme and {} equations: one equation each", relations.size(), equations.size()));
+  }
+  claim_result result;
+  json decided_relations = json::array();
+  std::vector<std::string> corrections;
+  bool ginac_all = true, own_contradicts = false;
+  std::vector<std::string> own_lines, not_decided;
+  for (std::size_t i = 0; i < relations.size(); ++i) {
+    const std::vector<ex> sides = read.sides(relations[i]), printed_sides = read.sides(equations[i]);
+    const ex relation = sides.front() - sides.back();
+    const std::vector<smooth_state> states = indexed_states(relation, index, h);
+    if (states.empty()) throw std::invalid_argument(fmt::format("{} has no state x_{}, x_{}+1, ...", relations[i].locator, index, index));
+    // The unknowns: each state's function and its derivatives, as the reader names them; x(t) in the
+    // printed equation read as x.
+    std::vector<ex> unknowns;
+    ex equation = printed_sides.front() - printed_sides.back();
+    for (const smooth_state& s : states) {
+      unknowns.push_back(paper_symbols()[s.function]);
+      for (int k = 1; k <= 4; ++k) unknowns.push_back(paper_symbols()[derivative_name(s.function, "t", k, k)]);
+      equation = equation.subs(apply_function(s.function, {paper_symbols()["t"]}) == paper_symbols()[s.function]);
+    }
+    const smooth_expansion expansion = expand_on_smooth(relation, states, h);
+    const std::optional<ex> factor = equation_factor(equation, expansion.leading, unknowns);
+    ginac_all = ginac_all && factor.has_value();
+    if (!factor) corrections.push_back(fmt::format("{} is consistent with {} = 0", relations[i].place, text_of(expansion.leading)));
+    // Our kernel, on the Taylor polynomials.
+    const int degree = taylor_degree(call, relation, [&] {
+      std::vector<GiNaC::symbol> out;
+      for (const smooth_state& s : states) out.push_back(GiNaC::ex_to<GiNaC::symbol>(s.state));
+      return out;
+    }(), h, expansion.lowest_power + 1);
+    const ex on_taylor = on_taylor_polynomials(relation, states, degree);
+    const ex remainder = on_taylor - GiNaC::pow(h, expansion.lowest_power) * expansion.leading;
+    // An uninterpreted function (V) the relation applies: our kernel takes V(x) = x^k, k = 0..4, one
+    // by one (GiNaC's witness of the order has no other way to be free of h in its denominator).
+    std::string function;
+    for (GiNaC::const_preorder_iterator it = relation.preorder_begin(); it != relation.preorder_end(); ++it) {
+      if (GiNaC::is_a<GiNaC::function>(*it)) function = GiNaC::ex_to<GiNaC::function>(*it).get_name();
+    }
+    kernel_decision own;
+    if (function.empty()) {
+      own = kernel_confirms_order(remainder, h, expansion.lowest_power + 1, false);
+    } else {
+      const GiNaC::symbol x("monomial_variable");
+      own = {kernel_decision::result::zero, ""};
+      for (int k = 0; k <= 4 && own.outcome == kernel_decision::result::zero; ++k) {
+        const definition monomial{GiNaC::symbol(function), GiNaC::pow(x, k), "V(x) = x^k", 0, "", function, x};
+        const kernel_decision at_k = kernel_confirms_order(with_definitions(remainder, {monomial}), h, expansion.lowest_power + 1, false);
+        own = {at_k.outcome, at_k.outcome == kernel_decision::result::zero ? fmt::format("for {}(x) = x^k, k = 0..4, each: {}", function, at_k.evidence)
+                                                                           : fmt::format("{}(x) = x^{}: {}", function, k, at_k.evidence)};
+      }
+    }
+    if (own.outcome == kernel_decision::result::zero && factor) {
+      const kernel_decision multiple = kernel_decides_zero(expansion.leading - *factor * equation);
+      own = {multiple.outcome, own.evidence + "; leading term − factor × equation: " + multiple.evidence};
+    }
+    if (own.outcome == kernel_decision::result::nonzero) own_contradicts = true;
+    if (own.outcome == kernel_decision::result::not_applicable) not_decided.push_back(relations[i].place + ": " + own.evidence);
+    decided_relations.push_back({{"relation", folded_space(relations[i].tex) + " (" + relations[i].place + ")"},
+                                 {"equation", folded_space(equations[i].tex) + " (" + equations[i].place + ")"},
+                                 {"series", text_of(expansion.series)},
+                                 {"leading", fmt::format("{}^{} ({})", h.get_name(), expansion.lowest_power, text_of(expansion.leading))},
+                                 {"factor", factor ? text_of(*factor) : "none: not a multiple of the equation"},
+                                 {"own", own.evidence}});
+  }
+  result.printed = read.printed();
+  const std::string what = fmt::format("({}) consistent with ({})", reference_of(call, "scheme"), reference_of(call, "equation"));
+  result.evidence["exact"] = {
+      {"statement", what},
+      {"relations", decided_relations},
+      {"ginac", ginac_all ? "holds: each relation's leading term on smooth states is a multiple of its equation (GiNaC's series, V and the solution uninterpreted)"
+                          : "fails: a relation's leading term is not a multiple of its equation"},
+      {"own", own_contradicts        ? std::string("contradicts GiNaC: a relation's series or multiple does not hold on the Taylor polynomials")
+              : !not_decided.empty() ? "not applicable: " + fmt::format("{}", fmt::join(not_decided, "; "))
+                                     : std::string(ginac_all ? "holds" : "fails") +
+                                           ": each relation on the states' Taylor polynomials is h^p times the leading term plus O(h^(p+1)), and that term the factor times its equation"}};
+  if (own_contradicts) {
+    result.outcome = verdict::kernels_disagree;
+    result.note = "GiNaC and our kernel reached different conclusions on " + what + ": a bug in one of them.";
+    return result;
+  }
+  if (!not_decided.empty()) result.note = "Our kernel could not decide it: GiNaC's series alone. ";
+  if (ginac_all) {
+    result.outcome = verdict::holds;
+    return result;
+  }
+  result.outcome = verdict::erratum;
+  result.correction = "as derived: " + fmt::format("{}", fmt::join(corrections, "; "));
+  return result;
+}
 
 /// A printed truncation error: the scheme (an expression in three consecutive states, = 0) on the
 /// exact solution of q'' = −ω² q through the middle state, q(t_j ± h) = q_j cos ωh ± (v_j/ω) sin ωh,

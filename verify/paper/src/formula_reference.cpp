@@ -282,17 +282,66 @@ struct function_values : GiNaC::map_function {
 
 }  // namespace
 
-GiNaC::ex with_definitions(const GiNaC::ex& e, const std::vector<definition>& definitions) {
+namespace {
+
+/// A function defined in another variable than its argument, q(t) = ... θ with t = h θ among the
+/// definitions (a symbol's, linear in exactly one symbol of the function's value), is read in its
+/// argument: θ = t/h put in its value. Any other definition is as read.
+std::vector<definition> in_their_arguments(const std::vector<definition>& definitions) {
+  std::vector<definition> out = definitions;
+  for (definition& d : out) {
+    if (d.function.empty() || d.value.has(*d.parameter)) continue;
+    for (const definition& change : definitions) {
+      if (!change.function.empty() || change.name.get_name() != d.parameter->get_name()) continue;
+      std::vector<GiNaC::symbol> shared;
+      for (GiNaC::const_preorder_iterator it = change.value.preorder_begin(); it != change.value.preorder_end(); ++it) {
+        if (!GiNaC::is_a<GiNaC::symbol>(*it) || !d.value.has(*it)) continue;
+        const GiNaC::symbol& s = GiNaC::ex_to<GiNaC::symbol>(*it);
+        if (std::none_of(shared.begin(), shared.end(), [&](const GiNaC::symbol& k) { return k.is_equal(s); })) shared.push_back(s);
+      }
+      if (shared.size() != 1) continue;
+      const GiNaC::ex slope = GiNaC::diff(change.value, shared.front());
+      if (slope.has(shared.front()) || GiNaC::normal(slope).is_zero()) continue;  // not linear in it
+      const GiNaC::ex solved = GiNaC::normal((GiNaC::ex(*d.parameter) - change.value.subs(shared.front() == 0)) / slope);
+      d.value = d.value.subs(shared.front() == solved);
+    }
+  }
+  return out;
+}
+
+/// The symbols that name a defined function's derivative in its own argument, as a derivative
+/// without an argument parses ({{\dd q}\over{\dd t}}, "dq/dt", with q(t) defined): each with the
+/// derivative of the function's value.
+GiNaC::exmap derivative_symbols(const GiNaC::ex& e, const std::vector<definition>& definitions) {
+  GiNaC::exmap out;
+  for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (!GiNaC::is_a<GiNaC::symbol>(*it)) continue;
+    const std::string name = GiNaC::ex_to<GiNaC::symbol>(*it).get_name();
+    for (const definition& d : definitions) {
+      if (d.function.empty()) continue;
+      for (int k = 1; k <= 4; ++k) {
+        if (name == derivative_name(d.function, d.parameter->get_name(), k, k)) out[*it] = GiNaC::diff(d.value, *d.parameter, static_cast<unsigned>(k));
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+GiNaC::ex with_definitions(const GiNaC::ex& e, const std::vector<definition>& given) {
+  const std::vector<definition> definitions = in_their_arguments(given);
   GiNaC::exmap values;
   for (const definition& d : definitions) {
     if (d.function.empty()) values[d.name] = d.value;
   }
   GiNaC::ex out = e;
   for (std::size_t round = 0; round <= definitions.size(); ++round) {
-    bool any = false;
+    const GiNaC::exmap derivatives = derivative_symbols(out, definitions);
+    bool any = !derivatives.empty();
     for (const definition& d : definitions) any = any || (d.function.empty() ? out.has(d.name) : applies(out, d.function));
     if (!any) return evaluated_matrices(out);
-    out = out.subs(values);
+    out = out.subs(derivatives).subs(values);
     for (const definition& d : definitions) {
       if (!d.function.empty()) out = function_values(d)(out);
     }

@@ -19,8 +19,24 @@ tex_symbols& paper_symbols() {
 }
 
 const std::vector<std::string>& function_names() {
-  static const std::vector<std::string> names{"V", "L_d", "L_h", "H_d", "Q", "Q_c", "q", "varphi_0", "varphi_1/2", "varphi_1"};
+  static const std::vector<std::string> names{"V", "L_d", "L_h", "H_d", "Q", "Q_c", "q", "varphi_0", "varphi_1/2", "varphi_1", "psi"};
   return names;
+}
+
+std::string function_name(const std::string& name, std::size_t arity) {
+  // One of GiNaC's own (psi, the digamma function; beta; zeta): ours is registered apart under a
+  // marked name, so that GiNaC never evaluates it as its own. Decided once, before ours exists.
+  static std::map<std::pair<std::string, std::size_t>, std::string> names;
+  const auto key = std::make_pair(name, arity);
+  const auto it = names.find(key);
+  if (it != names.end()) return it->second;
+  std::string registered = name + "_f";
+  try {
+    (void)GiNaC::function::find_function(name, static_cast<unsigned>(arity));
+  } catch (const std::runtime_error&) {
+    registered = name;
+  }
+  return names.emplace(key, registered).first->second;
 }
 
 GiNaC::ex apply_function(const std::string& name, const GiNaC::exvector& args) {
@@ -28,8 +44,8 @@ GiNaC::ex apply_function(const std::string& name, const GiNaC::exvector& args) {
   const auto key = std::make_pair(name, args.size());
   auto it = serials.find(key);
   if (it == serials.end()) {
-    it = serials.emplace(key, GiNaC::function::register_new(GiNaC::function_options(name, static_cast<unsigned>(args.size()))))
-             .first;
+    const std::string registered = function_name(name, args.size());
+    it = serials.emplace(key, GiNaC::function::register_new(GiNaC::function_options(registered, static_cast<unsigned>(args.size())))).first;
   }
   return GiNaC::function(it->second, args);
 }
@@ -124,8 +140,9 @@ class parser {
     throw tex_parse_error(why + " at token '" + t.text + "'", t.text, t.offset);
   }
 
-  static bool ends_product(const token& t) {
+  bool ends_product(const token& t) {
     if (t.what == token::kind::end) return true;
+    if (integrands_ > 0 && at_differential()) return true;  // \int ... \dd x: the integrand ends at its differential
     static const std::set<std::string> stops{"+", "-", ")", "]", "}", "&", "\\\\", "\\over", ",", ".", "=", "<",
                                              "\\equiv", "\\end"};
     return stops.count(t.text) > 0;
@@ -257,6 +274,29 @@ class parser {
     return false;
   }
 
+  bool at_differential() {
+    const std::size_t saved = at_;
+    const bool is = accept_differential();
+    at_ = saved;
+    return is;
+  }
+
+  // \int_a^b f \dd x: GiNaC's integral of f in x over [a, b], unevaluated.
+  GiNaC::ex integral() {
+    expect("_");
+    const GiNaC::ex lower = script();
+    expect("^");
+    const GiNaC::ex upper = script();
+    ++integrands_;
+    const GiNaC::ex integrand = expression();
+    --integrands_;
+    if (!accept_differential()) fail("expected the differential of the integral");
+    const GiNaC::ex variable = symbols_[derivative_operand()];
+    // Held: an integrand written in the state q and dq/dt, not in the variable, must not be taken
+    // for a constant (GiNaC would return (b - a) f).
+    return GiNaC::integral(variable, lower, upper, integrand).hold();
+  }
+
   // After the outer '{': {\dd^k x}\over{\dd t^n}} (or \partial, {\rm d}). Only when the group starts
   // so; otherwise nothing is consumed.
   bool starts_derivative() {
@@ -363,6 +403,7 @@ class parser {
     }
     if (t.text == "\\begin") return matrix_environment();
     if (t.text == "\\sum") return sum();
+    if (t.text == "\\int") return integral();
     --at_;
     fail("unsupported token");
   }
@@ -405,6 +446,7 @@ class parser {
 
   std::vector<token> tokens_;
   std::size_t at_ = 0;
+  int integrands_ = 0;  // integrals being read: their integrands end at a differential
   tex_symbols& symbols_;
 };
 
@@ -422,6 +464,11 @@ std::vector<std::string> relation_sides(const std::string& tex) {
       continue;
     }
     if (depth == 0 && tex.compare(k, 6, "\\equiv") == 0) {
+      sides.emplace_back();
+      k += 5;
+      continue;
+    }
+    if (depth == 0 && tex.compare(k, 6, "\\simeq") == 0) {  // an approximation: a quadrature rule against its integral
       sides.emplace_back();
       k += 5;
       continue;
@@ -597,6 +644,10 @@ std::string polynomial_text(const GiNaC::ex& poly, const std::vector<GiNaC::symb
 struct functions_as_symbols : GiNaC::map_function {
   std::map<std::string, GiNaC::symbol> named;
   GiNaC::ex operator()(const GiNaC::ex& e) override {
+    if (GiNaC::is_a<GiNaC::integral>(e)) {  // integral(x, a, b, f), unevaluated
+      return symbol_named("integral(" + canonical_text(e.op(0)) + ", " + canonical_text(e.op(1)) + ", " + canonical_text(e.op(2)) + ", " +
+                          canonical_text(e.op(3)) + ")");
+    }
     if (!GiNaC::is_a<GiNaC::function>(e) && !GiNaC::is_a<GiNaC::fderivative>(e)) return e.map(*this);
     GiNaC::ex shape = e;
     std::vector<std::string> arguments;
@@ -611,6 +662,16 @@ struct functions_as_symbols : GiNaC::map_function {
       const std::string mark = "#" + std::to_string(k) + "#";
       for (std::size_t at; (at = name.find(mark)) != std::string::npos;) name.replace(at, mark.size(), arguments[k]);
     }
+    // Ours registered apart from one of GiNaC's (psi_f): printed under the name the text gives it.
+    const std::string registered = GiNaC::ex_to<GiNaC::function>(e).get_name();
+    const std::string base = registered.size() > 2 ? registered.substr(0, registered.size() - 2) : "";
+    if (!base.empty() && registered.compare(registered.size() - 2, 2, "_f") == 0 && function_name(base, e.nops()) == registered) {
+      for (std::size_t at; (at = name.find(registered)) != std::string::npos;) name.replace(at, registered.size(), base);
+    }
+    return symbol_named(name);
+  }
+
+  GiNaC::ex symbol_named(const std::string& name) {
     auto it = named.find(name);
     if (it == named.end()) it = named.emplace(name, GiNaC::symbol(name)).first;
     return it->second;

@@ -12,36 +12,24 @@ Ltac nonzero :=
           | [ H : 0 < ?Y |- ?X <> 0 ] => replace X with Y by ring; apply Rgt_not_eq; exact H
           end
         | apply pow_nonzero; nonzero ].
-(* Not stated: centred_derivative_core, centred_derivative_printed_2, centred_derivative_core_2, whose two sides GiNaC evaluates to one expression (X = X checks nothing). *)
 
-Lemma centred_derivative_printed :
+Lemma centred_derivative_equation_1_side_3 :
   forall h q_l q_m q_r : R,
   0 < h ->
   h <> 0 ->
-  (((-1/2) * (((-1) * q_l) + ((-3) * q_r) + (4 * q_m)) * (/ h)) + ((1/2) * (((-1) * q_r) + ((-3) * q_l) + (4 * q_m)) * (/ h)))
+  (((-1) * (/ h) * q_l) + ((/ h) * q_r))
+  = (((-1/2) * (((-1) * q_l) + ((-3) * q_r) + (4 * q_m)) * (/ h)) + ((1/2) * (((-1) * q_r) + ((-3) * q_l) + (4 * q_m)) * (/ h))).
+Proof.
+  intros.
+  field; repeat split; nonzero.
+Qed.
+
+Lemma centred_derivative_equation_1_side_4 :
+  forall h q_l q_r : R,
+  0 < h ->
+  h <> 0 ->
+  (((-1) * (/ h) * q_l) + ((/ h) * q_r))
   = ((((-1) * q_l) + q_r) * (/ h)).
-Proof.
-  intros.
-  field; repeat split; nonzero.
-Qed.
-
-Lemma centred_derivative_printed_exact :
-  forall c1 c2 h : R,
-  0 < h ->
-  h <> 0 ->
-  ((-1) * (((-1) * (h ^ 2) * c2) + ((-1) * c1 * h)) * (/ h))
-  = ((c2 * h) + c1).
-Proof.
-  intros.
-  field; repeat split; nonzero.
-Qed.
-
-Lemma centred_derivative_core_exact :
-  forall c1 c2 h : R,
-  0 < h ->
-  h <> 0 ->
-  ((-1) * (((-1) * (h ^ 2) * c2) + ((-1) * c1 * h)) * (/ h))
-  = ((c2 * h) + c1).
 Proof.
   intros.
   field; repeat split; nonzero.

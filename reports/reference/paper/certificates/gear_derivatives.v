@@ -12,25 +12,24 @@ Ltac nonzero :=
           | [ H : 0 < ?Y |- ?X <> 0 ] => replace X with Y by ring; apply Rgt_not_eq; exact H
           end
         | apply pow_nonzero; nonzero ].
-(* Not stated: gear_derivatives_printed, gear_derivatives_core, gear_derivatives_printed_2, gear_derivatives_core_2, gear_derivatives_printed_exact, gear_derivatives_core_exact, whose two sides GiNaC evaluates to one expression (X = X checks nothing). *)
 
-Lemma gear_derivatives_printed_exact_2 :
-  forall c1 c2 h : R,
+Lemma gear_derivatives_equation_1_side_3 :
+  forall h q_l q_m q_r : R,
   0 < h ->
   h <> 0 ->
-  ((-1) * (((-1) * c1 * h) + ((-2) * (h ^ 2) * c2)) * (/ h))
-  = ((2 * c2 * h) + c1).
+  (((-1) * (/ h) * q_r) + ((-3) * (/ h) * q_l) + (4 * (/ h) * q_m))
+  = ((((-1) * q_r) + ((-3) * q_l) + (4 * q_m)) * (/ h)).
 Proof.
   intros.
   field; repeat split; nonzero.
 Qed.
 
-Lemma gear_derivatives_core_exact_2 :
-  forall c1 c2 h : R,
+Lemma gear_derivatives_equation_2_side_3 :
+  forall h q_l q_m q_r : R,
   0 < h ->
   h <> 0 ->
-  ((-1) * (((-1) * c1 * h) + ((-2) * (h ^ 2) * c2)) * (/ h))
-  = ((2 * c2 * h) + c1).
+  (((-4) * (/ h) * q_m) + ((/ h) * q_l) + (3 * (/ h) * q_r))
+  = ((-1) * (((-1) * q_l) + ((-3) * q_r) + (4 * q_m)) * (/ h)).
 Proof.
   intros.
   field; repeat split; nonzero.

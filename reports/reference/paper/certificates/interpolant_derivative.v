@@ -13,45 +13,34 @@ Ltac nonzero :=
           end
         | apply pow_nonzero; nonzero ].
 
-Lemma interpolant_derivative_printed :
+Lemma interpolant_derivative_equation_1_side_2 :
   forall h q_l q_m q_r theta : R,
   0 < h ->
   h <> 0 ->
-  ((-1) * (((((-4) * theta) + 1) * q_r) + ((((-4) * theta) + 3) * q_l) + ((-4) * (((-2) * theta) + 1) * q_m)) * (/ h))
-  = ((((-1) * q_r) + ((-3) * q_l) + ((-8) * q_m * theta) + (4 * q_l * theta) + (4 * q_m) + (4 * q_r * theta)) * (/ h)).
+  (((-1) * (((-4) * theta) + 1) * (/ h) * q_r) + ((-1) * (((-4) * theta) + 3) * (/ h) * q_l) + (4 * (((-2) * theta) + 1) * (/ h) * q_m))
+  = ((-1) * (((((-4) * theta) + 1) * q_r) + ((((-4) * theta) + 3) * q_l) + ((-4) * (((-2) * theta) + 1) * q_m)) * (/ h)).
 Proof.
   intros.
   field; repeat split; nonzero.
 Qed.
 
-Lemma interpolant_derivative_core :
+Lemma interpolant_derivative_equation_1_side_3 :
   forall h q_l q_m q_r theta : R,
   0 < h ->
   h <> 0 ->
-  ((-1) * (((((-4) * theta) + 1) * q_r) + ((((-4) * theta) + 3) * q_l) + ((-4) * (((-2) * theta) + 1) * q_m)) * (/ h))
-  = ((((-1) * q_r) + ((-3) * q_l) + ((-8) * q_m * theta) + (4 * q_l * theta) + (4 * q_m) + (4 * q_r * theta)) * (/ h)).
+  (((-1) * (((-4) * theta) + 1) * (/ h) * q_r) + ((-1) * (((-4) * theta) + 3) * (/ h) * q_l) + (4 * (((-2) * theta) + 1) * (/ h) * q_m))
+  = ((-1) * (((((-4) * theta) + 1) * q_r) + ((((-4) * theta) + 3) * q_l) + ((-4) * (((-2) * theta) + 1) * q_m)) * (/ h)).
 Proof.
   intros.
   field; repeat split; nonzero.
 Qed.
 
-Lemma interpolant_derivative_printed_2 :
+Lemma interpolant_derivative_equation_1_side_4 :
   forall h q_l q_m q_r theta : R,
   0 < h ->
   h <> 0 ->
-  (((((-1) * q_r) + ((-3) * q_l) + (4 * q_m)) * (((-1) * theta) + 1) * (/ h)) + ((-1) * (((-1) * q_l) + ((-3) * q_r) + (4 * q_m)) * (/ h) * theta))
-  = ((((-1) * q_r) + ((-3) * q_l) + ((-8) * q_m * theta) + (4 * q_l * theta) + (4 * q_m) + (4 * q_r * theta)) * (/ h)).
-Proof.
-  intros.
-  field; repeat split; nonzero.
-Qed.
-
-Lemma interpolant_derivative_core_2 :
-  forall h q_l q_m q_r theta : R,
-  0 < h ->
-  h <> 0 ->
-  ((-1) * (((((-4) * theta) + 1) * q_r) + ((((-4) * theta) + 3) * q_l) + ((-4) * (((-2) * theta) + 1) * q_m)) * (/ h))
-  = ((((-1) * q_r) + ((-3) * q_l) + ((-8) * q_m * theta) + (4 * q_l * theta) + (4 * q_m) + (4 * q_r * theta)) * (/ h)).
+  (((-1) * (((-4) * theta) + 1) * (/ h) * q_r) + ((-1) * (((-4) * theta) + 3) * (/ h) * q_l) + (4 * (((-2) * theta) + 1) * (/ h) * q_m))
+  = (((((-1) * q_r) + ((-3) * q_l) + (4 * q_m)) * (((-1) * theta) + 1) * (/ h)) + ((-1) * (((-1) * q_l) + ((-3) * q_r) + (4 * q_m)) * (/ h) * theta)).
 Proof.
   intros.
   field; repeat split; nonzero.

@@ -35,8 +35,13 @@ class tex_symbols {
 tex_symbols& paper_symbols();
 
 /// The names the reader applies as functions when followed by parentheses: V, L_d, L_h, H_d, Q, Q_c,
-/// q (q(t); q_\ell and q_j are other names) and the basis functions varphi_0, varphi_1/2, varphi_1.
+/// q (q(t); q_\ell and q_j are other names), the basis functions varphi_0, varphi_1/2, varphi_1,
+/// and psi (a quadrature's integrand).
 const std::vector<std::string>& function_names();
+
+/// The name under which the function `name` of `arity` arguments is registered with GiNaC: `name`,
+/// or "<name>_f" when GiNaC has a function of that name and arity of its own (psi, the digamma).
+std::string function_name(const std::string& name, std::size_t arity);
 
 /// The uninterpreted function `name` of `args.size()` arguments applied to `args` (GiNaC
 /// differentiates it to D[k](name)(args)). One function per name and arity in the process.
