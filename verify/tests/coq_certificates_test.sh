@@ -110,7 +110,8 @@ expect_rejected table_roundoff.v '0,/Notation r17 := (Float1 (247760988533536771
 
 # 4. An altered paper: its wrong printed matrix is not exported as proved; the derived one is.
 # Newmark's Phi (matrice-symplectique-ordre-2), its (1,2) entry -m omega^2 h -> -m omega^2 h^2:
-# newmark-matrix compares it with the one derived from L_d (the core's gives L_d's momenta).
+# newmark-matrix (the discrete-map shape) compares it with the one derived from the printed L_d, and
+# states the derived map's defining property (L_d's momenta) for Coq.
 sed '/^\\begin{pmatrix}  1-{{\\omega^2 \\, h^2}\\over4}/s/- m \\, \\omega^2 \\, h \\\\/- m \\, \\omega^2 \\, h^2 \\\\/' "$paper_src" >"$work/altered.tex"
 [ "$(diff "$paper_src" "$work/altered.tex" | grep -c '^>')" = 1 ] || fail "altered paper: sed did not change one line"
 "$bin" --claims newmark-matrix --precisions double --paper "$work/altered.tex" --certify --quiet --out "$work/altered" >/dev/null 2>"$work/err"
@@ -118,7 +119,7 @@ sed '/^\\begin{pmatrix}  1-{{\\omega^2 \\, h^2}\\over4}/s/- m \\, \\omega^2 \\, 
 cert="$work/altered/certificates/newmark_matrix.v"
 if [ -f "$cert" ]; then
   grep -q 'Lemma newmark_matrix_printed_12 ' "$cert" && fail "altered paper: the printed entry was exported as proved"
-  grep -q 'Lemma newmark_matrix_core_momentum_right' "$cert" || fail "altered paper: the derived statement is missing"
+  grep -q 'Lemma newmark_matrix_derived_momentum_right' "$cert" || fail "altered paper: the derived statement is missing"
   grep -q 'Refuted by GiNaC, negated in the claim.s _refuted.v: printed' "$cert" || fail "altered paper: the refuted statement is not named"
 else
   fail "altered paper: no certificate for the derived statement"

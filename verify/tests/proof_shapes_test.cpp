@@ -150,6 +150,18 @@ Set $t = h \, \theta$ and $t = 2 \, h \, \theta$.)");
   EXPECT_TRUE(value("$q(h)$", defs).has(theta));
 }
 
+TEST(FormulaReference, APartialDerivativeOfADefinedSymbol) {
+  // g = (a x + b)/h defined: dg/dx is a/h, d^2g/dx^2 is 0; without the definition it stays a symbol.
+  const paper_source d = document(R"(\begin{equation}\label{g} g = \frac{a x + b}{h} \end{equation})");
+  const auto macros = defined_macros(d.text);
+  const definition g = read_definition(d, macros, "g");
+  const GiNaC::ex a = paper_symbols()["a"], h = paper_symbols()["h"];
+  const GiNaC::ex first = read_reference(d, macros, "${{\\partial g}\\over{\\partial x}}$").value;
+  EXPECT_TRUE(GiNaC::normal(with_definitions(first, {g}) - a / h).is_zero()) << with_definitions(first, {g});
+  EXPECT_TRUE(with_definitions(read_reference(d, macros, "${{\\partial^2 g}\\over{\\partial x^2}}$").value, {g}).is_zero());
+  EXPECT_TRUE(GiNaC::is_a<GiNaC::symbol>(with_definitions(first, {})));
+}
+
 // ---- our kernel ----
 
 using detail::kernel_decides_zero;
@@ -257,6 +269,13 @@ One step's action, $\int_0^h \Big[ \frac{m}{2} \Big( {{\dd q}\over{\dd t}} \Big)
 \begin{equation}\label{odewrong} {{\dd^2 q}\over{\dd t^2}} + 2 \om^2 q = 0 \end{equation}
 \begin{equation}\label{euler} p_{j+1} - p_j = - h \om^2 q_{j+1} \,,\,\, q_{j+1} - q_j = h \, p_j \end{equation}
 \begin{equation}\label{hamilton} {{\dd p}\over{\dd t}} + \om^2 q = 0 \,,\,\, {{\dd q}\over{\dd t}} = p \end{equation}
+For $0 \leq t \leq T$ in $N$ elements, $h = \frac{T}{N}$, the nodes at $t_j = j \, h$ and the action
+\begin{equation}\label{action} S = \sum_{j=0}^{N-1} L_d(q_j, q_{j+1}) \end{equation}
+\begin{equation}\label{actionshort} S = \sum_{j=1}^{N-1} L_d(q_j, q_{j+1}) \end{equation}
+\begin{equation}\label{actionlong} S = \sum_{j=0}^{N} L_d(q_j, q_{j+1}) \end{equation}
+\begin{equation}\label{average} \frac{q_{j+1} - 2 q_j + q_{j-1}}{h^2} + \frac{\om^2}{4} (q_{j+1} + 2 q_j + q_{j-1}) = 0 \end{equation}
+The average scheme is linearly stable. Averaging is an unconditionally stable method. Averaging, some say, is a conditionally stable method.
+The leapfrog scheme is stable. Leapfrog is an unconditionally stable method.
 \begin{equation}\label{slopemiddle} g = {{\dd q}\over{\dd t}}(0) = \frac{b - a}{2 h} = \frac{b - a}{h} \end{equation}
 )";
 
@@ -265,7 +284,7 @@ const std::string declarations = R"(
 title = "Shapes under test"
 [symbols]
 positive = ['m', '\omega', 'h']
-real = ['q', 'p', 'q_0', 'q_1', 'q_m', 'p_0', 'p_1', 'q_{j-1}', 'q_j', 'q_{j+1}', 'a', 'b', 'k', 'x', 'r', 'c', '\theta', '\psi', 'p_j', 'p_{j+1}']
+real = ['q', 'p', 'q_0', 'q_1', 'q_m', 'p_0', 'p_1', 'q_{j-1}', 'q_j', 'q_{j+1}', 'a', 'b', 'k', 'x', 'r', 'c', '\theta', '\psi', 'p_j', 'p_{j+1}', 't', 'T', 'N', 'j']
 )";
 
 std::string record(const std::string& id, const std::string& shape, const std::string& with) {
@@ -529,6 +548,37 @@ TEST_F(ShapesOnADocument, Consistency) {
   // With V uninterpreted: our kernel for V(x) = x^k, k = 0..4.
   const claim_result general = run("consistency", R"({ scheme = ["el"], equation = ['$m {{\dd^2 q}\over{\dd t^2}} + m \omega^2 q = 0$'], )" + on + " }");
   EXPECT_EQ(general.outcome, verdict::holds) << general.evidence.dump();
+}
+
+TEST_F(ShapesOnADocument, SumRange) {
+  const auto over = [&](const std::string& sum) {
+    return run("sum-range", "{ sum = \"" + sum + R"(", element = ['q_j', 'q_{j+1}'], node = 'inline:t_j = j', range = 'inline:For $0', where = ['inline:h = \frac'] })");
+  };
+  const claim_result holds = over("action");
+  EXPECT_EQ(holds.outcome, verdict::holds) << holds.note << holds.evidence.dump();
+  EXPECT_EQ(holds.evidence["exact"]["own"].get<std::string>().rfind("holds", 0), 0u) << holds.evidence.dump();
+  const claim_result shorter = over("actionshort");
+  EXPECT_EQ(shorter.outcome, verdict::erratum);
+  EXPECT_EQ(shorter.correction, "S = \\sum_{j=0}^{N-1} L_d(q_j, q_{j+1}): the elements of [0, T] are j = 0, ..., N-1: N terms");
+  // The upper bound too: a check of the first element alone would pass it.
+  EXPECT_EQ(over("actionlong").outcome, verdict::erratum);
+}
+
+TEST_F(ShapesOnADocument, UnconditionalStability) {
+  const auto judge = [&](const std::string& scheme, const std::string& sentence, const std::string& qualifier) {
+    return run("unconditional-stability", "{ scheme = \"" + scheme + R"(:lhs", sequence = ['q_{j-1}', 'q_j', 'q_{j+1}'], variable = '$\omega h$', sentence = ')" +
+                                              sentence + "'" + (qualifier.empty() ? "" : ", qualifier = '" + qualifier + "'") + " }");
+  };
+  const claim_result average = judge("average", "The average scheme is {stability}.", "Averaging is an {qualifier} stable method.");
+  EXPECT_EQ(average.outcome, verdict::holds) << average.note << average.evidence.dump();
+  EXPECT_FALSE(average.certificate.empty());
+  EXPECT_EQ(judge("average", "The average scheme is {stability}.", "").outcome, verdict::holds);
+  // The words: "conditionally" of a scheme stable for every step.
+  EXPECT_EQ(judge("average", "The average scheme is {stability}.", "Averaging, some say, is a {qualifier} stable method.").outcome, verdict::erratum);
+  // Leapfrog is stable for omega h < 2 only: a check at one step (or on (0, 2)) would pass it.
+  const claim_result leapfrog = judge("sv", "The leapfrog scheme is {stability}.", "Leapfrog is an {qualifier} stable method.");
+  EXPECT_EQ(leapfrog.outcome, verdict::erratum);
+  EXPECT_NE(leapfrog.correction.find("changes sign at h*omega = 2"), std::string::npos) << leapfrog.correction;
 }
 
 TEST_F(ShapesOnADocument, IdentityWithAFunctionDefined) {

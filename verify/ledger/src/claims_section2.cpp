@@ -4,7 +4,6 @@
 #include "claims_section2.hpp"
 
 #include <simpson/verify/quoted_words.hpp>
-#include <simpson/verify/stability_analysis.hpp>
 
 #include <simpson/verify/tex_math.hpp>  // canonical_text
 
@@ -18,42 +17,6 @@
 
 namespace simpson::verify::detail {
 namespace {
-
-/// ∂/∂q_1 of Σ_{j=first}^{N−1} L(q_j, q_{j+1}) for N = 3, by exact differences.
-template <class Lagrangian, class S>
-S action_derivative_at_q1(Lagrangian&& L, int first, const std::vector<S>& q) {
-  const auto action = [&](const S& q1) {
-    std::vector<S> nodes = q;
-    nodes[1] = q1;
-    S sum(0);
-    for (int j = first; j <= 2; ++j) sum += L(nodes[static_cast<std::size_t>(j)], nodes[static_cast<std::size_t>(j) + 1]);
-    return sum;
-  };
-  return exact_derivative(action, q[1]);
-}
-
-claim_result check_action_range(const run_context&) {
-  const auto euler_lagrange_gap = [&](int first) {
-    return [first](const auto& q) {
-      using S = std::decay_t<decltype(q[0])>;
-      const auto par = theta_oscillator<S>();
-      const auto L = [&](const S& l, const S& r) {
-        return classical_lagrangian(par.m(), par.h(), [&](const S& v) { return par.potential(v); }, l, r);
-      };
-      const auto gradient = [&](const S& v) { return par.force_gradient(v); };
-      return action_derivative_at_q1(L, first, q) + par.h() * classical_scheme_residual(par.m(), par.h(), gradient, q[0], q[1], q[2]);
-    };
-  };
-  const std::vector<std::string> vars{"q0", "q1", "q2", "q3"};
-  const std::string reduction = std::string(unit_reduction) +
-                                "; N = 3; dS_d/dq_1 + h (schema-ordre-deux) at j = 1, which must vanish for the discrete "
-                                "Euler-Lagrange equation to hold at the first interior node";
-  const proof printed = prove_zero_on_grid(reduction + "; S_d summed over j = 1..N-1 as printed", vars, 1, euler_lagrange_gap(1));
-  const proof corrected = prove_zero_on_grid(reduction + "; S_d summed over j = 0..N-1", vars, 1, euler_lagrange_gap(0));
-  return erratum(printed, corrected, "S_d = sum_{j=0}^{N-1} L_d(q_j, q_{j+1}): N elements give N terms",
-                 "The printed range has N-1 terms and leaves out the first element [t_0, t_1]; the scheme "
-                 "(schema-ordre-deux) then fails at j = 1. Typographical; the later sections do not depend on it.");
-}
 
 claim_result check_classical_euler_lagrange(const run_context&) {
   // dL_d/dq_r(q_{j-1}, q_j) + dL_d/dq_l(q_j, q_{j+1}) + h (schema-ordre-deux) = 0: a polynomial of
@@ -91,42 +54,6 @@ claim_result check_newmark_discrete_system(const run_context&) {
         return std::vector<S>{r.p, r.q};
       });
   return identity(p, "On a solution, p_j = dL_d/dq_r(q_{j-1}, q_j) equals -dL_d/dq_l(q_j, q_{j+1}) by (Euler-Lagrange-discret).");
-}
-
-claim_result check_newmark_matrix(const run_context&) {
-  const proof p = prove_zero_on_grid(std::string(unit_reduction) + "; (systeme-dynamique-discret-ordre-2) at (p_{j+1}, q_{j+1}) = Phi (p_j, q_j)",
-                                     {"p_j", "q_j"}, 1, [&](const auto& v) {
-                                       using S = std::decay_t<decltype(v[0])>;
-                                       const auto par = theta_oscillator<S>();
-                                       const phase_point<S> y{v[0], v[1]};
-                                       const phase_point<S> r = newmark_system_residual(par, y, newmark_map(par) * y);
-                                       return std::vector<S>{r.p, r.q};
-                                     });
-  return identity(p);
-}
-
-claim_result check_newmark_stability(const run_context& ctx) {
-  const quoted_sentence linearly = quote(ctx, "the scheme (\\ref{schema-ordre-deux}) is {stability}.");
-  const std::string stated = linearly.choice("stability", {{"linearly stable", "stable"}, {"stable", "stable"},
-                                                           {"linearly unstable", "unstable"}, {"unstable", "unstable"}});
-  const quoted_sentence kane = quote(ctx, "is one particular {qualifier} stable version of the Newmark scheme");
-  // "inconditionally" is the French spelling the paper uses for "unconditionally".
-  const std::string qualifier = kane.choice("qualifier", {{"inconditionally", "unconditional"}, {"unconditionally", "unconditional"},
-                                                          {"conditionally", "conditional"}, {"conditionnally", "conditional"}});
-  const auto par = unit_oscillator_in_theta();
-  const auto gradient = [&](const symbolic& v) { return par.force_gradient(v); };
-  const stability_report report = analyse_three_term_scheme([&](const symbolic& qp, const symbolic& q, const symbolic& qn) {
-    return classical_scheme_residual(par.m(), par.h(), gradient, qp, q, qn);
-  });
-  json evidence;
-  evidence["exact"] = report.evidence;
-  // Unconditionally stable: one band, stable from 0 to infinity (no positive root of Δ).
-  const bool unconditional = report.bands.size() == 1 && report.bands[0].stable && !report.bands[0].to;
-  evidence["stated"] = {{"scheme", stated}, {"qualifier", qualifier}};
-  if (!unconditional) return confirmed_if(false, evidence);
-  if (stated == "stable" && qualifier == "unconditional") return confirmed_if(true, evidence);
-  return words_erratum(evidence,
-                       "The scheme (schema-ordre-deux) is stable for every omega h > 0 (unconditionally): Delta < 0 on the whole half-line");
 }
 
 /// Newmark's scheme for m q'' + m ω² q = 0 with parameters (β, γ), v = p/m, a = −ω² q:
@@ -168,12 +95,9 @@ claim_result check_newmark_identification(const run_context& ctx) {
 }  // namespace
 
 void add_section2_checks(check_registry& checks) {
-  checks.add("action-range", check_action_range);
   checks.add("classical-euler-lagrange", check_classical_euler_lagrange);
   checks.add("newmark-discrete-system", check_newmark_discrete_system);
-  checks.add("newmark-matrix", check_newmark_matrix);
   checks.add("newmark-identification", check_newmark_identification);
-  checks.add("newmark-stability", check_newmark_stability);
 }
 
 }  // namespace simpson::verify::detail

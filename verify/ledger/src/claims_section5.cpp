@@ -18,24 +18,6 @@
 namespace simpson::verify::detail {
 namespace {
 
-claim_result check_gear_partials(const run_context&) {
-  const proof p = prove_zero_on_grid(
-      "h = theta; d g_l/dq_m - 4/h and d g_r/dq_m + 4/h by exact differences of (derivees-gear); g_m as the interpolant's "
-      "slope at the middle node, q'(t_m) of (q2t) as a function of q_l, q_m, q_r: (derivee-centree) - q'(t_m), and "
-      "d q'(t_m)/dq_m",
-      {"q_l", "q_m", "q_r"}, 1, [&](const auto& v) {
-        using S = std::decay_t<decltype(v[0])>;
-        const S h = theta_variable<S>();
-        const S ql(v[0]), qm(v[1]), qr(v[2]);
-        // g_m as a function of all three nodes (it could depend on q_m: the slope elsewhere does).
-        const auto slope_at_middle = [&](const S& x) { return quadratic_interpolant_derivative(ql, x, qr, h, S(S(1) / 2)); };
-        return std::vector<S>{exact_derivative([&](const S& x) { return gear_left(ql, x, qr, h); }, qm) - 4 / h,
-                              centred_derivative(ql, qr, h) - slope_at_middle(qm), exact_derivative(slope_at_middle, qm),
-                              exact_derivative([&](const S& x) { return gear_right(ql, x, qr, h); }, qm) + 4 / h};
-      });
-  return identity(p);
-}
-
 claim_result check_internal_second_order(const run_context& ctx) {
   const quoted_sentence said = quote(ctx, "We have put in evidence  a {order} order discretization of the continuous Euler-Lagrange equation");
   const int stated = said.number("order");
@@ -200,7 +182,6 @@ claim_result check_maupertuis_naming(const run_context& ctx) {
 
 void add_section5_checks(check_registry& checks) {
   checks.add("maupertuis-naming", check_maupertuis_naming);
-  checks.add("gear-partials", check_gear_partials);
   checks.add("internal-second-order", check_internal_second_order);
   checks.add("qm-not-affine", check_qm_not_affine);
   checks.add("taylor-display", check_taylor_display);

@@ -33,15 +33,6 @@ std::vector<proof_goal> dimensional_scaling() {
                   d.m * d.omega * d.omega * discrete_energy(unit, phase_point<ex>{d.p / (d.m * d.omega), d.q}))};
 }
 
-/// Newmark's Φ (det 1): its discriminant tr² − 4 < 0 for every ω > 0, h > 0, so its roots are
-/// complex conjugate of modulus 1: stable for every step.
-std::vector<proof_goal> newmark_unconditional_stability() {
-  const symbolic_derivation& d = derivation();
-  const auto phi = newmark_map(parameters(d));
-  const ex trace = phi.alpha + phi.delta;
-  return {sign_goal("discriminant", trace * trace - 4, -1, {d.omega}, GiNaC::exmap{{d.omega, 1}, {d.h, 1}, {d.m, 1}})};
-}
-
 /// Φ₃ = L(c) U(b) L(c), the core's shears multiplied out, entry by entry (off ω²h² = 12, 24, where
 /// the drift's denominator vanishes: hypotheses of the lemmas).
 std::vector<proof_goal> phi3_shear_factorization() {
@@ -92,7 +83,6 @@ proof_goal sign_goal(const std::string& name, const ex& lhs, int sign, std::vect
 void add_kernel_claim_goals(check_registry& checks) {
   checks.add_coq_goals("phi3-explicit", phi3_explicit);
   checks.add_coq_goals("phi3-shear-factorization", phi3_shear_factorization);
-  checks.add_coq_goals("newmark-stability", newmark_unconditional_stability);
   checks.add_coq_goals("scaling", dimensional_scaling);
   checks.add_coq_goals("family-symplectic", family_symplectic_goals);
 }

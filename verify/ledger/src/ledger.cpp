@@ -10,7 +10,6 @@
 #include "proof_shapes.hpp"
 #include "printed_check_support.hpp"
 #include "claims_section2.hpp"
-#include "claims_section3_4.hpp"
 #include "claims_section5.hpp"
 #include "claims_section6_7.hpp"
 #include "claims_section8_9.hpp"
@@ -35,7 +34,6 @@ const check_registry& registered_checks() {
     add_scaling_lemma_check(all);
     add_abstract_checks(all);
     add_section2_checks(all);
-    add_section3_4_checks(all);
     add_section5_checks(all);
     add_section6_7_checks(all);
     add_convention_checks(all);

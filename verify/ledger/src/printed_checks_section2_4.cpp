@@ -1,5 +1,5 @@
-// §2–4 as printed: the discrete action's range, L_d and its scheme, Newmark's momentum, system,
-// matrix and energy; the Gear derivatives and the interpolant's velocity; Simpson's L_h.
+// §2 as printed: L_d and its scheme, Newmark's discrete system and matrix (the other claims of
+// §2–4 are proof shapes' records in claims/paper.toml).
 
 #include "check_registry.hpp"
 #include "printed_check_support.hpp"
@@ -14,24 +14,6 @@ namespace simpson::verify::detail {
 namespace {
 
 using GiNaC::ex;
-
-/// S_d and Σ_d: N elements [t_j, t_{j+1}] of [0, T] are j = 0 … N − 1, so the sum runs over them.
-printed_outcome action_range(const paper_reading& r, const std::string& name, const std::string& what) {
-  const ex& sum = printed_side(r, name);
-  printed_outcome o;
-  o.derived = "the elements [t_j, t_{j+1}] inside [0, T = N h] are j = 0, ..., N-1: N terms";
-  if (!is_sum(sum)) {
-    o.proved = "the printed " + what + " is not a sum: " + text_of(sum);
-    return o;
-  }
-  const ex lower = sum.op(2), upper = sum.op(3), N = sym("N");
-  const ex terms = GiNaC::normal(upper - lower + 1);
-  o.holds = GiNaC::normal(lower).is_zero() && GiNaC::normal(upper - (N - 1)).is_zero();
-  o.proved = "printed " + what + " sums j = " + text_of(lower) + ", ..., " + text_of(upper) + ": " + text_of(terms) +
-             " terms for N elements";
-  if (!o.holds) o.correction = what + " = sum_{j=0}^{N-1} " + text_of(sum.op(0)) + ": N elements give N terms";
-  return o;
-}
 
 printed_outcome classical_euler_lagrange(const paper_reading& r) {
   const symbolic_derivation& d = derivation();
@@ -82,34 +64,11 @@ printed_outcome newmark_system(const paper_reading& r) {
   return o;
 }
 
-/// Φ's defining property, what a certificate states (Φ = derived is one normal form for GiNaC):
-/// with q_{j+1} from Φ's second row, the momenta of L_d are p_j and Φ's first row.
-void add_momenta_goals(printed_outcome& o, const std::string& who, const ex& phi, bool printed) {
-  if (!GiNaC::is_a<GiNaC::matrix>(phi) || GiNaC::ex_to<GiNaC::matrix>(phi).rows() != 2 || GiNaC::ex_to<GiNaC::matrix>(phi).cols() != 2) return;
-  const symbolic_derivation& d = derivation();
-  const GiNaC::matrix& M = GiNaC::ex_to<GiNaC::matrix>(phi);
-  const ex p_next = M(0, 0) * d.p_j + M(0, 1) * d.q_j, q_next = M(1, 0) * d.p_j + M(1, 1) * d.q_j;
-  add_goal(o, decided(who + "_momentum_left", newmark_derivation().momentum_left.subs(d.q_next == q_next), d.p_j), printed);
-  add_goal(o, decided(who + "_momentum_right", newmark_derivation().momentum_right.subs(d.q_next == q_next), p_next), printed);
-}
-
-printed_outcome newmark_matrix(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
-  const GiNaC::matrix core = as_matrix(newmark_map(parameters(d)));
-  printed_outcome o = compare("Phi", printed_side(r, "matrice-symplectique-ordre-2"), newmark_derivation().newmark_phi, core);
-  add_momenta_goals(o, "printed", printed_side(r, "matrice-symplectique-ordre-2"), true);
-  add_momenta_goals(o, "core", core, false);
-  return o;
-}
-
 }  // namespace
 
 void add_printed_checks_section2_4(check_registry& checks) {
-  checks.add_printed("action-range", {"S_d"}, [](const paper_reading& r) { return action_range(r, "S_d", "S_d"); });
   checks.add_printed("classical-euler-lagrange", {"lagrangien-discret", "schema-ordre-deux"}, classical_euler_lagrange);
   checks.add_printed("newmark-discrete-system", {"systeme-dynamique-discret-ordre-2#0", "systeme-dynamique-discret-ordre-2#1"}, newmark_system);
-  checks.add_printed("newmark-matrix", {"matrice-symplectique-ordre-2"}, newmark_matrix);
-  checks.add_printed("simpson-action-range", {"SSdd"}, [](const paper_reading& r) { return action_range(r, "SSdd", "Sigma_d"); });
 }
 
 }  // namespace simpson::verify::detail

@@ -18,21 +18,6 @@ using GiNaC::ex;
 
 const GiNaC::symbol& as_symbol(const ex& e) { return GiNaC::ex_to<GiNaC::symbol>(e); }
 
-printed_outcome gear_partials(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
-  const GiNaC::symbol& qm = as_symbol(d.q_m);
-  printed_outcome o =
-      both(both(compare("dg_l/dq_m", printed_side(r, "dg_l/dq_m"), d.g_l.diff(qm), gear_left(d.q_l, d.q_m, d.q_r, d.h).diff(qm)),
-                compare("dg_m/dq_m", printed_side(r, "dg_m/dq_m"), d.g_m.diff(qm), centred_derivative(d.q_l, d.q_r, d.h).diff(qm))),
-           compare("dg_r/dq_m", printed_side(r, "dg_r/dq_m"), d.g_r.diff(qm), gear_right(d.q_l, d.q_m, d.q_r, d.h).diff(qm)));
-  // What a certificate states (partial = derived is one normal form for GiNaC): each Gear formula is
-  // affine in q_m, so its increment when q_m moves by e is the printed partial times e.
-  const GiNaC::symbol e("e");
-  const std::pair<const char*, ex> formulas[] = {{"dg_l/dq_m", d.g_l}, {"dg_m/dq_m", d.g_m}, {"dg_r/dq_m", d.g_r}};
-  for (const auto& [name, g] : formulas) add_goal(o, decided("printed_increment", g.subs(d.q_m == d.q_m + e) - g, printed_side(r, name) * e), true);
-  return o;
-}
-
 /// (equation-milieu-intervalle) on a smooth q(t) at t - h/2, t, t + h/2, V uninterpreted: its leading
 /// term is (oscillateur-nonlineaire).
 printed_outcome internal_equation_second_order(const paper_reading& r) {
@@ -134,7 +119,6 @@ GiNaC::ex truncation_series(const symbolic_derivation& d, const GiNaC::ex& norma
 }
 
 void add_printed_checks_section5(check_registry& checks) {
-  checks.add_printed("gear-partials", {"dg_l/dq_m", "dg_m/dq_m", "dg_r/dq_m"}, gear_partials);
   checks.add_printed("internal-second-order", {"equation-milieu-intervalle", "oscillateur-nonlineaire"}, internal_equation_second_order);
   checks.add_printed("taylor-display", {"Taylor q_{j+1}", "Taylor q_{j-1}"}, taylor_display);
   checks.add_printed("discriminant-factorization", {"discriminant-factorized", "a", "b"}, discriminant_factorization);

@@ -150,6 +150,12 @@ const std::map<std::string, proof_shape>& proof_shapes() {
                      {"function", argument_kind::symbols, true, "the rule's function (psi)", 1},
                      {"state", argument_kind::symbols, true, "the state q, a function the definitions give (q(t) = ...)", 1}}),
          discrete_lagrangian_shape});
+    add({"sum-range", "the printed sum runs over the elements of the printed interval, from the first (starting at its start) to the last (ending at its end)", "sum",
+         with_where({{"sum", argument_kind::formula, true, "the printed sum \\sum_{j=a}^{b}"},
+                     {"element", argument_kind::symbols, true, "the summand's first and last nodes, x_j and x_{j+1}", 2},
+                     {"node", argument_kind::formula, true, "the printed time of node j, t_j = j h"},
+                     {"range", argument_kind::condition, true, "the printed interval a <= t <= b"}}),
+         sum_range_shape});
     add({"sign-on-interval", "expression has the stated sign on the printed interval 0 < variable < c", "expression",
          with_where({{"expression", argument_kind::formula, true, "a function of the variable alone once scaled"},
                      {"variable", argument_kind::formula, true, "the variable of the condition, a product of positive symbols", 0, "", true},
@@ -181,6 +187,18 @@ const std::map<std::string, proof_shape>& proof_shapes() {
                      pattern_with_hole("sentence", "the sentence's pattern: the hole {roots} (complex conjugate, real), optionally {product} and {conclusion} (stable, unstable)",
                                        "roots")}),
          characteristic_roots_shape});
+    add({"unconditional-stability", "what a sentence says of the scheme's stability ({stability}, optionally {qualifier}) against the root condition for every variable > 0",
+         "scheme",
+         with_where({{"scheme", argument_kind::formula, true, "a linear three-term scheme (= 0) whose first and last coefficients are equal"},
+                     {"sequence", argument_kind::symbols, true, "its three states q_{j-1}, q_j, q_{j+1}", 3},
+                     {"variable", argument_kind::formula, true, "the variable the scheme's roots depend on, a product of positive symbols", 0, "", true},
+                     pattern_with_hole("sentence", "the sentence's pattern: the hole {stability} (stable, linearly stable, unstable)", "stability"),
+                     [] {
+                       shape_parameter p = pattern_with_hole("qualifier", "optionally, a sentence with the hole {qualifier} (unconditionally, conditionally)", "qualifier");
+                       p.required = false;
+                       return p;
+                     }()}),
+         unconditional_stability_shape});
     add({"root-criterion", "a stability criterion stated on the roots' modulus, against the root condition on every region of variable > 0", "scheme",
          with_where({{"scheme", argument_kind::formula, true, "a linear three-term scheme (= 0) whose first and last coefficients are equal"},
                      {"sequence", argument_kind::symbols, true, "its three states q_{j-1}, q_j, q_{j+1}", 3},

@@ -69,7 +69,9 @@ referenced_formula shape_reader::raw(const std::string& parameter) {
   // Shown with its matrix products multiplied out (1/(1 + x) times a matrix, as printed), unless a
   // definition is still to make one of its symbols a matrix.
   GiNaC::ex shown = f.value;
-  if (definitions_.empty()) {
+  const bool defines_a_matrix =
+      std::any_of(definitions_.begin(), definitions_.end(), [](const definition& d) { return GiNaC::is_a<GiNaC::matrix>(d.value.evalm()); });
+  if (!defines_a_matrix) {
     try {
       shown = with_definitions(f.value, {});
     } catch (const std::exception&) {
@@ -132,9 +134,10 @@ json shape_reader::printed() const {
 
 void shape_reader::declared_only(const ex& e, const std::string& where) const {
   if (!call_.document) return;
-  std::set<std::string> bound;  // an integral's variable: bound in it, not a symbol of the document
+  std::set<std::string> bound;  // an integral's variable and a sum's index: bound in it, not symbols of the document
   for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
     if (GiNaC::is_a<GiNaC::integral>(*it)) bound.insert(GiNaC::ex_to<GiNaC::symbol>(it->op(0)).get_name());
+    if (is_sum(*it) && GiNaC::is_a<GiNaC::symbol>(it->op(1))) bound.insert(GiNaC::ex_to<GiNaC::symbol>(it->op(1)).get_name());
   }
   // A derivative of a declared symbol, d^kx/dt^k (the state's, in a differential equation), is declared.
   const auto derivative_of_declared = [&](const std::string& name) {

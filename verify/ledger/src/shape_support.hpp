@@ -4,7 +4,7 @@
 // verdict on an identity in both kernels with its Coq certificate, and each shape's function, by
 // family: identities (shapes_identities.cpp), derivations (shapes_derivation.cpp), series
 // (shapes_series.cpp), intervals (shapes_intervals.cpp), characteristic polynomials
-// (shapes_characteristic.cpp), quadrature (shapes_quadrature.cpp).
+// (shapes_characteristic.cpp), quadrature (shapes_quadrature.cpp), sums (shapes_sums.cpp).
 
 #include "kernel_zero.hpp"
 #include "proof_shapes.hpp"
@@ -129,5 +129,7 @@ claim_result root_criterion_shape(const shape_call& call, const run_context& ctx
 claim_result quadrature_exactness_shape(const shape_call& call, const run_context& ctx);
 claim_result discrete_lagrangian_shape(const shape_call& call, const run_context& ctx);
 claim_result consistency_shape(const shape_call& call, const run_context& ctx);
+claim_result sum_range_shape(const shape_call& call, const run_context& ctx);
+claim_result unconditional_stability_shape(const shape_call& call, const run_context& ctx);
 
 }  // namespace simpson::verify::detail

@@ -1,7 +1,8 @@
 // The characteristic-polynomial shapes (shape_support.hpp) of a linear three-term scheme, the scheme
 // taken at the geometric sequence q_{j-1} = 1, q_j = r, q_{j+1} = r²: a printed polynomial in r is
 // it up to a factor free of r (characteristic), and what a sentence says of its roots on a printed
-// interval (characteristic-roots).
+// interval (characteristic-roots), a criterion on their modulus (root-criterion), and stability for
+// every step (unconditional-stability).
 
 #include "shape_support.hpp"
 
@@ -237,6 +238,39 @@ claim_result characteristic_roots_shape(const shape_call& call, const run_contex
   return result;
 }
 
+namespace {
+
+/// A reversible linear three-term scheme's monic discriminant as a function of the variable alone
+/// (what root-criterion and unconditional-stability judge): none, with `result` made `fails` and its
+/// note saying why, when the scheme is not one or the discriminant is not such a function.
+struct reversible_scheme {
+  three_term_coefficients terms;
+  kernel_decision reversible_own;
+  ex delta;
+  std::optional<one_variable> g;
+};
+std::optional<reversible_scheme> reversible_premise(const ex& scheme, const std::vector<GiNaC::symbol>& q, const ex& v, const std::string& scheme_ref,
+                                                   claim_result& result) {
+  reversible_scheme out;
+  const std::optional<three_term_coefficients> terms = linear_three_term(scheme, q);
+  if (!terms || !reversible(*terms, out.reversible_own)) {
+    result.outcome = verdict::fails;
+    result.note = "The shape judges linear three-term schemes whose first and last coefficients are equal; (" + scheme_ref + ") is not one.";
+    return std::nullopt;
+  }
+  out.terms = *terms;
+  out.delta = monic_discriminant(*terms);
+  out.g = in_variable(out.delta, v);
+  if (!out.g) {
+    result.outcome = verdict::fails;
+    result.note = "The discriminant " + text_of(out.delta) + " is not a function of " + text_of(v) + " alone.";
+    return std::nullopt;
+  }
+  return out;
+}
+
+}  // namespace
+
 /// "The scheme is stable when the roots of the corresponding equation are of modulus {modulus}": the
 /// stated criterion against the root condition (every root of modulus at most 1, those of modulus 1
 /// simple) on every region of v > 0, for a reversible scheme (P₀ = P₂: the roots' product is 1). The
@@ -256,20 +290,11 @@ claim_result root_criterion_shape(const shape_call& call, const run_context& ctx
   const std::string scheme_ref = reference_of(call, "scheme");
   claim_result result;
   result.printed = read.printed();
-  const std::optional<three_term_coefficients> terms = linear_three_term(scheme, q);
-  kernel_decision reversible_own;
-  if (!terms || !reversible(*terms, reversible_own)) {
-    result.outcome = verdict::fails;
-    result.note = "The shape judges criteria for linear three-term schemes whose first and last coefficients are equal; (" + scheme_ref + ") is not one.";
-    return result;
-  }
-  const ex delta = monic_discriminant(*terms);
-  const std::optional<one_variable> g = in_variable(delta, v);
-  if (!g) {
-    result.outcome = verdict::fails;
-    result.note = "The discriminant " + text_of(delta) + " is not a function of " + text_of(v) + " alone.";
-    return result;
-  }
+  const std::optional<reversible_scheme> premise = reversible_premise(scheme, q, v, scheme_ref, result);
+  if (!premise) return result;
+  const ex& delta = premise->delta;
+  const std::optional<one_variable>& g = premise->g;
+  const kernel_decision& reversible_own = premise->reversible_own;
   // What the criterion calls stable: a simple pair of modulus 1; real ρ, 1/ρ with ρ near 1; a double root ±1.
   const bool says_unit_pair = bound.admits(1);
   const bool says_real_pair = (bound.relation == "<" || bound.relation == "<=") ? bound.value > 1
@@ -279,7 +304,7 @@ claim_result root_criterion_shape(const shape_call& call, const run_context& ctx
   const std::string var = text_of(v), var_in = g->in_square ? "(" + var + ")^2" : var;
   json regions = json::array();
   std::vector<std::string> stable_bands;
-  std::vector<proof_goal> goals{decided("reversible", terms->next, terms->previous)};
+  std::vector<proof_goal> goals{decided("reversible", premise->terms.next, premise->terms.previous)};
   bool agrees = true;
   rational from = 0;
   std::string from_text = "0";
@@ -330,6 +355,63 @@ claim_result root_criterion_shape(const shape_call& call, const run_context& ctx
   result.correction = fmt::format("The scheme is stable when the roots have modulus <= 1 and the roots of modulus 1 are simple (root condition); here they "
                                   "are simple, conjugate and of modulus 1 for {} in {}.", var, fmt::join(stable_bands, " and "));
   result.note = "As printed, '" + said.words("modulus") + "' and the root condition disagree on a region above.";
+  return result;
+}
+
+/// "the scheme is {stability}" (stable, linearly stable, unstable), optionally with "{qualifier}
+/// stable" (unconditionally, or the paper's French "inconditionally"; conditionally): against the root
+/// condition on every ωh > 0 of a reversible linear three-term scheme. Unconditionally stable when its
+/// discriminant has no root or pole on variable > 0 and is negative there (Sturm sequences; Coq: the
+/// sign for every positive symbol); else stable only on the bands between them.
+claim_result unconditional_stability_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const ex scheme = read.formula("scheme");
+  const std::vector<GiNaC::symbol> q = read.symbols("sequence");
+  const ex v = read.formula("variable");
+  const quoted_sentence said = quote(ctx, call.with.at("sentence").values.front());
+  const std::string stated = said.choice("stability", {{"linearly stable", "stable"}, {"stable", "stable"}, {"linearly unstable", "unstable"}, {"unstable", "unstable"}});
+  std::string qualifier = "unconditional";  // no qualifying sentence: stable means for every step
+  if (call.with.count("qualifier")) {
+    qualifier = quote(ctx, call.with.at("qualifier").values.front())
+                    .choice("qualifier", {{"unconditionally", "unconditional"}, {"inconditionally", "unconditional"}, {"conditionally", "conditional"},
+                                          {"conditionnally", "conditional"}});
+  }
+  const std::string scheme_ref = reference_of(call, "scheme");
+  claim_result result;
+  result.printed = read.printed();
+  const std::optional<reversible_scheme> premise = reversible_premise(scheme, q, v, scheme_ref, result);
+  if (!premise) return result;
+  const ex& delta = premise->delta;
+  const std::optional<one_variable>& g = premise->g;
+  const kernel_decision& reversible_own = premise->reversible_own;
+  const std::string var = text_of(v);
+  const bool unconditional = g->ends.empty() && g->sign_at(1) < 0;
+  std::vector<ex> positive;
+  GiNaC::exmap inside;
+  for (const std::string& name : symbol_names(delta)) {
+    positive.push_back(paper_symbols()[name]);
+    inside[paper_symbols()[name]] = 1;
+  }
+  if (unconditional) record_certificate(result, coq_certificate(call.claim_id, call.statement, {sign_goal("discriminant", delta, -1, positive, inside)}));
+  std::string where;
+  for (const positive_root& end : g->ends) where += (where.empty() ? "" : ", ") + g->text(end);
+  result.evidence["exact"] = {
+      {"statement", fmt::format("the root condition of ({}) on every {} > 0", scheme_ref, var)},
+      {"stated", {{"scheme", stated}, {"qualifier", qualifier}}},
+      {"reversible", "the first and last coefficients are equal (GiNaC normal form; our kernel: " + reversible_own.evidence + ")"},
+      {"discriminant", text_of(delta) + " (over the leading coefficient squared)"},
+      {"computed", unconditional ? fmt::format("negative for every {} > 0: simple conjugate roots of modulus 1, stable for every step", var)
+                                 : fmt::format("roots or poles at {} = {}: not stable for every step", var, where)},
+      {"own", std::string(unconditional == (stated == "stable" && qualifier == "unconditional") ? "holds" : "fails") +
+                  ": the discriminant's roots and poles on " + var + " > 0 by Sturm sequences, in " + (g->in_square ? "(" + var + ")^2" : var)},
+      {"ginac", "holds: the premise in normal form, and the discriminant as a function of " + var + " alone; its sign is our kernel's"}};
+  if (unconditional && stated == "stable" && qualifier == "unconditional") {
+    result.outcome = verdict::holds;
+    return result;
+  }
+  result.outcome = verdict::erratum;
+  result.correction = unconditional ? fmt::format("The scheme ({}) is stable for every {} > 0 (unconditionally): its discriminant is negative on the whole half-line", scheme_ref, var)
+                                    : fmt::format("The scheme ({}) is not stable for every {} > 0: its discriminant changes sign at {} = {}", scheme_ref, var, var, where);
   return result;
 }
 

@@ -3,6 +3,8 @@
 
 #include "shape_support.hpp"
 
+#include "coq_export.hpp"
+
 #include "printed_check_support.hpp"
 
 #include <fmt/format.h>
@@ -139,11 +141,17 @@ claim_result discrete_map_shape(const shape_call& call, const run_context& ctx) 
   if (momentum_first) derived = GiNaC::matrix{{derived(1, 1), derived(1, 0)}, {derived(0, 1), derived(0, 0)}};
   const std::string what = fmt::format("({}) is the one-step map of ({}), in ({})", reference_of(call, "map"), reference_of(call, "lagrangian"),
                                        momentum_first ? "p, q" : "q, p");
-  claim_result result = identity_verdict(call, read, "one_step_map", what, ex(printed), ex(derived),
+  claim_result result = identity_verdict(call, read, "printed", what, ex(printed), ex(derived),
                                          fmt::format("as derived from ({}): ({}) = {}", reference_of(call, "lagrangian"), reference_of(call, "map"),
                                                      text_of(ex(derived))));
   result.evidence["exact"]["derivation"] = {{"q_1", text_of(q1)}, {"p_1", text_of(p1)},
                                             {"internal_nodes", internal.empty() ? std::string("none") : std::to_string(internal.size()) + " eliminated"}};
+  // Coq is also told the derived map's defining property, which "printed = derived" leaves to GiNaC's
+  // normal form: with q_1 from it, the momenta of the (reduced) Lagrangian are p_0 and its p_1.
+  record_certificate(result, coq_certificate(call.claim_id, call.statement,
+                                             {decided("printed", ex(printed), ex(derived)),
+                                              decided("derived_momentum_left", -reduced.diff(nodes[0]).subs(nodes[1] == q1), momenta[0]),
+                                              decided("derived_momentum_right", reduced.diff(nodes[1]).subs(nodes[1] == q1), p1)}));
   return result;
 }
 

@@ -309,18 +309,31 @@ std::vector<definition> in_their_arguments(const std::vector<definition>& defini
   return out;
 }
 
-/// The symbols that name a defined function's derivative in its own argument, as a derivative
-/// without an argument parses ({{\dd q}\over{\dd t}}, "dq/dt", with q(t) defined): each with the
-/// derivative of the function's value.
+/// The symbols that name a derivative of a definition, as a derivative without an argument parses:
+/// a defined function's in its own argument ({{\dd q}\over{\dd t}}, "dq/dt", with q(t) defined), and
+/// a defined symbol's partial derivative by a symbol of its value ({{\partial g}\over{\partial x}},
+/// "dg/dx", with g = ... defined): each with the derivative of the value.
 GiNaC::exmap derivative_symbols(const GiNaC::ex& e, const std::vector<definition>& definitions) {
   GiNaC::exmap out;
   for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
     if (!GiNaC::is_a<GiNaC::symbol>(*it)) continue;
     const std::string name = GiNaC::ex_to<GiNaC::symbol>(*it).get_name();
+    if (name.size() < 4 || name[0] != 'd' || name.find("/d") == std::string::npos) continue;
     for (const definition& d : definitions) {
-      if (d.function.empty()) continue;
-      for (int k = 1; k <= 4; ++k) {
-        if (name == derivative_name(d.function, d.parameter->get_name(), k, k)) out[*it] = GiNaC::diff(d.value, *d.parameter, static_cast<unsigned>(k));
+      if (!d.function.empty()) {
+        for (int k = 1; k <= 4; ++k) {
+          if (name == derivative_name(d.function, d.parameter->get_name(), k, k)) out[*it] = GiNaC::diff(d.value, *d.parameter, static_cast<unsigned>(k));
+        }
+        continue;
+      }
+      for (int k = 1; k <= 2; ++k) {  // d^k<name>/d<by>^k, by any symbol (one the value does not hold gives 0)
+        const std::string suffix = k == 1 ? "" : "^" + std::to_string(k), prefix = "d" + suffix + d.name.get_name() + "/d";
+        if (name.size() <= prefix.size() + suffix.size() || name.compare(0, prefix.size(), prefix) != 0 ||
+            name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0) {
+          continue;
+        }
+        const std::string by = name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
+        out[*it] = GiNaC::diff(d.value, GiNaC::ex_to<GiNaC::symbol>(paper_symbols()[by]), static_cast<unsigned>(k));
       }
     }
   }

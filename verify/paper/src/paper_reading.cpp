@@ -8,21 +8,15 @@ const std::vector<formula_location>& printed_formula_locations() {
   using k = formula_location::kind;
   static const std::vector<formula_location> formulas{
       // §2
-      {"S_d", k::anchored_display, "can be defined according to"},
       {"lagrangien-discret", k::labelled, "lagrangien-discret"},
       {"schema-ordre-deux", k::labelled, "schema-ordre-deux", 0, {0}},
       {"oscillateur-nonlineaire", k::labelled, "oscillateur-nonlineaire", 0, {0, 1}},
       {"oscillateur harmonique", k::labelled, "oscillateur harmonique"},
       {"systeme-dynamique-discret-ordre-2#0", k::labelled, "systeme-dynamique-discret-ordre-2", 0, {0, 1}},
       {"systeme-dynamique-discret-ordre-2#1", k::labelled, "systeme-dynamique-discret-ordre-2", 1, {0, 1}},
-      {"matrice-symplectique-ordre-2", k::labelled, "matrice-symplectique-ordre-2"},
       {"HH-exact", k::labelled, "HH-exact"},
       // §4
-      {"SSdd", k::labelled, "SSdd"},
       // §5
-      {"dg_l/dq_m", k::inline_formula, "{{\\partial g_\\ell}\\over{\\partial q_m}} ="},
-      {"dg_m/dq_m", k::inline_formula, "{{\\partial g_m}\\over{\\partial q_m}} ="},
-      {"dg_r/dq_m", k::inline_formula, "{{\\partial g_r}\\over{\\partial q_m}} ="},
       {"dL_h/dq_m", k::inline_formula, "{{\\partial L_h}\\over{\\partial q_m}} = {{h}\\over{12}}"},
       {"g_r - g_l", k::inline_formula, "g_r - g_\\ell = {{4}\\over{h}}"},
       {"equation-milieu-intervalle", k::labelled, "equation-milieu-intervalle", 0, {0}},

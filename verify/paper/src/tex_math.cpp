@@ -473,6 +473,11 @@ std::vector<std::string> relation_sides(const std::string& tex) {
       k += 5;
       continue;
     }
+    if (depth == 0 && tex.compare(k, 4, "\\leq") == 0 && (k + 4 == tex.size() || !std::isalpha(static_cast<unsigned char>(tex[k + 4])))) {
+      sides.emplace_back();  // a range 0 \leq t \leq T, as 0 < t < T is
+      k += 3;
+      continue;
+    }
     sides.back() += c;
   }
   for (std::string& s : sides) {

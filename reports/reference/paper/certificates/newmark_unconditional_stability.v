@@ -17,13 +17,11 @@ Lemma newmark_unconditional_stability_discriminant :
   forall h omega : R,
   0 < h ->
   (((-1) * (h ^ 2) * (omega ^ 2)) + (-4)) <> 0 ->
+  0 < h ->
   0 < omega ->
-  ((-4) + (4 * ((((-1) * (h ^ 2) * (omega ^ 2)) + 4) ^ 2) * (/ ((((-1) * (h ^ 2) * (omega ^ 2)) + (-4)) ^ 2)))) < 0.
+  ((-64) * (/ ((((-1) * (h ^ 2) * (omega ^ 2)) + (-4)) ^ 2)) * (h ^ 2) * (omega ^ 2)) < 0.
 Proof.
   intros.
-  replace ((-4) + (4 * ((((-1) * (h ^ 2) * (omega ^ 2)) + 4) ^ 2) * (/ ((((-1) * (h ^ 2) * (omega ^ 2)) + (-4)) ^ 2))))
-    with ((-64) * (/ ((((-1) * (h ^ 2) * (omega ^ 2)) + (-4)) ^ 2)) * (h ^ 2) * (omega ^ 2))
-    by (field; repeat split; nonzero).
   assert (0 < (/ ((((-1) * (h ^ 2) * (omega ^ 2)) + (-4)) ^ 2))) by (apply Rinv_0_lt_compat; nra).
   assert (0 < (h ^ 2)) by nra.
   assert (0 < ((/ ((((-1) * (h ^ 2) * (omega ^ 2)) + (-4)) ^ 2)) * (h ^ 2))) by (apply Rmult_lt_0_compat; assumption).

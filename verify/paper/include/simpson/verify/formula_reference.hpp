@@ -68,8 +68,9 @@ struct definition {
 definition read_definition(const paper_source& document, const std::map<std::string, tex_macro>& macros, const std::string& reference);
 
 /// `e` with the definitions put in (a function's at each of its applications and derivatives, V'(x)
-/// as the derivative of V's value, and a derivative written without an argument, dq/dt with q(t)
-/// defined, as the derivative of its value in its argument), again until none of their symbols or
+/// as the derivative of V's value, a derivative written without an argument, dq/dt with q(t)
+/// defined, as the derivative of its value in its argument, and a partial derivative of a defined
+/// symbol, dg/dx with g = ..., as that of its value), again until none of their symbols or
 /// functions is left (a definition may use another), and its matrices evaluated (a product of two in
 /// the one order whose sizes agree). A function defined in another variable than its argument, q(t)
 /// = ... θ, is read in its argument when a definition gives that argument linearly in one symbol

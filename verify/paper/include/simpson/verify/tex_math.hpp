@@ -72,8 +72,8 @@ class tex_parse_error : public std::invalid_argument {
   std::size_t offset_;
 };
 
-/// The sides of a display split at its top-level relations (=, \equiv, <), trailing punctuation
-/// dropped: "p_r = A" gives {"p_r", "A"}.
+/// The sides of a display split at its top-level relations (=, \equiv, \simeq, <, \leq), trailing
+/// punctuation dropped: "p_r = A" gives {"p_r", "A"}.
 std::vector<std::string> relation_sides(const std::string& tex);
 
 /// The canonical text of an expression: its normal form as (expanded numerator)/(expanded
