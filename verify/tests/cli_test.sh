@@ -259,11 +259,11 @@ for k in 1 2 3 4; do [ -e "$work/none-claims$k" ] && fail "bad claims file wrote
 awk 'BEGIN{p=0} /^id = "phi3-det"/{p=1} p && /^expected = "holds"/{sub(/holds/, "erratum\"\nfinding = \"erratum"); p=0} {print}' "$claims_src" >"$work/phi3-erratum.toml"
 check "claims file read" 1 --claims-file "$work/phi3-erratum.toml" --scene quick --claims phi3-det --out "$work/claims-file"
 grep -q "phi3-det: verdict holds, expected erratum" "$work/err" || fail "claims file read: expectation not from the file: $(cat "$work/err")"
-# A note the harness has never seen, checked from its claims file alone: its three deliberate
+# A note the harness has never seen, checked from its claims file alone: its four deliberate
 # errors are errata with corrections (exit 0: as the file expects); --validate judges them failures.
 note_dir="$(dirname "$0")/notes"
 check "a note from its claims file" 0 --paper "$note_dir/trapezoidal-note.tex" --claims-file "$note_dir/trapezoidal-note.toml" --out "$work/note"
-grep -q '^10 claims: 6 held, 4 errata, 0 failed' "$work/out" || fail "a note: summary: $(cat "$work/out")"
+grep -q '^12 claims: 7 held, 5 errata, 0 failed' "$work/out" || fail "a note: summary: $(cat "$work/out")"
 grep -q '"correction": "stable exactly for 0 < h\*omega < 2"' "$work/note/report.json" || fail "a note: the stability correction is not in the report"
 grep -q "^Exit code 0: every verdict is the expected one, the claims file's expected verdicts for its document" "$work/note/report.md" ||
   fail "a note: the exit line speaks of the paper"
@@ -273,7 +273,7 @@ grep -q '"file": "certificates/stability_condition.v"' "$work/note/report.json" 
 if command -v coqc >/dev/null 2>&1; then  # every certificate the shapes export, checked by coqc
   check "a note, certified" 0 --certify --paper "$note_dir/trapezoidal-note.tex" --claims-file "$note_dir/trapezoidal-note.toml" --out "$work/note-certified"
   grep -q '"status": "failed"' "$work/note-certified/report.json" && fail "a note: a Coq certificate did not check"
-  cat "$work/out" "$work/err" | grep -q "^\[coqc\] 9 certificate files checked" || fail "a note, certified: $(cat "$work/out" "$work/err" | grep coqc)"
+  cat "$work/out" "$work/err" | grep -q "^\[coqc\] 10 certificate files checked" || fail "a note, certified: $(cat "$work/out" "$work/err" | grep coqc)"
 fi
 check "a note, validated" 1 --validate --paper "$note_dir/trapezoidal-note.tex" --claims-file "$note_dir/trapezoidal-note.toml" --out "$work/note-validated"
 check "a note without --paper" 2 --claims-file "$note_dir/trapezoidal-note.toml" --out "$work/none-note1"

@@ -276,6 +276,8 @@ For $0 \leq t \leq T$ in $N$ elements, $h = \frac{T}{N}$, the nodes at $t_j = j 
 \begin{equation}\label{average} \frac{q_{j+1} - 2 q_j + q_{j-1}}{h^2} + \frac{\om^2}{4} (q_{j+1} + 2 q_j + q_{j-1}) = 0 \end{equation}
 The average scheme is linearly stable. Averaging is an unconditionally stable method. Averaging, some say, is a conditionally stable method.
 The leapfrog scheme is stable. Leapfrog is an unconditionally stable method.
+\begin{equation}\label{taylorup} q_{j+1} = q_j + h {{\dd q}\over{\dd t}} + \frac{h^2}{2} {{\dd^2 q}\over{\dd t^2}} + {\rm O}(h^3) \end{equation}
+\begin{equation}\label{taylorwrong} q_{j-1} = q_j - h {{\dd q}\over{\dd t}} - \frac{h^2}{2} {{\dd^2 q}\over{\dd t^2}} + {\rm O}(h^3) \end{equation}
 \begin{equation}\label{slopemiddle} g = {{\dd q}\over{\dd t}}(0) = \frac{b - a}{2 h} = \frac{b - a}{h} \end{equation}
 )";
 
@@ -581,6 +583,16 @@ TEST_F(ShapesOnADocument, UnconditionalStability) {
   EXPECT_NE(leapfrog.correction.find("changes sign at h*omega = 2"), std::string::npos) << leapfrog.correction;
 }
 
+TEST_F(ShapesOnADocument, TaylorExpansion) {
+  const claim_result holds = run("taylor-expansion", R"({ expansions = ["taylorup"], step = ['h'], index = "j" })");
+  EXPECT_EQ(holds.outcome, verdict::holds) << holds.note << holds.evidence.dump();
+  EXPECT_EQ(holds.evidence["exact"]["own"].get<std::string>().rfind("holds", 0), 0u) << holds.evidence.dump();
+  // The h^2 term's sign: a comparison through h alone would pass it.
+  const claim_result wrong = run("taylor-expansion", R"({ expansions = ["taylorup", "taylorwrong"], step = ['h'], index = "j" })");
+  EXPECT_EQ(wrong.outcome, verdict::erratum);
+  EXPECT_EQ(wrong.correction, "as derived: q_{j-1} = (d^2q/dt^2*h^2-2*dq/dt*h+2*q_j)/(2) + O(h^3)");
+}
+
 TEST_F(ShapesOnADocument, IdentityWithAFunctionDefined) {
   // V(q) = k q^2/2 put in F = -V'(x): -k x. Without the definition V' stays uninterpreted.
   const claim_result holds = run("identity", R"({ lhs = "force", rhs = '$-k x$', where = ["potential energy"] })");
@@ -852,11 +864,13 @@ TEST(TrapezoidalNote, EveryVerdictIsTheOneItsClaimsFileExpects) {
       EXPECT_FALSE(r.correction.empty()) << c.id;
     }
   }
-  EXPECT_EQ(errata, 4);  // three deliberate errors, and one consequence of the energy's
+  EXPECT_EQ(errata, 5);  // four deliberate errors, and one consequence of the energy's
   EXPECT_EQ(find_claim("energy-positive").follows_from, "modified-energy");
   EXPECT_EQ(check_claim(find_claim("energy-positive"), ctx).correction,
             "(-h^2*omega^2+2)/(2) is positive for 0 < h*omega < sqrt(2) only, and changes sign there");
   EXPECT_EQ(check_claim(find_claim("stability-condition"), ctx).correction, "stable exactly for 0 < h*omega < 2");
+  EXPECT_EQ(check_claim(find_claim("rule-exactness"), ctx).correction,
+            "The rule is exact for every polynomial of degree <= 1 and not for degree 2 (the printed words say 'two')");
   use_claims_file(embedded_claims_text(), "claims/paper.toml");
 }
 

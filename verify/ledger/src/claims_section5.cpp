@@ -83,45 +83,6 @@ claim_result check_qm_not_affine(const run_context& ctx) {
   return identity(p, "What was proved: " + proved + ".");
 }
 
-claim_result check_taylor_display(const run_context&) {
-  // q(t) = t^k about t_j, k = 0..6: q(t_j ± h) against the printed and the corrected sixth term.
-  const symbolic h = symbolic::variable();
-  const auto derivative_at = [](int k, int order, const rational& t) -> rational {
-    if (order > k) return rational(0);
-    rational v = 1;
-    for (int i = 0; i < order; ++i) v *= k - i;
-    for (int i = 0; i < k - order; ++i) v *= t;
-    return v;
-  };
-  const auto taylor_gap = [&](bool printed, const rational& t_j) {
-    return [&, printed, t_j](int k) {
-      std::vector<symbolic> gaps;
-      for (const int sign : {1, -1}) {
-        symbolic sum(0), hk(1);
-        rational factorial = 1;
-        for (int order = 0; order <= 6; ++order) {
-          if (order > 0) {
-            factorial *= order;
-            hk = hk * h * sign;
-          }
-          const int used = (printed && order == 6) ? 5 : order;  // printed: d^6q/dt^5 in the h^6 term
-          sum += hk * derivative_at(k, used, t_j) / factorial;
-        }
-        gaps.push_back(monomial_potential::power(symbolic(t_j) + sign * h, k) - sum);
-      }
-      return gaps;
-    };
-  };
-  const std::string reduction =
-      "q(t) = t^k, k = 0..6, expanded about t_j = 1: q(t_j +- h) minus the displayed expansion through h^6 (zero when the "
-      "expansion is exact for polynomials of degree <= 6)";
-  const proof printed = prove_zero_at_each(reduction + ", with d^6q/dt^5 in the h^6 term as printed", "k", 6, taylor_gap(true, rational(1)));
-  const proof corrected = prove_zero_at_each(reduction + ", with d^6q/dt^6", "k", 6, taylor_gap(false, rational(1)));
-  return erratum(printed, corrected, "q_{j+-1} = q_j +- h q' + ... +- h^5/120 q^(5) + h^6/720 d^6q/dt^6 + O(h^7)",
-                 "Typographical: the h^6 term of both expansions is printed with d^6q/dt^5. The truncation error below uses "
-                 "the correct sixth derivative.");
-}
-
 claim_result check_discriminant_factorization(const run_context& ctx) {
   const auto par = unit_oscillator_in_theta();
   const proof exact = prove_zero("x = theta^2; (b^2 - 4ac) - x/576 (x - 24)(x - 12)(x - 8), a, b, c from the core",
@@ -184,7 +145,6 @@ void add_section5_checks(check_registry& checks) {
   checks.add("maupertuis-naming", check_maupertuis_naming);
   checks.add("internal-second-order", check_internal_second_order);
   checks.add("qm-not-affine", check_qm_not_affine);
-  checks.add("taylor-display", check_taylor_display);
   checks.add("discriminant-factorization", check_discriminant_factorization);
 }
 

@@ -30,33 +30,6 @@ printed_outcome internal_equation_second_order(const paper_reading& r) {
 
 
 
-/// q(t_j ± h) by GiNaC's series of an uninterpreted q, to O(h^order), the k-th derivative at t_j
-/// named as the reader names d^kq/dt^k and q(t_j) as q_j.
-ex taylor_expansion(const symbolic_derivation& d, int sign, int order) {
-  const smooth_expansion e = expand_on_smooth(d.q_next, {{d.q_next, "q", sign * d.h}}, d.h, order);
-  return GiNaC::expand(e.series.subs(sym("q") == d.q_j));
-}
-
-printed_outcome taylor_display(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
-  printed_outcome o;
-  o.holds = true;
-  std::string corrections;
-  for (const auto& [name, sign] : {std::pair<const char*, int>{"Taylor q_{j+1}", 1}, {"Taylor q_{j-1}", -1}}) {
-    const auto [terms, order] = split_order(printed_side(r, name), d.h);
-    const ex derived = taylor_expansion(d, sign, order > 0 ? order : 7);
-    const ex gap = GiNaC::normal(terms - derived);
-    const bool same = order > 0 && gap.is_zero();
-    o.holds = o.holds && same;
-    o.proved += std::string(o.proved.empty() ? "" : "; ") + "printed " + name + " − series of q(t_j " + (sign > 0 ? "+" : "-") +
-                " h) (GiNaC, q uninterpreted) = " + text_of(gap) + " + O(h^" + std::to_string(order) + ")";
-    if (!same) corrections += std::string(corrections.empty() ? "" : "; ") + name + " = " + text_of(derived) + " + O(h^7)";
-  }
-  if (!o.holds) o.correction = "as derived: " + corrections;
-  o.derived = "Taylor's series of an uninterpreted function (GiNaC series)";
-  return o;
-}
-
 /// `scheme` (in q_{j-1}, q_j, q_{j+1}) on the exact solution through (p_j, q_j), q(t_j ± h) =
 /// q_j cos ωh ± p_j/(mω) sin ωh, as a series in h to O(h^order).
 /// The scheme on the exact solution through (p_j, q_j), cos ωh and sin ωh replaced by their Taylor
@@ -120,7 +93,6 @@ GiNaC::ex truncation_series(const symbolic_derivation& d, const GiNaC::ex& norma
 
 void add_printed_checks_section5(check_registry& checks) {
   checks.add_printed("internal-second-order", {"equation-milieu-intervalle", "oscillateur-nonlineaire"}, internal_equation_second_order);
-  checks.add_printed("taylor-display", {"Taylor q_{j+1}", "Taylor q_{j-1}"}, taylor_display);
   checks.add_printed("discriminant-factorization", {"discriminant-factorized", "a", "b"}, discriminant_factorization);
 }
 

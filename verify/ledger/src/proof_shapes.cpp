@@ -132,6 +132,11 @@ const std::map<std::string, proof_shape>& proof_shapes() {
                      {"step", argument_kind::symbols, true, "the step h", 1},
                      {"index", argument_kind::word, true, "the index of the states, 'j' for x_j, x_{j+1}, x_{j-1}"}}),
          consistency_shape});
+    add({"taylor-expansion", "each printed expansion x_{j+k} = ... + O(h^N) is the Taylor polynomial of x(t_j + k h) through h^(N-1)", "expansions",
+         with_where({{"expansions", argument_kind::equations, true, "the printed expansions 'x_{j+k} = x_j + ... + O(h^N)'"},
+                     {"step", argument_kind::symbols, true, "the step h", 1},
+                     {"index", argument_kind::word, true, "the index of the states, 'j' for x_j, x_{j+1}, x_{j-1}"}}),
+         taylor_expansion_shape});
     add({"stated-order", "the order a sentence states ({order} in its pattern) is the scheme's order on q'' = -omega^2 q", "scheme",
          with_where(with_series({pattern_with_hole("sentence", "the sentence's pattern, with the hole {order}", "order")})),
          stated_order_shape});

@@ -204,6 +204,16 @@ claim_result identity_verdict(const shape_call& call, shape_reader& read, const 
   return result;
 }
 
+void settle(claim_result& result, bool disagree, bool holds, const std::string& what, const std::string& correction) {
+  if (disagree) {
+    result.outcome = verdict::kernels_disagree;
+    result.note = "GiNaC and our kernel reached different conclusions on " + what + ": a bug in one of them.";
+    return;
+  }
+  result.outcome = holds ? verdict::holds : verdict::erratum;
+  if (!holds) result.correction = correction;
+}
+
 GiNaC::matrix as_square_matrix(const ex& e, const std::string& what) {
   const ex m = e.evalm();
   if (!GiNaC::is_a<GiNaC::matrix>(m)) throw std::invalid_argument(what + " is not a matrix");

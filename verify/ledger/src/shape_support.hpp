@@ -84,6 +84,10 @@ claim_result identity_verdict(const shape_call& call, shape_reader& read, const 
                               const GiNaC::ex& rhs, const std::string& correction, verdict when_false = verdict::erratum,
                               const std::optional<kernel_decision>& own = std::nullopt);
 
+/// The verdict of a shape whose two kernels each decided its statement: kernels-disagree when they
+/// differ (the note naming `what`), else holds, or an erratum corrected by `correction`.
+void settle(claim_result& result, bool disagree, bool holds, const std::string& what, const std::string& correction);
+
 /// e as a square matrix; throws std::invalid_argument naming `what` when it is not one.
 GiNaC::matrix as_square_matrix(const GiNaC::ex& e, const std::string& what);
 
@@ -129,6 +133,7 @@ claim_result root_criterion_shape(const shape_call& call, const run_context& ctx
 claim_result quadrature_exactness_shape(const shape_call& call, const run_context& ctx);
 claim_result discrete_lagrangian_shape(const shape_call& call, const run_context& ctx);
 claim_result consistency_shape(const shape_call& call, const run_context& ctx);
+claim_result taylor_expansion_shape(const shape_call& call, const run_context& ctx);
 claim_result sum_range_shape(const shape_call& call, const run_context& ctx);
 claim_result unconditional_stability_shape(const shape_call& call, const run_context& ctx);
 

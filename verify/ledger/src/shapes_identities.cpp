@@ -187,16 +187,8 @@ claim_result equal_sides_shape(const shape_call& call, const run_context& ctx) {
                                       : !not_decided.empty() ? "not applicable: " + fmt::format("{}", fmt::join(not_decided, "; "))
                                                              : std::string("holds: every side equals its equation's first (each grid below)")},
                               {"sides", decided_sides}};
-  if (disagree) {
-    result.outcome = verdict::kernels_disagree;
-    result.note = "GiNaC and our kernel reached different conclusions on a side: a bug in one of them.";
-  } else if (!any_false) {
-    result.outcome = verdict::holds;
-  } else {
-    result.outcome = verdict::erratum;
-    result.correction = fmt::format("as derived from the definitions: {}", fmt::join(corrections, "; "));
-    result.note = fmt::format("As printed: {} side(s) differ from the first of their equation.", corrections.size());
-  }
+  settle(result, disagree, !any_false, "a side", fmt::format("as derived from the definitions: {}", fmt::join(corrections, "; ")));
+  if (result.outcome == verdict::erratum) result.note = fmt::format("As printed: {} side(s) differ from the first of their equation.", corrections.size());
   if (!not_decided.empty()) result.note += fmt::format("{}Our kernel could not decide {}: GiNaC's proof alone.", result.note.empty() ? "" : " ", fmt::join(not_decided, "; "));
   result.printed = read.printed();
   record_certificate(result, coq_certificate(call.claim_id, call.statement, goals));

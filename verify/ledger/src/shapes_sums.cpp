@@ -88,24 +88,17 @@ claim_result sum_range_shape(const shape_call& call, const run_context& ctx) {
                            : "holds: the derived ends at the interval's (" + at_start.evidence + "; " + at_end.evidence +
                                  "), the printed bounds against them (" + low.evidence + "; " + high.evidence + "): they " +
                                  (own_holds ? "are these" : "differ")}};
-  if (own_decided && own_holds != ginac_holds) {
-    result.outcome = verdict::kernels_disagree;
-    result.note = "GiNaC and our kernel reached different conclusions on the range: a bug in one of them.";
-    return result;
-  }
-  if (ginac_holds) {
-    result.outcome = verdict::holds;
-    return result;
-  }
-  result.outcome = verdict::erratum;
-  // The printed TeX with the derived bounds: "S_d = \sum_{j=0}^{N-1} L_d (q_j ,\, q_{j+1} )".
+  // The correction: the printed TeX with the derived bounds: "S_d = \sum_{j=0}^{N-1} L_d (q_j ,\, q_{j+1} )".
   const referenced_formula printed = read.raw("sum");
   std::string corrected = std::regex_replace(folded_space(printed.sides.back()), std::regex(R"(\\sum_\{[^{}]*\}\^(\{[^{}]*\}|\S))"),
                                              fmt::format("\\sum_{{{}={}}}^{{{}}}", j_name, text_of(first), text_of(last)),
                                              std::regex_constants::format_first_only);  // no $ in the replacement
   if (printed.sides.size() > 1) corrected = folded_space(printed.sides.front()) + " = " + corrected;
-  result.correction = fmt::format("{}: the elements of [{}, {}] are {}", corrected, text_of(range.front()), text_of(range.back()), derived);
-  result.note = fmt::format("As printed: {} = {}, ..., {}, {} terms.", j_name, text_of(lower), text_of(upper), text_of(GiNaC::normal(upper - lower + 1)));
+  settle(result, own_decided && own_holds != ginac_holds, ginac_holds, "the range",
+         fmt::format("{}: the elements of [{}, {}] are {}", corrected, text_of(range.front()), text_of(range.back()), derived));
+  if (result.outcome == verdict::erratum) {
+    result.note = fmt::format("As printed: {} = {}, ..., {}, {} terms.", j_name, text_of(lower), text_of(upper), text_of(GiNaC::normal(upper - lower + 1)));
+  }
   return result;
 }
 

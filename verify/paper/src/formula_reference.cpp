@@ -111,6 +111,13 @@ formula_reference parse_reference(const std::string& text) {
       r.first_side = true;
       r.key.resize(r.key.size() - 4);
     }
+    const std::size_t hash = r.key.rfind('#');  // after:phrase#2, the display's second equation
+    if (kind == formula_reference::kind::display_after && hash != std::string::npos && hash + 1 < r.key.size() && hash + 3 >= r.key.size() &&
+        r.key.find_first_not_of("0123456789", hash + 1) == std::string::npos) {
+      r.equation = std::stoi(r.key.substr(hash + 1));
+      if (r.equation == 0) throw std::invalid_argument("'" + text + "': after '#' an equation number from 1");
+      r.key.resize(hash);
+    }
     if (r.key.find_first_not_of(" \t") == std::string::npos) throw std::invalid_argument("'" + prefix + "' names no phrase");
     return r;
   }

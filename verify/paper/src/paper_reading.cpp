@@ -24,8 +24,6 @@ const std::vector<formula_location>& printed_formula_locations() {
       {"stabilite", k::labelled, "stabilite", 0, {0, 1, 2}},
       {"Lagrangien-reduit", k::labelled, "Lagrangien-reduit"},
       {"schema-ordre-3", k::labelled, "schema-ordre-3", 0, {0}},
-      {"Taylor q_{j+1}", k::anchored_display, "at the precise points", 0},
-      {"Taylor q_{j-1}", k::anchored_display, "at the precise points", 1},
       {"truncation-error", k::anchored_display, "one obtains without difficulty the relation"},
       {"a", k::inline_formula, "a = 1 + {{h^2"},
       {"b", k::inline_formula, "b = -{1\\over24}"},

@@ -8,7 +8,8 @@
 //   "phi#2"           ... of its second equation
 //   "phi:lhs"         the first side (phi#2:lhs for the second equation)
 //   "inline:stable for"  the inline formula $...$ at (or first after) the phrase "stable for"
-//   "after:can be factorized"  the first display after the phrase (for an unlabelled display)
+//   "after:can be factorized"  the first display after the phrase (for an unlabelled display);
+//                     "after:can be factorized#2" its second equation
 //   "$\omega h$"      the TeX fragment itself
 
 #include <simpson/verify/paper_source.hpp>
