@@ -286,7 +286,8 @@ const std::string declarations = R"(
 title = "Shapes under test"
 [symbols]
 positive = ['m', '\omega', 'h']
-real = ['q', 'p', 'q_0', 'q_1', 'q_m', 'p_0', 'p_1', 'q_{j-1}', 'q_j', 'q_{j+1}', 'a', 'b', 'k', 'x', 'r', 'c', '\theta', '\psi', 'p_j', 'p_{j+1}', 't', 'T', 'N', 'j']
+real = ['q', 'p', 'q_0', 'q_1', 'q_m', 'p_0', 'p_1', 'q_{j-1}', 'q_j', 'q_{j+1}', 'a', 'b', 'k', 'x', 'r', 'c', '\theta', 'p_j', 'p_{j+1}', 't', 'T', 'N', 'j']
+functions = ['\psi', 'g']
 )";
 
 std::string record(const std::string& id, const std::string& shape, const std::string& with) {
@@ -625,6 +626,14 @@ TEST_F(ShapesOnADocument, Derivative) {
   EXPECT_EQ(run("derivative", "{ " + at + R"(, at = ['q_{j+1}', 'q_j'] })").outcome, verdict::erratum);
 }
 
+TEST_F(ShapesOnADocument, AFunctionTheFileDeclares) {
+  // g is declared a function: g(q^2) is applied, its derivative the chain rule's (V's is the reader's own).
+  const claim_result chain = run("derivative", R"({ function = '$g(q^2)$', variable = ['q'], printed = '$2 q {{\partial g}\over{\partial q}}(q^2)$' })");
+  EXPECT_EQ(chain.outcome, verdict::holds) << chain.note << chain.evidence.dump();
+  EXPECT_EQ(run("derivative", R"({ function = '$g(q^2)$', variable = ['q'], printed = '$q {{\partial g}\over{\partial q}}(q^2)$' })").outcome,
+            verdict::erratum);
+}
+
 TEST_F(ShapesOnADocument, Stationary) {
   // dL/dq_m = (2m/h)(2 q_m - q_0 - q_1): the printed equation up to the factor -2m/h, free of the states.
   const std::string args = R"(function = "ldm", variable = ['q_m'], unknowns = ['q_0', 'q_m', 'q_1'])";
@@ -767,6 +776,17 @@ std::string error_of(const std::string& shape, const std::string& with, const st
   }
   use_claims_file(embedded_claims_text(), "claims/paper.toml");
   return "";
+}
+
+TEST(ShapeRecords, ADeclaredFunctionIsOneName) {
+  const std::string file = "[document]\ntitle = \"x\"\n[symbols]\nreal = ['x']\nfunctions = ['f + g']\n" + record("r", "identity", R"({ lhs = '$x$', rhs = '$x$' })");
+  try {
+    use_claims_file(file, "bad.toml");
+    ADD_FAILURE() << "a function 'f + g' was read";
+  } catch (const claims_file_error& e) {
+    EXPECT_NE(std::string(e.what()).find("field 'symbols.functions': 'f + g' is not one name"), std::string::npos) << e.what();
+  }
+  use_claims_file(embedded_claims_text(), "claims/paper.toml");
 }
 
 TEST(ShapeRecords, BadRecordsAreNamedWithTheirLineAndArgument) {

@@ -162,14 +162,16 @@ std::optional<claims_document> read_document(const toml::table& file_table, cons
   std::set<std::string> seen;
   for (const auto& [key, node] : *s) {
     const std::string field = "symbols." + std::string(key.str());
-    if (key.str() != "positive" && key.str() != "real") throw claims_file_error(file, line_of(node), field, "not a field of [symbols] (positive, real)");
+    if (key.str() != "positive" && key.str() != "real" && key.str() != "functions") {
+      throw claims_file_error(file, line_of(node), field, "not a field of [symbols] (positive, real, functions)");
+    }
     const toml::array* names = node.as_array();
     if (!names) throw claims_file_error(file, line_of(node), field, "must be an array of symbol names");
     for (const toml::node& item : *names) {
       const auto* name = item.as_string();
       if (!name || name->get().empty()) throw claims_file_error(file, line_of(item), field, "must be an array of symbol names");
       if (!seen.insert(name->get()).second) throw claims_file_error(file, line_of(item), field, "'" + name->get() + "' is declared twice");
-      (key.str() == "positive" ? out.positive : out.real).push_back(name->get());
+      (key.str() == "positive" ? out.positive : key.str() == "real" ? out.real : out.functions).push_back(name->get());
     }
   }
   return out;

@@ -1,6 +1,7 @@
 #include <simpson/verify/ledger.hpp>
 
 #include <simpson/verify/claims_file.hpp>
+#include <simpson/verify/tex_math.hpp>
 #include <simpson/verify/formula_reference.hpp>
 #include <simpson/verify/tex_macros.hpp>
 #include <simpson/verify/quoted_words.hpp>
@@ -190,6 +191,18 @@ const std::vector<claim>& ledger() { return installed_claims() ? *installed_clai
 
 void use_claims_file(const std::string& text, const std::string& file) {
   claims_file_contents contents = read_claims_with_known_names(text, file);
+  // The document's functions: applied as f(x) by the reader from now on.
+  if (contents.document) {
+    for (const std::string& tex : contents.document->functions) {
+      GiNaC::ex name;
+      try {
+        name = parse_tex_math(tex, paper_symbols());
+      } catch (const tex_parse_error&) {
+      }
+      if (!GiNaC::is_a<GiNaC::symbol>(name)) throw claims_file_error(file, contents.document->line, "symbols.functions", "'" + tex + "' is not one name");
+      declare_function(GiNaC::ex_to<GiNaC::symbol>(name).get_name());
+    }
+  }
   installed_claims() = claims_of(contents.records);
   installed_document_storage() = contents.document;
   installed_records() = std::move(contents.records);

@@ -29,7 +29,7 @@ GiNaC::symbol symbol_named(const std::string& tex) {
 /// The GiNaC names of the symbols a document declares.
 std::set<std::string> declared_names(const claims_document& d) {
   std::set<std::string> names;
-  for (const auto* list : {&d.positive, &d.real}) {
+  for (const auto* list : {&d.positive, &d.real, &d.functions}) {
     for (const std::string& tex : *list) names.insert(symbol_named(tex).get_name());
   }
   return names;

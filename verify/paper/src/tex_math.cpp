@@ -18,9 +18,20 @@ tex_symbols& paper_symbols() {
   return symbols;
 }
 
-const std::vector<std::string>& function_names() {
-  static const std::vector<std::string> names{"V", "L_d", "L_h", "H_d", "Q", "Q_c", "q", "varphi_0", "varphi_1/2", "varphi_1", "psi"};
+namespace {
+
+std::vector<std::string>& function_registry() {
+  static std::vector<std::string> names{"V", "L_d", "L_h", "H_d", "Q", "Q_c", "q", "varphi_0", "varphi_1/2", "varphi_1", "psi"};
   return names;
+}
+
+}  // namespace
+
+const std::vector<std::string>& function_names() { return function_registry(); }
+
+void declare_function(const std::string& name) {
+  std::vector<std::string>& names = function_registry();
+  if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
 }
 
 std::string function_name(const std::string& name, std::size_t arity) {

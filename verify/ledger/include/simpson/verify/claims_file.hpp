@@ -63,6 +63,7 @@ struct claims_document {
   std::string title;
   std::vector<std::string> positive;  // symbols > 0 (parameters: m, omega, h)
   std::vector<std::string> real;      // other real symbols (the state: q_0, p_0, ...)
+  std::vector<std::string> functions;  // functions of the document, applied as f(x) (V and psi are the reader's own)
   int line = 0;
 };
 

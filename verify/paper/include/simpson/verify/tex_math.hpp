@@ -39,6 +39,10 @@ tex_symbols& paper_symbols();
 /// and psi (a quadrature's integrand).
 const std::vector<std::string>& function_names();
 
+/// Adds `name` (as the reader names it: "f", "phi", "V_1") to function_names() for the rest of the
+/// process: a claims file's declared functions ([symbols] functions).
+void declare_function(const std::string& name);
+
 /// The name under which the function `name` of `arity` arguments is registered with GiNaC: `name`,
 /// or "<name>_f" when GiNaC has a function of that name and arity of its own (psi, the digamma).
 std::string function_name(const std::string& name, std::size_t arity);
