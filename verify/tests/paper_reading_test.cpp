@@ -120,6 +120,7 @@ TEST(PaperReading, AChangedCoefficientInTheTextChangesTheVerdict) {
       {"\\label{oscillateur-nonlineaire}", "m \\, {{\\dd^2 q}", "2 \\, m \\, {{\\dd^2 q}", {"classical-consistency"}},
       {"first order Hamilton version", "{{p}\\over{m}}", "{{p}\\over{2 \\, m}}", {"hamilton-consistency"}},
       {"It is easy to verify that when", "is linearly stable", "is linearly unstable", {"newmark-unconditional-stability"}},
+      {"We have put in evidence", "a second order", "a fourth order", {"internal-equation-second-order"}},
       {"Due to the relations", "-{{4}\\over{h}}", "{{4}\\over{h}}", {"gear-partials"}},
       {"a conserved quadratic form", "\\gamma \\, p^2", "\\delta \\, p^2", {"conserved-form", "hd-proportional"}},
   };

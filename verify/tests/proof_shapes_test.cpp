@@ -278,6 +278,7 @@ The average scheme is linearly stable. Averaging is an unconditionally stable me
 The leapfrog scheme is stable. Leapfrog is an unconditionally stable method.
 \begin{equation}\label{taylorup} q_{j+1} = q_j + h {{\dd q}\over{\dd t}} + \frac{h^2}{2} {{\dd^2 q}\over{\dd t^2}} + {\rm O}(h^3) \end{equation}
 \begin{equation}\label{taylorwrong} q_{j-1} = q_j - h {{\dd q}\over{\dd t}} - \frac{h^2}{2} {{\dd^2 q}\over{\dd t^2}} + {\rm O}(h^3) \end{equation}
+Leapfrog discretizes the equation to second order. Leapfrog, loosely, discretizes it to fourth order.
 \begin{equation}\label{slopemiddle} g = {{\dd q}\over{\dd t}}(0) = \frac{b - a}{2 h} = \frac{b - a}{h} \end{equation}
 )";
 
@@ -548,6 +549,16 @@ TEST_F(ShapesOnADocument, Consistency) {
   // relation's leading term is a multiple of the equation it is paired with.
   EXPECT_EQ(run("consistency", R"({ scheme = ["euler#1", "euler#2"], equation = ["hamilton#1", "hamilton#2"], )" + on + " }").outcome, verdict::holds);
   EXPECT_EQ(run("consistency", R"({ scheme = ["euler#1", "euler#2"], equation = ["hamilton#2", "hamilton#1"], )" + on + " }").outcome, verdict::erratum);
+  // The order a sentence states: the first term beyond the leading one (h^2 for a symmetric stencil,
+  // expanded about its centre).
+  const claim_result second = run("consistency", R"({ scheme = ["sv"], equation = ["ode"], )" + on +
+                                                     R"(, sentence = 'Leapfrog discretizes the equation to {order} order.' })");
+  EXPECT_EQ(second.outcome, verdict::holds) << second.evidence.dump();
+  EXPECT_EQ(second.evidence["exact"]["order"], "2");
+  const claim_result fourth = run("consistency", R"({ scheme = ["sv"], equation = ["ode"], )" + on +
+                                                     R"(, sentence = 'Leapfrog, loosely, discretizes it to {order} order.' })");
+  EXPECT_EQ(fourth.outcome, verdict::erratum);
+  EXPECT_EQ(fourth.correction, "as derived: a discretization of order 2");
   // With V uninterpreted: our kernel for V(x) = x^k, k = 0..4.
   const claim_result general = run("consistency", R"({ scheme = ["el"], equation = ['$m {{\dd^2 q}\over{\dd t^2}} + m \omega^2 q = 0$'], )" + on + " }");
   EXPECT_EQ(general.outcome, verdict::holds) << general.evidence.dump();

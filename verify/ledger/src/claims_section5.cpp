@@ -18,34 +18,6 @@
 namespace simpson::verify::detail {
 namespace {
 
-claim_result check_internal_second_order(const run_context& ctx) {
-  const quoted_sentence said = quote(ctx, "We have put in evidence  a {order} order discretization of the continuous Euler-Lagrange equation");
-  const int stated = said.number("order");
-  // (equation-milieu-intervalle)/m for V = m w^2 q^2/2 at the exact solution q = cos(t - h/2):
-  // q_l = q_r = cos(theta/2), q_m = 1; cos through theta^16 leaves the series exact below theta^14.
-  const auto par = unit_oscillator_in_theta();
-  const polynomial c = cos_taylor(16);
-  // cos(theta/2): scale the coefficients by 2^-k.
-  std::vector<rational> half;
-  rational scale = 1;
-  for (std::size_t k = 0; k < c.size(); ++k, scale /= 2) half.push_back(c[k] * scale);
-  const symbolic cos_half(polynomial(half.begin(), half.end()), make_polynomial({rational(1)}));
-  const auto gradient = [&](const symbolic& v) { return par.force_gradient(v); };
-  const symbolic T = internal_equation_residual(par.m(), par.h(), gradient, cos_half, symbolic(1), cos_half);
-  const auto series = laurent_coefficients(T, 8);
-  json evidence;
-  evidence["exact"] = {{"method", "exact series"},
-                       {"reduction", std::string(unit_reduction) + "; exact solution centred on the internal node, q_m = 1"},
-                       {"residual_over_q_m", series_to_string(series, "θ") + " + O(θ^8)"}};
-  const long order = series.empty() ? -1 : series.front().first;
-  evidence["stated_order"] = stated;
-  if (order != 2 || stated == order) {
-    return confirmed_if(order == 2 && stated == order, evidence, "The truncation error is (omega h)^2 omega^2/48 q_m + O(h^4): second order.");
-  }
-  return words_erratum(evidence, "The discretization (equation-milieu-intervalle) is of order 2: its truncation error is (omega h)^2 "
-                                 "omega^2/48 q_m + O(h^4) (the printed words say '" + said.words("order") + "')");
-}
-
 claim_result check_qm_not_affine(const run_context& ctx) {
   const quoted_sentence said = quote(ctx, "This interpolation is {linearity} if $ \\, h > 0 $.");
   // Literally: "not linear" says the map (q_l, q_r) -> q_m is not linear (false: it is); "not affine"
@@ -143,7 +115,6 @@ claim_result check_maupertuis_naming(const run_context& ctx) {
 
 void add_section5_checks(check_registry& checks) {
   checks.add("maupertuis-naming", check_maupertuis_naming);
-  checks.add("internal-second-order", check_internal_second_order);
   checks.add("qm-not-affine", check_qm_not_affine);
   checks.add("discriminant-factorization", check_discriminant_factorization);
 }

@@ -139,11 +139,6 @@ struct smooth_expansion {
 };
 smooth_expansion expand_on_smooth(const GiNaC::ex& e, const std::vector<smooth_state>& states, const GiNaC::ex& h, int order = 4);
 
-/// A consistency claim: the leading term of a printed scheme on smooth states is (a nonzero
-/// multiple of) the printed differential equation, and so is the core's.
-printed_outcome consistent_with(const std::string& what, const GiNaC::ex& printed_scheme, const GiNaC::ex& core_scheme,
-                                const GiNaC::ex& printed_equation, const std::vector<smooth_state>& states, const GiNaC::ex& h);
-
 /// V′ as a function of the point, for the core's templates: x ↦ D[0](V)(x).
 GiNaC::ex general_force(const GiNaC::ex& x);
 

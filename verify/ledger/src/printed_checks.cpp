@@ -169,30 +169,6 @@ smooth_expansion expand_on_smooth(const ex& e, const std::vector<smooth_state>& 
   return out;
 }
 
-printed_outcome consistent_with(const std::string& what, const ex& printed_scheme, const ex& core_scheme, const ex& printed_equation,
-                                const std::vector<smooth_state>& states, const ex& h) {
-  std::vector<ex> unknowns;
-  for (const char* name : {"q", "p"}) {
-    unknowns.push_back(paper_symbols()[name]);
-    for (int k = 1; k <= 4; ++k) unknowns.push_back(paper_symbols()[derivative_name(name, "t", k, k)]);
-  }
-  const smooth_expansion printed = expand_on_smooth(printed_scheme, states, h);
-  const smooth_expansion core = expand_on_smooth(core_scheme, states, h);
-  const auto factor = equation_factor(printed_equation, printed.leading, unknowns);
-  printed_outcome o;
-  o.holds = factor.has_value();
-  o.proved = "printed " + what + " on smooth states (GiNaC series, V and the solution uninterpreted) = h^" +
-             std::to_string(printed.lowest_power) + " (" + text_of(printed.leading) + ") + ...; " +
-             (factor ? "that leading term is (" + text_of(*factor) + ") x the printed equation"
-                     : "that leading term is not a multiple of the printed equation " + text_of(printed_equation));
-  if (!o.holds) o.correction = "as derived: the scheme is consistent with " + text_of(printed.leading) + " = 0";
-  const auto core_factor = equation_factor(printed.leading, core.leading, unknowns);
-  o.derived_holds = core_factor.has_value();
-  o.derived = "core " + what + " on smooth states: h^" + std::to_string(core.lowest_power) + " (" + text_of(core.leading) + ")" +
-              (core_factor ? ", the same equation" : ", not the printed scheme's leading term");
-  return o;
-}
-
 ex general_force(const ex& x) {
   const GiNaC::symbol y("force_variable");
   return GiNaC::diff(apply_function("V", {y}), y).subs(y == x);

@@ -18,18 +18,6 @@ using GiNaC::ex;
 
 const GiNaC::symbol& as_symbol(const ex& e) { return GiNaC::ex_to<GiNaC::symbol>(e); }
 
-/// (equation-milieu-intervalle) on a smooth q(t) at t - h/2, t, t + h/2, V uninterpreted: its leading
-/// term is (oscillateur-nonlineaire).
-printed_outcome internal_equation_second_order(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
-  const std::vector<smooth_state> states{{d.q_l, "q", -d.h / 2}, {d.q_m, "q", 0}, {d.q_r, "q", d.h / 2}};
-  return consistent_with("(equation-milieu-intervalle)", printed_side(r, "equation-milieu-intervalle"),
-                         internal_equation_residual(d.m, d.h, general_force, d.q_l, d.q_m, d.q_r),
-                         printed_side(r, "oscillateur-nonlineaire", 0) - printed_side(r, "oscillateur-nonlineaire", 1), states, d.h);
-}
-
-
-
 /// `scheme` (in q_{j-1}, q_j, q_{j+1}) on the exact solution through (p_j, q_j), q(t_j ± h) =
 /// q_j cos ωh ± p_j/(mω) sin ωh, as a series in h to O(h^order).
 /// The scheme on the exact solution through (p_j, q_j), cos ωh and sin ωh replaced by their Taylor
@@ -92,7 +80,6 @@ GiNaC::ex truncation_series(const symbolic_derivation& d, const GiNaC::ex& norma
 }
 
 void add_printed_checks_section5(check_registry& checks) {
-  checks.add_printed("internal-second-order", {"equation-milieu-intervalle", "oscillateur-nonlineaire"}, internal_equation_second_order);
   checks.add_printed("discriminant-factorization", {"discriminant-factorized", "a", "b"}, discriminant_factorization);
 }
 

@@ -130,7 +130,12 @@ const std::map<std::string, proof_shape>& proof_shapes() {
          with_where({{"scheme", argument_kind::equations, true, "the scheme's printed relations 'a = b' (or 'a = 0')"},
                      {"equation", argument_kind::equations, true, "the printed differential equations, one per relation, in order"},
                      {"step", argument_kind::symbols, true, "the step h", 1},
-                     {"index", argument_kind::word, true, "the index of the states, 'j' for x_j, x_{j+1}, x_{j-1}"}}),
+                     {"index", argument_kind::word, true, "the index of the states, 'j' for x_j, x_{j+1}, x_{j-1}"},
+                     [] {
+                       shape_parameter p = pattern_with_hole("sentence", "optionally, a sentence stating the order, with the hole {order}", "order");
+                       p.required = false;
+                       return p;
+                     }()}),
          consistency_shape});
     add({"taylor-expansion", "each printed expansion x_{j+k} = ... + O(h^N) is the Taylor polynomial of x(t_j + k h) through h^(N-1)", "expansions",
          with_where({{"expansions", argument_kind::equations, true, "the printed expansions 'x_{j+k} = x_j + ... + O(h^N)'"},

@@ -155,6 +155,12 @@ claim_result consistency_shape(const shape_call& call, const run_context& ctx) {
   if (relations.size() != equations.size()) {
     throw std::invalid_argument(fmt::format("{} relations of the scheme and {} equations: one equation each", relations.size(), equations.size()));
   }
+  // The order a sentence states, when given: each relation's, the power of its first term beyond the
+  // leading one (expanded about the stencil's centre, where a symmetric stencil has no odd terms).
+  const std::optional<quoted_sentence> said =
+      read.has("sentence") ? std::optional<quoted_sentence>(quote(ctx, call.with.at("sentence").values.front())) : std::nullopt;
+  const int series_order = said ? 8 : 4;
+  std::optional<int> order;  // the least over the relations
   claim_result result;
   json decided_relations = json::array();
   std::vector<std::string> corrections;
@@ -163,8 +169,11 @@ claim_result consistency_shape(const shape_call& call, const run_context& ctx) {
   for (std::size_t i = 0; i < relations.size(); ++i) {
     const std::vector<ex> sides = read.sides(relations[i]), printed_sides = read.sides(equations[i]);
     const ex relation = sides.front() - sides.back();
-    const std::vector<smooth_state> states = indexed_states(relation, index, h);
+    std::vector<smooth_state> states = indexed_states(relation, index, h);
     if (states.empty()) throw std::invalid_argument(fmt::format("{} has no state x_{}, x_{}+1, ...", relations[i].locator, index, index));
+    ex centre = 0;
+    for (const smooth_state& s : states) centre += s.shift / static_cast<int>(states.size());
+    for (smooth_state& s : states) s.shift = GiNaC::normal(s.shift - centre);
     // The unknowns: each state's function and its derivatives, as the reader names them; x(t) in the
     // printed equation read as x.
     std::vector<ex> unknowns;
@@ -174,16 +183,27 @@ claim_result consistency_shape(const shape_call& call, const run_context& ctx) {
       for (int k = 1; k <= 4; ++k) unknowns.push_back(paper_symbols()[derivative_name(s.function, "t", k, k)]);
       equation = equation.subs(apply_function(s.function, {paper_symbols()["t"]}) == paper_symbols()[s.function]);
     }
-    const smooth_expansion expansion = expand_on_smooth(relation, states, h);
+    const smooth_expansion expansion = expand_on_smooth(relation, states, h, series_order);
     const std::optional<ex> factor = equation_factor(equation, expansion.leading, unknowns);
     ginac_all = ginac_all && factor.has_value();
     if (!factor) corrections.push_back(fmt::format("{} is consistent with {} = 0", relations[i].place, text_of(expansion.leading)));
+    // The relation's order: its next nonzero power less the leading one (none found: at least to the
+    // series' end).
+    int next = series_order;
+    if (said) {
+      const ex series = GiNaC::expand(expansion.series);
+      for (int k = expansion.lowest_power + 1; k < series_order && next == series_order; ++k) {
+        if (!GiNaC::normal(series.coeff(h, k)).is_zero()) next = k;
+      }
+      order = std::min(order.value_or(next - expansion.lowest_power), next - expansion.lowest_power);
+    }
+    const int confirmed_to = said ? next : expansion.lowest_power + 1;  // the remainder is O(h^confirmed_to)
     // Our kernel, on the Taylor polynomials.
     const int degree = taylor_degree(call, relation, [&] {
       std::vector<GiNaC::symbol> out;
       for (const smooth_state& s : states) out.push_back(GiNaC::ex_to<GiNaC::symbol>(s.state));
       return out;
-    }(), h, expansion.lowest_power + 1);
+    }(), h, confirmed_to);
     const ex on_taylor = on_taylor_polynomials(relation, states, degree);
     const ex remainder = on_taylor - GiNaC::pow(h, expansion.lowest_power) * expansion.leading;
     // An uninterpreted function (V) the relation applies: our kernel takes V(x) = x^k, k = 0..4, one
@@ -194,13 +214,13 @@ claim_result consistency_shape(const shape_call& call, const run_context& ctx) {
     }
     kernel_decision own;
     if (function.empty()) {
-      own = kernel_confirms_order(remainder, h, expansion.lowest_power + 1, false);
+      own = kernel_confirms_order(remainder, h, confirmed_to, false);
     } else {
       const GiNaC::symbol x("monomial_variable");
       own = {kernel_decision::result::zero, ""};
       for (int k = 0; k <= 4 && own.outcome == kernel_decision::result::zero; ++k) {
         const definition monomial{GiNaC::symbol(function), GiNaC::pow(x, k), "V(x) = x^k", 0, "", function, x};
-        const kernel_decision at_k = kernel_confirms_order(with_definitions(remainder, {monomial}), h, expansion.lowest_power + 1, false);
+        const kernel_decision at_k = kernel_confirms_order(with_definitions(remainder, {monomial}), h, confirmed_to, false);
         own = {at_k.outcome, at_k.outcome == kernel_decision::result::zero ? fmt::format("for {}(x) = x^k, k = 0..4, each: {}", function, at_k.evidence)
                                                                            : fmt::format("{}(x) = x^{}: {}", function, k, at_k.evidence)};
       }
@@ -228,9 +248,18 @@ claim_result consistency_shape(const shape_call& call, const run_context& ctx) {
       {"own", own_contradicts        ? std::string("contradicts GiNaC: a relation's series or multiple does not hold on the Taylor polynomials")
               : !not_decided.empty() ? "not applicable: " + fmt::format("{}", fmt::join(not_decided, "; "))
                                      : std::string(ginac_all ? "holds" : "fails") +
-                                           ": each relation on the states' Taylor polynomials is h^p times the leading term plus O(h^(p+1)), and that term the factor times its equation"}};
+                                           ": each relation on the states' Taylor polynomials is h^p times the leading term plus " +
+                                           (said ? "O(h^(p+order)), no term between" : "O(h^(p+1))") + ", and that term the factor times its equation"}};
+  if (said) {
+    result.evidence["exact"]["stated_order"] = said->number("order");
+    result.evidence["exact"]["order"] = *order < series_order ? std::to_string(*order) : "at least " + std::to_string(*order);
+    if (said->number("order") != *order) {
+      corrections.push_back(*order < series_order ? fmt::format("a discretization of order {}", *order)
+                                                  : fmt::format("a discretization of order at least {}", *order));
+    }
+  }
   if (!not_decided.empty()) result.note = "Our kernel could not decide it: GiNaC's series alone. ";
-  settle(result, own_contradicts, ginac_all, what, "as derived: " + fmt::format("{}", fmt::join(corrections, "; ")));
+  settle(result, own_contradicts, ginac_all && corrections.empty(), what, "as derived: " + fmt::format("{}", fmt::join(corrections, "; ")));
   return result;
 }
 
