@@ -113,8 +113,9 @@ long_run run_long(const long_run_case& c, const precision& prec, long long steps
   const scheme_style style = style_of(c.scheme);
   long_run out{{}, series(name, line_style::lines, style.color, style.point, style.dash),
                // Measured as markers, predicted as a line drawn over them: where they agree, both show.
-               series(name + " measured", line_style::points, style.color, style.point),
-               series(name + " predicted", line_style::lines, style.color, style.point)};
+               // A phase error is the scheme's, whatever energy the run monitors: named after the scheme.
+               series(fmt::format("{} measured", traits_of(c.scheme).name), line_style::points, style.color, style.point),
+               series(fmt::format("{} predicted", traits_of(c.scheme).name), line_style::lines, style.color, style.point)};
   phase_point<Real> y = y0;
   // The unwrapped angle is 2π·turns + angle: an integer count of branch crossings, not a running sum
   // of ~θ per step (a sum of 1e9 increments in double errs by up to 1e9 ulp(1e8)/2 ≈ 7 rad).
