@@ -269,17 +269,15 @@ struct function_scaled : GiNaC::map_function {
   }
 };
 
-/// e with the function `name` defined as the monomial x^power (its derivatives at each argument
-/// too): the paper layer's definitions, as a document's `V(q) = ...` is put in.
+kernel_decision decide_entries(const GiNaC::ex& e, std::size_t most_points);
+
+}  // namespace
+
 GiNaC::ex with_monomial(const GiNaC::ex& e, const std::string& name, int power) {
   const GiNaC::symbol x("monomial_variable");
   definition monomial{GiNaC::symbol(name), GiNaC::pow(x, power), "V(x) = x^k", 0, "", name, x};
   return with_definitions(e, {monomial});
 }
-
-kernel_decision decide_entries(const GiNaC::ex& e, std::size_t most_points);
-
-}  // namespace
 
 /// The degree of the polynomial potentials an identity linear in an uninterpreted V is proved for.
 constexpr int potential_degree = 4;

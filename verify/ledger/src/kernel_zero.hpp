@@ -29,6 +29,10 @@ struct kernel_decision {
 /// exceed `most_points`.
 kernel_decision kernel_decides_zero(const GiNaC::ex& e, std::size_t most_points = 20000);
 
+/// e with the function `name` (as GiNaC registered it) defined as the monomial x^power, its
+/// derivatives at each argument too (the paper layer's definitions, as a document's V(q) = ...).
+GiNaC::ex with_monomial(const GiNaC::ex& e, const std::string& name, int power);
+
 /// A bound, from the tree as read, on the degree in `symbol` of the denominator e is written over
 /// (the product of the factors it divides by): 0 when the symbol is in no denominator; at least the
 /// order of e's pole in that symbol at 0.

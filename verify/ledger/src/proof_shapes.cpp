@@ -39,9 +39,9 @@ std::vector<shape_parameter> with_series(std::vector<shape_parameter> parameters
   return parameters;
 }
 
-/// A sentence's pattern that must hold the hole {name}.
-shape_parameter pattern_with_hole(std::string name, std::string meaning, std::string hole) {
-  shape_parameter p{std::move(name), argument_kind::word, true, std::move(meaning)};
+/// A sentence's pattern that must hold the hole {name} (an optional argument when not `required`).
+shape_parameter pattern_with_hole(std::string name, std::string meaning, std::string hole, bool required = true) {
+  shape_parameter p{std::move(name), argument_kind::word, required, std::move(meaning)};
   p.hole = std::move(hole);
   return p;
 }
@@ -131,11 +131,7 @@ const std::map<std::string, proof_shape>& proof_shapes() {
                      {"equation", argument_kind::equations, true, "the printed differential equations, one per relation, in order"},
                      {"step", argument_kind::symbols, true, "the step h", 1},
                      {"index", argument_kind::word, true, "the index of the states, 'j' for x_j, x_{j+1}, x_{j-1}"},
-                     [] {
-                       shape_parameter p = pattern_with_hole("sentence", "optionally, a sentence stating the order, with the hole {order}", "order");
-                       p.required = false;
-                       return p;
-                     }()}),
+                     pattern_with_hole("sentence", "optionally, a sentence stating the order, with the hole {order}", "order", false)}),
          consistency_shape});
     add({"taylor-expansion", "each printed expansion x_{j+k} = ... + O(h^N) is the Taylor polynomial of x(t_j + k h) through h^(N-1)", "expansions",
          with_where({{"expansions", argument_kind::equations, true, "the printed expansions 'x_{j+k} = x_j + ... + O(h^N)'"},
@@ -203,11 +199,7 @@ const std::map<std::string, proof_shape>& proof_shapes() {
                      {"sequence", argument_kind::symbols, true, "its three states q_{j-1}, q_j, q_{j+1}", 3},
                      {"variable", argument_kind::formula, true, "the variable the scheme's roots depend on, a product of positive symbols", 0, "", true},
                      pattern_with_hole("sentence", "the sentence's pattern: the hole {stability} (stable, linearly stable, unstable)", "stability"),
-                     [] {
-                       shape_parameter p = pattern_with_hole("qualifier", "optionally, a sentence with the hole {qualifier} (unconditionally, conditionally)", "qualifier");
-                       p.required = false;
-                       return p;
-                     }()}),
+                     pattern_with_hole("qualifier", "optionally, a sentence with the hole {qualifier} (unconditionally, conditionally)", "qualifier", false)}),
          unconditional_stability_shape});
     add({"root-criterion", "a stability criterion stated on the roots' modulus, against the root condition on every region of variable > 0", "scheme",
          with_where({{"scheme", argument_kind::formula, true, "a linear three-term scheme (= 0) whose first and last coefficients are equal"},

@@ -242,6 +242,20 @@ ex monic_discriminant(const three_term_coefficients& terms) {
   return GiNaC::normal((terms.current * terms.current - 4 * terms.previous * terms.next) / (terms.next * terms.next));
 }
 
+std::optional<GiNaC::numeric> index_offset(const std::string& name, const std::string& index) {
+  const std::size_t bar = name.find('_');
+  if (bar == std::string::npos || bar == 0 || name.compare(bar + 1, index.size(), index) != 0) return std::nullopt;
+  const std::string rest = name.substr(bar + 1 + index.size());
+  if (rest.empty()) return GiNaC::numeric(0);
+  const std::string digits = rest.substr(1);
+  if ((rest[0] != '+' && rest[0] != '-') || digits.empty() || digits.find_first_not_of("0123456789/") != std::string::npos ||
+      digits.front() == '/' || digits.back() == '/') {
+    return std::nullopt;
+  }
+  const GiNaC::numeric k(digits.c_str());
+  return rest[0] == '-' ? -k : k;
+}
+
 std::string reference_of(const shape_call& call, const std::string& parameter) { return call.with.at(parameter).values.front(); }
 
 }  // namespace simpson::verify::detail

@@ -108,6 +108,10 @@ bool reversible(const three_term_coefficients& terms, kernel_decision& own);
 /// scheme in ω and h (the unscaled one carries powers of h).
 GiNaC::ex monic_discriminant(const three_term_coefficients& terms);
 
+/// The offset k of a state named <base>_<index>±k from the index ("q_j+1": 1, "q_j": 0,
+/// "q_j-1/2": −1/2); none when the name is not one.
+std::optional<GiNaC::numeric> index_offset(const std::string& name, const std::string& index);
+
 /// The reference an argument gives.
 std::string reference_of(const shape_call& call, const std::string& parameter);
 

@@ -33,12 +33,6 @@ const GiNaC::integral& as_integral(const ex& e, const std::string& what) {
   return GiNaC::ex_to<GiNaC::integral>(e);
 }
 
-/// `e` with the function `name` defined as x^k.
-ex on_monomial(const ex& e, const std::string& name, int k) {
-  const GiNaC::symbol x("quadrature_variable");
-  return with_definitions(e, {definition{GiNaC::symbol(name), GiNaC::pow(x, k), "psi(x) = x^k", 0, "", name, x}});
-}
-
 }  // namespace
 
 /// A rule's degree of exactness: the printed rule and the printed integral it approximates, each
@@ -64,8 +58,8 @@ claim_result quadrature_exactness_shape(const shape_call& call, const run_contex
   bool own_agrees = true;
   std::string own_evidence;
   for (int k = 0; k <= most; ++k) {
-    const ex on_rule = GiNaC::normal(on_monomial(rule, function, k));
-    const ex on_integral = GiNaC::normal(on_monomial(integral, function, k).eval_integ());
+    const ex on_rule = GiNaC::normal(with_monomial(rule, function, k));
+    const ex on_integral = GiNaC::normal(with_monomial(integral, function, k).eval_integ());
     const bool exact = GiNaC::normal(on_rule - on_integral).is_zero();
     const kernel_decision own = kernel_decides_zero(on_rule - on_integral);
     own_agrees = own_agrees && own.outcome == (exact ? kernel_decision::result::zero : kernel_decision::result::nonzero);

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <optional>
 
 namespace simpson::verify::detail {
@@ -107,18 +108,7 @@ std::string own_text(const kernel_decision& own, const std::string& verdict, con
 std::vector<smooth_state> indexed_states(const ex& e, const std::string& index, const ex& h) {
   std::vector<smooth_state> states;
   for (const std::string& name : symbol_names(e)) {
-    const std::size_t bar = name.find('_');
-    if (bar == std::string::npos || bar == 0 || name.compare(bar + 1, index.size(), index) != 0) continue;
-    const std::string rest = name.substr(bar + 1 + index.size());
-    GiNaC::numeric k = 0;
-    if (!rest.empty()) {
-      if (rest[0] != '+' && rest[0] != '-') continue;
-      const std::string digits = rest.substr(1);
-      if (digits.empty() || digits.find_first_not_of("0123456789/") != std::string::npos || digits.front() == '/' || digits.back() == '/') continue;
-      k = GiNaC::numeric(digits.c_str());
-      if (rest[0] == '-') k = -k;
-    }
-    states.push_back({paper_symbols()[name], name.substr(0, bar), k * h});
+    if (const std::optional<GiNaC::numeric> k = index_offset(name, index)) states.push_back({paper_symbols()[name], name.substr(0, name.find('_')), *k * h});
   }
   return states;
 }
@@ -208,19 +198,21 @@ claim_result consistency_shape(const shape_call& call, const run_context& ctx) {
     const ex remainder = on_taylor - GiNaC::pow(h, expansion.lowest_power) * expansion.leading;
     // An uninterpreted function (V) the relation applies: our kernel takes V(x) = x^k, k = 0..4, one
     // by one (GiNaC's witness of the order has no other way to be free of h in its denominator).
+    // (Only the reader's uninterpreted functions: GiNaC's own, sin or exp, are what they are.)
     std::string function;
+    const std::vector<std::string>& uninterpreted = function_names();
     for (GiNaC::const_preorder_iterator it = relation.preorder_begin(); it != relation.preorder_end(); ++it) {
-      if (GiNaC::is_a<GiNaC::function>(*it)) function = GiNaC::ex_to<GiNaC::function>(*it).get_name();
+      if (!GiNaC::is_a<GiNaC::function>(*it)) continue;
+      const std::string name = GiNaC::ex_to<GiNaC::function>(*it).get_name();
+      if (std::find(uninterpreted.begin(), uninterpreted.end(), name) != uninterpreted.end()) function = name;
     }
     kernel_decision own;
     if (function.empty()) {
       own = kernel_confirms_order(remainder, h, confirmed_to, false);
     } else {
-      const GiNaC::symbol x("monomial_variable");
       own = {kernel_decision::result::zero, ""};
       for (int k = 0; k <= 4 && own.outcome == kernel_decision::result::zero; ++k) {
-        const definition monomial{GiNaC::symbol(function), GiNaC::pow(x, k), "V(x) = x^k", 0, "", function, x};
-        const kernel_decision at_k = kernel_confirms_order(with_definitions(remainder, {monomial}), h, confirmed_to, false);
+        const kernel_decision at_k = kernel_confirms_order(with_monomial(remainder, function, k), h, confirmed_to, false);
         own = {at_k.outcome, at_k.outcome == kernel_decision::result::zero ? fmt::format("for {}(x) = x^k, k = 0..4, each: {}", function, at_k.evidence)
                                                                            : fmt::format("{}(x) = x^{}: {}", function, k, at_k.evidence)};
       }

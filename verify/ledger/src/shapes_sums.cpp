@@ -17,22 +17,11 @@ using GiNaC::ex;
 
 namespace {
 
-/// The offset k of a node x_{j+k} from the index j ("q_j+1" → 1, "q_j" → 0, "q_j-1/2" → −1/2); throws
-/// std::invalid_argument when the name is not one.
+/// The offset k of a node x_{j+k} from the index j; throws std::invalid_argument when the name is not one.
 GiNaC::numeric offset_of(const std::string& name, const std::string& index) {
-  const std::size_t bar = name.find('_');
-  if (bar == std::string::npos || name.compare(bar + 1, index.size(), index) != 0) {
-    throw std::invalid_argument("'" + name + "' is not a node x_" + index + ", x_" + index + "+1, ... of the sum's index");
-  }
-  const std::string rest = name.substr(bar + 1 + index.size());
-  if (rest.empty()) return 0;
-  const std::string digits = rest.substr(1);
-  if ((rest[0] != '+' && rest[0] != '-') || digits.empty() || digits.find_first_not_of("0123456789/") != std::string::npos ||
-      digits.front() == '/' || digits.back() == '/') {
-    throw std::invalid_argument("'" + name + "' is not a node x_" + index + ", x_" + index + "+1, ... of the sum's index");
-  }
-  const GiNaC::numeric k(digits.c_str());
-  return rest[0] == '-' ? -k : k;
+  const std::optional<GiNaC::numeric> k = index_offset(name, index);
+  if (!k) throw std::invalid_argument("'" + name + "' is not a node x_" + index + ", x_" + index + "+1, ... of the sum's index");
+  return *k;
 }
 
 /// The index at which `time` (a function of j, linear) equals `at`; throws when there is none.
