@@ -121,7 +121,7 @@ group_interrupt() {  # group_interrupt WHEN: a delay in seconds; "gnuplot" (whil
     [ "$(snapshot)" = "$before" ] && grep -q "interrupted (SIGINT)" "$work/err" && ! ls -A "$work" | grep -q 'staging\|\.old$' &&
       { echo "ok   SIGINT to the process group ($1): 130, previous report byte-identical"; passes=$((passes + 1)); } ||
       fail "SIGINT to the process group ($1): exit 130 but the previous report changed or staging left: $(ls -A "$work" | grep 'staging\|old')"
-  elif [ "$got" = 0 ] && [ "${1#gnuplot}" = "$1" ] && grep -q '"seed": 7' "$work/group/report.json" && [ -f "$work/group/stability_extreme.png" ]; then
+  elif [ "$got" = 0 ] && [ "${1#gnuplot}" = "$1" ] && grep -q '"seed": 7' "$work/group/report.json" && [ -f "$work/group/truncation_digits.png" ]; then
     echo "ok   SIGINT to the process group ($1): came after the swap, new report complete"; passes=$((passes + 1))
     before=$(snapshot)
   else
@@ -200,7 +200,7 @@ bad_section "absurd N" 14 '"work_precision": {"precisions": ["double"], "N": [1e
 bad_section "NaN literal" 15 '"table1": {"m": NaN}' "malformed JSON at line 1, column"
 bad_section "infinite omega h" 16 '"stability": {"precisions": ["double"], "omega_h": [1e999]}' "malformed JSON"
 bad_section "h = 0" 17 '"stability": {"precisions": ["double"], "omega_h": [0]}' "'stability.omega_h'\[0\] must be a number greater than 0"
-bad_section "stiff omega < 0" 18 '"stability": {"precisions": ["double"], "stiff_omegas": [-1]}' "'stability.stiff_omegas'\[0\]"
+bad_section "stiff ratio < 2" 18 '"stability": {"precisions": ["double"], "stiff_ratios": [1]}' "'stability.stiff_ratios'\[0\]"
 bad_section "rational in experiments" 19 '"work_precision": {"precisions": ["rational"]}' "has no cos or sin"
 bad_section "unknown scheme" 20 '"work_precision": {"precisions": ["double"], "schemes": ["euler"]}' "unknown scheme 'euler'"
 bad_section "digits > 100000" 21 '"long_time": {"mpfr_digits": 200000}' "'long_time.mpfr_digits' must be an integer from 30 to 100000"
@@ -220,22 +220,22 @@ for f in report.json report.md report.html table1.csv work_precision.csv figure1
 done
 # --out: a second, smaller run into the same directory replaces the report whole, so no file of
 # the first run survives; no staging directory is left beside it.
-echo '{"name": "small", "stability": {"precisions": ["double"], "omega_h": [1], "masses": [1], "stiff_omegas": [1], "steps": 10}}' >"$work/small.json"
+echo '{"name": "small", "stability": {"precisions": ["double"], "omega_h": [1], "masses": [1], "stiff_ratios": [100], "stiff_doublings": 10, "steps": 10}}' >"$work/small.json"
 check "second run into the same --out" 0 --scene "$work/small.json" --out "$work/quick"
 for f in figure1.png work_precision.csv table1.csv long_time_energy.svg; do
   [ -e "$work/quick/$f" ] && fail "second run: $f of the first run survived"
 done
-[ -f "$work/quick/stability_extreme.png" ] || fail "second run: its own plot missing"
+[ -f "$work/quick/truncation_digits.png" ] || fail "second run: its own plot missing"
 ls -A "$work" | grep -q 'staging\|\.old$' && fail "second run: staging left behind: $(ls -A "$work" | grep 'staging\|old')"
 # A directory holding files that are not a report is refused, and nothing in it is touched.
 mkdir "$work/notes" && echo keep >"$work/notes/notes.txt"
 check "--out holding other files" 2 --scene "$work/small.json" --out "$work/notes"
 grep -q "not a simpson-verify report" "$work/err" || fail "--out holding other files: reason not given"
 [ "$(ls -A "$work/notes")" = notes.txt ] && [ "$(cat "$work/notes/notes.txt")" = keep ] || fail "--out holding other files: touched"
-# ωh = 3 lies between 2√2 and 2√3: every run there leaves its orbit and is reported unstable, with its step.
-echo '{"name": "unstable", "stability": {"precisions": ["double", "mpfr:40"], "stiff_omega_h": 3.0, "stiff_omegas": [1, 1e4], "omega_h": [1, 3.0], "masses": [1], "steps": 1000}}' >"$work/unstable.json"
+# ωh = 3 and 3.3 lie between 2√2 and 2√3: every run there leaves its orbit and is reported unstable, with its step.
+echo '{"name": "unstable", "stability": {"precisions": ["double", "mpfr:40"], "stiff_ratios": [1e4], "stiff_doublings": 12, "omega_h": [1, 3.0, 3.3], "masses": [1], "steps": 1000}}' >"$work/unstable.json"
 check "omega h = 3 is unstable" 0 --scene "$work/unstable.json" --out "$work/unstable"
-[ "$(grep -c 'unstable (step' "$work/unstable/report.md")" -ge 6 ] || fail "omega h = 3: not reported unstable: $(grep -c 'unstable (step' "$work/unstable/report.md")"
+[ "$(grep -c 'unstable (step' "$work/unstable/report.md")" -ge 4 ] || fail "omega h = 3: not reported unstable: $(grep -c 'unstable (step' "$work/unstable/report.md")"
 # No bare NaN, infinity or null in any file of any report this script wrote.
 # A JSON value, a Markdown table cell or a CSV field that is nan, inf or null; prose may name them.
 bad=$( (grep -rliE ': (null|-?nan|-?inf|NaN|-?Infinity)\b|"-?(nan|inf)"' --include='report.json' "$work"
@@ -366,7 +366,7 @@ assert p['earlier_text_checked'] and [(c['claim'], c['live'], c['earlier']) for 
   "$work/claims-only/report.json" || fail "claims only: the earlier text was judged for claims the run did not ask for"
 check "sections only" 0 --scene quick --sections stability --out "$work/sections-only"
 grep -q '^0 claims' "$work/out" || fail "sections only: claims ran"
-[ -f "$work/sections-only/stability_extreme.dat" ] || fail "sections only: no stability files"
+[ -f "$work/sections-only/truncation_digits.dat" ] || fail "sections only: no stability files"
 check "unknown section" 2 --sections bogus --out "$work/none-section"
 check "quiet" 0 --claims phi3-det --precisions double --quiet --out "$work/quiet"
 [ "$(wc -l <"$work/out")" = 1 ] && [ ! -s "$work/err" ] || fail "quiet: more than the summary line: $(cat "$work/out" "$work/err")"

@@ -7,6 +7,9 @@
 #include <simpson/verify/report.hpp>
 #include <simpson/verify/table1_enclosed.hpp>
 
+#include "stability_parts.hpp"
+#include <simpson/three_term_scheme.hpp>
+
 #include <simpson/verify/floating_tools.hpp>
 
 #include <simpson/nonlinear_brouwer_step.hpp>
@@ -22,6 +25,7 @@
 #include <array>
 #include <map>
 #include <random>
+#include <set>
 
 #include <cmath>
 #include <limits>
@@ -124,7 +128,8 @@ TEST(Experiments, Table1ReproducesTheSimpsonStateRowAndTheOrders) {
 TEST(Experiments, StabilityFindsTheLedgersIntervalsAndDecidesFaultsInItsPrecision) {
   stability_settings s;
   s.precisions = {precision::parse("double"), precision::mpfr_digits(50)};
-  s.stiff_omegas = {1, 1e8};
+  s.stiff_ratios = {1e3};
+  s.stiff_doublings = 20;
   s.omega_h = {1e-6, 1, 3.0, 4.5};  // 3.0: the unstable band (2√2, 2√3); 4.5: the second stable band
   s.masses = {1e-300, 1, 1e300};
   s.steps = 100;
@@ -148,6 +153,7 @@ TEST(Experiments, StabilityFindsTheLedgersIntervalsAndDecidesFaultsInItsPrecisio
   EXPECT_EQ(status["double 1e+00"], "ok");
   EXPECT_EQ(status["mpfr:50 1e+300"], "ok");
   EXPECT_EQ(status["mpfr:50 1e-300"], "ok");
+  for (const expectation& e : out.expectations) EXPECT_TRUE(e.holds) << e.key << ": " << e.observed;
   const table& endpoints = get(out, "endpoints");
   for (std::size_t r = 0; r < endpoints.rows.size(); ++r) {
     const figure& j = cell(endpoints, r, "jordan_block");
@@ -168,6 +174,73 @@ TEST(Experiments, StabilityFindsTheLedgersIntervalsAndDecidesFaultsInItsPrecisio
     // The digits of c are a number everywhere, including the second band where c < 0.
     EXPECT_EQ(cell(extreme, r, "digits_of_c").what(), figure::kind::number) << th;
   }
+}
+
+/// Φ₃'s exact region, as the stability section computes it.
+stability_report simpson_region() {
+  return analyse_three_term_scheme([](const symbolic& qp, const symbolic& q, const symbolic& qn) {
+    return three_term_residual(oscillator_parameters<symbolic>{symbolic(1), symbolic(1), symbolic::variable()}, qp, q, qn);
+  });
+}
+
+/// The expectations of a section by key.
+std::map<std::string, expectation> expectations_of(const section_result& out) {
+  std::map<std::string, expectation> by_key;
+  for (const expectation& e : out.expectations) by_key[e.key] = e;
+  return by_key;
+}
+
+TEST(Experiments, EndpointGrowthIsFittedAsTheExactRegionPredicts) {
+  section_result out;
+  detail::add_endpoint_growth(simpson_region(), 1000000000LL, out);
+  const std::map<std::string, expectation> e = expectations_of(out);
+  ASSERT_EQ(e.size(), 9u);
+  for (const auto& [key, one] : e) EXPECT_TRUE(one.holds) << key << ": " << one.predicted << " / " << one.observed;
+  // Each class where the region puts it: bounded inside, linear at the endpoint, exponential outside.
+  EXPECT_EQ(e.at("endpoint-x8-below").observed.rfind("bounded", 0), 0u) << e.at("endpoint-x8-below").observed;
+  EXPECT_EQ(e.at("endpoint-x8-at").observed.rfind("linear", 0), 0u);
+  EXPECT_EQ(e.at("endpoint-x8-above").observed.rfind("exponential", 0), 0u);
+  EXPECT_EQ(e.at("endpoint-x12-above").observed.rfind("bounded", 0), 0u);  // the second band begins
+  // At the endpoint, 1000 steps show growth on both sides, as the old fixed-count table did; the
+  // fit over 10⁶..10⁹ steps separates them.
+  const table& t = get(out, "endpoints");
+  EXPECT_GT(number(cell(t, 0, "max_amplitude_to_1000")), 100);
+  EXPECT_LT(number(cell(t, 0, "max_amplitude_to_1000000000")), 2 * number(cell(t, 0, "max_amplitude_to_1000")));
+  EXPECT_GT(cell(t, 2, "max_amplitude_to_1000000000").log10_magnitude().value(), 300000.0);  // above 2√2: e^{n ln|λ|}, beyond double
+}
+
+TEST(Experiments, AWrongRegionMakesTheStabilityExpectationsFail) {
+  // A harness that knew only the first band (0, 2√2), with (2√3, 2√6) marked unstable: the rows its
+  // runs show bounded there must fail, and only those. (A check that compared a run with itself, or
+  // typed its prediction from the run, would pass them.)
+  stability_report first_band_only = simpson_region();
+  for (stability_band& band : first_band_only.bands) band.stable = band.stable && band.x_from == 0;
+  section_result out;
+  detail::add_endpoint_growth(first_band_only, 1000000000LL, out);
+  detail::add_stiff_chain(first_band_only, {1e3}, 20, out);
+  std::set<std::string> failed;
+  for (const expectation& e : out.expectations) {
+    if (!e.holds) failed.insert(e.key);
+  }
+  const std::set<std::string> expected{"endpoint-x12-above", "endpoint-x24-below", "stiff-chain-r1.00e+03-x18"};
+  EXPECT_EQ(failed, expected);
+}
+
+TEST(Experiments, TheStiffChainIsDecidedByItsFastModes) {
+  section_result out;
+  detail::add_stiff_chain(simpson_region(), {1e3, 1e6}, 30, out);
+  const table& t = get(out, "stiff_chain");
+  ASSERT_EQ(t.rows.size(), 8u);  // two ratios, the fast modes mid-band in each of the four bands
+  const std::vector<std::string> predicted{"bounded", "exponential", "bounded", "exponential"};
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    EXPECT_EQ(cell(t, r, "predicted").value(), predicted[r % 4]) << r;
+    EXPECT_EQ(cell(t, r, "fitted").value(), predicted[r % 4]) << r;
+    EXPECT_LT(number(cell(t, r, "slow_omega_h")), 0.01) << r;  // the step resolves the slow modes
+    EXPECT_GT(number(cell(t, r, "ratio")), 0.9 * (r < 4 ? 1e3 : 1e6)) << r;
+  }
+  // In the second band (12, 24) the slow modes sit in (0, 8) and the fast ones in (12, 24): stable.
+  EXPECT_EQ(cell(t, 2, "modes").value(), "2 in (0, 8), 2 in (12, 24)");
+  for (const expectation& e : out.expectations) EXPECT_TRUE(e.holds) << e.key << ": " << e.observed;
 }
 
 /// Midpoint and radius of an enclosed figure's text ("1.4427e-14 ± 3e-31"), read in mpfr.

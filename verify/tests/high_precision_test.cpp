@@ -29,7 +29,7 @@ TEST(HighPrecision, EverySectionAtMpfr3000KeepsItsDigitsAndIsRight) {
       "table1": {"N": [10, 20]},
       "work_precision": {"schemes": ["simpson", "newmark"], "precisions": ["mpfr:3000"], "N": [16, 64],
                          "max_runs": 1, "max_seconds": 0.05},
-      "stability": {"precisions": ["double", "mpfr:3000"], "stiff_omegas": [1, 1e8], "omega_h": [1e-8, 1e-2, 1],
+      "stability": {"precisions": ["double", "mpfr:3000"], "stiff_ratios": [1e3], "stiff_doublings": 12, "omega_h": [1e-8, 1e-2, 1],
                     "masses": [1e-300, 1, 1e300], "steps": 100},
       "long_time": {"steps_double": 10000, "steps_mpfr": 1000, "mpfr_digits": 3000, "windows": 10}})",
                               "mpfr3000");

@@ -105,6 +105,38 @@ TEST(JUnit, FailuresAreExactlyWhatMakesTheExitCodeNonZero) {
   EXPECT_TRUE(fault_recorded) << "the underflow of the extreme masses is recorded";
 }
 
+// A section's expectation is a testcase of its section: passed while the run shows what was
+// predicted, a failure (and exit code 1) when it does not, as a claim not as expected.
+TEST(JUnit, AFailedExpectationOfASectionFailsTheRun) {
+  scene s = load_scene("quick");
+  s.claims.clear();
+  s.experiments = {};
+  s.experiments.stability = load_scene("quick").experiments.stability;
+  run_record r = run(s);
+  ASSERT_EQ(r.sections.size(), 1u);
+  ASSERT_FALSE(r.sections[0].expectations.empty());
+  EXPECT_EQ(run_exit_code(r), 0);
+  EXPECT_TRUE(failed_expectations(r).empty());
+  expectation& changed = r.sections[0].expectations.front();
+  changed.holds = false;  // as if the run had shown another growth than predicted
+  EXPECT_EQ(run_exit_code(r), 1);
+  EXPECT_EQ(failed_expectations(r), std::vector<std::string>{"stability." + changed.key});
+  const boost::property_tree::ptree tree = parsed(report_junit(r));
+  const auto& root = tree.get_child("testsuites");
+  EXPECT_EQ(root.get<std::size_t>("<xmlattr>.failures"), 1u);
+  bool found = false;
+  for (const auto& [tag, suite] : root) {
+    if (tag != "testsuite") continue;
+    for (const auto& [case_tag, testcase] : suite) {
+      if (case_tag != "testcase" || testcase.get<std::string>("<xmlattr>.name") != changed.key) continue;
+      found = true;
+      EXPECT_EQ(testcase.get<std::string>("failure.<xmlattr>.type"), "expectation-failed");
+      EXPECT_EQ(testcase.get<std::string>("<xmlattr>.classname"), "sections.stability.expectations");
+    }
+  }
+  EXPECT_TRUE(found);
+}
+
 // A check that throws is an error of its testcase (exit code 3).
 TEST(JUnit, AThrowingCheckIsAnError) {
   scene s = load_scene("quick");

@@ -93,6 +93,18 @@ TEST(ReferenceReport, CompareFindsAChangedFigureAndNamesIt) {
     }
   }
   EXPECT_EQ(compare_reports(reference, residual).differences.size(), 1u);
+  // A section's expectation that no longer holds is a difference, and so is a table or a column that
+  // only the new report has (before, compare walked the old report's members alone).
+  json expectation_changed = reference;
+  expectation_changed["experiments"]["stability"]["expectations"][0]["holds"] = false;
+  EXPECT_EQ(compare_reports(reference, expectation_changed).differences.size(), 1u);
+  json extended = reference;
+  extended["experiments"]["stability"]["new_table"] = json::array();
+  extended["experiments"]["stability"]["intervals"][0]["new_column"] = "x";
+  const std::vector<std::string> added = compare_reports(reference, extended).differences;
+  ASSERT_EQ(added.size(), 2u) << ::testing::PrintToString(added);
+  EXPECT_NE(added[0].find("intervals row 0, column new_column: only in the new report"), std::string::npos) << added[0];
+  EXPECT_NE(added[1].find("new_table: only in the new report"), std::string::npos) << added[1];
 }
 
 /// A run that did not check the certificates (--no-certify, or no coqc) against the reference made

@@ -63,7 +63,7 @@ TEST(Report, WritesEveryFileAtomically) {
   std::sort(names.begin(), names.end());
   // The quick scene has every section: its data files, gnuplot scripts and plots, and no staging left.
   for (const char* expected : {"report.json", "report.md", "report.html", "table1.csv", "work_precision.csv", "figure1.gp",
-                               "figure1.svg", "figure1.png", "work_precision_time.svg", "stability_extreme.png",
+                               "figure1.svg", "figure1.png", "work_precision_time.svg", "truncation_digits.png",
                                "long_time_energy.svg", "long_time_phase.png"}) {
     EXPECT_NE(std::find(names.begin(), names.end(), expected), names.end()) << expected;
   }

@@ -132,8 +132,12 @@ TEST(Scene, RejectsEveryBadExperimentParameter) {
                        "'work_precision.max_seconds' must be a number greater than 0"));
   EXPECT_TRUE(mentions(section(R"("stability": {"precisions": ["double"], "omega_h": [0]})"),
                        "'stability.omega_h'[0] must be a number greater than 0"));
-  EXPECT_TRUE(mentions(section(R"("stability": {"precisions": ["double"], "stiff_omegas": [-1e8]})"),
-                       "'stability.stiff_omegas'[0]"));
+  EXPECT_TRUE(mentions(section(R"("stability": {"precisions": ["double"], "stiff_ratios": [-1e8]})"),
+                       "'stability.stiff_ratios'[0]"));
+  EXPECT_TRUE(mentions(section(R"("stability": {"precisions": ["double"], "stiff_doublings": 61})"),
+                       "'stability.stiff_doublings' must be an integer from 10 to 60"));
+  EXPECT_TRUE(mentions(section(R"("stability": {"precisions": ["double"], "endpoint_power": 10})"),
+                       "'stability.endpoint_power' must be an integer from 1000"));
   EXPECT_TRUE(mentions(section(R"("stability": {"precisions": ["double"], "masses": [0]})"), "'stability.masses'[0]"));
   EXPECT_TRUE(mentions(section(R"("stability": {"precisions": ["double"], "steps": 0})"), "'stability.steps' must be an integer"));
   EXPECT_TRUE(mentions(section(R"("long_time": {"omega_h": 3})"), "'long_time.omega_h' must be a number greater than 0 and at most 2"));

@@ -154,6 +154,20 @@ testcase table_case(const section_result& section, const table& t) {
   return c;
 }
 
+/// A section's expectation: a failure when the run did not show what was predicted.
+testcase expectation_case(const section_result& section, const expectation& e) {
+  testcase c{e.key, "sections." + section.name + ".expectations", {}, testcase::result::passed, "", "", "", ""};
+  c.properties = {{"holds", e.holds ? "yes" : "no"}};
+  c.out = "Expected: " + e.statement + "\nPredicted: " + e.predicted + "\nObserved: " + e.observed;
+  if (!e.holds) {
+    c.outcome = testcase::result::failure;
+    c.type = "expectation-failed";
+    c.message = "the run did not show what was predicted: " + e.statement;
+    c.detail = c.out;
+  }
+  return c;
+}
+
 }  // namespace
 
 std::string report_junit(const run_record& r) {
@@ -167,6 +181,7 @@ std::string report_junit(const run_record& r) {
       const table* t = std::get_if<table>(&block);
       if (t != nullptr && !t->timing) tables.push_back(table_case(section, *t));
     }
+    for (const expectation& e : section.expectations) tables.push_back(expectation_case(section, e));
     body += suite_xml("section " + section.name, tables, total);
   }
   return fmt::format("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"simpson-verify scene {}\" {}>\n",

@@ -1,5 +1,5 @@
 // simpson-verify: runs a scene of the claims ledger and writes its report.
-// Exit codes: 0 every verdict as expected; 1 some verdict differs (each named on stderr);
+// Exit codes: 0 every verdict as expected; 1 some verdict differs, or a section's expectation failed (each named on stderr);
 // 2 bad input or usage (one line on stderr, nothing written); 3 an internal error (a bug in the
 // harness: a check that threw, or an unexpected exception); 128 + n when stopped by signal n.
 
@@ -146,8 +146,8 @@ int main(int argc, char** argv) {
   CLI::App app{"simpson-verify: proves, rechecks and reports every claim of the symplectic Simpson paper"};
   app.set_version_flag("--version", version_line());
   app.footer(
-      "Exit codes: 0 every verdict as expected (compare: the reports agree); 1 a verdict differs from the expected one, or "
-      "coqc rejected a certificate (compare: a difference); 2 bad input (one line on stderr, nothing written); 3 a bug in "
+      "Exit codes: 0 every verdict as expected (compare: the reports agree); 1 a verdict differs from the expected one, "
+      "coqc rejected a certificate or a section's expectation failed (compare: a difference); 2 bad input (one line on stderr, nothing written); 3 a bug in "
       "the harness; 130 or 143 interrupted by SIGINT or SIGTERM (the previous report left as it was).");
   std::string scene_name = "paper", out_dir, seed_text, samples_text, enclosure_budget_text, paper_file, timing_runs_text,
       claims_file;
@@ -398,6 +398,9 @@ int main(int argc, char** argv) {
       }
     }
     for (const std::string& id : rejected_certificates(record)) fmt::print(stderr, "simpson-verify: {}: coqc rejected its certificate\n", id);
+    for (const std::string& key : failed_expectations(record)) {
+      fmt::print(stderr, "simpson-verify: expectation {} failed: the run did not show what was predicted (report.md, Failures)\n", key);
+    }
     const plot_outcome plots = write_report_files(out, record);
     for (const std::string& failure : plots.failures) fmt::print(stderr, "simpson-verify: warning: plot not drawn: {}\n", failure);
     const std::string scene_text = s.name + (s.selection.empty() ? "" : ": " + s.selection);

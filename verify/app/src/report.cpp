@@ -151,7 +151,8 @@ std::string summary_line(const run_record& r) {
 }
 
 std::string expectation_line(const run_record& r) {
-  if (r.outcomes.empty()) return "No claim in this run.";
+  const std::vector<std::string> failed = failed_expectations(r);
+  if (r.outcomes.empty() && failed.empty()) return "No claim in this run.";
   const verdict_counts c = count_verdicts(r);
   std::vector<std::string> expected_failures;
   for (const claim_outcome& o : r.outcomes) {
@@ -173,6 +174,10 @@ std::string expectation_line(const run_record& r) {
                         c.unexpected.size() == 1 ? "" : "s", c.unexpected.size() == 1 ? "s" : "", judgment, changed);
     }
     if (rejected) why += (why.empty() ? "" : "; ") + std::string("coqc rejected a certificate");
+    if (!failed.empty()) {
+      why += (why.empty() ? "" : "; ") + fmt::format("{} expectation{} of the experiments failed ({})", failed.size(), failed.size() == 1 ? "" : "s",
+                                                     join(failed, ", "));
+    }
     return "Exit code 1: " + why + "; see Failures.";
   }
   std::string line = fmt::format("Exit code 0: every verdict is the expected one, {} (a regression check: a difference would "
@@ -199,7 +204,7 @@ json summary_json(const run_record& r) {
           {"text_changed", c.text_changed}, {"undecided", c.undecided}, {"unproved", c.unproved}, {"skipped", c.skipped},
           {"machine_read", c.machine_read}, {"quoted", c.quoted}, {"typed", r.outcomes.size() - c.machine_read - c.quoted},
           {"coq_exported", c.coq_exported}, {"coq_checked", c.coq_checked},
-          {"unexpected", c.unexpected}};
+          {"unexpected", c.unexpected}, {"failed_expectations", failed_expectations(r)}};
 }
 
 std::size_t machine_read(const run_record& r) { return count_verdicts(r).machine_read; }
@@ -591,6 +596,14 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
                                 ? "an expected failure: the ledger expects this verdict, so the exit code is 0"
                                 : "not as expected (expected " + to_string(o.expected) + "): the exit code is 1";
     md += finding_markdown(o, "**" + to_string(o.result.outcome) + "**, " + markdown_escaped(why));
+  }
+  for (const section_result& section : r.sections) {
+    for (const expectation& e : section.expectations) {
+      if (e.holds) continue;
+      any_failure = true;
+      md += fmt::format("- **expectation {}.{}** failed (the exit code is 1): {} Predicted: {}. Observed: {}.\n\n", section.name, e.key,
+                        markdown_escaped(e.statement), markdown_escaped(e.predicted), markdown_escaped(e.observed));
+    }
   }
   if (!any_failure) md += "None in this run.\n\n";
 

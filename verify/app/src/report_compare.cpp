@@ -185,10 +185,18 @@ void compare_sections(const json& a, const json& b, std::vector<std::string>& ou
             if (!other.at(table)[k].contains(column)) out.push_back(at + ": only in the old report");
             else walk(value, other.at(table)[k].at(column), at, out);
           }
+          for (const auto& [column, value] : other.at(table)[k].items()) {
+            if (!ignored_keys().count(column) && !rows[k].contains(column)) {
+              out.push_back("section " + name + ", " + table + " row " + std::to_string(k) + ", column " + column + ": only in the new report");
+            }
+          }
         }
       } else {
         walk(rows, other.at(table), "section " + name + ", " + table, out);
       }
+    }
+    for (const auto& [table, rows] : other.items()) {
+      if (!section.contains(table)) out.push_back("section " + name + ", " + table + ": only in the new report");
     }
   }
   for (const auto& [name, section] : b.items()) {

@@ -135,9 +135,19 @@ std::vector<std::string> rejected_certificates(const run_record& r) {
   return ids;
 }
 
+std::vector<std::string> failed_expectations(const run_record& r) {
+  std::vector<std::string> keys;
+  for (const section_result& section : r.sections) {
+    for (const expectation& e : section.expectations) {
+      if (!e.holds) keys.push_back(section.name + "." + e.key);
+    }
+  }
+  return keys;
+}
+
 int run_exit_code(const run_record& r) {
   if (!r.internal_errors.empty()) return 3;
-  return all_as_expected(r) && rejected_certificates(r).empty() ? 0 : 1;
+  return all_as_expected(r) && rejected_certificates(r).empty() && failed_expectations(r).empty() ? 0 : 1;
 }
 
 }  // namespace simpson::verify

@@ -194,15 +194,16 @@ experiment_settings parse_experiments(const nlohmann::json& doc, const std::stri
   }
   if (doc.contains("stability")) {
     const section_reader r(origin, "stability", doc["stability"],
-                           {"precisions", "stiff_omegas", "stiff_omega_h", "omega_h", "masses", "steps"});
+                           {"precisions", "stiff_ratios", "stiff_doublings", "omega_h", "masses", "steps", "endpoint_power"});
     stability_settings st;
     if (!r.has("precisions")) fail(origin, "'stability.precisions' is missing");
     st.precisions = r.precisions("precisions");
-    if (r.has("stiff_omegas")) st.stiff_omegas = r.numbers("stiff_omegas", 0, 1e300);
-    if (r.has("stiff_omega_h")) st.stiff_omega_h = r.number("stiff_omega_h", 0, 1e3);
+    if (r.has("stiff_ratios")) st.stiff_ratios = r.numbers("stiff_ratios", 2, 1e8);
+    if (r.has("stiff_doublings")) st.stiff_doublings = static_cast<int>(r.integer("stiff_doublings", 10, 60));
     if (r.has("omega_h")) st.omega_h = r.numbers("omega_h", 0, 1e3);
     if (r.has("masses")) st.masses = r.numbers("masses", 0, 1e300);
     if (r.has("steps")) st.steps = r.integer("steps", 1, max_steps);
+    if (r.has("endpoint_power")) st.endpoint_power = r.integer("endpoint_power", 1000, 1000000000000LL);
     e.stability = st;
   }
   if (doc.contains("long_time")) {

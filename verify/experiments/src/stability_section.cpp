@@ -1,5 +1,5 @@
 // The stability section: the exact stability region of Φ₃, the behaviour at and around each
-// endpoint, stiff ω at fixed ωh, extreme ωh in each precision, and extreme masses. Every figure is
+// endpoint, a stiff linear chain, extreme ωh in each precision, and extreme masses. Every figure is
 // computed, and every fault decided, in the precision of its row.
 
 #include <simpson/verify/stability_section.hpp>
@@ -8,6 +8,7 @@
 
 #include <simpson/verify/floating_tools.hpp>
 #include "guarded_run.hpp"
+#include "stability_parts.hpp"
 #include <simpson/verify/stability_analysis.hpp>
 
 #include <simpson/energy.hpp>
@@ -46,83 +47,6 @@ table region_table(const stability_report& report) {
   return t;
 }
 
-/// At and around each exact endpoint x_e, in mpfr:50: the eigenvalues of Φ₃, the Jordan block at
-/// x_e itself, and the growth of |y_j| from a start off every eigenvector.
-table endpoint_table(const stability_report& report, long long steps) {
-  table t{"endpoints",
-          fmt::format("At and around each endpoint (mpfr:50, m = ω = 1, {} steps from y₀ = (0.6 mω, 0.8), amplitude "
-                      "A = |q| + |p|/(mω))",
-                      steps),
-          "At an endpoint Φ₃ has a double eigenvalue ±1 with a Jordan block (Φ₃ ∓ I ≠ 0), so |y_j| grows linearly; inside "
-          "a stable interval it stays bounded; outside it grows like the growth factor^j.",
-          {{"omega_h", "ωh"}, {"eigenvalues", "eigenvalues"}, {"growth_factor", "growth factor", "", 8},
-           {"jordan_block", "Jordan block (Φ₃ − λI ≠ 0)"}}};
-  // max |y_j|/A sampled at j = 10, 100, 1000 and the last step, those within the run.
-  std::vector<long long> sampled;
-  for (const long long j : {10LL, 100LL, 1000LL, steps}) {
-    if (j <= steps && std::find(sampled.begin(), sampled.end(), j) == sampled.end()) sampled.push_back(j);
-  }
-  for (const long long j : sampled) {
-    t.columns.push_back({fmt::format("max_amplitude_ratio_{}", j), fmt::format("max |y|/A by j = {}", j)});
-  }
-  visit_mpfr(50, [&](auto tag) {
-    using Real = typename decltype(tag)::type;
-    using std::abs;
-    using std::sqrt;
-    for (const positive_root& root : report.roots) {
-      if (!root.exact()) throw std::logic_error("stability: endpoint x = " + root_text(root) + " is not exact");
-      const rational& x_end = root.low;
-      const Real theta_end = sqrt(Real(from_decimal<Real>(boost::multiprecision::numerator(x_end).str()) /
-                                       from_decimal<Real>(boost::multiprecision::denominator(x_end).str())));
-      for (const int side : {-1, 0, 1}) {
-        throw_if_interrupted();
-        const Real theta = theta_end * (1 + Real(side) / 1000000);
-        const oscillator_parameters<Real> par{Real(1), Real(1), theta};
-        const one_step_matrix<Real> phi = simpson_map(par);
-        // Eigenvalues of Φ₃ = ((α, β), (γ, α)) with det 1: α ± sqrt(α² − 1), on the unit circle when |α| <= 1.
-        const Real a = phi.alpha, d = a * a - 1;
-        figure eigenvalues, growth;
-        if (d <= 0) {
-          eigenvalues = figure::text(fmt::format("{} ± {} i", simpson::to_string(a, 8), simpson::to_string(Real(sqrt(Real(-d))), 8)));
-          growth = figure::exact(rational(1));
-        } else {
-          const Real r = sqrt(d);
-          eigenvalues = figure::text(fmt::format("{}, {}", simpson::to_string(Real(a + r), 8), simpson::to_string(Real(a - r), 8)));
-          growth = figure::of(Real(abs(a) + r));
-        }
-        // At the endpoint α = ±1 up to round-off: θ carries one rounding, and α(x) has slope
-        // |dα/dx| <= 1 on (0, 24], so |α − λ| <= 64 eps x covers θ², the formula's ~20 roundings and room.
-        // A Jordan block: the double root λ with Φ₃ − λI ≠ 0 (β or γ non-zero).
-        const Real lambda = a > 0 ? Real(1) : Real(-1), x = theta * theta;
-        const figure jordan = side == 0 ? figure::flag(abs(phi.beta) + abs(phi.gamma) > 0 &&
-                                                       abs(Real(a - lambda)) <= 64 * eps<Real>() * x)
-                                        : figure::text("n/a");
-        // max_j (|q_j| + |p_j|/(mω)) / A from y_0 = (0.6 mω, 0.8), A = 1, sampled at j = 10, 100, 1000 and the end.
-        const phase_point<Real> y0{Real(par.m() * par.omega() * 6 / 10), Real(Real(8) / 10)};
-        phase_point<Real> y = y0;
-        Real largest(0);
-        std::vector<figure> samples(sampled.size());
-        for (long long j = 1; j <= steps; ++j) {
-          y = phi * y;
-          largest = std::max(largest, Real(abs(y.q) + abs(y.p) / (par.m() * par.omega())));
-          const bool unstable = largest > detail::growth_limit;
-          for (std::size_t k = 0; k < sampled.size(); ++k) {
-            if (sampled[k] == j || (unstable && sampled[k] > j)) samples[k] = unstable ? unstable_at(j) : figure::of(largest);
-          }
-          if (unstable) break;
-        }
-        const std::string x_text = simpson::to_string(x_end);
-        table_row row{figure::text(side == 0 ? fmt::format("sqrt({}) = {}", x_text, simpson::to_string(theta, 8))
-                                             : fmt::format("sqrt({}) (1 {} 1e-6)", x_text, side < 0 ? "-" : "+")),
-                      eigenvalues, growth, jordan};
-        row.insert(row.end(), samples.begin(), samples.end());
-        t.add(std::move(row));
-      }
-    }
-  });
-  return t;
-}
-
 /// Exact truncation coefficients F(θ)/θ⁴, F(θ) = (2 cos θ − 2)/θ² + (2 cos θ + 22)/24 − θ²/24 (the
 /// scheme's residual on q = cos, divided by q), as decimal strings with more digits than any
 /// precision of the run: F/θ⁴ cancels about 4 log10(1/θ) digits, and the reference keeps 40 more.
@@ -152,39 +76,6 @@ figure digits_kept(const Real& rel, double carried) {
   return figure::of(std::round(d * 10) / 10);  // a count of digits, rounded to 0.1: double carries it whole
 }
 
-/// Stiff ω at fixed ωh, in each precision: errors at the end and the drift of H_d.
-table stiff_table(const stability_settings& s) {
-  table stiff{"stiff",
-              fmt::format("Stiff: ω up to {} at ωh = {} ({} steps, m = 1)",
-                          simpson::to_string(s.stiff_omegas.empty() ? 0.0 : s.stiff_omegas.back(), 1),
-                          simpson::to_string(s.stiff_omega_h, 3), s.steps),
-              "Relative errors at the end against the exact solution and the largest relative change of H_d; by the "
-              "scaling lemma they depend on ωh alone, so each column should be constant down the precision's round-off.",
-              {{"precision", "precision"}, {"omega", "ω", "", 1}, {"error_q", "error q"}, {"error_p_over_m_omega", "error p/(mω)"},
-               {"max_Hd_drift_relative", "max H_d drift (relative)"}, {"status", "status"}}};
-  for (const precision& prec : s.precisions) {
-    visit_floating(prec, [&](auto tag) {
-      using Real = typename decltype(tag)::type;
-      using std::abs;
-      for (const double w : s.stiff_omegas) {
-        throw_if_interrupted();
-        const oscillator_parameters<Real> par{Real(1), Real(w), Real(Real(s.stiff_omega_h) / Real(w))};
-        const phase_point<Real> y0{Real(w), Real(0)};
-        const auto run = detail::guarded_iterate(simpson_map(par), par, y0, s.steps,
-                                                 [&](const phase_point<Real>& y) { return discrete_energy(par, y); });
-        if (!run.ok()) {
-          stiff.add({figure::text(prec.name()), figure::of(w), figure{}, figure{}, figure{}, run.status});
-          continue;
-        }
-        const phase_point<Real> exact = exact_solution(par, y0, Real(par.h() * Real(s.steps)));
-        stiff.add({figure::text(prec.name()), figure::of(w), figure::of(Real(abs(Real(run.end.q - exact.q)))),
-                   figure::of(Real(abs(Real(run.end.p - exact.p)) / Real(w))), figure::of(run.max_relative_drift), run.status});
-      }
-    });
-  }
-  return stiff;
-}
-
 /// Extreme ωh in each precision: the digits of the truncation coefficient c against its exact
 /// value, and of H_d over a run; one panel of the digits plot per precision.
 std::pair<table, plot_description> extreme_omega_h(const stability_settings& s) {
@@ -193,7 +84,7 @@ std::pair<table, plot_description> extreme_omega_h(const stability_settings& s) 
                 "exact values, against its exact value F(θ)/θ⁴ (closed form, in mpfr with more digits than the run), which "
                 "tends to 1/1440; 'digits' = correct significant digits of c. H_d: the largest relative change over the run, "
                 "and the digits it keeps. A precision 'loses 1/1440' where c has no correct digit.",
-                {{"precision", "precision"}, {"omega_h", "ωh", "", 2}, {"c", "c"}, {"c_exact", "exact c", "", 6},
+                {{"precision", "precision"}, {"omega_h", "ωh", "", 0}, {"c", "c"}, {"c_exact", "exact c", "", 6},
                  column::fixed_point("digits_of_c", "digits of c", 1), {"max_Hd_drift_relative", "max H_d drift"},
                  column::fixed_point("digits_of_Hd", "digits of H_d", 1), {"status", "status"}}};
   unsigned run_digits = 0;
@@ -202,7 +93,7 @@ std::pair<table, plot_description> extreme_omega_h(const stability_settings& s) 
   std::vector<panel> digit_panels;
   for (const precision& prec : s.precisions) {
     // A digits axis per precision: from 0 to the digits the precision carries (-log10 eps), drawn as a guide.
-    panel digits_panel{prec.name(), {"ωh (dimensionless)", true}, {"correct significant digits"}, {}, "bottom right"};
+    panel digits_panel{"digits of c and H_d in " + prec.name(), {"ωh (dimensionless)", true}, {"correct significant digits"}, {}, "bottom right"};
     const double precision_digits = static_cast<double>(prec.digits10());
     digits_panel.y.range = std::pair{0.0, precision_digits * 1.08};
     series c_digits{"c (truncation coefficient)", line_style::lines_points, 0, 7};
@@ -246,9 +137,10 @@ std::pair<table, plot_description> extreme_omega_h(const stability_settings& s) 
   const int columns = static_cast<int>(std::min<std::size_t>(3, std::max<std::size_t>(1, s.precisions.size())));
   const int rows = static_cast<int>((s.precisions.size() + static_cast<std::size_t>(columns) - 1) / static_cast<std::size_t>(columns));
   return {std::move(extreme),
-          plot_description{"stability_extreme",
-                           "Correct significant digits of the truncation coefficient c and of H_d against ωh, one panel per "
-                           "precision (each with its own digits axis)",
+          plot_description{"truncation_digits",
+                           "Digits of the truncation coefficient and of H_d: correct significant digits of c = T_h/(ω⁶h⁴q) "
+                           "(against its exact value, which tends to 1/1440) and of H_d over the run, against ωh, one panel "
+                           "per precision (each with its own digits axis)",
                            digit_panels, columns, 400 * columns, 330 * std::max(1, rows)}};
 }
 
@@ -299,12 +191,14 @@ section_result run_stability(const stability_settings& s) {
   section_result out;
   out.name = "stability";
   out.title = "Stability: exact region, endpoints, stiff and extreme cases";
-  out.conventions = {{"steps", s.steps}, {"stiff_omega_h", s.stiff_omega_h}};
+  out.conventions = {{"steps", s.steps}, {"endpoint_power", s.endpoint_power}, {"stiff_ratios", s.stiff_ratios}, {"stiff_doublings", s.stiff_doublings}};
   const stability_report report = exact_region();
   out.add(region_table(report));
-  out.add(endpoint_table(report, s.steps));
+  detail::add_spectral_radius(report, out);
+  detail::add_endpoint_growth(report, s.endpoint_power, out);
   progress_step("stability", "exact region and endpoints");
-  out.add(stiff_table(s));
+  detail::add_stiff_chain(report, s.stiff_ratios, s.stiff_doublings, out);
+  progress_step("stability", "stiff chain");
   auto [extreme, digits_plot] = extreme_omega_h(s);
   out.add(std::move(extreme)).add(mass_table(s)).add(std::move(digits_plot));
   return out;

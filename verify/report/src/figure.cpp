@@ -1,5 +1,7 @@
 #include <simpson/verify/figure.hpp>
 
+#include <fmt/format.h>
+
 #include <cstdlib>
 #include <stdexcept>
 
@@ -104,6 +106,7 @@ int significant_digits(const std::string& text) {
 
 std::string display(const figure& f, int digits, bool fixed) {
   if (f.what() != figure::kind::number) return f.value();
+  if (digits == 0) return f.as_computed_double() ? fmt::format("{}", *f.as_computed_double()) : f.full_text();
   if (!f.radius().empty() && (fixed || significant_digits(f.value()) < digits)) return f.full_text();
   return fixed ? fixed_decimal(f.value(), digits) : round_decimal(f.value(), digits);
 }

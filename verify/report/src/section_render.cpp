@@ -332,6 +332,13 @@ json section_json(const section_result& s) {
     if (!f.timing) files.push_back(f.name);
   }
   j["files"] = files;
+  if (!s.expectations.empty()) {
+    json expectations = json::array();
+    for (const expectation& e : s.expectations) {
+      expectations.push_back({{"key", e.key}, {"statement", e.statement}, {"predicted", e.predicted}, {"observed", e.observed}, {"holds", e.holds}});
+    }
+    j["expectations"] = expectations;
+  }
   return j;
 }
 
@@ -347,6 +354,17 @@ json section_timing_json(const section_result& s) {
 
 std::string section_markdown(const section_result& s) {
   std::string md = "## " + s.title + "\n\n" + blocks_markdown(s, false);
+  if (!s.expectations.empty()) {
+    const auto held = std::count_if(s.expectations.begin(), s.expectations.end(), [](const expectation& e) { return e.holds; });
+    md += fmt::format("**Expectations of this section: {} of {} hold.** Each is predicted without the run and is a JUnit testcase; "
+                      "one that fails fails the run.\n\n",
+                      held, s.expectations.size());
+    for (const expectation& e : s.expectations) {
+      md += fmt::format("- {} `{}`: {} Predicted: {}. Observed: {}.\n", e.holds ? "✓" : "✗ **fails**", e.key, markdown_escaped(e.statement),
+                        markdown_escaped(e.predicted), markdown_escaped(e.observed));
+    }
+    md += "\n";
+  }
   if (has_timing(s)) md += "Run times of this section: [timing.md](timing.md) (kept apart, so that every other file of the report is the same from run to run).\n\n";
   return md;
 }

@@ -66,9 +66,12 @@ bool all_as_expected(const run_record& r);
 /// The claims whose Coq certificate coqc rejected (evidence "coq" status "failed", with --certify).
 std::vector<std::string> rejected_certificates(const run_record& r);
 
+/// The sections' expectations that failed, as "section.key".
+std::vector<std::string> failed_expectations(const run_record& r);
+
 /// The process's exit code for a finished run, and the one rule report.junit.xml follows: 3 when a
-/// check threw (a bug in the harness), 1 when a verdict differs from the expected one or coqc
-/// rejected a certificate, 0 otherwise.
+/// check threw (a bug in the harness), 1 when a verdict differs from the expected one, coqc
+/// rejected a certificate or a section's expectation failed, 0 otherwise.
 int run_exit_code(const run_record& r);
 
 }  // namespace simpson::verify

@@ -1,6 +1,6 @@
 #pragma once
 // The stability section: the exact stability region of Φ₃, the behaviour at and around each
-// endpoint, stiff ω at fixed ωh, extreme ωh in each precision, and extreme masses.
+// endpoint, a stiff linear chain, extreme ωh in each precision, and extreme masses.
 
 #include <simpson/precision.hpp>
 #include <simpson/verify/result_model.hpp>
@@ -11,11 +11,12 @@ namespace simpson::verify {
 
 struct stability_settings {
   std::vector<precision> precisions;
-  std::vector<double> stiff_omegas{1, 1e2, 1e4, 1e6, 1e8};  // at omega h = stiff_omega_h
-  double stiff_omega_h = 1;
+  std::vector<double> stiff_ratios{1e3, 1e6};  // ω_max/ω_min of the stiff chain
+  int stiff_doublings = 30;                     // the stiff chain runs 2^stiff_doublings steps
   std::vector<double> omega_h{1e-8, 1e-6, 1e-4, 1e-3, 1e-2, 1e-1, 1, 2, 2.8};
   std::vector<double> masses{1e-300, 1e-150, 1, 1e150, 1e300};
   long long steps = 1000;  // steps of each run
+  long long endpoint_power = 1000000000;  // the largest n of Φ₃ⁿ at the endpoints (closed form)
 };
 
 section_result run_stability(const stability_settings& s);

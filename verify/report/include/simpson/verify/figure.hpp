@@ -90,6 +90,8 @@ std::string fixed_decimal(const std::string& text, int decimals);
 /// Figure text for people: numbers rounded to `digits` significant digits (or, when `fixed`, to
 /// `digits` decimals), the rest as they are. An enclosed number with fewer guaranteed digits than
 /// that is shown with its radius ("1.4e-14 ± 3e-16", "0 ± 2e-50"): no digit shown is unguaranteed.
+/// With digits = 0: a double as its shortest round-trip decimal (2.8, 2.8284271247461898), so that an
+/// input such as ωh shows every digit that tells it from its neighbours; other figures as they are.
 std::string display(const figure& f, int digits, bool fixed = false);
 
 /// The fault of a state that left its bounded orbit: "unstable (step j)".

@@ -17,7 +17,8 @@ namespace simpson::verify {
 
 /// A column of a table. `key` names it in JSON and CSV, `header` (with `unit`) in Markdown;
 /// numbers are shown to `digits` significant digits in Markdown, or with `digits` decimals when
-/// `fixed` (counts of digits, percentages); JSON and CSV keep every digit.
+/// `fixed` (counts of digits, percentages), or with digits = 0 as given (a double input, such as a
+/// scene's ωh, in its shortest round-trip decimal); JSON and CSV keep every digit.
 struct column {
   column(std::string key_, std::string header_, std::string unit_ = {}, int digits_ = 3)
       : key(std::move(key_)), header(std::move(header_)), unit(std::move(unit_)), digits(digits_) {}
@@ -131,6 +132,18 @@ struct prose {
 
 using section_block = std::variant<prose, table, plot_description>;
 
+/// What a section's run is expected to show, against what it showed: a prediction made without
+/// the run (an exact analysis, a proved law) beside the figure the run measured. A section records
+/// each one it decides; one that fails fails the run (exit 1) and its JUnit testcase, as a claim
+/// whose verdict is not the expected one does, so that a changed result is not only a `compare` line.
+struct expectation {
+  std::string key;        // unique within its section: the JUnit testcase's name
+  std::string statement;  // what is expected, in words
+  std::string predicted;  // the prediction, and what it rests on
+  std::string observed;   // what the run measured
+  bool holds = false;
+};
+
 /// An experiment section as data.
 struct section_result {
   std::string name;   // scene key: "table1", "work_precision", "stability", "long_time"
@@ -138,6 +151,7 @@ struct section_result {
   json conventions = json::object();  // the settings the numbers depend on, as the scene gave them
   json timing_conventions = json::object();  // how its run times were measured (timing.json)
   std::vector<section_block> blocks;
+  std::vector<expectation> expectations;
 
   section_result& text(std::string markdown) {
     blocks.emplace_back(prose{std::move(markdown)});
@@ -149,6 +163,10 @@ struct section_result {
   }
   section_result& add(plot_description p) {
     blocks.emplace_back(std::move(p));
+    return *this;
+  }
+  section_result& expect(expectation e) {
+    expectations.push_back(std::move(e));
     return *this;
   }
   const table* find_table(const std::string& key) const;
