@@ -53,7 +53,7 @@ if [ "$part" = beyond-scene ] || [ "$part" = beyond-scene-reduced ]; then
 JSON
     check "beyond scene, reduced" 0 --scene "$work/beyond-reduced.json" --quiet --out "$work/beyond"
   fi
-  grep -q '^9 claims: 9 held, 0 errata, 0 failed; all verdicts as expected' "$work/out" ||
+  grep -q '^10 claims: 10 held, 0 errata, 0 failed; all verdicts as expected' "$work/out" ||
     { echo "FAIL beyond scene: $(cat "$work/out")"; failures=$((failures + 1)); }
   echo "$passes passed, $failures failed"
   [ "$failures" = 0 ]
@@ -460,7 +460,7 @@ fi
 check "help" 0 --help
 grep -q 'Exit codes: 0 every verdict as expected .* 2 bad input .* 3 a bug in the harness; 130 or 143 interrupted' "$work/out" ||
   fail "help: exit codes not listed"
-grep -q 'embedded scene name (beyond, family, floating, paper, quick)' "$work/out" || fail "help: scenes not all listed"
+grep -q 'embedded scene name (beyond, family, floating, paper, quick, stiff)' "$work/out" || fail "help: scenes not all listed"
 grep -q -- '--samples UINT' "$work/out" || fail "help: --samples not typed UINT"
 
 # --precisions reaches the sections that have precisions, or is refused with the reason.

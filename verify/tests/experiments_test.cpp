@@ -8,7 +8,6 @@
 #include <simpson/verify/table1_enclosed.hpp>
 
 #include "stability_parts.hpp"
-#include <simpson/three_term_scheme.hpp>
 
 #include <simpson/verify/floating_tools.hpp>
 
@@ -177,11 +176,7 @@ TEST(Experiments, StabilityFindsTheLedgersIntervalsAndDecidesFaultsInItsPrecisio
 }
 
 /// Φ₃'s exact region, as the stability section computes it.
-stability_report simpson_region() {
-  return analyse_three_term_scheme([](const symbolic& qp, const symbolic& q, const symbolic& qn) {
-    return three_term_residual(oscillator_parameters<symbolic>{symbolic(1), symbolic(1), symbolic::variable()}, qp, q, qn);
-  });
-}
+stability_report simpson_region() { return simpson_exact_region(); }
 
 /// The expectations of a section by key.
 std::map<std::string, expectation> expectations_of(const section_result& out) {
@@ -241,6 +236,46 @@ TEST(Experiments, TheStiffChainIsDecidedByItsFastModes) {
   // In the second band (12, 24) the slow modes sit in (0, 8) and the fast ones in (12, 24): stable.
   EXPECT_EQ(cell(t, 2, "modes").value(), "2 in (0, 8), 2 in (12, 24)");
   for (const expectation& e : out.expectations) EXPECT_TRUE(e.holds) << e.key << ": " << e.observed;
+}
+
+TEST(Experiments, FpuSecondBandKeepsTheSchemesOwnInvariantNotTheFlows) {
+  // Simpson at the middle of its second band (x = 18) keeps I_d but not I; in its first band (ωh = 2)
+  // both. A check on I alone would call the second band unstable; one on I_d alone would hide that
+  // the numerical solution does not carry the flow's oscillatory energy there.
+  const fpu_settings s;
+  const fpu_run_summary second = run_fpu_chain(s, "simpson", std::sqrt(18.0), 200);
+  const fpu_run_summary first = run_fpu_chain(s, "simpson", 2.0, 200);
+  EXPECT_EQ(second.status, "ok");
+  EXPECT_LT(second.max_discrete_invariant_error, 0.05);
+  EXPECT_GT(second.max_invariant_error, 1.0);
+  EXPECT_LT(first.max_invariant_error, 0.1);
+  // Störmer–Verlet beyond ωh = 2 and Simpson in its gap become unstable; the A-stable methods do not.
+  EXPECT_EQ(run_fpu_chain(s, "stormer-verlet", 2.5, 20).status.rfind("unstable", 0), 0u);
+  EXPECT_EQ(run_fpu_chain(s, "simpson", 3.1, 20).status.rfind("unstable", 0), 0u);
+  EXPECT_EQ(run_fpu_chain(s, "implicit-midpoint", 3.1, 20).status, "ok");
+  EXPECT_THROW(run_fpu_chain(s, "euler", 1, 1), std::invalid_argument);
+}
+
+TEST(Experiments, FpuSectionMeetsItsExpectationsAtTheQuickSize) {
+  fpu_settings s;
+  s.omega_h = {1.5, 3.0};
+  s.end_time = s.exchange_time = 10;
+  s.reference_omega_h = 0.5;
+  s.scan_from = 1;
+  s.scan_to = 5;
+  s.scan_step = 1;
+  s.scan_end_time = 5;
+  s.samples = 50;
+  const section_result out = run_fpu(s);
+  ASSERT_EQ(out.expectations.size(), 4u);
+  for (const expectation& e : out.expectations) EXPECT_TRUE(e.holds) << e.key << ": " << e.observed;
+  const table& runs = get(out, "runs");
+  for (std::size_t r = 0; r < runs.rows.size(); ++r) {
+    const bool gap = cell(runs, r, "omega_h").value().rfind("3", 0) == 0;
+    const std::string method = cell(runs, r, "method").value();
+    const bool unstable = cell(runs, r, "status").value().rfind("unstable", 0) == 0;
+    EXPECT_EQ(unstable, gap && (method == "simpson" || method == "stormer-verlet")) << method << " " << cell(runs, r, "omega_h").value();
+  }
 }
 
 /// Midpoint and radius of an enclosed figure's text ("1.4427e-14 ± 3e-31"), read in mpfr.

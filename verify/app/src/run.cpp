@@ -112,6 +112,7 @@ run_record run(const scene& s, const paper_reading& paper, const progress_callba
   if (e.nonlinear) section([&] { return run_nonlinear(*e.nonlinear); });
   if (e.floating) section([&] { return run_floating(*e.floating); });
   if (e.family) section([&] { return run_family(*e.family); });
+  if (e.fpu) section([&] { return run_fpu(*e.fpu); });
   // Φ₃ at the paper's configuration: the paper's, not a document's that a claims file checks.
   if (!installed_document()) r.paper_configuration = paper_configuration(s.precisions);
   r.environment = build_environment(s, paper);

@@ -219,6 +219,26 @@ experiment_settings parse_experiments(const nlohmann::json& doc, const std::stri
     if (r.has("windows")) l.windows = r.integer("windows", 1, 100'000);
     e.long_time = l;
   }
+  if (doc.contains("fpu")) {
+    const section_reader r(origin, "fpu", doc["fpu"],
+                           {"m", "omega", "omega_h", "end_time", "scan_from", "scan_to", "scan_step", "scan_end_time", "samples",
+                            "exchange_time", "reference_omega_h"});
+    fpu_settings f;
+    if (r.has("m")) f.m = static_cast<int>(r.integer("m", 1, 20));
+    if (r.has("omega")) f.omega = r.number("omega", 1, 1e4);
+    if (r.has("omega_h")) f.omega_h = r.numbers("omega_h", 0, 10);
+    if (r.has("end_time")) f.end_time = r.number("end_time", 0, 1e6);
+    if (r.has("scan_from")) f.scan_from = r.number("scan_from", 0, 10);
+    if (r.has("scan_to")) f.scan_to = r.number("scan_to", 0, 10);
+    if (r.has("scan_step")) f.scan_step = r.number("scan_step", 0, 10);
+    if (r.has("scan_end_time")) f.scan_end_time = r.number("scan_end_time", 0, 1e5);
+    if (r.has("samples")) f.samples = static_cast<int>(r.integer("samples", 10, 100000));
+    if (r.has("exchange_time")) f.exchange_time = r.number("exchange_time", 0, 1e6);
+    if (r.has("reference_omega_h")) f.reference_omega_h = r.number("reference_omega_h", 0.001, 10);
+    if (f.scan_to < f.scan_from) fail(origin, "'fpu.scan_to' must be at least 'fpu.scan_from'");
+    if ((f.scan_to - f.scan_from) / f.scan_step > 1000) fail(origin, "'fpu.scan_step' gives more than 1000 points from 'fpu.scan_from' to 'fpu.scan_to'");
+    e.fpu = f;
+  }
   if (doc.contains("nonlinear")) {
     const section_reader r(origin, "nonlinear", doc["nonlinear"],
                            {"pendulum_q0", "pendulum_T", "pendulum_N", "mpfr_digits", "energy_steps", "brouwer_h", "brouwer_steps", "problems", "N",
@@ -291,7 +311,7 @@ scene parse_scene(const std::string& text, const std::string& origin) {
   if (!doc.is_object()) fail(origin, "the top level must be an object");
   static const std::set<std::string> known{"name", "description", "claims", "precisions", "samples", "seed", "expected_overrides",
                                          "paper", "table1", "work_precision", "stability", "long_time",
-                                         "nonlinear", "floating", "family"};
+                                         "nonlinear", "floating", "family", "fpu"};
   for (const auto& item : doc.items()) {
     if (!known.count(item.key())) fail(origin, "unknown key '" + item.key() + "'");
   }

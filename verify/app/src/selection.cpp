@@ -58,12 +58,14 @@ void keep_sections(scene& s, const std::vector<std::string>& names) {
   else if (!e.floating) e.floating = floating_settings{};
   if (!wanted("family")) e.family.reset();
   else if (!e.family) e.family = family_settings{};
+  if (!wanted("fpu")) e.fpu.reset();
+  else if (!e.fpu) e.fpu = fpu_settings{};
 }
 
 }  // namespace
 
 const std::vector<std::string>& section_names() {
-  static const std::vector<std::string> names{"table1", "work_precision", "stability", "long_time", "nonlinear", "floating", "family"};
+  static const std::vector<std::string> names{"table1", "work_precision", "stability", "long_time", "nonlinear", "floating", "family", "fpu"};
   return names;
 }
 

@@ -116,6 +116,18 @@ cost_estimate estimate_cost(const experiment_settings& e, const recheck_load& re
     c.units += units;
     c.lines.push_back(fmt::format("nonlinear: {:.3g} units", units));
   }
+  if (e.fpu) {
+    const fpu_settings& f = *e.fpu;
+    // A step of the chain in double: ~700 units for the implicit methods (6 to 12 unknowns, a few
+    // Newton iterations; measured: the default size, 20 s), ~30 for Störmer–Verlet.
+    const double per_time = f.omega * (3 * 700 + 30);
+    double units = 0;
+    for (const double omega_h : f.omega_h) units += per_time * f.end_time / omega_h;
+    for (double omega_h = f.scan_from; omega_h <= f.scan_to + 1e-9; omega_h += f.scan_step) units += per_time * f.scan_end_time / omega_h;
+    units += f.omega * 700 * f.exchange_time / f.reference_omega_h;
+    c.units += units;
+    c.lines.push_back(fmt::format("fpu: {:.3g} units", units));
+  }
   return c;
 }
 

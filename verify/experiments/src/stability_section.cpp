@@ -23,15 +23,15 @@
 #include <cmath>
 
 namespace simpson::verify {
-namespace {
 
-/// The exact region of Φ₃ from the Sturm-sequence analysis of its discriminant (the ledger's).
-stability_report exact_region() {
+stability_report simpson_exact_region() {
   return analyse_three_term_scheme([](const symbolic& qp, const symbolic& q, const symbolic& qn) {
     const oscillator_parameters<symbolic> unit{symbolic(1), symbolic(1), symbolic::variable()};
     return three_term_residual(unit, qp, q, qn);
   });
 }
+
+namespace {
 
 table region_table(const stability_report& report) {
   table t{"intervals", "Exact stability region of Φ₃ (ωh > 0)",
@@ -192,7 +192,7 @@ section_result run_stability(const stability_settings& s) {
   out.name = "stability";
   out.title = "Stability: exact region, endpoints, stiff and extreme cases";
   out.conventions = {{"steps", s.steps}, {"endpoint_power", s.endpoint_power}, {"stiff_ratios", s.stiff_ratios}, {"stiff_doublings", s.stiff_doublings}};
-  const stability_report report = exact_region();
+  const stability_report report = simpson_exact_region();
   out.add(region_table(report));
   detail::add_spectral_radius(report, out);
   detail::add_endpoint_growth(report, s.endpoint_power, out);

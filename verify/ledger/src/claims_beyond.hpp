@@ -12,5 +12,6 @@ namespace simpson::verify::detail {
 
 void add_beyond_checks(check_registry& checks);
 void add_beyond_ndof_checks(check_registry& checks);
+void add_beyond_fpu_checks(check_registry& checks);
 
 }  // namespace simpson::verify::detail

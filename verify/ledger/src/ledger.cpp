@@ -44,6 +44,7 @@ const check_registry& registered_checks() {
     add_shear_checks(all);
     add_beyond_checks(all);
     add_beyond_ndof_checks(all);
+    add_beyond_fpu_checks(all);
     add_family_checks(all);
     add_printed_checks_section2_4(all);
     add_printed_checks_section5(all);

@@ -1,6 +1,6 @@
 #pragma once
 // The scene sections beside the claims: the paper's experiment (table1), error against run time
-// (work_precision), stiff and extreme cases (stability), long runs (long_time), and beyond the
+// (work_precision), stiff and extreme cases (stability; fpu, the FPU chain), long runs (long_time), and beyond the
 // paper, any potential and several degrees of freedom (nonlinear), the floating-point programs'
 // round-off proved (floating). Each is
 // computed only when its scene asks for it, and returns a section_result: its tables and plots as
@@ -9,6 +9,7 @@
 
 #include <simpson/verify/family_section.hpp>
 #include <simpson/verify/floating_section.hpp>
+#include <simpson/verify/fpu_section.hpp>
 #include <simpson/verify/long_time_section.hpp>
 #include <simpson/verify/nonlinear_section.hpp>
 #include <simpson/verify/stability_section.hpp>
@@ -30,7 +31,8 @@ struct experiment_settings {
   std::optional<nonlinear_settings> nonlinear;
   std::optional<floating_settings> floating;
   std::optional<family_settings> family;
-  bool any() const { return table1 || work_precision || stability || long_time || nonlinear || floating || family; }
+  std::optional<fpu_settings> fpu;
+  bool any() const { return table1 || work_precision || stability || long_time || nonlinear || floating || family || fpu; }
 };
 
 }  // namespace simpson::verify

@@ -4,6 +4,7 @@
 
 #include <simpson/precision.hpp>
 #include <simpson/verify/result_model.hpp>
+#include <simpson/verify/stability_analysis.hpp>
 
 #include <vector>
 
@@ -20,5 +21,9 @@ struct stability_settings {
 };
 
 section_result run_stability(const stability_settings& s);
+
+/// Φ₃'s exact stability region (m = ω = 1, x = ω²h²), from the Sturm-sequence analysis of its
+/// discriminant, as the ledger's stability claims decide it.
+stability_report simpson_exact_region();
 
 }  // namespace simpson::verify

@@ -1,0 +1,41 @@
+#pragma once
+// The fpu section: a stiff problem as the field poses it, the Fermi–Pasta–Ulam–Tsingou chain of
+// Hairer, Lubich and Wanner (fpu_chain.hpp): stiff springs of frequency ω between soft cubic ones,
+// the step set by the slow motion. Simpson's scheme for a general potential (implicit, the Lobatto
+// IIIA–IIIB pair's step), Störmer–Verlet, the implicit midpoint rule and Gauss–Legendre 2, at
+// several ωh across Φ₃'s bands, over long times: the energy error, the oscillatory energy I (an
+// adiabatic invariant) and the exchange between its parts I₁, I₂, I₃.
+
+#include <simpson/verify/result_model.hpp>
+
+#include <string>
+#include <vector>
+
+namespace simpson::verify {
+
+struct fpu_settings {
+  int m = 3;           // stiff springs (2m masses)
+  double omega = 50;   // their frequency
+  std::vector<double> omega_h{0.5, 1.5, 3.0, 4.0};  // the runs followed over time: ωh of the stiff springs
+  double end_time = 10000;                          // of those runs: 10⁴ slow periods of order 1
+  double scan_from = 0.1, scan_to = 5, scan_step = 0.1;  // the ωh scanned for the largest errors
+  double scan_end_time = 100;
+  int samples = 1000;  // points of each curve over time
+  double exchange_time = 200;         // the exchange of I₁, I₂, I₃ is drawn over t up to this
+  double reference_omega_h = 0.1;     // the exchange's reference run (Gauss–Legendre 2)
+};
+
+section_result run_fpu(const fpu_settings& s);
+
+/// One method's run on the chain (s.m, s.omega), summarised as the section's runs table shows it.
+struct fpu_run_summary {
+  double max_energy_error = 0, max_invariant_error = 0, invariant_drift = 0;
+  double max_discrete_invariant_error = 0, discrete_invariant_drift = 0;  // I_d, with Φ₃'s weight at x = (ωh)²
+  long long steps = 0;
+  std::string status;  // "ok", "unstable (step j)" or "failed: ..."
+};
+
+/// `method`: simpson, stormer-verlet, implicit-midpoint or gauss-legendre-2 (std::invalid_argument otherwise).
+fpu_run_summary run_fpu_chain(const fpu_settings& s, const std::string& method, double omega_h, double end_time);
+
+}  // namespace simpson::verify
