@@ -168,26 +168,6 @@ chain_run run_chain(fpu_method m, const system_type& s, const fpu_settings& sett
   return out;
 }
 
-/// The x tics of an ωh axis: the integers, and Φ₃'s band ends from the exact region.
-std::vector<std::pair<double, std::string>> band_tics(const stability_report& region, double last) {
-  std::vector<std::pair<double, std::string>> tics;
-  std::vector<double> ends;
-  for (const positive_root& root : region.roots) {
-    const double at = std::sqrt(root.low.convert_to<double>());
-    if (at > last) continue;
-    ends.push_back(at);
-    std::string label = omega_h_text(root);
-    if (const auto open = label.find(" sqrt("); open != std::string::npos && label.back() == ')') {
-      label = label.substr(0, open) + "√" + label.substr(open + 6, label.size() - open - 7);
-    }
-    tics.emplace_back(at, label);
-  }
-  for (int k = 0; k <= static_cast<int>(last); ++k) {
-    if (std::none_of(ends.begin(), ends.end(), [&](double at) { return std::abs(at - k) < 0.6; })) tics.emplace_back(k, std::to_string(k));
-  }
-  return tics;
-}
-
 /// The linear stability of a method on the stiff springs alone (the soft ones are slow): Φ₃'s exact
 /// region for Simpson, ωh < 2 for Störmer–Verlet, every ωh for the A-stable two. Nothing within 0.05
 /// of an endpoint is predicted (the soft springs shift the stiff frequency a little).
@@ -374,7 +354,7 @@ section_result run_fpu(const fpu_settings& s) {
   scan.csv_file = "fpu_scan.csv";
   panel scan_energy{"max |H − H(0)|/H(0)", {"ωh of the stiff springs"}, {"relative error", true}};
   panel scan_invariant{"max |I − I(0)|/I(0)", {"ωh of the stiff springs"}, {"relative error", true}};
-  scan_energy.x.tics = scan_invariant.x.tics = band_tics(region, s.scan_to);
+  scan_energy.x.tics = scan_invariant.x.tics = detail::band_end_tics(region, s.scan_to);
   const int points = static_cast<int>(std::floor((s.scan_to - s.scan_from) / s.scan_step + 1e-9)) + 1;
   for (const fpu_method m : fpu_methods) {
     const scheme_style style = style_for(m);

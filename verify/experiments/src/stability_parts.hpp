@@ -5,6 +5,7 @@
 #include <simpson/verify/stability_analysis.hpp>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace simpson::verify::detail {
@@ -16,6 +17,10 @@ std::string growth_class(double exponent);
 /// At and around each exact endpoint of `report`: Φ₃ⁿ y₀ in closed form for n up to `last_power`,
 /// the growth fitted, a table, and one expectation per row (the fitted class is the predicted one).
 void add_endpoint_growth(const stability_report& report, long long last_power, section_result& out);
+
+/// The x tics of an ωh axis up to `last`: Φ₃'s band ends from `region` (2√2, 2√3, 2√6) and the
+/// integers not crowding them.
+std::vector<std::pair<double, std::string>> band_end_tics(const stability_report& region, double last);
 
 /// The plot of each scheme's spectral radius against ωh, Φ₃'s band ends (from `region`) on its axis.
 void add_spectral_radius(const stability_report& region, section_result& out);

@@ -24,11 +24,8 @@ double spectral_radius(const one_step_matrix<double>& phi) {
 
 }  // namespace
 
-void add_spectral_radius(const stability_report& region, section_result& out) {
-  constexpr double last = 7;
-  constexpr int points = 1400;
-  panel p{"spectral radius of each scheme's one-step matrix", {"ωh (dimensionless)"}, {"ρ(Φ) = max |λ|", true}, {}, "top left"};  // the corner the curves leave empty
-  // The x tics: the integers, and Φ₃'s band ends where they fall (2√2, 2√3, 2√6), read from the exact region.
+std::vector<std::pair<double, std::string>> band_end_tics(const stability_report& region, double last) {
+  std::vector<std::pair<double, std::string>> tics;
   std::vector<double> ends;
   for (const positive_root& root : region.roots) {
     const double at = std::sqrt(root.low.convert_to<double>());
@@ -38,11 +35,20 @@ void add_spectral_radius(const stability_report& region, section_result& out) {
     if (const auto open = label.find(" sqrt("); open != std::string::npos && label.back() == ')') {
       label = label.substr(0, open) + "√" + label.substr(open + 6, label.size() - open - 7);
     }
-    p.x.tics.emplace_back(at, label);
+    tics.emplace_back(at, label);
   }
   for (int k = 0; k <= static_cast<int>(last); ++k) {
-    if (std::none_of(ends.begin(), ends.end(), [&](double at) { return std::abs(at - k) < 0.6; })) p.x.tics.emplace_back(k, std::to_string(k));
+    if (std::none_of(ends.begin(), ends.end(), [&](double at) { return std::abs(at - k) < 0.6; })) tics.emplace_back(k, std::to_string(k));
   }
+  return tics;
+}
+
+void add_spectral_radius(const stability_report& region, section_result& out) {
+  constexpr double last = 7;
+  constexpr int points = 1400;
+  panel p{"spectral radius of each scheme's one-step matrix", {"ωh (dimensionless)"}, {"ρ(Φ) = max |λ|", true}, {}, "top left"};  // the corner the curves leave empty
+  // The x tics: the integers, and Φ₃'s band ends where they fall (2√2, 2√3, 2√6), read from the exact region.
+  p.x.tics = band_end_tics(region, last);
   std::vector<std::string> leaves;  // where each scheme's ρ first exceeds 1 on the grid
   for (const scheme_traits& s : scheme_list) {
     // Φ₃ = Lobatto IIIA–IIIB and Φ₃ by elimination: the same matrix as simpson (the peer-schemes claim).
