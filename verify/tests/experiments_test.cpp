@@ -326,11 +326,11 @@ TEST(Experiments, AboveDoubleTheWorkPrecisionErrorsAreEnclosuresOfTheSchemesErro
   w.timing.max_runs = 0;
   const section_result out = run_work_precision(w);
   const table& rows = get(out, "rows");
-  ASSERT_EQ(rows.rows.size(), 8u);
+  ASSERT_EQ(rows.rows.size(), 16u);  // two schemes, two forms, two precisions, two N
   const scoped_mpfr_digits digits(80);
   std::map<std::string, double> in_double;
   for (std::size_t r = 0; r < rows.rows.size(); ++r) {
-    const std::string key = cell(rows, r, "scheme").value() + " " + cell(rows, r, "N_per_period").value();
+    const std::string key = cell(rows, r, "scheme").value() + " " + cell(rows, r, "form").value() + " " + cell(rows, r, "N_per_period").value();
     const figure& error = cell(rows, r, "error_q_max");
     if (cell(rows, r, "precision").value() == "double") {
       in_double[key] = number(error);
@@ -399,8 +399,8 @@ TEST(Experiments, WorkPrecisionRecordsEveryRunWithItsStatus) {
   const section_result out = run_work_precision(w);
   const table& rows = get(out, "rows");
   const table& times = get(out, "timing_rows");
-  ASSERT_EQ(rows.rows.size(), 6u);
-  ASSERT_EQ(times.rows.size(), 6u);
+  ASSERT_EQ(rows.rows.size(), 12u);  // three schemes, two forms (step, matrix), two N
+  ASSERT_EQ(times.rows.size(), 12u);
   EXPECT_TRUE(times.timing);
   EXPECT_FALSE(rows.timing);
   for (std::size_t r = 0; r < rows.rows.size(); ++r) {
@@ -420,15 +420,29 @@ TEST(Experiments, WorkPrecisionRecordsEveryRunWithItsStatus) {
   const double ratio = number(cell(rows, 0, "error_q_max")) / number(cell(rows, 1, "error_q_max"));
   EXPECT_GT(ratio, 200);
   EXPECT_LT(ratio, 300);
+  // The two forms are the same scheme: Simpson's nonlinear step (Newton on the internal node) and Φ₃
+  // agree to round-off, and so do RK4's stages and its matrix. The largest energy change over the run
+  // is at least the one at its end (a whole period, back near y₀).
+  for (std::size_t r = 0; r + 2 < rows.rows.size(); r += 4) {
+    ASSERT_EQ(cell(rows, r, "form").value(), "step");
+    ASSERT_EQ(cell(rows, r + 2, "form").value(), "matrix");
+    for (std::size_t k : {r, r + 1}) {
+      const double step = number(cell(rows, k, "error_q_max")), matrix = number(cell(rows, k + 2, "error_q_max"));
+      EXPECT_NEAR(step, matrix, 1e-12 + 1e-6 * matrix) << cell(rows, k, "scheme").value();
+      EXPECT_GE(number(cell(rows, k, "error_H_max_relative")), number(cell(rows, k, "error_H_end_relative")));
+    }
+  }
   // At ωh beyond the stable region the run is recorded as unstable, with its step, not dropped.
   w.schemes = {scheme_id::simpson};
   w.meshes = {2};  // ωh = π, inside the unstable band (2√2, 2√3)
   w.periods = 100;
   const section_result unstable = run_work_precision(w);
   const table& u = get(unstable, "rows");
-  ASSERT_EQ(u.rows.size(), 1u);
-  EXPECT_TRUE(is_unstable(cell(u, 0, "status"))) << cell(u, 0, "status").value();
-  EXPECT_EQ(cell(u, 0, "error_q_max").what(), figure::kind::empty);
+  ASSERT_EQ(u.rows.size(), 2u);  // the step and the matrix form
+  for (std::size_t r = 0; r < 2; ++r) {
+    EXPECT_TRUE(is_unstable(cell(u, r, "status"))) << cell(u, r, "status").value();
+    EXPECT_EQ(cell(u, r, "error_q_max").what(), figure::kind::empty);
+  }
 }
 
 /// A figure's digits (every digit computed, figure.hpp) read into mpfr at the current precision.

@@ -1,11 +1,11 @@
-# Maximum error of q and p/(mω) against run time (log-log), one panel per precision
+# Maximum error of q and p/(mω) against run time (log-log). As its own 2 × 2 matrix every scheme costs the same per step: that panel compares the methods. By its general step each runs what it runs for any force: that panel compares the algorithms (Simpson's nonlinear step, with its Newton solve, against the peers' stage equations). The last panel shows the step form in the highest precision of the run
 # Redraw with: gnuplot work_precision_time.gp (in this directory)
-set terminal svg size 1760,800 dynamic enhanced font 'Sans,15' background rgb 'white'
+set terminal svg size 1380,880 dynamic enhanced font 'Sans,13' background rgb 'white'
 set output 'work_precision_time.svg'
 set multiplot
 set origin 0.0000,0.5000
-set size 0.2614,0.5000
-set title 'double'
+set size 0.3623,0.5000
+set title 'double, each scheme by its general step'
 set xlabel 'run time (s, minimum of repeats)'
 set ylabel 'max error of q and p/(mω)'
 set logscale x
@@ -13,10 +13,10 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.11434e-08:0.000962507]
+set xrange [1.27041e-07:0.000890822]
 set xtics autofreq
 set mxtics default
-set yrange [4.29802e-15:0.337578]
+set yrange [2.94139e-15:0.34373]
 set ytics 1e3
 set mytics 1
 plot 'work_precision_time.dat' index 0 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
@@ -27,9 +27,9 @@ plot 'work_precision_time.dat' index 0 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb
      'work_precision_time.dat' index 5 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
      'work_precision_time.dat' index 6 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
      'work_precision_time.dat' index 7 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
-set origin 0.2614,0.5000
-set size 0.2614,0.5000
-set title 'long double'
+set origin 0.3623,0.5000
+set size 0.3623,0.5000
+set title 'double, each scheme as its own 2 × 2 matrix'
 set xlabel 'run time (s, minimum of repeats)'
 set ylabel 'max error of q and p/(mω)'
 set logscale x
@@ -37,11 +37,11 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.04441e-07:0.00471655]
+set xrange [6.88938e-08:2.46353e-05]
 set xtics autofreq
 set mxtics default
-set yrange [3.30045e-15:0.34185]
-set ytics 1e3
+set yrange [3.26923e-14:0.306488]
+set ytics 1e2
 set mytics 1
 plot 'work_precision_time.dat' index 8 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
      'work_precision_time.dat' index 9 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
@@ -51,9 +51,9 @@ plot 'work_precision_time.dat' index 8 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb
      'work_precision_time.dat' index 13 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
      'work_precision_time.dat' index 14 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
      'work_precision_time.dat' index 15 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
-set origin 0.5227,0.5000
-set size 0.2614,0.5000
-set title 'float128'
+set origin 0.0000,0.0000
+set size 0.3623,0.5000
+set title 'mpfr:100, each scheme by its general step'
 set xlabel 'run time (s, minimum of repeats)'
 set ylabel 'max error of q and p/(mω)'
 set logscale x
@@ -61,7 +61,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.14177e-06:0.0380538]
+set xrange [7.5242e-06:0.0783229]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -75,56 +75,8 @@ plot 'work_precision_time.dat' index 16 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rg
      'work_precision_time.dat' index 21 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
      'work_precision_time.dat' index 22 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
      'work_precision_time.dat' index 23 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
-set origin 0.0000,0.0000
-set size 0.2614,0.5000
-set title 'mpfr:50'
-set xlabel 'run time (s, minimum of repeats)'
-set ylabel 'max error of q and p/(mω)'
-set logscale x
-set format x '10^{%L}'
-set logscale y
-set format y '10^{%L}'
-unset key
-set xrange [2.38369e-06:0.0665146]
-set xtics autofreq
-set mxtics default
-set yrange [3.33375e-15:0.341687]
-set ytics 1e3
-set mytics 1
-plot 'work_precision_time.dat' index 24 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
-     'work_precision_time.dat' index 25 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
-     'work_precision_time.dat' index 26 u 1:2 w lp pt 9 ps 0.8 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
-     'work_precision_time.dat' index 27 u 1:2 w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
-     'work_precision_time.dat' index 28 u 1:2 w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
-     'work_precision_time.dat' index 29 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
-     'work_precision_time.dat' index 30 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
-     'work_precision_time.dat' index 31 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
-set origin 0.2614,0.0000
-set size 0.2614,0.5000
-set title 'mpfr:100'
-set xlabel 'run time (s, minimum of repeats)'
-set ylabel 'max error of q and p/(mω)'
-set logscale x
-set format x '10^{%L}'
-set logscale y
-set format y '10^{%L}'
-unset key
-set xrange [3.18077e-06:0.0819522]
-set xtics autofreq
-set mxtics default
-set yrange [3.33375e-15:0.341687]
-set ytics 1e3
-set mytics 1
-plot 'work_precision_time.dat' index 32 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
-     'work_precision_time.dat' index 33 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
-     'work_precision_time.dat' index 34 u 1:2 w lp pt 9 ps 0.8 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
-     'work_precision_time.dat' index 35 u 1:2 w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
-     'work_precision_time.dat' index 36 u 1:2 w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
-     'work_precision_time.dat' index 37 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
-     'work_precision_time.dat' index 38 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
-     'work_precision_time.dat' index 39 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
-set origin 0.7841,0
-set size 0.2159,1
+set origin 0.7246,0
+set size 0.2754,1
 unset title
 unset xlabel
 unset ylabel
@@ -133,7 +85,7 @@ unset border
 unset tics
 set xrange [0:1]
 set yrange [0:1]
-set key at screen 0.7941,0.97 left top Left reverse samplen 3 spacing 1.3
+set key at screen 0.7346,0.97 left top Left reverse samplen 3 spacing 1.3
 plot NaN w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
      NaN w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
      NaN w lp pt 9 ps 0.8 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
@@ -146,12 +98,12 @@ unset multiplot
 
 unset output
 reset
-set terminal pngcairo size 1760,800 enhanced font 'Sans,15' background rgb 'white'
+set terminal pngcairo size 1380,880 enhanced font 'Sans,13' background rgb 'white'
 set output 'work_precision_time.png'
 set multiplot
 set origin 0.0000,0.5000
-set size 0.2614,0.5000
-set title 'double'
+set size 0.3623,0.5000
+set title 'double, each scheme by its general step'
 set xlabel 'run time (s, minimum of repeats)'
 set ylabel 'max error of q and p/(mω)'
 set logscale x
@@ -159,10 +111,10 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.11434e-08:0.000962507]
+set xrange [1.27041e-07:0.000890822]
 set xtics autofreq
 set mxtics default
-set yrange [4.29802e-15:0.337578]
+set yrange [2.94139e-15:0.34373]
 set ytics 1e3
 set mytics 1
 plot 'work_precision_time.dat' index 0 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
@@ -173,9 +125,9 @@ plot 'work_precision_time.dat' index 0 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb
      'work_precision_time.dat' index 5 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
      'work_precision_time.dat' index 6 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
      'work_precision_time.dat' index 7 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
-set origin 0.2614,0.5000
-set size 0.2614,0.5000
-set title 'long double'
+set origin 0.3623,0.5000
+set size 0.3623,0.5000
+set title 'double, each scheme as its own 2 × 2 matrix'
 set xlabel 'run time (s, minimum of repeats)'
 set ylabel 'max error of q and p/(mω)'
 set logscale x
@@ -183,11 +135,11 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.04441e-07:0.00471655]
+set xrange [6.88938e-08:2.46353e-05]
 set xtics autofreq
 set mxtics default
-set yrange [3.30045e-15:0.34185]
-set ytics 1e3
+set yrange [3.26923e-14:0.306488]
+set ytics 1e2
 set mytics 1
 plot 'work_precision_time.dat' index 8 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
      'work_precision_time.dat' index 9 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
@@ -197,9 +149,9 @@ plot 'work_precision_time.dat' index 8 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb
      'work_precision_time.dat' index 13 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
      'work_precision_time.dat' index 14 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
      'work_precision_time.dat' index 15 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
-set origin 0.5227,0.5000
-set size 0.2614,0.5000
-set title 'float128'
+set origin 0.0000,0.0000
+set size 0.3623,0.5000
+set title 'mpfr:100, each scheme by its general step'
 set xlabel 'run time (s, minimum of repeats)'
 set ylabel 'max error of q and p/(mω)'
 set logscale x
@@ -207,7 +159,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.14177e-06:0.0380538]
+set xrange [7.5242e-06:0.0783229]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -221,56 +173,8 @@ plot 'work_precision_time.dat' index 16 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rg
      'work_precision_time.dat' index 21 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
      'work_precision_time.dat' index 22 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
      'work_precision_time.dat' index 23 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
-set origin 0.0000,0.0000
-set size 0.2614,0.5000
-set title 'mpfr:50'
-set xlabel 'run time (s, minimum of repeats)'
-set ylabel 'max error of q and p/(mω)'
-set logscale x
-set format x '10^{%L}'
-set logscale y
-set format y '10^{%L}'
-unset key
-set xrange [2.38369e-06:0.0665146]
-set xtics autofreq
-set mxtics default
-set yrange [3.33375e-15:0.341687]
-set ytics 1e3
-set mytics 1
-plot 'work_precision_time.dat' index 24 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
-     'work_precision_time.dat' index 25 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
-     'work_precision_time.dat' index 26 u 1:2 w lp pt 9 ps 0.8 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
-     'work_precision_time.dat' index 27 u 1:2 w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
-     'work_precision_time.dat' index 28 u 1:2 w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
-     'work_precision_time.dat' index 29 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
-     'work_precision_time.dat' index 30 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
-     'work_precision_time.dat' index 31 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
-set origin 0.2614,0.0000
-set size 0.2614,0.5000
-set title 'mpfr:100'
-set xlabel 'run time (s, minimum of repeats)'
-set ylabel 'max error of q and p/(mω)'
-set logscale x
-set format x '10^{%L}'
-set logscale y
-set format y '10^{%L}'
-unset key
-set xrange [3.18077e-06:0.0819522]
-set xtics autofreq
-set mxtics default
-set yrange [3.33375e-15:0.341687]
-set ytics 1e3
-set mytics 1
-plot 'work_precision_time.dat' index 32 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
-     'work_precision_time.dat' index 33 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
-     'work_precision_time.dat' index 34 u 1:2 w lp pt 9 ps 0.8 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
-     'work_precision_time.dat' index 35 u 1:2 w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
-     'work_precision_time.dat' index 36 u 1:2 w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
-     'work_precision_time.dat' index 37 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
-     'work_precision_time.dat' index 38 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
-     'work_precision_time.dat' index 39 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
-set origin 0.7841,0
-set size 0.2159,1
+set origin 0.7246,0
+set size 0.2754,1
 unset title
 unset xlabel
 unset ylabel
@@ -279,7 +183,7 @@ unset border
 unset tics
 set xrange [0:1]
 set yrange [0:1]
-set key at screen 0.7941,0.97 left top Left reverse samplen 3 spacing 1.3
+set key at screen 0.7346,0.97 left top Left reverse samplen 3 spacing 1.3
 plot NaN w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
      NaN w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
      NaN w lp pt 9 ps 0.8 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \

@@ -174,7 +174,7 @@ experiment_settings parse_experiments(const nlohmann::json& doc, const std::stri
   }
   if (doc.contains("work_precision")) {
     const section_reader r(origin, "work_precision", doc["work_precision"],
-                           {"schemes", "precisions", "N", "periods", "max_runs", "max_seconds", "benchmark"});
+                           {"schemes", "precisions", "N", "periods", "max_runs", "max_seconds", "benchmark", "forms"});
     work_precision_settings w;
     if (r.has("schemes")) w.schemes = r.schemes("schemes");
     if (!r.has("precisions")) fail(origin, "'work_precision.precisions' is missing");
@@ -190,6 +190,7 @@ experiment_settings parse_experiments(const nlohmann::json& doc, const std::stri
     if (r.has("max_runs")) w.timing.max_runs = static_cast<unsigned>(r.integer("max_runs", 1, 1000));
     if (r.has("max_seconds")) w.timing.max_seconds = r.number("max_seconds", 0, 3600);
     if (r.has("benchmark")) w.benchmark = r.flag("benchmark");
+    if (r.has("forms")) w.forms = r.names("forms", {"step", "matrix"});
     e.work_precision = w;
   }
   if (doc.contains("stability")) {

@@ -1,5 +1,7 @@
 // The work_precision section: error against run time for the Simpson scheme and its peers, in
-// several precisions, each scheme advancing by its own step algorithm.
+// several precisions, each scheme run two ways: by its general step (what it runs for any force) and
+// as its own exact 2 × 2 matrix (what Φ₃ is in the paper), so that the plot compares methods, and
+// separately implementations.
 
 #include <simpson/verify/work_precision_section.hpp>
 #include <simpson/verify/interruption.hpp>
@@ -13,9 +15,12 @@
 #include <simpson/energy.hpp>
 #include <simpson/exact_solution.hpp>
 #include <simpson/iterate.hpp>
+#include <simpson/nonlinear_simpson_step.hpp>
+#include <simpson/potential.hpp>
 
 #include <boost/math/constants/constants.hpp>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <map>
@@ -69,7 +74,7 @@ void add_error_figures(measured_run& out, bool simpson_family, const Scalar& err
 }
 
 template <class Real>
-measured_run measure(scheme_id scheme, const precision& prec, long long N, long long periods,
+measured_run measure(scheme_id scheme, const std::string& form, const precision& prec, long long N, long long periods,
                      const timing_policy& timing, bool benchmark, const std::vector<phase_point<Real>>& exact,
                      const enclosed_solution& enclosed_exact) {
   using std::abs;
@@ -78,9 +83,21 @@ measured_run measure(scheme_id scheme, const precision& prec, long long N, long 
   const oscillator_parameters<Real> par{Real(1), omega, step_size(Real(periods), steps)};
   const phase_point<Real> y0{Real(par.m() * omega), Real(0)};
   const stepper<Real> runner(scheme, par);
+  // The form: the scheme's own 2 × 2 matrix, or its general step. Simpson's general step is its
+  // nonlinear step (Newton on the internal node to 16 eps of the terms) with V = mω²q²/2; the
+  // others' is stepper::step (stage equations, kicks and drifts, Section 6's elimination).
+  const bool as_matrix = form == "matrix";
+  const one_step_matrix<Real> own = runner.matrix();
+  const quartic_potential<Real> harmonic{par.m(), omega, Real(0)};
+  const auto advance = [&](const phase_point<Real>& z) {
+    if (as_matrix) return own * z;
+    if (scheme == scheme_id::simpson) return simpson_nonlinear_step(par.m(), par.h(), harmonic, z).state;
+    return runner.step(z);
+  };
 
   // The error run (not timed): maxima over every t_j against the exact solution.
-  Real error_q(0), error_p(0);
+  Real error_q(0), error_p(0), energy_change(0), discrete_energy_change(0);  // the last two: maxima over the run
+  const Real E0 = energy(par, y0), Ed0 = discrete_energy(par, y0);
   phase_point<Real> y = y0;
   figure status = figure::text("ok");
   const Real amplitude = abs(y0.p) / (par.m() * omega);
@@ -92,7 +109,9 @@ measured_run measure(scheme_id scheme, const precision& prec, long long N, long 
   try {
     for (long long j = 1; j <= steps; ++j) {
       if ((j & 1023) == 0) throw_if_interrupted();
-      y = runner.step(y);
+      y = advance(y);
+      energy_change = std::max(energy_change, Real(abs(Real(energy(par, y) - E0)) / E0));
+      discrete_energy_change = std::max(discrete_energy_change, Real(abs(Real(discrete_energy(par, y) - Ed0)) / abs(Ed0)));
       const Real eq = abs(Real(y.q - exact[static_cast<std::size_t>(j)].q));
       const Real ep = abs(Real(y.p - exact[static_cast<std::size_t>(j)].p)) / (par.m() * omega);
       if (!(eq == eq) || !(ep == ep)) {
@@ -118,17 +137,24 @@ measured_run measure(scheme_id scheme, const precision& prec, long long N, long 
   }
   // At the round-off floor: within 100 N eps of zero (N steps, each rounding a few times).
   const Real floor_level = 100 * Real(steps) * eps<Real>();
-  const table_row key{figure::text(std::string(traits_of(scheme).name)), figure::text(prec.name()), figure::integer(N)};
+  const table_row key{figure::text(std::string(traits_of(scheme).name)), figure::text(form), figure::text(prec.name()), figure::integer(N)};
   measured_run out{key, {}, status, status};
   out.row.push_back(figure::integer(steps));
   out.row.push_back(status);
   if (status.is_fault()) {
-    for (int k = 0; k < 5; ++k) out.row.push_back(figure{});
-    if (timing.max_runs > 0) out.timing_row = {key[0], key[1], key[2], figure{}, figure{}, figure{}};
+    for (int k = 0; k < 7; ++k) out.row.push_back(figure{});
+    if (timing.max_runs > 0) out.timing_row = {key[0], key[1], key[2], key[3], figure{}, figure{}, figure{}};
     if (timing.max_runs > 0 && benchmark) out.timing_row.push_back(figure{});
     return out;
   }
   const bool simpson_family = scheme == scheme_id::simpson || scheme == scheme_id::simpson_elimination;
+  // The energies' largest changes over the run, computed in Real (the end values below are enclosed
+  // above double): at the end of whole periods the state is back near y₀, and the end value
+  // understates the oscillation.
+  const auto with_maxima = [&] {
+    out.row.push_back(figure::of(energy_change));
+    out.row.push_back(simpson_family ? figure::of(discrete_energy_change) : figure{});
+  };
   if (enclosed) {
     if constexpr (detail::enclosed_above_double_v<Real>) {
       // The energies at the run's own parameters (m, ω and h as rounded in Real, exact values).
@@ -137,12 +163,14 @@ measured_run measure(scheme_id scheme, const precision& prec, long long N, long 
       add_error_figures(out, simpson_family, enclosed_q, enclosed_p, at, {detail::exact_interval(y0.p), detail::exact_interval(y0.q)},
                         {detail::exact_interval(y.p), detail::exact_interval(y.q)}, detail::enclosed_figure);
       const interval error_both = enclosed_max(enclosed_q, enclosed_p);
+      with_maxima();
       out.row.push_back(figure::flag(upper(error_both) <= lower(detail::exact_interval(floor_level))));
       out.error = detail::enclosed_figure(error_both);
     }
   } else {
     add_error_figures(out, simpson_family, error_q, error_p, par, y0, y, [](const Real& v) { return figure::of(v); });
     const Real error = std::max(error_q, error_p);
+    with_maxima();
     out.row.push_back(figure::flag(error <= floor_level));
     out.error = figure::of(error);
   }
@@ -151,10 +179,10 @@ measured_run measure(scheme_id scheme, const precision& prec, long long N, long 
   // Timing: one warm-up run, then runs until max_runs or max_seconds; each run is `steps` steps.
   const detail::run_times times = detail::time_runs(timing, [&] {
     phase_point<Real> z = y0;
-    for (long long j = 0; j < steps; ++j) z = runner.step(z);
+    for (long long j = 0; j < steps; ++j) z = advance(z);
     return static_cast<double>(z.q);
   });
-  out.timing_row = {key[0], key[1], key[2], figure::integer(times.runs), figure::of(times.minimum), figure::of(times.median)};
+  out.timing_row = {key[0], key[1], key[2], key[3], figure::integer(times.runs), figure::of(times.minimum), figure::of(times.median)};
   if (benchmark) out.timing_row.push_back(figure::of(static_cast<double>(steps) / times.minimum));
   out.seconds = figure::of(times.minimum);
   return out;
@@ -171,22 +199,24 @@ section_result run_work_precision(const work_precision_settings& s) {
   out.timing_conventions = {{"warm_up_runs", 1}, {"max_runs", s.timing.max_runs}, {"max_seconds", s.timing.max_seconds}};
   table rows{"rows", "",
              fmt::format(
-                 "m = 1, ω = 2π, {} period(s), y₀ = (mω, 0); N steps per period. Each scheme advances by its own step "
-                 "algorithm: Simpson by its explicit map Φ₃ (the paper's form for the oscillator: one 2 × 2 product per "
-                 "step), simpson-elimination by Section 6's elimination of the internal node at every step, Newmark as the "
-                 "implicit midpoint rule, Gauss–Legendre and Lobatto IIIA–IIIB by solving their (linear) stage equations at "
-                 "every step, Störmer–Verlet, Yoshida and RK4 explicitly. Errors: maxima over all t_j of |q_j − q(t_j)| and "
+                 "m = 1, ω = 2π, {} period(s), y₀ = (mω, 0); N steps per period. Each scheme runs in the forms {}: "
+                 "`step` is its general algorithm, what it runs for any force (Simpson its nonlinear step, Newton's method on "
+                 "the internal node to 16 eps of the terms, with V = mω²q²/2; simpson-elimination Section 6's elimination of "
+                 "the internal node at every step; Newmark the implicit midpoint rule; Gauss–Legendre and Lobatto IIIA–IIIB "
+                 "their stage equations, solved at every step; Störmer–Verlet, Yoshida and RK4 their explicit stages); "
+                 "`matrix` is its own exact 2 × 2 one-step matrix, one product a step, the form the paper gives Φ₃ in. In "
+                 "the matrix form every scheme costs the same per step, so run time against error compares the methods; in "
+                 "the step form it compares the general algorithms. Errors: maxima over all t_j of |q_j − q(t_j)| and "
                  "|p_j − p(t_j)|/(mω), computed in the run's precision; the relative error of H (and of H_d for Simpson) at "
-                 "the end. Above double the error and energy figures are enclosures (MPFI): each iterate, an exact binary "
+                 "the end, and its largest over the run (at the end of whole periods the state is back near y₀). Above double the error and energy figures are enclosures (MPFI): each iterate, an exact binary "
                  "value, against the exact solution at t_j = j/N with 2π enclosed, and the energies at the run's own "
                  "rounded m, ω, h; only guaranteed digits are shown, with the radius where fewer than three are. {} "
                  "A run whose state is not finite, grows past 10⁶ times the amplitude (unstable, with the step), or throws "
-                 "is recorded with its status. At the round-off floor: error ≤ 100 N eps. On this linear problem every "
-                 "scheme could be reduced to a 2 × 2 matrix and cost the same per step; the peers run their general "
-                 "algorithms, as for any force.",
-                 s.periods,
+                 "is recorded with its status. At the round-off floor: error ≤ 100 N eps.",
+                 s.periods, fmt::format("{}", fmt::join(s.forms, " and ")),
                  timed ? "Run times, and how they are measured, are in timing.md." : "Not timed (--no-timing)."),
              {{"scheme", "scheme"},
+              {"form", "form"},
               {"precision", "precision"},
               {"N_per_period", "N"},
               {"steps", "steps"},
@@ -195,22 +225,35 @@ section_result run_work_precision(const work_precision_settings& s) {
               {"error_p_max_over_m_omega", "error p/(mω)"},
               {"error_H_end_relative", "H rel. (end)"},
               {"error_Hd_end_relative", "H_d rel. (end)"},
+              {"error_H_max_relative", "H rel. (max)"},
+              {"error_Hd_max_relative", "H_d rel. (max)"},
               {"at_round_off_floor", "at floor"}}};
   rows.csv_file = "work_precision.csv";
   table times{"timing_rows", "Run time of each configuration",
               fmt::format("One warm-up run, then runs until {} runs or {} s (steady_clock); each run is the N × periods steps "
                           "of the error run, without the error computation.",
                           s.timing.max_runs, simpson::to_string(s.timing.max_seconds, 3)),
-              {{"scheme", "scheme"}, {"precision", "precision"}, {"N_per_period", "N"}, {"runs", "runs"},
+              {{"scheme", "scheme"}, {"form", "form"}, {"precision", "precision"}, {"N_per_period", "N"}, {"runs", "runs"},
                {"min_seconds", "min time", "s"}, {"median_seconds", "median time", "s"}}};
   if (s.benchmark) times.columns.push_back({"steps_per_second", "steps/s"});
   times.csv_file = "work_precision_time.csv";
   times.timing = true;
+  // The panels drawn: the first precision large, in every form against run time; the last precision
+  // (the highest, where round-off is far below the schemes' errors) in the step form. Every other
+  // precision's figures are in the tables and work_precision.csv (above double they match double's
+  // to its round-off, and a panel each would show the same curves again).
+  const std::string shown_form = s.forms.front() == "matrix" && s.forms.size() > 1 ? s.forms[1] : s.forms.front();
   std::vector<panel> by_time, by_n;
-  for (const precision& prec : s.precisions) {
+  for (std::size_t pk = 0; pk < s.precisions.size(); ++pk) {
+    const precision& prec = s.precisions[pk];
+    const bool first = pk == 0, last = pk + 1 == s.precisions.size();
     const std::string error_label = "max error of q and p/(mω)";  // error_max: the larger of the two
-    panel time_panel{prec.name(), {"run time (s, minimum of repeats)", true}, {error_label, true}, {}, "bottom left"};
-    panel n_panel{prec.name(), {"N (steps per period)", true}, {error_label, true}, {}, "bottom left"};
+    std::map<std::string, panel> time_panels;
+    for (const std::string& form : s.forms) {
+      time_panels.emplace(form, panel{fmt::format("{}, each scheme {}", prec.name(), form == "matrix" ? "as its own 2 × 2 matrix" : "by its general step"),
+                                      {"run time (s, minimum of repeats)", true}, {error_label, true}, {}, "bottom left"});
+    }
+    panel n_panel{fmt::format("{}, {} form", prec.name(), shown_form), {"N (steps per period)", true}, {error_label, true}, {}, "bottom left"};
     visit_floating(prec, [&](auto precision_tag) {
       using Real = typename decltype(precision_tag)::type;
       // The exact solution at every t_j of each N, shared by the schemes; above double, enclosed too
@@ -232,33 +275,38 @@ section_result run_work_precision(const work_precision_settings& s) {
           exact.push_back(exact_solution(par, y0, Real(par.h() * Real(j))));
         }
       }
-      for (std::size_t k = 0; k < s.schemes.size(); ++k) {
-        const scheme_id scheme = s.schemes[k];
+      // The first error of each order's schemes at the coarsest N, for the guides.
+      std::map<int, double> lowest_first_error;
+      for (const scheme_id scheme : s.schemes) {
         const scheme_style style = style_of(scheme);
-        series by_seconds{std::string(traits_of(scheme).name), style.line, style.color, style.point, style.dash};
-        series by_mesh = by_seconds;
-        for (const long long N : s.meshes) {
-          measured_run m = measure<Real>(scheme, prec, N, s.periods, s.timing, s.benchmark, exact_by_N[N], enclosed_by_N[N]);
-          progress_step("work_precision", fmt::format("{} {} N = {}", traits_of(scheme).name, prec.name(), N));
-          if (timed) by_seconds.add(m.seconds, m.error);
-          by_mesh.add(figure::integer(N), m.error);
-          rows.add(std::move(m.row));
-          if (timed) times.add(std::move(m.timing_row));
+        for (const std::string& form : s.forms) {
+          series by_seconds{std::string(traits_of(scheme).name), style.line, style.color, style.point, style.dash};
+          series by_mesh = by_seconds;
+          for (const long long N : s.meshes) {
+            measured_run m = measure<Real>(scheme, form, prec, N, s.periods, s.timing, s.benchmark, exact_by_N[N], enclosed_by_N[N]);
+            progress_step("work_precision", fmt::format("{} ({}) {} N = {}", traits_of(scheme).name, form, prec.name(), N));
+            if (timed) by_seconds.add(m.seconds, m.error);
+            by_mesh.add(figure::integer(N), m.error);
+            rows.add(std::move(m.row));
+            if (timed) times.add(std::move(m.timing_row));
+          }
+          time_panels.at(form).curves.push_back(by_seconds);
+          if (form != shown_form) continue;
+          if (const auto e0 = by_mesh.y.front().plottable(); e0 && *e0 > 0) {
+            const int order = traits_of(scheme).order;
+            lowest_first_error[order] = lowest_first_error.count(order) ? std::min(lowest_first_error[order], *e0) : *e0;
+          }
+          n_panel.curves.push_back(by_mesh);
         }
-        time_panel.curves.push_back(by_seconds);
-        n_panel.curves.push_back(by_mesh);
       }
-      // Guides: slopes N^-2 and N^-4, a factor 4 below the first Newmark and Simpson errors (so that
-      // they run beside the curves, not on them), and the round-off floor.
-      for (const auto& [order, anchor_scheme] : {std::pair{2, scheme_id::newmark}, std::pair{4, scheme_id::simpson}}) {
-        const auto anchor = std::find(s.schemes.begin(), s.schemes.end(), anchor_scheme);
-        if (anchor == s.schemes.end() || s.meshes.empty()) continue;
-        const series& anchored = n_panel.curves[static_cast<std::size_t>(anchor - s.schemes.begin())];
-        const auto e0 = anchored.y.front().plottable();
-        if (!e0 || !(*e0 > 0)) continue;
-        const series slope = slope_guide(fmt::format("slope N^{{-{}}}", order), order == 2 ? 8 : 9,
-                                         static_cast<double>(s.meshes.front()), *e0 / 4, s.meshes, order);
-        n_panel.curves.push_back(slope);
+      // Guides: slopes N^-2 and N^-4, a factor 4 below the lowest first error among the schemes of
+      // that order, so that each runs beside its schemes' curves and under them, never on one; and
+      // the round-off floor.
+      for (const int order : {2, 4}) {
+        const auto anchor = lowest_first_error.find(order);
+        if (anchor == lowest_first_error.end() || s.meshes.empty()) continue;
+        n_panel.curves.push_back(slope_guide(fmt::format("slope N^{{-{}}}", order), order == 2 ? 8 : 9, static_cast<double>(s.meshes.front()),
+                                             anchor->second / 4, s.meshes, order));
       }
       series floor_line{"round-off floor 100 N eps", line_style::dashed, 8, 7, 3};  // short dashes: not a slope
       floor_line.reference = true;
@@ -267,24 +315,31 @@ section_result run_work_precision(const work_precision_settings& s) {
       }
       n_panel.curves.push_back(floor_line);
     });
-    by_time.push_back(time_panel);
-    by_n.push_back(n_panel);
+    for (const std::string& form : s.forms) {
+      if (first || (last && form == shown_form)) by_time.push_back(time_panels.at(form));
+    }
+    if (first || last) by_n.push_back(n_panel);
   }
   out.add(std::move(rows));
   if (timed) out.add(std::move(times));
-  const int columns = static_cast<int>(std::min<std::size_t>(3, s.precisions.size()));
-  const int panel_rows = static_cast<int>((s.precisions.size() + static_cast<std::size_t>(columns) - 1) / static_cast<std::size_t>(columns));
   if (timed) {
-    plot_description time_plot{"work_precision_time", "Maximum error of q and p/(mω) against run time (log-log), one panel per precision",
-                               by_time, columns, 460 * columns, 400 * panel_rows};
+    plot_description time_plot{"work_precision_time",
+                               fmt::format("Maximum error of q and p/(mω) against run time (log-log). As its own 2 × 2 matrix every scheme "
+                                           "costs the same per step: that panel compares the methods. By its general step each runs "
+                                           "what it runs for any force: that panel compares the algorithms (Simpson's nonlinear step, "
+                                           "with its Newton solve, against the peers' stage equations). The {} panel{} the step form "
+                                           "in the highest precision of the run",
+                                           by_time.size() > s.forms.size() ? "last" : "", by_time.size() > s.forms.size() ? " shows" : "s show"),
+                               by_time, 2, 1000, 440 * static_cast<int>((by_time.size() + 1) / 2)};
     time_plot.timing = true;
     out.add(std::move(time_plot));
   }
   out.add(plot_description{"work_precision_n",
-                           "Maximum error of q and p/(mω) against N, one panel per precision; dashed guides: slopes N⁻² (grey) "
-                           "and N⁻⁴ (black); short dashes: the round-off floor 100 N eps",
-                           by_n,
-                           columns, 460 * columns, 400 * panel_rows});
+                           fmt::format("Maximum error of q and p/(mω) against N ({} form), the run's first and last precision; dashed "
+                                       "guides: slopes N⁻² (grey) and N⁻⁴ (black), a factor 4 below the lowest curve of their order; "
+                                       "short dashes: the round-off floor 100 N eps. The other precisions are in work_precision.csv",
+                                       shown_form),
+                           by_n, 2, 1000, 460});
   return out;
 }
 

@@ -1,11 +1,12 @@
 #pragma once
 // The work_precision section: error against run time for the Simpson scheme and its peers, in
-// several precisions, each scheme advancing by its own step algorithm.
+// several precisions, each scheme advancing by its general step and by its own 2 × 2 matrix.
 
 #include <simpson/precision.hpp>
 #include <simpson/scheme.hpp>
 #include <simpson/verify/result_model.hpp>
 
+#include <string>
 #include <vector>
 
 namespace simpson::verify {
@@ -32,6 +33,10 @@ struct work_precision_settings {
   long long periods = 1;
   timing_policy timing;
   bool benchmark = false;  // the timing table also shows steps per second
+  // How each scheme advances: "step", its general algorithm (what it runs for any force: Simpson its
+  // nonlinear step, Newton on the internal node; the implicit peers their stage equations), and
+  // "matrix", its own exact 2 × 2 one-step matrix, one product a step, as Φ₃ runs in the paper.
+  std::vector<std::string> forms{"step", "matrix"};
 };
 
 section_result run_work_precision(const work_precision_settings& s);
