@@ -243,8 +243,8 @@ TEST(Experiments, FpuSecondBandKeepsTheSchemesOwnInvariantNotTheFlows) {
   // both. A check on I alone would call the second band unstable; one on I_d alone would hide that
   // the numerical solution does not carry the flow's oscillatory energy there.
   const fpu_settings s;
-  const fpu_run_summary second = run_fpu_chain(s, "simpson", std::sqrt(18.0), 200);
-  const fpu_run_summary first = run_fpu_chain(s, "simpson", 2.0, 200);
+  const fpu_run_summary second = run_fpu_chain(s, "simpson", std::sqrt(18.0), 60);
+  const fpu_run_summary first = run_fpu_chain(s, "simpson", 2.0, 60);
   EXPECT_EQ(second.status, "ok");
   EXPECT_LT(second.max_discrete_invariant_error, 0.05);
   EXPECT_GT(second.max_invariant_error, 1.0);
@@ -259,12 +259,12 @@ TEST(Experiments, FpuSecondBandKeepsTheSchemesOwnInvariantNotTheFlows) {
 TEST(Experiments, FpuSectionMeetsItsExpectationsAtTheQuickSize) {
   fpu_settings s;
   s.omega_h = {1.5, 3.0};
-  s.end_time = s.exchange_time = 10;
-  s.reference_omega_h = 0.5;
+  s.end_time = s.exchange_time = 4;
+  s.reference_omega_h = 1;
   s.scan_from = 1;
   s.scan_to = 5;
   s.scan_step = 1;
-  s.scan_end_time = 5;
+  s.scan_end_time = 2;
   s.samples = 50;
   const section_result out = run_fpu(s);
   ASSERT_EQ(out.expectations.size(), 4u);

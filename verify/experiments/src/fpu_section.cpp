@@ -22,6 +22,7 @@
 #include <array>
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 
 namespace simpson::verify {
@@ -304,7 +305,8 @@ section_result run_fpu(const fpu_settings& s) {
       errors.curves.push_back(std::move(invariant));
       // The exchange: I₁, I₂, I₃ and I over the first exchange_time at the second ωh (the book's
       // hω = 1.5 when it is given), sampled densely.
-      const chain_run early = run_chain(m, chain, s, omega_h, exchange_time, s.samples);
+      // The run itself when it ends where the exchange does (a quick scene), else a shorter one.
+      const chain_run early = exchange_time < s.end_time ? run_chain(m, chain, s, omega_h, exchange_time, s.samples) : r;
       exchange.add({figure::text(name_of(m)), figure::of(omega_h), early.ok() ? figure::of(exchange_gap(early, reference)) : figure{}, early.status});
       if (k == std::min<std::size_t>(1, s.omega_h.size() - 1)) exchange_panels.push_back(exchange_panel(fmt::format("{}, ωh = {}", name_of(m), omega_h), early));
     }
