@@ -131,11 +131,39 @@ plot_description stability_chart(const std::vector<member_analysis>& members, in
     for (const member_analysis& a : members) {
       if (a.member.degree != degree) continue;
       ++row;
-      pan.y.tics.emplace_back(row, rule_name(a.member.rule) + (a.derived ? "" : " (no map)"));
-      const int color = a.member.rule.family == quadrature_family::newton_cotes ? 0 : a.member.rule.family == quadrature_family::lobatto ? 1 : 2;
-      const std::string family = a.member.rule.family == quadrature_family::newton_cotes ? "Newton–Cotes"
-                                 : a.member.rule.family == quadrature_family::lobatto    ? "Lobatto"
-                                                                                          : "Gauss";
+      // The paper's member: s = 2 with Simpson's rule (Newton–Cotes 3, the same rule as Lobatto 3).
+      const bool papers = degree == 2 && a.member.rule.points == 3 &&
+                          (a.member.rule.family == quadrature_family::newton_cotes || a.member.rule.family == quadrature_family::lobatto);
+      pan.y.tics.emplace_back(row, rule_name(a.member.rule) + (papers ? " (the paper's)" : "") +
+                                       (!a.derived ? " (no map)" : a.stable_set.empty() ? " (unstable)" : ""));
+      const int color = papers ? 3 : a.member.rule.family == quadrature_family::newton_cotes ? 0 : a.member.rule.family == quadrature_family::lobatto ? 1 : 2;
+      const std::string family = papers ? "the paper's member"
+                                 : a.member.rule.family == quadrature_family::newton_cotes ? "Newton–Cotes"
+                                 : a.member.rule.family == quadrature_family::lobatto      ? "Lobatto"
+                                                                                            : "Gauss";
+      // A rule with no one-step map, and a map stable nowhere, are drawn apart: a grey dashed line
+      // and a row of open circles, so that neither reads as the other or as a missing computation.
+      if (!a.derived) {
+        series none{"no one-step map", line_style::dashed, 8, 7, 2};
+        none.add(figure::of(0.0), figure::of(row));
+        none.add(figure::of(right), figure::of(row));
+        pan.curves.push_back(none);
+        continue;
+      }
+      if (a.stable_set.empty()) {
+        series nowhere{"stable nowhere", line_style::points, 8, 6};
+        for (int k = 1; k < static_cast<int>(right); k += 2) nowhere.add(figure::of(static_cast<double>(k)), figure::of(row));
+        pan.curves.push_back(nowhere);
+        continue;
+      }
+      // Each unstable gap between two bands, however narrow (Lobatto 5's (3.1404, 3.1425) is 0.002
+      // wide, below a pixel at this scale), is marked by a cross at its middle.
+      series gaps{"unstable gap (any width)", line_style::points, 8, 2};
+      for (std::size_t k = 0; k + 1 < a.stable_set.size(); ++k) {
+        const double from = a.stable_set[k].to_value, to = a.stable_set[k + 1].from_value;
+        if (to > from && from < right) gaps.add(figure::of((from + to) / 2), figure::of(row));
+      }
+      if (!gaps.x.empty()) pan.curves.push_back(gaps);
       for (const stable_piece& p : a.stable_set) {
         if (p.from_value >= right) continue;
         const double to = std::min(p.to_value, right);
@@ -145,7 +173,7 @@ plot_description stability_chart(const std::vector<member_analysis>& members, in
           pan.curves.push_back(point);
           continue;
         }
-        series band{family + " rules", line_style::lines, color};
+        series band{papers ? std::string("the paper's member") : family + " rules", line_style::lines, color};
         band.add(figure::of(p.from_value), figure::of(row));
         band.add(figure::of(to), figure::of(row));
         pan.curves.push_back(band);
@@ -165,7 +193,9 @@ plot_description stability_chart(const std::vector<member_analysis>& members, in
   return plot_description{"family_bands",
                           "The stable set in ωh of each member (m = ω = 1 by scaling), one panel per degree s: a line over "
                           "each open band where (tr Φ)² < 4, drawn up to ωh = 20 (a line reaching the right edge runs on; "
-                          "the table gives every end). Rules without a one-step map have an empty row.",
+                          "the table gives every end); a cross at the middle of each unstable gap between bands, however "
+                          "narrow; the paper's member (s = 2, Simpson's rule) in its own colour; a rule without a one-step "
+                          "map as a grey dashed line, a map stable nowhere as a row of grey circles.",
                           panels, columns, 600 * columns, 80 + 30 * (3 * max_degree + 5) * rows};
 }
 
