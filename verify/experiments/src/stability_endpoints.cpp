@@ -109,8 +109,7 @@ void add_endpoint_growth(const stability_report& report, long long last_power, s
     for (const positive_root& root : report.roots) {
       if (!root.exact()) throw std::logic_error("stability: endpoint x = " + root_text(root) + " is not exact");
       const rational& x_end = root.low;
-      const Real theta_end = sqrt(Real(from_decimal<Real>(boost::multiprecision::numerator(x_end).str()) /
-                                       from_decimal<Real>(boost::multiprecision::denominator(x_end).str())));
+      const Real theta_end = sqrt(to_real<Real>(x_end));
       for (const int side : {-1, 0, 1}) {
         throw_if_interrupted();
         const Real theta = theta_end * (1 + Real(side) / offset_denominator);

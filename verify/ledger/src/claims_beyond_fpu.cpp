@@ -8,6 +8,8 @@
 #include <simpson/verify/fpu_section.hpp>
 #include <simpson/verify/stability_section.hpp>
 
+#include <simpson/energy.hpp>
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -62,7 +64,8 @@ claim_result check_fpu_second_band(const run_context&) {
                                   "ω²x₁² by {:.3g}, and only I_d is the scheme's invariant.",
                                   middles[1], second.max_discrete_invariant_error, second.max_invariant_error, middles[0],
                                   summaries[0].max_invariant_error,
-                                  (1 - middles[1] * middles[1] / 12) * (1 - middles[1] * middles[1] / 24) / (1 - middles[1] * middles[1] / 8)));
+                                  // (hamiltonien-discret)'s weight of ω²q² at m = ω = 1, h = ωh: 2 H_d(p = 0, q = 1).
+                                  2 * discrete_energy(oscillator_parameters<double>{1, 1, middles[1]}, phase_point<double>{0, 1})));
 }
 
 }  // namespace
