@@ -266,8 +266,29 @@ TEST(Experiments, FpuSectionMeetsItsExpectationsAtTheQuickSize) {
   s.scan_step = 1;
   s.scan_end_time = 2;
   s.samples = 50;
+  s.resonances = {3, 4};
   const section_result out = run_fpu(s);
   ASSERT_EQ(out.expectations.size(), 4u);
+  // The step-size resonances in closed form: Störmer–Verlet's cos θ = 1 − (ωh)²/2 gives θ = π/2 at
+  // √2 and 2π/3 at √3; the implicit midpoint rule's θ = 2 arctan(ωh/2) gives 2 and 2√3. A search
+  // for θ = π/k, or one that stopped at the first crossing, would not find these rows.
+  const table& scan = get(out, "scan");
+  std::map<std::string, std::vector<std::pair<double, std::string>>> resonant;
+  for (std::size_t r = 0; r < scan.rows.size(); ++r) {
+    const std::string label = cell(scan, r, "resonance").value();
+    if (!label.empty()) resonant[cell(scan, r, "method").value()].emplace_back(number(cell(scan, r, "omega_h")), label);
+  }
+  ASSERT_EQ(resonant["stormer-verlet"].size(), 2u);
+  EXPECT_NEAR(resonant["stormer-verlet"][0].first, std::sqrt(2.0), 1e-12);
+  EXPECT_EQ(resonant["stormer-verlet"][0].second, "θ = π/2");
+  EXPECT_NEAR(resonant["stormer-verlet"][1].first, std::sqrt(3.0), 1e-12);
+  EXPECT_EQ(resonant["stormer-verlet"][1].second, "θ = 2π/3");
+  ASSERT_EQ(resonant["implicit-midpoint"].size(), 2u);
+  EXPECT_NEAR(resonant["implicit-midpoint"][0].first, 2, 1e-12);
+  EXPECT_NEAR(resonant["implicit-midpoint"][1].first, 2 * std::sqrt(3.0), 1e-12);
+  // Φ₃ turns through π/2 and 2π/3 in each of its two bands (θ runs from 0 to π in the first, and
+  // back in the second): four resonances up to ωh = 5.
+  EXPECT_EQ(resonant["simpson"].size(), 4u);
   for (const expectation& e : out.expectations) EXPECT_TRUE(e.holds) << e.key << ": " << e.observed;
   const table& runs = get(out, "runs");
   for (std::size_t r = 0; r < runs.rows.size(); ++r) {
@@ -552,16 +573,22 @@ TEST(Experiments, NonlinearBrouwerFormsMatchAReferenceInMpfr) {
   EXPECT_LT(reference_gap, running[2] / 16);
 }
 
-TEST(Experiments, NonlinearProblemsRecordAFailedNewtonSolveAndGoOn) {
+/// The nonlinear section with its other parts at their smallest and nothing timed: the problems'
+/// runs alone, at the meshes N.
+nonlinear_settings problems_only(const std::string& problem, std::vector<long long> N) {
   nonlinear_settings s;
   s.pendulum_N = {10};
   s.energy_steps = 10;
   s.brouwer_steps = 10;
-  s.problems = {"kepler"};
-  s.N = {8, 256, 512};
+  s.problems = {problem};
+  s.N = std::move(N);
   s.double_pendulum_N = {10};
   s.timing.max_runs = 0;
-  const section_result out = run_nonlinear(s);
+  return s;
+}
+
+TEST(Experiments, NonlinearProblemsRecordAFailedNewtonSolveAndGoOn) {
+  const section_result out = run_nonlinear(problems_only("kepler", {8, 256, 512}));
   const table& t = get(out, "problems");
   ASSERT_EQ(t.rows.size(), 6u * 3u);
   std::map<std::string, std::vector<std::size_t>> by_method;
@@ -578,6 +605,39 @@ TEST(Experiments, NonlinearProblemsRecordAFailedNewtonSolveAndGoOn) {
   EXPECT_NEAR(number(cell(t, simpson, "error_q")), number(cell(t, lobatto, "error_q")), 1e-12);
   EXPECT_NEAR(std::log2(number(cell(t, simpson, "error_q")) / number(cell(t, by_method["simpson"][2], "error_q"))), 4, 0.1);
   EXPECT_EQ(cell(t, by_method["rk4"][0], "newton_iterations_mean").what(), figure::kind::empty);  // explicit
+}
+
+TEST(Experiments, NonlinearProblemsCountTheForceEvaluationsTheStepsMake) {
+  // Work as evaluations of ∇V and ∇²V, counted as each step makes them: fixed per step for the
+  // explicit methods, tied to the Newton iterations for the implicit ones. A count that missed the
+  // Newton passes, or counted the timed runs, breaks these equalities.
+  nonlinear_settings s = problems_only("fpu", {32, 64});
+  s.fpu_T = 1;
+  const section_result out = run_nonlinear(s);
+  const table& t = get(out, "problems");
+  ASSERT_EQ(t.rows.size(), 6u * 2u);
+  const std::map<std::string, double> explicit_calls{{"stormer-verlet", 2}, {"yoshida", 6}, {"rk4", 4}};
+  const std::map<std::string, double> stages{{"simpson", 1}, {"gauss-legendre-2", 2}, {"lobatto-iiia-iiib-3", 3}};
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    const std::string method = cell(t, r, "method").value();
+    ASSERT_EQ(cell(t, r, "status").value(), "ok") << method;
+    const double gradients = number(cell(t, r, "gradients_per_step")), hessians = number(cell(t, r, "hessians_per_step"));
+    if (explicit_calls.count(method)) {
+      EXPECT_EQ(gradients, explicit_calls.at(method)) << method;
+      EXPECT_EQ(hessians, 0) << method;
+      continue;
+    }
+    const double iterations = number(cell(t, r, "newton_iterations_mean")), k = stages.at(method);
+    EXPECT_GT(iterations, 0) << method;
+    // Simpson: ∇V at q, once per Newton pass (iterations + 1 of them) and at the new q.
+    EXPECT_NEAR(gradients, method == "simpson" ? iterations + 3 : k * (iterations + 1), 1e-9) << method;
+    EXPECT_NEAR(hessians, k * iterations, 1e-9) << method;
+  }
+  // The error against work is drawn: a plot with one panel for the problem.
+  EXPECT_TRUE(std::any_of(out.blocks.begin(), out.blocks.end(), [](const section_block& b) {
+    const plot_description* p = std::get_if<plot_description>(&b);
+    return p && p->name == "nonlinear_problems_work";
+  }));
 }
 
 TEST(Experiments, CostEstimateGrowsWithStepsAndPrecision) {

@@ -187,8 +187,10 @@ TEST(PaperReading, ACopyWithTheErrataCorrectedMakesThemHold) {
     EXPECT_EQ(r.outcome, verdict::holds) << id << ": " << r.note;
     EXPECT_TRUE(r.correction.empty()) << id;
   }
-  // The claims that depend on det Gamma still hold with the factor 1/4.
+  // The claims that depend on det Gamma still hold with the factor 1/4, and so does the conserved
+  // form read from the corrected Gamma.
   EXPECT_EQ(verdict_of("gamma-singular", paper), verdict::holds);
+  EXPECT_EQ(verdict_of("conserved-form", paper), verdict::holds);
 }
 
 TEST(PaperReading, KernelsThatDisagreeOnTheDerivedStatementAreItsOwnVerdict) {

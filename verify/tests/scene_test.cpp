@@ -144,7 +144,7 @@ TEST(Scene, RejectsEveryBadExperimentParameter) {
   EXPECT_TRUE(mentions(section(R"("long_time": {"mpfr_digits": 5})"), "'long_time.mpfr_digits' must be an integer from 30"));
   EXPECT_TRUE(mentions(section(R"("long_time": {"steps_double": 1e19})"), "'long_time.steps_double' must be an integer"));
   EXPECT_TRUE(mentions(section(R"("nonlinear": {"problems": ["pendulum", "lorenz"]})"),
-                       "'nonlinear.problems'[1]: unknown name 'lorenz' (known: pendulum, kepler, henon-heiles)"));
+                       "'nonlinear.problems'[1]: unknown name 'lorenz' (known: pendulum, kepler, henon-heiles, fpu)"));
   EXPECT_TRUE(mentions(section(R"("nonlinear": {"problems": ["kepler", "kepler"]})"), "'kepler' is listed twice"));
   EXPECT_TRUE(mentions(section(R"("nonlinear": {"problems": []})"), "'nonlinear.problems' must be a non-empty list"));
   EXPECT_TRUE(mentions(section(R"("floating": {"steppers": ["phi3-matrix", "rk4"]})"), "rk4"));

@@ -223,7 +223,7 @@ experiment_settings parse_experiments(const nlohmann::json& doc, const std::stri
   if (doc.contains("fpu")) {
     const section_reader r(origin, "fpu", doc["fpu"],
                            {"m", "omega", "omega_h", "end_time", "scan_from", "scan_to", "scan_step", "scan_end_time", "samples",
-                            "exchange_time", "reference_omega_h"});
+                            "exchange_time", "reference_omega_h", "resonances"});
     fpu_settings f;
     if (r.has("m")) f.m = static_cast<int>(r.integer("m", 1, 20));
     if (r.has("omega")) f.omega = r.number("omega", 1, 1e4);
@@ -236,6 +236,10 @@ experiment_settings parse_experiments(const nlohmann::json& doc, const std::stri
     if (r.has("samples")) f.samples = static_cast<int>(r.integer("samples", 10, 100000));
     if (r.has("exchange_time")) f.exchange_time = r.number("exchange_time", 0, 1e6);
     if (r.has("reference_omega_h")) f.reference_omega_h = r.number("reference_omega_h", 0.001, 10);
+    if (r.has("resonances")) {  // θ = 2π/k: k = 2 is θ = π, a band end, where every run is at the edge of stability
+      const std::vector<long long> k = r.integers("resonances", 3, 12);
+      f.resonances.assign(k.begin(), k.end());
+    }
     if (f.scan_to < f.scan_from) fail(origin, "'fpu.scan_to' must be at least 'fpu.scan_from'");
     if ((f.scan_to - f.scan_from) / f.scan_step > 1000) fail(origin, "'fpu.scan_step' gives more than 1000 points from 'fpu.scan_from' to 'fpu.scan_to'");
     e.fpu = f;
@@ -243,7 +247,7 @@ experiment_settings parse_experiments(const nlohmann::json& doc, const std::stri
   if (doc.contains("nonlinear")) {
     const section_reader r(origin, "nonlinear", doc["nonlinear"],
                            {"pendulum_q0", "pendulum_T", "pendulum_N", "mpfr_digits", "energy_steps", "brouwer_h", "brouwer_steps", "problems", "N",
-                            "eccentricity", "reference_digits", "max_runs", "max_seconds", "double_pendulum_N"});
+                            "eccentricity", "reference_digits", "fpu_T", "max_runs", "max_seconds", "double_pendulum_N"});
     nonlinear_settings n;
     // q0 = π is the unstable equilibrium, where the exact solution (k = 1) has no period.
     if (r.has("pendulum_q0")) n.pendulum_q0 = r.number("pendulum_q0", 0, 3.14159);
@@ -265,6 +269,7 @@ experiment_settings parse_experiments(const nlohmann::json& doc, const std::stri
     if (r.has("reference_digits")) {
       n.reference_digits = static_cast<unsigned>(r.integer("reference_digits", 20, precision::max_mpfr_digits));
     }
+    if (r.has("fpu_T")) n.fpu_T = r.number("fpu_T", 0, 1e4);
     if (r.has("max_runs")) n.timing.max_runs = static_cast<unsigned>(r.integer("max_runs", 1, 1000));
     if (r.has("max_seconds")) n.timing.max_seconds = r.number("max_seconds", 0, 3600);
     if (r.has("double_pendulum_N")) n.double_pendulum_N = r.integers("double_pendulum_N", 1, 100'000'000);

@@ -16,6 +16,9 @@
 #include <simpson/nonlinear_ndof_step.hpp>
 #include <simpson/runge_kutta_tableaux.hpp>
 
+#include <simpson/scheme.hpp>
+
+#include <boost/math/constants/constants.hpp>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -56,6 +59,58 @@ scheme_style style_for(fpu_method m) {
   }
   return style_of(scheme_id::simpson);
 }
+
+/// The oscillator's scheme each method is there (its 2 × 2 matrix): the implicit midpoint rule is
+/// Newmark's average acceleration.
+scheme_id linear_scheme(fpu_method m) {
+  switch (m) {
+    case fpu_method::simpson: return scheme_id::simpson;
+    case fpu_method::stormer_verlet: return scheme_id::stormer_verlet;
+    case fpu_method::implicit_midpoint: return scheme_id::newmark;
+    case fpu_method::gauss_legendre_2: return scheme_id::gauss_legendre_2;
+  }
+  return scheme_id::simpson;
+}
+
+/// A step-size resonance: an ωh at which a method's rotation angle on the stiff springs is θ = 2π/k.
+struct resonance {
+  double omega_h;
+  int k;
+};
+
+/// Where in (0, last] a method's rotation angle θ on the oscillator (eigenvalues e^{±iθ}, cos θ = tr Φ/2,
+/// det Φ = 1 for all four) is 2π/k: the step-size resonances of Hairer, Lubich and Wanner's analysis of
+/// the oscillatory energy (chapter XIII: near-conservation of I asks |sin(jθ/2)| bounded away from 0
+/// for small j). Sign changes of tr Φ/2 − cos(2π/k) on a grid of 0.001, each refined by bisection in
+/// double; a sign change across a pole of tr Φ (not a root) is recognised and left out.
+std::vector<resonance> resonant_steps(fpu_method m, const std::vector<int>& orders, double last) {
+  const auto cos_theta = [m](double omega_h) {
+    const one_step_matrix<double> phi = stepper<double>(linear_scheme(m), oscillator_parameters<double>{1, 1, omega_h}).matrix();
+    return (phi.alpha + phi.delta) / 2;
+  };
+  std::vector<resonance> out;
+  for (const int k : orders) {
+    const double target = std::cos(2 * boost::math::constants::pi<double>() / k);
+    const auto f = [&](double omega_h) { return cos_theta(omega_h) - target; };
+    const int points = static_cast<int>(std::ceil(last / 0.001));
+    for (int i = 1; i < points; ++i) {
+      double a = last * i / points, b = last * (i + 1) / points;
+      if (!(f(a) * f(b) < 0)) continue;
+      for (int it = 0; it < 80 && b - a > 0; ++it) {
+        const double c = (a + b) / 2;
+        if (c <= a || c >= b) break;
+        (f(a) * f(c) <= 0 ? b : a) = c;
+      }
+      const double at = (a + b) / 2;
+      if (std::abs(f(at)) < 1e-9) out.push_back({at, k});
+    }
+  }
+  std::sort(out.begin(), out.end(), [](const resonance& x, const resonance& y) { return x.omega_h < y.omega_h; });
+  return out;
+}
+
+/// θ = 2π/k in lowest terms: π/2 for k = 4, 2π/3 for k = 3.
+std::string resonance_text(int k) { return k % 2 == 0 ? fmt::format("θ = π/{}", k / 2) : fmt::format("θ = 2π/{}", k); }
 
 /// A method's step on the chain; adds its Newton iterations.
 class stepper_on_chain {
@@ -247,6 +302,7 @@ section_result run_fpu(const fpu_settings& s) {
                      {"end_time", s.end_time},
                      {"scan", {s.scan_from, s.scan_to, s.scan_step}},
                      {"scan_end_time", s.scan_end_time},
+                     {"resonances", s.resonances},
                      {"samples", s.samples}};
   const system_type chain = fpu_system(s.m, s.omega);
   const stability_report region = simpson_exact_region();
@@ -337,8 +393,8 @@ section_result run_fpu(const fpu_settings& s) {
       "Nearest the reference's exchange: {}. Against the book: its description of this problem (the stiff energy passes "
       "from I₁ to I₂ and I₃ over t ≈ 0..200 while I stays nearly constant; Störmer–Verlet is stable only for ωh < 2, the "
       "implicit midpoint rule for every ωh) is what the reference and the runs here show. The book's figures per method "
-      "and step are not at hand in this project, so the finer comparison (which method keeps I near which step-size "
-      "resonance) is not made.",
+      "and step are not at hand in this project; its theory of step-size resonances is, and the scan below runs each "
+      "method at its own.",
       nearest.empty() ? std::string("none") : fmt::format("{}", fmt::join(nearest, "; "))));
   out.add(plot_description{"fpu_exchange",
                            fmt::format("The stiff springs' energies I₁, I₂, I₃ and their sum I against t ≤ {}, a reference and each "
@@ -355,13 +411,16 @@ section_result run_fpu(const fpu_settings& s) {
   // method's linear theory predicts for the stiff springs.
   table scan{"scan", fmt::format("The largest errors over t ≤ {} against ωh", s.scan_end_time), "",
              {{"method", "method"}, {"omega_h", "ωh", "", 0}, {"max_energy_error", "max |ΔH|/H₀"}, {"max_invariant_error", "max |ΔI|/I₀"},
-              {"predicted", "linear theory"}, {"status", "status"}}};
+              {"predicted", "linear theory"}, {"resonance", "resonance"}, {"status", "status"}}};
   scan.markdown = false;
   scan.csv_file = "fpu_scan.csv";
   panel scan_energy{"max |H − H(0)|/H(0)", {"ωh of the stiff springs"}, {"relative error", true}};
   panel scan_invariant{"max |I − I(0)|/I(0)", {"ωh of the stiff springs"}, {"relative error", true}};
   scan_energy.x.tics = scan_invariant.x.tics = detail::band_end_tics(region, s.scan_to);
   const int points = static_cast<int>(std::floor((s.scan_to - s.scan_from) / s.scan_step + 1e-9)) + 1;
+  series resonant_points("resonance θ = 2π/k", line_style::points, 8, 6, 1);
+  series resonant_invariant = resonant_points;
+  std::vector<std::string> at_resonances;  // each method's error in I at its resonances beside its scanned neighbours'
   for (const fpu_method m : fpu_methods) {
     const scheme_style style = style_for(m);
     // A curve per run of stable points: a line never bridges a stretch of unstable runs (Simpson's gap).
@@ -377,16 +436,33 @@ section_result run_fpu(const fpu_settings& s) {
     };
     std::size_t agree = 0, predicted_count = 0;
     std::vector<std::string> disagree;
-    for (int k = 0; k < points; ++k) {
-      const double omega_h = std::round((s.scan_from + k * s.scan_step) * 1e9) / 1e9;
+    // The grid, and the method's resonant ωh within it, in increasing order.
+    std::vector<std::pair<double, int>> steps;  // ωh, and k for a resonance (0 for a grid point)
+    for (int k = 0; k < points; ++k) steps.emplace_back(std::round((s.scan_from + k * s.scan_step) * 1e9) / 1e9, 0);
+    for (const resonance& r : resonant_steps(m, s.resonances, s.scan_to)) {
+      if (r.omega_h < s.scan_from) continue;
+      // A resonance on a grid point (Störmer–Verlet's θ = π/3 is ωh = 1) marks that point.
+      const auto same = std::find_if(steps.begin(), steps.end(), [&](const auto& p) { return std::abs(p.first - r.omega_h) < 1e-9 * p.first; });
+      if (same != steps.end()) same->second = r.k;
+      else steps.emplace_back(r.omega_h, r.k);
+    }
+    std::stable_sort(steps.begin(), steps.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<double> grid_invariant;  // max |ΔI|/I₀ at each step (NaN where not ok)
+    for (const auto& [omega_h, order] : steps) {
       const chain_run r = run_chain(m, chain, s, omega_h, s.scan_end_time, 200);
       const std::optional<bool> stable = predicted_stable(m, region, omega_h);
       scan.add({figure::text(name_of(m)), figure::of(omega_h), r.ok() ? figure::of(r.max_energy_error) : figure{},
                 r.ok() ? figure::of(r.max_invariant_error) : figure{},
-                figure::text(stable ? (*stable ? "stable" : "unstable") : "endpoint: not predicted"), r.status});
+                figure::text(stable ? (*stable ? "stable" : "unstable") : "endpoint: not predicted"),
+                order ? figure::text(resonance_text(order)) : figure::text(""), r.status});
+      grid_invariant.push_back(r.ok() ? r.max_invariant_error : NAN);
       if (r.ok()) {
         energy.add(figure::of(omega_h), figure::of(r.max_energy_error));
         invariant.add(figure::of(omega_h), figure::of(r.max_invariant_error));
+        if (order) {
+          resonant_points.add(figure::of(omega_h), figure::of(r.max_energy_error));
+          resonant_invariant.add(figure::of(omega_h), figure::of(r.max_invariant_error));
+        }
       } else {
         close_curve();
       }
@@ -399,6 +475,20 @@ section_result run_fpu(const fpu_settings& s) {
     }
     progress_step("fpu", "scan of " + name_of(m));
     close_curve();
+    // Each resonance against the grid points beside it (the nearest ok one on each side).
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+      if (!steps[i].second || std::isnan(grid_invariant[i])) continue;
+      std::vector<std::string> beside;
+      for (const int dir : {-1, 1}) {
+        for (std::size_t j = i + dir; j < steps.size(); j += dir) {
+          if (steps[j].second) continue;
+          if (!std::isnan(grid_invariant[j])) beside.push_back(fmt::format("{:.2g} at {}", grid_invariant[j], steps[j].first));
+          break;
+        }
+      }
+      at_resonances.push_back(fmt::format("{} {} at ωh = {:.4f}: {:.2g}{}", name_of(m), resonance_text(steps[i].second), steps[i].first,
+                                          grid_invariant[i], beside.empty() ? std::string() : fmt::format(" (beside it {})", fmt::join(beside, ", "))));
+    }
     out.expect({"scan-stability-" + name_of(m),
                 fmt::format("On the FPU chain, {} is stable at each scanned ωh where the linear theory of its stiff springs says so, "
                             "and unstable where it says not.",
@@ -411,10 +501,20 @@ section_result run_fpu(const fpu_settings& s) {
                 agree == predicted_count});
   }
   out.add(std::move(scan));
+  if (!resonant_points.x.empty()) {
+    scan_energy.curves.push_back(std::move(resonant_points));
+    scan_invariant.curves.push_back(std::move(resonant_invariant));
+  }
+  out.text(fmt::format(
+      "Step-size resonances: the scan adds, for each method, the ωh where its rotation angle θ on the stiff springs (its "
+      "oscillator matrix's eigenvalues e^(±iθ)) is 2π/k, k = {} (θ = π, k = 2, is Φ₃'s band end 2√2). Hairer, Lubich and "
+      "Wanner's near-conservation of I asks |sin(jθ/2)| to stay away from 0 for small j; at these θ it vanishes for j = k. "
+      "max |ΔI|/I₀ there, beside the scanned ωh on either side: {}.",
+      fmt::join(s.resonances, ", "), at_resonances.empty() ? std::string("none in the scanned range") : fmt::format("{}", fmt::join(at_resonances, "; "))));
   out.add(plot_description{"fpu_scan",
                            fmt::format("The largest relative errors in H and in I over t ≤ {} against the stiff springs' ωh, each "
-                                       "method; a method's unstable runs are left out (the scan table has them). The x tics mark Φ₃'s "
-                                       "band ends.",
+                                       "method; a method's unstable runs are left out (the scan table has them); grey circles: "
+                                       "runs at a step-size resonance. The x tics mark Φ₃'s band ends.",
                                        s.scan_end_time),
                            {scan_energy, scan_invariant}, 2, 1000, 420});
 

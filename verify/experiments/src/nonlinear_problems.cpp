@@ -1,17 +1,21 @@
-// The nonlinear section's error against N and run time: the pendulum, the Kepler problem and
-// Hénon–Heiles, for Simpson and its peers in double. The implicit methods (Simpson, Lobatto
+// The nonlinear section's error against N, work and run time: the pendulum, the Kepler problem,
+// Hénon–Heiles and the FPU chain, for Simpson and its peers in double. Work is counted in ∇V and ∇²V
+// evaluations (counting_potential.hpp), beside the seconds. The implicit methods (Simpson, Lobatto
 // IIIA–IIIB, Gauss–Legendre) solve their stage equations by the same rule: Newton's method to 16 eps
 // of the terms, from the same starting guess (each stage at q + c_i h M⁻¹ p), Jacobians solved
 // by Eigen's partial-pivoting LU; the explicit ones (Störmer–Verlet, Yoshida, RK4) evaluate forces.
 
+#include "counting_potential.hpp"
 #include "nonlinear_parts.hpp"
 #include "timed_runs.hpp"
 
 #include <simpson/verify/floating_tools.hpp>
+#include <simpson/verify/fpu_section.hpp>
 #include <simpson/verify/interruption.hpp>
 #include <simpson/verify/progress.hpp>
 #include <simpson/verify/scheme_style.hpp>
 
+#include <simpson/fpu_chain.hpp>
 #include <simpson/kepler_exact.hpp>
 #include <simpson/nonlinear_ndof_step.hpp>
 #include <simpson/pendulum_exact.hpp>
@@ -85,7 +89,8 @@ struct problem {
   std::string reference;
 };
 
-ndof_state<double> rounded(const ndof_state<mpfr>& y) {
+template <class Real>
+ndof_state<double> rounded(const ndof_state<Real>& y) {
   ndof_state<double> out{dense_vector<double>(y.p.size()), dense_vector<double>(y.q.size())};
   for (Eigen::Index i = 0; i < y.p.size(); ++i) {
     out.p(i) = static_cast<double>(y.p(i));
@@ -161,20 +166,57 @@ problem<henon_heiles_potential<double>> henon_heiles_problem(const nonlinear_set
                       fmt::format("{:g}", system.energy(start)), s.reference_digits, N_ref, simpson::to_string(estimate, 2))};
 }
 
+problem<fpu_potential<double>> fpu_problem(const nonlinear_settings& s, long long finest) {
+  // The chain of the fpu section (its m, ω and start: Hairer, Lubich and Wanner's). The reference:
+  // Gauss–Legendre 2 in long double with 16 and 8 times the finest N, the difference bounding its
+  // error as for Hénon–Heiles (mpfr would take minutes for 2m = 6 degrees of freedom; long double's
+  // round-off, about 1e-19 a step, stays far below the estimate).
+  const fpu_settings chain;
+  const double T = s.fpu_T;
+  const separable_system<long double, fpu_potential<long double>> exact_system = fpu_system<long double>(chain.m, chain.omega);
+  const ndof_method<long double, fpu_potential<long double>> gl2(scheme_id::gauss_legendre_2, exact_system);
+  const auto run = [&](long long N) {
+    ndof_state<long double> y = fpu_start<long double>(chain.m, chain.omega);
+    long long iterations = 0;
+    const long double h = static_cast<long double>(T) / static_cast<long double>(N);
+    for (long long j = 1; j <= N; ++j) {
+      if ((j & 255) == 0) throw_if_interrupted();
+      y = gl2.step(h, y, iterations);
+    }
+    return y;
+  };
+  const long long N_ref = 16 * finest;
+  const ndof_state<long double> fine = run(N_ref), coarse = run(N_ref / 2);
+  const long double estimate =
+      std::max(dense_vector<long double>(fine.q - coarse.q).norm(), dense_vector<long double>(fine.p - coarse.p).norm()) / 15;
+  return {"fpu", fpu_system<double>(chain.m, chain.omega), fpu_start<double>(chain.m, chain.omega), T, rounded(fine),
+          fmt::format("the fpu section's chain, m = {}, ω = {}, its start (Hairer, Lubich and Wanner's), T = {} (ωh of the stiff "
+                      "springs from {} at the coarsest N to {} at the finest); reference: Gauss–Legendre 2 in long double with "
+                      "N = {} (error estimated {} from the run with N/2)",
+                      chain.m, fmt::format("{:g}", chain.omega), fmt::format("{:g}", T),
+                      fmt::format("{:.3g}", chain.omega * T / static_cast<double>(*std::min_element(s.N.begin(), s.N.end()))),
+                      fmt::format("{:.3g}", chain.omega * T / static_cast<double>(finest)), N_ref,
+                      fmt::format("{:.2g}", static_cast<double>(estimate)))};
+}
+
 /// One (method, N) run: the error run, then timed runs without the error computation.
 struct problem_run {
   table_row row, timing_row;
-  figure state_error, energy_error, seconds;
-  double error_q = 0, energy = 0, iterations = 0;  // when the run is ok
+  figure state_error, energy_error, seconds, gradients;
+  double error_q = 0, energy = 0, iterations = 0, gradients_per_step = 0;  // when the run is ok
   bool ok = false;
 };
 
 template <class Potential>
 problem_run run_one(const problem<Potential>& p, scheme_id id, long long N, const timing_policy& timing) {
   const ndof_method<double, Potential> method(id, p.system);
+  // The error run counts its ∇V and ∇²V calls; the timed runs below do not.
+  evaluation_count count;
+  const separable_system<double, counting_potential<Potential>> counted_system(p.system.mass(), {p.system.potential(), count});
+  const ndof_method<double, counting_potential<Potential>> counted(id, counted_system);
   const double h = p.T / static_cast<double>(N), H0 = p.system.energy(p.start);
   const table_row key{figure::text(p.name), figure::text(std::string(traits_of(id).name)), figure::integer(N)};
-  problem_run out{key, key, figure{}, figure{}, figure{}};
+  problem_run out{key, key, figure{}, figure{}, figure{}, figure{}};
   ndof_state<double> y = p.start;
   long long iterations = 0;
   double energy_error = 0;
@@ -182,7 +224,7 @@ problem_run run_one(const problem<Potential>& p, scheme_id id, long long N, cons
   try {
     for (long long j = 1; j <= N; ++j) {
       if ((j & 255) == 0) throw_if_interrupted();
-      y = method.step(h, y, iterations);
+      y = counted.step(h, y, iterations);
       const double e = std::abs(p.system.energy(y) - H0) / std::abs(H0);
       if (!std::isfinite(e)) {
         status = figure::fault("non-finite");
@@ -195,7 +237,7 @@ problem_run run_one(const problem<Potential>& p, scheme_id id, long long N, cons
   }
   out.row.push_back(status);
   if (status.is_fault()) {
-    for (int k = 0; k < 4; ++k) out.row.push_back(figure{});
+    for (int k = 0; k < 6; ++k) out.row.push_back(figure{});
     if (timing.max_runs > 0) out.timing_row.insert(out.timing_row.end(), {figure{}, figure{}, figure{}});
     return out;
   }
@@ -203,10 +245,13 @@ problem_run run_one(const problem<Potential>& p, scheme_id id, long long N, cons
   out.error_q = dense_vector<double>(y.q - p.at_T.q).norm();
   out.energy = energy_error;
   out.iterations = static_cast<double>(iterations) / static_cast<double>(N);
+  out.gradients_per_step = static_cast<double>(count.gradients) / static_cast<double>(N);
   out.state_error = figure::of(out.error_q);
   out.energy_error = figure::of(energy_error);
+  out.gradients = figure::integer(count.gradients);
   out.row.insert(out.row.end(), {out.state_error, figure::of(dense_vector<double>(y.p - p.at_T.p).norm()), out.energy_error,
-                                 implicit(id) ? figure::of(static_cast<double>(iterations) / static_cast<double>(N)) : figure{}});
+                                 implicit(id) ? figure::of(out.iterations) : figure{}, figure::of(out.gradients_per_step),
+                                 figure::of(static_cast<double>(count.hessians) / static_cast<double>(N))});
   if (timing.max_runs == 0) return out;
   const run_times times = time_runs(timing, [&] {
     ndof_state<double> z = p.start;
@@ -220,7 +265,7 @@ problem_run run_one(const problem<Potential>& p, scheme_id id, long long N, cons
 }
 
 struct problem_panels {
-  panel state, energy, time;
+  panel state, energy, work, time;
 };
 
 template <class Potential>
@@ -229,11 +274,12 @@ problem_panels run_problem(const problem<Potential>& p, const nonlinear_settings
   references.push_back("**" + p.name + "**: " + p.reference);
   problem_panels out{{p.name + ": state error", {"N", true}, {"|q_N - q(T)|", true}, {}, "bottom left"},
                      {p.name + ": energy error", {"N", true}, {"max |H - H_0|/|H_0|", true}, {}, "bottom left"},
+                     {p.name, {"∇V evaluations in the run", true}, {"|q_N - q(T)|", true}, {}, "bottom left"},
                      {p.name, {"run time (s, minimum of repeats)", true}, {"|q_N - q(T)|", true}, {}, "bottom left"}};
   for (const scheme_id id : methods) {
     const scheme_style style = style_of(id);
     series by_n(std::string(traits_of(id).name), style.line, style.color, style.point, style.dash);
-    series energy = by_n, by_time = by_n;
+    series energy = by_n, by_work = by_n, by_time = by_n;
     std::vector<double> ok_N, ok_errors;
     std::vector<bool> use;
     problem_run finest;
@@ -254,6 +300,7 @@ problem_panels run_problem(const problem<Potential>& p, const nonlinear_settings
       progress_step("nonlinear", fmt::format("{} {} N = {}", p.name, traits_of(id).name, N));
       by_n.add(figure::integer(N), r.state_error);
       energy.add(figure::integer(N), r.energy_error);
+      by_work.add(r.gradients, r.state_error);
       if (s.timing.max_runs > 0) {
         by_time.add(r.seconds, r.state_error);
         times.add(std::move(r.timing_row));
@@ -264,9 +311,11 @@ problem_panels run_problem(const problem<Potential>& p, const nonlinear_settings
     summary.add({figure::text(p.name), figure::text(std::string(traits_of(id).name)), figure::integer(static_cast<long long>(ok_N.size())),
                  figure::integer(failed), ok_N.size() >= 2 ? figure::of(order) : figure{}, finest_N ? figure::integer(finest_N) : figure{},
                  finest_N ? figure::of(finest.error_q) : figure{}, finest_N ? figure::of(finest.energy) : figure{},
-                 finest_N && implicit(id) ? figure::of(finest.iterations) : figure{}});
+                 finest_N && implicit(id) ? figure::of(finest.iterations) : figure{},
+                 finest_N ? figure::of(finest.gradients_per_step) : figure{}});
     out.state.curves.push_back(by_n);
     out.energy.curves.push_back(energy);
+    out.work.curves.push_back(by_work);
     out.time.curves.push_back(by_time);
   }
   return out;
@@ -286,7 +335,8 @@ void add_nonlinear_problems(const nonlinear_settings& s, section_result& out) {
                  {"finest_N", "finest N"},
                  {"error_q_finest", "‖q_N − q(T)‖ there"},
                  {"energy_error_finest", "max rel. H error there"},
-                 {"newton_iterations_finest", "Newton it./step there"}}};
+                 {"newton_iterations_finest", "Newton it./step there"},
+                 {"gradients_per_step_finest", "∇V / step there"}}};
   table rows{"problems", "", "",
              {{"problem", "problem"},
               {"method", "method"},
@@ -295,7 +345,9 @@ void add_nonlinear_problems(const nonlinear_settings& s, section_result& out) {
               {"error_q", "‖q_N − q(T)‖"},
               {"error_p", "‖p_N − p(T)‖"},
               {"energy_error_max_relative", "max rel. H error"},
-              {"newton_iterations_mean", "Newton it./step"}}};
+              {"newton_iterations_mean", "Newton it./step"},
+              {"gradients_per_step", "∇V / step"},
+              {"hessians_per_step", "∇²V / step"}}};
   rows.csv_file = "nonlinear_problems.csv";
   rows.markdown = false;  // every run in report.json and the CSV; the summary in report.md
   table times{"problems_timing", "Run time of each configuration (nonlinear problems)",
@@ -307,18 +359,19 @@ void add_nonlinear_problems(const nonlinear_settings& s, section_result& out) {
   times.csv_file = "nonlinear_problems_time.csv";
   times.timing = true;
   std::vector<std::string> references;
-  std::vector<panel> state_panels, energy_panels, time_panels;
+  std::vector<panel> state_panels, energy_panels, work_panels, time_panels;
   const auto collect = [&](const problem_panels& p) {
     state_panels.push_back(p.state);
     energy_panels.push_back(p.energy);
+    work_panels.push_back(p.work);
     time_panels.push_back(p.time);
   };
+  const long long finest = *std::max_element(s.N.begin(), s.N.end());
   for (const std::string& name : s.problems) {
     if (name == "pendulum") collect(run_problem(pendulum_problem(s), s, rows, summary, times, references));
     if (name == "kepler") collect(run_problem(kepler_problem(s), s, rows, summary, times, references));
-    if (name == "henon-heiles") {
-      collect(run_problem(henon_heiles_problem(s, *std::max_element(s.N.begin(), s.N.end())), s, rows, summary, times, references));
-    }
+    if (name == "henon-heiles") collect(run_problem(henon_heiles_problem(s, finest), s, rows, summary, times, references));
+    if (name == "fpu") collect(run_problem(fpu_problem(s, finest), s, rows, summary, times, references));
   }
   std::string intro =
       "In double, h = T/N, m = 1 (M = I). Errors: the Euclidean norms ‖q_N − q(T)‖ and ‖p_N − p(T)‖ at T against the "
@@ -326,7 +379,12 @@ void add_nonlinear_problems(const nonlinear_settings& s, section_result& out) {
       "and Gauss–Legendre 2 solve their stage equations by the same rule: Newton's method until every residual is within "
       "16 eps of the sum of its terms' magnitudes, from each stage at q + c_i h M⁻¹p, the Jacobian solved by Eigen's "
       "partial-pivoting LU (Simpson has n unknowns, Gauss–Legendre 2n, Lobatto 3n). Störmer–Verlet, Yoshida and RK4 are "
-      "explicit. A run whose Newton solve fails is `failed: <why>`, and the others go on. Order: least-squares slope "
+      "explicit. Work: every call of ∇V and of ∇²V that the steps make as they are written, counted in the error run: "
+      "Störmer–Verlet 2 ∇V a step, Yoshida 6, RK4 4; Simpson 3 + its Newton iterations, Gauss–Legendre 2 two and Lobatto "
+      "IIIA–IIIB three per Newton pass, with one ∇²V per stage and Newton iteration (Simpson: one; the LU solves are not counted: "
+      "they are in the run time). Simpson, Störmer–Verlet and Yoshida evaluate ∇V at the step's end and again at the next "
+      "step's start; keeping it (first same as last) would save one a step (Yoshida: three, its inner substeps share "
+      "their ends too). Order: least-squares slope "
       "of log ‖q_N − q(T)‖ against log N over the runs that are ok (round-off flattens it where the errors reach it). "
       "Every run is in nonlinear_problems.csv and report.json (`problems`).";
   for (const std::string& r : references) intro += "\n\n- " + r;
@@ -342,6 +400,10 @@ void add_nonlinear_problems(const nonlinear_settings& s, section_result& out) {
                            "Nonlinear problems in double: state error at T (top) and the largest relative energy error (bottom) "
                            "against N, log-log",
                            panels, columns, 440 * columns, 720});
+  out.add(plot_description{"nonlinear_problems_work",
+                           "Nonlinear problems in double: state error at T against work, the ∇V evaluations of the run as the "
+                           "steps are written (log-log; the Newton solves' ∇²V and LU are not counted, the run time plot has them)",
+                           work_panels, columns, 440 * columns, 380});
   if (timed) {
     plot_description time_plot{"nonlinear_problems_time", "Nonlinear problems in double: state error at T against run time (log-log)",
                                time_panels, columns, 440 * columns, 380};

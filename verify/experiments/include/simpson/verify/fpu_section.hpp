@@ -23,6 +23,7 @@ struct fpu_settings {
   int samples = 1000;  // points of each curve over time
   double exchange_time = 200;         // the exchange of I₁, I₂, I₃ is drawn over t up to this
   double reference_omega_h = 0.1;     // the exchange's reference run (Gauss–Legendre 2)
+  std::vector<int> resonances{3, 4, 6};  // the scan adds each method's ωh where its rotation angle θ is 2π/k
 };
 
 section_result run_fpu(const fpu_settings& s);

@@ -1,9 +1,9 @@
 #pragma once
 // The nonlinear section (beyond the paper): the Simpson variational integrator for any potential
 // and several degrees of freedom. The pendulum's convergence table in multiprecision; error against
-// N and against run time on the pendulum, the Kepler problem and Hénon–Heiles for Simpson and its
-// peers, every implicit one solved by the same Newton rule; the linearized double pendulum of the
-// authors' 2024 work, with its discrete energy.
+// N, against force evaluations and against run time on the pendulum, the Kepler problem, Hénon–Heiles
+// and the FPU chain for Simpson and its peers, every implicit one solved by the same Newton rule; the
+// linearized double pendulum of the authors' 2024 work, with its discrete energy.
 
 #include <simpson/verify/result_model.hpp>
 #include <simpson/verify/work_precision_section.hpp>  // timing_policy
@@ -15,7 +15,7 @@ namespace simpson::verify {
 
 /// The problems of the error-against-run-time part, by scene name.
 inline const std::vector<std::string>& nonlinear_problem_names() {
-  static const std::vector<std::string> names{"pendulum", "kepler", "henon-heiles"};
+  static const std::vector<std::string> names{"pendulum", "kepler", "henon-heiles", "fpu"};
   return names;
 }
 
@@ -34,6 +34,7 @@ struct nonlinear_settings {
   std::vector<long long> N{64, 128, 256, 512, 1024, 2048, 4096};
   double eccentricity = 0.6;      // Kepler
   unsigned reference_digits = 32;  // the exact solutions and Hénon–Heiles' reference run
+  double fpu_T = 2;                // the FPU chain (the fpu section's m, ω and start) up to T
   timing_policy timing{20, 0.25};
   // The linearized double pendulum.
   std::vector<long long> double_pendulum_N{10, 20, 40, 80, 160};

@@ -1,0 +1,41 @@
+#pragma once
+// The work of a nonlinear run in force evaluations: a potential that counts the calls of ∇V and ∇²V
+// its steps make, as they are written (no call is cached or merged), so that error can be set against
+// work that does not depend on the machine or the implementation's speed.
+
+#include <utility>
+
+namespace simpson::verify::detail {
+
+/// How many times a run evaluated the force ∇V and the Hessian ∇²V.
+struct evaluation_count {
+  long long gradients = 0, hessians = 0;
+};
+
+/// `Potential` with its ∇V and ∇²V calls counted into an evaluation_count (V itself, used only for the
+/// energy that the run watches, is not counted).
+template <class Potential>
+class counting_potential {
+ public:
+  counting_potential(Potential inner, evaluation_count& count) : inner_(std::move(inner)), count_(&count) {}
+  template <class Vector>
+  auto value(const Vector& q) const {
+    return inner_.value(q);
+  }
+  template <class Vector>
+  auto gradient(const Vector& q) const {
+    ++count_->gradients;
+    return inner_.gradient(q);
+  }
+  template <class Vector>
+  auto hessian(const Vector& q) const {
+    ++count_->hessians;
+    return inner_.hessian(q);
+  }
+
+ private:
+  Potential inner_;
+  evaluation_count* count_;
+};
+
+}  // namespace simpson::verify::detail
