@@ -122,6 +122,23 @@ TEST(Experiments, Table1ReproducesTheSimpsonStateRowAndTheOrders) {
   EXPECT_NEAR(number(cell(orders, 3, "order_least_squares")), 4, 0.05);
   EXPECT_NEAR(number(cell(orders, 0, "order_least_squares")), 2, 0.05);  // Newmark momentum
   EXPECT_EQ(cell(orders, 7, "order_least_squares").value(), "exact");       // Simpson H_d
+  // Each row's order is held against the order the exact scheme's enclosures prove: eight
+  // expectations, all held.
+  ASSERT_EQ(t.expectations.size(), 8u);
+  for (const expectation& e : t.expectations) EXPECT_TRUE(e.holds) << e.key << ": " << e.observed;
+  EXPECT_EQ(t.expectations[3].key, "order-symplectic-simpson-state");
+  EXPECT_EQ(t.expectations[7].key, "order-symplectic-simpson-energy-hamiltonien-discret");
+}
+
+TEST(Experiments, AnOrderAgreesWithTheProvedOneWithinAHalfOrBothExact) {
+  EXPECT_EQ(order_agrees("4", 4.02), true);
+  EXPECT_EQ(order_agrees("4", 3.55), true);
+  // A third-order run against a proved fourth order fails; a rule of "within 1" would pass it.
+  EXPECT_EQ(order_agrees("4", 3.02), false);
+  EXPECT_EQ(order_agrees("2", std::nullopt), false);  // a proved order, yet every error at round-off
+  EXPECT_EQ(order_agrees("exact", std::nullopt), true);
+  EXPECT_EQ(order_agrees("exact", 4.0), false);  // the exact scheme conserves it, the run does not
+  EXPECT_EQ(order_agrees("undecided (a log2 ratio is not within 1/2 of an integer)", 4.0), std::nullopt);
 }
 
 TEST(Experiments, StabilityFindsTheLedgersIntervalsAndDecidesFaultsInItsPrecision) {
@@ -236,6 +253,12 @@ TEST(Experiments, TheStiffChainIsDecidedByItsFastModes) {
   // In the second band (12, 24) the slow modes sit in (0, 8) and the fast ones in (12, 24): stable.
   EXPECT_EQ(cell(t, 2, "modes").value(), "2 in (0, 8), 2 in (12, 24)");
   for (const expectation& e : out.expectations) EXPECT_TRUE(e.holds) << e.key << ": " << e.observed;
+  // The run is enclosed: every figure of the growth carries its radius, far below its size.
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    const figure& exponent = cell(t, r, "growth_exponent");
+    EXPECT_FALSE(exponent.radius().empty()) << exponent.full_text();
+    EXPECT_LT(std::stod(exponent.radius()), 1e-30) << exponent.full_text();
+  }
 }
 
 TEST(Experiments, FpuSecondBandKeepsTheSchemesOwnInvariantNotTheFlows) {
@@ -337,6 +360,24 @@ TEST(Experiments, LongRunDriftIsExplainedByTheRoundedDeterminantAndEnclosedAbove
     EXPECT_GT(abs(phase), mpfr("1e-6"));  // a phase error of the scheme, not of the rounding
   }
   EXPECT_EQ(enclosed, 3);
+  // The drift law: linear for Simpson and Newmark in double (|detⁿ − 1| = 2000 n eps there, far above
+  // the round-off's walk); in mpfr:50 at 2000 steps it is under 100 eps √n, and not predicted.
+  ASSERT_EQ(out.expectations.size(), 2u);
+  for (const expectation& e : out.expectations) {
+    EXPECT_TRUE(e.holds) << e.key << ": " << e.observed;
+    EXPECT_EQ(e.observed.rfind("linear: drift slope", 0), 0u) << e.observed;
+  }
+  EXPECT_EQ(out.expectations[0].key, "drift-law-simpson-double");
+}
+
+TEST(Experiments, AnEnergyDriftIsClassedAtTheMidpointsOfTheThreeLaws) {
+  EXPECT_EQ(energy_drift_class(0.02), "bounded");
+  // A random walk of round-off is not a linear drift: the stability tables' growth classes (linear from
+  // 0.5) would call it one.
+  EXPECT_EQ(energy_drift_class(0.5), "random walk");
+  EXPECT_EQ(energy_drift_class(0.74), "random walk");
+  EXPECT_EQ(energy_drift_class(0.999), "linear");
+  EXPECT_EQ(energy_drift_class(2), "faster than linear");
 }
 
 TEST(Experiments, AboveDoubleTheWorkPrecisionErrorsAreEnclosuresOfTheSchemesErrors) {

@@ -39,9 +39,11 @@ constexpr std::array<long_run_case, 3> long_run_cases{{{scheme_id::simpson, moni
 
 const char* energy_name(monitored_energy e) { return e == monitored_energy::discrete ? "H_d" : "H"; }
 
+
 struct long_run {
   table_row row;
   series drift, phase_measured, phase_predicted;  // against t, one point per window
+  std::optional<expectation> drift_law;            // where the section predicts the energy's change
 };
 
 /// Above double, the run's figures enclosed: every iterate (an exact binary value) enters an interval
@@ -115,7 +117,8 @@ long_run run_long(const long_run_case& c, const precision& prec, long long steps
                // Measured as markers, predicted as a line drawn over them: where they agree, both show.
                // A phase error is the scheme's, whatever energy the run monitors: named after the scheme.
                series(fmt::format("{} measured", traits_of(c.scheme).name), line_style::points, style.color, style.point),
-               series(fmt::format("{} predicted", traits_of(c.scheme).name), line_style::lines, style.color, style.point)};
+               series(fmt::format("{} predicted", traits_of(c.scheme).name), line_style::lines, style.color, style.point),
+               std::nullopt};
   phase_point<Real> y = y0;
   // The unwrapped angle is 2π·turns + angle: an integer count of branch crossings, not a running sum
   // of ~θ per step (a sum of 1e9 increments in double errs by up to 1e9 ulp(1e8)/2 ≈ 7 rad).
@@ -191,13 +194,37 @@ long_run run_long(const long_run_case& c, const precision& prec, long long steps
     predicted = detail::enclosed_figure(enclosed->predicted_phase_error);
     ratio = detail::enclosed_figure(interval(enclosed->measured_phase_error / enclosed->predicted_phase_error));
   }
+  // The drift law, for the runs whose exact map conserves the energy watched (Simpson's H_d,
+  // Newmark's H): each step of the rounded matrix multiplies its own invariant quadratic form, within
+  // O(eps) of the watched energy, by det Φ, so the energy drifts linearly, by |detⁿ − 1| after n steps
+  // (here n d (1 + (n − 1) d / 2), d = det Φ − 1; the next term is (n d)²/6 relative, and the law is
+  // used where |n d| < 1e-3). Beside it the round-off of each step moves the energy like a random walk,
+  // typically eps √n. The law is predicted where it is at least 100 times that walk, and the run's
+  // drift slope must then be linear's. Its size is shown beside the measured change, not judged: the
+  // remainder is the rounding's bias, which no bound here makes small (measured 0.15% of the law).
+  const Real slope = log_log_slope(times, maxima, use);
+  const Real n(steps), root_n = sqrt(n), unit = eps<Real>();
+  const Real nd = n * det_minus_one, law = abs(Real(nd * (1 + (n - 1) * det_minus_one / 2)));
+  if (ran && c.scheme != scheme_id::rk4 && abs(nd) < Real(1e-3) && law >= 100 * unit * root_n) {
+    const std::string measured_class = energy_drift_class(static_cast<double>(slope));
+    out.drift_law = expectation{
+        fmt::format("drift-law-{}-{}", traits_of(c.scheme).name, prec.name()),
+        fmt::format("In {}, {}'s {} drifts linearly in t, by the rounded matrix's |detⁿ − 1|, above the round-off's random walk.",
+                    prec.name(), traits_of(c.scheme).name, energy_name(c.monitored)),
+        fmt::format("linear: |detⁿ − 1| = {} (det Φ − 1 = {}, from the rounded entries exactly; n = {}) is at least 100 times the "
+                    "random walk's eps √n = {}",
+                    simpson::to_string(law, 4), simpson::to_string(det_minus_one, 4), steps, simpson::to_string(Real(unit * root_n), 2)),
+        fmt::format("{}: drift slope {} (log-log, second half); largest relative change {} against the law's {}", measured_class,
+                    simpson::to_string(slope, 3), simpson::to_string(overall, 4), simpson::to_string(law, 4)),
+        measured_class == "linear"};
+  }
   out.row = {figure::text(std::string(traits_of(c.scheme).name)),
              figure::text(energy_name(c.monitored)),
              figure::text(prec.name()),
              figure::integer(steps),
              ran ? largest : status,
              ran ? last : figure{},
-             ran ? figure::of(log_log_slope(times, maxima, use)) : figure{},
+             ran ? figure::of(slope) : figure{},
              figure::of(det_minus_one),
              figure::of(Real(abs(det_minus_one) * Real(steps))),
              figure::of(Real(phase_per_step / Real(theta))),
@@ -209,6 +236,10 @@ long_run run_long(const long_run_case& c, const precision& prec, long long steps
 }
 
 }  // namespace
+
+std::string energy_drift_class(double slope) {
+  return slope < 0.25 ? "bounded" : slope < 0.75 ? "random walk" : slope < 1.5 ? "linear" : "faster than linear";
+}
 
 section_result run_long_time(const long_time_settings& s) {
   section_result out;
@@ -260,6 +291,7 @@ section_result run_long_time(const long_time_settings& s) {
         return run_long<Real>(c, prec, steps, s.windows, s.omega_h);
       });
       rows.add(std::move(r.row));
+      if (r.drift_law) out.expect(std::move(*r.drift_law));
       energy_panel.curves.push_back(std::move(r.drift));
       phase_panel.curves.push_back(std::move(r.phase_measured));
       phase_panel.curves.push_back(std::move(r.phase_predicted));

@@ -9,9 +9,13 @@
 #include <simpson/verify/table1_enclosed.hpp>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <map>
+#include <optional>
 
 namespace simpson::verify {
 namespace {
@@ -133,7 +137,7 @@ void add_convention_search(section_result& out, const std::array<published_row, 
 
 /// The exact schemes' errors at the paper's meshes, enclosed (table1_enclosed.hpp): guaranteed digits
 /// beside the double run, and the orders they prove.
-void add_enclosed_table(section_result& out) {
+std::array<enclosed_table_row, 8> add_enclosed_table(section_result& out) {
   const std::array<enclosed_table_row, 8> enclosed = enclosed_table1(40, 12);
   out.text("The same errors for the exact schemes (no rounding), enclosed in interval arithmetic (MPFI, 40 digits, π "
            "enclosed): every digit shown is guaranteed, the radius covers the rest. They are what the double run "
@@ -147,9 +151,47 @@ void add_enclosed_table(section_result& out) {
            figure::text(enclosed[r].values[2]), figure::text(enclosed[r].order)});
   }
   out.add(std::move(t));
+  return enclosed;
+}
+
+/// "Symplectic Simpson", "energy (HH-exact)" as "symplectic-simpson-energy-hh-exact".
+std::string slug(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (std::isalnum(static_cast<unsigned char>(c))) out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    else if (!out.empty() && out.back() != '-') out += '-';
+  }
+  while (!out.empty() && out.back() == '-') out.pop_back();
+  return out;
+}
+
+/// Each row's order in double against the order its exact scheme's enclosures prove: the prediction
+/// rests on the exact scheme alone, so a changed step, error or fit in the double run fails it.
+void add_order_expectations(section_result& out, const std::array<enclosed_table_row, 8>& enclosed,
+                            const std::vector<std::optional<double>>& least_squares, const std::vector<long long>& meshes) {
+  for (std::size_t r = 0; r < enclosed.size() && r < least_squares.size(); ++r) {
+    const std::optional<bool> agrees = order_agrees(enclosed[r].order, least_squares[r]);
+    if (!agrees) continue;  // the enclosures decided no order: nothing is predicted
+    const published_row& row = published_rows()[r];
+    out.expect({"order-" + slug(std::string(row.scheme) + " " + row.quantity),
+                fmt::format("The order of {}'s {} error in double is the order of the exact scheme.", row.scheme, row.quantity),
+                enclosed[r].order == "exact" ? std::string("exact: every error of the exact scheme's run encloses 0 (MPFI)")
+                                             : fmt::format("order {}, proved by MPFI enclosures of the exact scheme's errors at N = 10, 20, 40 "
+                                                           "(both log₂ ratios within ½ of it)",
+                                                           enclosed[r].order),
+                least_squares[r] ? fmt::format("least-squares order {:.3f} over N = {}", *least_squares[r], fmt::join(meshes, ", "))
+                                 : std::string("every error at the round-off floor: exact"),
+                *agrees});
+  }
 }
 
 }  // namespace
+
+std::optional<bool> order_agrees(const std::string& proved, std::optional<double> least_squares) {
+  if (proved == "exact") return !least_squares.has_value();
+  if (proved.empty() || proved.find_first_not_of("0123456789") != std::string::npos) return std::nullopt;
+  return least_squares && std::abs(*least_squares - std::stod(proved)) < 0.5;
+}
 
 section_result run_table1(const table1_settings& s) {
   const std::array<published_row, 8> rows = table_rows(s);
@@ -196,6 +238,7 @@ section_result run_table1(const table1_settings& s) {
   table orders{"orders", "", "", order_columns};
 
   std::vector<std::string> not_reproduced;
+  std::vector<std::optional<double>> least_squares;  // each row's order in double; none when exact
   for (const published_row& row : rows) {
     std::vector<double> h, e;
     std::vector<bool> use;
@@ -223,6 +266,7 @@ section_result run_table1(const table1_settings& s) {
     }
     overview.add(std::move(wide_row));
     const bool all_masked = std::none_of(use.begin(), use.end(), [](bool u) { return u; });
+    least_squares.push_back(all_masked ? std::nullopt : std::optional<double>(log_log_slope(h, e, use)));
     table_row order_row{figure::text(row.scheme), figure::text(row.quantity),
                         all_masked ? figure::text("exact") : figure::of(log_log_slope(h, e, use))};
     for (std::size_t k = 0; k + 1 < e.size(); ++k) {
@@ -245,7 +289,7 @@ section_result run_table1(const table1_settings& s) {
   for (const std::string& n : not_reproduced) not_reproduced_list.add({figure::text(n)});
   out.add(std::move(not_reproduced_list));
 
-  if (s.m == 1) add_enclosed_table(out);
+  if (s.m == 1) add_order_expectations(out, add_enclosed_table(out), least_squares, s.meshes);
   out.add(figure1_plot(s.m, s.figure_meshes));
   add_convention_search(out, rows, s.printed_digits);
 

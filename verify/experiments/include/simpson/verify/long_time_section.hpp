@@ -4,6 +4,8 @@
 
 #include <simpson/verify/result_model.hpp>
 
+#include <string>
+
 namespace simpson::verify {
 
 struct long_time_settings {
@@ -15,5 +17,9 @@ struct long_time_settings {
 };
 
 section_result run_long_time(const long_time_settings& s);
+
+/// An energy's change against t, classed by its log-log slope at the midpoints between the three laws:
+/// bounded (0), a random walk of round-off (½), a linear drift (1); above 1.5 "faster than linear".
+std::string energy_drift_class(double slope);
 
 }  // namespace simpson::verify

@@ -24,4 +24,9 @@ struct table1_settings {
 
 section_result run_table1(const table1_settings& s);
 
+/// Whether a row's least-squares order in double (none: every point at the round-off floor) agrees
+/// with the order its exact scheme's enclosures prove ("2", "4", "exact"): within ½ of the integer,
+/// the margin that proves it, or both exact. None when `proved` decides no order (undecided).
+std::optional<bool> order_agrees(const std::string& proved, std::optional<double> least_squares);
+
 }  // namespace simpson::verify
