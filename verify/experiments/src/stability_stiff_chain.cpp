@@ -118,7 +118,11 @@ enclosed_growth enclosed_run(const dense_matrix<mpfr>& phi, const mpfr& fast, in
     double largest = 0;
     for (const interval& x : square) largest = std::max(largest, static_cast<double>(upper(interval(abs(x)))));
     const int shift = std::ilogb(largest);  // entries up to 64 ‖P‖² before the shift: in double's range
-    for (interval& x : square) x = ldexp(x, -shift);
+    // No shift at all when the largest entry is in [1, 2): Boost 1.74's ldexp of an mpfi_float by 0
+    // gives NaN under clang (found by the sanitizer suite).
+    if (shift != 0) {
+      for (interval& x : square) x = ldexp(x, -shift);
+    }
     scale = 2 * scale + shift;
     P = std::move(square);
     throw_if_interrupted();
