@@ -118,11 +118,9 @@ enclosed_growth enclosed_run(const dense_matrix<mpfr>& phi, const mpfr& fast, in
     double largest = 0;
     for (const interval& x : square) largest = std::max(largest, static_cast<double>(upper(interval(abs(x)))));
     const int shift = std::ilogb(largest);  // entries up to 64 ‖P‖² before the shift: in double's range
-    // No shift at all when the largest entry is in [1, 2): Boost 1.74's ldexp of an mpfi_float by 0
-    // gives NaN under clang (found by the sanitizer suite).
-    if (shift != 0) {
-      for (interval& x : square) x = ldexp(x, -shift);
-    }
+    // MPFI's own exact scaling by 2^−shift (Boost 1.74's ldexp of an mpfi_float by 0 gives NaN under
+    // clang: found by the sanitizer suite).
+    for (interval& x : square) mpfi_mul_2si(x.backend().data(), x.backend().data(), -shift);
     scale = 2 * scale + shift;
     P = std::move(square);
     throw_if_interrupted();
@@ -204,7 +202,8 @@ void add_stiff_chain(const stability_report& region, const std::vector<double>& 
                   fmt::format("The stiff chain (r = {}) with its fast modes at ω²h² ≈ {} grows as its modes predict.", simpson::to_string(ratio, 4),
                               simpson::to_string(aim)),
                   fmt::format("{}: the modes' x = ω_k²h² of the h that runs, {} (Sturm, exact)", predicted.growth, predicted.modes),
-                  fmt::format("{}: log-log exponent {:.4g} ± {} (enclosed) over n = 2^{}..2^{}", fitted, std::stod(exponent_figure.value()),
+                  fmt::format("{}: log-log exponent {} ± {} (enclosed) over n = 2^{}..2^{}", fitted,
+                              [&] { const std::string d = display(exponent_figure, 4); return d.substr(0, d.find(" ±")); }(),
                               exponent_figure.radius(), fit_from, doublings),
                   fitted == predicted.growth});
     }
