@@ -89,7 +89,9 @@ sanitize-build: deps
 #     run in the cases kept: the altered papers of cli.exit_codes, the errata of the paper itself in
 #     PaperReading.EveryFormula*, each shape's breaking input in ShapesOnADocument.*.
 # Reduced: cli.exit_codes runs the family scene to s = 2, the corrected paper's claims without the four
-# on Gamma (PaperReading.ACopyWithTheErrataCorrected* has them) and no coqc (cli_test.sh main-reduced); cli.beyond_scene runs the beyond scene's claims with 4 samples, but family-symplectic
+# on Gamma (PaperReading.ACopyWithTheErrataCorrected* has them), the quick scene without table1 and
+# work_precision (Report.* run them), no changed Table 1 (ChangedTable.*), and no coqc
+# (cli_test.sh main-reduced); cli.beyond_scene runs the beyond scene's claims with 4 samples, but family-symplectic
 # (41 s there; Ledger/ClaimVerdict.IsAsExpected/family_symplectic runs it), and its nonlinear section
 # at a small size (every problem and table; cli_test.sh beyond-scene-reduced); cli.interruption
 # interrupts the process group at each kind of moment once (cli_test.sh interruption-reduced);

@@ -276,6 +276,9 @@ For $0 \leq t \leq T$ in $N$ elements, $h = \frac{T}{N}$, the nodes at $t_j = j 
 \begin{equation}\label{average} \frac{q_{j+1} - 2 q_j + q_{j-1}}{h^2} + \frac{\om^2}{4} (q_{j+1} + 2 q_j + q_{j-1}) = 0 \end{equation}
 The average scheme is linearly stable. Averaging is an unconditionally stable method. Averaging, some say, is a conditionally stable method.
 The leapfrog scheme is stable. Leapfrog is an unconditionally stable method.
+Leapfrog, with a small step, is conditionally stable. Averaging, loosely, is conditionally stable.
+\begin{equation}\label{antidamped} \frac{q_{j+1} - 2 q_j + q_{j-1}}{h^2} - \om^2 q_j = 0 \end{equation}
+Antidamping, with a small step, is conditionally stable. Antidamping is unstable.
 \begin{equation}\label{taylorup} q_{j+1} = q_j + h {{\dd q}\over{\dd t}} + \frac{h^2}{2} {{\dd^2 q}\over{\dd t^2}} + {\rm O}(h^3) \end{equation}
 \begin{equation}\label{taylorwrong} q_{j-1} = q_j - h {{\dd q}\over{\dd t}} - \frac{h^2}{2} {{\dd^2 q}\over{\dd t^2}} + {\rm O}(h^3) \end{equation}
 Leapfrog discretizes the equation to second order. Leapfrog, loosely, discretizes it to fourth order.
@@ -593,6 +596,21 @@ TEST_F(ShapesOnADocument, UnconditionalStability) {
   const claim_result leapfrog = judge("sv", "The leapfrog scheme is {stability}.", "Leapfrog is an {qualifier} stable method.");
   EXPECT_EQ(leapfrog.outcome, verdict::erratum);
   EXPECT_NE(leapfrog.correction.find("changes sign at h*omega = 2"), std::string::npos) << leapfrog.correction;
+  // "conditionally stable" in the hole itself: leapfrog's band (0, 2) holds it, with its Coq lemma;
+  // of a scheme stable for every step it is an erratum.
+  const claim_result conditional = judge("sv", "Leapfrog, with a small step, is {stability}.", "");
+  EXPECT_EQ(conditional.outcome, verdict::holds) << conditional.note << conditional.evidence.dump();
+  EXPECT_FALSE(conditional.certificate.empty());
+  EXPECT_NE(conditional.evidence["exact"]["computed"].get<std::string>().find("stable (negative) exactly for h*omega in (0, 2)"), std::string::npos)
+      << conditional.evidence.dump();
+  EXPECT_EQ(judge("average", "Averaging, loosely, is {stability}.", "").outcome, verdict::erratum);
+  // q'' = +omega^2 q discretised: real roots rho, 1/rho for every step. "Conditionally stable" needs a
+  // band where the discriminant is negative: a shape that took "not for every step" for "conditionally"
+  // would pass it.
+  const claim_result antidamped = judge("antidamped", "Antidamping, with a small step, is {stability}.", "");
+  EXPECT_EQ(antidamped.outcome, verdict::erratum);
+  EXPECT_NE(antidamped.correction.find("is stable for no h*omega > 0"), std::string::npos) << antidamped.correction;
+  EXPECT_EQ(judge("antidamped", "Antidamping is {stability}.", "").outcome, verdict::holds);
 }
 
 TEST_F(ShapesOnADocument, TaylorExpansion) {

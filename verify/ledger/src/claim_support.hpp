@@ -226,23 +226,4 @@ struct monomial_potential {
   }
 };
 
-/// Proves f(V, values) ≡ 0 on the grid for V = q^k, k = 0..4: hence for every polynomial V of
-/// degree ≤ 4, the identity being linear in V. `f` is generic over the scalar of `values`.
-template <class F>
-claim_result identity_for_quartic_potentials(const std::string& reduction, const std::vector<std::string>& variables,
-                                             const std::vector<int>& bounds, F&& f, std::string note) {
-  bool all = true;
-  json per_potential = json::array();
-  for (int k = 0; k <= 4; ++k) {
-    const monomial_potential V{k};
-    const proof p = prove_zero_on_grid(reduction + "; V(q) = q^" + std::to_string(k), variables, bounds,
-                                       [&](const auto& values) { return f(V, values); });
-    all = all && p.proved;
-    per_potential.push_back(p.evidence);
-  }
-  json evidence;
-  evidence["exact"] = per_potential;
-  return confirmed_if(all, evidence, std::move(note));
-}
-
 }  // namespace simpson::verify::detail

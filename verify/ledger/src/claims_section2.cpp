@@ -1,4 +1,4 @@
-// Section 2: the classical variational scheme and the Newmark map.
+// Section 2: the Newmark map (the classical scheme's claims are proof shapes' records in claims/paper.toml).
 
 #include "claim_support.hpp"
 #include "claims_section2.hpp"
@@ -17,26 +17,6 @@
 
 namespace simpson::verify::detail {
 namespace {
-
-claim_result check_classical_euler_lagrange(const run_context&) {
-  // dL_d/dq_r(q_{j-1}, q_j) + dL_d/dq_l(q_j, q_{j+1}) + h (schema-ordre-deux) = 0: a polynomial of
-  // degree <= 4 in each q and of degree 1 in m.
-  return identity_for_quartic_potentials(
-      "h = theta; dL_d/dq_r(q_{j-1},q_j) + dL_d/dq_l(q_j,q_{j+1}) (exact differences) + h (schema-ordre-deux)",
-      {"m", "q_{j-1}", "q_j", "q_{j+1}"}, {1, 4, 4, 4},
-      [&](const monomial_potential& V, const auto& v) {
-        using S = std::decay_t<decltype(v[0])>;
-        const S h = theta_variable<S>();
-        const S m(v[0]), qp(v[1]), q(v[2]), qn(v[3]);
-        const auto potential = [&](const S& x) { return V(x); };
-        const auto dV = [&](const S& x) { return V.derivative(x); };
-        return exact_derivative([&](const S& x) { return classical_lagrangian(m, h, potential, qp, x); }, q) +
-               exact_derivative([&](const S& x) { return classical_lagrangian(m, h, potential, x, qn); }, q) +
-               h * classical_scheme_residual(m, h, dV, qp, q, qn);
-      },
-      "Proved for every polynomial V of degree <= 4 (the identity is linear in V); for a general smooth V it is the "
-      "chain rule on V((q_l + q_r)/2).");
-}
 
 /// y_{j+1} from Φ, with p_j = −∂L_d/∂q_l(q_j, q_{j+1}) and p_{j+1} = ∂L_d/∂q_r(q_j, q_{j+1}).
 claim_result check_newmark_discrete_system(const run_context&) {
@@ -95,7 +75,6 @@ claim_result check_newmark_identification(const run_context& ctx) {
 }  // namespace
 
 void add_section2_checks(check_registry& checks) {
-  checks.add("classical-euler-lagrange", check_classical_euler_lagrange);
   checks.add("newmark-discrete-system", check_newmark_discrete_system);
   checks.add("newmark-identification", check_newmark_identification);
 }

@@ -1,5 +1,5 @@
-// Prose the paper states without a formula: the abstract's unqualified "stable" and "explicit",
-// and the conventions Section 8 states (and those it leaves unstated).
+// Prose the paper states without a formula: the abstract's unqualified "explicit" (its "stable" is a record of
+// the unconditional-stability shape), and the conventions Section 8 states (and those it leaves unstated).
 
 #include "claim_support.hpp"
 #include "claims_unformulated.hpp"
@@ -23,38 +23,6 @@ namespace {
 /// conservation of an approximate energy."
 quoted_sentence abstract_sentence(const run_context& ctx) {
   return quote(ctx, "It is a {qualities} scheme satisfying the conservation of an approximate energy.");
-}
-
-claim_result check_abstract_stable(const run_context& ctx) {
-  const quoted_sentence said = abstract_sentence(ctx);
-  const std::string stated = said.containing("qualities", {{"conditionnally stable", "conditionally stable"},
-                                                           {"conditionally stable", "conditionally stable"},
-                                                           {"unconditionally stable", "unconditionally stable"},
-                                                           {"inconditionally stable", "unconditionally stable"},
-                                                           {"unstable", "unstable"},
-                                                           {"stable", "stable, unqualified"}});
-  const auto par = unit_oscillator_in_theta();
-  const stability_report report = analyse_three_term_scheme([&](const symbolic& qp, const symbolic& q, const symbolic& qn) {
-    return three_term_residual(par, qp, q, qn);
-  });
-  std::string bands;
-  bool everywhere = false;
-  for (const stability_band& b : report.bands) {
-    if (!b.stable) continue;
-    everywhere = everywhere || (b.x_from == 0 && !b.to);
-    bands += (bands.empty() ? "" : " or ") + b.omega_h_from + " < omega h < " + (b.omega_h_to.empty() ? "infinity" : b.omega_h_to);
-  }
-  json evidence;
-  evidence["exact"] = report.evidence;
-  evidence["stated"] = stated;
-  const std::string computed = everywhere ? "unconditionally stable" : "conditionally stable: stable exactly for " + bands;
-  const bool conditional = !everywhere && !bands.empty();
-  if (bands.empty()) return confirmed_if(false, evidence);
-  if ((conditional && stated == "conditionally stable") || (!conditional && stated != "unstable")) {
-    return confirmed_if(true, evidence, "Computed: " + computed + ".");
-  }
-  return words_erratum(evidence, "The scheme is " + computed + " (Section 5's own condition (stabilite) is the first band)",
-                       "The abstract's 'stable' carries no condition; Section 5 and the conclusion say conditionally stable.");
 }
 
 /// Whether the internal equation (equation-milieu-intervalle) is linear in q_m for V = q^k: its
@@ -189,7 +157,6 @@ claim_result check_experiment_conventions(const run_context& ctx) {
 }  // namespace
 
 void add_abstract_checks(check_registry& checks) {
-  checks.add("abstract-stable", check_abstract_stable);
   checks.add("abstract-explicit", check_abstract_explicit);
 }
 

@@ -31,8 +31,8 @@ class coq_printer {
   std::string term(const ex& e) {
     if (GiNaC::is_a<GiNaC::numeric>(e)) return number(GiNaC::ex_to<GiNaC::numeric>(e));
     if (GiNaC::is_a<GiNaC::symbol>(e)) {
-      const std::string name = coq_identifier(GiNaC::ex_to<GiNaC::symbol>(e).get_name());
-      symbols_.emplace(name, e);
+      const std::string name = coq_symbol_identifier(GiNaC::ex_to<GiNaC::symbol>(e).get_name());
+      note_symbol(name, e);
       return name;
     }
     // GiNaC orders the operands of a sum or a product, and picks the sign of a sum inside a product,
@@ -188,10 +188,19 @@ class coq_printer {
     coq_printer inner;
     GiNaC::numeric sign(1);  // X <> 0 and −X <> 0 say the same: the canonical sign
     const std::string text = (GiNaC::is_a<GiNaC::add>(e) ? inner.signed_sum_text(e, sign) : inner.term(e)) + " <> 0";
-    symbols_.insert(inner.symbols_.begin(), inner.symbols_.end());
+    for (const auto& [name, symbol] : inner.symbols_) note_symbol(name, symbol);
     functions_.insert(inner.functions_.begin(), inner.functions_.end());
     for (const auto& [n, inner_e] : inner.nonzero_) push_unique(n, inner_e);
     push_unique(text, e);
+  }
+
+  /// Two different symbols printed as one identifier would make the lemma quantify over one variable
+  /// where the statement has two: a special case of it (q_{j-1} = q_{j+1}), proved in its place.
+  void note_symbol(const std::string& name, const ex& symbol) {
+    const auto [at, inserted] = symbols_.emplace(name, symbol);
+    if (!inserted && !at->second.is_equal(symbol)) {
+      throw unsupported("two symbols, " + to_text(at->second) + " and " + to_text(symbol) + ", would both be " + name + " in Coq");
+    }
   }
 
   void push_unique(const std::string& text, const ex& e) {
@@ -386,6 +395,25 @@ std::optional<std::string> refutation_lemma(const std::string& name, const ex& l
 std::string coq_identifier(const std::string& name) {
   std::string out;
   for (const char c : name) out += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  if (out.empty() || std::isdigit(static_cast<unsigned char>(out.front()))) out = "v_" + out;
+  return out;
+}
+
+std::string coq_symbol_identifier(const std::string& name) {
+  std::string out;
+  for (const char c : name) {
+    if (std::isalnum(static_cast<unsigned char>(c)) || c == '_') {
+      out += c;
+    } else if (c == '+') {
+      out += "p";  // q_j+1: q_jp1
+    } else if (c == '-') {
+      out += "m";  // q_j-1: q_jm1
+    } else if (c == '/') {
+      out += "over";  // q_j+1/2: q_jp1over2
+    } else {
+      out += '_';
+    }
+  }
   if (out.empty() || std::isdigit(static_cast<unsigned char>(out.front()))) out = "v_" + out;
   return out;
 }

@@ -34,7 +34,12 @@ coq_export coq_certificate(const std::string& claim_id, const std::string& state
 /// The certificate, or why there is none, and the refuted statements' negations, into `result`.
 void record_certificate(claim_result& result, const coq_export& certificate);
 
-/// A Coq identifier from a claim id or a symbol name: letters, digits and '_'.
+/// A Coq identifier from a claim id or a goal name: letters, digits and '_' (every other character).
 std::string coq_identifier(const std::string& name);
+
+/// A Coq identifier from a symbol's name, keeping apart what coq_identifier would merge: '+' as p,
+/// '-' as m, '/' as over (q_j+1, q_j-1, q_j+1/2: q_jp1, q_jm1, q_jp1over2); letters, digits and '_'
+/// as they are, anything else '_'. The export refuses two symbols that still print alike.
+std::string coq_symbol_identifier(const std::string& name);
 
 }  // namespace simpson::verify::detail

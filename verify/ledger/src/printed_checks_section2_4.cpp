@@ -1,4 +1,4 @@
-// §2 as printed: L_d and its scheme, Newmark's discrete system and matrix (the other claims of
+// §2 as printed: Newmark's discrete system (the other claims of
 // §2–4 are proof shapes' records in claims/paper.toml).
 
 #include "check_registry.hpp"
@@ -14,35 +14,6 @@ namespace simpson::verify::detail {
 namespace {
 
 using GiNaC::ex;
-
-printed_outcome classical_euler_lagrange(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
-  const potential_function V = [&d](const ex& x) { return d.general_V(x); };
-  // L_d as printed against L_d derived (affine interpolant, midpoint rule), V uninterpreted.
-  const ex derived_L = d.classical_lagrangian(V, d.q_l, d.q_r);
-  printed_outcome o = compare("L_d", printed_side(r, "lagrangien-discret"), derived_L,
-                              classical_lagrangian(d.m, d.h, V, d.q_l, d.q_r));
-  // The printed scheme against the Euler-Lagrange equation of the printed L_d.
-  const GiNaC::symbol& l = GiNaC::ex_to<GiNaC::symbol>(d.q_l);
-  const GiNaC::symbol& rr = GiNaC::ex_to<GiNaC::symbol>(d.q_r);
-  const auto euler_lagrange_of = [&](const ex& L) {
-    return L.diff(rr).subs(GiNaC::lst{d.q_l == d.q_prev, d.q_r == d.q_j}) + L.diff(l).subs(GiNaC::lst{d.q_l == d.q_j, d.q_r == d.q_next});
-  };
-  const ex euler_lagrange = euler_lagrange_of(printed_side(r, "lagrangien-discret"));
-  const auto factor = equation_factor(printed_side(r, "schema-ordre-deux"), euler_lagrange, {d.q_prev, d.q_j, d.q_next});
-  printed_outcome scheme;
-  scheme.holds = factor.has_value();
-  scheme.proved = factor ? "dL_d/dq_r(q_{j-1}, q_j) + dL_d/dq_l(q_j, q_{j+1}) of the printed L_d = (" + text_of(*factor) +
-                               ") x printed (schema-ordre-deux), V uninterpreted"
-                         : "the Euler-Lagrange equation of the printed L_d is not a multiple of the printed (schema-ordre-deux)";
-  if (!scheme.holds) scheme.correction = "as derived: " + text_of(euler_lagrange) + " = 0";
-  const auto core = equation_factor(classical_scheme_residual(d.m, d.h, general_force, d.q_prev, d.q_j, d.q_next),
-                                    euler_lagrange_of(derived_L), {d.q_prev, d.q_j, d.q_next});
-  scheme.derived_holds = core.has_value();
-  scheme.derived = core ? "core classical_scheme_residual = derived Euler-Lagrange equation / (" + text_of(*core) + ")"
-                        : "core classical_scheme_residual is not the derived Euler-Lagrange equation";
-  return both(o, scheme);
-}
 
 printed_outcome newmark_system(const paper_reading& r) {
   const symbolic_derivation& d = derivation();
@@ -67,7 +38,6 @@ printed_outcome newmark_system(const paper_reading& r) {
 }  // namespace
 
 void add_printed_checks_section2_4(check_registry& checks) {
-  checks.add_printed("classical-euler-lagrange", {"lagrangien-discret", "schema-ordre-deux"}, classical_euler_lagrange);
   checks.add_printed("newmark-discrete-system", {"systeme-dynamique-discret-ordre-2#0", "systeme-dynamique-discret-ordre-2#1"}, newmark_system);
 }
 

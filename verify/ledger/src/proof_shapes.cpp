@@ -198,7 +198,7 @@ const std::map<std::string, proof_shape>& proof_shapes() {
          with_where({{"scheme", argument_kind::formula, true, "a linear three-term scheme (= 0) whose first and last coefficients are equal"},
                      {"sequence", argument_kind::symbols, true, "its three states q_{j-1}, q_j, q_{j+1}", 3},
                      {"variable", argument_kind::formula, true, "the variable the scheme's roots depend on, a product of positive symbols", 0, "", true},
-                     pattern_with_hole("sentence", "the sentence's pattern: the hole {stability} (stable, linearly stable, unstable)", "stability"),
+                     pattern_with_hole("sentence", "the sentence's pattern: the hole {stability} (stable, linearly stable, conditionally or unconditionally stable, unstable)", "stability"),
                      pattern_with_hole("qualifier", "optionally, a sentence with the hole {qualifier} (unconditionally, conditionally)", "qualifier", false)}),
          unconditional_stability_shape});
     add({"root-criterion", "a stability criterion stated on the roots' modulus, against the root condition on every region of variable > 0", "scheme",

@@ -358,23 +358,35 @@ claim_result root_criterion_shape(const shape_call& call, const run_context& ctx
   return result;
 }
 
-/// "the scheme is {stability}" (stable, linearly stable, unstable), optionally with "{qualifier}
-/// stable" (unconditionally, or the paper's French "inconditionally"; conditionally): against the root
-/// condition on every ωh > 0 of a reversible linear three-term scheme. Unconditionally stable when its
-/// discriminant has no root or pole on variable > 0 and is negative there (Sturm sequences; Coq: the
-/// sign for every positive symbol); else stable only on the bands between them.
+/// "the scheme is {stability}" (stable, linearly stable, unstable; "conditionally stable" or
+/// "unconditionally stable" in the hole itself), optionally with "{qualifier} stable" (unconditionally,
+/// or the paper's French "inconditionally"; conditionally): against the root condition on every
+/// variable > 0 of a reversible linear three-term scheme. Stable where its discriminant is negative:
+/// unconditionally when it has no root or pole on variable > 0 and is negative there (Sturm sequences;
+/// Coq: the sign for every positive symbol), conditionally when it is negative on some band between
+/// them (Coq: the sign on each band with rational ends), unstable when on none. Unqualified, "stable"
+/// means for every step.
 claim_result unconditional_stability_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const ex scheme = read.formula("scheme");
   const std::vector<GiNaC::symbol> q = read.symbols("sequence");
   const ex v = read.formula("variable");
   const quoted_sentence said = quote(ctx, call.with.at("sentence").values.front());
-  const std::string stated = said.choice("stability", {{"linearly stable", "stable"}, {"stable", "stable"}, {"linearly unstable", "unstable"}, {"unstable", "unstable"}});
-  std::string qualifier = "unconditional";  // no qualifying sentence: stable means for every step
-  if (call.with.count("qualifier")) {
-    qualifier = quote(ctx, call.with.at("qualifier").values.front())
-                    .choice("qualifier", {{"unconditionally", "unconditional"}, {"inconditionally", "unconditional"}, {"conditionally", "conditional"},
-                                          {"conditionnally", "conditional"}});
+  // The qualifier may be in the hole itself; else the qualifying sentence gives it, or the default
+  // (for every step).
+  const std::string stated_words = said.choice(
+      "stability", {{"linearly stable", "stable"}, {"stable", "stable"}, {"unconditionally stable", "unconditionally stable"},
+                    {"inconditionally stable", "unconditionally stable"}, {"conditionally stable", "conditionally stable"},
+                    {"conditionnally stable", "conditionally stable"}, {"linearly unstable", "unstable"}, {"unstable", "unstable"}});
+  const std::string stated = stated_words == "unstable" ? "unstable" : "stable";
+  std::string qualifier = stated_words == "unconditionally stable" ? "unconditional" : stated_words == "conditionally stable" ? "conditional" : "";
+  if (qualifier.empty()) {
+    qualifier = "unconditional";  // no qualifying words: stable means for every step
+    if (call.with.count("qualifier")) {
+      qualifier = quote(ctx, call.with.at("qualifier").values.front())
+                      .choice("qualifier", {{"unconditionally", "unconditional"}, {"inconditionally", "unconditional"}, {"conditionally", "conditional"},
+                                            {"conditionnally", "conditional"}});
+    }
   }
   const std::string scheme_ref = reference_of(call, "scheme");
   claim_result result;
@@ -392,26 +404,59 @@ claim_result unconditional_stability_shape(const shape_call& call, const run_con
     positive.push_back(paper_symbols()[name]);
     inside[paper_symbols()[name]] = 1;
   }
-  if (unconditional) record_certificate(result, coq_certificate(call.claim_id, call.statement, {sign_goal("discriminant", delta, -1, positive, inside)}));
+  // The stable bands: the regions between the discriminant's positive roots and poles where it is
+  // negative (the sign at an inner point; the last region reaches infinity).
+  std::vector<std::string> stable_bands;
+  std::vector<proof_goal> band_goals;
+  rational from = 0;
+  std::string from_text = "0";
+  for (std::size_t k = 0; k <= g->ends.size(); ++k) {
+    const bool last = k == g->ends.size();
+    const rational inner = last ? rational(from + 1) : rational((from + g->ends[k].low) / 2);
+    const std::string to_text = last ? "infinity" : g->text(g->ends[k]);
+    if (g->sign_at(inner) < 0) {
+      stable_bands.push_back("(" + from_text + ", " + to_text + ")");
+      if (!last && g->ends[k].exact() && (k == 0 || g->ends[k - 1].exact())) {
+        band_goals.push_back(g->sign_goal_between("stable_band_" + std::to_string(stable_bands.size()), -1, from, g->ends[k].low));
+      }
+    }
+    if (!last) {
+      from = g->ends[k].high;
+      from_text = to_text;
+    }
+  }
+  const std::string computed = unconditional          ? "unconditional"
+                               : stable_bands.empty() ? "unstable"
+                                                      : "conditional";
+  const bool holds = stated == "stable" ? qualifier == computed : computed == "unstable";
+  if (holds && unconditional) record_certificate(result, coq_certificate(call.claim_id, call.statement, {sign_goal("discriminant", delta, -1, positive, inside)}));
+  if (holds && computed == "conditional" && !band_goals.empty()) record_certificate(result, coq_certificate(call.claim_id, call.statement, band_goals));
   std::string where;
   for (const positive_root& end : g->ends) where += (where.empty() ? "" : ", ") + g->text(end);
+  const std::string bands_text = fmt::format("{} in {}", var, fmt::join(stable_bands, " and "));
   result.evidence["exact"] = {
       {"statement", fmt::format("the root condition of ({}) on every {} > 0", scheme_ref, var)},
       {"stated", {{"scheme", stated}, {"qualifier", qualifier}}},
       {"reversible", "the first and last coefficients are equal (GiNaC normal form; our kernel: " + reversible_own.evidence + ")"},
       {"discriminant", text_of(delta) + " (over the leading coefficient squared)"},
       {"computed", unconditional ? fmt::format("negative for every {} > 0: simple conjugate roots of modulus 1, stable for every step", var)
-                                 : fmt::format("roots or poles at {} = {}: not stable for every step", var, where)},
-      {"own", std::string(unconditional == (stated == "stable" && qualifier == "unconditional") ? "holds" : "fails") +
-                  ": the discriminant's roots and poles on " + var + " > 0 by Sturm sequences, in " + (g->in_square ? "(" + var + ")^2" : var)},
+                   : stable_bands.empty() ? fmt::format("roots or poles at {} = {}, and negative on no region between them: stable for no step", var, where)
+                                          : fmt::format("roots or poles at {} = {}: stable (negative) exactly for {}", var, where, bands_text)},
+      {"own", "holds: the discriminant's roots and poles on " + var + " > 0 by Sturm sequences, in " + (g->in_square ? "(" + var + ")^2" : var) +
+                  ", and its sign between them"},
       {"ginac", "holds: the premise in normal form, and the discriminant as a function of " + var + " alone; its sign is our kernel's"}};
-  if (unconditional && stated == "stable" && qualifier == "unconditional") {
+  if (holds) {
     result.outcome = verdict::holds;
     return result;
   }
   result.outcome = verdict::erratum;
   result.correction = unconditional ? fmt::format("The scheme ({}) is stable for every {} > 0 (unconditionally): its discriminant is negative on the whole half-line", scheme_ref, var)
-                                    : fmt::format("The scheme ({}) is not stable for every {} > 0: its discriminant changes sign at {} = {}", scheme_ref, var, var, where);
+                      : stable_bands.empty()
+                          ? (where.empty() ? fmt::format("The scheme ({}) is stable for no {} > 0: its discriminant is positive on the whole half-line", scheme_ref, var)
+                                           : fmt::format("The scheme ({}) is stable for no {} > 0: its discriminant changes sign at {} = {} and is negative on no region between",
+                                                         scheme_ref, var, var, where))
+                          : fmt::format("The scheme ({}) is not stable for every {} > 0 but conditionally: its discriminant changes sign at {} = {}, and it is stable exactly for {}",
+                                        scheme_ref, var, var, where, bands_text);
   return result;
 }
 

@@ -13,25 +13,13 @@ Ltac nonzero :=
           end
         | apply pow_nonzero; nonzero ].
 
-Lemma classical_euler_lagrange_printed :
-  forall (V : R -> R) (h m q_l q_r : R),
+Lemma classical_euler_lagrange_euler_lagrange :
+  forall (dV : R -> R) (h m q_j q_jm1 q_jp1 : R),
   0 < m ->
   0 < h ->
   h <> 0 ->
-  (((-1) * (V (((1/2) * q_l) + ((1/2) * q_r))) * h) + ((1/2) * ((((-1) * q_l) + q_r) ^ 2) * (/ h) * m))
-  = ((1/2) * ((((((-1) * q_l) + q_r) ^ 2) * (/ (h ^ 2)) * m) + ((-2) * (V (((1/2) * q_l) + ((1/2) * q_r))))) * h).
-Proof.
-  intros.
-  field; repeat split; nonzero.
-Qed.
-
-Lemma classical_euler_lagrange_core :
-  forall (V : R -> R) (h m q_l q_r : R),
-  0 < m ->
-  0 < h ->
-  h <> 0 ->
-  (((-1) * (V (((1/2) * q_l) + ((1/2) * q_r))) * h) + ((1/2) * ((((-1) * q_l) + q_r) ^ 2) * (/ h) * m))
-  = ((1/2) * ((((((-1) * q_l) + q_r) ^ 2) * (/ (h ^ 2)) * m) + ((-2) * (V (((1/2) * q_l) + ((1/2) * q_r))))) * h).
+  ((1/2) * (((-1) * (dV (((1/2) * q_j) + ((1/2) * q_jm1)))) + ((-1) * (dV (((1/2) * q_j) + ((1/2) * q_jp1)))) + (2 * (((-1) * q_jm1) + ((-1) * q_jp1) + (2 * q_j)) * (/ (h ^ 2)) * m)) * h)
+  = (((-1) * (((-1) * q_j) + q_jm1) * (/ h) * m) + ((-1) * (((-1) * q_j) + q_jp1) * (/ h) * m) + ((-1/2) * (dV (((1/2) * q_j) + ((1/2) * q_jm1))) * h) + ((-1/2) * (dV (((1/2) * q_j) + ((1/2) * q_jp1))) * h)).
 Proof.
   intros.
   field; repeat split; nonzero.

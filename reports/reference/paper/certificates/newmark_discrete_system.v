@@ -14,25 +14,25 @@ Ltac nonzero :=
         | apply pow_nonzero; nonzero ].
 
 Lemma newmark_discrete_system_printed :
-  forall h m omega q_j q_j_1 : R,
+  forall h m omega q_j q_jp1 : R,
   0 < m ->
   0 < h ->
   h <> 0 ->
-  (((1/4) * (((-1) * (h ^ 2) * (omega ^ 2) * m * q_j) + ((-1) * (h ^ 2) * (omega ^ 2) * m * q_j_1) + ((-4) * m * q_j) + (4 * m * q_j_1)) * (/ h)) + ((1/4) * (((-1) * (h ^ 2) * (omega ^ 2) * m * q_j) + ((-1) * (h ^ 2) * (omega ^ 2) * m * q_j_1) + ((-4) * m * q_j_1) + (4 * m * q_j)) * (/ h)))
-  = ((1/2) * (((-1) * q_j) + ((-1) * q_j_1)) * (omega ^ 2) * h * m).
+  (((1/4) * (((-1) * (h ^ 2) * (omega ^ 2) * m * q_j) + ((-1) * (h ^ 2) * (omega ^ 2) * m * q_jp1) + ((-4) * m * q_j) + (4 * m * q_jp1)) * (/ h)) + ((1/4) * (((-1) * (h ^ 2) * (omega ^ 2) * m * q_j) + ((-1) * (h ^ 2) * (omega ^ 2) * m * q_jp1) + ((-4) * m * q_jp1) + (4 * m * q_j)) * (/ h)))
+  = ((1/2) * (((-1) * q_j) + ((-1) * q_jp1)) * (omega ^ 2) * h * m).
 Proof.
   intros.
   field; repeat split; nonzero.
 Qed.
 
 Lemma newmark_discrete_system_printed_2 :
-  forall h m omega q_j q_j_1 : R,
+  forall h m omega q_j q_jp1 : R,
   0 < m ->
   0 < h ->
   h <> 0 ->
   m <> 0 ->
-  ((((-1) * q_j) + q_j_1) * (/ h))
-  = ((1/8) * (((((-1) * (h ^ 2) * (omega ^ 2) * m * q_j) + ((-1) * (h ^ 2) * (omega ^ 2) * m * q_j_1) + ((-4) * m * q_j) + (4 * m * q_j_1)) * (/ h)) + ((-1) * (((-1) * (h ^ 2) * (omega ^ 2) * m * q_j) + ((-1) * (h ^ 2) * (omega ^ 2) * m * q_j_1) + ((-4) * m * q_j_1) + (4 * m * q_j)) * (/ h))) * (/ m)).
+  ((((-1) * q_j) + q_jp1) * (/ h))
+  = ((1/8) * (((((-1) * (h ^ 2) * (omega ^ 2) * m * q_j) + ((-1) * (h ^ 2) * (omega ^ 2) * m * q_jp1) + ((-4) * m * q_j) + (4 * m * q_jp1)) * (/ h)) + ((-1) * (((-1) * (h ^ 2) * (omega ^ 2) * m * q_j) + ((-1) * (h ^ 2) * (omega ^ 2) * m * q_jp1) + ((-4) * m * q_jp1) + (4 * m * q_j)) * (/ h))) * (/ m)).
 Proof.
   intros.
   field; repeat split; nonzero.

@@ -14,13 +14,13 @@ Ltac nonzero :=
         | apply pow_nonzero; nonzero ].
 
 Lemma scheme_order_3_euler_lagrange :
-  forall h m omega q_j q_j_1 : R,
+  forall h m omega q_j q_jm1 q_jp1 : R,
   0 < m ->
   0 < h ->
   (((-1) * (h ^ 2) * (omega ^ 2)) + 8) <> 0 ->
   h <> 0 ->
-  ((1/3) * (((((-1) * q_j_1) + ((-1) * q_j_1) + ((-22) * q_j)) * (omega ^ 2)) + ((h ^ 2) * (omega ^ 4) * q_j) + (24 * (((-1) * q_j_1) + ((-1) * q_j_1) + (2 * q_j)) * (/ (h ^ 2)))) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)) * h * m)
-  = (((-1/6) * (((((((-1) * (h ^ 2) * (omega ^ 2)) + 22) * q_j) + (2 * q_j_1)) * (omega ^ 2) * h * m) + (48 * (((-1) * q_j) + q_j_1) * (/ h) * m)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8))) + ((-1/6) * (((((((-1) * (h ^ 2) * (omega ^ 2)) + 22) * q_j) + (2 * q_j_1)) * (omega ^ 2) * h * m) + (48 * (((-1) * q_j) + q_j_1) * (/ h) * m)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)))).
+  ((1/3) * (((((-1) * q_jm1) + ((-1) * q_jp1) + ((-22) * q_j)) * (omega ^ 2)) + ((h ^ 2) * (omega ^ 4) * q_j) + (24 * (((-1) * q_jm1) + ((-1) * q_jp1) + (2 * q_j)) * (/ (h ^ 2)))) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)) * h * m)
+  = (((-1/6) * (((((((-1) * (h ^ 2) * (omega ^ 2)) + 22) * q_j) + (2 * q_jm1)) * (omega ^ 2) * h * m) + (48 * (((-1) * q_j) + q_jm1) * (/ h) * m)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8))) + ((-1/6) * (((((((-1) * (h ^ 2) * (omega ^ 2)) + 22) * q_j) + (2 * q_jp1)) * (omega ^ 2) * h * m) + (48 * (((-1) * q_j) + q_jp1) * (/ h) * m)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)))).
 Proof.
   intros.
   field; repeat split; nonzero.
