@@ -8,10 +8,8 @@
 #include <simpson/verify/printed_table1.hpp>
 #include <simpson/verify/quoted_words.hpp>
 #include <simpson/verify/table1_conventions.hpp>
-#include <simpson/verify/stability_analysis.hpp>
 
 #include <simpson/internal_node.hpp>
-#include <simpson/three_term_scheme.hpp>
 
 #include <cctype>
 #include <map>

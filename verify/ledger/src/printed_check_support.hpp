@@ -139,7 +139,4 @@ struct smooth_expansion {
 };
 smooth_expansion expand_on_smooth(const GiNaC::ex& e, const std::vector<smooth_state>& states, const GiNaC::ex& h, int order = 4);
 
-/// V′ as a function of the point, for the core's templates: x ↦ D[0](V)(x).
-GiNaC::ex general_force(const GiNaC::ex& x);
-
 }  // namespace simpson::verify::detail

@@ -169,10 +169,6 @@ smooth_expansion expand_on_smooth(const ex& e, const std::vector<smooth_state>& 
   return out;
 }
 
-ex general_force(const ex& x) {
-  const GiNaC::symbol y("force_variable");
-  return GiNaC::diff(apply_function("V", {y}), y).subs(y == x);
-}
 
 }  // namespace detail
 
