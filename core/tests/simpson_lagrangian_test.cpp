@@ -13,7 +13,7 @@ namespace {
 using R = rational;
 
 template <class Real>
-Real quartic_potential(const Real& q) {
+Real double_well_potential(const Real& q) {
   return q * q * q * q / 4 - q * q / 3;
 }
 template <class Real>
@@ -26,9 +26,9 @@ TEST(SimpsonLagrangian, IsSimpsonsRuleOfTheLagrangianAlongTheInterpolant) {
   const R m(3, 2), h(1, 7), q_l(-2, 3), q_m(1, 4), q_r(5, 4);
   const auto integrand = [&](const R& s) -> R {
     const R velocity = quadratic_interpolant_derivative(q_l, q_m, q_r, h, s);
-    return m / 2 * velocity * velocity - quartic_potential<R>(quadratic_interpolant(q_l, q_m, q_r, s));
+    return m / 2 * velocity * velocity - double_well_potential<R>(quadratic_interpolant(q_l, q_m, q_r, s));
   };
-  EXPECT_EQ(simpson_lagrangian(m, h, quartic_potential<R>, q_l, q_m, q_r), h * simpson_rule<R>(integrand));
+  EXPECT_EQ(simpson_lagrangian(m, h, double_well_potential<R>, q_l, q_m, q_r), h * simpson_rule<R>(integrand));
 }
 
 TEST(SimpsonLagrangian, KineticPartIsTheExactIntegral) {
@@ -43,7 +43,7 @@ TEST(SimpsonLagrangian, KineticPartIsTheExactIntegral) {
 TEST(SimpsonLagrangian, DerivativeInMidNodeMatchesExactDifference) {
   // L_h is a quartic in q_m for this V, so the Richardson difference is its exact derivative.
   const R m(3, 2), h(1, 7), q_l(-2, 3), q_m(1, 4), q_r(5, 4);
-  const auto L_of_mid = [&](const R& v) -> R { return simpson_lagrangian(m, h, quartic_potential<R>, q_l, v, q_r); };
+  const auto L_of_mid = [&](const R& v) -> R { return simpson_lagrangian(m, h, double_well_potential<R>, q_l, v, q_r); };
   EXPECT_EQ(simpson_lagrangian_dq_mid(m, h, quartic_gradient<R>, q_l, q_m, q_r),
             test::exact_derivative_quartic<R>(L_of_mid, q_m));
 }
@@ -54,7 +54,7 @@ TEST(SimpsonLagrangian, DerivativeInMidNodeMatchesHighPrecisionFiniteDifference)
   const scoped_mpfr_digits digits(200);
   const mpfr m = mpfr(3) / 2, h = mpfr(1) / 7, q_l = mpfr(-2) / 3, q_m = mpfr(1) / 4, q_r = mpfr(5) / 4;
   const mpfr e("1e-50");
-  const auto L_of_mid = [&](const mpfr& v) -> mpfr { return simpson_lagrangian(m, h, quartic_potential<mpfr>, q_l, v, q_r); };
+  const auto L_of_mid = [&](const mpfr& v) -> mpfr { return simpson_lagrangian(m, h, double_well_potential<mpfr>, q_l, v, q_r); };
   const mpfr difference = (L_of_mid(mpfr(q_m + e)) - L_of_mid(mpfr(q_m - e))) / (2 * e);
   using std::abs;
   const mpfr truncation = e * e / 6 * 4 * h * (abs(q_m) + e);

@@ -8,7 +8,7 @@ namespace simpson::verify {
 namespace {
 
 /// The message of the std::invalid_argument that parsing `text` throws ("" if it does not throw).
-std::string error_of(const std::string& text) {
+std::string scene_error_of(const std::string& text) {
   try {
     parse_scene(text, "t.json");
   } catch (const std::invalid_argument& e) {
@@ -47,40 +47,40 @@ TEST(Scene, ClaimsAreKeptInLedgerOrderWithoutDuplicates) {
 }
 
 TEST(Scene, MalformedJsonNamesLineAndColumn) {
-  const std::string message = error_of("{\n  \"name\": \"x\",\n  \"claims\": [,]\n}");
+  const std::string message = scene_error_of("{\n  \"name\": \"x\",\n  \"claims\": [,]\n}");
   EXPECT_TRUE(mentions(message, "scene 't.json': malformed JSON at line 3, column")) << message;
-  EXPECT_TRUE(mentions(error_of(""), "malformed JSON")) << error_of("");
-  EXPECT_TRUE(mentions(error_of("{\"name\": \"x\", \"claims\""), "malformed JSON")) << "truncated";
+  EXPECT_TRUE(mentions(scene_error_of(""), "malformed JSON")) << scene_error_of("");
+  EXPECT_TRUE(mentions(scene_error_of("{\"name\": \"x\", \"claims\""), "malformed JSON")) << "truncated";
 }
 
 TEST(Scene, NumberOverflowIsMalformedJsonNotACrash) {
   // Found by the fuzzer: nlohmann::json throws out_of_range (406), not parse_error, on this.
-  EXPECT_TRUE(mentions(error_of("9999929999992e9999929999992"), "scene 't.json': malformed JSON"));
-  EXPECT_TRUE(mentions(error_of(R"({"name": "x", "claims": "all", "precisions": ["double"], "samples": 1e99999})"),
+  EXPECT_TRUE(mentions(scene_error_of("9999929999992e9999929999992"), "scene 't.json': malformed JSON"));
+  EXPECT_TRUE(mentions(scene_error_of(R"({"name": "x", "claims": "all", "precisions": ["double"], "samples": 1e99999})"),
                        "malformed JSON"));
 }
 
 TEST(Scene, RejectsEveryBadField) {
   const std::string base = R"("name": "x", "claims": ["phi3-det"], "precisions": ["double"])";
-  EXPECT_TRUE(mentions(error_of("[1, 2]"), "top level must be an object"));
-  EXPECT_TRUE(mentions(error_of("{" + base + R"(, "colour": 1})"), "unknown key 'colour'"));
-  EXPECT_TRUE(mentions(error_of(R"({"claims": "all", "precisions": ["double"]})"), "'name' must be a string"));
-  EXPECT_TRUE(mentions(error_of(R"({"name": "Bad Name", "claims": "all", "precisions": ["double"]})"), "'name' must be"));
-  EXPECT_TRUE(mentions(error_of(R"({"name": "x", "precisions": ["double"]})"), "'claims' is missing"));
-  EXPECT_TRUE(mentions(error_of(R"({"name": "x", "claims": [], "precisions": ["double"]})"), "'claims' must be"));
-  EXPECT_TRUE(mentions(error_of(R"({"name": "x", "claims": ["phi4-det"], "precisions": ["double"]})"),
+  EXPECT_TRUE(mentions(scene_error_of("[1, 2]"), "top level must be an object"));
+  EXPECT_TRUE(mentions(scene_error_of("{" + base + R"(, "colour": 1})"), "unknown key 'colour'"));
+  EXPECT_TRUE(mentions(scene_error_of(R"({"claims": "all", "precisions": ["double"]})"), "'name' must be a string"));
+  EXPECT_TRUE(mentions(scene_error_of(R"({"name": "Bad Name", "claims": "all", "precisions": ["double"]})"), "'name' must be"));
+  EXPECT_TRUE(mentions(scene_error_of(R"({"name": "x", "precisions": ["double"]})"), "'claims' is missing"));
+  EXPECT_TRUE(mentions(scene_error_of(R"({"name": "x", "claims": [], "precisions": ["double"]})"), "'claims' must be"));
+  EXPECT_TRUE(mentions(scene_error_of(R"({"name": "x", "claims": ["phi4-det"], "precisions": ["double"]})"),
                        "'claims[0]': unknown claim id 'phi4-det'"));
-  EXPECT_TRUE(mentions(error_of(R"({"name": "x", "claims": [3], "precisions": ["double"]})"), "'claims[0]' must be a string"));
-  EXPECT_TRUE(mentions(error_of(R"({"name": "x", "claims": "all", "precisions": "double"})"), "'precisions' must be"));
-  EXPECT_TRUE(mentions(error_of(R"({"name": "x", "claims": "all", "precisions": ["double", "quad"]})"),
+  EXPECT_TRUE(mentions(scene_error_of(R"({"name": "x", "claims": [3], "precisions": ["double"]})"), "'claims[0]' must be a string"));
+  EXPECT_TRUE(mentions(scene_error_of(R"({"name": "x", "claims": "all", "precisions": "double"})"), "'precisions' must be"));
+  EXPECT_TRUE(mentions(scene_error_of(R"({"name": "x", "claims": "all", "precisions": ["double", "quad"]})"),
                        "'precisions[1]': unknown precision 'quad'"));
-  EXPECT_TRUE(mentions(error_of(R"({"name": "x", "claims": "all", "precisions": ["mpfr:9"]})"), "'precisions[0]'"));
-  EXPECT_TRUE(mentions(error_of("{" + base + R"(, "samples": 0})"), "'samples' must be an integer from 1 to 10000"));
-  EXPECT_TRUE(mentions(error_of("{" + base + R"(, "samples": 2.5})"), "'samples'"));
-  EXPECT_TRUE(mentions(error_of("{" + base + R"(, "samples": "4"})"), "'samples'"));
-  EXPECT_TRUE(mentions(error_of("{" + base + R"(, "seed": -1})"), "'seed' must be a non-negative integer"));
-  EXPECT_TRUE(mentions(error_of("{" + base + R"(, "expected_overrides": {"phi3-det": "maybe"}})"), "is not a verdict"));
-  EXPECT_TRUE(mentions(error_of("{" + base + R"(, "expected_overrides": {"nope": "holds"}})"), "unknown claim id 'nope'"));
+  EXPECT_TRUE(mentions(scene_error_of(R"({"name": "x", "claims": "all", "precisions": ["mpfr:9"]})"), "'precisions[0]'"));
+  EXPECT_TRUE(mentions(scene_error_of("{" + base + R"(, "samples": 0})"), "'samples' must be an integer from 1 to 10000"));
+  EXPECT_TRUE(mentions(scene_error_of("{" + base + R"(, "samples": 2.5})"), "'samples'"));
+  EXPECT_TRUE(mentions(scene_error_of("{" + base + R"(, "samples": "4"})"), "'samples'"));
+  EXPECT_TRUE(mentions(scene_error_of("{" + base + R"(, "seed": -1})"), "'seed' must be a non-negative integer"));
+  EXPECT_TRUE(mentions(scene_error_of("{" + base + R"(, "expected_overrides": {"phi3-det": "maybe"}})"), "is not a verdict"));
+  EXPECT_TRUE(mentions(scene_error_of("{" + base + R"(, "expected_overrides": {"nope": "holds"}})"), "unknown claim id 'nope'"));
 }
 
 TEST(Scene, ExperimentSectionsParseWithDefaultsAndOnlyWhenAsked) {
@@ -106,7 +106,7 @@ TEST(Scene, ExperimentSectionsParseWithDefaultsAndOnlyWhenAsked) {
 
 TEST(Scene, RejectsEveryBadExperimentParameter) {
   const std::string head = R"({"name": "x", )";
-  const auto section = [&](const std::string& body) { return error_of(head + body + "}"); };
+  const auto section = [&](const std::string& body) { return scene_error_of(head + body + "}"); };
   EXPECT_TRUE(mentions(section(R"("table1": 3)"), "'table1' must be an object"));
   EXPECT_TRUE(mentions(section(R"("table1": {"n": [10]})"), "unknown key 'table1.n'"));
   EXPECT_TRUE(mentions(section(R"("table1": {"N": [10, 0]})"), "'table1.N'[1] must be an integer from 1"));

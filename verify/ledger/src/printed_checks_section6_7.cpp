@@ -94,7 +94,7 @@ GiNaC::matrix printed_gamma(const paper_reading& r) {
 }
 
 /// The paper's own example of its hypotheses (α = δ, det Φ = 1): α = δ = 1/2, β = −1, γ = 3/4.
-GiNaC::exmap hypotheses_point() {
+GiNaC::exmap hypotheses_substitution() {
   return {{sym("alpha"), GiNaC::numeric(1, 2)}, {sym("beta"), -1}, {sym("gamma"), GiNaC::numeric(3, 4)}, {sym("delta"), GiNaC::numeric(1, 2)}};
 }
 
@@ -110,11 +110,11 @@ printed_outcome gamma_singular(const paper_reading& r) {
   o.holds = printed.is_zero();
   o.goals.push_back({"printed", determinant_3x3(gamma).subs(on_unit), 0, o.holds});
   o.proved = "det of the printed Gamma at delta = (1 + beta gamma)/alpha: " + text_of(printed) + " (at alpha = delta = 1/2, beta = -1, "
-             "gamma = 3/4: " + text_of(GiNaC::normal(gamma.determinant().subs(hypotheses_point()))) + "); the printed product there: " +
+             "gamma = 3/4: " + text_of(GiNaC::normal(gamma.determinant().subs(hypotheses_substitution()))) + "); the printed product there: " +
              text_of(product);
   if (!o.holds) {
     o.correction = "det Gamma vanishes on alpha delta - beta gamma = 1 for the corrected Gamma (last entry (delta^2 - 1)/2, "
-                   "gamma-system); the printed Gamma's determinant does not (" + text_of(GiNaC::normal(gamma.determinant().subs(hypotheses_point()))) +
+                   "gamma-system); the printed Gamma's determinant does not (" + text_of(GiNaC::normal(gamma.determinant().subs(hypotheses_substitution()))) +
                    " at alpha = delta = 1/2, beta = -1, gamma = 3/4), although the printed product, which is not its determinant, does";
   }
   o.derived_holds = derived.is_zero();

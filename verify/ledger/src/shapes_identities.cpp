@@ -42,13 +42,13 @@ GiNaC::matrix form_matrix(const ex& f, const GiNaC::matrix& y) {
 /// as Section 7 of the paper derives its Q_c) and that agrees with `printed`, a quadratic form in
 /// `state`, in the coefficient of state[keep]^2 (else the first coefficient both have): none when the printed function is not a quadratic
 /// form, or the map conserves no form or more than one family of them.
-struct conserved_form {
+struct found_conserved_form {
   std::optional<ex> form;
   std::string why_none;  // when there is none
   std::string matched;   // the monomial whose coefficient the two share
 };
 
-conserved_form conserved_quadratic_form(const GiNaC::matrix& m, const std::vector<GiNaC::symbol>& state, const ex& printed, unsigned keep) {
+found_conserved_form conserved_quadratic_form(const GiNaC::matrix& m, const std::vector<GiNaC::symbol>& state, const ex& printed, unsigned keep) {
   const unsigned n = m.rows();
   GiNaC::matrix q(n, n), y(n, 1);
   GiNaC::lst unknowns;
@@ -297,7 +297,7 @@ claim_result conserved_shape(const shape_call& call, const run_context& ctx) {
     const GiNaC::symbol kept = read.symbols("keep").front();
     while (keep + 1 < state.size() && state[keep].get_name() != kept.get_name()) ++keep;  // one of them: checked at reading
   }
-  const conserved_form corrected = conserved_quadratic_form(m, state, h, keep);
+  const found_conserved_form corrected = conserved_quadratic_form(m, state, h, keep);
   const std::string change = fmt::format("({})(({}) y) − ({})(y) = {}", reference_of(call, "function"), reference_of(call, "map"),
                                          reference_of(call, "function"), text_of(GiNaC::normal(after - h)));
   if (!corrected.form || !GiNaC::normal(corrected.form->subs(step) - *corrected.form).is_zero()) {
