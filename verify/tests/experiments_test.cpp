@@ -94,6 +94,10 @@ TEST(Figures, AnEnclosedNumberShowsItsRadiusWhenItHasFewerGuaranteedDigitsThanAs
   EXPECT_EQ(narrow.full_text(), "1.4427e-14 ± 3e-31");
   EXPECT_EQ(figure_json(narrow), json("1.4427e-14 ± 3e-31"));
   EXPECT_FALSE(wide == figure::enclosed("1.4e-14", "4e-16"));  // the radius is part of the figure
+  // Without the radius, for a text that states it on its own: the value display shows, no more.
+  EXPECT_EQ(display_value(wide, 3), "1.4e-14");
+  EXPECT_EQ(display_value(narrow, 3), "1.44e-14");
+  EXPECT_EQ(display_value(figure::enclosed("0", "2e-50"), 3), "0");
 }
 
 TEST(Figures, MarkdownCellsEscapePipes) {

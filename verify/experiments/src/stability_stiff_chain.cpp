@@ -203,7 +203,7 @@ void add_stiff_chain(const stability_report& region, const std::vector<double>& 
                               simpson::to_string(aim)),
                   fmt::format("{}: the modes' x = ω_k²h² of the h that runs, {} (Sturm, exact)", predicted.growth, predicted.modes),
                   fmt::format("{}: log-log exponent {} ± {} (enclosed) over n = 2^{}..2^{}", fitted,
-                              [&] { const std::string d = display(exponent_figure, 4); return d.substr(0, d.find(" ±")); }(),
+                              display_value(exponent_figure, 4),
                               exponent_figure.radius(), fit_from, doublings),
                   fitted == predicted.growth});
     }

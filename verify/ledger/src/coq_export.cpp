@@ -390,25 +390,18 @@ std::optional<std::string> refutation_lemma(const std::string& name, const ex& l
   return out;
 }
 
-}  // namespace
-
-std::string coq_identifier(const std::string& name) {
-  std::string out;
-  for (const char c : name) out += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-  if (out.empty() || std::isdigit(static_cast<unsigned char>(out.front()))) out = "v_" + out;
-  return out;
-}
-
-std::string coq_symbol_identifier(const std::string& name) {
+/// Letters, digits and '_' as they are; with `spell_signs`, '+' as p, '-' as m and '/' as over;
+/// every other character '_'; "v_" before a leading digit.
+std::string coq_name(const std::string& name, bool spell_signs) {
   std::string out;
   for (const char c : name) {
     if (std::isalnum(static_cast<unsigned char>(c)) || c == '_') {
       out += c;
-    } else if (c == '+') {
+    } else if (spell_signs && c == '+') {
       out += "p";  // q_j+1: q_jp1
-    } else if (c == '-') {
+    } else if (spell_signs && c == '-') {
       out += "m";  // q_j-1: q_jm1
-    } else if (c == '/') {
+    } else if (spell_signs && c == '/') {
       out += "over";  // q_j+1/2: q_jp1over2
     } else {
       out += '_';
@@ -417,6 +410,12 @@ std::string coq_symbol_identifier(const std::string& name) {
   if (out.empty() || std::isdigit(static_cast<unsigned char>(out.front()))) out = "v_" + out;
   return out;
 }
+
+}  // namespace
+
+std::string coq_identifier(const std::string& name) { return coq_name(name, false); }
+
+std::string coq_symbol_identifier(const std::string& name) { return coq_name(name, true); }
 
 namespace {
 

@@ -269,6 +269,40 @@ std::optional<reversible_scheme> reversible_premise(const ex& scheme, const std:
   return out;
 }
 
+/// A region of v > 0 between consecutive positive roots or poles of the discriminant g (0 first, the
+/// last reaching infinity), with g's sign at an inner point: negative is a stable band.
+struct discriminant_region {
+  std::size_t index;  // the region ends at g.ends[index]; index == g.ends.size() for the last
+  bool last;
+  rational from;
+  std::string from_text, to_text;
+  bool negative;
+  std::string text() const { return "(" + from_text + ", " + to_text + ")"; }
+};
+std::vector<discriminant_region> regions_of(const one_variable& g) {
+  std::vector<discriminant_region> out;
+  rational from = 0;
+  std::string from_text = "0";
+  for (std::size_t k = 0; k <= g.ends.size(); ++k) {
+    const bool last = k == g.ends.size();
+    const rational inner = last ? rational(from + 1) : rational((from + g.ends[k].low) / 2);
+    const std::string to_text = last ? "infinity" : g.text(g.ends[k]);
+    out.push_back({k, last, from, from_text, to_text, g.sign_at(inner) < 0});
+    if (!last) {
+      from = g.ends[k].high;
+      from_text = to_text;
+    }
+  }
+  return out;
+}
+/// Coq's goal that g is negative on a stable band, the `number`-th: none when the band reaches
+/// infinity or an end is only enclosed (Coq gets rational ends).
+std::optional<proof_goal> stable_band_goal(const one_variable& g, const discriminant_region& band, std::size_t number) {
+  const std::size_t k = band.index;
+  if (band.last || !g.ends[k].exact() || (k > 0 && !g.ends[k - 1].exact())) return std::nullopt;
+  return g.sign_goal_between("stable_band_" + std::to_string(number), -1, band.from, g.ends[k].low);
+}
+
 }  // namespace
 
 /// "The scheme is stable when the roots of the corresponding equation are of modulus {modulus}": the
@@ -306,36 +340,27 @@ claim_result root_criterion_shape(const shape_call& call, const run_context& ctx
   std::vector<std::string> stable_bands;
   std::vector<proof_goal> goals{decided("reversible", premise->terms.next, premise->terms.previous)};
   bool agrees = true;
-  rational from = 0;
-  std::string from_text = "0";
-  for (std::size_t k = 0; k <= g->ends.size(); ++k) {
-    const bool last = k == g->ends.size();
-    const rational inside = last ? rational(from + 1) : rational((from + g->ends[k].low) / 2);
-    const bool stable = g->sign_at(inside) < 0;
-    const std::string to_text = last ? "infinity" : g->text(g->ends[k]);
+  for (const discriminant_region& region : regions_of(*g)) {
+    const bool stable = region.negative;
     const bool said_stable = stable ? says_unit_pair : says_real_pair;
     agrees = agrees && said_stable == stable;
-    regions.push_back({{var, "(" + from_text + ", " + to_text + ")"},
+    regions.push_back({{var, region.text()},
                        {"roots", stable ? "conjugate, simple, modulus 1" : "real, rho and 1/rho, rho > 1"},
                        {"root_condition", stable ? "stable" : "unstable"},
                        {"stated_criterion", said_stable ? "stable" : "unstable"}});
     if (stable) {
-      stable_bands.push_back("(" + from_text + ", " + to_text + ")");
-      if (!last && g->ends[k].exact() && (k == 0 || g->ends[k - 1].exact())) {
-        goals.push_back(g->sign_goal_between("stable_band_" + std::to_string(stable_bands.size()), -1, from, g->ends[k].low));
-      }
+      stable_bands.push_back(region.text());
+      if (auto goal = stable_band_goal(*g, region, stable_bands.size())) goals.push_back(std::move(*goal));
     }
-    if (!last) {
-      const positive_root& end = g->ends[k];  // a root of the numerator (a double root ±1), or a pole
+    if (!region.last) {
+      const positive_root& end = g->ends[region.index];  // a root of the numerator (a double root ±1), or a pole
       const bool root = end.exact() ? g->numerator.evaluate(end.low) == 0
                                     : (g->numerator.evaluate(end.low) < 0) != (g->numerator.evaluate(end.high) < 0);
       if (root) {
         agrees = agrees && !says_double;
-        regions.push_back({{var, to_text}, {"roots", "double, modulus 1"}, {"root_condition", "unstable (linear growth)"},
+        regions.push_back({{var, region.to_text}, {"roots", "double, modulus 1"}, {"root_condition", "unstable (linear growth)"},
                            {"stated_criterion", says_double ? "stable" : "unstable"}});
       }
-      from = g->ends[k].high;
-      from_text = to_text;
     }
   }
   result.evidence["exact"] = {
@@ -408,22 +433,10 @@ claim_result unconditional_stability_shape(const shape_call& call, const run_con
   // negative (the sign at an inner point; the last region reaches infinity).
   std::vector<std::string> stable_bands;
   std::vector<proof_goal> band_goals;
-  rational from = 0;
-  std::string from_text = "0";
-  for (std::size_t k = 0; k <= g->ends.size(); ++k) {
-    const bool last = k == g->ends.size();
-    const rational inner = last ? rational(from + 1) : rational((from + g->ends[k].low) / 2);
-    const std::string to_text = last ? "infinity" : g->text(g->ends[k]);
-    if (g->sign_at(inner) < 0) {
-      stable_bands.push_back("(" + from_text + ", " + to_text + ")");
-      if (!last && g->ends[k].exact() && (k == 0 || g->ends[k - 1].exact())) {
-        band_goals.push_back(g->sign_goal_between("stable_band_" + std::to_string(stable_bands.size()), -1, from, g->ends[k].low));
-      }
-    }
-    if (!last) {
-      from = g->ends[k].high;
-      from_text = to_text;
-    }
+  for (const discriminant_region& region : regions_of(*g)) {
+    if (!region.negative) continue;
+    stable_bands.push_back(region.text());
+    if (auto goal = stable_band_goal(*g, region, stable_bands.size())) band_goals.push_back(std::move(*goal));
   }
   const std::string computed = unconditional          ? "unconditional"
                                : stable_bands.empty() ? "unstable"

@@ -111,6 +111,11 @@ std::string display(const figure& f, int digits, bool fixed) {
   return fixed ? fixed_decimal(f.value(), digits) : round_decimal(f.value(), digits);
 }
 
+std::string display_value(const figure& f, int digits, bool fixed) {
+  if (f.what() == figure::kind::number && digits != 0 && !f.radius().empty() && (fixed || significant_digits(f.value()) < digits)) return f.value();
+  return display(f, digits, fixed);
+}
+
 std::optional<double> figure::plottable() const {
   if (double_) return std::isfinite(*double_) && (*double_ == 0 || std::abs(*double_) >= std::numeric_limits<double>::min())
                           ? double_

@@ -94,6 +94,10 @@ std::string fixed_decimal(const std::string& text, int decimals);
 /// input such as ωh shows every digit that tells it from its neighbours; other figures as they are.
 std::string display(const figure& f, int digits, bool fixed = false);
 
+/// What display shows of the value itself, without the radius it may add, for a text that states
+/// the radius on its own ("0.5001 ± 3e-5 (enclosed)").
+std::string display_value(const figure& f, int digits, bool fixed = false);
+
 /// The fault of a state that left its bounded orbit: "unstable (step j)".
 inline figure unstable_at(long long step) { return figure::fault("unstable (step " + std::to_string(step) + ")"); }
 
