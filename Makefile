@@ -51,8 +51,8 @@ bench: configure
 
 # The sanitizer build, in $(SANITIZE_BUILD)/: clang with AddressSanitizer and UndefinedBehaviorSanitizer
 # on every unit (our code instrumented, the third-party libraries' header templates not:
-# scripts/sanitize-ignorelist.txt says which and why), all at -O0 (-g1: line tables only, so reports keep file:line at a third less build
-# time), linked by lld (the test binary's link: 14 s with GNU ld, 3.4 s with lld). clang with ASan
+# scripts/sanitize-ignorelist.txt says which and why), all at -O0 (-g1: line tables only, so
+# reports keep file:line at a third less build time), linked by lld (the test binary's link: 14 s with GNU ld, 3.4 s with lld). clang with ASan
 # compiles at -O0 2.5 to 3.3 times faster than at -O1 (scripts/build-profile),
 # and the suite there runs no long scene (see `sanitize` below), so optimising would cost more build
 # time than it saves run time.

@@ -169,7 +169,6 @@ smooth_expansion expand_on_smooth(const ex& e, const std::vector<smooth_state>& 
   return out;
 }
 
-
 }  // namespace detail
 
 namespace {
