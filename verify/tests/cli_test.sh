@@ -188,7 +188,7 @@ check "bad seed" 2 --scene quick --seed -4 --out "$work/none5"
 check "bad samples" 2 --scene quick --samples 0 --out "$work/none6"
 check "bad enclosure budget" 2 --scene quick --enclosure-budget 39 --out "$work/none6b"
 grep -q -- "--enclosure-budget '39'" "$work/err" || { echo "FAIL bad enclosure budget: not named: $(cat "$work/err")"; failures=$((failures + 1)); }
-check "enclosure budget" 0 --scene quick --claims discriminant-factorization --enclosure-budget 80 --out "$work/budget"
+check "enclosure budget" 0 --scene quick --claims peer-schemes --enclosure-budget 80 --out "$work/budget"
 grep -q '"enclosure_budget_digits": 80' "$work/budget/report.json" || { echo "FAIL enclosure budget: not in report.json"; failures=$((failures + 1)); }
 grep -q '"decision": "holds"' "$work/budget/report.json" || { echo "FAIL enclosure budget: no enclosure decision"; failures=$((failures + 1)); }
 echo '{"name": "x", "claims": [,]}' >"$work/malformed.json"
@@ -316,7 +316,8 @@ echo 'Some other paper.' >"$work/other.tex"
 check "not the paper" 2 --claims phi3-det --paper "$work/other.tex" --out "$work/none-paper2"
 sed 's/\\label{moment-ordre-3}/\\label{moment-3}/' "$paper_src" >"$work/nolabel.tex"
 check "label missing" 2 --claims phi3-det --paper "$work/nolabel.tex" --out "$work/none-paper3"
-grep -q "label 'moment-ordre-3'" "$work/err" || fail "label missing: not named: $(cat "$work/err")"
+grep -q "claims file 'claims/paper.toml', line [0-9]*, field 'with.printed': no .label{moment-ordre-3} in '$work/nolabel.tex'" "$work/err" ||
+  fail "label missing: not named: $(cat "$work/err")"
 sed 's/{11\\over24} \\,  \\omega^2  h^2 +  {{\\omega^4  h^4}\\over48}  $/{11\\over24} \\foo/' "$paper_src" >"$work/unparsable.tex"
 check "formula does not parse" 2 --claims phi3-det --paper "$work/unparsable.tex" --out "$work/none-paper4"
 grep -qF "label Phi3 (line 488): cannot parse the formula: unsupported token at token '\\foo'" "$work/err" || fail "formula does not parse: label, line, token not named: $(cat "$work/err")"
@@ -505,7 +506,7 @@ grep -q '"precisions_applied_to": \[' "$work/prec/report.json" && grep -q '"prec
 grep -q '"precision": "float128"' "$work/prec/report.json" && fail "precisions to sections: a scene precision survived"
 check "precisions with long_time" 2 --scene quick --precisions double --out "$work/none-prec1"
 grep -q 'long_time' "$work/err" || fail "precisions with long_time: the section is not named"
-check "rechecks over the budget" 2 --claims discriminant-factorization --precisions mpfr:100000 --samples 10000 --out "$work/none-prec5"
+check "rechecks over the budget" 2 --claims peer-schemes --precisions mpfr:100000 --samples 10000 --out "$work/none-prec5"
 grep -q 'numeric rechecks: .* (1 claim x 10000 samples x 1 precision)' "$work/err" || fail "rechecks over the budget: $(cat "$work/err")"
 # --certify without coqc on PATH: bad input, named, nothing written.
 # (PATH only for the binary: the checks below need wc and grep.)

@@ -1,6 +1,7 @@
 // The paper as printed: its formulas are read from the LaTeX source and proved against the derived
 // ones in GiNaC; a coefficient changed in the text changes the matching verdict.
 
+#include <simpson/verify/claims_file.hpp>
 #include <simpson/verify/enclosure_decision.hpp>
 #include <simpson/verify/formula_reference.hpp>
 #include <simpson/verify/ledger.hpp>
@@ -74,7 +75,10 @@ TEST(PaperReading, AChangedCoefficientInTheTextChangesTheVerdict) {
   const std::vector<alteration> alterations{
       {"\\label{Phi3}", "{11\\over24}", "{11\\over23}", {"phi3-elimination", "phi3-det", "hd-invariance"}},
       {"can be factorized", "\\over576}", "\\over575}", {"discriminant-factorization"}},
-      {"\\label{hamiltonien-discret}", "\\over12} \\Big)", "\\over13} \\Big)", {"hd-invariance"}},
+      {"\\label{hamiltonien-discret}", "\\over12} \\Big)", "\\over13} \\Big)", {"hd-invariance", "hd-proportional"}},
+      // Phi_3's (2,1) entry is Q_c's gamma (the entries of the printed generic Phi): its 1 - x/8 made
+      // 1 - x/9 moves Q_c's p^2 term alone.
+      {"\\label{Phi3}", "\\over8}}\\big)", "\\over9}}\\big)", {"hd-proportional", "hd-invariance", "phi3-det"}},
       {"\\label{qm-oscillateur-harmonique}", "{{q_\\ell + q_r}\\over2}", "{{q_\\ell + q_r}\\over3}", {"qm-harmonic"}},
       {"\\label{Lagrangien-reduit}", "{{22-h^2", "{{21-h^2", {"reduced-lagrangian"}},
       {"We observe that $ \\, g_r", "-2 \\,  q_m", "-3 \\,  q_m", {"gr-minus-gl"}},
@@ -195,15 +199,15 @@ TEST(PaperReading, ACopyWithTheErrataCorrectedMakesThemHold) {
 
 TEST(PaperReading, KernelsThatDisagreeOnTheDerivedStatementAreItsOwnVerdict) {
   const paper_reading paper = read_paper(embedded_paper());
-  claim broken = find_claim("discriminant-factorization");
-  broken.check = [](const run_context&) {  // our kernel, pretending not to prove the factorisation
+  claim broken = find_claim("derivation-phi3");
+  broken.check = [](const run_context&) {  // our kernel, pretending not to prove the derivation
     claim_result r;
     r.outcome = verdict::fails;
     return r;
   };
   const claim_result r = check_claim(broken, run_context{{precision::parse("double")}, 20230830, 2, &paper});
   EXPECT_EQ(r.outcome, verdict::kernels_disagree);
-  EXPECT_NE(r.note.find("discriminant-factorization"), std::string::npos) << r.note;
+  EXPECT_NE(r.note.find("derivation-phi3"), std::string::npos) << r.note;
   EXPECT_EQ(to_string(r.outcome), "kernels-disagree");
 }
 
@@ -222,12 +226,21 @@ TEST(PaperReading, AClaimNoEnclosureDecidesIsUndecidedWithItsEnclosureNamed) {
 
 TEST(PaperReading, BadSourcesAreNamedWithLabelLineAndToken) {
   paper_source p = embedded_paper();
-  p.text.replace(p.text.find("\\label{moment-ordre-3}"), 22, "\\label{moment-order-3}");
+  p.text.replace(p.text.find("\\label{stabilite}"), 17, "\\label{stability}");
   try {
     read_paper(p);
     ADD_FAILURE();
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("label 'moment-ordre-3'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("label 'stabilite'"), std::string::npos) << e.what();
+  }
+  // A label only a shape record reads: named with the record's line and argument, before anything runs.
+  paper_source renamed = embedded_paper();
+  renamed.text.replace(renamed.text.find("\\label{moment-ordre-3}"), 22, "\\label{moment-order-3}");
+  try {
+    check_claims_file_formulas(renamed);
+    ADD_FAILURE();
+  } catch (const claims_file_error& e) {
+    EXPECT_NE(std::string(e.what()).find("field 'with.printed': no \\label{moment-ordre-3}"), std::string::npos) << e.what();
   }
   const paper_source q = altered("\\label{Phi3}", "{11\\over24}", "{11\\over24} \\unknowncommand");
   try {

@@ -282,7 +282,11 @@ Antidamping, with a small step, is conditionally stable. Antidamping is unstable
 \begin{equation}\label{taylorup} q_{j+1} = q_j + h {{\dd q}\over{\dd t}} + \frac{h^2}{2} {{\dd^2 q}\over{\dd t^2}} + {\rm O}(h^3) \end{equation}
 \begin{equation}\label{taylorwrong} q_{j-1} = q_j - h {{\dd q}\over{\dd t}} - \frac{h^2}{2} {{\dd^2 q}\over{\dd t^2}} + {\rm O}(h^3) \end{equation}
 Leapfrog discretizes the equation to second order. Leapfrog, loosely, discretizes it to fourth order.
+A generic map $\Psi = \begin{pmatrix} u & v \\ w & z \end{pmatrix}$. It conserves $K = \frac{1}{2} w q^2 - \frac{1}{2} v p^2$, and not $K = \frac{1}{2} w q^2 - \frac{1}{2} z p^2$.
+A map of one entry, $\Psi = \begin{pmatrix} u \end{pmatrix}$; a map with a number, $\Psi = \begin{pmatrix} u & 2 \\ w & z \end{pmatrix}$.
 \begin{equation}\label{slopemiddle} g = {{\dd q}\over{\dd t}}(0) = \frac{b - a}{2 h} = \frac{b - a}{h} \end{equation}
+\begin{equation}\label{damped} 2 q_{j+1} - 3 q_j + q_{j-1} = 0 \end{equation}
+Written $a r^2 + b r + c = 0$ with $a = 2$ and $b = -3$, its discriminant $\Delta \equiv b^2 - 4 a c$ is $\Delta = 1$, not $\Delta = -7$; misdefined, $\Delta \equiv b^2 - 2 a c$.
 )";
 
 const std::string declarations = R"(
@@ -377,6 +381,34 @@ TEST_F(ShapesOnADocument, Conserved) {
             detail::text_of(GiNaC::normal(p * p / (2 * m * (1 - w * w * h * h / 4)) + m * w * w / 2 * q * q))) << wrong.evidence.dump();
   // A map with det != 1 conserves no quadratic form: no correction, the claim fails.
   EXPECT_EQ(run("conserved", R"({ map = "mapwrong", function = "energy", state = ['q', 'p'] })").outcome, verdict::fails);
+}
+
+// H = c K for the symbols of a generic matrix named for the entries of `map` (Section 7's Q_c of
+// Phi, as H_d's record reads it): K = -h H, c = -1/h, free of the state.
+TEST_F(ShapesOnADocument, Proportional) {
+  const std::string entries = R"(entries = ['inline:A generic map', 'map'])";
+  const claim_result holds = run("proportional", R"({ printed = "energy", of = 'inline:It conserves', state = ['q', 'p'], )" + entries + " }");
+  EXPECT_EQ(holds.outcome, verdict::holds) << holds.note << holds.evidence.dump();
+  const GiNaC::ex h = paper_symbols()["h"];
+  EXPECT_EQ(holds.evidence["exact"]["factor"].get<std::string>(), detail::text_of(GiNaC::normal(-1 / h)));
+  EXPECT_NE(holds.evidence["exact"]["own"].get<std::string>().find("holds"), std::string::npos) << holds.evidence.dump();
+  EXPECT_FALSE(holds.certificate.empty());
+  EXPECT_EQ(holds.printed["formulas"].back()["parsed"].size(), 4u) << holds.printed.dump();
+  // z for v in the p^2 coefficient: the q^2 coefficients are in the ratio -1/h, the p^2 ones are
+  // not, so a check of one coefficient's ratio (or that the ratio is nonzero) would pass it. The
+  // correction keeps the printed p^2 coefficient.
+  const claim_result wrong = run("proportional", R"({ printed = "energy", of = 'inline:and not', state = ['q', 'p'], )" + entries + " }");
+  EXPECT_EQ(wrong.outcome, verdict::erratum) << wrong.note;
+  EXPECT_NE(wrong.evidence["exact"]["own"].get<std::string>().find("fails: the coefficients of p^2 and q^2"), std::string::npos)
+      << wrong.evidence.dump();
+  EXPECT_EQ(wrong.correction.rfind("the multiple of (inline:and not) with the coefficient of p^2 that (energy) prints: ", 0), 0u) << wrong.correction;
+  const GiNaC::ex m = paper_symbols()["m"], w = paper_symbols()["omega"], q = paper_symbols()["q"], p = paper_symbols()["p"];
+  const GiNaC::ex z = 1 - w * w * h * h / 2, c = 1 / (2 * m) / (-z / 2);
+  EXPECT_EQ(wrong.evidence["corrected"]["multiple"].get<std::string>(),
+            detail::text_of(GiNaC::normal(c * (-m * w * w * h * (1 - w * w * h * h / 4) * q * q / 2 - z * p * p / 2))))
+      << wrong.evidence.dump();
+  // Not a polynomial in the state, or nothing in common: no correction, it fails.
+  EXPECT_EQ(run("proportional", R"({ printed = "energy", of = '$\frac{1}{p}$', state = ['q', 'p'] })").outcome, verdict::fails);
 }
 
 TEST_F(ShapesOnADocument, EulerLagrange) {
@@ -731,6 +763,28 @@ TEST_F(ShapesOnADocument, Characteristic) {
 // are negative on (0, 2) and Q > 0: holds. P's prefactor omega^2 h^2/36 is positive: "all the
 // factors are negative" is then a wording erratum, the product's sign being right. On (0, 3) a factor
 // changes sign at omega h = 2: a check at a point inside (omega h = 1.5) would pass it.
+// Delta = b^2 - 4ac of the printed a r^2 + b r + c, a and b as printed, c solved from the scheme
+// 2 q_{j+1} - 3 q_j + q_{j-1} = 0: c = 1, Delta = 1. The scheme is not reversible, so a shape that
+// took c = a (the roots' product 1, true of the paper's scheme) would find -7, the wrong value the
+// document also prints.
+TEST_F(ShapesOnADocument, Discriminant) {
+  const std::string common = R"(polynomial = "inline:Written:lhs", scheme = "damped:lhs", sequence = ['q_{j-1}', 'q_j', 'q_{j+1}'], root = ['r'], unprinted = ['c'], where = ['inline:with $a =', 'inline:and $b ='])";
+  const claim_result holds = run("discriminant", R"({ printed = 'inline:is $\Delta = 1', definition = "inline:its discriminant", )" + common + " }");
+  EXPECT_EQ(holds.outcome, verdict::holds) << holds.note << holds.evidence.dump();
+  EXPECT_NE(holds.note.find("solved from the scheme: c = 1"), std::string::npos) << holds.note;
+  EXPECT_TRUE(holds.certificate.empty()) << "both sides are the number 1: no Coq lemma 1 = 1";
+  const claim_result wrong = run("discriminant", R"({ printed = 'inline:not $\Delta', definition = "inline:its discriminant", )" + common + " }");
+  EXPECT_EQ(wrong.outcome, verdict::erratum) << wrong.note;
+  EXPECT_NE(wrong.evidence["exact"]["own"].get<std::string>().find("fails"), std::string::npos) << wrong.evidence.dump();
+  EXPECT_EQ(wrong.correction, "as derived: (inline:its discriminant) = 1");
+  // The printed definition is read: b^2 - 2ac is not the polynomial's discriminant, whatever value follows.
+  const claim_result misdefined = run("discriminant", R"({ printed = 'inline:is $\Delta = 1', definition = "inline:misdefined", )" + common + " }");
+  EXPECT_EQ(misdefined.outcome, verdict::erratum) << misdefined.note;
+  EXPECT_EQ(misdefined.correction.rfind("the discriminant of (inline:Written:lhs) is ", 0), 0u) << misdefined.correction;
+  // Without a printed definition: b^2 - 4ac of the printed polynomial.
+  EXPECT_EQ(run("discriminant", R"({ printed = 'inline:is $\Delta = 1', )" + common + " }").outcome, verdict::holds);
+}
+
 TEST_F(ShapesOnADocument, FactorSigns) {
   const auto with = [](const std::string& expression, const std::string& condition, const std::string& sentence) {
     return "{ expression = \"" + expression + "\", condition = \"inline:" + condition + "\", variable = '$\\omega h$', sentence = '" + sentence + "' }";
@@ -882,6 +936,23 @@ TEST(ShapeRecords, BadRecordsAreNamedWithTheirLineAndArgument) {
             std::string::npos);
   EXPECT_NE(error_of("derivative", R"({ function = "ld", variable = ['q_1'], printed = "pnext", arguments = ['q_0', 'q_1'], at = ['q_j'] })")
                 .find("field 'with.at': 1 symbols for the 2 of 'arguments'"),
+            std::string::npos);
+  // The entries of a generic matrix: two references, the first a matrix of distinct symbols, the
+  // second a matrix of its size.
+  EXPECT_NE(error_of("proportional", R"({ printed = "energy", of = 'inline:It conserves', state = ['q', 'p'], entries = ['map'] })")
+                .find("field 'with.entries': 1 references, not 2"),
+            std::string::npos);
+  EXPECT_NE(error_of("proportional", R"({ printed = "energy", of = 'inline:It conserves', state = ['q', 'p'], entries = ['map', 'map'] })")
+                .find("field 'with.entries': label map (line 6): the entry (1, 1), "),
+            std::string::npos);
+  EXPECT_NE(error_of("proportional", R"({ printed = "energy", of = 'inline:It conserves', state = ['q', 'p'], entries = ['inline:a map with a number', 'map'] })")
+                .find("the entry (1, 2), 2, is not one symbol"),
+            std::string::npos);
+  EXPECT_NE(error_of("proportional", R"({ printed = "energy", of = 'inline:It conserves', state = ['q', 'p'], entries = ['inline:A map of one entry', 'map'] })")
+                .find("is 1 x 1 and label map (line 6) is 2 x 2"),
+            std::string::npos);
+  EXPECT_NE(error_of("proportional", R"({ printed = "energy", of = 'inline:It conserves', state = ['q', 'p'], entries = ['inline:A generic map', 'one'] })")
+                .find("field 'with.entries': label one (line 12) is not a matrix"),
             std::string::npos);
   const std::string both = error_of("identity", R"({ lhs = "sum", rhs = "expanded" })", "check = \"x\"\n");
   EXPECT_NE(both.find("line"), std::string::npos) << both;

@@ -55,17 +55,6 @@ claim_result check_qm_not_affine(const run_context& ctx) {
   return identity(p, "What was proved: " + proved + ".");
 }
 
-claim_result check_discriminant_factorization(const run_context& ctx) {
-  const auto par = unit_oscillator_in_theta();
-  const proof exact = prove_zero("x = theta^2; (b^2 - 4ac) - x/576 (x - 24)(x - 12)(x - 8), a, b, c from the core",
-                                 discriminant(par.omega2_h2()) - discriminant_factorized(par.omega2_h2()));
-  bool within = false;
-  const json numeric = recheck_with(ctx, "discriminant-factorization", [](const auto& par, const auto&) {
-    return discriminant_factorization_check(par.omega2_h2());
-  }, within);
-  return identity(exact, within, numeric);
-}
-
 /// "Maupertuis's stationary-action principle delta Sigma_d = 0": Sigma_d sums L_h, Simpson's rule on
 /// the Lagrangian m q'^2/2 - V along the interpolant, at fixed times: Hamilton's action. Maupertuis's
 /// principle varies the abbreviated action, the integral of p q' = m q'^2, at fixed energy. Shown: L_h
@@ -116,7 +105,6 @@ claim_result check_maupertuis_naming(const run_context& ctx) {
 void add_section5_checks(check_registry& checks) {
   checks.add("maupertuis-naming", check_maupertuis_naming);
   checks.add("qm-not-affine", check_qm_not_affine);
-  checks.add("discriminant-factorization", check_discriminant_factorization);
 }
 
 }  // namespace simpson::verify::detail

@@ -313,22 +313,6 @@ claim_result check_conserved_form(const run_context&) {
   return r;
 }
 
-claim_result check_hd_proportional(const run_context&) {
-  const proof p = prove_zero_on_grid(std::string(unit_reduction) + "; H_d - ((1 + x/24)/(h (1 - x/8))) Q_c with Q_c from Phi_3",
-                                     {"p", "q"}, 2, [&](const auto& v) {
-                                       using S = std::decay_t<decltype(v[0])>;
-                                       const auto par = theta_oscillator<S>();
-                                       const auto qc = conserved_form_coefficients(simpson_map(par));
-                                       const S x = par.omega2_h2();
-                                       const S scale = (1 + x / 24) / (par.h() * (1 - x / 8));
-                                       const phase_point<S> y{v[0], v[1]};
-                                       return S(discrete_energy(par, y) - scale * quadratic_form(qc[0], qc[1], qc[2], y));
-                                     });
-  return identity(p, "H_d is Q_c of Phi_3 up to the constant (1 + omega^2 h^2/24)/(h (1 - omega^2 h^2/8)), which makes its "
-                     "momentum part p^2/(2m).");
-}
-
-
 }  // namespace
 
 void add_section6_7_checks(check_registry& checks) {
@@ -338,7 +322,6 @@ void add_section6_7_checks(check_registry& checks) {
   checks.add("gamma-determinant", check_gamma_determinant);
   checks.add("gamma-singular", check_gamma_singular);
   checks.add("conserved-form", check_conserved_form);
-  checks.add("hd-proportional", check_hd_proportional);
 }
 
 }  // namespace simpson::verify::detail

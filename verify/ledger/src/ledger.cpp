@@ -47,7 +47,6 @@ const check_registry& registered_checks() {
     add_beyond_fpu_checks(all);
     add_family_checks(all);
     add_printed_checks_section2_4(all);
-    add_printed_checks_section5(all);
     add_printed_checks_section6_7(all);
     add_kernel_claim_goals(all);
     return all;
@@ -166,23 +165,29 @@ std::string& installed_file() {
   return file;
 }
 
-const std::vector<claim>& embedded_ledger() {
-  static const std::vector<claim> claims = [] {
-    std::vector<claim_record> records;
+/// The records of the embedded claims/paper.toml.
+const std::vector<claim_record>& embedded_records() {
+  static const std::vector<claim_record> records = [] {
+    std::vector<claim_record> read;
     try {
-      records = read_claims_with_known_checks(embedded_claims_text(), "claims/paper.toml");
+      read = read_claims_with_known_checks(embedded_claims_text(), "claims/paper.toml");
     } catch (const claims_file_error& e) {
       throw std::logic_error(std::string("the embedded claims file does not read: ") + e.what());  // a harness fault
     }
     // Every registered check (its facets with it) is named by some record: one no record names is
     // dead code.
     std::set<std::string> named;
-    for (const claim_record& r : records) named.insert(r.check);
+    for (const claim_record& r : read) named.insert(r.check);
     for (const auto& [name, check] : detail::registered_checks().all()) {
       if (!named.count(name)) throw std::logic_error("check '" + name + "' is registered but no record of claims/paper.toml names it");
     }
-    return claims_of(records);
+    return read;
   }();
+  return records;
+}
+
+const std::vector<claim>& embedded_ledger() {
+  static const std::vector<claim> claims = claims_of(embedded_records());
   return claims;
 }
 
@@ -218,9 +223,11 @@ void check_claims_file_formulas(const paper_source& document) {
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument("paper '" + document.origin + "', " + e.what());
   }
-  for (const claim_record& r : installed_records()) {
+  const bool installed = installed_claims().has_value();
+  for (const claim_record& r : installed ? installed_records() : embedded_records()) {
     if (r.shape.empty()) continue;
-    const std::string printed = detail::check_shape_formulas(r, installed_file(), document, installed_document());
+    const std::string printed =
+        detail::check_shape_formulas(r, installed ? installed_file() : std::string("claims/paper.toml"), document, installed_document());
     if (!r.statement.empty() || !installed_claims()) continue;
     // A record without a statement: the reports show the TeX it reads.
     for (claim& c : *installed_claims()) {

@@ -1,15 +1,9 @@
-// §5 as printed: the partial derivatives in q_m, the internal equation, q_m, the stability bound,
-// L_hʳ, the three-term scheme, the Taylor display, the truncation error, the characteristic
-// equation and the discriminant.
+// Section 5's series: the derived scheme on the exact solution's Taylor polynomials, its truncation
+// series (derivation-phi3), and a printed series split into its terms and its O(h^k) (the series
+// shapes).
 
-#include "check_registry.hpp"
 #include "printed_check_support.hpp"
 
-#include <simpson/internal_node.hpp>
-#include <simpson/quadratic_interpolation.hpp>
-#include <simpson/reduced_lagrangian.hpp>
-#include <simpson/simpson_lagrangian.hpp>
-#include <simpson/three_term_scheme.hpp>
 
 namespace simpson::verify::detail {
 namespace {
@@ -40,15 +34,6 @@ ex exact_solution_series(const symbolic_derivation& d, const ex& scheme, int ord
   return GiNaC::expand(GiNaC::series_to_poly(GiNaC::series(on_taylor_solution(d, scheme, order), d.h == 0, order)));
 }
 
-/// Δ = b² − 4ac with a and b as printed (and c = a), against the printed factorisation.
-printed_outcome discriminant_factorization(const paper_reading& r) {
-  const symbolic_derivation& d = derivation();
-  const ex a = printed_side(r, "a"), b = printed_side(r, "b");
-  const ex x = d.omega * d.omega * d.h * d.h;
-  return compare("Delta", printed_side(r, "discriminant-factorized"), b * b - 4 * a * a, discriminant(x));
-}
-
-
 }  // namespace
 
 /// The polynomial part of e (its Order terms dropped) and the order k of its O(h^k), 0 when none.
@@ -77,10 +62,6 @@ GiNaC::ex normalised_scheme(const symbolic_derivation& d, const GiNaC::ex& norma
 
 GiNaC::ex truncation_series(const symbolic_derivation& d, const GiNaC::ex& normalised_like, int order) {
   return exact_solution_series(d, normalised_scheme(d, normalised_like), order);
-}
-
-void add_printed_checks_section5(check_registry& checks) {
-  checks.add_printed("discriminant-factorization", {"discriminant-factorized", "a", "b"}, discriminant_factorization);
 }
 
 }  // namespace simpson::verify::detail

@@ -1,9 +1,8 @@
-// §6–7 as printed: p_r, Φ₃ (against the end-to-end derivation), det Φ₃, Γ, det Γ, Q_c and H_d.
+// §6–7 as printed: p_r, Φ₃ (against the end-to-end derivation), det Φ₃, Γ, det Γ and Q_c.
 
 #include "check_registry.hpp"
 #include "printed_check_support.hpp"
 
-#include <simpson/energy.hpp>
 #include <simpson/quadratic_invariant.hpp>
 #include <simpson/simpson_map.hpp>
 #include <simpson/simpson_momentum.hpp>
@@ -13,11 +12,6 @@ namespace simpson::verify::detail {
 namespace {
 
 using GiNaC::ex;
-
-bool is_square(const ex& e, unsigned n) {
-  return GiNaC::is_a<GiNaC::matrix>(e) && GiNaC::ex_to<GiNaC::matrix>(e).rows() == n && GiNaC::ex_to<GiNaC::matrix>(e).cols() == n;
-}
-
 
 /// H(Φ y) − H(y), normalised.
 ex change_under(const ex& H, const ex& phi, const ex& p, const ex& q) { return GiNaC::normal(after_step(H, phi, p, q) - H); }
@@ -158,31 +152,6 @@ printed_outcome conserved_form(const paper_reading& r) {
   return o;
 }
 
-/// H_d as printed is Q_c of the printed Φ₃ up to a constant factor (free of p and q).
-printed_outcome hd_proportional(const paper_reading& r) {
-  const ex& phi = printed_side(r, "Phi3");
-  printed_outcome o;
-  o.property = true;
-  if (!is_square(phi, 2)) {
-    o.proved = "the printed Phi_3 is not a 2 x 2 matrix";
-    return o;
-  }
-  const GiNaC::matrix& M = GiNaC::ex_to<GiNaC::matrix>(phi);
-  const ex Qc = printed_side(r, "Q_c").subs(GiNaC::lst{sym("gamma") == M(1, 0), sym("beta") == M(0, 1)});
-  const auto factor = equation_factor(Qc, printed_side(r, "hamiltonien-discret"), {sym("p"), sym("q")});
-  o.holds = factor.has_value();
-  if (factor) o.goals.push_back(decided("printed", printed_side(r, "hamiltonien-discret"), *factor * Qc));
-  o.proved = factor ? "printed H_d = (" + text_of(*factor) + ") x printed Q_c of the printed Phi_3"
-                    : "printed H_d is not a multiple of printed Q_c of the printed Phi_3";
-  const symbolic_derivation& d = derivation();
-  const ex Qc_derived = d.phi3(1, 0) * d.p * d.p / 2 - d.phi3(0, 1) * d.q * d.q / 2;
-  const auto core = equation_factor(Qc_derived, discrete_energy(parameters(d), phase_point<ex>{d.p, d.q}), {d.p, d.q});
-  o.derived_holds = core.has_value();
-  if (core) o.goals.push_back(decided("core", discrete_energy(parameters(d), phase_point<ex>{d.p, d.q}), *core * Qc_derived));
-  o.derived = core ? "core H_d = (" + text_of(*core) + ") x Q_c of the derived Phi_3" : "core H_d is not a multiple of Q_c of the derived Phi_3";
-  return o;
-}
-
 /// The end-to-end derivation: Φ₃ as derived (each step in GiNaC) against the printed and the core's,
 /// and T_h(q_j) of the derived scheme to O(h¹⁰).
 printed_outcome derivation_phi3(const paper_reading& r) {
@@ -203,7 +172,6 @@ void add_printed_checks_section6_7(check_registry& checks) {
   checks.add_printed("gamma-determinant", {"det Gamma"}, gamma_determinant);
   checks.add_printed("gamma-singular", {"Gamma", "det Gamma"}, gamma_singular);
   checks.add_printed("conserved-form", {"Gamma", "Q_c"}, conserved_form);
-  checks.add_printed("hd-proportional", {"hamiltonien-discret", "Q_c", "Phi3"}, hd_proportional);
 }
 
 }  // namespace simpson::verify::detail

@@ -24,6 +24,8 @@ using GiNaC::ex;
 /// claim in words (its hole {property} must affirm `property`, or deny it: "not symplectic").
 const std::vector<shape_parameter> common_parameters{
     {"where", argument_kind::definitions, false, "displays 'x = ...' whose definitions are put in the other formulas"},
+    {"entries", argument_kind::definitions, false,
+     "two matrices: one printed with a symbol for each entry (Phi = (alpha beta; gamma delta)), then the matrix whose entries they name"},
     {"says", argument_kind::word, false, "the sentence that states the claim, a pattern with the hole {property}"},
     {"property", argument_kind::word, false, "the word the sentence's hole must say (or deny: 'not ...')"}};
 
@@ -91,6 +93,11 @@ const std::map<std::string, proof_shape>& proof_shapes() {
                       "a state symbol whose square's coefficient a correction keeps as printed (the first of the state when left out)", 1, "",
                       false, {}, "state"}}),
          conserved_shape});
+    add({"proportional", "printed = c of, c free of the state and nonzero", "printed",
+         with_where({{"printed", argument_kind::formula, true, "a function of the state"},
+                     {"of", argument_kind::formula, true, "the function it is a constant multiple of"},
+                     {"state", argument_kind::symbols, true, "the symbols c must be free of"}}),
+         proportional_shape});
     add({"euler-lagrange", "printed = 0 is D_2 L(q_{j-1}, q_j) + D_1 L(q_j, q_{j+1}) = 0, up to a factor free of the states", "printed",
          with_where({{"lagrangian", argument_kind::formula, true, "the discrete Lagrangian L(q_0, q_1)"},
                      {"nodes", argument_kind::symbols, true, "its two arguments", 2},
@@ -184,6 +191,16 @@ const std::map<std::string, proof_shape>& proof_shapes() {
                      {"root", argument_kind::symbols, true, "the root r: q_{j-1} = 1, q_j = r, q_{j+1} = r^2", 1},
                      {"unprinted", argument_kind::symbols, false, "coefficients the text names but does not print (c), each one whole coefficient"}}),
          characteristic_shape});
+    add({"discriminant", "the printed value of the discriminant b^2 - 4ac of the printed polynomial a r^2 + b r + c, its unprinted coefficients solved from the scheme",
+         "printed",
+         with_where({{"printed", argument_kind::formula, true, "the printed value of the discriminant"},
+                     {"polynomial", argument_kind::formula, true, "the printed polynomial in the root (its side that is 0)"},
+                     {"definition", argument_kind::formula, false, "the printed definition of the discriminant, b^2 - 4ac, in the polynomial's symbols"},
+                     {"scheme", argument_kind::formula, true, "a linear three-term scheme (= 0)"},
+                     {"sequence", argument_kind::symbols, true, "the scheme's three states q_{j-1}, q_j, q_{j+1}", 3},
+                     {"root", argument_kind::symbols, true, "the polynomial's variable", 1},
+                     {"unprinted", argument_kind::symbols, false, "coefficients the text names but does not print, solved from the scheme"}}),
+         discriminant_shape});
     add({"characteristic-roots", "what a sentence says of the roots of the scheme's characteristic polynomial on the printed interval: complex or real, their product, stability",
          "scheme",
          with_where({{"scheme", argument_kind::formula, true, "a linear three-term scheme (= 0)"},
@@ -277,6 +294,8 @@ std::string check_shape_formulas(const claim_record& record, const std::string& 
   std::optional<shape_reader> read;
   try {
     read.emplace(call, document);
+  } catch (const argument_error& e) {
+    throw claims_file_error(file, record.with.at(e.argument).line, "with." + e.argument, e.what());
   } catch (const std::invalid_argument& e) {
     const auto where = record.with.find("where");
     throw claims_file_error(file, where != record.with.end() ? where->second.line : record.line, where != record.with.end() ? "with.where" : "with",

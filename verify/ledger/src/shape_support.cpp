@@ -10,6 +10,8 @@
 #include <simpson/verify/quoted_words.hpp>
 #include <simpson/verify/tex_math.hpp>
 
+#include <fmt/format.h>
+
 namespace simpson::verify::detail {
 
 using GiNaC::ex;
@@ -39,22 +41,70 @@ shape_reader::shape_reader(const shape_call& call, const paper_source& document)
     : call_(call), document_(document), macros_(defined_macros(document.text)) {
   if (call.document) declared_ = declared_names(*call.document);
   const auto where = call.with.find("where");
-  if (where == call.with.end()) return;
-  for (const std::string& reference : where->second.values) {
-    definitions_.push_back(read_definition(document_, macros_, reference));
-    const definition& d = definitions_.back();
-    definitions_read_.push_back({{"reference", reference},
-                                 {"label", d.locator + ", put in"},
-                                 {"line", d.line},
-                                 {"tex", folded_space(d.tex)},
-                                 {"parsed", json::array({text_of(d.name) + " = " + text_of(d.value)})}});
+  if (where != call.with.end()) {
+    for (const std::string& reference : where->second.values) {
+      definitions_.push_back(read_definition(document_, macros_, reference));
+      const definition& d = definitions_.back();
+      definitions_read_.push_back({{"reference", reference},
+                                   {"label", d.locator + ", put in"},
+                                   {"line", d.line},
+                                   {"tex", folded_space(d.tex)},
+                                   {"parsed", json::array({text_of(d.name) + " = " + text_of(d.value)})}});
+    }
   }
+  const auto entries = call.with.find("entries");
+  if (entries != call.with.end()) read_entries(entries->second.values);
   // A symbol a definition defines is declared by it (Phi = (map)); what it is defined as must be declared.
   for (const definition& d : definitions_) {
     declared_.insert(d.name.get_name());
     for (int k = 1; d.parameter && k <= 4; ++k) declared_.insert(derivative_name(d.function, d.parameter->get_name(), k, k));  // dq/dt, q(t) defined
   }
   for (const definition& d : definitions_) declared_only(d.value, d.locator);
+}
+
+/// A generic matrix printed with a symbol for each entry (Φ = (α β; γ δ)) named for the entries of
+/// another printed matrix: each symbol is defined as its entry there, the `where` definitions put in.
+void shape_reader::read_entries(const std::vector<std::string>& references) {
+  const auto fail = [](const std::string& what) { throw argument_error("entries", what); };
+  if (references.size() != 2) {
+    fail(fmt::format("{} references, not 2: a printed matrix of symbols, then the matrix whose entries they name", references.size()));
+  }
+  referenced_formula names_read, values_read;
+  ex names, values;
+  try {
+    names_read = read_reference(document_, macros_, references[0]);
+    values_read = read_reference(document_, macros_, references[1]);
+    names = names_read.value.evalm();
+    values = with_definitions(values_read.value, definitions_).evalm();
+  } catch (const std::invalid_argument& e) {
+    fail(e.what());
+  }
+  if (!GiNaC::is_a<GiNaC::matrix>(names)) fail(names_read.locator + " is not a matrix");
+  if (!GiNaC::is_a<GiNaC::matrix>(values)) fail(values_read.locator + " is not a matrix");
+  const GiNaC::matrix& n = GiNaC::ex_to<GiNaC::matrix>(names);
+  const GiNaC::matrix& v = GiNaC::ex_to<GiNaC::matrix>(values);
+  if (n.rows() != v.rows() || n.cols() != v.cols()) {
+    fail(fmt::format("{} is {} x {} and {} is {} x {}", names_read.locator, n.rows(), n.cols(), values_read.locator, v.rows(), v.cols()));
+  }
+  json parsed = json::array();
+  std::set<std::string> named;
+  for (unsigned r = 0; r < n.rows(); ++r) {
+    for (unsigned c = 0; c < n.cols(); ++c) {
+      if (!GiNaC::is_a<GiNaC::symbol>(n(r, c))) {
+        fail(fmt::format("{}: the entry ({}, {}), {}, is not one symbol", names_read.locator, r + 1, c + 1, text_of(n(r, c))));
+      }
+      const GiNaC::symbol& name = GiNaC::ex_to<GiNaC::symbol>(n(r, c));
+      if (!named.insert(name.get_name()).second) fail(fmt::format("{}: the symbol {} names two entries", names_read.locator, name.get_name()));
+      definitions_.push_back({name, v(r, c), fmt::format("{}, entry ({}, {}) of {}", names_read.locator, r + 1, c + 1, values_read.place),
+                              names_read.line, names_read.tex});
+      parsed.push_back(text_of(name) + " = " + text_of(v(r, c)));
+    }
+  }
+  definitions_read_.push_back({{"reference", references[0] + " entries of " + references[1]},
+                               {"label", names_read.place + ", its entries those of " + values_read.locator + ", put in"},
+                               {"line", names_read.line},
+                               {"tex", folded_space(names_read.tex)},
+                               {"parsed", parsed}});
 }
 
 ex shape_reader::formula(const std::string& parameter) {

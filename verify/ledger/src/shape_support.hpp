@@ -16,7 +16,9 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace simpson::verify::detail {
@@ -26,6 +28,13 @@ GiNaC::symbol symbol_named(const std::string& tex);
 
 /// The GiNaC names of the symbols a document declares.
 std::set<std::string> declared_names(const claims_document& d);
+
+/// What is wrong with one argument of a call, found while reading it (its `entries`): the record's
+/// check names that argument's field.
+struct argument_error : std::invalid_argument {
+  argument_error(std::string name, const std::string& what) : std::invalid_argument(what), argument(std::move(name)) {}
+  std::string argument;
+};
 
 /// Reads the formulas of one call from the run's document, with the call's definitions put in, and
 /// keeps what it read for the report.
@@ -59,6 +68,7 @@ class shape_reader {
   json printed() const;
 
  private:
+  void read_entries(const std::vector<std::string>& references);
   void declared_only(const GiNaC::ex& e, const std::string& where) const;
   GiNaC::ex parsed_side(const referenced_formula& equation, const std::string& tex) const;
   void record(const std::string& reference, const std::string& locator, int line, const std::string& tex, const std::optional<GiNaC::ex>& value);
@@ -123,6 +133,7 @@ claim_result solves_shape(const shape_call& call, const run_context& ctx);
 claim_result determinant_shape(const shape_call& call, const run_context& ctx);
 claim_result symplectic_shape(const shape_call& call, const run_context& ctx);
 claim_result conserved_shape(const shape_call& call, const run_context& ctx);
+claim_result proportional_shape(const shape_call& call, const run_context& ctx);
 claim_result euler_lagrange_shape(const shape_call& call, const run_context& ctx);
 claim_result stationary_shape(const shape_call& call, const run_context& ctx);
 claim_result discrete_map_shape(const shape_call& call, const run_context& ctx);
@@ -132,6 +143,7 @@ claim_result stability_interval_shape(const shape_call& call, const run_context&
 claim_result sign_on_interval_shape(const shape_call& call, const run_context& ctx);
 claim_result factor_signs_shape(const shape_call& call, const run_context& ctx);
 claim_result characteristic_shape(const shape_call& call, const run_context& ctx);
+claim_result discriminant_shape(const shape_call& call, const run_context& ctx);
 claim_result characteristic_roots_shape(const shape_call& call, const run_context& ctx);
 claim_result root_criterion_shape(const shape_call& call, const run_context& ctx);
 claim_result quadrature_exactness_shape(const shape_call& call, const run_context& ctx);

@@ -1,6 +1,6 @@
 // The characteristic-polynomial shapes (shape_support.hpp) of a linear three-term scheme, the scheme
 // taken at the geometric sequence q_{j-1} = 1, q_j = r, q_{j+1} = r²: a printed polynomial in r is
-// it up to a factor free of r (characteristic), and what a sentence says of its roots on a printed
+// it up to a factor free of r (characteristic), the printed value of its discriminant (discriminant), and what a sentence says of its roots on a printed
 // interval (characteristic-roots), a criterion on their modulus (root-criterion), and stability for
 // every step (unconditional-stability).
 
@@ -16,6 +16,7 @@
 #include <array>
 #include <map>
 #include <optional>
+#include <vector>
 
 namespace simpson::verify::detail {
 
@@ -47,6 +48,117 @@ std::string coefficient_name(const GiNaC::symbol& r, std::size_t k) { return k =
 
 }  // namespace
 
+namespace {
+
+/// A printed polynomial in the root against a linear three-term scheme at (1, r, r²): both sets of
+/// coefficients, the printed one that sets the scale (the highest power's that is printed), and
+/// the unprinted coefficients (`unprinted`, each one whole coefficient) solved at that scale; or why
+/// the two cannot be compared.
+struct characteristic_reading {
+  ex polynomial, scheme;  // as read, the definitions put in
+  std::vector<GiNaC::symbol> sequence;
+  GiNaC::symbol root;
+  std::string polynomial_ref, scheme_ref;
+  std::array<ex, 3> derived, stated;  // of r^0, r^1, r^2
+  std::map<std::size_t, GiNaC::symbol> holes;
+  std::size_t lead = 2;
+  ex scale;  // printed over derived
+  GiNaC::exmap solved;
+  json solved_text = json::object();
+  std::string why_not;
+};
+
+characteristic_reading read_characteristic(shape_reader& read, const shape_call& call, const std::string& polynomial) {
+  characteristic_reading c;
+  c.polynomial = read.formula(polynomial);
+  c.scheme = read.formula("scheme");
+  c.sequence = read.symbols("sequence");
+  c.root = read.symbols("root").front();
+  c.polynomial_ref = reference_of(call, polynomial);
+  c.scheme_ref = reference_of(call, "scheme");
+  const std::vector<GiNaC::symbol> unprinted = read.has("unprinted") ? read.symbols("unprinted") : std::vector<GiNaC::symbol>{};
+  const ex& printed = c.polynomial;
+  const ex& scheme = c.scheme;
+  const std::vector<GiNaC::symbol>& q = c.sequence;
+  const GiNaC::symbol& r = c.root;
+  const std::string& scheme_ref = c.scheme_ref;
+  const std::string& printed_ref = c.polynomial_ref;
+  const std::optional<three_term_coefficients> terms = linear_three_term(scheme, q);
+  if (!terms) {
+    c.why_not = "The shape decides linear three-term schemes; (" + scheme_ref + ") is not linear in " + q[0].get_name() + ", " + q[1].get_name() +
+                ", " + q[2].get_name() + ".";
+    return c;
+  }
+  c.derived = {GiNaC::normal(terms->previous), GiNaC::normal(terms->current), GiNaC::normal(terms->next)};
+  const std::optional<std::array<ex, 3>> stated = quadratic_coefficients(printed, r);
+  if (!stated) {
+    c.why_not = "(" + printed_ref + ") is not a polynomial of degree at most 2 in " + r.get_name() + ".";
+    return c;
+  }
+  c.stated = *stated;
+  // Each unprinted coefficient is one whole coefficient of the printed polynomial, and in no other.
+  for (const GiNaC::symbol& u : unprinted) {
+    std::optional<std::size_t> at;
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (GiNaC::normal(c.stated[k] - u).is_zero()) {
+        at = k;
+      } else if (c.stated[k].has(u)) {
+        at.reset();
+        break;
+      }
+    }
+    if (!at || c.holes.count(*at)) {
+      c.why_not = "The unprinted " + u.get_name() + " is not one whole coefficient of (" + printed_ref + ") = " + text_of(printed) + ".";
+      return c;
+    }
+    c.holes.emplace(*at, u);
+  }
+  std::optional<std::size_t> lead;
+  for (std::size_t k = 3; k-- > 0;) {
+    if (!c.holes.count(k) && !c.stated[k].is_zero() && !c.derived[k].is_zero()) {
+      lead = k;
+      break;
+    }
+  }
+  if (!lead) {
+    c.why_not = "(" + printed_ref + ") and (" + scheme_ref + ") share no nonzero printed coefficient to compare by.";
+    return c;
+  }
+  c.lead = *lead;
+  c.scale = GiNaC::normal(c.stated[c.lead] / c.derived[c.lead]);
+  for (const auto& [k, u] : c.holes) {
+    c.solved[u] = GiNaC::normal(c.derived[k] * c.scale);
+    c.solved_text[u.get_name()] = fmt::format("{} (the {} coefficient of ({}) at (1, {}, {}^2), times {})", text_of(c.solved[u]),
+                                              coefficient_name(r, k), scheme_ref, r.get_name(), r.get_name(), text_of(c.scale));
+  }
+  return c;
+}
+
+/// The coefficients compared, and the unprinted ones solved ("Not printed, solved from the scheme:
+/// c = ..., the printed r^2 coefficient." in the note), in a verdict's evidence.
+void record_coefficients(claim_result& result, const characteristic_reading& c) {
+  const GiNaC::symbol& r = c.root;
+  result.evidence["exact"]["characteristic_coefficients"] = {
+      {"derived", {text_of(c.derived[0]), text_of(c.derived[1]), text_of(c.derived[2])}},
+      {"printed", {text_of(c.stated[0]), text_of(c.stated[1]), text_of(c.stated[2])}}};
+  if (c.holes.empty()) return;
+  result.evidence["exact"]["unprinted"] = c.solved_text;
+  std::string named;
+  for (const auto& [k, u] : c.holes) {
+    named += (named.empty() ? "" : ", ") + u.get_name() + " = " + text_of(c.solved.at(u));
+    for (std::size_t other = 3; other-- > 0;) {  // equal to a printed one (c = a: the roots' product is 1)
+      if (!c.holes.count(other) && GiNaC::normal(c.solved.at(u) - c.stated[other]).is_zero()) {
+        named += ", the printed " + coefficient_name(r, other) + " coefficient";
+        break;
+      }
+    }
+  }
+  const std::string said = "Not printed, solved from the scheme: " + named + ".";
+  result.note = result.note.empty() ? said : result.note + " " + said;
+}
+
+}  // namespace
+
 /// "This equation can be written a r² + b r + c = 0 with a = ..., b = ...": the printed polynomial
 /// (its coefficients by `where`) is the scheme's at (1, r, r²) times a factor free of r. A
 /// coefficient the text names without printing it (`unprinted`, c) is solved for: it is what makes
@@ -54,12 +166,44 @@ std::string coefficient_name(const GiNaC::symbol& r, std::size_t k) { return k =
 /// highest power: Q_k P(r) = P_k Q(r), decided in both kernels as written, is the statement.
 claim_result characteristic_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
+  const characteristic_reading c = read_characteristic(read, call, "printed");
+  const ex& printed = c.polynomial;
+  const std::vector<GiNaC::symbol>& q = c.sequence;
+  const GiNaC::symbol& r = c.root;
+  const std::string &scheme_ref = c.scheme_ref, &printed_ref = c.polynomial_ref;
+  claim_result result;
+  result.printed = read.printed();
+  if (!c.why_not.empty()) {
+    result.outcome = verdict::fails;
+    result.note = c.why_not;
+    return result;
+  }
+  // The statement: Q_lead · scheme(1, r, r²) = P_lead · printed, the unprinted coefficients put in.
+  const GiNaC::lst geometric{q[0] == 1, q[1] == r, q[2] == r * r};
+  const ex lhs = c.stated[c.lead] * c.scheme.subs(geometric);
+  const ex rhs = c.derived[c.lead] * printed.subs(c.solved);
+  const std::string what = fmt::format("({}) at {} = 1, {} = {}, {} = {}^2 is ({}) times {}", scheme_ref, q[0].get_name(), q[1].get_name(), r.get_name(),
+                                       q[2].get_name(), r.get_name(), printed_ref, text_of(GiNaC::normal(1 / c.scale)));
+  std::string correction = "as derived from (" + scheme_ref + "), scaled to the printed " + coefficient_name(r, c.lead) + " coefficient:";
+  for (std::size_t k = 3; k-- > 0;) {
+    correction += fmt::format(" ({}){}{}", text_of(GiNaC::normal(c.derived[k] * c.scale)), k > 0 ? " " + power_text(r, k) : std::string(), k > 0 ? " +" : "");
+  }
+  result = identity_verdict(call, read, "characteristic", what, lhs, rhs, correction);
+  record_coefficients(result, c);
+  return result;
+}
+
+/// "The discriminant Δ ≡ b² − 4ac can be factorized: Δ = ...": the printed value of the discriminant
+/// of the printed polynomial a r² + b r + c, its coefficients as printed (`where`) and the unprinted
+/// ones solved from the scheme at the printed scale (as `characteristic` does), decided in both
+/// kernels. The printed definition (`definition`, b² − 4ac), when given, is first checked to be the
+/// printed polynomial's discriminant, its symbols as printed; its value is then the one compared.
+claim_result discriminant_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
   const ex printed = read.formula("printed");
-  const ex scheme = read.formula("scheme");
-  const std::vector<GiNaC::symbol> q = read.symbols("sequence");
-  const GiNaC::symbol r = read.symbols("root").front();
-  const std::vector<GiNaC::symbol> unprinted = read.has("unprinted") ? read.symbols("unprinted") : std::vector<GiNaC::symbol>{};
-  const std::string scheme_ref = reference_of(call, "scheme"), printed_ref = reference_of(call, "printed");
+  const characteristic_reading c = read_characteristic(read, call, "polynomial");
+  const GiNaC::symbol& r = c.root;
+  const std::string &polynomial_ref = c.polynomial_ref, printed_ref = reference_of(call, "printed");
   claim_result result;
   result.printed = read.printed();
   const auto cannot = [&](const std::string& why) {
@@ -67,74 +211,32 @@ claim_result characteristic_shape(const shape_call& call, const run_context& ctx
     result.note = why;
     return result;
   };
-  const std::optional<three_term_coefficients> terms = linear_three_term(scheme, q);
-  if (!terms) return cannot("The shape decides linear three-term schemes; (" + scheme_ref + ") is not linear in " + q[0].get_name() + ", " +
-                            q[1].get_name() + ", " + q[2].get_name() + ".");
-  const GiNaC::lst geometric{q[0] == 1, q[1] == r, q[2] == r * r};
-  const std::array<ex, 3> derived{GiNaC::normal(terms->previous), GiNaC::normal(terms->current), GiNaC::normal(terms->next)};
-  const std::optional<std::array<ex, 3>> stated = quadratic_coefficients(printed, r);
-  if (!stated) return cannot("(" + printed_ref + ") is not a polynomial of degree at most 2 in " + r.get_name() + ".");
-  // Each unprinted coefficient is one whole coefficient of the printed polynomial, and in no other.
-  std::map<std::size_t, GiNaC::symbol> holes;
-  for (const GiNaC::symbol& u : unprinted) {
-    std::optional<std::size_t> at;
-    for (std::size_t k = 0; k < 3; ++k) {
-      if (GiNaC::normal((*stated)[k] - u).is_zero()) {
-        at = k;
-      } else if ((*stated)[k].has(u)) {
-        at.reset();
-        break;
-      }
+  if (!c.why_not.empty()) return cannot(c.why_not);
+  const ex discriminant = c.stated[1] * c.stated[1] - 4 * c.stated[2] * c.stated[0];  // b² − 4ac of the printed coefficients
+  ex value = discriminant.subs(c.solved);
+  std::string of = "b^2 - 4ac of (" + polynomial_ref + ")";
+  if (read.has("definition")) {
+    // As printed, before any definition: b² − 4ac of a r² + b r + c, in the printed symbols.
+    const std::optional<std::array<ex, 3>> as_printed = quadratic_coefficients(read.raw("polynomial").value, r);
+    const ex defined = read.raw("definition").value;
+    if (!as_printed) return cannot("(" + polynomial_ref + ") as printed is not a polynomial of degree at most 2 in " + r.get_name() + ".");
+    const ex expected = (*as_printed)[1] * (*as_printed)[1] - 4 * (*as_printed)[2] * (*as_printed)[0];
+    if (!is_zero_expression(normal_difference(defined, expected))) {
+      result.outcome = verdict::erratum;
+      result.correction = fmt::format("the discriminant of ({}) is {}", polynomial_ref, text_of(expected));
+      result.note = fmt::format("As printed: ({}) = {} is not the discriminant of ({}), {}.", reference_of(call, "definition"), text_of(defined),
+                                polynomial_ref, text_of(expected));
+      result.evidence["exact"] = {{"statement", fmt::format("({}) is the discriminant of ({})", reference_of(call, "definition"), polynomial_ref)},
+                                  {"ginac", "fails: " + text_of(normal_difference(defined, expected)) + " ≠ 0"}};
+      return result;
     }
-    if (!at || holes.count(*at)) {
-      return cannot("The unprinted " + u.get_name() + " is not one whole coefficient of (" + printed_ref + ") = " + text_of(printed) + ".");
-    }
-    holes.emplace(*at, u);
+    value = read.formula("definition").subs(c.solved);
+    of = "(" + reference_of(call, "definition") + ")";
   }
-  std::optional<std::size_t> lead;  // the printed coefficient that sets the scale
-  for (std::size_t k = 3; k-- > 0;) {
-    if (!holes.count(k) && !(*stated)[k].is_zero() && !derived[k].is_zero()) {
-      lead = k;
-      break;
-    }
-  }
-  if (!lead) return cannot("(" + printed_ref + ") and (" + scheme_ref + ") share no nonzero printed coefficient to compare by.");
-  const ex scale = GiNaC::normal((*stated)[*lead] / derived[*lead]);  // printed over derived
-  GiNaC::exmap solved;
-  json solved_text = json::object();
-  for (const auto& [k, u] : holes) {
-    solved[u] = GiNaC::normal(derived[k] * scale);
-    solved_text[u.get_name()] = fmt::format("{} (the {} coefficient of ({}) at (1, {}, {}^2), times {})", text_of(solved[u]),
-                                            coefficient_name(r, k), scheme_ref, r.get_name(), r.get_name(), text_of(scale));
-  }
-  // The statement: Q_lead · scheme(1, r, r²) = P_lead · printed, the unprinted coefficients put in.
-  const ex lhs = (*stated)[*lead] * scheme.subs(geometric);
-  const ex rhs = derived[*lead] * printed.subs(solved);
-  const std::string what = fmt::format("({}) at {} = 1, {} = {}, {} = {}^2 is ({}) times {}", scheme_ref, q[0].get_name(), q[1].get_name(), r.get_name(),
-                                       q[2].get_name(), r.get_name(), printed_ref, text_of(GiNaC::normal(1 / scale)));
-  std::string correction = "as derived from (" + scheme_ref + "), scaled to the printed " + coefficient_name(r, *lead) + " coefficient:";
-  for (std::size_t k = 3; k-- > 0;) {
-    correction += fmt::format(" ({}){}{}", text_of(GiNaC::normal(derived[k] * scale)), k > 0 ? " " + power_text(r, k) : std::string(), k > 0 ? " +" : "");
-  }
-  result = identity_verdict(call, read, "characteristic", what, lhs, rhs, correction);
-  result.evidence["exact"]["characteristic_coefficients"] = {
-      {"derived", {text_of(derived[0]), text_of(derived[1]), text_of(derived[2])}},
-      {"printed", {text_of((*stated)[0]), text_of((*stated)[1]), text_of((*stated)[2])}}};
-  if (!holes.empty()) {
-    result.evidence["exact"]["unprinted"] = solved_text;
-    std::string named;
-    for (const auto& [k, u] : holes) {
-      named += (named.empty() ? "" : ", ") + u.get_name() + " = " + text_of(solved[u]);
-      for (std::size_t other = 3; other-- > 0;) {  // equal to a printed one (c = a: the roots' product is 1)
-        if (!holes.count(other) && GiNaC::normal(solved[u] - (*stated)[other]).is_zero()) {
-          named += ", the printed " + coefficient_name(r, other) + " coefficient";
-          break;
-        }
-      }
-    }
-    const std::string said = "Not printed, solved from the scheme: " + named + ".";
-    result.note = result.note.empty() ? said : result.note + " " + said;
-  }
+  const std::string what = fmt::format("{} = ({}), the unprinted coefficients solved from ({})", of, printed_ref, c.scheme_ref);
+  result = identity_verdict(call, read, "discriminant", what, value, printed,
+                            fmt::format("as derived: {} = {}", of, text_of(GiNaC::factor(GiNaC::normal(value)))));
+  record_coefficients(result, c);
   return result;
 }
 

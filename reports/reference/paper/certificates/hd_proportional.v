@@ -13,7 +13,7 @@ Ltac nonzero :=
           end
         | apply pow_nonzero; nonzero ].
 
-Lemma hd_proportional_printed :
+Lemma hd_proportional_proportional :
   forall h m omega p q : R,
   0 < m ->
   0 < h ->
@@ -23,21 +23,6 @@ Lemma hd_proportional_printed :
   m <> 0 ->
   (((1/2) * (/ m) * (p ^ 2)) + ((1/72) * (((-1) * (h ^ 2) * (omega ^ 2)) + 12) * (((-1) * (h ^ 2) * (omega ^ 2)) + 24) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)) * (omega ^ 2) * (q ^ 2) * m))
   = ((1/72) * (((((-1) * (h ^ 2) * (omega ^ 2)) + 12) * (((-1) * (h ^ 2) * (omega ^ 2)) + 24) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24))) * (omega ^ 2) * (q ^ 2) * h * m) + (36 * (((-1) * (h ^ 2) * (omega ^ 2)) + 8) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24))) * (/ m) * (p ^ 2) * h)) * (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)) * (/ h)).
-Proof.
-  intros.
-  field; repeat split; nonzero.
-Qed.
-
-Lemma hd_proportional_core :
-  forall h m omega p q : R,
-  0 < m ->
-  0 < h ->
-  (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) <> 0 ->
-  (((-1) * (h ^ 2) * (omega ^ 2)) + 8) <> 0 ->
-  h <> 0 ->
-  m <> 0 ->
-  (((1/2) * (/ m) * (p ^ 2)) + ((1/72) * (((-1) * (h ^ 2) * (omega ^ 2)) + 12) * (((-1) * (h ^ 2) * (omega ^ 2)) + 24) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)) * (omega ^ 2) * (q ^ 2) * m))
-  = ((-1/72) * (((((-1) * (h ^ 5) * (omega ^ 6) * m) + ((-288) * (omega ^ 2) * h * m) + (36 * (h ^ 3) * (omega ^ 4) * m)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24))) * (q ^ 2)) + ((-36) * (((-1) * (h ^ 3) * (omega ^ 2)) + (8 * h)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + (-24))) * (/ m) * (p ^ 2))) * (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) * (/ (((-1) * (h ^ 2) * (omega ^ 2)) + 8)) * (/ h)).
 Proof.
   intros.
   field; repeat split; nonzero.

@@ -28,9 +28,10 @@ void use_claims_file(const std::string& text, const std::string& file);
 /// the paper; null otherwise.
 const claims_document* installed_document();
 
-/// Reads every formula the installed file's shape records name from `document` (before anything
-/// runs): throws claims_file_error naming the record's argument when one is missing, does not
-/// parse, or uses a symbol the file does not declare.
+/// Reads every formula the installed file's shape records name (the embedded claims/paper.toml's
+/// when no file is installed) from `document`, before anything runs: throws claims_file_error naming
+/// the record's argument when one is missing, does not parse, or uses a symbol the file does not
+/// declare.
 void check_claims_file_formulas(const paper_source& document);
 
 /// The claim with this id; throws std::invalid_argument naming the id when there is none.
