@@ -315,9 +315,11 @@ grep -q "paper '$work/no-such.tex': missing or unreadable" "$work/err" || fail "
 echo 'Some other paper.' >"$work/other.tex"
 check "not the paper" 2 --claims phi3-det --paper "$work/other.tex" --out "$work/none-paper2"
 sed 's/\\label{moment-ordre-3}/\\label{moment-3}/' "$paper_src" >"$work/nolabel.tex"
-check "label missing" 2 --claims phi3-det --paper "$work/nolabel.tex" --out "$work/none-paper3"
+check "label missing" 2 --claims momentum-order-3 --paper "$work/nolabel.tex" --out "$work/none-paper3"
 grep -q "claims file 'claims/paper.toml', line [0-9]*, field 'with.printed': no .label{moment-ordre-3} in '$work/nolabel.tex'" "$work/err" ||
   fail "label missing: not named: $(cat "$work/err")"
+# What the selected claims do not read is not judged: phi3-det reads (Phi3) alone.
+check "label missing, not read" 0 --claims phi3-det --paper "$work/nolabel.tex" --quiet --out "$work/not-read"
 sed 's/{11\\over24} \\,  \\omega^2  h^2 +  {{\\omega^4  h^4}\\over48}  $/{11\\over24} \\foo/' "$paper_src" >"$work/unparsable.tex"
 check "formula does not parse" 2 --claims phi3-det --paper "$work/unparsable.tex" --out "$work/none-paper4"
 grep -qF "label Phi3 (line 488): cannot parse the formula: unsupported token at token '\\foo'" "$work/err" || fail "formula does not parse: label, line, token not named: $(cat "$work/err")"

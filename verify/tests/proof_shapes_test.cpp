@@ -287,6 +287,11 @@ A map of one entry, $\Psi = \begin{pmatrix} u \end{pmatrix}$; a map with a numbe
 \begin{equation}\label{slopemiddle} g = {{\dd q}\over{\dd t}}(0) = \frac{b - a}{2 h} = \frac{b - a}{h} \end{equation}
 \begin{equation}\label{damped} 2 q_{j+1} - 3 q_j + q_{j-1} = 0 \end{equation}
 Written $a r^2 + b r + c = 0$ with $a = 2$ and $b = -3$, its discriminant $\Delta \equiv b^2 - 4 a c$ is $\Delta = 1$, not $\Delta = -7$; misdefined, $\Delta \equiv b^2 - 2 a c$.
+A square map $\Psi = \begin{pmatrix} u & v \\ w & s \end{pmatrix}$ and a form $F = \frac{1}{2} a q^2 + b q p + \frac{1}{2} c p^2$.
+\begin{equation}\label{invsys} G \begin{pmatrix} a \\ b \\ c \end{pmatrix} = \begin{pmatrix} \frac{u^2 - 1}{2} & u w & \frac{w^2}{2} \\ u v & u s + v w - 1 & w s \\
+  \frac{v^2}{2} & v s & \frac{s^2 - 1}{2} \end{pmatrix} \begin{pmatrix} a \\ b \\ c \end{pmatrix} = 0 \end{equation}
+\begin{equation}\label{invsyswrong} G \begin{pmatrix} a \\ b \\ c \end{pmatrix} = \begin{pmatrix} \frac{u^2 - 1}{2} & u w & \frac{w^2}{2} \\ u v & u s + v w - 1 & w s \\
+  \frac{v^2}{2} & v s & \frac{w^2 - 1}{2} \end{pmatrix} \begin{pmatrix} a \\ b \\ c \end{pmatrix} = 0 \end{equation}
 )";
 
 const std::string declarations = R"(
@@ -294,7 +299,8 @@ const std::string declarations = R"(
 title = "Shapes under test"
 [symbols]
 positive = ['m', '\omega', 'h']
-real = ['q', 'p', 'q_0', 'q_1', 'q_m', 'p_0', 'p_1', 'q_{j-1}', 'q_j', 'q_{j+1}', 'a', 'b', 'k', 'x', 'r', 'c', '\theta', 'p_j', 'p_{j+1}', 't', 'T', 'N', 'j']
+real = ['q', 'p', 'q_0', 'q_1', 'q_m', 'p_0', 'p_1', 'q_{j-1}', 'q_j', 'q_{j+1}', 'a', 'b', 'k', 'x', 'r', 'c', '\theta', 'p_j', 'p_{j+1}', 't', 'T', 'N', 'j',
+        'u', 'v', 'w', 's']
 functions = ['\psi', 'g']
 )";
 
@@ -409,6 +415,32 @@ TEST_F(ShapesOnADocument, Proportional) {
       << wrong.evidence.dump();
   // Not a polynomial in the state, or nothing in common: no correction, it fails.
   EXPECT_EQ(run("proportional", R"({ printed = "energy", of = '$\frac{1}{p}$', state = ['q', 'p'] })").outcome, verdict::fails);
+}
+
+// The rows of a printed system for the coefficients of a conserved form, against
+// form(map y) - form(y) (Section 7's Gamma), read from the middle side of "G v = M v = 0". The
+// misprint (w^2 - 1)/2 for (s^2 - 1)/2 is Section 7's own: it agrees with the true entry whenever
+// w = s, so a check on maps with equal entries there would pass it.
+TEST_F(ShapesOnADocument, InvarianceSystem) {
+  const std::string rest = R"(form = 'inline:and a form', map = 'inline:A square map', state = ['q', 'p'], unknowns = ['a', 'b', 'c'])";
+  const claim_result holds = run("invariance-system", R"({ system = "invsys:side2", )" + rest + " }");
+  EXPECT_EQ(holds.outcome, verdict::holds) << holds.note << holds.evidence.dump();
+  EXPECT_NE(holds.evidence["exact"]["own"].get<std::string>().find("holds"), std::string::npos) << holds.evidence.dump();
+  EXPECT_FALSE(holds.certificate.empty());
+  const claim_result wrong = run("invariance-system", R"({ system = "invsyswrong:side2", )" + rest + " }");
+  EXPECT_EQ(wrong.outcome, verdict::erratum) << wrong.note;
+  EXPECT_NE(wrong.evidence["exact"]["own"].get<std::string>().find("fails"), std::string::npos) << wrong.evidence.dump();
+  const GiNaC::ex s = paper_symbols()["s"];
+  const GiNaC::ex w = paper_symbols()["w"];
+  EXPECT_EQ(wrong.correction.rfind("entry (3, 3) is " + detail::text_of(GiNaC::normal((s * s - 1) / 2)) + ", not " +
+                                       detail::text_of(GiNaC::normal((w * w - 1) / 2)) + "; as derived from ",
+                                   0),
+            0u)
+      << wrong.correction;
+  EXPECT_FALSE(wrong.refutation.empty()) << "the printed rows refuted in Coq";
+  EXPECT_NE(wrong.certificate.find("under_test_derived"), std::string::npos) << "the derived rows certified: " << wrong.certificate;
+  // The last side, 0, is not the system.
+  EXPECT_EQ(run("invariance-system", R"({ system = "invsys", )" + rest + " }").outcome, verdict::fails);
 }
 
 TEST_F(ShapesOnADocument, EulerLagrange) {
@@ -937,6 +969,9 @@ TEST(ShapeRecords, BadRecordsAreNamedWithTheirLineAndArgument) {
   EXPECT_NE(error_of("derivative", R"({ function = "ld", variable = ['q_1'], printed = "pnext", arguments = ['q_0', 'q_1'], at = ['q_j'] })")
                 .find("field 'with.at': 1 symbols for the 2 of 'arguments'"),
             std::string::npos);
+  // A side of a chain by its number, from 1.
+  EXPECT_NE(error_of("identity", R"({ lhs = "invsys:side4", rhs = "one" })").find("side 4 is not there (the equation has 3)"), std::string::npos);
+  EXPECT_NE(error_of("identity", R"({ lhs = "invsys:side0", rhs = "one" })").find("after ':side' a side number from 1"), std::string::npos);
   // The entries of a generic matrix: two references, the first a matrix of distinct symbols, the
   // second a matrix of its size.
   EXPECT_NE(error_of("proportional", R"({ printed = "energy", of = 'inline:It conserves', state = ['q', 'p'], entries = ['map'] })")

@@ -233,6 +233,11 @@ int main(int argc, char** argv) {
     return compare_report_directories(compare_old, compare_new, quiet, compare_subset);
   }
 
+  // From here on a signal is recorded, not acted on: a run started in the background by a shell
+  // ignores SIGINT until it installs a handler, so one that came while the scene, the paper and the
+  // shape records were read would be lost (the run would finish). It is honoured below, before the run.
+  std::signal(SIGINT, record_signal);
+  std::signal(SIGTERM, record_signal);
   scene s;
   std::optional<simpson::verify::paper_reading> paper;
   std::filesystem::path out;
@@ -257,11 +262,11 @@ int main(int argc, char** argv) {
                                   document->title, paper_file.empty() ? std::string("no --paper") : paper_file);
       s.experiments = experiment_settings{};
     }
-    paper = read_scene_paper(s);  // a paper that is missing or does not parse is bad input: nothing runs
     scene_selection selection;
     if (app.count("--claims") > 0) selection.claims = claim_ids;
     if (app.count("--sections") > 0) selection.sections = section_list;
     apply_selection(s, selection);
+    paper = read_scene_paper(s);  // a paper that is missing or does not parse is bad input: nothing runs
     if (!paper_file.empty()) s.overrides["paper"] = paper_file;
     if (!claims_file.empty()) s.overrides["claims_file"] = claims_file;
     if (validate) {
@@ -355,9 +360,8 @@ int main(int argc, char** argv) {
                seconds_text(cost.units), default_cost_budget, seconds_text(default_cost_budget));
     install_progress();
   }
-  std::signal(SIGINT, record_signal);
-  std::signal(SIGTERM, record_signal);
   try {
+    throw_if_interrupted();  // a signal while the run was being set up: nothing was written yet
     const auto start = std::chrono::steady_clock::now();
     run_record record = run(s, *paper, [&](std::size_t k, std::size_t n, const claim& c, const claim_outcome* done) {
       if (!done || quiet) return;

@@ -28,9 +28,9 @@ paper_reading read_scene_paper(const scene& s) {
     return reading;
   }
   paper_reading reading = read_paper(s.paper_file.empty() ? embedded_paper() : load_paper(s.paper_file));
-  // What the shape records read, before anything runs: a label or phrase the paper no longer has is
-  // bad input, named, not a harness fault in the middle of a run.
-  check_claims_file_formulas(reading.source);
+  // What the scene's shape records read, before anything runs: a label or phrase the paper no longer
+  // has is bad input, named, not a harness fault in the middle of a run.
+  check_claims_file_formulas(reading.source, &s.claims);
   return reading;
 }
 

@@ -108,43 +108,6 @@ claim_result check_phi3_explicit(const run_context& ctx) {
                            : "");
 }
 
-/// The coefficients of p², pq, q² of Q(Φy) − Q(y) for Q = (ξ, η, ζ), read off at (1,0), (1,1), (0,1).
-template <class S>
-std::array<S, 3> invariance_defect(const one_step_matrix<S>& phi, const S& xi, const S& eta, const S& zeta) {
-  const auto defect = [&](const phase_point<S>& y) -> S { return quadratic_form(xi, eta, zeta, phi * y) - quadratic_form(xi, eta, zeta, y); };
-  const S pp = defect({S(1), S(0)});
-  const S qq = defect({S(0), S(1)});
-  return {pp, S(defect({S(1), S(1)}) - pp - qq), qq};
-}
-
-claim_result check_gamma_system(const run_context&) {
-  const std::vector<std::string> vars{"alpha", "beta", "gamma", "delta", "xi", "eta", "zeta"};
-  const std::vector<int> bounds{2, 2, 2, 2, 1, 1, 1};
-  const auto gap = [](bool printed) {
-    return [printed](const auto& v) {
-      using S = std::decay_t<decltype(v[0])>;
-      const one_step_matrix<S> phi{v[0], v[1], v[2], v[3]};
-      auto gamma = invariance_system(phi);
-      if (printed) gamma[2][2] = (phi.gamma * phi.gamma - 1) / 2;  // as printed in Section 7
-      const std::array<S, 3> defect = invariance_defect(phi, v[4], v[5], v[6]);
-      std::vector<S> gaps;
-      for (std::size_t row = 0; row < 3; ++row) gaps.push_back(gamma[row][0] * v[4] + gamma[row][1] * v[5] + gamma[row][2] * v[6] - defect[row]);
-      return gaps;
-    };
-  };
-  const std::string reduction =
-      "Gamma (xi, eta, zeta)^T minus the coefficients of p^2, pq, q^2 in Q(Phi y) - Q(y) (forme-quadratique), for general "
-      "alpha, beta, gamma, delta";
-  const proof printed = prove_zero_on_grid(reduction + "; Gamma as printed, last entry (gamma^2 - 1)/2", vars, bounds, gap(true));
-  const proof corrected = prove_zero_on_grid(reduction + "; last entry (delta^2 - 1)/2", vars, bounds, gap(false));
-  return erratum(printed, corrected,
-                 "Gamma = ((alpha^2-1)/2, alpha gamma, gamma^2/2; alpha beta, alpha delta + beta gamma - 1, gamma delta; "
-                 "beta^2/2, beta delta, (delta^2-1)/2): the last entry is (delta^2 - 1)/2, not (gamma^2 - 1)/2",
-                 "The q^2 coefficient of Q(Phi y) - Q(y) is zeta (delta^2 - 1)/2. Even for alpha = delta (the case used next) "
-                 "the printed Gamma is invertible on alpha delta - beta gamma = 1 (det 15/128 at alpha = delta = 1/2, beta = -1, "
-                 "gamma = 3/4): gamma-singular and conserved-form hold only after this correction.");
-}
-
 claim_result check_gamma_determinant(const run_context&) {
   const std::vector<std::string> vars{"alpha", "beta", "gamma", "delta"};
   const auto det3 = [](const auto& g) {
@@ -318,7 +281,6 @@ claim_result check_conserved_form(const run_context&) {
 void add_section6_7_checks(check_registry& checks) {
   checks.add("derivation-phi3", check_derivation_phi3);
   checks.add("phi3-explicit", check_phi3_explicit);
-  checks.add("gamma-system", check_gamma_system);
   checks.add("gamma-determinant", check_gamma_determinant);
   checks.add("gamma-singular", check_gamma_singular);
   checks.add("conserved-form", check_conserved_form);

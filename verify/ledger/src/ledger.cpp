@@ -20,6 +20,7 @@
 #include "claims_family.hpp"
 #include "claims_unformulated.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <optional>
 #include <set>
@@ -217,7 +218,7 @@ void use_claims_file(const std::string& text, const std::string& file) {
 
 const claims_document* installed_document() { return installed_document_storage() ? &*installed_document_storage() : nullptr; }
 
-void check_claims_file_formulas(const paper_source& document) {
+void check_claims_file_formulas(const paper_source& document, const std::vector<std::string>* only) {
   try {
     defined_macros(document.text);  // a macro definition that does not read: the document is at fault, and named, once
   } catch (const std::invalid_argument& e) {
@@ -225,7 +226,7 @@ void check_claims_file_formulas(const paper_source& document) {
   }
   const bool installed = installed_claims().has_value();
   for (const claim_record& r : installed ? installed_records() : embedded_records()) {
-    if (r.shape.empty()) continue;
+    if (r.shape.empty() || (only && std::find(only->begin(), only->end(), r.id) == only->end())) continue;
     const std::string printed =
         detail::check_shape_formulas(r, installed ? installed_file() : std::string("claims/paper.toml"), document, installed_document());
     if (!r.statement.empty() || !installed_claims()) continue;

@@ -41,18 +41,6 @@ GiNaC::matrix core_gamma() {
   return m;
 }
 
-printed_outcome gamma_system(const paper_reading& r) {
-  const GiNaC::matrix v{{sym("xi")}, {sym("eta")}, {sym("zeta")}};
-  printed_outcome o = compare("Gamma (xi, eta, zeta)^T", printed_side(r, "Gamma"), derived_gamma().mul(v), core_gamma().mul(v));
-  // What a certificate states (core = derived is one normal form for GiNaC): Q(Φy) − Q(y), as
-  // written, is p², pq, q² times the rows of the core's Γ (ξ, η, ζ)ᵀ.
-  const ex a = sym("alpha"), b = sym("beta"), c = sym("gamma"), dd = sym("delta"), p = sym("p"), q = sym("q");
-  const auto Q = [&](const ex& pp, const ex& qq) { return sym("xi") * pp * pp / 2 + sym("eta") * pp * qq + sym("zeta") * qq * qq / 2; };
-  const GiNaC::matrix gv = core_gamma().mul(v);
-  add_goal(o, decided("core_expansion", Q(a * p + b * q, c * p + dd * q) - Q(p, q), p * p * gv(0, 0) + p * q * gv(1, 0) + q * q * gv(2, 0)), false);
-  return o;
-}
-
 /// The determinant of a 3 × 3 matrix by its first row's cofactors, as written.
 ex determinant_3x3(const GiNaC::matrix& M) {
   return M(0, 0) * (M(1, 1) * M(2, 2) - M(1, 2) * M(2, 1)) - M(0, 1) * (M(1, 0) * M(2, 2) - M(1, 2) * M(2, 0)) +
@@ -168,7 +156,6 @@ printed_outcome derivation_phi3(const paper_reading& r) {
 
 void add_printed_checks_section6_7(check_registry& checks) {
   checks.add_printed("derivation-phi3", {"Phi3"}, derivation_phi3);
-  checks.add_printed("gamma-system", {"Gamma"}, gamma_system);
   checks.add_printed("gamma-determinant", {"det Gamma"}, gamma_determinant);
   checks.add_printed("gamma-singular", {"Gamma", "det Gamma"}, gamma_singular);
   checks.add_printed("conserved-form", {"Gamma", "Q_c"}, conserved_form);

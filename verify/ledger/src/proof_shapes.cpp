@@ -98,6 +98,14 @@ const std::map<std::string, proof_shape>& proof_shapes() {
                      {"of", argument_kind::formula, true, "the function it is a constant multiple of"},
                      {"state", argument_kind::symbols, true, "the symbols c must be free of"}}),
          proportional_shape});
+    add({"invariance-system", "the printed system's rows are the coefficients of y_i y_j (i <= j, in the state's order) in form(map y) - form(y)",
+         "system",
+         with_where({{"system", argument_kind::formula, true, "the printed system: a column with a row for each y_i y_j, linear in the unknowns"},
+                     {"form", argument_kind::formula, true, "the quadratic form of the state, its coefficients the unknowns"},
+                     {"map", argument_kind::matrix, true, "the one-step map"},
+                     {"state", argument_kind::symbols, true, "the state's symbols, in the map's order", 0, "map"},
+                     {"unknowns", argument_kind::symbols, true, "the form's coefficients: the system's unknowns"}}),
+         invariance_system_shape});
     add({"euler-lagrange", "printed = 0 is D_2 L(q_{j-1}, q_j) + D_1 L(q_j, q_{j+1}) = 0, up to a factor free of the states", "printed",
          with_where({{"lagrangian", argument_kind::formula, true, "the discrete Lagrangian L(q_0, q_1)"},
                      {"nodes", argument_kind::symbols, true, "its two arguments", 2},
@@ -245,6 +253,14 @@ void check_shape_arguments(const claim_record& record, const std::string& file) 
       throw claims_file_error(file, argument.line, "with." + name, list ? "must be an array of strings" : "must be one string (a formula reference)");
     }
     if (list && argument.values.empty()) throw claims_file_error(file, argument.line, "with." + name, "must not be empty");
+    if (it->kind == argument_kind::word || it->kind == argument_kind::symbols) continue;
+    for (const std::string& value : argument.values) {  // each a reference that reads ('label#0' does not)
+      try {
+        parse_reference(value);
+      } catch (const std::invalid_argument& e) {
+        throw claims_file_error(file, argument.line, "with." + name, e.what());
+      }
+    }
   }
   for (const shape_parameter& p : shape.parameters) {
     if (p.required && !record.with.count(p.name)) {

@@ -1,5 +1,5 @@
 // The identity shapes (shape_support.hpp): identity, equal-sides, derivative, solves, determinant,
-// symplectic, conserved, proportional.
+// symplectic, conserved, proportional, invariance-system.
 
 #include "shape_support.hpp"
 
@@ -430,6 +430,92 @@ claim_result proportional_shape(const shape_call& call, const run_context& ctx) 
   result.correction = fmt::format("the multiple of ({}) with the coefficient of {} that ({}) prints: {}", reference_of(call, "of"), first,
                                   reference_of(call, "printed"), text_of(GiNaC::normal(c * of)));
   result.evidence["corrected"] = {{"factor", text_of(c)}, {"multiple", text_of(GiNaC::normal(c * of))}};
+  return result;
+}
+
+/// "Q(Φy) = Q(y) for all y iff Γ (ξ, η, ζ)ᵀ = 0": the printed system's rows are the coefficients of
+/// the state's degree-2 monomials y_i y_j (i ≤ j, in the state's order: p², pq, q²) in
+/// form(map y) − form(y), the form's coefficients its unknowns. Decided as one identity, the change
+/// as written against Σ monomial × printed row, every symbol free (the state's too): GiNaC's normal
+/// form, our kernel's grid, and the Coq lemma. An erratum's correction is the derived rows, whose
+/// identity Coq checks beside the printed one's refutation.
+claim_result invariance_system_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const ex system = read.formula("system").evalm();
+  const ex form = read.formula("form");
+  const GiNaC::matrix m = as_square_matrix(read.formula("map"), reference_of(call, "map"));
+  const std::vector<GiNaC::symbol> state = read.symbols("state"), unknowns = read.symbols("unknowns");
+  const std::string system_ref = reference_of(call, "system"), form_ref = reference_of(call, "form"), map_ref = reference_of(call, "map");
+  std::vector<ex> monomials;
+  std::vector<std::string> named;
+  for (std::size_t i = 0; i < state.size(); ++i) {
+    for (std::size_t j = i; j < state.size(); ++j) {
+      monomials.push_back(state[i] * state[j]);
+      named.push_back(text_of(monomials.back()));
+    }
+  }
+  claim_result result;
+  result.printed = read.printed();
+  if (!GiNaC::is_a<GiNaC::matrix>(system) || GiNaC::ex_to<GiNaC::matrix>(system).cols() != 1 ||
+      GiNaC::ex_to<GiNaC::matrix>(system).rows() != monomials.size()) {
+    result.outcome = verdict::fails;
+    result.note = fmt::format("({}) is not a column of {} rows, one for each of {}.", system_ref, monomials.size(), fmt::join(named, ", "));
+    return result;
+  }
+  const GiNaC::matrix& rows = GiNaC::ex_to<GiNaC::matrix>(system);
+  GiNaC::matrix y(m.rows(), 1);
+  for (unsigned k = 0; k < m.rows(); ++k) y(k, 0) = state[k];
+  const GiNaC::matrix next = GiNaC::ex_to<GiNaC::matrix>((m * y).evalm());
+  GiNaC::exmap step;
+  for (unsigned k = 0; k < m.rows(); ++k) step[state[k]] = next(k, 0);
+  const ex change = form.subs(step) - form;  // as written
+  ex printed_sum = 0;
+  for (std::size_t k = 0; k < monomials.size(); ++k) printed_sum += monomials[k] * rows(static_cast<unsigned>(k), 0);
+  // The derived rows: each monomial's coefficient in the expanded change, the unknowns' coefficients in each.
+  const ex expanded = GiNaC::expand(change);
+  GiNaC::matrix derived(static_cast<unsigned>(monomials.size()), static_cast<unsigned>(unknowns.size()));
+  std::vector<std::string> derived_rows;
+  ex rest = expanded;
+  for (std::size_t k = 0; k < monomials.size(); ++k) {
+    ex coefficient = expanded;
+    for (const GiNaC::symbol& s : state) coefficient = coefficient.coeff(s, monomials[k].degree(s));
+    coefficient = GiNaC::normal(coefficient);
+    rest -= monomials[k] * coefficient;
+    derived_rows.push_back(named[k] + ": " + text_of(coefficient));
+    for (std::size_t u = 0; u < unknowns.size(); ++u) {
+      derived(static_cast<unsigned>(k), static_cast<unsigned>(u)) = GiNaC::normal(GiNaC::expand(coefficient).coeff(unknowns[u], 1));
+    }
+  }
+  if (!GiNaC::normal(rest).is_zero()) {
+    result.outcome = verdict::fails;
+    result.note = fmt::format("({})(({}) y) − ({})(y) is not a quadratic form in the state: {} is left beyond the monomials {}.", form_ref, map_ref,
+                              form_ref, text_of(GiNaC::normal(rest)), fmt::join(named, ", "));
+    return result;
+  }
+  // The entries that differ, first: what a reader corrects in the printed matrix.
+  std::vector<std::string> differing;
+  for (unsigned k = 0; k < derived.rows(); ++k) {
+    for (unsigned u = 0; u < derived.cols(); ++u) {
+      const ex printed_entry = GiNaC::normal(GiNaC::expand(rows(k, 0)).coeff(unknowns[u], 1));
+      if (!GiNaC::normal(printed_entry - derived(k, u)).is_zero()) {
+        differing.push_back(fmt::format("entry ({}, {}) is {}, not {}", k + 1, u + 1, text_of(derived(k, u)), text_of(printed_entry)));
+      }
+    }
+  }
+  const std::string what = fmt::format("({})(({}) y) − ({})(y) = {} times the rows of ({})", form_ref, map_ref, form_ref, fmt::join(named, ", "), system_ref);
+  result = identity_verdict(call, read, "system", what, change, printed_sum,
+                            fmt::format("{}{}as derived from ({})(({}) y) − ({})(y), the coefficients of {} in the unknowns: {}", fmt::join(differing, "; "),
+                                        differing.empty() ? "" : "; ", form_ref, map_ref, form_ref, fmt::join(named, ", "), text_of(derived)));
+  result.evidence["exact"]["derived_rows"] = derived_rows;
+  if (result.outcome == verdict::erratum) {  // the correction certified beside the refutation
+    ex derived_sum = 0;
+    for (std::size_t k = 0; k < monomials.size(); ++k) {
+      for (std::size_t u = 0; u < unknowns.size(); ++u) {
+        derived_sum += monomials[k] * derived(static_cast<unsigned>(k), static_cast<unsigned>(u)) * unknowns[u];
+      }
+    }
+    record_certificate(result, coq_certificate(call.claim_id, call.statement, {decided("system", change, printed_sum), decided("derived", change, derived_sum)}));
+  }
   return result;
 }
 

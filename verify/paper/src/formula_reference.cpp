@@ -94,6 +94,28 @@ tex_display labelled_display(const paper_source& document, const std::string& la
 
 }  // namespace
 
+namespace {
+
+/// Strips a side suffix, ":lhs" (the first side) or ":sideN" (the N-th, from 1), from `key` into
+/// `side`; throws std::invalid_argument for ":side" without a number from 1.
+void strip_side(std::string& key, int& side, const std::string& text) {
+  if (key.size() > 4 && key.compare(key.size() - 4, 4, ":lhs") == 0) {
+    side = 1;
+    key.resize(key.size() - 4);
+    return;
+  }
+  const std::size_t colon = key.rfind(":side");
+  if (colon == std::string::npos || colon == 0) return;
+  const std::string number = key.substr(colon + 5);
+  if (number.empty() || number.size() > 2 || number.find_first_not_of("0123456789") != std::string::npos || std::stoi(number) == 0) {
+    throw std::invalid_argument("'" + text + "': after ':side' a side number from 1");
+  }
+  side = std::stoi(number);
+  key.resize(colon);
+}
+
+}  // namespace
+
 formula_reference parse_reference(const std::string& text) {
   formula_reference r;
   if (text.size() >= 2 && text.front() == '$' && text.back() == '$') {
@@ -107,10 +129,7 @@ formula_reference parse_reference(const std::string& text) {
     if (text.rfind(prefix, 0) != 0) continue;
     r.where = kind;
     r.key = text.substr(prefix.size());
-    if (r.key.size() > 4 && r.key.compare(r.key.size() - 4, 4, ":lhs") == 0) {  // the phrase's formula's first side
-      r.first_side = true;
-      r.key.resize(r.key.size() - 4);
-    }
+    strip_side(r.key, r.side, text);  // the phrase's formula's first side, or its N-th
     const std::size_t hash = r.key.rfind('#');  // after:phrase#2, the display's second equation
     if (kind == formula_reference::kind::display_after && hash != std::string::npos && hash + 1 < r.key.size() && hash + 3 >= r.key.size() &&
         r.key.find_first_not_of("0123456789", hash + 1) == std::string::npos) {
@@ -122,10 +141,7 @@ formula_reference parse_reference(const std::string& text) {
     return r;
   }
   std::string rest = text;
-  if (rest.size() > 4 && rest.compare(rest.size() - 4, 4, ":lhs") == 0) {
-    r.first_side = true;
-    rest.resize(rest.size() - 4);
-  }
+  strip_side(rest, r.side, text);
   const std::size_t hash = rest.find('#');
   if (hash != std::string::npos) {
     const std::string number = rest.substr(hash + 1);
@@ -136,7 +152,7 @@ formula_reference parse_reference(const std::string& text) {
     rest.resize(hash);
   }
   if (rest.empty() || rest.find_first_of("{}$\\") != std::string::npos || rest.front() == ' ' || rest.back() == ' ') {  // a \label may hold spaces
-    throw std::invalid_argument("'" + text + "' is not a reference (a \\label, label#k, label:lhs, inline:phrase, after:phrase, or $TeX$)");
+    throw std::invalid_argument("'" + text + "' is not a reference (a \\label, label#k, label:lhs, label:sideN, inline:phrase, after:phrase, or $TeX$)");
   }
   r.key = rest;
   return r;
@@ -176,7 +192,11 @@ referenced_formula read_reference(const paper_source& document, const std::map<s
   f.tex = equations[static_cast<std::size_t>(r.equation - 1)];
   f.sides = relation_sides(f.tex);
   if (f.sides.empty()) throw std::invalid_argument(f.locator + ": no formula");
-  const std::string& side = r.first_side ? f.sides.front() : f.sides.back();
+  if (r.side > static_cast<int>(f.sides.size())) {
+    throw std::invalid_argument(f.locator + ": side " + std::to_string(r.side) + " is not there (the equation has " + std::to_string(f.sides.size()) +
+                                ")");
+  }
+  const std::string& side = r.side == 0 ? f.sides.back() : f.sides[static_cast<std::size_t>(r.side - 1)];
   try {
     // Not evaluated as matrices yet: a symbol a definition makes a matrix (Phi in "Phi (q_0, p_0)")
     // must not be taken for a scalar factor first.
@@ -197,7 +217,7 @@ std::vector<std::string> symbol_names(const GiNaC::ex& e) {
 
 definition read_definition(const paper_source& document, const std::map<std::string, tex_macro>& macros, const std::string& reference) {
   formula_reference r = parse_reference(reference);
-  if (r.first_side) throw std::invalid_argument("'" + reference + "': a definition is a whole equation, without ':lhs'");
+  if (r.side != 0) throw std::invalid_argument("'" + reference + "': a definition is a whole equation, without ':lhs' or ':sideN'");
   const referenced_formula f = read_reference(document, macros, reference);
   if (f.sides.size() < 2) throw std::invalid_argument(f.locator + ": a definition is an equation 'x = ...'");
   GiNaC::ex name;

@@ -12,13 +12,12 @@ Ltac nonzero :=
           | [ H : 0 < ?Y |- ?X <> 0 ] => replace X with Y by ring; apply Rgt_not_eq; exact H
           end
         | apply pow_nonzero; nonzero ].
-(* Refuted by GiNaC, negated in the claim's _refuted.v: printed. *)
-(* Not stated: gamma_system_core_11, gamma_system_core_21, gamma_system_core_31, whose two sides GiNaC evaluates to one expression (X = X checks nothing). *)
+(* Refuted by GiNaC, negated in the claim's _refuted.v: system. *)
 
-Lemma gamma_system_core_expansion :
+Lemma gamma_system_derived :
   forall alpha beta delta eta gamma p q xi zeta : R,
   (((((-1) * alpha * p) + ((-1) * beta * q)) * (((-1) * delta * q) + ((-1) * gamma * p)) * eta) + ((-1) * eta * p * q) + ((-1/2) * (p ^ 2) * xi) + ((-1/2) * (q ^ 2) * zeta) + ((1/2) * ((((-1) * alpha * p) + ((-1) * beta * q)) ^ 2) * xi) + ((1/2) * ((((-1) * delta * q) + ((-1) * gamma * p)) ^ 2) * zeta))
-  = (((-1) * (((((-1) * alpha * delta) + ((-1) * beta * gamma) + 1) * eta) + ((-1) * alpha * beta * xi) + ((-1) * delta * gamma * zeta)) * p * q) + ((-1/2) * (((((-1) * (alpha ^ 2)) + 1) * xi) + ((-1) * (gamma ^ 2) * zeta) + ((-2) * alpha * eta * gamma)) * (p ^ 2)) + ((-1/2) * (((((-1) * (delta ^ 2)) + 1) * zeta) + ((-1) * (beta ^ 2) * xi) + ((-2) * beta * delta * eta)) * (q ^ 2))).
+  = (((-1) * (((-1) * alpha * delta) + ((-1) * beta * gamma) + 1) * eta * p * q) + ((-1/2) * (((-1) * (alpha ^ 2)) + 1) * (p ^ 2) * xi) + ((-1/2) * (((-1) * (delta ^ 2)) + 1) * (q ^ 2) * zeta) + ((1/2) * (beta ^ 2) * (q ^ 2) * xi) + ((1/2) * (gamma ^ 2) * (p ^ 2) * zeta) + ((p ^ 2) * alpha * eta * gamma) + ((q ^ 2) * beta * delta * eta) + (alpha * beta * p * q * xi) + (delta * gamma * p * q * zeta)).
 Proof.
   intros.
   field; repeat split; nonzero.

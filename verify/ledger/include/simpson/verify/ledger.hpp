@@ -29,10 +29,10 @@ void use_claims_file(const std::string& text, const std::string& file);
 const claims_document* installed_document();
 
 /// Reads every formula the installed file's shape records name (the embedded claims/paper.toml's
-/// when no file is installed) from `document`, before anything runs: throws claims_file_error naming
-/// the record's argument when one is missing, does not parse, or uses a symbol the file does not
-/// declare.
-void check_claims_file_formulas(const paper_source& document);
+/// when no file is installed; only the claims `only` lists, when given) from `document`, before
+/// anything runs: throws claims_file_error naming the record's argument when one is missing, does
+/// not parse, or uses a symbol the file does not declare.
+void check_claims_file_formulas(const paper_source& document, const std::vector<std::string>* only = nullptr);
 
 /// The claim with this id; throws std::invalid_argument naming the id when there is none.
 const claim& find_claim(const std::string& id);

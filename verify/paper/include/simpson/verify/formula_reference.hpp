@@ -6,7 +6,7 @@
 //
 //   "phi"             the last side of the first equation of the display labelled phi
 //   "phi#2"           ... of its second equation
-//   "phi:lhs"         the first side (phi#2:lhs for the second equation)
+//   "phi:lhs"         the first side (phi#2:lhs for the second equation); "phi:side2" the second
 //   "inline:stable for"  the inline formula $...$ at (or first after) the phrase "stable for"
 //   "after:can be factorized"  the first display after the phrase (for an unlabelled display);
 //                     "after:can be factorized#2" its second equation
@@ -30,7 +30,7 @@ struct formula_reference {
   kind where = kind::labelled;
   std::string key;   // the label, the phrase, or the TeX
   int equation = 1;  // 1-based, of display_equations()
-  bool first_side = false;
+  int side = 0;      // 1-based; 0: the last
 };
 
 /// Reads the text of a reference; throws std::invalid_argument saying what is wrong with it.
