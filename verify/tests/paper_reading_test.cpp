@@ -260,6 +260,23 @@ TEST(PaperReading, BadSourcesAreNamedWithLabelLineAndToken) {
   EXPECT_THROW(load_paper("/no/such/paper.tex"), std::invalid_argument);
 }
 
+// GiNaC makes a denominator's leading coefficient positive in its own order of the symbols, which
+// follows the order they were made in, so one quotient could print as a/b in one run and (-a)/(-b) in
+// another (a report's text then changed between runs). The text's denominator starts with a positive
+// term whatever the signs GiNaC chose.
+TEST(TexMath, AQuotientPrintsOneWayWhateverTheSignsGiNaCChose) {
+  tex_symbols s;
+  const GiNaC::ex h = s["h"], w = s["omega"], q = s["q"];
+  for (const GiNaC::ex& e : {1 / (1 - h), (q - h) / (w * w * h * h - 8), (h - q) / (8 - w * w * h * h), -q / (h * h - 24 * w)}) {
+    const std::string text = canonical_text(e);
+    EXPECT_EQ(canonical_text(GiNaC::numer(GiNaC::normal(e)) * -1 / (GiNaC::denom(GiNaC::normal(e)) * -1)), text);
+    const std::size_t over = text.find(")/(");
+    ASSERT_NE(over, std::string::npos) << text;
+    EXPECT_NE(text[over + 3], '-') << text;
+  }
+  EXPECT_EQ(canonical_text((q - h) / (w * w * h * h - 8)), canonical_text((h - q) / (8 - w * w * h * h)));
+}
+
 TEST(TexMath, ReadsTheSubsetThePaperUses) {
   tex_symbols s;
   const GiNaC::ex h = s["h"], w = s["omega"];

@@ -292,6 +292,8 @@ A square map $\Psi = \begin{pmatrix} u & v \\ w & s \end{pmatrix}$ and a form $F
   \frac{v^2}{2} & v s & \frac{s^2 - 1}{2} \end{pmatrix} \begin{pmatrix} a \\ b \\ c \end{pmatrix} = 0 \end{equation}
 \begin{equation}\label{invsyswrong} G \begin{pmatrix} a \\ b \\ c \end{pmatrix} = \begin{pmatrix} \frac{u^2 - 1}{2} & u w & \frac{w^2}{2} \\ u v & u s + v w - 1 & w s \\
   \frac{v^2}{2} & v s & \frac{w^2 - 1}{2} \end{pmatrix} \begin{pmatrix} a \\ b \\ c \end{pmatrix} = 0 \end{equation}
+Its determinant is $D = \frac{1}{4} (u s - v w - 1) (1 - u - s + u s - v w) (1 + u + s + u s - v w)$; without the quarter,
+$D = (u s - v w - 1) (1 - u - s + u s - v w) (1 + u + s + u s - v w)$.
 )";
 
 const std::string declarations = R"(
@@ -441,6 +443,28 @@ TEST_F(ShapesOnADocument, InvarianceSystem) {
   EXPECT_NE(wrong.certificate.find("under_test_derived"), std::string::npos) << "the derived rows certified: " << wrong.certificate;
   // The last side, 0, is not the system.
   EXPECT_EQ(run("invariance-system", R"({ system = "invsys", )" + rest + " }").outcome, verdict::fails);
+}
+
+// The determinant of the system a form's invariance asks of its coefficients (Section 7's det Gamma),
+// from the rows as derived: (us - vw - 1)(1 - u - s + us - vw)(1 + u + s + us - vw)/4. The product
+// without its quarter (Section 7's) vanishes exactly where the determinant does, so a check of its
+// roots, or of the singular case alone, would pass it.
+TEST_F(ShapesOnADocument, InvarianceDeterminant) {
+  const std::string rest = R"(form = 'inline:and a form', map = 'inline:A square map', state = ['q', 'p'], unknowns = ['a', 'b', 'c'])";
+  const claim_result holds = run("invariance-determinant", R"({ printed = 'inline:Its determinant is', )" + rest + " }");
+  EXPECT_EQ(holds.outcome, verdict::holds) << holds.note << holds.evidence.dump();
+  EXPECT_NE(holds.evidence["exact"]["own"].get<std::string>().find("holds"), std::string::npos) << holds.evidence.dump();
+  EXPECT_FALSE(holds.certificate.empty());
+  const claim_result wrong = run("invariance-determinant", R"({ printed = 'inline:without the quarter', )" + rest + " }");
+  EXPECT_EQ(wrong.outcome, verdict::erratum) << wrong.note;
+  EXPECT_NE(wrong.evidence["exact"]["own"].get<std::string>().find("fails"), std::string::npos) << wrong.evidence.dump();
+  EXPECT_EQ(wrong.correction, "as derived: det = " + detail::text_of(GiNaC::numeric(1, 4)) +
+                                  " × $(u s - v w - 1) (1 - u - s + u s - v w) (1 + u + s + u s - v w)$ (as printed)");
+  EXPECT_FALSE(wrong.refutation.empty());
+  EXPECT_NE(wrong.certificate.find("under_test_derived"), std::string::npos) << wrong.certificate;
+  // A form with two coefficients for three monomials: no square system, no determinant.
+  EXPECT_EQ(run("invariance-determinant", R"({ printed = 'inline:Its determinant is', form = 'inline:and a form', map = 'inline:A square map', state = ['q', 'p'], unknowns = ['a', 'b'] })").outcome,
+            verdict::fails);
 }
 
 TEST_F(ShapesOnADocument, EulerLagrange) {

@@ -108,47 +108,6 @@ claim_result check_phi3_explicit(const run_context& ctx) {
                            : "");
 }
 
-claim_result check_gamma_determinant(const run_context&) {
-  const std::vector<std::string> vars{"alpha", "beta", "gamma", "delta"};
-  const auto det3 = [](const auto& g) {
-    using S = std::decay_t<decltype(g[0][0])>;
-    return S(g[0][0] * (g[1][1] * g[2][2] - g[1][2] * g[2][1]) - g[0][1] * (g[1][0] * g[2][2] - g[1][2] * g[2][0]) +
-             g[0][2] * (g[1][0] * g[2][1] - g[1][1] * g[2][0]));
-  };
-  const auto printed_product = [](const auto& phi) {
-    using S = std::decay_t<decltype(phi.alpha)>;
-    const S det = determinant(phi), trace = phi.alpha + phi.delta;
-    return S((det - 1) * (1 - trace + det) * (1 + trace + det));
-  };
-  // det Γ has degree <= 6 in each entry of Φ (each row of Γ is of degree <= 2).
-  const proof printed = prove_zero_on_grid("det Gamma (corrected Gamma) - (ad - bc - 1)(1 - a - d + ad - bc)(1 + a + d + ad - bc) as printed",
-                                           vars, 6, [&](const auto& v) {
-                                             using S = std::decay_t<decltype(v[0])>;
-                                             const one_step_matrix<S> phi{v[0], v[1], v[2], v[3]};
-                                             return S(det3(invariance_system(phi)) - printed_product(phi));
-                                           });
-  const proof corrected = prove_zero_on_grid("det Gamma (corrected Gamma) - the product / 4 (invariance_system_determinant of the core)",
-                                             vars, 6, [&](const auto& v) {
-                                               using S = std::decay_t<decltype(v[0])>;
-                                               const one_step_matrix<S> phi{v[0], v[1], v[2], v[3]};
-                                               return S(det3(invariance_system(phi)) - invariance_system_determinant(phi));
-                                             });
-  // With the printed Γ the printed product fails as well: at the identity-like point below.
-  const one_step_matrix<rational> sample{rational(2), rational(0), rational(0), rational(3)};
-  auto printed_gamma = invariance_system(sample);
-  printed_gamma[2][2] = (sample.gamma * sample.gamma - 1) / 2;
-  claim_result r = erratum(printed, corrected,
-                           "det Gamma = (1/4)(alpha delta - beta gamma - 1)(1 - alpha - delta + alpha delta - beta gamma)"
-                           "(1 + alpha + delta + alpha delta - beta gamma)",
-                           "The printed product lacks the factor 1/4 (rows 1 and 3 of Gamma carry a 1/2), and it is not the determinant "
-                           "of the printed Gamma either (evidence: at alpha = 2, delta = 3). That det Gamma vanishes when alpha delta - "
-                           "beta gamma = 1 holds for the corrected Gamma only (gamma-singular).");
-  r.evidence["printed_gamma_at_alpha_2_delta_3"] = {{"det_printed_gamma", simpson::to_string(det3(printed_gamma))},
-                                                    {"det_corrected_gamma", simpson::to_string(det3(invariance_system(sample)))},
-                                                    {"printed_product", simpson::to_string(printed_product(sample))}};
-  return r;
-}
-
 /// Γ with its last entry as printed in Section 7, (γ² − 1)/2 instead of (δ² − 1)/2.
 template <class S>
 std::array<std::array<S, 3>, 3> printed_invariance_system(const one_step_matrix<S>& phi) {
@@ -281,7 +240,6 @@ claim_result check_conserved_form(const run_context&) {
 void add_section6_7_checks(check_registry& checks) {
   checks.add("derivation-phi3", check_derivation_phi3);
   checks.add("phi3-explicit", check_phi3_explicit);
-  checks.add("gamma-determinant", check_gamma_determinant);
   checks.add("gamma-singular", check_gamma_singular);
   checks.add("conserved-form", check_conserved_form);
 }

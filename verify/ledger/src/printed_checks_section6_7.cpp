@@ -1,4 +1,5 @@
-// §6–7 as printed: p_r, Φ₃ (against the end-to-end derivation), det Φ₃, Γ, det Γ and Q_c.
+// §6–7 as printed, where no proof shape decides yet: Φ₃ against the end-to-end derivation, the singular
+// case of Γ and the conserved form Q_c.
 
 #include "check_registry.hpp"
 #include "printed_check_support.hpp"
@@ -32,33 +33,10 @@ GiNaC::matrix derived_gamma() {
   return g;
 }
 
-GiNaC::matrix core_gamma() {
-  const auto g = invariance_system(one_step_matrix<ex>{sym("alpha"), sym("beta"), sym("gamma"), sym("delta")});
-  GiNaC::matrix m(3, 3);
-  for (unsigned i = 0; i < 3; ++i) {
-    for (unsigned j = 0; j < 3; ++j) m(i, j) = g[i][j];
-  }
-  return m;
-}
-
 /// The determinant of a 3 × 3 matrix by its first row's cofactors, as written.
 ex determinant_3x3(const GiNaC::matrix& M) {
   return M(0, 0) * (M(1, 1) * M(2, 2) - M(1, 2) * M(2, 1)) - M(0, 1) * (M(1, 0) * M(2, 2) - M(1, 2) * M(2, 0)) +
          M(0, 2) * (M(1, 0) * M(2, 1) - M(1, 1) * M(2, 0));
-}
-
-printed_outcome gamma_determinant(const paper_reading& r) {
-  const ex derived = GiNaC::factor(GiNaC::normal(derived_gamma().determinant()));
-  const one_step_matrix<ex> phi{sym("alpha"), sym("beta"), sym("gamma"), sym("delta")};
-  printed_outcome o = compare("det Gamma", printed_side(r, "det Gamma"), derived, invariance_system_determinant(phi));
-  // What a certificate states (core = derived is one normal form for GiNaC): the cofactor expansion
-  // of the core's Γ is the core's factored determinant.
-  add_goal(o, decided("core_cofactors", determinant_3x3(core_gamma()), invariance_system_determinant(phi)), false);
-  if (!o.holds) {
-    const ex ratio = GiNaC::normal(derived / printed_side(r, "det Gamma"));
-    o.proved += "; derived / printed = " + text_of(ratio);
-  }
-  return o;
 }
 
 /// The printed Γ as a matrix: the coefficients of ξ, η, ζ in the printed Γ (ξ, η, ζ)ᵀ.
@@ -156,7 +134,6 @@ printed_outcome derivation_phi3(const paper_reading& r) {
 
 void add_printed_checks_section6_7(check_registry& checks) {
   checks.add_printed("derivation-phi3", {"Phi3"}, derivation_phi3);
-  checks.add_printed("gamma-determinant", {"det Gamma"}, gamma_determinant);
   checks.add_printed("gamma-singular", {"Gamma", "det Gamma"}, gamma_singular);
   checks.add_printed("conserved-form", {"Gamma", "Q_c"}, conserved_form);
 }

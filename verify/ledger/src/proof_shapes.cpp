@@ -106,6 +106,14 @@ const std::map<std::string, proof_shape>& proof_shapes() {
                      {"state", argument_kind::symbols, true, "the state's symbols, in the map's order", 0, "map"},
                      {"unknowns", argument_kind::symbols, true, "the form's coefficients: the system's unknowns"}}),
          invariance_system_shape});
+    add({"invariance-determinant", "printed = det of the system form(map y) = form(y) asks of the form's coefficients (the rows as invariance-system derives them)",
+         "printed",
+         with_where({{"printed", argument_kind::formula, true, "the printed determinant"},
+                     {"form", argument_kind::formula, true, "the quadratic form of the state, its coefficients the unknowns"},
+                     {"map", argument_kind::matrix, true, "the one-step map"},
+                     {"state", argument_kind::symbols, true, "the state's symbols, in the map's order", 0, "map"},
+                     {"unknowns", argument_kind::symbols, true, "the form's coefficients: as many as the monomials y_i y_j"}}),
+         invariance_determinant_shape});
     add({"euler-lagrange", "printed = 0 is D_2 L(q_{j-1}, q_j) + D_1 L(q_j, q_{j+1}) = 0, up to a factor free of the states", "printed",
          with_where({{"lagrangian", argument_kind::formula, true, "the discrete Lagrangian L(q_0, q_1)"},
                      {"nodes", argument_kind::symbols, true, "its two arguments", 2},

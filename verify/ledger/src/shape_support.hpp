@@ -135,6 +135,7 @@ claim_result symplectic_shape(const shape_call& call, const run_context& ctx);
 claim_result conserved_shape(const shape_call& call, const run_context& ctx);
 claim_result proportional_shape(const shape_call& call, const run_context& ctx);
 claim_result invariance_system_shape(const shape_call& call, const run_context& ctx);
+claim_result invariance_determinant_shape(const shape_call& call, const run_context& ctx);
 claim_result euler_lagrange_shape(const shape_call& call, const run_context& ctx);
 claim_result stationary_shape(const shape_call& call, const run_context& ctx);
 claim_result discrete_map_shape(const shape_call& call, const run_context& ctx);

@@ -1,5 +1,5 @@
 // The identity shapes (shape_support.hpp): identity, equal-sides, derivative, solves, determinant,
-// symplectic, conserved, proportional, invariance-system.
+// symplectic, conserved, proportional, invariance-system, invariance-determinant.
 
 #include "shape_support.hpp"
 
@@ -433,6 +433,55 @@ claim_result proportional_shape(const shape_call& call, const run_context& ctx) 
   return result;
 }
 
+namespace {
+
+/// What a quadratic form's invariance under a map asks of its coefficients: form(map y) − form(y)
+/// as written, the monomials y_i y_j (i ≤ j, in the state's order), and the derived system, the
+/// coefficient of each monomial (a row) in each unknown; `not_quadratic` says what is left when the
+/// change is not a quadratic form in the state.
+struct invariance_rows {
+  std::vector<ex> monomials;
+  std::vector<std::string> named;
+  ex change;
+  GiNaC::matrix derived;
+  std::vector<std::string> rows_text;
+  std::string not_quadratic;
+};
+
+invariance_rows derive_invariance_rows(const ex& form, const GiNaC::matrix& m, const std::vector<GiNaC::symbol>& state,
+                                       const std::vector<GiNaC::symbol>& unknowns) {
+  invariance_rows d;
+  for (std::size_t i = 0; i < state.size(); ++i) {
+    for (std::size_t j = i; j < state.size(); ++j) {
+      d.monomials.push_back(state[i] * state[j]);
+      d.named.push_back(text_of(d.monomials.back()));
+    }
+  }
+  GiNaC::matrix y(m.rows(), 1);
+  for (unsigned k = 0; k < m.rows(); ++k) y(k, 0) = state[k];
+  const GiNaC::matrix next = GiNaC::ex_to<GiNaC::matrix>((m * y).evalm());
+  GiNaC::exmap step;
+  for (unsigned k = 0; k < m.rows(); ++k) step[state[k]] = next(k, 0);
+  d.change = form.subs(step) - form;  // as written
+  const ex expanded = GiNaC::expand(d.change);
+  d.derived = GiNaC::matrix(static_cast<unsigned>(d.monomials.size()), static_cast<unsigned>(unknowns.size()));
+  ex rest = expanded;
+  for (std::size_t k = 0; k < d.monomials.size(); ++k) {
+    ex coefficient = expanded;
+    for (const GiNaC::symbol& s : state) coefficient = coefficient.coeff(s, d.monomials[k].degree(s));
+    coefficient = GiNaC::normal(coefficient);
+    rest -= d.monomials[k] * coefficient;
+    d.rows_text.push_back(d.named[k] + ": " + text_of(coefficient));
+    for (std::size_t u = 0; u < unknowns.size(); ++u) {
+      d.derived(static_cast<unsigned>(k), static_cast<unsigned>(u)) = GiNaC::normal(GiNaC::expand(coefficient).coeff(unknowns[u], 1));
+    }
+  }
+  if (!GiNaC::normal(rest).is_zero()) d.not_quadratic = text_of(GiNaC::normal(rest));
+  return d;
+}
+
+}  // namespace
+
 /// "Q(Φy) = Q(y) for all y iff Γ (ξ, η, ζ)ᵀ = 0": the printed system's rows are the coefficients of
 /// the state's degree-2 monomials y_i y_j (i ≤ j, in the state's order: p², pq, q²) in
 /// form(map y) − form(y), the form's coefficients its unknowns. Decided as one identity, the change
@@ -446,14 +495,11 @@ claim_result invariance_system_shape(const shape_call& call, const run_context& 
   const GiNaC::matrix m = as_square_matrix(read.formula("map"), reference_of(call, "map"));
   const std::vector<GiNaC::symbol> state = read.symbols("state"), unknowns = read.symbols("unknowns");
   const std::string system_ref = reference_of(call, "system"), form_ref = reference_of(call, "form"), map_ref = reference_of(call, "map");
-  std::vector<ex> monomials;
-  std::vector<std::string> named;
-  for (std::size_t i = 0; i < state.size(); ++i) {
-    for (std::size_t j = i; j < state.size(); ++j) {
-      monomials.push_back(state[i] * state[j]);
-      named.push_back(text_of(monomials.back()));
-    }
-  }
+  const invariance_rows d = derive_invariance_rows(form, m, state, unknowns);
+  const std::vector<ex>& monomials = d.monomials;
+  const std::vector<std::string>& named = d.named;
+  const GiNaC::matrix& derived = d.derived;
+  const ex& change = d.change;
   claim_result result;
   result.printed = read.printed();
   if (!GiNaC::is_a<GiNaC::matrix>(system) || GiNaC::ex_to<GiNaC::matrix>(system).cols() != 1 ||
@@ -462,36 +508,15 @@ claim_result invariance_system_shape(const shape_call& call, const run_context& 
     result.note = fmt::format("({}) is not a column of {} rows, one for each of {}.", system_ref, monomials.size(), fmt::join(named, ", "));
     return result;
   }
-  const GiNaC::matrix& rows = GiNaC::ex_to<GiNaC::matrix>(system);
-  GiNaC::matrix y(m.rows(), 1);
-  for (unsigned k = 0; k < m.rows(); ++k) y(k, 0) = state[k];
-  const GiNaC::matrix next = GiNaC::ex_to<GiNaC::matrix>((m * y).evalm());
-  GiNaC::exmap step;
-  for (unsigned k = 0; k < m.rows(); ++k) step[state[k]] = next(k, 0);
-  const ex change = form.subs(step) - form;  // as written
-  ex printed_sum = 0;
-  for (std::size_t k = 0; k < monomials.size(); ++k) printed_sum += monomials[k] * rows(static_cast<unsigned>(k), 0);
-  // The derived rows: each monomial's coefficient in the expanded change, the unknowns' coefficients in each.
-  const ex expanded = GiNaC::expand(change);
-  GiNaC::matrix derived(static_cast<unsigned>(monomials.size()), static_cast<unsigned>(unknowns.size()));
-  std::vector<std::string> derived_rows;
-  ex rest = expanded;
-  for (std::size_t k = 0; k < monomials.size(); ++k) {
-    ex coefficient = expanded;
-    for (const GiNaC::symbol& s : state) coefficient = coefficient.coeff(s, monomials[k].degree(s));
-    coefficient = GiNaC::normal(coefficient);
-    rest -= monomials[k] * coefficient;
-    derived_rows.push_back(named[k] + ": " + text_of(coefficient));
-    for (std::size_t u = 0; u < unknowns.size(); ++u) {
-      derived(static_cast<unsigned>(k), static_cast<unsigned>(u)) = GiNaC::normal(GiNaC::expand(coefficient).coeff(unknowns[u], 1));
-    }
-  }
-  if (!GiNaC::normal(rest).is_zero()) {
+  if (!d.not_quadratic.empty()) {
     result.outcome = verdict::fails;
     result.note = fmt::format("({})(({}) y) − ({})(y) is not a quadratic form in the state: {} is left beyond the monomials {}.", form_ref, map_ref,
-                              form_ref, text_of(GiNaC::normal(rest)), fmt::join(named, ", "));
+                              form_ref, d.not_quadratic, fmt::join(named, ", "));
     return result;
   }
+  const GiNaC::matrix& rows = GiNaC::ex_to<GiNaC::matrix>(system);
+  ex printed_sum = 0;
+  for (std::size_t k = 0; k < monomials.size(); ++k) printed_sum += monomials[k] * rows(static_cast<unsigned>(k), 0);
   // The entries that differ, first: what a reader corrects in the printed matrix.
   std::vector<std::string> differing;
   for (unsigned k = 0; k < derived.rows(); ++k) {
@@ -506,7 +531,7 @@ claim_result invariance_system_shape(const shape_call& call, const run_context& 
   result = identity_verdict(call, read, "system", what, change, printed_sum,
                             fmt::format("{}{}as derived from ({})(({}) y) − ({})(y), the coefficients of {} in the unknowns: {}", fmt::join(differing, "; "),
                                         differing.empty() ? "" : "; ", form_ref, map_ref, form_ref, fmt::join(named, ", "), text_of(derived)));
-  result.evidence["exact"]["derived_rows"] = derived_rows;
+  result.evidence["exact"]["derived_rows"] = d.rows_text;
   if (result.outcome == verdict::erratum) {  // the correction certified beside the refutation
     ex derived_sum = 0;
     for (std::size_t k = 0; k < monomials.size(); ++k) {
@@ -515,6 +540,48 @@ claim_result invariance_system_shape(const shape_call& call, const run_context& 
       }
     }
     record_certificate(result, coq_certificate(call.claim_id, call.statement, {decided("system", change, printed_sum), decided("derived", change, derived_sum)}));
+  }
+  return result;
+}
+
+/// "We have det Γ = ...": the printed value against the determinant of the system a quadratic
+/// form's invariance under the map gives, derived as `invariance-system` derives its rows (the system
+/// as it should be printed: a misprinted entry of the printed system is that claim's finding, not
+/// this one's). Decided in both kernels, one Coq lemma; an erratum's correction is the printed value
+/// times a number when the two differ by one (certified beside the refutation), else the determinant.
+claim_result invariance_determinant_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const ex printed = read.formula("printed");
+  const ex form = read.formula("form");
+  const GiNaC::matrix m = as_square_matrix(read.formula("map"), reference_of(call, "map"));
+  const std::vector<GiNaC::symbol> state = read.symbols("state"), unknowns = read.symbols("unknowns");
+  const std::string form_ref = reference_of(call, "form"), map_ref = reference_of(call, "map");
+  const invariance_rows d = derive_invariance_rows(form, m, state, unknowns);
+  claim_result result;
+  result.printed = read.printed();
+  if (!d.not_quadratic.empty() || d.derived.rows() != d.derived.cols()) {
+    result.outcome = verdict::fails;
+    result.note = d.not_quadratic.empty()
+                      ? fmt::format("The system has {} rows ({}) and {} unknowns: no determinant.", d.derived.rows(), fmt::join(d.named, ", "),
+                                    d.derived.cols())
+                      : fmt::format("({})(({}) y) − ({})(y) is not a quadratic form in the state: {} is left.", form_ref, map_ref, form_ref, d.not_quadratic);
+    return result;
+  }
+  const ex det = d.derived.determinant(GiNaC::determinant_algo::laplace);
+  const std::string printed_ref = reference_of(call, "printed");
+  // A printed value off by a constant factor (a lost 1/4) is corrected as that multiple of itself,
+  // which says what to change; otherwise by the determinant (in normal form: the report's canonical
+  // text expands products).
+  const ex ratio = is_zero_expression(GiNaC::normal(printed)) ? ex(0) : GiNaC::normal(det / printed);
+  const bool multiple = GiNaC::is_a<GiNaC::numeric>(ratio) && !ratio.is_zero();
+  const ex corrected = multiple ? ratio * printed : GiNaC::normal(det);
+  const std::string what = fmt::format("det of the system ({})(({}) y) = ({})(y) asks of the unknowns = ({})", form_ref, map_ref, form_ref, printed_ref);
+  result = identity_verdict(call, read, "determinant", what, det, printed,
+                            multiple ? fmt::format("as derived: det = {} × ${}$ (as printed)", text_of(ratio), folded_space(read.raw("printed").sides.back()))
+                                     : "as derived: det = " + text_of(corrected));
+  result.evidence["exact"]["derived_rows"] = d.rows_text;
+  if (result.outcome == verdict::erratum) {  // the correction certified beside the refutation
+    record_certificate(result, coq_certificate(call.claim_id, call.statement, {decided("determinant", det, printed), decided("derived", det, corrected)}));
   }
   return result;
 }

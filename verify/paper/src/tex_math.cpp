@@ -718,10 +718,18 @@ std::string canonical_text(const GiNaC::ex& given) {
                             [](const GiNaC::symbol& a, const GiNaC::symbol& b) { return a.get_name() == b.get_name(); }),
                 symbols.end());
   const GiNaC::ex n = GiNaC::normal(e);
-  const std::string numerator = polynomial_text(GiNaC::numer(n), symbols);
-  const GiNaC::ex den = GiNaC::denom(n);
-  if (den.is_equal(GiNaC::ex(1))) return numerator;
-  return "(" + numerator + ")/(" + polynomial_text(den, symbols) + ")";
+  GiNaC::ex num = GiNaC::numer(n), den = GiNaC::denom(n);
+  if (den.is_equal(GiNaC::ex(1))) return polynomial_text(num, symbols);
+  // GiNaC makes the denominator's leading coefficient positive in its own order of the symbols, which
+  // depends on the order they were made in: a quotient may come out as (-a)/(-b) in one run and a/b
+  // in another. The text's denominator starts with a positive term, in the text's order.
+  std::string denominator = polynomial_text(den, symbols);
+  if (!denominator.empty() && denominator.front() == '-') {
+    num = -num;
+    den = -den;
+    denominator = polynomial_text(den, symbols);
+  }
+  return "(" + polynomial_text(num, symbols) + ")/(" + denominator + ")";
 }
 
 }  // namespace simpson::verify

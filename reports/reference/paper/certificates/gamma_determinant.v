@@ -12,12 +12,11 @@ Ltac nonzero :=
           | [ H : 0 < ?Y |- ?X <> 0 ] => replace X with Y by ring; apply Rgt_not_eq; exact H
           end
         | apply pow_nonzero; nonzero ].
-(* Refuted by GiNaC, negated in the claim's _refuted.v: printed. *)
-(* Not stated: gamma_determinant_core, whose two sides GiNaC evaluates to one expression (X = X checks nothing). *)
+(* Refuted by GiNaC, negated in the claim's _refuted.v: determinant. *)
 
-Lemma gamma_determinant_core_cofactors :
+Lemma gamma_determinant_derived :
   forall alpha beta delta gamma : R,
-  (((-1/4) * (((((-1) * (delta ^ 2)) + 1) * (((-1) * alpha * delta) + ((-1) * beta * gamma) + 1)) + ((-2) * (delta ^ 2) * beta * gamma)) * (((-1) * (alpha ^ 2)) + 1)) + ((1/2) * (((((-1) * (delta ^ 2)) + 1) * alpha * beta) + ((beta ^ 2) * delta * gamma)) * alpha * gamma) + ((1/4) * (((((-1) * alpha * delta) + ((-1) * beta * gamma) + 1) * (beta ^ 2)) + (2 * (beta ^ 2) * alpha * delta)) * (gamma ^ 2)))
+  (((-1/4) * (alpha ^ 2) * (delta ^ 2)) + ((-1/4) * (alpha ^ 3) * delta) + ((-1/4) * (beta ^ 3) * (gamma ^ 3)) + ((-1/4) * (delta ^ 3) * alpha) + ((-3/4) * (alpha ^ 2) * (delta ^ 2) * beta * gamma) + ((1/4) * (alpha ^ 2) * beta * gamma) + ((1/4) * (alpha ^ 2)) + ((1/4) * (alpha ^ 3) * (delta ^ 3)) + ((1/4) * (beta ^ 2) * (gamma ^ 2)) + ((1/4) * (delta ^ 2) * beta * gamma) + ((1/4) * (delta ^ 2)) + ((1/4) * alpha * delta) + ((1/4) * beta * gamma) + ((3/4) * (beta ^ 2) * (gamma ^ 2) * alpha * delta) + (-1/4))
   = ((-1/4) * (((-1) * alpha * delta) + ((-1) * alpha) + ((-1) * delta) + (-1) + (beta * gamma)) * (((-1) * alpha * delta) + (-1) + (beta * gamma) + alpha + delta) * (((-1) * alpha * delta) + (beta * gamma) + 1)).
 Proof.
   intros.
