@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <optional>
 #include <set>
+#include <utility>
 
 namespace simpson::verify::detail {
 namespace {
@@ -39,6 +40,16 @@ std::vector<shape_parameter> with_series(std::vector<shape_parameter> parameters
     parameters.push_back(std::move(p));
   }
   return parameters;
+}
+
+/// What the invariance shapes share besides the printed formula they judge: the quadratic form, the
+/// map it is invariant under, the state and the form's coefficients.
+std::vector<shape_parameter> with_invariance(shape_parameter printed) {
+  return {std::move(printed),
+          {"form", argument_kind::formula, true, "the quadratic form of the state, its coefficients the unknowns"},
+          {"map", argument_kind::matrix, true, "the one-step map"},
+          {"state", argument_kind::symbols, true, "the state's symbols, in the map's order", 0, "map"},
+          {"unknowns", argument_kind::symbols, true, "the form's coefficients: the system's unknowns (as many as the y_i y_j for its determinant)"}};
 }
 
 /// A sentence's pattern that must hold the hole {name} (an optional argument when not `required`).
@@ -100,20 +111,10 @@ const std::map<std::string, proof_shape>& proof_shapes() {
          proportional_shape});
     add({"invariance-system", "the printed system's rows are the coefficients of y_i y_j (i <= j, in the state's order) in form(map y) - form(y)",
          "system",
-         with_where({{"system", argument_kind::formula, true, "the printed system: a column with a row for each y_i y_j, linear in the unknowns"},
-                     {"form", argument_kind::formula, true, "the quadratic form of the state, its coefficients the unknowns"},
-                     {"map", argument_kind::matrix, true, "the one-step map"},
-                     {"state", argument_kind::symbols, true, "the state's symbols, in the map's order", 0, "map"},
-                     {"unknowns", argument_kind::symbols, true, "the form's coefficients: the system's unknowns"}}),
+         with_where(with_invariance({"system", argument_kind::formula, true, "the printed system: a column with a row for each y_i y_j, linear in the unknowns"})),
          invariance_system_shape});
     add({"invariance-determinant", "printed = det of the system form(map y) = form(y) asks of the form's coefficients (the rows as invariance-system derives them)",
-         "printed",
-         with_where({{"printed", argument_kind::formula, true, "the printed determinant"},
-                     {"form", argument_kind::formula, true, "the quadratic form of the state, its coefficients the unknowns"},
-                     {"map", argument_kind::matrix, true, "the one-step map"},
-                     {"state", argument_kind::symbols, true, "the state's symbols, in the map's order", 0, "map"},
-                     {"unknowns", argument_kind::symbols, true, "the form's coefficients: as many as the monomials y_i y_j"}}),
-         invariance_determinant_shape});
+         "printed", with_where(with_invariance({"printed", argument_kind::formula, true, "the printed determinant"})), invariance_determinant_shape});
     add({"euler-lagrange", "printed = 0 is D_2 L(q_{j-1}, q_j) + D_1 L(q_j, q_{j+1}) = 0, up to a factor free of the states", "printed",
          with_where({{"lagrangian", argument_kind::formula, true, "the discrete Lagrangian L(q_0, q_1)"},
                      {"nodes", argument_kind::symbols, true, "its two arguments", 2},
