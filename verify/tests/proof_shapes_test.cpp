@@ -998,21 +998,16 @@ TEST(ShapeRecords, BadRecordsAreNamedWithTheirLineAndArgument) {
   EXPECT_NE(error_of("identity", R"({ lhs = "invsys:side0", rhs = "one" })").find("after ':side' a side number from 1"), std::string::npos);
   // The entries of a generic matrix: two references, the first a matrix of distinct symbols, the
   // second a matrix of its size.
-  EXPECT_NE(error_of("proportional", R"({ printed = "energy", of = 'inline:It conserves', state = ['q', 'p'], entries = ['map'] })")
-                .find("field 'with.entries': 1 references, not 2"),
-            std::string::npos);
-  EXPECT_NE(error_of("proportional", R"({ printed = "energy", of = 'inline:It conserves', state = ['q', 'p'], entries = ['map', 'map'] })")
-                .find("field 'with.entries': label map (line 6): the entry (1, 1), "),
-            std::string::npos);
-  EXPECT_NE(error_of("proportional", R"({ printed = "energy", of = 'inline:It conserves', state = ['q', 'p'], entries = ['inline:a map with a number', 'map'] })")
-                .find("the entry (1, 2), 2, is not one symbol"),
-            std::string::npos);
-  EXPECT_NE(error_of("proportional", R"({ printed = "energy", of = 'inline:It conserves', state = ['q', 'p'], entries = ['inline:A map of one entry', 'map'] })")
-                .find("is 1 x 1 and label map (line 6) is 2 x 2"),
-            std::string::npos);
-  EXPECT_NE(error_of("proportional", R"({ printed = "energy", of = 'inline:It conserves', state = ['q', 'p'], entries = ['inline:A generic map', 'one'] })")
-                .find("field 'with.entries': label one (line 12) is not a matrix"),
-            std::string::npos);
+  const std::vector<std::pair<std::string, std::string>> bad_entries{
+      {"['map']", "field 'with.entries': 1 references, not 2"},
+      {"['map', 'map']", "field 'with.entries': label map (line 6): the entry (1, 1), "},
+      {"['inline:a map with a number', 'map']", "the entry (1, 2), 2, is not one symbol"},
+      {"['inline:A map of one entry', 'map']", "is 1 x 1 and label map (line 6) is 2 x 2"},
+      {"['inline:A generic map', 'one']", "field 'with.entries': label one (line 12) is not a matrix"}};
+  for (const auto& [entries, expected] : bad_entries) {
+    const std::string error = error_of("proportional", "{ printed = \"energy\", of = 'inline:It conserves', state = ['q', 'p'], entries = " + entries + " }");
+    EXPECT_NE(error.find(expected), std::string::npos) << entries << ": " << error;
+  }
   const std::string both = error_of("identity", R"({ lhs = "sum", rhs = "expanded" })", "check = \"x\"\n");
   EXPECT_NE(both.find("line"), std::string::npos) << both;
 }
