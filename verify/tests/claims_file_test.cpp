@@ -57,11 +57,11 @@ TEST(ClaimsFile, TheEmbeddedFileIsTheLedgerRecordForRecord) {
 TEST(ClaimsFile, ACheckBringsItsFacetsUnderItsOneName) {
   // The record names the check alone; the printed formulas it reads and its Coq goals are the
   // check's, registered with it (check_registry.hpp).
-  const detail::registered_check* singular = detail::registered_checks().find("gamma-singular");
-  ASSERT_NE(singular, nullptr);
-  EXPECT_EQ(singular->formulas, (std::vector<std::string>{"Gamma", "det Gamma"}));
-  EXPECT_TRUE(reads_printed_formula("gamma-singular"));
-  EXPECT_FALSE(singular->coq_goals);
+  const detail::registered_check* derivation = detail::registered_checks().find("derivation-phi3");
+  ASSERT_NE(derivation, nullptr);
+  EXPECT_EQ(derivation->formulas, (std::vector<std::string>{"Phi3"}));
+  EXPECT_TRUE(reads_printed_formula("derivation-phi3"));
+  EXPECT_FALSE(derivation->coq_goals);
   // A claim a proof shape decides names no check: it reads the displays its arguments name.
   EXPECT_EQ(detail::registered_checks().find("phi3-det"), nullptr);
   EXPECT_EQ(find_claim("phi3-det").check_name, "shape determinant");

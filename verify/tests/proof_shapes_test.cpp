@@ -294,6 +294,10 @@ A square map $\Psi = \begin{pmatrix} u & v \\ w & s \end{pmatrix}$ and a form $F
   \frac{v^2}{2} & v s & \frac{w^2 - 1}{2} \end{pmatrix} \begin{pmatrix} a \\ b \\ c \end{pmatrix} = 0 \end{equation}
 Its determinant is $D = \frac{1}{4} (u s - v w - 1) (1 - u - s + u s - v w) (1 + u + s + u s - v w)$; without the quarter,
 $D = (u s - v w - 1) (1 - u - s + u s - v w) (1 + u + s + u s - v w)$.
+\begin{equation}\label{invsysrankone} G \begin{pmatrix} a \\ b \\ c \end{pmatrix} = \begin{pmatrix} \frac{u^2 - 1}{2} & u w & \frac{w^2}{2} \\ \frac{u^2 - 1}{2} & u w & \frac{w^2}{2} \\
+  \frac{u^2 - 1}{2} & u w & \frac{w^2}{2} \end{pmatrix} \begin{pmatrix} a \\ b \\ c \end{pmatrix} = 0 \end{equation}
+With equal diagonal $u = s$ we find $b = 0$, but not only $c = 0$; a cube, $K = q^3$, is no such form.
+Of unit determinant, $u s - v w = 1$; on a circle, $u^2 + s^2 = 1$.
 )";
 
 const std::string declarations = R"(
@@ -465,6 +469,67 @@ TEST_F(ShapesOnADocument, InvarianceDeterminant) {
   // A form with two coefficients for three monomials: no square system, no determinant.
   EXPECT_EQ(run("invariance-determinant", R"({ printed = 'inline:Its determinant is', form = 'inline:and a form', map = 'inline:A square map', state = ['q', 'p'], unknowns = ['a', 'b'] })").outcome,
             verdict::fails);
+}
+
+// "det G vanishes when us - vw = 1", for the printed system's determinant. The misprinted system
+// (invsyswrong) is not singular there, though the printed product D, which has the factor
+// us - vw - 1, vanishes: a check of the printed product would pass it.
+TEST_F(ShapesOnADocument, InvarianceSingular) {
+  const std::string rest = R"(form = 'inline:and a form', map = 'inline:A square map', state = ['q', 'p'], unknowns = ['a', 'b', 'c'])";
+  const std::string unit = R"(conditions = ['inline:Of unit determinant'], solve_for = ['s'], )";
+  const claim_result holds = run("invariance-singular", R"({ system = "invsys:side2", )" + unit + rest + " }");
+  EXPECT_EQ(holds.outcome, verdict::holds) << holds.note << holds.evidence.dump();
+  EXPECT_NE(holds.evidence["exact"]["own"].get<std::string>().find("holds"), std::string::npos) << holds.evidence.dump();
+  const GiNaC::ex u = paper_symbols()["u"], v = paper_symbols()["v"], w = paper_symbols()["w"];
+  EXPECT_EQ(holds.evidence["exact"]["conditions_solved"][0].get<std::string>(), "s = " + detail::text_of(GiNaC::normal((1 + v * w) / u)));
+  EXPECT_FALSE(holds.certificate.empty());
+  const claim_result wrong = run("invariance-singular", R"({ system = "invsyswrong:side2", )" + unit + rest + " }");
+  EXPECT_EQ(wrong.outcome, verdict::erratum) << wrong.note;
+  EXPECT_NE(wrong.evidence["exact"]["own"].get<std::string>().find("fails"), std::string::npos) << wrong.evidence.dump();
+  EXPECT_EQ(wrong.correction.rfind("the system as derived (the rows invariance-system derives) is singular there", 0), 0u) << wrong.correction;
+  EXPECT_FALSE(wrong.refutation.empty());
+  EXPECT_NE(wrong.certificate.find("under_test_derived"), std::string::npos) << wrong.certificate;
+  // A condition not linear in the symbol it is solved for: nothing is put in, it fails.
+  const claim_result circle = run("invariance-singular", R"({ system = "invsys:side2", conditions = ['inline:on a circle'], solve_for = ['s'], )" + rest + " }");
+  EXPECT_EQ(circle.outcome, verdict::fails);
+  EXPECT_NE(circle.note.find("is not linear in s"), std::string::npos) << circle.note;
+}
+
+// "When u = s, we find b = 0 and K = w q^2/2 - v p^2/2 is conserved, up to a constant": K's
+// coefficients span the kernel of the printed system on u = s, us - vw = 1. The rank-one system
+// (invsysrankone) holds them in its kernel too, but its kernel is two-dimensional: a check of the
+// kernel membership alone would pass it.
+TEST_F(ShapesOnADocument, InvarianceKernel) {
+  const std::string rest = R"(form = 'inline:and a form', map = 'inline:A square map', state = ['q', 'p'], unknowns = ['a', 'b', 'c'])";
+  const std::string on = R"(printed = 'inline:It conserves', conditions = ['inline:With equal diagonal', 'inline:Of unit determinant'], solve_for = ['s', 'w'], )";
+  const claim_result holds = run("invariance-kernel", R"({ system = "invsys:side2", obtains = ['inline:we find'], )" + on + rest + " }");
+  EXPECT_EQ(holds.outcome, verdict::holds) << holds.note << holds.evidence.dump();
+  EXPECT_NE(holds.evidence["exact"]["own"].get<std::string>().find("holds"), std::string::npos) << holds.evidence.dump();
+  EXPECT_EQ(holds.evidence["exact"]["rank"]["printed"].get<std::string>(), "n - 1 (GiNaC)") << holds.evidence.dump();
+  EXPECT_EQ(holds.evidence["exact"]["rank"]["own_minor"].get<std::string>().rfind("nonzero", 0), 0u) << holds.evidence.dump();
+  EXPECT_FALSE(holds.certificate.empty());
+  const claim_result rank_one = run("invariance-kernel", R"({ system = "invsysrankone:side2", )" + on + rest + " }");
+  EXPECT_EQ(rank_one.outcome, verdict::erratum) << rank_one.note << rank_one.evidence.dump();
+  EXPECT_NE(rank_one.evidence["exact"]["own"].get<std::string>().find("holds"), std::string::npos) << "in the kernel: " << rank_one.evidence.dump();
+  EXPECT_NE(rank_one.note.find("the kernel has dimension 2"), std::string::npos) << rank_one.note;
+  EXPECT_NE(rank_one.correction.find("which follows from that system"), std::string::npos) << rank_one.correction;
+  // The misprinted system: only 0 in its kernel there; corrected by the derived kernel, certified.
+  const claim_result wrong = run("invariance-kernel", R"({ system = "invsyswrong:side2", )" + on + rest + " }");
+  EXPECT_EQ(wrong.outcome, verdict::erratum) << wrong.note;
+  const GiNaC::ex u = paper_symbols()["u"], v = paper_symbols()["v"];
+  EXPECT_NE(wrong.correction.find("a one-dimensional kernel spanned by a = " + detail::text_of(GiNaC::normal((u * u - 1) / v)) + ", b = 0, c = " +
+                                  detail::text_of(-v)),
+            std::string::npos)
+      << wrong.correction;
+  EXPECT_FALSE(wrong.refutation.empty());
+  EXPECT_NE(wrong.certificate.find("under_test_derived"), std::string::npos) << wrong.certificate;
+  // What the text says it obtains must hold there: c = 0 does not, and nothing corrects it.
+  const claim_result obtains = run("invariance-kernel", R"({ system = "invsys:side2", obtains = ['inline:not only'], )" + on + rest + " }");
+  EXPECT_EQ(obtains.outcome, verdict::fails) << obtains.note;
+  EXPECT_NE(obtains.note.find("c = 0 does not hold"), std::string::npos) << obtains.note;
+  // Not the form for any coefficients.
+  const std::string cube = R"(printed = 'inline:a cube', conditions = ['inline:With equal diagonal', 'inline:Of unit determinant'], solve_for = ['s', 'w'], )";
+  EXPECT_EQ(run("invariance-kernel", R"({ system = "invsys:side2", )" + cube + rest + " }").outcome, verdict::fails);
 }
 
 TEST_F(ShapesOnADocument, EulerLagrange) {
@@ -992,6 +1057,16 @@ TEST(ShapeRecords, BadRecordsAreNamedWithTheirLineAndArgument) {
             std::string::npos);
   EXPECT_NE(error_of("derivative", R"({ function = "ld", variable = ['q_1'], printed = "pnext", arguments = ['q_0', 'q_1'], at = ['q_j'] })")
                 .find("field 'with.at': 1 symbols for the 2 of 'arguments'"),
+            std::string::npos);
+  // A symbol to solve each condition for, and conditions that are equations.
+  const std::string invariance = R"(form = 'inline:and a form', map = 'inline:A square map', state = ['q', 'p'], unknowns = ['a', 'b', 'c'], system = "invsys:side2")";
+  EXPECT_NE(error_of("invariance-singular", "{ conditions = ['inline:Of unit determinant'], solve_for = ['s', 'w'], " + invariance + " }")
+                .find("field 'with.solve_for': 2 symbols for the 1 of 'conditions'"),
+            std::string::npos);
+  EXPECT_NE(error_of("invariance-singular", "{ conditions = ['inline:a cube'], " + invariance + " }").find("field 'with.solve_for': missing"),
+            std::string::npos);
+  EXPECT_NE(error_of("invariance-kernel", "{ printed = 'inline:It conserves', conditions = ['inline:one side alone'], solve_for = ['s'], " + invariance + " }")
+                .find("field 'with.conditions'"),
             std::string::npos);
   // A side of a chain by its number, from 1.
   EXPECT_NE(error_of("identity", R"({ lhs = "invsys:side4", rhs = "one" })").find("side 4 is not there (the equation has 3)"), std::string::npos);

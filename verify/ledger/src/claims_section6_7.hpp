@@ -1,5 +1,5 @@
 #pragma once
-// Sections 6 and 7: the momentum p_r, Φ₃, its determinant, the quadratic invariant and H_d.
+// Sections 4 to 6, where no proof shape decides yet: the derivation of Φ₃ and its explicitness.
 
 #include <simpson/verify/claim.hpp>
 #include "check_registry.hpp"

@@ -52,6 +52,13 @@ std::vector<shape_parameter> with_invariance(shape_parameter printed) {
           {"unknowns", argument_kind::symbols, true, "the form's coefficients: the system's unknowns (as many as the y_i y_j for its determinant)"}};
 }
 
+/// The printed conditions a shape puts in, each solved for one symbol of `solve_for`, in order.
+std::vector<shape_parameter> with_conditions(std::vector<shape_parameter> parameters) {
+  parameters.push_back({"conditions", argument_kind::equations, true, "printed equations a = b (alpha delta - beta gamma = 1), put in in order"});
+  parameters.push_back({"solve_for", argument_kind::symbols, true, "the symbol each condition is solved for (linear in it)", 0, "conditions"});
+  return parameters;
+}
+
 /// A sentence's pattern that must hold the hole {name} (an optional argument when not `required`).
 shape_parameter pattern_with_hole(std::string name, std::string meaning, std::string hole, bool required = true) {
   shape_parameter p{std::move(name), argument_kind::word, required, std::move(meaning)};
@@ -115,6 +122,17 @@ const std::map<std::string, proof_shape>& proof_shapes() {
          invariance_system_shape});
     add({"invariance-determinant", "printed = det of the system form(map y) = form(y) asks of the form's coefficients (the rows as invariance-system derives them)",
          "printed", with_where(with_invariance({"printed", argument_kind::formula, true, "the printed determinant"})), invariance_determinant_shape});
+    add({"invariance-singular", "det of the printed system's coefficients is 0 once the printed conditions are put in (each solved for its symbol)",
+         "conditions", with_where(with_conditions(with_invariance({"system", argument_kind::formula, true, "the printed system: a column linear in the unknowns"}))),
+         invariance_singular_shape});
+    {
+      std::vector<shape_parameter> kernel = with_conditions(with_invariance({"printed", argument_kind::formula, true, "the printed form whose coefficients span the kernel"}));
+      kernel.push_back({"system", argument_kind::formula, true, "the printed system: a column linear in the unknowns"});
+      kernel.push_back({"obtains", argument_kind::equations, false, "printed equations in the unknowns that every solution satisfies (eta = 0)"});
+      add({"invariance-kernel",
+           "once the printed conditions are put in, the printed form's coefficients span the kernel of the printed system (rank n - 1), and each 'obtains' holds there",
+           "printed", with_where(std::move(kernel)), invariance_kernel_shape});
+    }
     add({"euler-lagrange", "printed = 0 is D_2 L(q_{j-1}, q_j) + D_1 L(q_j, q_{j+1}) = 0, up to a factor free of the states", "printed",
          with_where({{"lagrangian", argument_kind::formula, true, "the discrete Lagrangian L(q_0, q_1)"},
                      {"nodes", argument_kind::symbols, true, "its two arguments", 2},

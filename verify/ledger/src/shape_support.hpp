@@ -2,7 +2,7 @@
 // What the proof shapes share (proof_shapes.hpp): reading a call's formulas from the run's
 // document with its definitions put in and its symbols checked against the declared ones, the
 // verdict on an identity in both kernels with its Coq certificate, and each shape's function, by
-// family: identities (shapes_identities.cpp), derivations (shapes_derivation.cpp), series
+// family: identities (shapes_identities.cpp), a form's invariance (shapes_invariance.cpp), derivations (shapes_derivation.cpp), series
 // (shapes_series.cpp), intervals (shapes_intervals.cpp), characteristic polynomials
 // (shapes_characteristic.cpp), quadrature (shapes_quadrature.cpp), sums (shapes_sums.cpp).
 
@@ -136,6 +136,8 @@ claim_result conserved_shape(const shape_call& call, const run_context& ctx);
 claim_result proportional_shape(const shape_call& call, const run_context& ctx);
 claim_result invariance_system_shape(const shape_call& call, const run_context& ctx);
 claim_result invariance_determinant_shape(const shape_call& call, const run_context& ctx);
+claim_result invariance_singular_shape(const shape_call& call, const run_context& ctx);
+claim_result invariance_kernel_shape(const shape_call& call, const run_context& ctx);
 claim_result euler_lagrange_shape(const shape_call& call, const run_context& ctx);
 claim_result stationary_shape(const shape_call& call, const run_context& ctx);
 claim_result discrete_map_shape(const shape_call& call, const run_context& ctx);

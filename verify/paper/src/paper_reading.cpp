@@ -17,10 +17,6 @@ const std::vector<formula_location>& printed_formula_locations() {
       {"stabilite", k::labelled, "stabilite", 0, {0, 1, 2}},
       // §6
       {"Phi3", k::labelled, "Phi3"},
-      // §7
-      {"Gamma", k::anchored_display, "must satisfy the following homogeneous linear system", 0, {1}},
-      {"det Gamma", k::inline_formula, "{\\rm det} \\, \\Gamma ="},
-      {"Q_c", k::inline_formula, "Q_c(p,\\, q) ="},
   };
   return formulas;
 }

@@ -12,13 +12,13 @@ Ltac nonzero :=
           | [ H : 0 < ?Y |- ?X <> 0 ] => replace X with Y by ring; apply Rgt_not_eq; exact H
           end
         | apply pow_nonzero; nonzero ].
-(* Refuted by GiNaC, negated in the claim's _refuted.v: printed. *)
+(* Refuted by GiNaC, negated in the claim's _refuted.v: kernel. *)
 
-Lemma conserved_form_printed :
+Lemma conserved_form_derived :
   forall alpha beta p q : R,
   beta <> 0 ->
-  (((-1/2) * ((((((-1) * (alpha ^ 2)) + 1) * (/ beta) * p) + ((-1) * alpha * q)) ^ 2) * beta) + ((-1/2) * ((((-1) * alpha * p) + ((-1) * beta * q)) ^ 2) * (((-1) * (alpha ^ 2)) + 1) * (/ beta)))
-  = (((-1/2) * (((-1) * (alpha ^ 2)) + 1) * (/ beta) * (p ^ 2)) + ((-1/2) * (q ^ 2) * beta)).
+  (((-1/2) * ((((((-1) * (alpha ^ 2)) + 1) * (/ beta) * p) + ((-1) * alpha * q)) ^ 2) * beta) + ((-1/2) * ((((-1) * alpha * p) + ((-1) * beta * q)) ^ 2) * (((-1) * (alpha ^ 2)) + 1) * (/ beta)) + ((1/2) * (((-1) * (alpha ^ 2)) + 1) * (/ beta) * (p ^ 2)) + ((1/2) * (q ^ 2) * beta))
+  = 0.
 Proof.
   intros.
   field; repeat split; nonzero.

@@ -8,16 +8,16 @@ Open Scope R_scope.
 (* At the counterexample point every hypothesis is a numeric fact (0 < 3, 24 + 2 ^ 2 * 3 ^ 2 <> 0). *)
 Ltac premise := first [ lra | nra ].
 
-Lemma conserved_form_printed_2_31_refuted :
-  ~ (forall alpha beta : R,
+Lemma conserved_form_kernel_refuted :
+  ~ (forall alpha beta q : R,
   beta <> 0 ->
-  (((-1/2) * ((((((-1) * (alpha ^ 2)) + 1) ^ 2) * (/ (beta ^ 2))) + (-1)) * beta) + ((-1/2) * (((-1) * (/ beta) * (alpha ^ 2)) + (/ beta)) * (beta ^ 2)))
+  (((-1/2) * ((((((-1) * (alpha ^ 2)) + 1) ^ 2) * (/ (beta ^ 2))) + (-1)) * (q ^ 2) * beta) + ((-1/2) * (((-1) * (alpha ^ 2)) + 1) * (q ^ 2) * beta))
   = 0).
 Proof.
   intro H.
-  (* At alpha = (2), beta = (3) the two sides differ by (9/2). *)
-  assert (D : (((-1/2) * ((((((-1) * ((2) ^ 2)) + 1) ^ 2) * (/ ((3) ^ 2))) + (-1)) * (3)) + ((-1/2) * (((-1) * (/ (3)) * ((2) ^ 2)) + (/ (3))) * ((3) ^ 2))) - 0 = (9/2)) by (field; premise).
-  assert (E : (((-1/2) * ((((((-1) * ((2) ^ 2)) + 1) ^ 2) * (/ ((3) ^ 2))) + (-1)) * (3)) + ((-1/2) * (((-1) * (/ (3)) * ((2) ^ 2)) + (/ (3))) * ((3) ^ 2))) = 0) by (apply (H (2) (3)); premise).
+  (* At alpha = (2), beta = (3), q = (5) the two sides differ by (225/2). *)
+  assert (D : (((-1/2) * ((((((-1) * ((2) ^ 2)) + 1) ^ 2) * (/ ((3) ^ 2))) + (-1)) * ((5) ^ 2) * (3)) + ((-1/2) * (((-1) * ((2) ^ 2)) + 1) * ((5) ^ 2) * (3))) - 0 = (225/2)) by (field; premise).
+  assert (E : (((-1/2) * ((((((-1) * ((2) ^ 2)) + 1) ^ 2) * (/ ((3) ^ 2))) + (-1)) * ((5) ^ 2) * (3)) + ((-1/2) * (((-1) * ((2) ^ 2)) + 1) * ((5) ^ 2) * (3))) = 0) by (apply (H (2) (3) (5)); premise).
   rewrite (Rminus_diag_eq _ _ E) in D.
   lra.
 Qed.
