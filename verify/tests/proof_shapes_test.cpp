@@ -237,6 +237,8 @@ Stable for $0 < \om h < 2$. Also stable for $0 < \om h < 2 \sqrt{2}$. And for $0
 \begin{equation}\label{balance} k q - 2 = 0 \end{equation}
 \begin{equation}\label{square} q^2 - 4 = 0 \end{equation}
 \begin{equation}\label{pnext} p_1 = \frac{m}{h} (q_{j+1} - q_j) - \frac{h m \om^2}{2} q_{j+1} \end{equation}
+\begin{equation}\label{momsys} p_{j+1} - p_j = - \frac{h m \om^2}{2} (q_{j+1} + q_j) \,,\,\, \Big(1 - \frac{\om^2 h^2}{4}\Big) \frac{q_{j+1} - q_j}{h} = \frac{p_{j+1} + p_j}{2 m} \end{equation}
+\begin{equation}\label{momsysmid} p_{j+1} - p_j = - \frac{h m \om^2}{2} (q_{j+1} + q_j) \,,\,\, \frac{q_{j+1} - q_j}{h} = \frac{p_{j+1} + p_j}{2 m} \end{equation}
 This scheme is of fourth order. The same scheme is of second order.
 Coefficient $1 - \frac{\om^2 h^2}{4}$ positive on $0 < \om h < 2$, but not on the wide $0 < \om h < 3$.
 That map is symplectic indeed. This map is not symplectic, some say. Another map is wonderful here.
@@ -806,6 +808,24 @@ TEST_F(ShapesOnADocument, Derivative) {
       << taken_at.evidence.dump();
   EXPECT_EQ(run("derivative", R"({ function = "ld", variable = ['q_1'], printed = "pnext" })").outcome, verdict::erratum);
   EXPECT_EQ(run("derivative", "{ " + at + R"(, at = ['q_{j+1}', 'q_j'] })").outcome, verdict::erratum);
+}
+
+// A system in the states and momenta of one step, the momenta p_j = -D_1 L_d(q_j, q_{j+1}) and
+// p_{j+1} = D_2 L_d(q_j, q_{j+1}) of the trapezoidal (ld). The midpoint rule's system (momsysmid,
+// Section 2's) shares its first relation, and p_{j+1} alone: a check of either would pass it.
+TEST_F(ShapesOnADocument, DiscreteMomenta) {
+  const std::string rest = R"(lagrangian = "ld", nodes = ['q_0', 'q_1'], at = ['q_j', 'q_{j+1}'])";
+  const claim_result holds = run("discrete-momenta", R"({ equations = ["momsys#1", "momsys#2"], momenta = ['p_j', 'p_{j+1}'], )" + rest + " }");
+  EXPECT_EQ(holds.outcome, verdict::holds) << holds.note << holds.evidence.dump();
+  EXPECT_NE(holds.evidence["exact"]["own"].get<std::string>().find("holds"), std::string::npos) << holds.evidence.dump();
+  EXPECT_NE(holds.evidence["exact"]["statement"].get<std::string>().find("with p_j = -D_1 L(q_j, q_j+1) = "), std::string::npos) << holds.evidence.dump();
+  EXPECT_EQ(holds.certificate_lemmas.size(), 2u) << holds.certificate;
+  const claim_result midpoint = run("discrete-momenta", R"({ equations = ["momsysmid#1", "momsysmid#2"], momenta = ['p_j', 'p_{j+1}'], )" + rest + " }");
+  EXPECT_EQ(midpoint.outcome, verdict::erratum) << midpoint.note;
+  EXPECT_NE(midpoint.evidence["exact"]["own"].get<std::string>().find("fails"), std::string::npos) << midpoint.evidence.dump();
+  EXPECT_EQ(midpoint.correction.find("; "), std::string::npos) << "the second relation alone: " << midpoint.correction;
+  // The momenta swapped (p_j = D_2 L): the first relation changes sign.
+  EXPECT_EQ(run("discrete-momenta", R"({ equations = ["momsys#1"], momenta = ['p_{j+1}', 'p_j'], )" + rest + " }").outcome, verdict::erratum);
 }
 
 TEST_F(ShapesOnADocument, AFunctionTheFileDeclares) {

@@ -73,7 +73,6 @@ class check_registry {
 const check_registry& registered_checks();
 
 // The facets, registered onto the checks (after every check is added).
-void add_printed_checks_section2_4(check_registry& checks);
 void add_printed_checks_section6_7(check_registry& checks);
 void add_kernel_claim_goals(check_registry& checks);
 

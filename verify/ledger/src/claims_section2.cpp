@@ -1,4 +1,5 @@
-// Section 2: the Newmark map (the classical scheme's claims are proof shapes' records in claims/paper.toml).
+// Section 2: Newmark's map named as one of Newmark's family (the other claims of Section 2 are proof
+// shapes' records in claims/paper.toml).
 
 #include "claim_support.hpp"
 #include "claims_section2.hpp"
@@ -9,32 +10,10 @@
 
 #include <ginac/ginac.h>
 
-#include <sstream>
-
-#include <simpson/classical_lagrangian.hpp>
-#include <simpson/energy.hpp>
 #include <simpson/newmark_map.hpp>
 
 namespace simpson::verify::detail {
 namespace {
-
-/// y_{j+1} from Φ, with p_j = −∂L_d/∂q_l(q_j, q_{j+1}) and p_{j+1} = ∂L_d/∂q_r(q_j, q_{j+1}).
-claim_result check_newmark_discrete_system(const run_context&) {
-  const proof p = prove_zero_on_grid(
-      std::string(unit_reduction) +
-          "; p_j = -dL_d/dq_l(q_j,q_{j+1}), p_{j+1} = dL_d/dq_r(q_j,q_{j+1}) (exact differences) put into both relations",
-      {"q_j", "q_{j+1}"}, 1, [&](const auto& v) {
-        using S = std::decay_t<decltype(v[0])>;
-        const auto par = theta_oscillator<S>();
-        const auto V = [&](const S& x) { return par.potential(x); };
-        const S q(v[0]), qn(v[1]);
-        const S p_next = exact_derivative([&](const S& x) { return classical_lagrangian(par.m(), par.h(), V, q, x); }, qn);
-        const S p_now = -exact_derivative([&](const S& x) { return classical_lagrangian(par.m(), par.h(), V, x, qn); }, q);
-        const phase_point<S> r = newmark_system_residual(par, phase_point<S>{p_now, q}, phase_point<S>{p_next, qn});
-        return std::vector<S>{r.p, r.q};
-      });
-  return identity(p, "On a solution, p_j = dL_d/dq_r(q_{j-1}, q_j) equals -dL_d/dq_l(q_j, q_{j+1}) by (Euler-Lagrange-discret).");
-}
 
 /// Newmark's scheme for m q'' + m ω² q = 0 with parameters (β, γ), v = p/m, a = −ω² q:
 ///   q₁ = q + h v + h² ((1/2 − β) a + β a₁),  v₁ = v + h ((1 − γ) a + γ a₁).
@@ -75,7 +54,6 @@ claim_result check_newmark_identification(const run_context& ctx) {
 }  // namespace
 
 void add_section2_checks(check_registry& checks) {
-  checks.add("newmark-discrete-system", check_newmark_discrete_system);
   checks.add("newmark-identification", check_newmark_identification);
 }
 

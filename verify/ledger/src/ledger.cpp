@@ -47,7 +47,6 @@ const check_registry& registered_checks() {
     add_beyond_ndof_checks(all);
     add_beyond_fpu_checks(all);
     add_family_checks(all);
-    add_printed_checks_section2_4(all);
     add_printed_checks_section6_7(all);
     add_kernel_claim_goals(all);
     return all;

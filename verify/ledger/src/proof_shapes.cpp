@@ -139,6 +139,14 @@ const std::map<std::string, proof_shape>& proof_shapes() {
                      {"sequence", argument_kind::symbols, true, "three consecutive states", 3},
                      {"printed", argument_kind::formula, true, "the printed equation's side that is 0"}}),
          euler_lagrange_shape});
+    add({"discrete-momenta", "every side of each printed equation equals its first once p_j = -D_1 L(q_j, q_{j+1}) and p_{j+1} = D_2 L(q_j, q_{j+1}) are put in",
+         "equations",
+         with_where({{"equations", argument_kind::equations, true, "the printed system: equations in the states and the momenta of one step"},
+                     {"lagrangian", argument_kind::formula, true, "the discrete Lagrangian L(q_0, q_1)"},
+                     {"nodes", argument_kind::symbols, true, "its two arguments", 2},
+                     {"at", argument_kind::symbols, true, "the two states of the step, q_j and q_{j+1}", 2},
+                     {"momenta", argument_kind::symbols, true, "the momenta at them, p_j and p_{j+1}", 2}}),
+         discrete_momenta_shape});
     add({"stationary", "the printed equation (= 0) is d function / d variable = 0, up to a factor free of the unknowns", "printed",
          with_where({{"printed", argument_kind::formula, true, "the printed equation's side that is 0"},
                      {"function", argument_kind::formula, true, "the function made stationary (a discrete Lagrangian)"},

@@ -94,6 +94,12 @@ claim_result identity_verdict(const shape_call& call, shape_reader& read, const 
                               const GiNaC::ex& rhs, const std::string& correction, verdict when_false = verdict::erratum,
                               const std::optional<kernel_decision>& own = std::nullopt);
 
+/// The verdict of equal-sides on `equations`: every side equals its equation's first, the call's
+/// definitions and then `given` put in (`given_text` says what it puts in: ", with p_j = ..."), in
+/// both kernels, one Coq lemma per side; an erratum's correction gives each side as derived.
+claim_result equal_sides_verdict(const shape_call& call, shape_reader& read, const std::vector<referenced_formula>& equations, const GiNaC::exmap& given,
+                                 const std::string& given_text);
+
 /// The verdict of a shape whose two kernels each decided its statement: kernels-disagree when they
 /// differ (the note naming `what`), else holds, or an erratum corrected by `correction`.
 void settle(claim_result& result, bool disagree, bool holds, const std::string& what, const std::string& correction);
@@ -140,6 +146,7 @@ claim_result invariance_singular_shape(const shape_call& call, const run_context
 claim_result invariance_kernel_shape(const shape_call& call, const run_context& ctx);
 claim_result euler_lagrange_shape(const shape_call& call, const run_context& ctx);
 claim_result stationary_shape(const shape_call& call, const run_context& ctx);
+claim_result discrete_momenta_shape(const shape_call& call, const run_context& ctx);
 claim_result discrete_map_shape(const shape_call& call, const run_context& ctx);
 claim_result truncation_shape(const shape_call& call, const run_context& ctx);
 claim_result stated_order_shape(const shape_call& call, const run_context& ctx);

@@ -64,6 +64,26 @@ claim_result stationary_shape(const shape_call& call, const run_context& ctx) {
   return same_equation_verdict(call, read, "stationary", what, printed, GiNaC::diff(function, variable), read.symbols("unknowns"));
 }
 
+/// A printed system in the states and momenta of one step, each equation's sides equal once the
+/// momenta are the discrete Legendre transforms of the Lagrangian on that step, p_j = −D_1 L(q_j,
+/// q_{j+1}) and p_{j+1} = D_2 L(q_j, q_{j+1}) (the paper prints p_{j+1} and says "an analogous
+/// relation for p_j"): equal-sides with them put in.
+claim_result discrete_momenta_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const std::vector<referenced_formula> equations = read.equations("equations");
+  const ex lagrangian = read.formula("lagrangian");
+  const std::vector<GiNaC::symbol> nodes = read.symbols("nodes"), at = read.symbols("at"), momenta = read.symbols("momenta");
+  const GiNaC::exmap on_step{{nodes[0], at[0]}, {nodes[1], at[1]}};
+  // In normal form: the derivatives as written would cancel against the printed sides term by term
+  // (GiNaC's evaluation), leaving our kernel and Coq a 0 to check.
+  const ex left = GiNaC::normal(-lagrangian.diff(nodes[0]).subs(on_step, GiNaC::subs_options::no_pattern));
+  const ex right = GiNaC::normal(lagrangian.diff(nodes[1]).subs(on_step, GiNaC::subs_options::no_pattern));
+  const GiNaC::exmap given{{momenta[0], left}, {momenta[1], right}};
+  return equal_sides_verdict(call, read, equations, given,
+                             fmt::format(", with {} = -D_1 L({}, {}) = {} and {} = D_2 L({}, {}) = {}", momenta[0].get_name(), at[0].get_name(), at[1].get_name(),
+                                         text_of(left), momenta[1].get_name(), at[0].get_name(), at[1].get_name(), text_of(right)));
+}
+
 /// The one-step map of a discrete Lagrangian L(q_0, q_1) of a linear system, derived: each internal
 /// node eliminated by its equation D_{q_m} L = 0, then p_0 = −D_1 L solved for q_1 and p_1 = D_2 L,
 /// as a matrix in (q_0, p_0), or in (p_0, q_0) when the record's `order` says "p q"; compared with

@@ -167,7 +167,11 @@ claim_result identity_shape(const shape_call& call, const run_context& ctx) {
 /// each side that differs as derived from the reference.
 claim_result equal_sides_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
-  const std::vector<referenced_formula> equations = read.equations("equations");
+  return equal_sides_verdict(call, read, read.equations("equations"), {}, "");
+}
+
+claim_result equal_sides_verdict(const shape_call& call, shape_reader& read, const std::vector<referenced_formula>& equations, const GiNaC::exmap& given,
+                                 const std::string& given_text) {
   claim_result result;
   std::vector<proof_goal> goals;
   json decided_sides = json::array();
@@ -175,7 +179,8 @@ claim_result equal_sides_shape(const shape_call& call, const run_context& ctx) {
   bool any_false = false, disagree = false, own_any_nonzero = false;
   for (std::size_t i = 0; i < equations.size(); ++i) {
     const referenced_formula& equation = equations[i];
-    const std::vector<ex> sides = read.sides(equation);
+    std::vector<ex> sides = read.sides(equation);
+    for (ex& side : sides) side = side.subs(given);
     std::size_t first = 0;
     if (sides.size() > 2 && GiNaC::is_a<GiNaC::symbol>(sides.front()) && !read.defines(GiNaC::ex_to<GiNaC::symbol>(sides.front()))) {
       const bool elsewhere = std::any_of(sides.begin() + 1, sides.end(), [&](const ex& side) { return side.has(sides.front()); });
@@ -206,14 +211,14 @@ claim_result equal_sides_shape(const shape_call& call, const run_context& ctx) {
     }
   }
   if (goals.empty()) throw std::invalid_argument(reference_of(call, "equations") + ": no two sides to compare");
-  result.evidence["exact"] = {{"statement", fmt::format("every side of {} printed equation(s) equals its first, the definitions put in", equations.size())},
+  result.evidence["exact"] = {{"statement", fmt::format("every side of {} printed equation(s) equals its first, the definitions put in{}", equations.size(), given_text)},
                               {"ginac", any_false ? fmt::format("fails: {} side(s) differ from their equation's first", corrections.size())
                                                   : "holds: every side equals its equation's first (normal form, every symbol free)"},
                               {"own", own_any_nonzero        ? std::string("fails: a side differs from its equation's first")
                                       : !not_decided.empty() ? "not applicable: " + fmt::format("{}", fmt::join(not_decided, "; "))
                                                              : std::string("holds: every side equals its equation's first (each grid below)")},
                               {"sides", decided_sides}};
-  settle(result, disagree, !any_false, "a side", fmt::format("as derived from the definitions: {}", fmt::join(corrections, "; ")));
+  settle(result, disagree, !any_false, "a side", fmt::format("as derived from the definitions{}: {}", given_text, fmt::join(corrections, "; ")));
   if (result.outcome == verdict::erratum) result.note = fmt::format("As printed: {} side(s) differ from the first of their equation.", corrections.size());
   if (!not_decided.empty()) result.note += fmt::format("{}Our kernel could not decide {}: GiNaC's proof alone.", result.note.empty() ? "" : " ", fmt::join(not_decided, "; "));
   result.printed = read.printed();

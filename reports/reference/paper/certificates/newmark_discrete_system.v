@@ -13,7 +13,7 @@ Ltac nonzero :=
           end
         | apply pow_nonzero; nonzero ].
 
-Lemma newmark_discrete_system_printed :
+Lemma newmark_discrete_system_equation_1_side_2 :
   forall h m omega q_j q_jp1 : R,
   0 < m ->
   0 < h ->
@@ -25,7 +25,7 @@ Proof.
   field; repeat split; nonzero.
 Qed.
 
-Lemma newmark_discrete_system_printed_2 :
+Lemma newmark_discrete_system_equation_2_side_2 :
   forall h m omega q_j q_jp1 : R,
   0 < m ->
   0 < h ->
