@@ -67,10 +67,10 @@ TEST(ClaimsFile, ACheckBringsItsFacetsUnderItsOneName) {
   EXPECT_EQ(find_claim("phi3-det").check_name, "shape determinant");
   EXPECT_EQ(find_claim("hd-invariance").labels_read, (std::vector<std::string>{"Phi3", "hamiltonien-discret"}));
   EXPECT_TRUE(reads_printed_formula("phi3-det"));
-  const detail::registered_check* explicit_map = detail::registered_checks().find("phi3-explicit");
-  ASSERT_NE(explicit_map, nullptr);
-  EXPECT_TRUE(explicit_map->coq_goals);
-  EXPECT_FALSE(reads_printed_formula("phi3-explicit"));
+  const detail::registered_check* shears = detail::registered_checks().find("phi3-shear-factorization");
+  ASSERT_NE(shears, nullptr);
+  EXPECT_TRUE(shears->coq_goals);
+  EXPECT_FALSE(reads_printed_formula("phi3-shear-factorization"));
   // Named under the check, not the claim: figure1-statements's check is figure1.
   EXPECT_EQ(find_claim("figure1-statements").check_name, "figure1");
   EXPECT_NE(detail::registered_checks().find("figure1"), nullptr);

@@ -300,6 +300,11 @@ $D = (u s - v w - 1) (1 - u - s + u s - v w) (1 + u + s + u s - v w)$.
   \frac{u^2 - 1}{2} & u w & \frac{w^2}{2} \end{pmatrix} \begin{pmatrix} a \\ b \\ c \end{pmatrix} = 0 \end{equation}
 With equal diagonal $u = s$ we find $b = 0$, but not only $c = 0$; a cube, $K = q^3$, is no such form.
 Of unit determinant, $u s - v w = 1$; on a circle, $u^2 + s^2 = 1$.
+\begin{equation}\label{newmarkmap} \Phi = \frac{1}{1 + \frac{\om^2 h^2}{4}} \begin{pmatrix} 1 - \frac{\om^2 h^2}{4} & \frac{h}{m} \\
+  - m \om^2 h & 1 - \frac{\om^2 h^2}{4} \end{pmatrix} \end{equation}
+\begin{equation}\label{singularmap} \Phi = \frac{1}{1 - \frac{\om^2 h^2}{4}} \begin{pmatrix} 1 & h \\ 0 & 1 \end{pmatrix} \end{equation}
+Written as (\ref{map}), leapfrog is an explicit scheme. Written as (\ref{newmarkmap}), the trapezoidal rule is an explicit scheme.
+Said otherwise, the trapezoidal rule is an implicit scheme. Written as (\ref{singularmap}), the backward rule is an explicit scheme.
 )";
 
 const std::string declarations = R"(
@@ -828,6 +833,31 @@ TEST_F(ShapesOnADocument, DiscreteMomenta) {
   EXPECT_EQ(run("discrete-momenta", R"({ equations = ["momsys#1"], momenta = ['p_{j+1}', 'p_j'], )" + rest + " }").outcome, verdict::erratum);
 }
 
+// "an explicit scheme", as the field defines it: on a linear problem, a one-step map polynomial in
+// the step. Newmark's map (the trapezoidal rule) has denominators with no real root, so the check
+// that held before (a map regular for every h) called it explicit too: it must not.
+TEST_F(ShapesOnADocument, ExplicitMap) {
+  const auto with = [](const std::string& map, const std::string& sentence) {
+    return "{ map = \"" + map + "\", step = ['h'], positive = ['m', '\\omega'], sentence = '" + sentence + "' }";
+  };
+  const claim_result leapfrog = run("explicit-map", with("map", "Written as (\\ref{map}), leapfrog is an {kind} scheme."));
+  EXPECT_EQ(leapfrog.outcome, verdict::holds) << leapfrog.note << leapfrog.evidence.dump();
+  EXPECT_EQ(leapfrog.evidence["exact"]["own"].get<std::string>().rfind("holds", 0), 0u) << leapfrog.evidence.dump();
+  const claim_result newmark = run("explicit-map", with("newmarkmap", "Written as (\\ref{newmarkmap}), the trapezoidal rule is an {kind} scheme."));
+  EXPECT_EQ(newmark.outcome, verdict::erratum) << newmark.note;
+  EXPECT_EQ(newmark.evidence["exact"]["own"].get<std::string>().rfind("fails", 0), 0u) << newmark.evidence.dump();
+  EXPECT_EQ(newmark.correction.rfind("The scheme is implicit: the entries of (newmarkmap) have the denominator(s) ", 0), 0u) << newmark.correction;
+  EXPECT_EQ(newmark.note.rfind("Wording: the map is in closed form and regular", 0), 0u) << newmark.note;
+  EXPECT_EQ(newmark.certificate_lemmas.size(), 2u) << newmark.certificate_missing << newmark.certificate;  // 4 + h^2 omega^2, and m (4 + ...)
+  const claim_result said_implicit = run("explicit-map", with("newmarkmap", "Said otherwise, the trapezoidal rule is an {kind} scheme."));
+  EXPECT_EQ(said_implicit.outcome, verdict::holds) << said_implicit.note;
+  // A denominator that vanishes at h = 2/omega: implicit, and not regular either (no wording excuse).
+  const claim_result singular = run("explicit-map", with("singularmap", "Written as (\\ref{singularmap}), the backward rule is an {kind} scheme."));
+  EXPECT_EQ(singular.outcome, verdict::erratum);
+  EXPECT_EQ(singular.note, "");
+  EXPECT_EQ(singular.evidence["exact"]["regular"].get<std::string>().rfind("not shown", 0), 0u) << singular.evidence.dump();
+}
+
 TEST_F(ShapesOnADocument, AFunctionTheFileDeclares) {
   // g is declared a function: g(q^2) is applied, its derivative the chain rule's (V's is the reader's own).
   const claim_result chain = run("derivative", R"({ function = '$g(q^2)$', variable = ['q'], printed = '$2 q {{\partial g}\over{\partial q}}(q^2)$' })");
@@ -1087,6 +1117,11 @@ TEST(ShapeRecords, BadRecordsAreNamedWithTheirLineAndArgument) {
             std::string::npos);
   EXPECT_NE(error_of("invariance-kernel", "{ printed = 'inline:It conserves', conditions = ['inline:one side alone'], solve_for = ['s'], " + invariance + " }")
                 .find("field 'with.conditions'"),
+            std::string::npos);
+  EXPECT_NE(error_of("explicit-map", R"({ map = "map", step = ['h'], sentence = 'leapfrog is an explicit scheme.' })")
+                .find("field 'with.sentence': the sentence's pattern has no hole {kind}"),
+            std::string::npos);
+  EXPECT_NE(error_of("explicit-map", R"({ map = "map", step = ['h', 'm'], sentence = 'leapfrog is an {kind} scheme.' })").find("field 'with.step': 2 symbols, not 1"),
             std::string::npos);
   // A side of a chain by its number, from 1.
   EXPECT_NE(error_of("identity", R"({ lhs = "invsys:side4", rhs = "one" })").find("side 4 is not there (the equation has 3)"), std::string::npos);

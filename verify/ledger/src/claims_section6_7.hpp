@@ -1,5 +1,5 @@
 #pragma once
-// Sections 4 to 6, where no proof shape decides yet: the derivation of Φ₃ and its explicitness.
+// Sections 4 to 6, where no proof shape decides yet: the derivation of Φ₃ from first principles.
 
 #include <simpson/verify/claim.hpp>
 #include "check_registry.hpp"

@@ -1,6 +1,6 @@
 // The Coq goals of the claims our own kernel proves without a printed formula, registered onto their checks (check_registry.hpp):
-// the signs of Section 5 (Δ < 0 on the stable bands), Φ₃'s shear factorization, and Φ₃'s
-// regular denominators, stated on the core's formulas in GiNaC. Our kernel's proofs (Sturm sequences
+// the signs of Section 5 (Δ < 0 on the stable bands) and Φ₃'s shear factorization, stated on the
+// core's formulas in GiNaC. Our kernel's proofs (Sturm sequences
 // on rational functions of θ) stay the claims' exact evidence; these goals are what coqc checks again.
 
 #include "check_registry.hpp"
@@ -41,24 +41,6 @@ std::vector<proof_goal> phi3_shear_factorization() {
   return {decided("core", as_matrix(product), core_phi3())};
 }
 
-/// Each entry of Φ₃ has a denominator positive for every m > 0, ω, h > 0 (the map is explicit, never
-/// singular); nra is told that (ωh)² ≥ 0.
-std::vector<proof_goal> phi3_explicit() {
-  const symbolic_derivation& d = derivation();
-  const GiNaC::exmap inside{{d.omega, 1}, {d.h, 1}, {d.m, 1}};
-  const GiNaC::matrix phi = core_phi3();
-  std::vector<proof_goal> goals;
-  std::vector<ex> seen;
-  for (unsigned k = 0; k < 4; ++k) {
-    const ex den = GiNaC::denom(GiNaC::normal(phi(k / 2, k % 2)));
-    if (GiNaC::is_a<GiNaC::numeric>(den) || std::any_of(seen.begin(), seen.end(), [&](const ex& s) { return (s - den).is_zero(); })) continue;
-    seen.push_back(den);
-    goals.push_back(sign_goal("denominator", den, 1, {}, inside));
-    goals.back().squares = {d.omega * d.h};
-  }
-  return goals;
-}
-
 }  // namespace
 
 proof_goal sign_goal(const std::string& name, const ex& lhs, int sign, std::vector<ex> positive, GiNaC::exmap inside) {
@@ -81,7 +63,6 @@ proof_goal sign_goal(const std::string& name, const ex& lhs, int sign, std::vect
 }
 
 void add_kernel_claim_goals(check_registry& checks) {
-  checks.add_coq_goals("phi3-explicit", phi3_explicit);
   checks.add_coq_goals("phi3-shear-factorization", phi3_shear_factorization);
   checks.add_coq_goals("scaling", dimensional_scaling);
   checks.add_coq_goals("family-symplectic", family_symplectic_goals);

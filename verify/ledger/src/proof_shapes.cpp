@@ -139,6 +139,13 @@ const std::map<std::string, proof_shape>& proof_shapes() {
                      {"sequence", argument_kind::symbols, true, "three consecutive states", 3},
                      {"printed", argument_kind::formula, true, "the printed equation's side that is 0"}}),
          euler_lagrange_shape});
+    add({"explicit-map", "the sentence's {kind} (explicit or implicit) is what the printed map is: explicit when every entry is a polynomial in the step",
+         "map",
+         with_where({{"map", argument_kind::matrix, true, "the printed one-step map"},
+                     {"step", argument_kind::symbols, true, "the step h", 1},
+                     {"positive", argument_kind::symbols, false, "symbols positive besides the step (m, omega), for the denominators' signs"},
+                     pattern_with_hole("sentence", "the sentence's pattern: the hole {kind}, 'explicit' or 'implicit'", "kind")}),
+         explicit_map_shape});
     add({"discrete-momenta", "every side of each printed equation equals its first once p_j = -D_1 L(q_j, q_{j+1}) and p_{j+1} = D_2 L(q_j, q_{j+1}) are put in",
          "equations",
          with_where({{"equations", argument_kind::equations, true, "the printed system: equations in the states and the momenta of one step"},

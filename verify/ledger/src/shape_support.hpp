@@ -3,7 +3,7 @@
 // document with its definitions put in and its symbols checked against the declared ones, the
 // verdict on an identity in both kernels with its Coq certificate, and each shape's function, by
 // family: identities (shapes_identities.cpp), a form's invariance (shapes_invariance.cpp), derivations (shapes_derivation.cpp), series
-// (shapes_series.cpp), intervals (shapes_intervals.cpp), characteristic polynomials
+// (shapes_series.cpp), a map's explicitness (shapes_explicit.cpp), intervals (shapes_intervals.cpp), characteristic polynomials
 // (shapes_characteristic.cpp), quadrature (shapes_quadrature.cpp), sums (shapes_sums.cpp).
 
 #include "kernel_zero.hpp"
@@ -147,6 +147,7 @@ claim_result invariance_kernel_shape(const shape_call& call, const run_context& 
 claim_result euler_lagrange_shape(const shape_call& call, const run_context& ctx);
 claim_result stationary_shape(const shape_call& call, const run_context& ctx);
 claim_result discrete_momenta_shape(const shape_call& call, const run_context& ctx);
+claim_result explicit_map_shape(const shape_call& call, const run_context& ctx);
 claim_result discrete_map_shape(const shape_call& call, const run_context& ctx);
 claim_result truncation_shape(const shape_call& call, const run_context& ctx);
 claim_result stated_order_shape(const shape_call& call, const run_context& ctx);

@@ -13,32 +13,28 @@ Ltac nonzero :=
           end
         | apply pow_nonzero; nonzero ].
 
-Lemma phi3_explicit_denominator :
-  forall h omega : R,
+Lemma phi3_explicit_denominator_1 :
+  forall h m omega : R,
+  0 < m ->
   0 < h ->
-  0 < ((2 * (h ^ 2) * (omega ^ 2)) + 48).
+  0 < h ->
+  0 < m ->
+  0 < omega ->
+  0 < (((h ^ 2) * (omega ^ 2)) + 24).
 Proof.
   intros.
   assert (0 <= (h * omega) ^ 2) by apply pow2_ge_0.
-  assert (0 < ((2 * (h ^ 2) * (omega ^ 2)) + 48)) by nra.
+  assert (0 < (((h ^ 2) * (omega ^ 2)) + 24)) by nra.
   nra.
 Qed.
 
 Lemma phi3_explicit_denominator_2 :
-  forall h omega : R,
-  0 < h ->
-  0 < ((12 * (h ^ 2) * (omega ^ 2)) + 288).
-Proof.
-  intros.
-  assert (0 <= (h * omega) ^ 2) by apply pow2_ge_0.
-  assert (0 < ((12 * (h ^ 2) * (omega ^ 2)) + 288)) by nra.
-  nra.
-Qed.
-
-Lemma phi3_explicit_denominator_3 :
   forall h m omega : R,
   0 < m ->
   0 < h ->
+  0 < h ->
+  0 < m ->
+  0 < omega ->
   0 < ((-1) * (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) * m).
 Proof.
   intros.
