@@ -305,6 +305,9 @@ Of unit determinant, $u s - v w = 1$; on a circle, $u^2 + s^2 = 1$.
 \begin{equation}\label{singularmap} \Phi = \frac{1}{1 - \frac{\om^2 h^2}{4}} \begin{pmatrix} 1 & h \\ 0 & 1 \end{pmatrix} \end{equation}
 Written as (\ref{map}), leapfrog is an explicit scheme. Written as (\ref{newmarkmap}), the trapezoidal rule is an explicit scheme.
 Said otherwise, the trapezoidal rule is an implicit scheme. Written as (\ref{singularmap}), the backward rule is an explicit scheme.
+\begin{equation}\label{midnode} q_m = \frac{1}{1 - \frac{\om^2 h^2}{8}} \frac{q_0 + q_1}{2} \end{equation}
+\begin{equation}\label{squarenode} q_m = \frac{q_0^2 + q_1^2}{q_0 + q_1} \end{equation}
+This node is not linear in the ends. That node is linear in the ends. Squared, the node is linear in the ends.
 )";
 
 const std::string declarations = R"(
@@ -856,6 +859,27 @@ TEST_F(ShapesOnADocument, ExplicitMap) {
   EXPECT_EQ(singular.outcome, verdict::erratum);
   EXPECT_EQ(singular.note, "");
   EXPECT_EQ(singular.evidence["exact"]["regular"].get<std::string>().rfind("not shown", 0), 0u) << singular.evidence.dump();
+}
+
+// "not linear", judged of the printed expression: e = q_0 e(1, 0) + q_1 e(0, 1) identically. The
+// squared node is homogeneous of degree 1 (Euler's identity holds), so a check of homogeneity, or of
+// e(2 q) = 2 e(q), would call it linear: it is not.
+TEST_F(ShapesOnADocument, Linear) {
+  const auto with = [](const std::string& expression, const std::string& sentence) {
+    return "{ expression = \"" + expression + "\", variables = ['q_0', 'q_1'], sentence = '" + sentence + "' }";
+  };
+  const claim_result said_not = run("linear", with("midnode", "This node is {linearity} in the ends."));
+  EXPECT_EQ(said_not.outcome, verdict::erratum) << said_not.note << said_not.evidence.dump();
+  EXPECT_EQ(said_not.correction.rfind("(midnode) is linear in q_0, q_1: ", 0), 0u) << said_not.correction;
+  EXPECT_NE(said_not.evidence["exact"]["own"].get<std::string>().find("holds"), std::string::npos) << said_not.evidence.dump();
+  EXPECT_FALSE(said_not.certificate.empty()) << "the linear identity, in Coq";
+  EXPECT_EQ(run("linear", with("midnode", "That node is {linearity} in the ends.")).outcome, verdict::holds);
+  const claim_result squared = run("linear", with("squarenode", "Squared, the node is {linearity} in the ends."));
+  EXPECT_EQ(squared.outcome, verdict::erratum) << squared.note;
+  EXPECT_EQ(squared.correction.rfind("(squarenode) is not linear in q_0, q_1: ", 0), 0u) << squared.correction;
+  EXPECT_NE(squared.evidence["exact"]["own"].get<std::string>().find("fails"), std::string::npos) << squared.evidence.dump();
+  EXPECT_FALSE(squared.refutation.empty()) << "not linear, refuted in Coq";
+  EXPECT_EQ(run("linear", with("squarenode", "This node is {linearity} in the ends.")).outcome, verdict::holds);
 }
 
 TEST_F(ShapesOnADocument, AFunctionTheFileDeclares) {

@@ -18,43 +18,6 @@
 namespace simpson::verify::detail {
 namespace {
 
-claim_result check_qm_not_affine(const run_context& ctx) {
-  const quoted_sentence said = quote(ctx, "This interpolation is {linearity} if $ \\, h > 0 $.");
-  // Literally: "not linear" says the map (q_l, q_r) -> q_m is not linear (false: it is); "not affine"
-  // says it is not the affine interpolant's midpoint (true); "linear" is true; "affine" false.
-  const std::string stated = said.choice("linearity", {{"not linear", "not linear"}, {"nonlinear", "not linear"},
-                                                       {"non linear", "not linear"}, {"non-linear", "not linear"},
-                                                       {"not affine", "not the affine midpoint"}, {"linear", "linear"},
-                                                       {"affine", "the affine midpoint"}});
-  const proof p = prove_zero_on_grid(std::string(unit_reduction) +
-                                         "; q_m - (q_l + q_r)/2 - ((q_l + q_r)/2) (x/8)/(1 - x/8), x = theta^2",
-                                     {"q_l", "q_r"}, 1, [&](const auto& v) {
-                                       using S = std::decay_t<decltype(v[0])>;
-                                       const auto par = theta_oscillator<S>();
-                                       const S x = par.omega2_h2();
-                                       const S ql(v[0]), qr(v[1]);
-                                       return S(harmonic_internal_node(par, ql, qr) - (ql + qr) / 2 - (ql + qr) / 2 * (x / 8) / (1 - x / 8));
-                                     });
-  const std::string proved = "q_m differs from the affine interpolant's midpoint (q_l + q_r)/2 by ((q_l + q_r)/2)(omega^2 h^2/8)/"
-                             "(1 - omega^2 h^2/8), nonzero for h > 0 unless q_l + q_r = 0";
-  if (stated == "the affine midpoint" && p.proved) {
-    proof printed;
-    printed.evidence = {{"stated", said.words("linearity")}, {"result", "refuted: " + proved}};
-    return erratum(printed, p, "The interpolation is not the affine one: " + proved);
-  }
-  if (!p.proved) return identity(p);
-  if (stated == "not linear") {
-    json evidence;
-    evidence["exact"] = p.evidence;
-    evidence["stated"] = said.words("linearity");
-    return words_erratum(evidence, "q_m = (q_l + q_r)/(2 (1 - omega^2 h^2/8)) is linear in (q_l, q_r); what holds is that it is not "
-                                   "the affine interpolant's midpoint: " + proved,
-                         "Wording: 'not linear' is false of q_m, a linear function of (q_l, q_r); the intended content, that q_m is "
-                         "not the midpoint (q_l + q_r)/2, is proved.");
-  }
-  return identity(p, "What was proved: " + proved + ".");
-}
-
 /// "Maupertuis's stationary-action principle delta Sigma_d = 0": Sigma_d sums L_h, Simpson's rule on
 /// the Lagrangian m q'^2/2 - V along the interpolant, at fixed times: Hamilton's action. Maupertuis's
 /// principle varies the abbreviated action, the integral of p q' = m q'^2, at fixed energy. Shown: L_h
@@ -104,7 +67,6 @@ claim_result check_maupertuis_naming(const run_context& ctx) {
 
 void add_section5_checks(check_registry& checks) {
   checks.add("maupertuis-naming", check_maupertuis_naming);
-  checks.add("qm-not-affine", check_qm_not_affine);
 }
 
 }  // namespace simpson::verify::detail

@@ -103,6 +103,11 @@ const std::map<std::string, proof_shape>& proof_shapes() {
          determinant_shape});
     add({"symplectic", "matrix^T J matrix = J, J = [[0, I], [-I, 0]]", "matrix",
          with_where({{"matrix", argument_kind::matrix, true, "a one-step map of (q, p)"}}), symplectic_shape});
+    add({"linear", "the sentence's {linearity} (linear, or not linear) is what the expression is in the variables: e = sum of v_i e(unit v_i)", "expression",
+         with_where({{"expression", argument_kind::formula, true, "the printed expression"},
+                     {"variables", argument_kind::symbols, true, "the variables it is linear in, or not"},
+                     pattern_with_hole("sentence", "the sentence's pattern: the hole {linearity}, 'linear' or 'not linear'", "linearity")}),
+         linear_shape});
     add({"conserved", "function(map y) = function(y), y the state", "function",
          with_where({{"map", argument_kind::matrix, true, "a one-step map"},
                      {"function", argument_kind::formula, true, "a function of the state"},

@@ -138,6 +138,7 @@ claim_result derivative_shape(const shape_call& call, const run_context& ctx);
 claim_result solves_shape(const shape_call& call, const run_context& ctx);
 claim_result determinant_shape(const shape_call& call, const run_context& ctx);
 claim_result symplectic_shape(const shape_call& call, const run_context& ctx);
+claim_result linear_shape(const shape_call& call, const run_context& ctx);
 claim_result conserved_shape(const shape_call& call, const run_context& ctx);
 claim_result proportional_shape(const shape_call& call, const run_context& ctx);
 claim_result invariance_system_shape(const shape_call& call, const run_context& ctx);

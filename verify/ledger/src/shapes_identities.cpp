@@ -1,10 +1,12 @@
 // The identity shapes (shape_support.hpp): identity, equal-sides, derivative, solves, determinant,
-// symplectic, conserved, proportional.
+// symplectic, linear, conserved, proportional.
 
 #include "shape_support.hpp"
 
 #include "coq_export.hpp"
 #include "printed_check_support.hpp"
+
+#include <simpson/verify/quoted_words.hpp>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -300,6 +302,50 @@ claim_result symplectic_shape(const shape_call& call, const run_context& ctx) {
   claim_result result = identity_verdict(call, read, "symplectic", what, lhs, ex(j), "", verdict::fails);
   if (result.outcome == verdict::fails) {
     result.note += fmt::format(" ({})^T J ({}) = {}.", reference_of(call, "matrix"), reference_of(call, "matrix"), text_of(normal));
+  }
+  return result;
+}
+
+/// "This interpolation is not linear": whether a printed expression is linear in the variables, against
+/// the sentence's word for it (hole {linearity}: linear, or not linear, nonlinear, non-linear). Linear
+/// is one identity, e = Σ v_i × e(v = the i-th unit vector), decided in both kernels and in Coq; its
+/// refutation proves the expression is not linear. Words that say otherwise are a wording erratum,
+/// corrected by what the expression is.
+claim_result linear_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const ex e = read.formula("expression");
+  const std::vector<GiNaC::symbol> variables = read.symbols("variables");
+  const quoted_sentence said = quote(ctx, call.with.at("sentence").values.front());
+  const std::string stated = said.choice("linearity", {{"linear", "linear"}, {"not linear", "not linear"}, {"nonlinear", "not linear"},
+                                                       {"non-linear", "not linear"}, {"non linear", "not linear"}});
+  ex combination = 0;
+  std::vector<std::string> names, terms;
+  for (std::size_t i = 0; i < variables.size(); ++i) {
+    GiNaC::exmap unit;
+    for (std::size_t k = 0; k < variables.size(); ++k) unit[variables[k]] = k == i ? 1 : 0;
+    const ex coefficient = e.subs(unit, GiNaC::subs_options::no_pattern);
+    combination += variables[i] * coefficient;
+    names.push_back(variables[i].get_name());
+    terms.push_back(fmt::format("{} ({})", variables[i].get_name(), text_of(GiNaC::normal(coefficient))));
+  }
+  const std::string expression_ref = reference_of(call, "expression");
+  const std::string what = fmt::format("({}) is linear in {}: it is {}", expression_ref, fmt::join(names, ", "), fmt::join(terms, " + "));
+  claim_result result = identity_verdict(call, read, "linear", what, e, combination, "", verdict::fails);
+  result.evidence["stated"] = said.words("linearity");
+  if (result.outcome == verdict::kernels_disagree) return result;
+  const bool linear = result.outcome == verdict::holds;
+  const std::string computed = linear ? fmt::format("({}) is linear in {}: {} = {}", expression_ref, fmt::join(names, ", "), text_of(GiNaC::normal(e)),
+                                                    fmt::join(terms, " + "))
+                                      : fmt::format("({}) is not linear in {}: it differs from {} by {}", expression_ref, fmt::join(names, ", "),
+                                                    fmt::join(terms, " + "), text_of(normal_difference(e, combination)));
+  result.note = result.note.empty() || linear ? "" : result.note;
+  if ((stated == "linear") == linear) {
+    result.outcome = verdict::holds;
+    if (!linear) result.note = "As the sentence says: " + computed + ".";
+  } else {
+    result.outcome = verdict::erratum;
+    result.correction = computed;
+    result.note = fmt::format("Wording: the sentence says '{}'.", said.words("linearity"));
   }
   return result;
 }
