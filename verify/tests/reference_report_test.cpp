@@ -57,7 +57,7 @@ TEST(ReferenceReport, PaperSceneReproducesTheCommittedReport) {
   EXPECT_TRUE(std::filesystem::exists(dir / "report.html"));
   // The page shows the plots beside it (not embedded: it stays small), and its JUnit is green.
   EXPECT_NE(read(dir / "report.html").find("<img src=\"figure1.svg\""), std::string::npos);
-  // Embedded, the plots made the page over 800 KB; the text of 65 claims' evidence (quoted sentences,
+  // Embedded, the plots made the page over 800 KB; the text of every claim's evidence (quoted sentences,
   // the convention search's candidates entry by entry, the grid lemma's computed premises) is about
   // 480 KB (2026-11-26). 520 KB leaves room for a few more claims and still catches embedded plots.
   EXPECT_LT(std::filesystem::file_size(dir / "report.html"), 520'000u);

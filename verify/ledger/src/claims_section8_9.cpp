@@ -307,37 +307,6 @@ quoted_sentence conclusion_sentence(const run_context& ctx) {
   return quote(ctx, "The method is {structure}, {stability} and is {order} order accurate for {quantities}.");
 }
 
-claim_result check_conclusion_symplectic_stable(const run_context& ctx) {
-  const quoted_sentence said = conclusion_sentence(ctx);
-  const std::string structure = said.choice("structure", {{"symplectic", "symplectic"}, {"not symplectic", "not symplectic"}});
-  // "conditionnally" is the paper's (French) spelling.
-  const std::string stability = said.choice("stability", {{"conditionnally stable", "conditionally stable"},
-                                                          {"conditionally stable", "conditionally stable"},
-                                                          {"unconditionally stable", "unconditionally stable"},
-                                                          {"inconditionally stable", "unconditionally stable"},
-                                                          {"stable", "stable, unqualified"},
-                                                          {"unstable", "unstable"}});
-  const proof det = prove_zero("m = omega = 1, h = theta; det Phi_3 - 1", determinant(simpson_map(unit_oscillator_in_theta())) - 1);
-  const auto par = unit_oscillator_in_theta();
-  const stability_report report = analyse_three_term_scheme([&](const symbolic& qp, const symbolic& q, const symbolic& qn) {
-    return three_term_residual(par, qp, q, qn);
-  });
-  // Conditionally stable: some band is stable, and a stable band ends at a finite root.
-  bool bounded = false, any_stable = false;
-  for (const stability_band& b : report.bands) {
-    any_stable = any_stable || b.stable;
-    bounded = bounded || (b.stable && b.to);
-  }
-  json evidence;
-  evidence["exact"] = json::array({det.evidence, report.evidence});
-  evidence["stated"] = {{"structure", structure}, {"stability", stability}};
-  const std::string computed = "symplectic (det Phi_3 = 1) and conditionally stable: stable for omega h in (0, 2 sqrt(2)) and "
-                               "(2 sqrt(3), 2 sqrt(6)), unstable elsewhere";
-  if (!(det.proved && bounded && any_stable)) return confirmed_if(false, evidence);
-  if (structure == "symplectic" && stability == "conditionally stable") return confirmed_if(true, evidence, "Computed: " + computed + ".");
-  return words_erratum(evidence, "The method is " + computed);
-}
-
 claim_result check_conclusion_fourth_order(const run_context& ctx) {
   const quoted_sentence said = conclusion_sentence(ctx);
   const int stated_order = said.number("order");
@@ -606,7 +575,6 @@ void add_section8_9_checks(check_registry& checks) {
   checks.add("table-conservation", check_table_conservation);
   checks.add("table-values", check_table_values);
   checks.add("figure1", check_figure1);
-  checks.add("conclusion-symplectic-stable", check_conclusion_symplectic_stable);
   checks.add("conclusion-fourth-order", check_conclusion_fourth_order);
   checks.add("nonlinear-internal-node", check_nonlinear_internal_node);
 }
