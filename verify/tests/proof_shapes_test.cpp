@@ -537,6 +537,9 @@ TEST_F(ShapesOnADocument, InvarianceKernel) {
   const claim_result obtains = run("invariance-kernel", R"({ system = "invsys:side2", obtains = ['inline:not only'], )" + on + rest + " }");
   EXPECT_EQ(obtains.outcome, verdict::fails) << obtains.note;
   EXPECT_NE(obtains.note.find("c = 0 does not hold"), std::string::npos) << obtains.note;
+  // A form not linear in its coefficients: no one value of them, it fails (not a harness fault).
+  const std::string squared_form = R"(form = '$\frac{1}{2} a^2 q^2 + b q p + \frac{1}{2} c p^2$', map = 'inline:A square map', state = ['q', 'p'], unknowns = ['a', 'b', 'c'])";
+  EXPECT_EQ(run("invariance-kernel", R"({ system = "invsys:side2", )" + on + squared_form + " }").outcome, verdict::fails);
   // Not the form for any coefficients.
   const std::string cube = R"(printed = 'inline:a cube', conditions = ['inline:With equal diagonal', 'inline:Of unit determinant'], solve_for = ['s', 'w'], )";
   EXPECT_EQ(run("invariance-kernel", R"({ system = "invsys:side2", )" + cube + rest + " }").outcome, verdict::fails);

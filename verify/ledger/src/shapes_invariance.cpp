@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <utility>
@@ -400,7 +401,15 @@ claim_result invariance_kernel_shape(const shape_call& call, const run_context& 
     rest -= monomial * coefficient;
   }
   for (const GiNaC::symbol& u : unknowns) names.append(u);
-  const ex coefficients = GiNaC::lsolve(equations, names);
+  ex coefficients = GiNaC::lst{};
+  try {
+    coefficients = GiNaC::lsolve(equations, names);
+  } catch (const std::exception&) {  // the form is not linear in its coefficients: no one value
+  }
+  const bool determined = coefficients.nops() == unknowns.size() &&
+                          std::none_of(coefficients.begin(), coefficients.end(), [&](const ex& r) {
+                            return std::any_of(unknowns.begin(), unknowns.end(), [&](const GiNaC::symbol& u) { return r.rhs().has(u); });
+                          });
   std::string wrong;
   if (!printed || printed->rows() != printed->cols()) {
     wrong = fmt::format("({}) is not a column of {} rows linear in the unknowns.", system_ref, unknowns.size());
@@ -408,7 +417,7 @@ claim_result invariance_kernel_shape(const shape_call& call, const run_context& 
     wrong = fmt::format("The invariance of ({}) under ({}) is not a square system in the unknowns.", reference_of(call, "form"), reference_of(call, "map"));
   } else if (!solved.not_solved.empty()) {
     wrong = solved.not_solved + ".";
-  } else if (coefficients.nops() != unknowns.size() || !GiNaC::normal(rest).is_zero()) {
+  } else if (!determined || !GiNaC::normal(rest).is_zero()) {
     wrong = fmt::format("({}) is not ({}) for one value of its coefficients {}.", printed_ref, reference_of(call, "form"), fmt::join(call.with.at("unknowns").values, ", "));
   }
   if (!wrong.empty()) {
