@@ -883,6 +883,10 @@ TEST_F(ShapesOnADocument, Linear) {
   EXPECT_NE(squared.evidence["exact"]["own"].get<std::string>().find("fails"), std::string::npos) << squared.evidence.dump();
   EXPECT_FALSE(squared.refutation.empty()) << "not linear, refuted in Coq";
   EXPECT_EQ(run("linear", with("squarenode", "This node is {linearity} in the ends.")).outcome, verdict::holds);
+  // A pole where one variable is 0 (q_1/q_0): not linear, judged, not a harness fault.
+  const claim_result ratio = run("linear", "{ expression = '$\\frac{q_1}{q_0}$', variables = ['q_0', 'q_1'], sentence = 'This node is {linearity} in the ends.' }");
+  EXPECT_EQ(ratio.outcome, verdict::holds) << ratio.note << ratio.evidence.dump();
+  EXPECT_NE(ratio.note.find("it has no value at q_1 = 1, the others 0"), std::string::npos) << ratio.note;
 }
 
 TEST_F(ShapesOnADocument, AFunctionTheFileDeclares) {

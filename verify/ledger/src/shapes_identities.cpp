@@ -320,22 +320,38 @@ claim_result linear_shape(const shape_call& call, const run_context& ctx) {
                                                        {"non-linear", "not linear"}, {"non linear", "not linear"}});
   ex combination = 0;
   std::vector<std::string> names, terms;
+  std::string pole;  // a unit vector where the expression has no value: not linear
   for (std::size_t i = 0; i < variables.size(); ++i) {
     GiNaC::exmap unit;
     for (std::size_t k = 0; k < variables.size(); ++k) unit[variables[k]] = k == i ? 1 : 0;
-    const ex coefficient = e.subs(unit, GiNaC::subs_options::no_pattern);
-    combination += variables[i] * coefficient;
     names.push_back(variables[i].get_name());
-    terms.push_back(fmt::format("{} ({})", variables[i].get_name(), text_of(GiNaC::normal(coefficient))));
+    try {
+      const ex coefficient = e.subs(unit, GiNaC::subs_options::no_pattern);
+      combination += variables[i] * coefficient;
+      terms.push_back(fmt::format("{} ({})", variables[i].get_name(), text_of(GiNaC::normal(coefficient))));
+    } catch (const std::exception&) {  // GiNaC divided by zero
+      if (pole.empty()) pole = fmt::format("{} = 1, the others 0", variables[i].get_name());
+    }
   }
   const std::string expression_ref = reference_of(call, "expression");
   const std::string what = fmt::format("({}) is linear in {}: it is {}", expression_ref, fmt::join(names, ", "), fmt::join(terms, " + "));
-  claim_result result = identity_verdict(call, read, "linear", what, e, combination, "", verdict::fails);
+  claim_result result;
+  if (pole.empty()) {
+    result = identity_verdict(call, read, "linear", what, e, combination, "", verdict::fails);
+  } else {
+    result.outcome = verdict::fails;
+    result.printed = read.printed();
+    result.evidence["exact"] = {{"statement", fmt::format("({}) is linear in {}", expression_ref, fmt::join(names, ", "))},
+                                {"ginac", "fails: it has no value at " + pole + " (a pole), where a linear function is defined"},
+                                {"own", "not applicable: nothing to evaluate at a pole"}};
+    result.certificate_missing = "a pole: no identity to state";
+  }
   result.evidence["stated"] = said.words("linearity");
   if (result.outcome == verdict::kernels_disagree) return result;
   const bool linear = result.outcome == verdict::holds;
   const std::string computed = linear ? fmt::format("({}) is linear in {}: {} = {}", expression_ref, fmt::join(names, ", "), text_of(GiNaC::normal(e)),
                                                     fmt::join(terms, " + "))
+                      : !pole.empty() ? fmt::format("({}) is not linear in {}: it has no value at {}", expression_ref, fmt::join(names, ", "), pole)
                                       : fmt::format("({}) is not linear in {}: it differs from {} by {}", expression_ref, fmt::join(names, ", "),
                                                     fmt::join(terms, " + "), text_of(normal_difference(e, combination)));
   result.note = result.note.empty() || linear ? "" : result.note;
