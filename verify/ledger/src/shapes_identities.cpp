@@ -321,17 +321,21 @@ claim_result linear_shape(const shape_call& call, const run_context& ctx) {
   ex combination = 0;
   std::vector<std::string> names, terms;
   std::string pole;  // a unit vector where the expression has no value: not linear
+  // Its value at each unit vector from its normal form N/D, where D does not vanish there: the tree
+  // as read may divide by zero on the way (GiNaC throws, and leaks the exception's allocation).
+  const ex normal = GiNaC::normal(e);
+  const ex denominator = GiNaC::denom(normal);
   for (std::size_t i = 0; i < variables.size(); ++i) {
     GiNaC::exmap unit;
     for (std::size_t k = 0; k < variables.size(); ++k) unit[variables[k]] = k == i ? 1 : 0;
     names.push_back(variables[i].get_name());
-    try {
-      const ex coefficient = e.subs(unit, GiNaC::subs_options::no_pattern);
-      combination += variables[i] * coefficient;
-      terms.push_back(fmt::format("{} ({})", variables[i].get_name(), text_of(GiNaC::normal(coefficient))));
-    } catch (const std::exception&) {  // GiNaC divided by zero
+    if (GiNaC::normal(GiNaC::expand(denominator).subs(unit, GiNaC::subs_options::no_pattern)).is_zero()) {
       if (pole.empty()) pole = fmt::format("{} = 1, the others 0", variables[i].get_name());
+      continue;
     }
+    const ex coefficient = GiNaC::normal(normal.subs(unit, GiNaC::subs_options::no_pattern));
+    combination += variables[i] * coefficient;
+    terms.push_back(fmt::format("{} ({})", variables[i].get_name(), text_of(coefficient)));
   }
   const std::string expression_ref = reference_of(call, "expression");
   const std::string what = fmt::format("({}) is linear in {}: it is {}", expression_ref, fmt::join(names, ", "), fmt::join(terms, " + "));
