@@ -1,9 +1,9 @@
 #pragma once
-// The bespoke checks a claims file can name: each registered once under its name, with all its
-// facets: the check itself (our kernel), the GiNaC check of the printed formulas it reads, if any
-// (printed_checks_section*.cpp), and the Coq goals of our kernel's proof, if any
-// (kernel_claim_goals.cpp). A record names the check (`check = "phi3-det"`), nothing else: the
-// ledger finds every facet through that one name.
+// The bespoke checks a claims file can name (bespoke/): each registered once under its name, with
+// all its facets, in the one file that holds it: the check itself (our kernel), the GiNaC check of
+// the printed formulas it reads, if any, and the Coq goals of our kernel's proof, if any. A record
+// names the check (`check = "derivation-phi3"`), nothing else: the ledger finds every facet through
+// that one name.
 
 #include "printed_check_support.hpp"
 
@@ -71,9 +71,5 @@ class check_registry {
 
 /// Every check of the ledger, registered once with its facets.
 const check_registry& registered_checks();
-
-// The facets, registered onto the checks (after every check is added).
-void add_printed_checks_section6_7(check_registry& checks);
-void add_kernel_claim_goals(check_registry& checks);
 
 }  // namespace simpson::verify::detail

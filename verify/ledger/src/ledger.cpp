@@ -10,15 +10,7 @@
 #include "claim_support.hpp"
 #include "proof_shapes.hpp"
 #include "printed_check_support.hpp"
-#include "claims_section2.hpp"
-#include "claims_section5.hpp"
-#include "claims_section6_7.hpp"
-#include "claims_section8_9.hpp"
-#include "claims_peers.hpp"
-#include "claims_roundoff.hpp"
-#include "claims_beyond.hpp"
-#include "claims_family.hpp"
-#include "claims_unformulated.hpp"
+#include "bespoke/bespoke_checks.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -47,8 +39,6 @@ const check_registry& registered_checks() {
     add_beyond_ndof_checks(all);
     add_beyond_fpu_checks(all);
     add_family_checks(all);
-    add_printed_checks_section6_7(all);
-    add_kernel_claim_goals(all);
     return all;
   }();
   return checks;

@@ -227,6 +227,43 @@ solved_conditions solve_conditions(shape_reader& read, const std::string& condit
   return out;
 }
 
+/// What the two shapes on a printed system read and check alike: the printed system's coefficient
+/// matrix, the rows as derived (invariance-system) and the printed conditions solved; `wrong` says
+/// why they cannot be judged (the note of a fails verdict).
+struct printed_system {
+  ex form;
+  std::vector<GiNaC::symbol> state, unknowns;
+  invariance_rows d;
+  solved_conditions solved;
+  GiNaC::matrix coefficients;
+  std::string wrong;
+};
+
+printed_system read_printed_system(const shape_call& call, shape_reader& read) {
+  printed_system out;
+  const ex system = read.formula("system").evalm();
+  out.form = read.formula("form");
+  const GiNaC::matrix m = as_square_matrix(read.formula("map"), reference_of(call, "map"));
+  out.state = read.symbols("state");
+  out.unknowns = read.symbols("unknowns");
+  out.d = derive_invariance_rows(out.form, m, out.state, out.unknowns);
+  out.solved = solve_conditions(read, "conditions", "solve_for");
+  const std::optional<GiNaC::matrix> printed =
+      GiNaC::is_a<GiNaC::matrix>(system) && GiNaC::ex_to<GiNaC::matrix>(system).cols() == 1 ? coefficient_matrix(GiNaC::ex_to<GiNaC::matrix>(system), out.unknowns)
+                                                                                            : std::nullopt;
+  if (!printed || printed->rows() != printed->cols()) {
+    out.wrong = fmt::format("({}) is not a column of {} rows linear in {}: no determinant, no kernel.", reference_of(call, "system"), out.unknowns.size(),
+                            fmt::join(call.with.at("unknowns").values, ", "));
+  } else if (!out.d.not_quadratic.empty() || out.d.derived.rows() != out.d.derived.cols()) {
+    out.wrong = fmt::format("The invariance of ({}) under ({}) is not a square system in the unknowns.", reference_of(call, "form"), reference_of(call, "map"));
+  } else if (!out.solved.not_solved.empty()) {
+    out.wrong = out.solved.not_solved + ".";
+  } else {
+    out.coefficients = *printed;
+  }
+  return out;
+}
+
 /// m with the values put in, as written (not normalised: our kernel and Coq decide the tree).
 GiNaC::matrix substituted(const GiNaC::matrix& m, const GiNaC::exmap& values) {
   GiNaC::matrix out(m.rows(), m.cols());
@@ -316,33 +353,18 @@ corank_one decide_corank_one(const GiNaC::matrix& m) {
 /// refutation. Fails when neither is.
 claim_result invariance_singular_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
-  const std::vector<referenced_formula> conditions = read.equations("conditions");
-  const ex system = read.formula("system").evalm();
-  const ex form = read.formula("form");
-  const GiNaC::matrix m = as_square_matrix(read.formula("map"), reference_of(call, "map"));
-  const std::vector<GiNaC::symbol> state = read.symbols("state"), unknowns = read.symbols("unknowns");
-  const std::string system_ref = reference_of(call, "system");
-  const invariance_rows d = derive_invariance_rows(form, m, state, unknowns);
-  const solved_conditions solved = solve_conditions(read, "conditions", "solve_for");
+  read.equations("conditions");  // read first: the principal formula the report lists
+  const printed_system p = read_printed_system(call, read);
+  const invariance_rows& d = p.d;
+  const solved_conditions& solved = p.solved;
   claim_result result;
   result.printed = read.printed();
-  const std::optional<GiNaC::matrix> printed =
-      GiNaC::is_a<GiNaC::matrix>(system) && GiNaC::ex_to<GiNaC::matrix>(system).cols() == 1 ? coefficient_matrix(GiNaC::ex_to<GiNaC::matrix>(system), unknowns)
-                                                                                            : std::nullopt;
-  std::string wrong;
-  if (!printed || printed->rows() != printed->cols()) {
-    wrong = fmt::format("({}) is not a column of {} rows linear in {}: no determinant.", system_ref, unknowns.size(), fmt::join(call.with.at("unknowns").values, ", "));
-  } else if (!d.not_quadratic.empty() || d.derived.rows() != d.derived.cols()) {
-    wrong = fmt::format("The invariance of ({}) under ({}) is not a square system in the unknowns.", reference_of(call, "form"), reference_of(call, "map"));
-  } else if (!solved.not_solved.empty()) {
-    wrong = solved.not_solved + ".";
-  }
-  if (!wrong.empty()) {
+  if (!p.wrong.empty()) {
     result.outcome = verdict::fails;
-    result.note = wrong;
+    result.note = p.wrong;
     return result;
   }
-  const ex det_printed = written_determinant(substituted(*printed, solved.values));
+  const ex det_printed = written_determinant(substituted(p.coefficients, solved.values));
   const ex det_derived = written_determinant(substituted(d.derived, solved.values));
   const bool derived_singular = is_zero_expression(GiNaC::normal(det_derived));
   const std::string on = fmt::format("{}", fmt::join(solved.text, ", "));
@@ -374,25 +396,21 @@ claim_result invariance_singular_shape(const shape_call& call, const run_context
 claim_result invariance_kernel_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const ex printed_form = read.formula("printed");
-  const ex system = read.formula("system").evalm();
-  const ex form = read.formula("form");
-  const GiNaC::matrix m = as_square_matrix(read.formula("map"), reference_of(call, "map"));
-  const std::vector<GiNaC::symbol> state = read.symbols("state"), unknowns = read.symbols("unknowns");
-  const std::string system_ref = reference_of(call, "system"), printed_ref = reference_of(call, "printed");
-  const invariance_rows d = derive_invariance_rows(form, m, state, unknowns);
-  const solved_conditions solved = solve_conditions(read, "conditions", "solve_for");
+  const printed_system p = read_printed_system(call, read);
+  const invariance_rows& d = p.d;
+  const solved_conditions& solved = p.solved;
+  const std::vector<GiNaC::symbol>& state = p.state;
+  const std::vector<GiNaC::symbol>& unknowns = p.unknowns;
+  const std::string printed_ref = reference_of(call, "printed");
   std::vector<std::pair<referenced_formula, std::vector<ex>>> obtains;
   if (read.has("obtains")) {
     for (const referenced_formula& f : read.equations("obtains")) obtains.emplace_back(f, read.sides(f));
   }
   claim_result result;
   result.printed = read.printed();
-  const std::optional<GiNaC::matrix> printed =
-      GiNaC::is_a<GiNaC::matrix>(system) && GiNaC::ex_to<GiNaC::matrix>(system).cols() == 1 ? coefficient_matrix(GiNaC::ex_to<GiNaC::matrix>(system), unknowns)
-                                                                                            : std::nullopt;
   // The printed form's coefficients: form = printed in every monomial of the state.
   GiNaC::lst equations, names;
-  const ex difference = GiNaC::expand(GiNaC::normal(form - printed_form));
+  const ex difference = GiNaC::expand(GiNaC::normal(p.form - printed_form));
   ex rest = difference;  // what no monomial y_i y_j holds: a form has nothing else
   for (const ex& monomial : d.monomials) {
     ex coefficient = difference;
@@ -410,14 +428,8 @@ claim_result invariance_kernel_shape(const shape_call& call, const run_context& 
                           std::none_of(coefficients.begin(), coefficients.end(), [&](const ex& r) {
                             return std::any_of(unknowns.begin(), unknowns.end(), [&](const GiNaC::symbol& u) { return r.rhs().has(u); });
                           });
-  std::string wrong;
-  if (!printed || printed->rows() != printed->cols()) {
-    wrong = fmt::format("({}) is not a column of {} rows linear in the unknowns.", system_ref, unknowns.size());
-  } else if (!d.not_quadratic.empty() || d.derived.rows() != d.derived.cols()) {
-    wrong = fmt::format("The invariance of ({}) under ({}) is not a square system in the unknowns.", reference_of(call, "form"), reference_of(call, "map"));
-  } else if (!solved.not_solved.empty()) {
-    wrong = solved.not_solved + ".";
-  } else if (!determined || !GiNaC::normal(rest).is_zero()) {
+  std::string wrong = p.wrong;
+  if (wrong.empty() && (!determined || !GiNaC::normal(rest).is_zero())) {
     wrong = fmt::format("({}) is not ({}) for one value of its coefficients {}.", printed_ref, reference_of(call, "form"), fmt::join(call.with.at("unknowns").values, ", "));
   }
   if (!wrong.empty()) {
@@ -440,7 +452,7 @@ claim_result invariance_kernel_shape(const shape_call& call, const run_context& 
     return failing.empty();
   };
   const std::string on = fmt::format("{}", fmt::join(solved.text, ", "));
-  const GiNaC::matrix printed_there = substituted(*printed, solved.values), derived_there = substituted(d.derived, solved.values);
+  const GiNaC::matrix printed_there = substituted(p.coefficients, solved.values), derived_there = substituted(d.derived, solved.values);
   // The system as derived: its kernel there, the printed form's coefficients when they are in it.
   const corank_one derived_rank = decide_corank_one(derived_there);
   std::vector<ex> w = v;

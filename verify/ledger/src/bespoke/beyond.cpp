@@ -2,7 +2,7 @@
 // for V uninterpreted (only V' and V'' at the nodes enter, as free symbols), and rechecked on the
 // pendulum in every precision.
 
-#include "claims_beyond.hpp"
+#include "bespoke_checks.hpp"
 
 #include "claim_support.hpp"
 #include "symbolic_derivation.hpp"

@@ -4,7 +4,7 @@
 // the core's in mpfr:100), and its stability decided exactly from Φ's characteristic polynomial
 // against the generalized eigenvalues of (K, M).
 
-#include "claims_beyond.hpp"
+#include "bespoke_checks.hpp"
 
 #include "claim_support.hpp"
 

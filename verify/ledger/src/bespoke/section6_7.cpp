@@ -2,13 +2,15 @@
 // our kernel.
 
 #include "claim_support.hpp"
-#include "claims_section6_7.hpp"
+#include "bespoke_checks.hpp"
+#include "printed_check_support.hpp"
 
 #include <simpson/internal_node.hpp>
 #include <simpson/reduced_lagrangian.hpp>
 #include <simpson/simpson_elimination.hpp>
 #include <simpson/simpson_lagrangian.hpp>
 #include <simpson/simpson_map.hpp>
+#include <simpson/three_term_scheme.hpp>
 
 namespace simpson::verify::detail {
 namespace {
@@ -37,10 +39,24 @@ claim_result check_derivation_phi3(const run_context&) {
   return identity(steps, "Our kernel checks the chain through the core's formulas; GiNaC performs each step itself (below).");
 }
 
+/// GiNaC's route, from first principles: Φ₃ as derived (each step in GiNaC) against the printed and the core's,
+/// and T_h(q_j) of the derived scheme to O(h¹⁰).
+printed_outcome derivation_phi3_printed(const paper_reading& r) {
+  using GiNaC::ex;
+  const symbolic_derivation& d = derivation();
+  printed_outcome o = compare("Phi_3", printed_side(r, "Phi3"), d.phi3, as_matrix(simpson_map(parameters(d))));
+  std::string steps;
+  for (std::size_t k = 0; k < d.steps.size(); ++k) steps += (k ? "; " : "") + std::to_string(k + 1) + ") " + d.steps[k];
+  const ex series = truncation_series(d, three_term_residual(parameters(d), d.q_prev, d.q_j, d.q_next), 10);
+  o.derived += ". Steps: " + steps + ". T_h(q_j) of the derived scheme, normalised as (schema-ordre-3): " + text_of(series) + " + O(h^10)";
+  return o;
+}
+
 }  // namespace
 
 void add_section6_7_checks(check_registry& checks) {
   checks.add("derivation-phi3", check_derivation_phi3);
+  checks.add_printed("derivation-phi3", {"Phi3"}, derivation_phi3_printed);
 }
 
 }  // namespace simpson::verify::detail

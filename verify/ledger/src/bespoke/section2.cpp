@@ -2,7 +2,7 @@
 // shapes' records in claims/paper.toml).
 
 #include "claim_support.hpp"
-#include "claims_section2.hpp"
+#include "bespoke_checks.hpp"
 
 #include <simpson/verify/quoted_words.hpp>
 

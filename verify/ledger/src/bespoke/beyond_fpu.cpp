@@ -1,7 +1,7 @@
 // Beyond the paper, on the stiff FPU chain (fpu_section.hpp): whether Simpson's scheme keeps the
 // adiabatic invariant in its second stable band, decided by runs beside one in its first band.
 
-#include "claims_beyond.hpp"
+#include "bespoke_checks.hpp"
 
 #include "claim_support.hpp"
 

@@ -2,7 +2,7 @@
 // the unconditional-stability shape), and the conventions Section 8 states (and those it leaves unstated).
 
 #include "claim_support.hpp"
-#include "claims_unformulated.hpp"
+#include "bespoke_checks.hpp"
 
 #include <simpson/verify/paper_reading.hpp>
 #include <simpson/verify/printed_table1.hpp>

@@ -3,7 +3,8 @@
 // (rational functions of θ = ωh) and in GiNaC with m, ω, h free; rechecked as a step in every precision.
 
 #include "claim_support.hpp"
-#include "claims_peers.hpp"
+#include "bespoke_checks.hpp"
+#include "printed_check_support.hpp"
 
 #include <simpson/verify/tex_math.hpp>  // canonical_text
 
@@ -78,10 +79,19 @@ claim_result check_phi3_shear_factorization(const run_context& ctx) {
                       "has no determinant drift (the long_time section compares the forms).");
 }
 
+/// Φ₃ = L(c) U(b) L(c), the core's shears multiplied out, entry by entry (off ω²h² = 12, 24, where
+/// the drift's denominator vanishes: hypotheses of the lemmas).
+std::vector<proof_goal> phi3_shear_factorization() {
+  const symbolic_derivation& d = derivation();
+  const auto product = shear_product(simpson::detail::shear_with_step<GiNaC::ex>(d.m, d.omega, d.h));
+  return {decided("core", as_matrix(product), as_matrix(simpson_map(parameters(d))))};
+}
+
 }  // namespace
 
 void add_shear_checks(check_registry& checks) {
   checks.add("phi3-shear-factorization", check_phi3_shear_factorization);
+  checks.add_coq_goals("phi3-shear-factorization", phi3_shear_factorization);
 }
 
 }  // namespace simpson::verify::detail

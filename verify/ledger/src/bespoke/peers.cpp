@@ -5,7 +5,7 @@
 
 #include <simpson/verify/algebraic_series.hpp>
 #include "claim_support.hpp"
-#include "claims_peers.hpp"
+#include "bespoke_checks.hpp"
 
 #include <simpson/newmark_map.hpp>
 #include <simpson/runge_kutta_tableaux.hpp>

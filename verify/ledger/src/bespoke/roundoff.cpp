@@ -1,4 +1,5 @@
-// Table 1's digits against the proved round-off of a double program (claims_roundoff.hpp).
+// Table 1's digits against the proved round-off of a double program: what a double program stepping
+// Φ₃ can do to the paper's Table 1, proved by Gappa and the lifting lemma (verify/floating), not measured.
 //
 // For each mesh N of Table 1, Φ₃ at the paper's configuration (m = 1, ω = 2π, h = 1/N) stepped in
 // double: Gappa bounds one step's round-off on the box |p| ≤ 7, |q| ≤ 9/8 (the orbit from the paper's
@@ -7,7 +8,7 @@
 // each of p and q over the period. A printed error can only be the scheme's own if that is below half
 // a unit of its last printed digit.
 
-#include "claims_roundoff.hpp"
+#include "bespoke_checks.hpp"
 
 #include <simpson/verify/gappa_run.hpp>
 #include <simpson/verify/global_roundoff.hpp>

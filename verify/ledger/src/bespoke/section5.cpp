@@ -2,7 +2,7 @@
 // the three-term scheme, its truncation error and its stability.
 
 #include "claim_support.hpp"
-#include "claims_section5.hpp"
+#include "bespoke_checks.hpp"
 
 #include <simpson/verify/quoted_words.hpp>
 #include <simpson/verify/stability_analysis.hpp>
