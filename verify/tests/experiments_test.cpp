@@ -413,13 +413,12 @@ TEST(Experiments, AboveDoubleTheWorkPrecisionErrorsAreEnclosuresOfTheSchemesErro
 }
 
 TEST(Experiments, TheEnclosedPaperExperimentProvesEachSchemesOrderAndDecidesFigure1sBounds) {
-  const enclosed_convergence simpson = enclosed_convergence_of(true, {10, 20, 40});
-  const enclosed_convergence newmark = enclosed_convergence_of(false, {10, 20, 40});
-  for (std::size_t k = 0; k < 2; ++k) {
-    EXPECT_EQ(simpson.order_p[k], std::optional<long>(4)) << simpson.log2_ratio_p[k];
-    EXPECT_EQ(simpson.order_q[k], std::optional<long>(4)) << simpson.log2_ratio_q[k];
-    EXPECT_EQ(newmark.order_q[k], std::optional<long>(2)) << newmark.log2_ratio_q[k];
-  }
+  // Table 1's rows (published_rows()): Newmark's p and q (rows 0, 2) of order 2, Simpson's (rows 1, 3) of order 4.
+  const std::array<enclosed_table_row, 8> rows = enclosed_table1(40, 12);
+  EXPECT_EQ(rows[0].order, "2") << rows[0].order_evidence;
+  EXPECT_EQ(rows[2].order, "2") << rows[2].order_evidence;
+  EXPECT_EQ(rows[1].order, "4") << rows[1].order_evidence;
+  EXPECT_EQ(rows[3].order, "4") << rows[3].order_evidence;
   // Figure 1 (N = 15): Simpson's momentum within 1/500 of the amplitude, Newmark's above it; both
   // within 1/10; and a bound between Simpson's p error (5.14e-5) and q error (7.98e-5) splits them.
   const std::vector<std::pair<long, long>> bounds{{1, 10}, {1, 500}, {1, 15000}};

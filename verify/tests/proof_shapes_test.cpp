@@ -308,6 +308,11 @@ Said otherwise, the trapezoidal rule is an implicit scheme. Written as (\ref{sin
 \begin{equation}\label{midnode} q_m = \frac{1}{1 - \frac{\om^2 h^2}{8}} \frac{q_0 + q_1}{2} \end{equation}
 \begin{equation}\label{squarenode} q_m = \frac{q_0^2 + q_1^2}{q_0 + q_1} \end{equation}
 This node is not linear in the ends. That node is linear in the ends. Squared, the node is linear in the ends.
+\begin{equation}\label{shearedmap} \Phi = \begin{pmatrix} 1 - \frac{\om^2 h^2}{2} + \frac{\om^4 h^4}{24} &
+  \frac{1}{1 + \om^2 h^2} \Big( \frac{h}{m} - \frac{\om^2 h^3}{6 m} \Big) \\
+  (1 + \om^2 h^2) \Big( - m \om^2 h + \frac{m \om^4 h^3}{6} \Big) & 1 - \frac{\om^2 h^2}{2} + \frac{\om^4 h^4}{24} \end{pmatrix} \end{equation}
+Leapfrog, (\ref{map}), is second order accurate for state and momentum. Its twin (\ref{mappq}) is second order accurate too.
+Leapfrog, once more, is third order accurate. Sheared, (\ref{shearedmap}) is fourth order accurate.
 )";
 
 const std::string declarations = R"(
@@ -862,6 +867,36 @@ TEST_F(ShapesOnADocument, ExplicitMap) {
   EXPECT_EQ(singular.outcome, verdict::erratum);
   EXPECT_EQ(singular.note, "");
   EXPECT_EQ(singular.evidence["exact"]["regular"].get<std::string>().rfind("not shown", 0), 0u) << singular.evidence.dump();
+}
+
+// The order of a printed map: its local error against the exact flow, entry by entry. The sheared
+// map has the flow's trace and determinant through h^5 (its off-diagonal entries are the flow's
+// Taylor polynomials divided and multiplied by 1 + omega^2 h^2), so a check of its eigenvalues, or of
+// its trace against 2 cos(omega h), would call it fourth order; its (1,2) entry is wrong at h^3.
+TEST_F(ShapesOnADocument, MapOrder) {
+  const auto with = [](const std::string& map, const std::string& sentence, const std::string& order = "q p") {
+    return "{ map = \"" + map + "\", order = \"" + order + "\", mass = '$m$', frequency = '$\\omega$', step = ['h'], sentence = '" + sentence + "' }";
+  };
+  const claim_result leapfrog = run("map-order", with("map", "Leapfrog, (\\ref{map}), is {order} order accurate for state and momentum."));
+  EXPECT_EQ(leapfrog.outcome, verdict::holds) << leapfrog.note << leapfrog.evidence.dump();
+  EXPECT_EQ(leapfrog.evidence["exact"]["lowest_power"], 3) << leapfrog.evidence.dump();
+  EXPECT_EQ(leapfrog.evidence["exact"]["own"].get<std::string>().rfind("holds", 0), 0u) << leapfrog.evidence.dump();
+  // A lemma for each entry that differs from the flow's Taylor polynomial of degree 3: the diagonal
+  // 1 - omega^2 h^2/2 is that polynomial.
+  EXPECT_EQ(leapfrog.certificate_lemmas.size(), 2u) << leapfrog.certificate_missing;
+  const claim_result twin = run("map-order", with("mappq", "Its twin (\\ref{mappq}) is {order} order accurate too.", "p q"));
+  EXPECT_EQ(twin.outcome, verdict::holds) << twin.note << twin.evidence.dump();
+  // The same map read in the wrong state order: its (1,2) entry h/m against -m omega sin(omega h).
+  const claim_result swapped = run("map-order", with("mappq", "Its twin (\\ref{mappq}) is {order} order accurate too."));
+  EXPECT_EQ(swapped.outcome, verdict::erratum) << swapped.evidence.dump();
+  const claim_result third = run("map-order", with("map", "Leapfrog, once more, is {order} order accurate."));
+  EXPECT_EQ(third.outcome, verdict::erratum);
+  EXPECT_EQ(third.correction, "the map is of order 2: its local error is O(h^3)");
+  const claim_result sheared = run("map-order", with("shearedmap", "Sheared, (\\ref{shearedmap}) is {order} order accurate."));
+  EXPECT_EQ(sheared.outcome, verdict::erratum) << sheared.evidence.dump();
+  EXPECT_EQ(sheared.correction, "the map is of order 2: its local error is O(h^3)");
+  EXPECT_EQ(sheared.evidence["exact"]["own"].get<std::string>().rfind("fails", 0), 0u) << sheared.evidence.dump();
+  EXPECT_EQ(run("map-order", with("map", "A sentence the document does not have, {order} order accurate.")).outcome, verdict::text_changed);
 }
 
 // "not linear", judged of the printed expression: e = q_0 e(1, 0) + q_1 e(0, 1) identically. The

@@ -64,26 +64,6 @@ bound_decision against(const interval& x, const std::pair<long, long>& bound) {
 
 }  // namespace
 
-enclosed_convergence enclosed_convergence_of(bool simpson_scheme, const std::vector<long long>& meshes, unsigned digits) {
-  const scoped_interval_digits scope(digits);
-  enclosed_convergence out;
-  out.meshes = meshes;
-  std::vector<enclosed_errors> runs;
-  for (const long long N : meshes) {
-    runs.push_back(enclosed_run(simpson_scheme, N));
-    out.error_p.push_back(enclosure_text(runs.back().p, 6));
-    out.error_q.push_back(enclosure_text(runs.back().q, 6));
-  }
-  for (std::size_t k = 0; k + 1 < runs.size(); ++k) {
-    const interval ratio_p = log2(interval(runs[k].p / runs[k + 1].p)), ratio_q = log2(interval(runs[k].q / runs[k + 1].q));
-    out.log2_ratio_p.push_back(enclosure_text(ratio_p, 6));
-    out.log2_ratio_q.push_back(enclosure_text(ratio_q, 6));
-    out.order_p.push_back(proved_order(ratio_p));
-    out.order_q.push_back(proved_order(ratio_q));
-  }
-  return out;
-}
-
 std::vector<entry_decision> enclosed_stated_entries(const std::vector<printed_value>& printed, unsigned digits) {
   const scoped_interval_digits scope(digits);
   std::array<std::array<enclosed_errors, 3>, 2> runs;

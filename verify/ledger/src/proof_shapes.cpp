@@ -203,6 +203,15 @@ const std::map<std::string, proof_shape>& proof_shapes() {
     add({"stated-order", "the order a sentence states ({order} in its pattern) is the scheme's order on q'' = -omega^2 q", "scheme",
          with_where(with_series({pattern_with_hole("sentence", "the sentence's pattern, with the hole {order}", "order")})),
          stated_order_shape});
+    add({"map-order", "the order a sentence states ({order} in its pattern) is the printed one-step map's on q'' = -omega^2 q: its local error against the exact flow is O(h^(order+1))",
+         "map",
+         with_where({{"map", argument_kind::matrix, true, "the printed one-step map", 2},
+                     {"mass", argument_kind::formula, true, "m of q' = p/m"},
+                     {"frequency", argument_kind::formula, true, "omega of q'' = -omega^2 q"},
+                     {"step", argument_kind::symbols, true, "the step h", 1},
+                     {"order", argument_kind::word, false, "the printed map's state order: 'q p' (the default) or 'p q'", 0, "", false, {"q p", "p q"}},
+                     pattern_with_hole("sentence", "the sentence's pattern, with the hole {order}", "order")}),
+         map_order_shape});
     add({"quadrature-exactness", "the degree of exactness a sentence states ({degree}) is the printed rule's, for the printed integral it approximates", "rule",
          with_where({{"rule", argument_kind::formula, true, "the printed rule, a combination of the function's values"},
                      {"integral", argument_kind::formula, true, "the printed integral it approximates, \\int_a^b f(x) \\dd x"},

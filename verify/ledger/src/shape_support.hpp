@@ -152,6 +152,7 @@ claim_result explicit_map_shape(const shape_call& call, const run_context& ctx);
 claim_result discrete_map_shape(const shape_call& call, const run_context& ctx);
 claim_result truncation_shape(const shape_call& call, const run_context& ctx);
 claim_result stated_order_shape(const shape_call& call, const run_context& ctx);
+claim_result map_order_shape(const shape_call& call, const run_context& ctx);
 claim_result stability_interval_shape(const shape_call& call, const run_context& ctx);
 claim_result sign_on_interval_shape(const shape_call& call, const run_context& ctx);
 claim_result factor_signs_shape(const shape_call& call, const run_context& ctx);

@@ -302,117 +302,6 @@ claim_result check_table_values(const run_context& ctx) {
                           " half-units of the last digit). " + table_not_reproduced(1, &published));
 }
 
-/// Section 9's sentence: "The method is symplectic, conditionnally stable and is fourth order
-/// accurate for state and momentum."
-quoted_sentence conclusion_sentence(const run_context& ctx) {
-  return quote(ctx, "The method is {structure}, {stability} and is {order} order accurate for {quantities}.");
-}
-
-claim_result check_conclusion_fourth_order(const run_context& ctx) {
-  const quoted_sentence said = conclusion_sentence(ctx);
-  const int stated_order = said.number("order");
-  said.choice("quantities", {{"state and momentum", "q and p"}, {"momentum and state", "q and p"}});
-  // Exact: Phi_3 (m = ω = 1, h = θ) against the exact flow ((cos θ, −sin θ), (sin θ, cos θ)).
-  const one_step_matrix<symbolic> phi = simpson_map(unit_oscillator_in_theta());
-  const symbolic c(cos_taylor(14), make_polynomial({rational(1)})), s(sin_taylor(15), make_polynomial({rational(1)}));
-  json local = json::object();
-  long lowest = 100;
-  const std::pair<const char*, symbolic> gaps[] = {
-      {"alpha - cos", phi.alpha - c}, {"beta + sin", phi.beta + s}, {"gamma - sin", phi.gamma - s}, {"delta - cos", phi.delta - c}};
-  for (const auto& [name, gap] : gaps) {
-    // Taylor of the rational entries: multiply out 1/(1 + θ²/24) as a series by dividing numerator
-    // by the denominator's series through θ^14.
-    const polynomial& d = gap.denominator();
-    std::vector<rational> inverse(15, rational(0));
-    inverse[0] = 1 / d[0];
-    for (std::size_t k = 1; k < inverse.size(); ++k) {
-      rational acc = 0;
-      for (std::size_t i = 1; i <= k && i < d.size(); ++i) acc += d[i] * inverse[k - i];
-      inverse[k] = -acc / d[0];
-    }
-    const polynomial series = gap.numerator() * polynomial(inverse.begin(), inverse.end());
-    std::vector<std::pair<long, rational>> terms;
-    for (long k = 0; k < 14 && k <= degree(series); ++k) {
-      if (series[static_cast<std::size_t>(k)] != 0) terms.emplace_back(k, series[static_cast<std::size_t>(k)]);
-    }
-    if (!terms.empty()) lowest = std::min(lowest, terms.front().first);
-    local[name] = series_to_string(terms, "θ") + " + O(θ^14)";
-  }
-  // Numeric: the paper's experiment for N = 10 ... 320. Decided by the exact scheme's errors enclosed
-  // (every successive log2 ratio proved within 1/2 of the order); the double run's least-squares
-  // slopes are shown beside.
-  std::vector<long long> meshes;
-  for (long long N = 10; N <= 320; N *= 2) meshes.push_back(N);
-  const enclosed_convergence enclosed = enclosed_convergence_of(true, meshes, table_enclosure_digits);
-  json global = json::array();
-  double slopes[2] = {0, 0};
-  {
-    std::vector<double> lx, lp, lq;
-    for (const long long N : meshes) {
-      const table_errors e = run_table_experiment(true, N);
-      lx.push_back(std::log(1.0 / static_cast<double>(N)));
-      lp.push_back(std::log(e.p));
-      lq.push_back(std::log(e.q));
-      global.push_back({{"N", N}, {"error_p", simpson::to_string(e.p, 3)}, {"error_q", simpson::to_string(e.q, 3)}});
-    }
-    const auto slope = [&](const std::vector<double>& ly) {
-      double mx = 0, my = 0;
-      for (std::size_t k = 0; k < lx.size(); ++k) mx += lx[k], my += ly[k];
-      mx /= lx.size(), my /= ly.size();
-      double num = 0, den = 0;
-      for (std::size_t k = 0; k < lx.size(); ++k) num += (lx[k] - mx) * (ly[k] - my), den += (lx[k] - mx) * (lx[k] - mx);
-      return num / den;
-    };
-    slopes[0] = slope(lp);
-    slopes[1] = slope(lq);
-  }
-  // The order is the exact one (local error O(h^(order+1))); every enclosed ratio must prove it.
-  const long order = lowest - 1;
-  bool measured = true;
-  json ratios = json::array();
-  for (std::size_t k = 0; k < enclosed.order_p.size(); ++k) {
-    measured = measured && enclosed.order_p[k] == order && enclosed.order_q[k] == order;
-    const auto shown = [](const std::optional<long>& o) { return o ? json(*o) : json("undecided"); };
-    ratios.push_back({{"N", std::to_string(meshes[k]) + " -> " + std::to_string(meshes[k + 1])},
-                      {"log2_ratio_p", enclosed.log2_ratio_p[k]},
-                      {"log2_ratio_q", enclosed.log2_ratio_q[k]},
-                      {"order_p", shown(enclosed.order_p[k])},
-                      {"order_q", shown(enclosed.order_q[k])}});
-  }
-  json errors = json::array();
-  for (std::size_t k = 0; k < meshes.size(); ++k) {
-    errors.push_back({{"N", meshes[k]}, {"error_p", enclosed.error_p[k]}, {"error_q", enclosed.error_q[k]}});
-  }
-  json evidence;
-  evidence["exact"] = {{"method", "exact series"},
-                       {"reduction", "m = omega = 1, h = theta; entries of Phi_3 minus the exact flow over one step"},
-                       {"local_error", local},
-                       {"lowest_power", lowest}};
-  evidence["enclosure"] = {{"method", "enclosures (MPFI, " + std::to_string(table_enclosure_digits) +
-                                          " digits, pi enclosed) of the exact scheme's largest errors under Section 8's "
-                                          "conventions"},
-                           {"rule", "the order is proved between N and 2N when log2(error_N / error_2N) is proved within 1/2 of "
-                                    "it, for p and for q; every pair must prove the exact order"},
-                           {"errors", errors},
-                           {"ratios", ratios}};
-  evidence["numeric"] = {{"method", "numeric (double), shown, not deciding"},
-                         {"experiment", "Section 8 conventions, N = 10 ... 320"},
-                         {"runs", global},
-                         {"slope_p", simpson::to_string(slopes[0], 3)},
-                         {"slope_q", simpson::to_string(slopes[1], 3)}};
-  evidence["stated_order"] = stated_order;
-  if (!measured || stated_order == order) {
-    return confirmed_if(measured && stated_order == order, evidence,
-                        "Local error O(h^5) per step (the off-diagonal entries differ from sin(omega h) at theta^5), hence "
-                        "global error O(h^4) over a fixed time: every enclosed log2 ratio of successive errors, N = 10 ... 320, "
-                        "lies within 1/2 of 4 for p and q (double's least-squares slopes " +
-                            simpson::to_string(slopes[0], 3) + " and " + simpson::to_string(slopes[1], 3) + ").");
-  }
-  return words_erratum(evidence, "The method is of order " + std::to_string(order) + " for state and momentum (local error O(h^" +
-                 std::to_string(lowest) + "), measured slopes " + simpson::to_string(slopes[0], 3) + " and " +
-                 simpson::to_string(slopes[1], 3) + ")");
-}
-
 /// Figure 1 (N = 15, one period, q = sin omega t, p = m omega cos omega t, the momentum rescaled by
 /// m omega): the caption's two statements, each scheme examined. The words are qualitative; the
 /// reading is stated and computed: "very close" = within 1/500 of the amplitude (a pixel of a
@@ -591,7 +480,6 @@ void add_section8_9_checks(check_registry& checks) {
   checks.add("table-conservation", check_table_conservation);
   checks.add("table-values", check_table_values);
   checks.add("figure1", check_figure1);
-  checks.add("conclusion-fourth-order", check_conclusion_fourth_order);
   checks.add("nonlinear-internal-node", check_nonlinear_internal_node);
 }
 

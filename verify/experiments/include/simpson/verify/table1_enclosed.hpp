@@ -24,17 +24,6 @@ struct enclosed_table_row {
 /// each value printed with at most `shown_digits` digits (its radius widened by that rounding).
 std::array<enclosed_table_row, 8> enclosed_table1(unsigned digits = 40, long shown_digits = 60);
 
-/// One scheme's largest errors under the stated conventions at each N, enclosed, and the orders
-/// between successive N: an order is proved when log₂ of the ratio of successive errors lies within
-/// ½ of an integer (that integer); else none.
-struct enclosed_convergence {
-  std::vector<long long> meshes;
-  std::vector<std::string> error_p, error_q;              // "|p − p(t_j)|" and "|q − q(t_j)|", enclosure text
-  std::vector<std::string> log2_ratio_p, log2_ratio_q;    // between meshes k and k + 1
-  std::vector<std::optional<long>> order_p, order_q;      // proved, or none
-};
-enclosed_convergence enclosed_convergence_of(bool simpson_scheme, const std::vector<long long>& meshes, unsigned digits = 40);
-
 /// How an enclosure compares with a bound a/b: proved at most the bound, proved above it, or neither
 /// at this precision.
 enum class bound_decision { at_most, above, undecided };
