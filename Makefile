@@ -110,13 +110,16 @@ SANITIZE_ENV = ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:symbolize=$(1) UBSAN
 # 270 MB test binary's line tables for that (0.78 s against 0.33 s for verify_tests running no test;
 # about 300 such processes in ctest and 100 in cli_test.sh). Module names are matched without it,
 # so the suppression holds, and UBSan names its file and line from its own data either way.
-# A run that fails before any test does (no LastTestsFailed.log) reruns nothing: --rerun-failed
-# without the list would run the whole suite again.
+# A run that fails before any test does (no LastTestsFailed.log) reruns nothing. The failed tests
+# are rerun by name, not by number (ctest --rerun-failed): the tests gtest_discover_tests lists at
+# test time (PRE_TEST) are numbered anew in each run, and a number of the first run named another
+# test in the second.
 sanitize: sanitize-build
 	cd $(SANITIZE_BUILD) && rm -f Testing/Temporary/LastTestsFailed.log && \
 	  $(call SANITIZE_ENV,0) ctest --output-on-failure -j $(JOBS) -LE 'external|docs' -E '$(SANITIZE_SKIP)' || \
 	  { if [ -s Testing/Temporary/LastTestsFailed.log ]; then echo "sanitize: the failed tests again, with symbolized stacks:"; \
-	      $(call SANITIZE_ENV,1) ctest --rerun-failed --output-on-failure -j $(JOBS); fi; exit 1; }
+	      failed=$$(sed 's/^[0-9]*://; s/[][\\.*^$$+?(){}|/]/\\&/g' Testing/Temporary/LastTestsFailed.log | paste -sd'|'); \
+	      $(call SANITIZE_ENV,1) ctest --output-on-failure -j $(JOBS) -R "^($$failed)\$$"; fi; exit 1; }
 
 # The scene parser and the claims-file reader under libFuzzer, 25 s and 20 s, side by side (one
 # process each, so one core each); the targets are built by sanitize-build. Each one's report is

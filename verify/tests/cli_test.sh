@@ -281,7 +281,7 @@ grep -q "phi3-det: verdict holds, expected erratum" "$work/err" || fail "claims 
 # errors are errata with corrections (exit 0: as the file expects); --validate judges them failures.
 note_dir="$(dirname "$0")/notes"
 check "a note from its claims file" 0 --paper "$note_dir/trapezoidal-note.tex" --claims-file "$note_dir/trapezoidal-note.toml" --out "$work/note"
-grep -q '^12 claims: 7 held, 5 errata, 0 failed' "$work/out" || fail "a note: summary: $(cat "$work/out")"
+grep -q '^13 claims: 7 held, 6 errata, 0 failed' "$work/out" || fail "a note: summary: $(cat "$work/out")"
 grep -q '"correction": "stable exactly for 0 < h\*omega < 2"' "$work/note/report.json" || fail "a note: the stability correction is not in the report"
 grep -q "^Exit code 0: every verdict is the expected one, the claims file's expected verdicts for its document" "$work/note/report.md" ||
   fail "a note: the exit line speaks of the paper"
@@ -293,7 +293,7 @@ grep -q '"file": "certificates/stability_condition.v"' "$work/note/report.json" 
 if [ "$part" = main ] && command -v coqc >/dev/null 2>&1; then
   check "a note, certified" 0 --certify --paper "$note_dir/trapezoidal-note.tex" --claims-file "$note_dir/trapezoidal-note.toml" --out "$work/note-certified"
   grep -q '"status": "failed"' "$work/note-certified/report.json" && fail "a note: a Coq certificate did not check"
-  cat "$work/out" "$work/err" | grep -q "^\[coqc\] 10 certificate files checked" || fail "a note, certified: $(cat "$work/out" "$work/err" | grep coqc)"
+  cat "$work/out" "$work/err" | grep -q "^\[coqc\] 11 certificate files checked" || fail "a note, certified: $(cat "$work/out" "$work/err" | grep coqc)"
 fi
 check "a note, validated" 1 --validate --paper "$note_dir/trapezoidal-note.tex" --claims-file "$note_dir/trapezoidal-note.toml" --out "$work/note-validated"
 check "a note without --paper" 2 --claims-file "$note_dir/trapezoidal-note.toml" --out "$work/none-note1"

@@ -17,7 +17,7 @@ TEST(GridLemma, ProvesAnIdentityAndRecordsTheDegreesItFound) {
     return S(theta * ((v[0] + v[1]) * (v[0] + v[1]) - v[0] * v[0] - 2 * v[0] * v[1] - v[1] * v[1]));
   });
   EXPECT_TRUE(p.proved) << p.evidence.dump();
-  EXPECT_EQ(p.evidence["premise"], "holds (GiNaC): every difference is 0");
+  EXPECT_EQ(p.evidence.at("premise"), "holds (GiNaC): every difference is 0");
 }
 
 // (x − 1)(x − 2) vanishes at x = 1, 2, the grid of degree 1: a false identity the premise stops.
@@ -27,7 +27,7 @@ TEST(GridLemma, ADifferenceOfHigherDegreeThanTheGridIsNotProved) {
     return S((v[0] - 1) * (v[0] - 2) * theta_variable<S>());
   });
   EXPECT_FALSE(p.proved);
-  EXPECT_EQ(p.evidence["premise"], "fails (GiNaC, normal form): degrees x 2 > 1");
+  EXPECT_EQ(p.evidence.at("premise"), "fails (GiNaC, normal form): degrees x 2 > 1");
 }
 
 // (x − 1)(x − 2)/x vanishes on the grid of degree 2 too, and is not a polynomial.
@@ -37,7 +37,7 @@ TEST(GridLemma, ADifferenceWithTheVariableInItsDenominatorIsNotProved) {
     return std::vector<S>{S(v[1] - v[1]), S((v[0] - 1) * (v[0] - 2) * (v[0] - 3) / v[0])};
   });
   EXPECT_FALSE(p.proved);
-  EXPECT_NE(p.evidence["premise"].get<std::string>().find("x in its denominator"), std::string::npos) << p.evidence.dump();
+  EXPECT_NE(p.evidence.at("premise").get<std::string>().find("x in its denominator"), std::string::npos) << p.evidence.dump();
 }
 
 // A derivative by exact differences is exact to degree 4. A difference that compares it with the
@@ -54,7 +54,7 @@ TEST(GridLemma, ADerivativeByDifferencesOfTooHighADegreeIsNotProved) {
   };
   const proof fifth = prove_zero_on_grid("d/dx x^5 against its differences", {"x"}, 4, against_differences(5));
   EXPECT_FALSE(fifth.proved);
-  EXPECT_NE(fifth.evidence["premise"].get<std::string>().find("degree <= 4"), std::string::npos) << fifth.evidence.dump();
+  EXPECT_NE(fifth.evidence.at("premise").get<std::string>().find("degree <= 4"), std::string::npos) << fifth.evidence.dump();
   const proof fourth = prove_zero_on_grid("d/dx x^4 - 4x^3", {"x"}, 3, [](const auto& v) {
     using S = std::decay_t<decltype(v[0])>;
     const auto f = [](const S& u) { return monomial_potential::power(u, 4); };
@@ -70,8 +70,8 @@ TEST(GridLemma, ARefutedDifferenceNeedsNoPremise) {
     return S(v[0] - 1);
   });
   EXPECT_FALSE(p.proved);
-  EXPECT_EQ(p.evidence["result"], "nonzero at x = 2: identity false");
-  EXPECT_EQ(p.evidence["premise"], "not needed: the difference is not zero at a grid point");
+  EXPECT_EQ(p.evidence.at("result"), "nonzero at x = 2: identity false");
+  EXPECT_EQ(p.evidence.at("premise"), "not needed: the difference is not zero at a grid point");
 }
 
 }  // namespace

@@ -39,12 +39,12 @@ TEST(PaperReading, EveryFormulaOfTheEmbeddedPaperParsesAndKeepsItsVerdict) {
       // it; an erratum's identity each found false ("fails: lhs − rhs = ..."), or each proved the
       // facts the erratum rests on ("holds: 2 expansions differ ..."); never "not applicable".
       for (const char* kernel : {"own", "ginac"}) {
-        const std::string said = r.evidence["exact"][kernel].get<std::string>();
+        const std::string said = r.evidence.at("exact")[kernel].get<std::string>();
         const bool decided = said.rfind("holds", 0) == 0 || (c.expected != verdict::holds && said.rfind("fails", 0) == 0);
         EXPECT_TRUE(decided) << c.id << " " << kernel << ": " << said;
       }
     } else {
-      EXPECT_TRUE(r.evidence["kernels"]["ginac"]["derived_holds"].get<bool>()) << c.id;
+      EXPECT_TRUE(r.evidence.at("kernels").at("ginac").at("derived_holds").get<bool>()) << c.id;
     }
   }
   EXPECT_EQ(read, printed_formula_claim_count());
@@ -153,7 +153,7 @@ TEST(PaperReading, TheStabilityBandIsReadFromTheDisplay) {
   EXPECT_EQ(verdict_of("roots-product-one", paper), verdict::holds);
   const run_context ctx{{precision::parse("double")}, 20230830, 2, &paper};
   const claim_result r = check_claim(find_claim("discriminant-negative"), ctx);
-  EXPECT_EQ(r.evidence["exact"]["statement"], "the factors of (after:can be factorized) on 0 < h*omega < 2") << r.evidence["exact"].dump();
+  EXPECT_EQ(r.evidence.at("exact").at("statement"), "the factors of (after:can be factorized) on 0 < h*omega < 2") << r.evidence.at("exact").dump();
   // Printed as 0 < omega h < pi: no rational band, so the signs on it are not decided (our kernel
   // compares ends exactly).
   const paper_reading irrational = read_paper(altered("\\label{stabilite}", "2 \\, \\sqrt{2}", "\\pi"));

@@ -213,7 +213,7 @@ TEST(ChangedSentence, ExplicitForNonlinearProblemsIsStillAnErratum) {
   const paper_reading reading = altered_reading("explicit, and  symplectic", "explicit for nonlinear problems too, and symplectic");
   const claim_result r = check_claim(find_claim("abstract-explicit"), run_context{{precision::parse("double")}, 20230830, 2, &reading});
   EXPECT_EQ(r.outcome, verdict::erratum);
-  EXPECT_EQ(r.evidence["stated"]["qualified"], false);
+  EXPECT_EQ(r.evidence.at("stated").at("qualified"), false);
   EXPECT_EQ(r.note.find("Wording"), std::string::npos) << r.note;
   // As printed (explicit for the harmonic oscillator, read in context): Section 6's wording finding.
   const claim_result printed = check_claim(find_claim("abstract-explicit"), run_context{{precision::parse("double")}, 20230830, 2, nullptr});
@@ -245,7 +245,7 @@ TEST(ChangedTable, TableOneIsJudgedAsPrinted) {
   // table-values already fails as printed: a changed entry shows in its evidence, read from the copy.
   const paper_reading reading = altered_reading("$ 4.11  \\,\\, 10^{-4} $", "$ 4.11  \\,\\, 10^{-3} $");
   const claim_result r = check_claim(find_claim("table-values"), run_context{{precision::parse("double")}, 20230830, 2, &reading});
-  EXPECT_EQ(r.evidence["numeric"]["rows"][3]["published_N_10_20_40"][0], "4.11e-03");
+  EXPECT_EQ(r.evidence.at("numeric").at("rows")[3]["published_N_10_20_40"][0], "4.11e-03");
   EXPECT_NE(r.note.find("Symplectic Simpson state 0.997-9.84x ours"), std::string::npos) << r.note;
 }
 
@@ -266,7 +266,7 @@ TEST(ChangedTable, AnEntryIsJudgedToTheDigitsItIsPrintedWith) {
   // inside; printed "4.11" (three digits, ± 0.005e-4) it is not.
   const paper_reading reading = altered_reading("$ 4.11  \\,\\, 10^{-4} $", "$ 4.2 \\,\\, 10^{-4} $");
   const claim_result r = check_claim(find_claim("table-values"), run_context{{precision::parse("double")}, 20230830, 2, &reading});
-  const json& entry = r.evidence["search"]["stated"]["entries"][9];
+  const json& entry = r.evidence.at("search").at("stated").at("entries")[9];
   EXPECT_EQ(entry["row"], "Symplectic Simpson state");
   EXPECT_EQ(entry["printed"], "4.2e-04");
   EXPECT_EQ(entry["reproduced"], true) << entry.dump();
@@ -278,10 +278,10 @@ TEST(ChangedFormula, TheContractionConstantFollowsThePrintedInternalEquation) {
   const paper_reading reading = altered_reading("m\\, {{4}\\over{h^2}} \\, \\big( q_\\ell -2", "m\\, {{2}\\over{h^2}} \\, \\big( q_\\ell -2");
   const run_context ctx{{precision::parse("double")}, 20230830, 2, &reading};
   const claim_result r = check_claim(find_claim("nonlinear-internal-node"), ctx);
-  EXPECT_EQ(r.evidence["exact"]["pendulum_contraction_constant"], "(h^2*omega^2)/(4)");
-  EXPECT_EQ(r.evidence["exact"]["same_bound"], false);
+  EXPECT_EQ(r.evidence.at("exact").at("pendulum_contraction_constant"), "(h^2*omega^2)/(4)");
+  EXPECT_EQ(r.evidence.at("exact").at("same_bound"), false);
   const claim_result printed = check_claim(find_claim("nonlinear-internal-node"), run_context{{precision::parse("double")}, 20230830, 2, nullptr});
-  EXPECT_EQ(printed.evidence["exact"]["same_bound"], true);
+  EXPECT_EQ(printed.evidence.at("exact").at("same_bound"), true);
 }
 
 }  // namespace
