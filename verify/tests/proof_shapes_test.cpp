@@ -313,6 +313,8 @@ This node is not linear in the ends. That node is linear in the ends. Squared, t
   (1 + \om^2 h^2) \Big( - m \om^2 h + \frac{m \om^4 h^3}{6} \Big) & 1 - \frac{\om^2 h^2}{2} + \frac{\om^4 h^4}{24} \end{pmatrix} \end{equation}
 Leapfrog, (\ref{map}), is second order accurate for state and momentum. Its twin (\ref{mappq}) is second order accurate too.
 Leapfrog, once more, is third order accurate. Sheared, (\ref{shearedmap}) is fourth order accurate.
+\begin{equation}\label{removable} \frac{x^2 - 1}{x - 1} - 2 = 0 \end{equation}
+\begin{equation}\label{pole} \frac{x}{x - 1} - 1 = 0 \end{equation}
 )";
 
 const std::string declarations = R"(
@@ -815,6 +817,10 @@ TEST_F(ShapesOnADocument, Derivative) {
   EXPECT_NE(chain.evidence.at("exact").at("own").get<std::string>().find("every polynomial V"), std::string::npos) << chain.evidence.dump();
   EXPECT_EQ(run("derivative", R"({ function = '$V(q^2 + q)$', variable = ['q'], printed = '$2 q {{\partial V}\over{\partial q}}((q + 1) q)$' })").outcome,
             verdict::erratum);
+  // Taken where it is undefined: d/dx of 1/(x - k) at x = k. It fails, where GiNaC's evaluation threw.
+  const claim_result pole = run("derivative", R"({ function = '$\frac{1}{x - k}$', variable = ['x'], printed = '$0$', arguments = ['x'], at = ['k'] })");
+  EXPECT_EQ(pole.outcome, verdict::fails) << pole.evidence.dump();
+  EXPECT_NE(pole.note.find("is undefined: the denominator"), std::string::npos) << pole.note;
   // Taken at other arguments: dL_d/dq_1 at (q_0, q_1) = (q_j, q_{j+1}) is (pnext). Without them the
   // derivative is in q_0, q_1 and differs; swapped, it is dL_d/dq_1 at (q_{j+1}, q_j), which differs too.
   const std::string at = R"(function = "ld", variable = ['q_1'], printed = "pnext", arguments = ['q_0', 'q_1'])";
@@ -952,6 +958,14 @@ TEST_F(ShapesOnADocument, Solves) {
   // Not linear in the unknown: no solution to correct it with, so a wrong one fails.
   EXPECT_EQ(run("solves", R"({ equation = "square:lhs", unknown = ['q'], solution = '$2$' })").outcome, verdict::holds);
   EXPECT_EQ(run("solves", R"({ equation = "square:lhs", unknown = ['q'], solution = '$3$' })").outcome, verdict::fails);
+  // Undefined at the solution, as written: it fails, where GiNaC's evaluation threw (a harness fault,
+  // exit 3). (x^2 - 1)/(x - 1) - 2 is x - 1 in normal form, 0 at x = 1: a check of the normal form
+  // would pass it.
+  const claim_result removable = run("solves", R"({ equation = "removable:lhs", unknown = ['x'], solution = '$1$' })");
+  EXPECT_EQ(removable.outcome, verdict::fails) << removable.evidence.dump();
+  EXPECT_EQ(removable.note, "As printed: (removable:lhs) at x = ($1$) is undefined: the denominator x-1 is 0 there.");
+  EXPECT_EQ(run("solves", R"({ equation = "removable:lhs", unknown = ['x'], solution = '$2$' })").outcome, verdict::fails);  // 1, not 0
+  EXPECT_EQ(run("solves", R"({ equation = "pole:lhs", unknown = ['x'], solution = '$1$' })").outcome, verdict::fails);
 }
 
 TEST_F(ShapesOnADocument, SignOnInterval) {

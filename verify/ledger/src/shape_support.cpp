@@ -222,6 +222,25 @@ const paper_source& document_of(const run_context& ctx) {
   return paper_of(ctx).source;
 }
 
+std::optional<std::string> vanishing_denominator(const ex& e, const GiNaC::exmap& values) {
+  for (auto it = e.postorder_begin(); it != e.postorder_end(); ++it) {
+    if (!GiNaC::is_a<GiNaC::power>(*it) || !it->op(1).info(GiNaC::info_flags::negative)) continue;
+    // The inner denominators of the base are not 0 (postorder: checked before it), so this cannot throw.
+    if (GiNaC::normal(it->op(0).subs(values, GiNaC::subs_options::no_pattern)).is_zero()) return text_of(it->op(0));
+  }
+  return std::nullopt;
+}
+
+claim_result undefined_there(shape_reader& read, const std::string& what, const std::string& pole) {
+  claim_result result;
+  result.outcome = verdict::fails;
+  result.printed = read.printed();
+  result.note = fmt::format("As printed: {} is undefined: the denominator {} is 0 there.", what, pole);
+  result.evidence["exact"] = {{"statement", what}, {"ginac", "fails: the denominator " + pole + " is 0 there"}, {"own", "not applicable: undefined"}};
+  result.certificate_missing = "undefined there: no identity to state";
+  return result;
+}
+
 claim_result identity_verdict(const shape_call& call, shape_reader& read, const std::string& goal, const std::string& what, const ex& lhs, const ex& rhs,
                               const std::string& correction, verdict when_false, const std::optional<kernel_decision>& given) {
   claim_result result;

@@ -85,6 +85,17 @@ class shape_reader {
 /// The run's document: its paper, or the embedded one when it has none.
 const paper_source& document_of(const run_context& ctx);
 
+/// Where e, as written, divides by zero once `values` are put in: the first denominator (a power
+/// with a negative exponent, innermost first) whose base is 0 there, as text; none when e is defined
+/// there. A record's values are put into a formula only after this says none: GiNaC's evaluation
+/// throws on a division by zero (a harness fault, exit 3, where the statement is only undefined),
+/// and leaks what it was building.
+std::optional<std::string> vanishing_denominator(const GiNaC::ex& e, const GiNaC::exmap& values);
+
+/// The verdict on a statement undefined at a record's values (`pole`, from vanishing_denominator):
+/// it fails, the note saying where.
+claim_result undefined_there(shape_reader& read, const std::string& what, const std::string& pole);
+
 /// The verdict on an identity lhs = rhs, decided by GiNaC's normal form and by our kernel's grid:
 /// holds when both find it zero, `when_false` (erratum, with `correction`) when both find it not,
 /// kernels-disagree otherwise; our kernel not applicable leaves GiNaC's verdict, and says so. `own`,

@@ -244,6 +244,9 @@ claim_result derivative_shape(const shape_call& call, const run_context& ctx) {
       to[arguments[k]] = values[k];
       at += (at.empty() ? " at " : ", ") + arguments[k].get_name() + " = " + values[k].get_name();
     }
+    if (const auto pole = vanishing_denominator(derived, to)) {
+      return undefined_there(read, fmt::format("d({})/d{}{}", reference_of(call, "function"), variable.get_name(), at), *pole);
+    }
     derived = derived.subs(to, GiNaC::subs_options::no_pattern);
   }
   const std::string what = fmt::format("d({})/d{}{} = ({})", reference_of(call, "function"), variable.get_name(), at, reference_of(call, "printed"));
@@ -266,6 +269,9 @@ claim_result solves_shape(const shape_call& call, const run_context& ctx) {
       correction = fmt::format("as derived from ({}): {} = {}", reference_of(call, "equation"), unknown.get_name(), text_of(GiNaC::normal(solved)));
     }
   } catch (const std::exception&) {  // not linear in the unknown: no correction
+  }
+  if (const auto pole = vanishing_denominator(equation, {{unknown, solution}})) {
+    return undefined_there(read, fmt::format("({}) at {} = ({})", reference_of(call, "equation"), unknown.get_name(), reference_of(call, "solution")), *pole);
   }
   return identity_verdict(call, read, "solution", what, equation.subs(unknown == solution), 0, correction,
                           correction.empty() ? verdict::fails : verdict::erratum);
