@@ -103,6 +103,27 @@ std::string own_text(const kernel_decision& own, const std::string& verdict, con
   }
 }
 
+/// The verdict on the order a sentence states, `order` being GiNaC's and `own` our kernel's decision
+/// of its witness: kernels-disagree when ours contradicts it (`on` says of what), holds when the two
+/// orders agree, else an erratum with `correction`, the note saying `as_printed`.
+claim_result settled_order(claim_result result, const kernel_decision& own, int stated, int order, const std::string& on, const std::string& correction,
+                           const std::string& as_printed) {
+  if (own.outcome == kernel_decision::result::nonzero) {
+    result.outcome = verdict::kernels_disagree;
+    result.note = "GiNaC and our kernel reached different conclusions on " + on + ": a bug in one of them.";
+    return result;
+  }
+  if (own.outcome == kernel_decision::result::not_applicable) result.note = "Our kernel could not decide it (" + own.evidence + "): GiNaC's series alone. ";
+  if (order == stated) {
+    result.outcome = verdict::holds;
+    return result;
+  }
+  result.outcome = verdict::erratum;
+  result.correction = correction;
+  result.note += as_printed;
+  return result;
+}
+
 /// The states of `e` named <base>_<index>±k ("q_j+1", "p_j", "q_j-1/2"): each the smooth function
 /// <base> at t + k h.
 std::vector<smooth_state> indexed_states(const ex& e, const std::string& index, const ex& h) {
@@ -433,21 +454,9 @@ claim_result stated_order_shape(const shape_call& call, const run_context& ctx) 
                                                   verdict_word, h.get_name(), *leading, sequence[2].get_name(), h.get_name(), *scale, order);
   result.evidence["exact"]["own"] = own_text(own, verdict_word, fmt::format("the {} coefficient is of order {}^{} and the scheme on the solution of order {}^{}",
                                                               sequence[2].get_name(), h.get_name(), *scale, h.get_name(), *leading));
-  if (own.outcome == kernel_decision::result::nonzero) {
-    result.outcome = verdict::kernels_disagree;
-    result.note = "GiNaC and our kernel reached different conclusions on the powers of the series: a bug in one of them.";
-    return result;
-  }
-  if (own.outcome == kernel_decision::result::not_applicable) result.note = "Our kernel could not decide it (" + own.evidence + "): GiNaC's series alone. ";
-  if (order == stated) {
-    result.outcome = verdict::holds;
-    return result;
-  }
-  result.outcome = verdict::erratum;
-  result.correction = fmt::format("the scheme is of order {}", order);
-  result.note += fmt::format("As printed: the sentence states order {}; on the exact solution the scheme is {} + O(h^{}).", stated,
-                             text_of(series), series_order);
-  return result;
+  return settled_order(std::move(result), own, stated, order, "the powers of the series", fmt::format("the scheme is of order {}", order),
+                       fmt::format("As printed: the sentence states order {}; on the exact solution the scheme is {} + O(h^{}).", stated, text_of(series),
+                                   series_order));
 }
 
 /// The order of accuracy a sentence states ({order}) against the printed one-step map's: each entry
@@ -534,20 +543,10 @@ claim_result map_order_shape(const shape_call& call, const run_context& ctx) {
       own_text(own, verdict_word,
                fmt::format("each entry minus the flow's Taylor polynomials of degree {} is {}^{} times a function finite at {} = 0, nonzero there for the entries {}", *lowest,
                            h.get_name(), *lowest, h.get_name(), fmt::join(own_parts, ", ")));
-  if (own.outcome == kernel_decision::result::nonzero) {
-    result.outcome = verdict::kernels_disagree;
-    result.note = "GiNaC and our kernel reached different conclusions on the map's local error: a bug in one of them.";
-    return result;
-  }
-  if (own.outcome == kernel_decision::result::not_applicable) result.note = "Our kernel could not decide it (" + own.evidence + "): GiNaC's series alone. ";
-  if (order == stated) {
-    result.outcome = verdict::holds;
-    return result;
-  }
-  result.outcome = verdict::erratum;
-  result.correction = fmt::format("the map is of order {}: its local error is O({}^{})", order, h.get_name(), *lowest);
-  result.note += fmt::format("As printed: the sentence states order {}; the map differs from the exact flow over one step at {}^{}.", stated, h.get_name(), *lowest);
-  return result;
+  return settled_order(std::move(result), own, stated, order, "the map's local error",
+                       fmt::format("the map is of order {}: its local error is O({}^{})", order, h.get_name(), *lowest),
+                       fmt::format("As printed: the sentence states order {}; the map differs from the exact flow over one step at {}^{}.", stated,
+                                   h.get_name(), *lowest));
 }
 
 }  // namespace simpson::verify::detail
