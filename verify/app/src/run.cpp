@@ -97,8 +97,8 @@ run_record run(const scene& s, const paper_reading& paper, const progress_callba
   };
   if (e.table1) {
     section([&] {
-      // Table 1 as the run's paper prints it (a changed copy is judged as printed); the embedded
-      // transcription when the table can no longer be read (table-values then says text-changed).
+      // Table 1 as the run's paper prints it (a changed copy is judged as printed); no printed value
+      // when the table can no longer be read (table-values then says text-changed).
       table1_settings settings = *e.table1;
       try {
         const printed_table1 printed = read_table1(paper.source);

@@ -20,21 +20,11 @@
 namespace simpson::verify {
 namespace {
 
-/// Table 1's rows as this run reads them: the paper's values and orders when given, else the
-/// transcription published_rows().
-std::array<published_row, 8> table_rows(const table1_settings& s) {
-  std::array<published_row, 8> rows = published_rows();
-  for (std::size_t r = 0; r < rows.size(); ++r) {
-    if (s.printed_values) rows[r].published = (*s.printed_values)[r];
-    if (s.printed_orders) rows[r].published_order = (*s.printed_orders)[r].c_str();
-  }
-  return rows;
-}
-
-/// Published value of a row at N, when Table 1 has that column.
-std::optional<double> published_at(const published_row& row, long long N) {
+/// The printed value of row r at N, when the run read Table 1 and it has that column.
+std::optional<double> published_at(const table1_settings& s, std::size_t r, long long N) {
+  if (!s.printed_values) return std::nullopt;
   for (std::size_t k = 0; k < published_meshes.size(); ++k) {
-    if (published_meshes[k] == N) return row.published[k];
+    if (published_meshes[k] == N) return (*s.printed_values)[r][k];
   }
   return std::nullopt;
 }
@@ -78,14 +68,8 @@ plot_description figure1_plot(double m, long long N) {
 
 /// The convention search on Table 1 (table1_conventions.hpp): the conventions tried, best first,
 /// and a plot of printed against reproduced values under the stated conventions and the best found.
-void add_convention_search(section_result& out, const std::array<published_row, 8>& rows,
+void add_convention_search(section_result& out, const printed_table_values& values, const printed_table_orders& orders,
                            const std::optional<std::array<std::array<int, 3>, 8>>& digits) {
-  std::array<std::array<double, 3>, 8> values{};
-  std::array<std::string, 8> orders;
-  for (std::size_t r = 0; r < rows.size(); ++r) {
-    for (std::size_t k = 0; k < 3; ++k) values[r][k] = rows[r].published[k];
-    orders[r] = rows[r].published_order;
-  }
   const std::vector<printed_entry> printed = table1_printed(values, orders, digits ? &*digits : nullptr);
   const convention_search_result search = search_table1(printed);
   const convention_candidate* found = search.reproducing();
@@ -194,7 +178,7 @@ std::optional<bool> order_agrees(const std::string& proved, std::optional<double
 }
 
 section_result run_table1(const table1_settings& s) {
-  const std::array<published_row, 8> rows = table_rows(s);
+  const std::array<published_row, 8>& rows = published_rows();
   const double omega = boost::math::constants::two_pi<double>(), H0 = s.m * omega * omega / 2;  // (mω)²/(2m) for y_0 = (mω, 0)
   runs_by_mesh runs;
   for (const long long N : s.meshes) {
@@ -239,7 +223,8 @@ section_result run_table1(const table1_settings& s) {
 
   std::vector<std::string> not_reproduced;
   std::vector<std::optional<double>> least_squares;  // each row's order in double; none when exact
-  for (const published_row& row : rows) {
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const published_row& row = rows[r];
     std::vector<double> h, e;
     std::vector<bool> use;
     table_row wide_row{figure::text(row.scheme), figure::text(row.quantity)};
@@ -248,7 +233,7 @@ section_result run_table1(const table1_settings& s) {
       h.push_back(1.0 / static_cast<double>(N));
       e.push_back(error);
       use.push_back(!at_round_off_floor(error, N, H0));
-      const auto published = published_at(row, N);
+      const auto published = published_at(s, r, N);
       const figure ratio = published ? figure::of(*published / error) : figure{};
       entries.add({figure::text(row.scheme), figure::text(row.quantity), figure::integer(N), figure::of(h.back()),
                    figure::of(error), published ? figure::of(*published) : figure{}, ratio, figure::flag(!use.back())});
@@ -273,16 +258,19 @@ section_result run_table1(const table1_settings& s) {
       order_row.push_back(!use[k] || !use[k + 1] ? figure::text("masked")
                                                  : figure::of(std::log2(e[k] / e[k + 1]) / std::log2(h[k] / h[k + 1])));
     }
-    order_row.push_back(figure::text(row.published_order));
+    order_row.push_back(figure::text(s.printed_orders ? (*s.printed_orders)[r] : std::string("not read")));
     orders.add(std::move(order_row));
   }
   out.add(std::move(entries)).add(std::move(overview)).add(std::move(orders));
-  if (not_reproduced.empty()) {
+  if (!s.printed_values || !s.printed_orders) {
+    out.text("Table 1 could not be read from the paper: ours are shown beside no printed value.");
+  } else if (not_reproduced.empty()) {
     out.text("Every published entry with a counterpart here is reproduced within 5%.");
   } else {
     out.text(fmt::format("**Not reproduced** (outside ±5%): {}.\n\n{} Also tried: {}. See the ledger claims table-values, "
                          "table-orders and table-conservation.",
-                         fmt::join(not_reproduced, "; "), table_not_reproduced(s.m, s.printed_values ? &*s.printed_values : nullptr), table_also_tried(s.m)));
+                         fmt::join(not_reproduced, "; "), table_not_reproduced(*s.printed_values, *s.printed_orders, s.m),
+                         table_also_tried(*s.printed_values, s.m)));
   }
   table not_reproduced_list{"not_reproduced", "", "", {{"entry", "entry"}}};
   not_reproduced_list.markdown = false;
@@ -291,7 +279,12 @@ section_result run_table1(const table1_settings& s) {
 
   if (s.m == 1) add_order_expectations(out, add_enclosed_table(out), least_squares, s.meshes);
   out.add(figure1_plot(s.m, s.figure_meshes));
-  add_convention_search(out, rows, s.printed_digits);
+  if (s.printed_values && s.printed_orders) {
+    add_convention_search(out, *s.printed_values, *s.printed_orders, s.printed_digits);
+  } else {
+    out.text("### Convention search\n\nTable 1 could not be read from the paper: no printed value to search conventions for "
+             "(the claim table-values says where the reading failed).");
+  }
 
   // Errors of p and q against N: ours (lines), published (open points), and slopes h² and h⁴ a factor
   // 4 below the first Newmark and Simpson state errors (beside the curves, not on them).
@@ -304,7 +297,7 @@ section_result run_table1(const table1_settings& s) {
     series paper{name + " paper", line_style::points, static_cast<int>(r), 6};
     for (const long long N : s.meshes) {
       mine.add(figure::integer(N), figure::of(ours(runs, row, N)));
-      if (const auto published = published_at(row, N)) paper.add(figure::integer(N), figure::of(*published));
+      if (const auto published = published_at(s, r, N)) paper.add(figure::integer(N), figure::of(*published));
     }
     convergence.curves.push_back(mine);
     convergence.curves.push_back(paper);

@@ -49,18 +49,10 @@ std::string without_requires(const std::string& text) {
 }
 
 claim_result check_table_roundoff(const run_context& ctx) {
-  std::array<std::array<double, 3>, 8> values{};
-  std::array<std::array<int, 3>, 8> digits{};
-  if (ctx.paper != nullptr) {
-    const printed_table1 printed = read_table1(ctx.paper->source);  // text_changed when the rows are gone
-    values = printed.values;
-    digits = printed.digits;
-  } else {
-    for (std::size_t r = 0; r < values.size(); ++r) {
-      values[r] = published_rows()[r].published;
-      digits[r] = {3, 3, 3};
-    }
-  }
+  // The run's paper, or the embedded one; text_changed when the rows are gone.
+  const printed_table1 printed = read_table1(ctx.paper != nullptr ? ctx.paper->source : embedded_paper());
+  const std::array<std::array<double, 3>, 8>& values = printed.values;
+  const std::array<std::array<int, 3>, 8>& digits = printed.digits;
   claim_result out;
   json meshes = json::array();
   std::string coq = "(* Table 1's meshes: for each N, Gappa's proof of the double program's one-step round-off (module\n"

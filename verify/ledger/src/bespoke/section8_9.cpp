@@ -247,7 +247,7 @@ claim_result check_table_values(const run_context& ctx) {
   bool orders_match = false, conservation = false;
   json evidence;
   evidence["numeric"] = table_evidence(orders_match, conservation, printed);
-  evidence["numeric"]["also_tried"] = table_also_tried();
+  evidence["numeric"]["also_tried"] = table_also_tried(published);
   // The convention search: every convention Section 8 states or leaves implicit, enumerated and fitted.
   const std::vector<printed_entry> entries = table1_printed(published, orders, &digits);
   const convention_search_result search = search_table1(entries);
@@ -293,13 +293,13 @@ claim_result check_table_values(const run_context& ctx) {
   if (const convention_candidate* found = search.reproducing()) {
     return words_erratum(evidence, "Table 1 is reproduced, every entry within its printed digits, under: " + describe(*found),
                          "Not under the stated conventions (" + std::to_string(search.stated.reproduced) + " of " +
-                             std::to_string(entries.size()) + " entries). " + table_not_reproduced(1, &published));
+                             std::to_string(entries.size()) + " entries). " + table_not_reproduced(published, orders));
   }
   return confirmed_if(false, evidence,
                       "No convention of the searched family reproduces Table 1: the best, " + describe(search.tried.front()) + ", reproduces " +
                           std::to_string(search.tried.front().reproduced) + " of " + std::to_string(entries.size()) +
                           " entries (worst residual " + simpson::to_string(search.tried.front().worst, 3) +
-                          " half-units of the last digit). " + table_not_reproduced(1, &published));
+                          " half-units of the last digit). " + table_not_reproduced(published, orders));
 }
 
 /// Figure 1 (N = 15, one period, q = sin omega t, p = m omega cos omega t, the momentum rescaled by

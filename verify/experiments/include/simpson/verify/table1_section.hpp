@@ -16,7 +16,8 @@ struct table1_settings {
   long long figure_meshes = 15;               // N of Figure 1
   double m = 1;
   /// Table 1 as read from the run's paper (values and order column, in published_rows() order);
-  /// unset, the transcription of the embedded text, published_rows().
+  /// unset when the paper's table cannot be read: the experiment then runs beside no printed value,
+  /// and no convention search is made.
   std::optional<std::array<std::array<double, 3>, 8>> printed_values;
   std::optional<std::array<std::string, 8>> printed_orders;
   std::optional<std::array<std::array<int, 3>, 8>> printed_digits;
