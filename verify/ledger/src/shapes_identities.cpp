@@ -327,15 +327,14 @@ claim_result linear_shape(const shape_call& call, const run_context& ctx) {
   ex combination = 0;
   std::vector<std::string> names, terms;
   std::string pole;  // a unit vector where the expression has no value: not linear
-  // Its value at each unit vector from its normal form N/D, where D does not vanish there: the tree
-  // as read may divide by zero on the way (GiNaC throws, and leaks the exception's allocation).
+  // Its value at each unit vector from its normal form, where no denominator of it vanishes there:
+  // linearity is the function's, whatever the tree as read divides by on the way.
   const ex normal = GiNaC::normal(e);
-  const ex denominator = GiNaC::denom(normal);
   for (std::size_t i = 0; i < variables.size(); ++i) {
     GiNaC::exmap unit;
     for (std::size_t k = 0; k < variables.size(); ++k) unit[variables[k]] = k == i ? 1 : 0;
     names.push_back(variables[i].get_name());
-    if (GiNaC::normal(GiNaC::expand(denominator).subs(unit, GiNaC::subs_options::no_pattern)).is_zero()) {
+    if (vanishing_denominator(normal, unit)) {
       if (pole.empty()) pole = fmt::format("{} = 1, the others 0", variables[i].get_name());
       continue;
     }
