@@ -16,7 +16,7 @@ inline paper_source altered(const std::string& after, const std::string& from, c
   EXPECT_NE(start, std::string::npos) << after;
   const std::size_t at = p.text.find(from, start);
   EXPECT_NE(at, std::string::npos) << from;
-  p.text.replace(at, from.size(), to);
+  replace_text(p, at, from.size(), to);
   p.origin = "altered copy";
   return p;
 }

@@ -304,9 +304,9 @@ grep -q "claims file '$work/note-label.toml', line [0-9]*, field 'with.matrix': 
   fail "a note, label missing: not named: $(cat "$work/err")"
 sed 's/shape = "symplectic"/shape = "simplectic"/' "$note_dir/trapezoidal-note.toml" >"$work/note-shape.toml"
 check "a note, unknown shape" 2 --paper "$note_dir/trapezoidal-note.tex" --claims-file "$work/note-shape.toml" --out "$work/none-note3"
-sed "s/real = \['q', /real = [/" "$note_dir/trapezoidal-note.toml" >"$work/note-symbol.toml"
+sed "s/'p_0', //" "$note_dir/trapezoidal-note.toml" >"$work/note-symbol.toml"
 check "a note, undeclared symbol" 2 --paper "$note_dir/trapezoidal-note.tex" --claims-file "$work/note-symbol.toml" --out "$work/none-note4"
-grep -q "the symbol 'q' is not declared" "$work/err" || fail "a note, undeclared symbol: $(cat "$work/err")"
+grep -q "the symbol 'p_0' is not declared" "$work/err" || fail "a note, undeclared symbol: $(cat "$work/err")"
 for k in 1 2 3 4; do [ -e "$work/none-note$k" ] && fail "a bad note run wrote $work/none-note$k"; done
 # The paper's source as an input (--paper, or the scene key "paper"): bad sources are bad input.
 paper_src="$(dirname "$0")/../paper/text/simpson-symplectic-gsi2023.tex"
@@ -316,13 +316,14 @@ echo 'Some other paper.' >"$work/other.tex"
 check "not the paper" 2 --claims phi3-det --paper "$work/other.tex" --out "$work/none-paper2"
 sed 's/\\label{moment-ordre-3}/\\label{moment-3}/' "$paper_src" >"$work/nolabel.tex"
 check "label missing" 2 --claims momentum-order-3 --paper "$work/nolabel.tex" --out "$work/none-paper3"
-grep -q "claims file 'claims/paper.toml', line [0-9]*, field 'with.printed': no .label{moment-ordre-3} in '$work/nolabel.tex'" "$work/err" ||
+grep -q "claims file 'claims/paper.toml', line [0-9]*, field 'with.printed': no .label{moment-ordre-3} in a formula of '$work/nolabel.tex'" "$work/err" ||
   fail "label missing: not named: $(cat "$work/err")"
 # What the selected claims do not read is not judged: phi3-det reads (Phi3) alone.
 check "label missing, not read" 0 --claims phi3-det --paper "$work/nolabel.tex" --quiet --out "$work/not-read"
 sed 's/{11\\over24} \\,  \\omega^2  h^2 +  {{\\omega^4  h^4}\\over48}  $/{11\\over24} \\foo/' "$paper_src" >"$work/unparsable.tex"
 check "formula does not parse" 2 --claims phi3-det --paper "$work/unparsable.tex" --out "$work/none-paper4"
-grep -qF "label Phi3 (line 488): cannot parse the formula: unsupported token at token '\\foo'" "$work/err" || fail "formula does not parse: label, line, token not named: $(cat "$work/err")"
+grep -qF "document '$work/unparsable.tex', label Phi3, line 490: the command \\foo is not one the reader knows" "$work/err" || fail "formula does not parse: label, line, construct not named: $(cat "$work/err")"
+grep -q "claims file" "$work/err" && fail "formula does not parse: a claims file blamed for the paper's TeX: $(cat "$work/err")"
 for k in 1 2 3 4; do [ -e "$work/none-paper$k" ] && fail "bad paper wrote $work/none-paper$k"; done
 # A copy with one coefficient of p_r changed (omega^4 -> omega^6) turns momentum-order-3 into an erratum: exit 1.
 sed 's/{{m \\, \\omega^4}\\over48}/{{m \\, \\omega^6}\\over48}/' "$paper_src" >"$work/altered.tex"

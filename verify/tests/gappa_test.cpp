@@ -192,7 +192,7 @@ claim_result table_roundoff_with_state_printed(const std::string& printed) {
   const std::string row = "Symplectic Simpson  & state    & $ 4.11  \\,\\, 10^{-4} $  & $ 2.55 \\,\\, 10^{-5} $   & $ 1.60 \\,\\, 10^{-6} $";
   const std::size_t at = copy.text.find(row);
   EXPECT_NE(at, std::string::npos);
-  if (at != std::string::npos) copy.text.replace(at + row.size() - 19, 4, printed);
+  if (at != std::string::npos) replace_text(copy, at + row.size() - 19, 4, printed);
   copy.origin = "altered copy";
   const paper_reading paper = read_paper(copy);
   run_context ctx;

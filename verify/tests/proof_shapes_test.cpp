@@ -12,6 +12,7 @@
 #include <simpson/verify/ledger.hpp>
 #include <simpson/verify/paper_reading.hpp>
 #include <simpson/verify/printed_checks.hpp>
+#include <simpson/verify/tex_document.hpp>
 #include <simpson/verify/tex_macros.hpp>
 #include <simpson/verify/tex_math.hpp>
 
@@ -27,30 +28,41 @@ paper_source document(const std::string& text) { return {"test.tex", without_com
 
 // ---- macros ----
 
+std::string expanded(const std::string& tex, const tex_macros& macros) { return tex_text(expand_all(tex_tokenize(tex), macros)); }
+
 TEST(TexMacros, DefinitionsWithArgumentsExpandAsTeXWould) {
-  const auto macros = defined_macros(R"(\newcommand{\om}{\omega} \newcommand\half[1]{\frac{#1}{2}}
+  const tex_macros macros = defined_macros(R"(\newcommand{\om}{\omega} \newcommand\half[1]{\frac{#1}{2}}
 \def\sq#1{#1^2} \renewcommand{\om}{\Omega})");
-  ASSERT_EQ(macros.size(), 3u);
-  EXPECT_EQ(macros.at("\\half").arguments, 1);
-  EXPECT_EQ(expand_macros(R"(\half{\om h} + \sq x)", macros), R"(\frac{{\Omega h}}{2} + {x}^2)");
-  EXPECT_EQ(expand_macros(R"(\omh)", macros), R"(\omh)");  // not \om followed by h
-  EXPECT_THROW(expand_macros(R"(\half)", macros), std::invalid_argument);
-  EXPECT_THROW(expand_macros(R"(\a)", defined_macros(R"(\newcommand{\a}{\a x})")), std::invalid_argument);
-  EXPECT_THROW(defined_macros(R"(\newcommand{\b}[12]{x})"), std::invalid_argument);
+  ASSERT_EQ(macros.all().size(), 3u);
+  EXPECT_EQ(macros.find("\\half")->arguments, 1);
+  // The arguments' tokens go in as they are, as TeX puts them: \sq x is x^2, \half{\om h} \frac{\Omega h}{2}.
+  EXPECT_EQ(expanded(R"(\half{\om h} + \sq x)", macros), R"(\frac{\Omega h}{2} + x^2)");
+  EXPECT_EQ(expanded(R"(\omh)", macros), R"(\omh)");  // not \om followed by h
+  EXPECT_THROW(expanded(R"(\half)", macros), tex_error);
+  EXPECT_THROW(expanded(R"(\a)", defined_macros(R"(\newcommand{\a}{\a x})")), tex_error);
+  EXPECT_THROW(defined_macros(R"(\newcommand{\b}[12]{x})"), tex_error);
 }
 
-TEST(TexMacros, ADefWithDelimitersReadsButDoesNotExpand) {
-  // The paper's own preamble: \def\section*#1{} (delimited parameter text). The source reads; a
-  // formula that used the macro would not, rather than expand it wrongly.
-  const auto macros = defined_macros(R"(\def\br {\break}
-\def\section*#1{} \newcommand{\dd}{{\rm d}})");
-  ASSERT_EQ(macros.size(), 3u);
-  EXPECT_TRUE(macros.at("\\section").delimited);
-  EXPECT_EQ(macros.at("\\section").arguments, 1);
-  EXPECT_FALSE(macros.at("\\br").delimited);
-  EXPECT_EQ(expand_macros(R"(\dd q)", macros), R"({\rm d} q)");
-  EXPECT_THROW(expand_macros(R"(\section*{x})", macros), std::invalid_argument);
-  EXPECT_THROW(defined_macros(R"(\def\x*#1)"), std::invalid_argument);  // no body
+TEST(TexMacros, ADefWithDelimitersExpandsAsTeXDoes) {
+  // The paper's own preamble: \def\section*#1{} (a delimited parameter text): \section* then one
+  // argument; \section without its * does not match the definition, as TeX says.
+  const tex_macros macros = defined_macros(R"(\def\br {\break}
+\def\section*#1{} \newcommand{\dd}{{\rm d}} \def\pair(#1,#2){[#1;#2]})");
+  ASSERT_EQ(macros.all().size(), 4u);
+  EXPECT_EQ(macros.find("\\section")->arguments, 1);
+  EXPECT_EQ(expanded(R"(\dd q)", macros), R"({\rm d} q)");
+  EXPECT_EQ(expanded(R"(a\section*{x}b)", macros), "ab");
+  EXPECT_EQ(expanded(R"(\pair(u,{v,w}))", macros), "[u;v,w]");
+  EXPECT_THROW(expanded(R"(\section{x})", macros), tex_error);
+  EXPECT_THROW(defined_macros(R"(\def\x*#1)"), tex_error);  // no body
+}
+
+TEST(TexMacros, AnOptionalFirstArgumentAndDeclaredOperators) {
+  const tex_macros macros = defined_macros(R"(\newcommand{\pd}[2][t]{\frac{\partial #2}{\partial #1}} \DeclareMathOperator{\tr}{tr}
+\let\phi\varphi)");
+  EXPECT_EQ(expanded(R"(\pd{q} \pd[x]{V})", macros), R"(\frac{\partial q}{\partial t} \frac{\partial V}{\partial x})");
+  EXPECT_EQ(expanded(R"(\tr\Phi)", macros), R"(\operatorname{tr}\Phi)");
+  EXPECT_EQ(expanded(R"(\phi)", macros), R"(\varphi)");
 }
 
 // ---- references ----
@@ -65,85 +77,92 @@ Unlabelled, as the first display after a phrase:
 \begin{equation*} y = \om - 1 \end{equation*}
 )";
 
+/// What these documents declare: the functions they apply, and q, a state.
+const tex_declarations& test_declarations() {
+  static const tex_declarations declared{{"V", "W", "q", "varphi_0", "varphi_1"}, {"q"}};
+  return declared;
+}
+
 // An align environment: each labelled row is a formula of its own, its '&' dropped; a matrix's
 // rows inside it are not the environment's.
 TEST(FormulaReference, ARowOfAnAlignEnvironment) {
-  const paper_source d = document(R"(\begin{align}
+  const tex_document d(document(R"(\begin{align}
 x &= a + 1 \label{ax} \\
 y &= \begin{pmatrix} a \\ b \end{pmatrix} \label{ay} \\
 z &= 3 \nonumber
-\end{align})");
-  const auto macros = defined_macros(d.text);
+\end{align})"));
+  const tex_declarations& declared = test_declarations();
   const GiNaC::ex a = paper_symbols()["a"], b = paper_symbols()["b"];
-  EXPECT_TRUE((read_reference(d, macros, "ax").value - (a + 1)).is_zero());
-  EXPECT_TRUE((read_reference(d, macros, "ax:lhs").value - paper_symbols()["x"]).is_zero());
-  const referenced_formula y = read_reference(d, macros, "ay");
+  EXPECT_TRUE((read_reference(d, declared, "ax").value - (a + 1)).is_zero());
+  EXPECT_TRUE((read_reference(d, declared, "ax:lhs").value - paper_symbols()["x"]).is_zero());
+  const referenced_formula y = read_reference(d, declared, "ay");
   ASSERT_TRUE(GiNaC::is_a<GiNaC::matrix>(y.value));
   EXPECT_EQ(GiNaC::ex_to<GiNaC::matrix>(y.value).rows(), 2u);
   EXPECT_EQ(y.line, 3);
 }
 
 TEST(FormulaReference, ByLabelEquationSideInlineAndLiteral) {
-  const paper_source d = document(note);
-  const auto macros = defined_macros(d.text);
+  const tex_document d(document(note));
+  const tex_declarations& declared = test_declarations();
   const GiNaC::ex b = paper_symbols()["b"], omega = paper_symbols()["omega"];
-  EXPECT_TRUE((read_reference(d, macros, "first").value - (b + 1)).is_zero());
-  EXPECT_TRUE((read_reference(d, macros, "first#2").value - 2).is_zero());
-  EXPECT_TRUE((read_reference(d, macros, "first:lhs").value - paper_symbols()["a"]).is_zero());
-  EXPECT_TRUE((read_reference(d, macros, "end").value - omega / 2).is_zero()) << "a label at the end of its display";
-  EXPECT_EQ(read_reference(d, macros, "end").line, 4);
-  EXPECT_EQ(read_reference(d, macros, "inline:stable for").sides.size(), 3u);
-  const referenced_formula after = read_reference(d, macros, "after:as the first display after");
+  EXPECT_TRUE((read_reference(d, declared, "first").value - (b + 1)).is_zero());
+  EXPECT_TRUE((read_reference(d, declared, "first#2").value - 2).is_zero());
+  EXPECT_TRUE((read_reference(d, declared, "first:lhs").value - paper_symbols()["a"]).is_zero());
+  EXPECT_TRUE((read_reference(d, declared, "end").value - omega / 2).is_zero()) << "a label at the end of its display";
+  EXPECT_EQ(read_reference(d, declared, "end").line, 4);
+  EXPECT_EQ(read_reference(d, declared, "inline:stable for").sides.size(), 3u);
+  const referenced_formula after = read_reference(d, declared, "after:as the first display after");
   EXPECT_TRUE((after.value - (omega - 1)).is_zero()) << after.tex;
   EXPECT_EQ(after.line, 8);
-  EXPECT_THROW(read_reference(d, macros, "after:a phrase the note does not have"), std::invalid_argument);
+  EXPECT_THROW(read_reference(d, declared, "after:a phrase the note does not have"), std::invalid_argument);
   EXPECT_THROW(parse_reference("after: "), std::invalid_argument);
-  EXPECT_TRUE((read_reference(d, macros, "$\\om + 1$").value - (omega + 1)).is_zero());
-  EXPECT_THROW(read_reference(d, macros, "missing"), std::invalid_argument);
-  EXPECT_THROW(read_reference(d, macros, "first#3"), std::invalid_argument);
-  EXPECT_THROW(read_reference(d, macros, "$\\unknown$"), std::invalid_argument);
+  EXPECT_TRUE((read_reference(d, declared, "$\\om + 1$").value - (omega + 1)).is_zero());
+  EXPECT_THROW(read_reference(d, declared, "missing"), std::invalid_argument);
+  EXPECT_THROW(read_reference(d, declared, "first#3"), std::invalid_argument);
+  EXPECT_THROW(read_reference(d, declared, "$\\unknown$"), std::invalid_argument);
   EXPECT_THROW(parse_reference("first#0"), std::invalid_argument);
   // A \label may hold spaces (the paper's own "oscillateur harmonique"), not at its ends.
   EXPECT_EQ(parse_reference("a label").key, "a label");
   EXPECT_THROW(parse_reference(" a label"), std::invalid_argument);
   // The first side of an inline formula.
-  EXPECT_TRUE(read_reference(d, macros, "inline:stable for:lhs").value.is_zero());
-  const definition x = read_definition(d, macros, "end");
+  EXPECT_TRUE(read_reference(d, declared, "inline:stable for:lhs").value.is_zero());
+  const definition x = read_definition(d, declared, "end");
   EXPECT_EQ(x.name.get_name(), "x");
   EXPECT_TRUE((with_definitions(paper_symbols()["x"] * 2, {x}) - omega).is_zero());
 }
 
 TEST(FormulaReference, DefinitionsOfAFunctionAndByAChain) {
-  const paper_source d = document(R"(\begin{equation}\label{potential energy} V(q) = \frac{k}{2} q^2 \end{equation}
+  const tex_document d(document(R"(\begin{equation}\label{potential energy} V(q) = \frac{k}{2} q^2 \end{equation}
 \begin{equation}\label{chain} g = \frac{a + b}{2} = a \end{equation}
-\begin{equation}\label{two} V(q) + W(q) = 1 \end{equation})");
-  const auto macros = defined_macros(d.text);
+\begin{equation}\label{two} V(q) + W(q) = 1 \end{equation})"));
+  const tex_declarations& declared = test_declarations();
   const GiNaC::ex k = paper_symbols()["k"], x = paper_symbols()["x"], a = paper_symbols()["a"];
-  const definition v = read_definition(d, macros, "potential energy");
+  const definition v = read_definition(d, declared, "potential energy");
   EXPECT_EQ(v.function, "V");
   // V(x) and V'(x) and V''(x) at any argument, and a definition by the last side of a chain.
-  const GiNaC::ex applied = read_reference(d, macros, "$V(2 x) + {{\\partial V}\\over{\\partial q}}(x) + {{\\partial^2 V}\\over{\\partial q^2}}(x)$").value;
+  const GiNaC::ex applied = read_reference(d, declared, "$V(2 x) + {{\\partial V}\\over{\\partial q}}(x) + {{\\partial^2 V}\\over{\\partial q^2}}(x)$").value;
   EXPECT_TRUE(GiNaC::normal(with_definitions(applied, {v}) - (2 * k * x * x + k * x + k)).is_zero()) << with_definitions(applied, {v});
-  EXPECT_TRUE((with_definitions(paper_symbols()["g"], {read_definition(d, macros, "chain")}) - a).is_zero());
-  EXPECT_THROW(read_definition(d, macros, "two"), std::invalid_argument);  // its left side is no function of one symbol
+  EXPECT_TRUE((with_definitions(paper_symbols()["g"], {read_definition(d, declared, "chain")}) - a).is_zero());
+  EXPECT_THROW(read_definition(d, declared, "two"), std::invalid_argument);  // its left side is no function of one symbol
 }
 
 TEST(FormulaReference, AFunctionDefinedInAnotherVariableAndItsDerivative) {
   // q(t) printed in theta, with t = h theta: read in t (theta = t/h), so q(h) = b and dq/dt = (b - a)/h.
-  const paper_source d = document(R"(\begin{equation}\label{basis} \varphi_0(\theta) = 1 - \theta \,,\,\, \varphi_1(\theta) = \theta \end{equation}
+  const tex_document d(document(R"(\newcommand{\dd}{{\rm d}}
+\begin{equation}\label{basis} \varphi_0(\theta) = 1 - \theta \,,\,\, \varphi_1(\theta) = \theta \end{equation}
 \begin{equation}\label{interp} q(t) = a \, \varphi_0(\theta) + b \, \varphi_1(\theta) \end{equation}
-Set $t = h \, \theta$ and $t = 2 \, h \, \theta$.)");
-  const auto macros = defined_macros(d.text);
+Set $t = h \, \theta$ and $t = 2 \, h \, \theta$.)"));
+  const tex_declarations& declared = test_declarations();
   const GiNaC::ex a = paper_symbols()["a"], b = paper_symbols()["b"], h = paper_symbols()["h"], theta = paper_symbols()["theta"];
-  std::vector<definition> defs{read_definition(d, macros, "basis#1"), read_definition(d, macros, "basis#2"), read_definition(d, macros, "interp"),
-                               read_definition(d, macros, "inline:t = h")};
-  const auto value = [&](const std::string& tex, const std::vector<definition>& with) { return with_definitions(read_reference(d, macros, tex).value, with); };
+  std::vector<definition> defs{read_definition(d, declared, "basis#1"), read_definition(d, declared, "basis#2"), read_definition(d, declared, "interp"),
+                               read_definition(d, declared, "inline:t = h")};
+  const auto value = [&](const std::string& tex, const std::vector<definition>& with) { return with_definitions(read_reference(d, declared, tex).value, with); };
   EXPECT_TRUE(GiNaC::normal(value("$q(h)$", defs) - b).is_zero()) << value("$q(h)$", defs);
   EXPECT_TRUE(GiNaC::normal(value("${{\\dd q}\\over{\\dd t}}(0)$", defs) - (b - a) / h).is_zero()) << value("${{\\dd q}\\over{\\dd t}}(0)$", defs);
   // Without an argument: dq/dt in t, then t = h theta put in (a constant here).
   EXPECT_TRUE(GiNaC::normal(value("${{\\dd q}\\over{\\dd t}}$", defs) - (b - a) / h).is_zero());
   // The change read as printed: t = 2 h theta makes q(h) the value at theta = 1/2.
-  defs.back() = read_definition(d, macros, "inline:t = 2");
+  defs.back() = read_definition(d, declared, "inline:t = 2");
   EXPECT_TRUE(GiNaC::normal(value("$q(h)$", defs) - (a + b) / 2).is_zero()) << value("$q(h)$", defs);
   // Without it, q's value is in theta, not in t: q(h) stays a function of theta.
   defs.pop_back();
@@ -152,13 +171,13 @@ Set $t = h \, \theta$ and $t = 2 \, h \, \theta$.)");
 
 TEST(FormulaReference, APartialDerivativeOfADefinedSymbol) {
   // g = (a x + b)/h defined: dg/dx is a/h, d^2g/dx^2 is 0; without the definition it stays a symbol.
-  const paper_source d = document(R"(\begin{equation}\label{g} g = \frac{a x + b}{h} \end{equation})");
-  const auto macros = defined_macros(d.text);
-  const definition g = read_definition(d, macros, "g");
+  const tex_document d(document(R"(\begin{equation}\label{g} g = \frac{a x + b}{h} \end{equation})"));
+  const tex_declarations& declared = test_declarations();
+  const definition g = read_definition(d, declared, "g");
   const GiNaC::ex a = paper_symbols()["a"], h = paper_symbols()["h"];
-  const GiNaC::ex first = read_reference(d, macros, "${{\\partial g}\\over{\\partial x}}$").value;
+  const GiNaC::ex first = read_reference(d, declared, "${{\\partial g}\\over{\\partial x}}$").value;
   EXPECT_TRUE(GiNaC::normal(with_definitions(first, {g}) - a / h).is_zero()) << with_definitions(first, {g});
-  EXPECT_TRUE(with_definitions(read_reference(d, macros, "${{\\partial^2 g}\\over{\\partial x^2}}$").value, {g}).is_zero());
+  EXPECT_TRUE(with_definitions(read_reference(d, declared, "${{\\partial^2 g}\\over{\\partial x^2}}$").value, {g}).is_zero());
   EXPECT_TRUE(GiNaC::is_a<GiNaC::symbol>(with_definitions(first, {})));
 }
 
@@ -205,7 +224,7 @@ TEST(KernelZero, AnUninterpretedFunctionLinearlyForEachMonomialUpToTheFourth) {
 
 // ---- the shapes, through a claims file ----
 
-const std::string shape_document = R"(\newcommand{\om}{\omega}
+const std::string shape_document = R"(\newcommand{\om}{\omega} \newcommand{\dd}{{\rm d}}
 \title{Shapes under test}
 \begin{equation}\label{ld} L_d = \frac{m}{2h} (q_1 - q_0)^2 - \frac{h m \om^2}{4} (q_0^2 + q_1^2) \end{equation}
 \begin{equation}\label{el} m \frac{q_{j+1} - 2 q_j + q_{j-1}}{h^2} + m \om^2 q_j = 0 \end{equation}
@@ -324,7 +343,7 @@ title = "Shapes under test"
 positive = ['m', '\omega', 'h']
 real = ['q', 'p', 'q_0', 'q_1', 'q_m', 'p_0', 'p_1', 'q_{j-1}', 'q_j', 'q_{j+1}', 'a', 'b', 'k', 'x', 'r', 'c', '\theta', 'p_j', 'p_{j+1}', 't', 'T', 'N', 'j',
         'u', 'v', 'w', 's']
-functions = ['\psi', 'g']
+functions = ['\psi', 'g', 'V', 'q', 'L_d', '\varphi_0', '\varphi_1']
 )";
 
 std::string record(const std::string& id, const std::string& shape, const std::string& with) {
@@ -339,8 +358,7 @@ class ShapesOnADocument : public ::testing::Test {
 
   claim_result run(const std::string& shape, const std::string& with, const std::string& text = shape_document) {
     use_claims_file(declarations + record("under-test", shape, with), "test.toml");
-    reading_.source = document(text);
-    reading_.origin = "test.tex";
+    reading_ = read_note(document(text));
     check_claims_file_formulas(reading_.source);
     run_context ctx;
     ctx.paper = &reading_;
@@ -1234,8 +1252,7 @@ std::string file_text(const std::string& path) {
 TEST(TrapezoidalNote, EveryVerdictIsTheOneItsClaimsFileExpects) {
   const std::string dir = std::string(SIMPSON_SOURCE_DIR) + "/verify/tests/notes/";
   use_claims_file(file_text(dir + "trapezoidal-note.toml"), "trapezoidal-note.toml");
-  paper_reading reading;
-  reading.source = load_document(dir + "trapezoidal-note.tex", installed_document()->title);
+  const paper_reading reading = read_note(load_document(dir + "trapezoidal-note.tex", installed_document()->title));
   check_claims_file_formulas(reading.source);
   run_context ctx;
   ctx.paper = &reading;

@@ -89,7 +89,7 @@ paper_reading altered_reading(const std::string& from, const std::string& to) {
   paper_source paper = embedded_paper();
   const std::size_t at = paper.text.find(from);
   EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) paper.text.replace(at, from.size(), to);
+  if (at != std::string::npos) replace_text(paper, at, from.size(), to);
   paper.origin = "altered copy";
   return read_paper(paper);
 }
@@ -196,13 +196,13 @@ TEST(ChangedSentence, FigureOneIsUnverifiableWithoutItsFileAndJudgedWithIt) {
   const std::string empty = "\\centerline {\\includegraphics[width=.96\\textwidth]{ }}";
   const std::size_t at = with_figure.text.find(empty);
   ASSERT_NE(at, std::string::npos);
-  with_figure.text.replace(at, empty.size(), "\\centerline {\\includegraphics[width=.96\\textwidth]{figure1.pdf}}");
+  replace_text(with_figure, at, empty.size(), "\\centerline {\\includegraphics[width=.96\\textwidth]{figure1.pdf}}");
   const paper_reading present = read_paper(with_figure);
   const claim_result r = check_claim(find_claim("figure1-statements"), run_context{{precision::parse("double")}, 20230830, 2, &present});
   EXPECT_EQ(r.outcome, verdict::holds) << r.note;
   paper_source newmark = with_figure;
   const std::string simpson = "with the  symplectic Simpson scheme.";
-  newmark.text.replace(newmark.text.find(simpson), simpson.size(), "with the Newmark scheme.");
+  replace_text(newmark, newmark.text.find(simpson), simpson.size(), "with the Newmark scheme.");
   const paper_reading named = read_paper(newmark);
   EXPECT_EQ(check_claim(find_claim("figure1-statements"), run_context{{precision::parse("double")}, 20230830, 2, &named}).outcome,
             verdict::fails);

@@ -20,14 +20,11 @@ paper_reading read_scene_paper(const scene& s) {
   if (const claims_document* document = installed_document()) {
     // A document other than the paper: its claims read their formulas themselves (proof shapes).
     if (s.paper_file.empty()) throw std::invalid_argument("the claims file checks a document ([document]): give its LaTeX with --paper");
-    paper_reading reading;
-    reading.source = load_document(s.paper_file, document->title);
-    reading.origin = reading.source.origin;
-    reading.sha256 = reading.source.sha256;
+    paper_reading reading = read_note(load_document(s.paper_file, document->title));
     check_claims_file_formulas(reading.source);
     return reading;
   }
-  paper_reading reading = read_paper(s.paper_file.empty() ? embedded_paper() : load_paper(s.paper_file));
+  paper_reading reading = read_paper(s.paper_file.empty() ? embedded_paper() : load_paper(s.paper_file), installed_book().declarations->reading);
   // What the scene's shape records read, before anything runs: a label or phrase the paper no longer
   // has is bad input, named, not a harness fault in the middle of a run.
   check_claims_file_formulas(reading.source, &s.claims);

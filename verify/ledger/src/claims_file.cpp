@@ -138,17 +138,13 @@ claims_file_error::claims_file_error(const std::string& file, int line, const st
 
 namespace {
 
-/// [document] and [symbols], when the file has them (both, or neither).
+/// [document], when the file has one (its [symbols] then required).
 std::optional<claims_document> read_document(const toml::table& file_table, const std::string& file) {
   const toml::node* document = file_table.get("document");
-  const toml::node* symbols = file_table.get("symbols");
-  if (!document && !symbols) return std::nullopt;
-  if (!document) throw claims_file_error(file, line_of(*symbols), "document", "missing: [symbols] declares the symbols of a [document]");
+  if (!document) return std::nullopt;
   const toml::table* d = document->as_table();
   if (!d) throw claims_file_error(file, line_of(*document), "document", "must be a table");
-  if (!symbols) throw claims_file_error(file, line_of(*document), "symbols", "missing: a [document] declares its symbols in [symbols]");
-  const toml::table* s = symbols->as_table();
-  if (!s) throw claims_file_error(file, line_of(*symbols), "symbols", "must be a table");
+  if (!file_table.get("symbols")) throw claims_file_error(file, line_of(*document), "symbols", "missing: a [document] declares its symbols in [symbols]");
   claims_document out;
   out.line = line_of(*document);
   for (const auto& [key, node] : *d) {
@@ -159,7 +155,18 @@ std::optional<claims_document> read_document(const toml::table& file_table, cons
     throw claims_file_error(file, title ? line_of(*title) : out.line, "document.title", "missing: a phrase the document prints (its title)");
   }
   out.title = title->as_string()->get();
-  std::set<std::string> seen;
+  return out;
+}
+
+/// [symbols], when the file has it. A name is declared once, or twice as a function and a symbol.
+std::optional<claims_symbols> read_symbols(const toml::table& file_table, const std::string& file) {
+  const toml::node* symbols = file_table.get("symbols");
+  if (!symbols) return std::nullopt;
+  const toml::table* s = symbols->as_table();
+  if (!s) throw claims_file_error(file, line_of(*symbols), "symbols", "must be a table");
+  claims_symbols out;
+  out.line = line_of(*symbols);
+  std::map<std::string, std::set<std::string>> seen;  // name: the lists it is in
   for (const auto& [key, node] : *s) {
     const std::string field = "symbols." + std::string(key.str());
     if (key.str() != "positive" && key.str() != "real" && key.str() != "functions") {
@@ -170,7 +177,11 @@ std::optional<claims_document> read_document(const toml::table& file_table, cons
     for (const toml::node& item : *names) {
       const auto* name = item.as_string();
       if (!name || name->get().empty()) throw claims_file_error(file, line_of(item), field, "must be an array of symbol names");
-      if (!seen.insert(name->get()).second) throw claims_file_error(file, line_of(item), field, "'" + name->get() + "' is declared twice");
+      std::set<std::string>& lists = seen[name->get()];
+      const bool as_function = key.str() == "functions";
+      const bool state = lists.size() == 1 && (lists.count("functions") > 0) != as_function;  // a function and a symbol
+      if (!lists.empty() && !state) throw claims_file_error(file, line_of(item), field, "'" + name->get() + "' is declared twice");
+      lists.insert(std::string(key.str()));
       (key.str() == "positive" ? out.positive : key.str() == "real" ? out.real : out.functions).push_back(name->get());
     }
   }
@@ -197,6 +208,7 @@ claims_file_contents read_claims_contents(const std::string& text, const std::st
   }
   claims_file_contents contents;
   contents.document = read_document(document, file);
+  contents.symbols = read_symbols(document, file);
   const toml::array* claims = document["claim"].as_array();
   if (!claims || claims->empty()) throw claims_file_error(file, 1, "claim", "no [[claim]] record");
   std::vector<claim_record> records;

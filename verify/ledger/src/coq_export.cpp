@@ -56,8 +56,7 @@ class coq_printer {
   std::string application_text(const ex& e) {
     const GiNaC::function& f = GiNaC::ex_to<GiNaC::function>(e);
     std::string name = f.get_name();
-    const auto& names = function_names();
-    if (name == "sum" || std::find(names.begin(), names.end(), name) == names.end()) throw unsupported("the function " + name);
+    if (!is_reader_function(e)) throw unsupported("the function " + name);
     if (GiNaC::is_a<GiNaC::fderivative>(e)) {
       if (f.nops() != 1) throw unsupported("a partial derivative of " + name);
       const std::size_t order = GiNaC::ex_to<GiNaC::fderivative>(e).derivatives().size();

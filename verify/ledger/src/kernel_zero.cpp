@@ -234,14 +234,12 @@ entry_decision decide_entry(const GiNaC::ex& e, std::size_t most_points) {
 
 
 /// The uninterpreted functions of one argument `e` applies (V(x), and V'(x) as V): those the TeX
-/// reader makes (function_names), not GiNaC's own (sin, exp, Order), which stay outside the kernel.
+/// reader makes (is_reader_function), not GiNaC's own (sin, exp, Order), which stay outside the kernel.
 std::set<std::string> applied_functions(const GiNaC::ex& e) {
-  const std::vector<std::string>& uninterpreted = function_names();
   std::set<std::string> names;
   for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
-    if (!GiNaC::is_a<GiNaC::function>(*it) || it->nops() != 1) continue;
-    const std::string name = GiNaC::ex_to<GiNaC::function>(*it).get_name();
-    if (std::find(uninterpreted.begin(), uninterpreted.end(), name) != uninterpreted.end()) names.insert(name);
+    if (it->nops() != 1 || !is_reader_function(*it)) continue;
+    names.insert(GiNaC::ex_to<GiNaC::function>(*it).get_name());
   }
   return names;
 }

@@ -3,7 +3,7 @@
 #include <simpson/verify/claims_file.hpp>
 #include <simpson/verify/tex_math.hpp>
 #include <simpson/verify/formula_reference.hpp>
-#include <simpson/verify/tex_macros.hpp>
+#include <simpson/verify/tex_document.hpp>
 #include <simpson/verify/quoted_words.hpp>
 
 #include "check_registry.hpp"
@@ -48,12 +48,6 @@ const check_registry& registered_checks() {
 
 namespace {
 
-/// The document of the claims file installed, if it declares one (use_claims_file).
-std::optional<claims_document>& installed_document_storage() {
-  static std::optional<claims_document> document;
-  return document;
-}
-
 /// The labels of the displays a shape record reads (its formula, matrix, condition and definition
 /// arguments that name a \label).
 std::vector<std::string> labels_read(const claim_record& r) {
@@ -87,14 +81,14 @@ claim_result as_the_sentence_says(claim_result result, const detail::shape_call&
   return result;
 }
 
-/// The check of a record: its bespoke check, or its shape run with its arguments.
-detail::check_function check_of(const claim_record& r) {
+/// The check of a record: its bespoke check, or its shape run with its arguments and the file's
+/// declarations.
+detail::check_function check_of(const claim_record& r, const std::shared_ptr<const claim_declarations>& declared) {
   if (!r.shape.empty()) {
     const detail::proof_shape& shape = detail::proof_shapes().at(r.shape);
-    detail::shape_call call{r.id, r.statement, r.with, nullptr};
+    detail::shape_call call{r.id, r.statement, r.with, declared};
     return [call, run = shape.run](const run_context& ctx) {
       detail::shape_call with_document = call;
-      with_document.document = installed_document_storage() ? &*installed_document_storage() : nullptr;
       if (with_document.statement.empty()) with_document.statement = find_claim(call.claim_id).statement;  // the TeX read
       const auto start = std::chrono::steady_clock::now();
       claim_result result = run(with_document, ctx);
@@ -107,12 +101,10 @@ detail::check_function check_of(const claim_record& r) {
   return check->check;
 }
 
-}  // namespace
-
-std::vector<claim> claims_of(const std::vector<claim_record>& records) {
+std::vector<claim> claims_of(const std::vector<claim_record>& records, const std::shared_ptr<const claim_declarations>& declared) {
   std::vector<claim> out;
   for (const claim_record& r : records) {
-    claim c{r.id, r.section, r.equation, r.statement, r.methods, r.expected, check_of(r), r.kind, r.follows_from, r.typographical, r.origin};
+    claim c{r.id, r.section, r.equation, r.statement, r.methods, r.expected, check_of(r, declared), r.kind, r.follows_from, r.typographical, r.origin};
     c.check_name = r.shape.empty() ? r.check : "shape " + r.shape;
     c.labels_read = labels_read(r);
     c.headline = r.headline;
@@ -122,7 +114,9 @@ std::vector<claim> claims_of(const std::vector<claim_record>& records) {
   return out;
 }
 
-claims_file_contents read_claims_with_known_names(const std::string& text, const std::string& file) {
+}  // namespace
+
+claim_book read_claim_book(const std::string& text, const std::string& file) {
   claims_file_contents contents = read_claims_contents(text, file, [](const std::string& field, const std::string& name) {
     if (field == "shape") return detail::proof_shapes().count(name) > 0;
     return detail::registered_checks().find(name) != nullptr;
@@ -130,97 +124,73 @@ claims_file_contents read_claims_with_known_names(const std::string& text, const
   for (const claim_record& r : contents.records) {
     if (!r.shape.empty()) detail::check_shape_arguments(r, file);
   }
-  return contents;
+  claim_book book;
+  book.file = file;
+  book.document = contents.document;
+  book.declarations = std::make_shared<const claim_declarations>(read_declarations(contents, file));
+  book.records = std::move(contents.records);
+  book.claims = claims_of(book.records, book.declarations);
+  return book;
 }
 
 std::vector<claim_record> read_claims_with_known_checks(const std::string& text, const std::string& file) {
-  return read_claims_with_known_names(text, file).records;
+  return read_claim_book(text, file).records;
 }
 
-namespace {
-
-/// The claims of a file given on the command line, once installed (use_claims_file).
-std::optional<std::vector<claim>>& installed_claims() {
-  static std::optional<std::vector<claim>> claims;
-  return claims;
-}
-
-/// The records of the file installed, and its name (check_claims_file_formulas).
-std::vector<claim_record>& installed_records() {
-  static std::vector<claim_record> records;
-  return records;
-}
-std::string& installed_file() {
-  static std::string file;
-  return file;
-}
-
-/// The records of the embedded claims/paper.toml.
-const std::vector<claim_record>& embedded_records() {
-  static const std::vector<claim_record> records = [] {
-    std::vector<claim_record> read;
+const claim_book& paper_book() {
+  static const claim_book book = [] {
+    claim_book read;
     try {
-      read = read_claims_with_known_checks(embedded_claims_text(), "claims/paper.toml");
+      read = read_claim_book(embedded_claims_text(), "claims/paper.toml");
     } catch (const claims_file_error& e) {
       throw std::logic_error(std::string("the embedded claims file does not read: ") + e.what());  // a harness fault
     }
     // Every registered check (its facets with it) is named by some record: one no record names is
     // dead code.
     std::set<std::string> named;
-    for (const claim_record& r : read) named.insert(r.check);
+    for (const claim_record& r : read.records) named.insert(r.check);
     for (const auto& [name, check] : detail::registered_checks().all()) {
       if (!named.count(name)) throw std::logic_error("check '" + name + "' is registered but no record of claims/paper.toml names it");
     }
     return read;
   }();
-  return records;
+  return book;
 }
 
-const std::vector<claim>& embedded_ledger() {
-  static const std::vector<claim> claims = claims_of(embedded_records());
-  return claims;
+namespace {
+
+/// The book --claims-file installed (use_claims_file); none: the paper's.
+std::optional<claim_book>& installed() {
+  static std::optional<claim_book> book;
+  return book;
 }
 
 }  // namespace
 
-const std::vector<claim>& ledger() { return installed_claims() ? *installed_claims() : embedded_ledger(); }
+const claim_book& installed_book() { return installed() ? *installed() : paper_book(); }
+
+const std::vector<claim>& ledger() { return installed_book().claims; }
 
 void use_claims_file(const std::string& text, const std::string& file) {
-  claims_file_contents contents = read_claims_with_known_names(text, file);
-  // The document's functions: applied as f(x) by the reader from now on.
-  if (contents.document) {
-    for (const std::string& tex : contents.document->functions) {
-      GiNaC::ex name;
-      try {
-        name = parse_tex_math(tex, paper_symbols());
-      } catch (const tex_parse_error&) {
-      }
-      if (!GiNaC::is_a<GiNaC::symbol>(name)) throw claims_file_error(file, contents.document->line, "symbols.functions", "'" + tex + "' is not one name");
-      declare_function(GiNaC::ex_to<GiNaC::symbol>(name).get_name());
-    }
+  claim_book book = read_claim_book(text, file);
+  if (file == "claims/paper.toml" && text == embedded_claims_text()) {
+    installed().reset();  // the paper's own book again
+    return;
   }
-  installed_claims() = claims_of(contents.records);
-  installed_document_storage() = contents.document;
-  installed_records() = std::move(contents.records);
-  installed_file() = file;
+  installed() = std::move(book);
 }
 
-const claims_document* installed_document() { return installed_document_storage() ? &*installed_document_storage() : nullptr; }
+const claims_document* installed_document() { return installed_book().document ? &*installed_book().document : nullptr; }
 
-void check_claims_file_formulas(const paper_source& document, const std::vector<std::string>* only) {
-  try {
-    defined_macros(document.text);  // a macro definition that does not read: the document is at fault, and named, once
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument("paper '" + document.origin + "', " + e.what());
-  }
-  const bool installed = installed_claims().has_value();
-  for (const claim_record& r : installed ? installed_records() : embedded_records()) {
+void check_claims_file_formulas(const paper_source& source, const std::vector<std::string>* only) {
+  const tex_document document = read_document(source, installed_document() ? "document" : "paper");
+  const claim_book& book = installed_book();
+  for (const claim_record& r : book.records) {
     if (r.shape.empty() || (only && std::find(only->begin(), only->end(), r.id) == only->end())) continue;
-    const std::string printed =
-        detail::check_shape_formulas(r, installed ? installed_file() : std::string("claims/paper.toml"), document, installed_document());
-    if (!r.statement.empty() || !installed_claims()) continue;
+    const std::string printed = detail::check_shape_formulas(r, book.file, document, *book.declarations);
+    if (!r.statement.empty() || !installed()) continue;
     // A record without a statement: the reports show the TeX it reads.
-    for (claim& c : *installed_claims()) {
+    for (claim& c : installed()->claims) {
       if (c.id == r.id) c.statement = printed;
     }
   }
@@ -231,6 +201,16 @@ const claim& find_claim(const std::string& id) {
     if (c.id == id) return c;
   }
   throw std::invalid_argument("unknown claim id '" + id + "' (see --list-claims)");
+}
+
+paper_reading read_paper(const paper_source& paper) { return read_paper(paper, paper_book().declarations->reading); }
+
+std::vector<std::string> required_claim_ids() {
+  std::vector<std::string> out;
+  for (const claim& c : paper_book().claims) {
+    if (c.headline) out.push_back(c.id);
+  }
+  return out;
 }
 
 }  // namespace simpson::verify

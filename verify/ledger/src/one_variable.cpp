@@ -123,16 +123,9 @@ std::optional<one_variable> in_variable(const ex& f, const ex& v) {
 }
 
 /// The printed condition 0 < v < c: c, or an exception naming the condition when it is not so.
-ex interval_end(const referenced_formula& condition, const ex& v) {
+ex interval_end(const referenced_formula& condition, const ex& v, const tex_declarations& declared) {
   if (condition.sides.size() != 3) throw std::invalid_argument(condition.locator + ": not a condition '0 < ... < c'");
-  ex low, middle, high;
-  try {
-    low = parse_tex_math(condition.sides[0], paper_symbols());
-    middle = parse_tex_math(condition.sides[1], paper_symbols());
-    high = parse_tex_math(condition.sides[2], paper_symbols());
-  } catch (const tex_parse_error& e) {
-    throw std::invalid_argument(condition.locator + ": " + e.what());
-  }
+  const ex low = read_side(condition, 0, declared), middle = read_side(condition, 1, declared), high = read_side(condition, 2, declared);
   if (!GiNaC::normal(low).is_zero() || !GiNaC::normal(middle - v).is_zero()) {
     throw std::invalid_argument(condition.locator + ": the condition is not '0 < " + text_of(v) + " < c'");
   }

@@ -62,7 +62,7 @@ struct one_variable {
 std::optional<one_variable> in_variable(const GiNaC::ex& f, const GiNaC::ex& v);
 
 /// The printed condition 0 < v < c: c, or std::invalid_argument naming the condition when it is not so.
-GiNaC::ex interval_end(const referenced_formula& condition, const GiNaC::ex& v);
+GiNaC::ex interval_end(const referenced_formula& condition, const GiNaC::ex& v, const tex_declarations& declared);
 
 /// GiNaC's own decision of the sign of g(v) on 0 < v < end, without our kernel: g as G(u) (u = v,
 /// or u = v² when g is even, G = g(sqrt(u)) in normal form), u = E s/(1 + s) mapping s > 0 onto

@@ -359,13 +359,17 @@ void check_shape_arguments(const claim_record& record, const std::string& file) 
   }
 }
 
-std::string check_shape_formulas(const claim_record& record, const std::string& file, const paper_source& document, const claims_document* declared) {
+std::string check_shape_formulas(const claim_record& record, const std::string& file, const tex_document& document,
+                                 const claim_declarations& declared) {
   // Read as the shape will read them when it runs (shape_reader): the definitions put in, every
   // symbol declared; what a shape checks only when it runs is checked here, before anything runs.
-  const shape_call call{record.id, record.statement, record.with, declared};
+  // The document's own faults (TeX that does not read) name the document and its line, not the record.
+  const shape_call call{record.id, record.statement, record.with, std::make_shared<const claim_declarations>(declared)};
   std::optional<shape_reader> read;
   try {
     read.emplace(call, document);
+  } catch (const document_error&) {
+    throw;
   } catch (const argument_error& e) {
     throw claims_file_error(file, record.with.at(e.argument).line, "with." + e.argument, e.what());
   } catch (const std::invalid_argument& e) {
@@ -373,10 +377,7 @@ std::string check_shape_formulas(const claim_record& record, const std::string& 
     throw claims_file_error(file, where != record.with.end() ? where->second.line : record.line, where != record.with.end() ? "with.where" : "with",
                             e.what());
   }
-  std::set<std::string> positive;
-  if (declared) {
-    for (const std::string& tex : declared->positive) positive.insert(symbol_named(tex).get_name());
-  }
+  const std::set<std::string>& positive = declared.positive;
   const proof_shape& shape = proof_shapes().at(record.shape);
   std::string principal;
   std::map<std::string, unsigned> rows;  // of each matrix argument
@@ -405,7 +406,7 @@ std::string check_shape_formulas(const claim_record& record, const std::string& 
           if (p.kind == argument_kind::condition && f.sides.size() != 3) {
             throw claims_file_error(file, line, field, f.locator + " is not a condition 'a < x < b' (it has " + std::to_string(f.sides.size()) + " sides)");
           }
-          if (p.positive && declared) {
+          if (p.positive && declared.complete) {
             for (const std::string& name : symbol_names(f.value)) {
               if (!positive.count(name)) throw claims_file_error(file, line, field, "the symbol '" + name + "' is not declared positive in [symbols]");
             }
@@ -452,6 +453,8 @@ std::string check_shape_formulas(const claim_record& record, const std::string& 
         }
       }
     } catch (const claims_file_error&) {
+      throw;
+    } catch (const document_error&) {
       throw;
     } catch (const std::invalid_argument& e) {
       throw claims_file_error(file, line, field, e.what());

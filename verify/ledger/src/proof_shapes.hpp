@@ -7,11 +7,13 @@
 // holds, or erratum with the proved correction (docs/claims-file.md lists the shapes).
 
 #include <simpson/verify/claim.hpp>
+#include <simpson/verify/claim_declarations.hpp>
 #include <simpson/verify/claims_file.hpp>
-#include <simpson/verify/paper_source.hpp>
+#include <simpson/verify/tex_document.hpp>
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -39,13 +41,13 @@ struct shape_parameter {
   std::string hole{};                // word: a sentence's pattern, which must hold the hole {hole}
 };
 
-/// One call: the claim's id and statement, its arguments, and the symbols its document declares
-/// (none for the paper's own claims: no declaration is then required).
+/// One call: the claim's id and statement, its arguments, and its claims file's declarations (they
+/// decide what the TeX leaves open; with a [document], every symbol must be declared).
 struct shape_call {
   std::string claim_id;
   std::string statement;
   std::map<std::string, shape_argument> with;
-  const claims_document* document = nullptr;
+  std::shared_ptr<const claim_declarations> declared;
 };
 
 using shape_function = std::function<claim_result(const shape_call&, const run_context&)>;
@@ -67,11 +69,12 @@ const std::map<std::string, proof_shape>& proof_shapes();
 void check_shape_arguments(const claim_record& record, const std::string& file);
 
 /// Every formula, definition and symbol a record's arguments name, read from `document`: throws
-/// claims_file_error naming the argument's line when one is missing, does not parse, uses a symbol
-/// `declared` does not declare, or is not of its parameter's kind and size (a matrix that is not
-/// square, a condition without three sides, a state of another size than its map). Returns the TeX of the principal argument's formula, with
-/// where it was read: "$...$ (label det, line 12)".
-std::string check_shape_formulas(const claim_record& record, const std::string& file, const paper_source& document,
-                          const claims_document* declared);
+/// claims_file_error naming the argument's line when one is missing, uses a symbol `declared` does
+/// not declare, or is not of its parameter's kind and size (a matrix that is not square, a
+/// condition without three sides, a state of another size than its map), and document_error when
+/// the document's TeX does not read (the document is at fault, not the record). Returns the TeX of
+/// the principal argument's formula, with where it was read: "$...$ (label det, line 12)".
+std::string check_shape_formulas(const claim_record& record, const std::string& file, const tex_document& document,
+                                 const claim_declarations& declared);
 
 }  // namespace simpson::verify::detail

@@ -2,13 +2,14 @@
 
 #include <simpson/verify/quoted_words.hpp>
 
+#include <simpson/verify/ledger.hpp>
 #include <simpson/verify/paper_reading.hpp>
 
 namespace simpson::verify {
 
 const paper_reading& paper_of(const run_context& ctx) {
   if (ctx.paper != nullptr) return *ctx.paper;
-  static const paper_reading embedded = read_paper(embedded_paper());
+  static const paper_reading embedded = read_paper(embedded_paper(), paper_book().declarations->reading);
   return embedded;
 }
 

@@ -16,34 +16,22 @@ namespace simpson::verify::detail {
 
 using GiNaC::ex;
 
-/// The symbol a TeX name parses to ('q_0', '\omega', 'q_{j+1}'); throws std::invalid_argument.
-GiNaC::symbol symbol_named(const std::string& tex) {
-  ex e;
-  try {
-    e = parse_tex_math(tex, paper_symbols());
-  } catch (const tex_parse_error& error) {
-    throw std::invalid_argument("'" + tex + "' does not parse: " + error.what());
-  }
-  if (!GiNaC::is_a<GiNaC::symbol>(e)) throw std::invalid_argument("'" + tex + "' is not one symbol");
-  return GiNaC::ex_to<GiNaC::symbol>(e);
-}
+/// The symbol a TeX name reads as ('q_0', '\omega', 'q_{j+1}'); throws std::invalid_argument.
+GiNaC::symbol symbol_named(const std::string& tex) { return paper_symbols()[reader_name(tex)]; }
 
-/// The GiNaC names of the symbols a document declares.
-std::set<std::string> declared_names(const claims_document& d) {
-  std::set<std::string> names;
-  for (const auto* list : {&d.positive, &d.real, &d.functions}) {
-    for (const std::string& tex : *list) names.insert(symbol_named(tex).get_name());
-  }
+/// The GiNaC names of the symbols a file declares.
+std::set<std::string> declared_names(const claim_declarations& d) {
+  std::set<std::string> names = d.reading.symbols;
+  names.insert(d.reading.functions.begin(), d.reading.functions.end());
   return names;
 }
 
-shape_reader::shape_reader(const shape_call& call, const paper_source& document)
-    : call_(call), document_(document), macros_(defined_macros(document.text)) {
-  if (call.document) declared_ = declared_names(*call.document);
+shape_reader::shape_reader(const shape_call& call, const tex_document& document) : call_(call), document_(document) {
+  if (call.declared->complete) declared_ = declared_names(*call.declared);
   const auto where = call.with.find("where");
   if (where != call.with.end()) {
     for (const std::string& reference : where->second.values) {
-      definitions_.push_back(read_definition(document_, macros_, reference));
+      definitions_.push_back(read_definition(document_, reading(), reference));
       const definition& d = definitions_.back();
       definitions_read_.push_back({{"reference", reference},
                                    {"label", d.locator + ", put in"},
@@ -72,10 +60,12 @@ void shape_reader::read_entries(const std::vector<std::string>& references) {
   referenced_formula names_read, values_read;
   ex names, values;
   try {
-    names_read = read_reference(document_, macros_, references[0]);
-    values_read = read_reference(document_, macros_, references[1]);
+    names_read = read_reference(document_, reading(), references[0]);
+    values_read = read_reference(document_, reading(), references[1]);
     names = names_read.value.evalm();
     values = with_definitions(values_read.value, definitions_).evalm();
+  } catch (const document_error&) {
+    throw;
   } catch (const std::invalid_argument& e) {
     fail(e.what());
   }
@@ -114,7 +104,7 @@ ex shape_reader::formula(const std::string& parameter) {
 
 referenced_formula shape_reader::raw(const std::string& parameter) {
   const std::string& reference = call_.with.at(parameter).values.front();
-  referenced_formula f = read_reference(document_, macros_, reference);
+  referenced_formula f = read_reference(document_, reading(), reference);
   declared_only(f.value, f.locator);
   // Shown with its matrix products multiplied out (1/(1 + x) times a matrix, as printed), unless a
   // definition is still to make one of its symbols a matrix.
@@ -143,32 +133,27 @@ std::vector<GiNaC::symbol> shape_reader::symbols(const std::string& parameter) c
 std::vector<referenced_formula> shape_reader::equations(const std::string& parameter) {
   std::vector<referenced_formula> out;
   for (const std::string& reference : call_.with.at(parameter).values) {
-    out.push_back(read_reference(document_, macros_, reference));
+    out.push_back(read_reference(document_, reading(), reference));
     const referenced_formula& f = out.back();
     json parsed = json::array();
-    for (const std::string& tex : f.sides) parsed.push_back(text_of(parsed_side(f, tex)));
+    for (std::size_t k = 0; k < f.sides.size(); ++k) parsed.push_back(text_of(parsed_side(f, k)));
     json entry = {{"reference", reference}, {"label", f.place}, {"line", f.line}, {"tex", folded_space(f.tex)}, {"parsed", parsed}};
     if (f.line >= 1 && std::find(read_.begin(), read_.end(), entry) == read_.end()) read_.push_back(entry);
   }
   return out;
 }
 
-ex shape_reader::parsed_side(const referenced_formula& equation, const std::string& tex) const {
-  ex side;
-  try {
-    side = parse_tex_math(tex, paper_symbols());
-  } catch (const tex_parse_error& e) {
-    throw std::invalid_argument(equation.locator + ": cannot parse '" + folded_space(tex) + "': " + e.what());
-  }
+ex shape_reader::parsed_side(const referenced_formula& equation, std::size_t k) const {
+  const ex side = read_side(equation, k, reading());
   // A chain's first side, one symbol, may be the name the chain defines (g = dq/dt(0) = ...).
-  const bool named = equation.sides.size() > 2 && &tex == &equation.sides.front() && GiNaC::is_a<GiNaC::symbol>(side);
+  const bool named = equation.sides.size() > 2 && k == 0 && GiNaC::is_a<GiNaC::symbol>(side);
   if (!named) declared_only(side, equation.locator);
   return side;
 }
 
 std::vector<ex> shape_reader::sides(const referenced_formula& equation) const {
   std::vector<ex> out;
-  for (const std::string& tex : equation.sides) out.push_back(with_definitions(parsed_side(equation, tex), definitions_));
+  for (std::size_t k = 0; k < equation.sides.size(); ++k) out.push_back(with_definitions(parsed_side(equation, k), definitions_));
   return out;
 }
 
@@ -179,11 +164,11 @@ bool shape_reader::defines(const GiNaC::symbol& name) const {
 json shape_reader::printed() const {
   json all = read_;
   for (const json& d : definitions_read_) all.push_back(d);
-  return {{"source", document_.origin}, {"formulas", all}};
+  return {{"source", document_.origin()}, {"formulas", all}};
 }
 
 void shape_reader::declared_only(const ex& e, const std::string& where) const {
-  if (!call_.document) return;
+  if (!call_.declared->complete) return;
   std::set<std::string> bound;  // an integral's variable and a sum's index: bound in it, not symbols of the document
   for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
     if (GiNaC::is_a<GiNaC::integral>(*it)) bound.insert(GiNaC::ex_to<GiNaC::symbol>(it->op(0)).get_name());
@@ -216,10 +201,12 @@ void shape_reader::record(const std::string& reference, const std::string& locat
   read_.push_back(entry);
 }
 
-const paper_source& document_of(const run_context& ctx) {
+const tex_document& document_of(const run_context& ctx) {
   // The run's paper, or the embedded one when the run has none (a note's run always has one: its
   // claims file's [document] requires --paper).
-  return paper_of(ctx).source;
+  const paper_reading& reading = paper_of(ctx);
+  if (!reading.document) throw std::logic_error("the run's paper (" + reading.origin + ") was never read as TeX");  // a harness fault
+  return *reading.document;
 }
 
 std::optional<std::string> vanishing_denominator(const ex& e, const GiNaC::exmap& values) {

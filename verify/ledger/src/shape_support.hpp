@@ -23,11 +23,11 @@
 
 namespace simpson::verify::detail {
 
-/// The symbol a TeX name parses to ('q_0', '\omega', 'q_{j+1}'); throws std::invalid_argument.
+/// The symbol a TeX name reads as ('q_0', '\omega', 'q_{j+1}'); throws std::invalid_argument.
 GiNaC::symbol symbol_named(const std::string& tex);
 
-/// The GiNaC names of the symbols a document declares.
-std::set<std::string> declared_names(const claims_document& d);
+/// The GiNaC names of the symbols (and functions) a file declares.
+std::set<std::string> declared_names(const claim_declarations& d);
 
 /// What is wrong with one argument of a call, found while reading it (its `entries`): the record's
 /// check names that argument's field.
@@ -40,7 +40,10 @@ struct argument_error : std::invalid_argument {
 /// keeps what it read for the report.
 class shape_reader {
  public:
-  shape_reader(const shape_call& call, const paper_source& document);
+  shape_reader(const shape_call& call, const tex_document& document);
+
+  /// What the call's file declares, for the reader.
+  const tex_declarations& reading() const { return call_.declared->reading; }
 
   bool has(const std::string& parameter) const { return call_.with.count(parameter) > 0; }
 
@@ -70,12 +73,11 @@ class shape_reader {
  private:
   void read_entries(const std::vector<std::string>& references);
   void declared_only(const GiNaC::ex& e, const std::string& where) const;
-  GiNaC::ex parsed_side(const referenced_formula& equation, const std::string& tex) const;
+  GiNaC::ex parsed_side(const referenced_formula& equation, std::size_t k) const;
   void record(const std::string& reference, const std::string& locator, int line, const std::string& tex, const std::optional<GiNaC::ex>& value);
 
   const shape_call& call_;
-  const paper_source& document_;
-  std::map<std::string, tex_macro> macros_;
+  const tex_document& document_;
   std::set<std::string> declared_;
   std::vector<definition> definitions_;
   json read_ = json::array();
@@ -83,7 +85,7 @@ class shape_reader {
 };
 
 /// The run's document: its paper, or the embedded one when it has none.
-const paper_source& document_of(const run_context& ctx);
+const tex_document& document_of(const run_context& ctx);
 
 /// Where e, as written, divides by zero once `values` are put in: the first denominator (a power
 /// with a negative exponent, innermost first) whose base is 0 there, as text; none when e is defined

@@ -286,7 +286,7 @@ claim_result characteristic_roots_shape(const shape_call& call, const run_contex
   }
   const kernel_decision product_own = kernel_decides_zero(terms->previous - product * terms->next);
   // The discriminant's sign on the interval, in both kernels.
-  const ex high = interval_end(condition, v);
+  const ex high = interval_end(condition, v, read.reading());
   const ex delta = monic_discriminant(*terms);
   const std::optional<one_variable> g = in_variable(delta, v);
   const std::optional<rational> c = g ? g->exact(high) : std::nullopt;

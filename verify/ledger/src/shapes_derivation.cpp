@@ -142,9 +142,7 @@ claim_result discrete_map_shape(const shape_call& call, const run_context& ctx) 
   // Linear: nothing of the state is left in the matrix; and no other symbol the document declares
   // real (a node left free: an internal node not named in `internal`).
   std::set<std::string> real;
-  if (call.document) {
-    for (const std::string& tex : call.document->real) real.insert(symbol_named(tex).get_name());
-  }
+  if (call.declared->complete) real = call.declared->real;
   for (unsigned r = 0; r < 2; ++r) {
     for (unsigned c = 0; c < 2; ++c) {
       if (derived(r, c).has(nodes[0]) || derived(r, c).has(momenta[0])) return not_linear("the map");

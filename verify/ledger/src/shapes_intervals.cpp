@@ -96,7 +96,7 @@ claim_result stability_interval_shape(const shape_call& call, const run_context&
   }
   const ex v = read.formula("variable");
   result.printed = read.printed();
-  const ex high = interval_end(condition, v);
+  const ex high = interval_end(condition, v, read.reading());
   const std::optional<one_variable> excess = in_variable(trace * trace - 4, v);  // < 0 exactly on the stable set
   if (!excess) {
     result.outcome = verdict::fails;
@@ -184,7 +184,7 @@ claim_result sign_on_interval_shape(const shape_call& call, const run_context& c
   const int want = claimed == "positive" ? 1 : -1;
   claim_result result;
   result.printed = read.printed();
-  const ex high = interval_end(condition, v);
+  const ex high = interval_end(condition, v, read.reading());
   const std::optional<one_variable> g = in_variable(f, v);
   if (!g) {
     result.outcome = verdict::fails;
@@ -263,7 +263,7 @@ claim_result factor_signs_shape(const shape_call& call, const run_context& ctx) 
   }
   claim_result result;
   result.printed = read.printed();
-  const ex high = interval_end(condition, v);
+  const ex high = interval_end(condition, v, read.reading());
   const std::string var = text_of(v), expression = reference_of(call, "expression");
   json factors = json::array();
   std::vector<proof_goal> goals;

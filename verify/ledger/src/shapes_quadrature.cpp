@@ -105,12 +105,7 @@ claim_result discrete_lagrangian_shape(const shape_call& call, const run_context
   shape_reader read(call, document_of(ctx));
   const ex printed = read.formula("printed");
   const referenced_formula rule_read = read.raw("rule"), action_read = read.raw("integral");  // as read: their bound variables untouched
-  ex rule_integral;
-  try {
-    rule_integral = parse_tex_math(rule_read.sides.front(), paper_symbols());
-  } catch (const tex_parse_error& e) {
-    throw std::invalid_argument(rule_read.locator + ": cannot parse '" + folded_space(rule_read.sides.front()) + "': " + e.what());
-  }
+  const ex rule_integral = read_side(rule_read, 0, read.reading());
   const GiNaC::integral& reference = as_integral(rule_integral, reference_of(call, "rule") + ":lhs");
   const GiNaC::integral& action = as_integral(action_read.value, reference_of(call, "integral"));
   const std::string psi = function_name(read.symbols("function").front().get_name(), 1);

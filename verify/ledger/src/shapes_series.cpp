@@ -221,11 +221,8 @@ claim_result consistency_shape(const shape_call& call, const run_context& ctx) {
     // by one (GiNaC's witness of the order has no other way to be free of h in its denominator).
     // (Only the reader's uninterpreted functions: GiNaC's own, sin or exp, are what they are.)
     std::string function;
-    const std::vector<std::string>& uninterpreted = function_names();
     for (GiNaC::const_preorder_iterator it = relation.preorder_begin(); it != relation.preorder_end(); ++it) {
-      if (!GiNaC::is_a<GiNaC::function>(*it)) continue;
-      const std::string name = GiNaC::ex_to<GiNaC::function>(*it).get_name();
-      if (std::find(uninterpreted.begin(), uninterpreted.end(), name) != uninterpreted.end()) function = name;
+      if (is_reader_function(*it)) function = GiNaC::ex_to<GiNaC::function>(*it).get_name();
     }
     kernel_decision own;
     if (function.empty()) {

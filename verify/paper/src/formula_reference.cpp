@@ -3,97 +3,13 @@
 #include <simpson/verify/formula_reference.hpp>
 
 #include <simpson/verify/tex_math.hpp>
+#include <simpson/verify/tex_macros.hpp>
 
 #include <algorithm>
 #include <cctype>
 #include <set>
 
 namespace simpson::verify {
-namespace {
-
-/// The rows of a multi-line environment's body, split at its top-level "\\" (not those of a
-/// matrix inside it): [begin, end) of each in `body`.
-std::vector<std::pair<std::size_t, std::size_t>> environment_rows(const std::string& body) {
-  std::vector<std::pair<std::size_t, std::size_t>> rows;
-  std::size_t from = 0;
-  int depth = 0;
-  for (std::size_t k = 0; k < body.size(); ++k) {
-    if (body.compare(k, 7, "\\begin{") == 0) ++depth;
-    if (body.compare(k, 5, "\\end{") == 0) --depth;
-    if (depth == 0 && body.compare(k, 2, "\\\\") == 0) {
-      rows.emplace_back(from, k);
-      from = k + 2;
-      ++k;
-    }
-  }
-  rows.emplace_back(from, body.size());
-  return rows;
-}
-
-/// The display that holds \label{label}, wherever in it the label is: from its start
-/// (\begin{equation}, equation*, \[ or \moneq) to its end, the label taken out; in an align or
-/// gather environment, the row that holds the label, its alignment marks dropped.
-tex_display labelled_display(const paper_source& document, const std::string& label) {
-  const std::string key = "\\label{" + label + "}";
-  const std::size_t at = document.text.find(key);
-  if (at == std::string::npos) throw std::invalid_argument("no \\label{" + label + "} in '" + document.origin + "'");
-  if (document.text.find(key, at + key.size()) != std::string::npos) {
-    throw std::invalid_argument("\\label{" + label + "} is in '" + document.origin + "' twice");
-  }
-  static const std::vector<std::string> starts{"\\begin{equation*}", "\\begin{equation}", "\\[", "\\moneqstar", "\\moneq",
-                                               "\\begin{align*}", "\\begin{align}", "\\begin{gather*}", "\\begin{gather}"};
-  static const std::vector<std::string> ends{"\\end{equation", "\\]", "\\monend", "\\end{align", "\\end{gather"};
-  std::size_t start = std::string::npos, start_length = 0;
-  bool rows = false;
-  for (const std::string& s : starts) {
-    const std::size_t found = document.text.rfind(s, at);
-    if (found != std::string::npos && (start == std::string::npos || found > start)) {
-      start = found;
-      start_length = s.size();
-      rows = s.find("align") != std::string::npos || s.find("gather") != std::string::npos;
-    }
-  }
-  std::size_t end = std::string::npos;
-  for (const std::string& e : ends) end = std::min(end, document.text.find(e, at));
-  std::size_t closed_before = std::string::npos;  // a display that ends between the start found and the label
-  if (start != std::string::npos) {
-    for (const std::string& e : ends) closed_before = std::min(closed_before, document.text.find(e, start));
-  }
-  if (start == std::string::npos || end == std::string::npos || closed_before < at) {
-    throw std::invalid_argument("\\label{" + label + "} in '" + document.origin + "' is not inside an equation display");
-  }
-  const std::size_t body_from = start + start_length;
-  std::string tex = document.text.substr(body_from, end - body_from);
-  tex.replace(at - body_from, key.size(), std::string(key.size(), ' '));
-  std::size_t first = body_from;
-  if (rows) {
-    for (const auto& [from, to] : environment_rows(tex)) {
-      if (at - body_from < from || at - body_from >= to) continue;
-      first = body_from + from;
-      tex = tex.substr(from, to - from);
-      break;
-    }
-    std::replace(tex.begin(), tex.end(), '&', ' ');
-  }
-  for (const std::string tag : {"\\nonumber", "\\notag"}) {
-    for (std::size_t k = tex.find(tag); k != std::string::npos; k = tex.find(tag, k)) tex.replace(k, tag.size(), std::string(tag.size(), ' '));
-  }
-  std::replace(tex.begin(), tex.end(), '\n', ' ');
-  // The display's line is its formula's first, after the label when the label comes first (as the
-  // paper reader counts it: paper_reading.hpp).
-  const auto skip_space = [&] {
-    while (first < end && std::isspace(static_cast<unsigned char>(document.text[first])) != 0) ++first;
-  };
-  skip_space();
-  if (first == at) {
-    first += key.size();
-    skip_space();
-  }
-  return {"label " + label, line_at(document.text, first), tex};
-}
-
-}  // namespace
-
 namespace {
 
 /// Strips a side suffix, ":lhs" (the first side) or ":sideN" (the N-th, from 1), from `key` into
@@ -158,53 +74,92 @@ formula_reference parse_reference(const std::string& text) {
   return r;
 }
 
-referenced_formula read_reference(const paper_source& document, const std::map<std::string, tex_macro>& macros, const std::string& reference) {
+namespace {
+
+/// "'origin', label x: line N: why" for a tex_error of the document.
+document_error document_fault(const tex_document& document, const std::string& where, const tex_error& e) {
+  return document_error(where + ", " + describe(e, document.text()));
+}
+
+}  // namespace
+
+referenced_formula read_reference(const tex_document& document, const tex_declarations& declared, const std::string& reference) {
   const formula_reference r = parse_reference(reference);
   referenced_formula f;
-  std::string tex;
+  std::vector<tex_equation> equations;
   if (r.where == formula_reference::kind::literal) {
     f.locator = f.place = "the record's TeX '" + r.key + "'";
-    tex = r.key;
-  } else {
-    tex_display display;
-    if (r.where == formula_reference::kind::labelled) {
-      display = labelled_display(document, r.key);
-    } else if (r.where == formula_reference::kind::display_after) {
-      display = find_anchored(document, r.key);
-    } else {
-      display = find_inline(document, r.key);
+    try {
+      std::vector<tex_token> tokens = expand_all(tex_tokenize(r.key), document.macros());
+      tex_region region;
+      region.display = false;
+      region.rows.push_back({tokens, 0, r.key.size(), {}, 0});
+      equations = equations_of(region);
+      if (equations.size() != 1) throw tex_error("one formula, not " + std::to_string(equations.size()), 0);
+    } catch (const tex_error& e) {
+      throw std::invalid_argument(f.locator + ": " + e.what() + (e.hint().empty() ? "" : " (" + e.hint() + ")"));
     }
-    f.place = display.locator;
-    f.locator = display.locator + " (line " + std::to_string(display.line) + ")";
-    f.line = display.line;
-    tex = display.tex;
+  } else {
+    const std::string origin = "'" + document.origin() + "'";
+    f.origin = document.origin();
+    f.document = &document;
+    const tex_region* region = nullptr;
+    int row = -1;
+    if (r.where == formula_reference::kind::labelled) {
+      try {
+        const tex_document::located at = document.labelled(r.key);
+        region = at.region;
+        row = at.row;
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(std::string(e.what()) + " in a formula of " + origin);
+      }
+      f.place = "label " + r.key;
+    } else {
+      const auto found = find_ignoring_space(document.text(), r.key);
+      if (!found) throw std::invalid_argument(origin + ": the phrase '" + r.key + "' is not there");
+      region = r.where == formula_reference::kind::display_after ? document.display_after(found->first) : document.inline_at(found->first);
+      if (!region) {
+        throw std::invalid_argument(origin + ": no " + std::string(r.where == formula_reference::kind::display_after ? "display" : "inline formula") +
+                                    " after the phrase '" + r.key + "'");
+      }
+      f.place = r.where == formula_reference::kind::display_after ? "anchor '" + r.key + "'" : "inline formula at '" + r.key + "'";
+    }
+    f.line = line_of(*region, row);
+    f.locator = f.place + " (line " + std::to_string(f.line) + ")";
+    try {
+      equations = equations_of(*region, row);
+    } catch (const tex_error& e) {
+      throw document_fault(document, "document " + origin + ", " + f.place, e);
+    }
   }
-  try {
-    tex = expand_macros(tex, macros);
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(f.locator + ": " + e.what());
-  }
-  std::vector<std::string> equations = r.where == formula_reference::kind::literal ? std::vector<std::string>{tex} : display_equations(tex);
+  if (equations.empty()) throw std::invalid_argument(f.locator + ": no formula");
   if (r.equation > static_cast<int>(equations.size())) {
     throw std::invalid_argument(f.locator + ": equation " + std::to_string(r.equation) + " is not there (the display has " +
                                 std::to_string(equations.size()) + ")");
   }
-  f.tex = equations[static_cast<std::size_t>(r.equation - 1)];
-  f.sides = relation_sides(f.tex);
-  if (f.sides.empty()) throw std::invalid_argument(f.locator + ": no formula");
+  const tex_equation& e = equations[static_cast<std::size_t>(r.equation - 1)];
+  f.tex = e.tex;
+  f.sides = e.side_tex;
+  f.relations = e.relations;
+  f.side_trees = e.sides;
   if (r.side > static_cast<int>(f.sides.size())) {
     throw std::invalid_argument(f.locator + ": side " + std::to_string(r.side) + " is not there (the equation has " + std::to_string(f.sides.size()) +
                                 ")");
   }
-  const std::string& side = r.side == 0 ? f.sides.back() : f.sides[static_cast<std::size_t>(r.side - 1)];
-  try {
-    // Not evaluated as matrices yet: a symbol a definition makes a matrix (Phi in "Phi (q_0, p_0)")
-    // must not be taken for a scalar factor first.
-    f.value = parse_tex_math(side, paper_symbols());
-  } catch (const tex_parse_error& e) {
-    throw std::invalid_argument(f.locator + ": cannot parse '" + folded_space(side) + "': " + e.what());
-  }
+  // Not evaluated as matrices yet: a symbol a definition makes a matrix (Phi in "Phi (q_0, p_0)")
+  // must not be taken for a scalar factor first.
+  f.value = read_side(f, r.side == 0 ? f.sides.size() - 1 : static_cast<std::size_t>(r.side - 1), declared);
   return f;
+}
+
+GiNaC::ex read_side(const referenced_formula& f, std::size_t k, const tex_declarations& declared) {
+  try {
+    return read_math(f.side_trees.at(k), declared, paper_symbols());
+  } catch (const tex_error& e) {
+    const std::string what = "cannot read '" + folded_space(f.sides.at(k)) + "': " + e.what() + (e.hint().empty() ? "" : " (" + e.hint() + ")");
+    if (!f.document) throw std::invalid_argument(f.locator + ": " + what);
+    throw document_error("document '" + f.origin + "', " + f.place + ", line " + std::to_string(line_at(f.document->text(), e.offset())) + ": " + what);
+  }
 }
 
 std::vector<std::string> symbol_names(const GiNaC::ex& e) {
@@ -215,25 +170,27 @@ std::vector<std::string> symbol_names(const GiNaC::ex& e) {
   return {names.begin(), names.end()};
 }
 
-definition read_definition(const paper_source& document, const std::map<std::string, tex_macro>& macros, const std::string& reference) {
+definition read_definition(const tex_document& document, const tex_declarations& declared, const std::string& reference) {
   formula_reference r = parse_reference(reference);
   if (r.side != 0) throw std::invalid_argument("'" + reference + "': a definition is a whole equation, without ':lhs' or ':sideN'");
-  const referenced_formula f = read_reference(document, macros, reference);
+  const referenced_formula f = read_reference(document, declared, reference);
   if (f.sides.size() < 2) throw std::invalid_argument(f.locator + ": a definition is an equation 'x = ...'");
-  GiNaC::ex name;
-  try {
-    name = parse_tex_math(f.sides.front(), paper_symbols());
-  } catch (const tex_parse_error& e) {
-    throw std::invalid_argument(f.locator + ": cannot parse '" + folded_space(f.sides.front()) + "': " + e.what());
-  }
+  const GiNaC::ex name = read_side(f, 0, declared);
   if (GiNaC::is_a<GiNaC::symbol>(name)) return {GiNaC::ex_to<GiNaC::symbol>(name), f.value, f.locator, f.line, f.tex};
   // V(q) = ...: a function of one symbol.
   if (GiNaC::is_exactly_a<GiNaC::function>(name) && name.nops() == 1 && GiNaC::is_a<GiNaC::symbol>(name.op(0))) {
     const std::string function = GiNaC::ex_to<GiNaC::function>(name).get_name();
     return {GiNaC::symbol(function), f.value, f.locator, f.line, f.tex, function, GiNaC::ex_to<GiNaC::symbol>(name.op(0))};
   }
+  std::string hint;  // f(x) read as a product: f is not declared a function
+  if (GiNaC::is_a<GiNaC::mul>(name) && !f.side_trees.front().empty()) {
+    try {
+      hint = " (to read it as a function, declare " + symbol_name(f.side_trees.front().front()) + " under [symbols] functions)";
+    } catch (const tex_error&) {
+    }
+  }
   throw std::invalid_argument(f.locator + ": the left side '" + folded_space(f.sides.front()) +
-                              "' of a definition is not one symbol, nor a function of one symbol");
+                              "' of a definition is not one symbol, nor a function of one symbol" + hint);
 }
 
 namespace {

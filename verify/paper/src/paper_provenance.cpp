@@ -140,18 +140,22 @@ std::vector<earlier_display> commented_displays(const paper_source& paper) {
 }
 
 paper_source with_earlier_display(const paper_source& paper, const earlier_display& earlier) {
-  std::vector<std::string> live = lines_of(paper.text);
+  // In the source as read (its other comments kept, which TeX drops with their lines' ends), the live
+  // display's lines blanked and the earlier one's put in uncommented, line for line.
+  const std::vector<std::string> live = lines_of(paper.text);
+  std::vector<std::string> raw = lines_of(paper.raw.empty() ? paper.text : paper.raw);
   const auto [first, last] = live_display(live, earlier.label);
-  for (std::size_t k = first; k <= last && k < live.size(); ++k) live[k].assign(live[k].size(), ' ');
+  for (std::size_t k = first; k <= last && k < raw.size(); ++k) raw[k].assign(raw[k].size(), ' ');
   const std::vector<std::string> block = lines_of(earlier.tex);
   for (std::size_t k = 0; k < block.size(); ++k) {
     const std::size_t at = static_cast<std::size_t>(earlier.line) - 1 + k;
-    if (at < live.size()) live[at] = block[k];
+    if (at < raw.size()) raw[at] = block[k];
   }
   paper_source out = paper;
   out.origin = paper.origin + ", with the earlier (" + earlier.label + ") of line " + std::to_string(earlier.line);
-  out.text.clear();
-  for (const std::string& line : live) out.text += line + "\n";
+  out.raw.clear();
+  for (const std::string& line : raw) out.raw += line + "\n";
+  out.text = without_comments(out.raw);
   return out;
 }
 

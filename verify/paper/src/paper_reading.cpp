@@ -1,5 +1,7 @@
 #include <simpson/verify/paper_reading.hpp>
 
+#include <simpson/verify/formula_reference.hpp>
+
 #include <stdexcept>
 
 namespace simpson::verify {
@@ -26,40 +28,24 @@ const printed_formula& paper_reading::at(const std::string& name) const {
 
 namespace {
 
-tex_display locate(const paper_source& paper, const formula_location& where) {
-  switch (where.where) {
-    case formula_location::kind::labelled: return find_labelled(paper, where.key);
-    case formula_location::kind::anchored_display: return find_anchored(paper, where.key);
-    case formula_location::kind::inline_formula: return find_inline(paper, where.key);
-  }
-  throw std::logic_error("locate: unknown kind");
-}
-
-printed_formula read_formula(const paper_source& paper, const formula_location& where) {
-  const tex_display display = locate(paper, where);
-  const std::string at = "paper '" + paper.origin + "', " + display.locator + " (line " + std::to_string(display.line) + ")";
-  const std::vector<std::string> equations = display_equations(display.tex);
-  if (where.equation >= static_cast<int>(equations.size())) {
-    throw std::invalid_argument(at + ": equation " + std::to_string(where.equation + 1) + " of the display is not there (it has " +
-                                std::to_string(equations.size()) + ")");
-  }
-  const std::string& tex = equations[static_cast<std::size_t>(where.equation)];
-  const std::vector<std::string> sides = relation_sides(tex);
-  if (sides.size() < 2) throw std::invalid_argument(at + ": no '=', '<' or '\\equiv' in the formula");
-  printed_formula f{where.name, display, tex, sides.front(), {}, {}};
+printed_formula read_formula(const tex_document& document, const tex_declarations& declared, const formula_location& where) {
+  std::string reference = where.where == formula_location::kind::labelled ? where.key
+                          : where.where == formula_location::kind::anchored_display ? "after:" + where.key
+                                                                                     : "inline:" + where.key;
+  if (where.equation > 0) reference += "#" + std::to_string(where.equation + 1);
+  const referenced_formula read = read_reference(document, declared, reference);
+  const std::string at = "paper '" + document.origin() + "', " + read.locator;
+  if (read.sides.size() < 2) throw std::invalid_argument(at + ": no '=', '<' or '\\equiv' in the formula");
+  printed_formula f{where.name, {read.place, read.line, read.tex}, read.tex, read.sides.front(), {}, {}};
   for (const int wanted : where.sides) {
-    const int index = wanted < 0 ? static_cast<int>(sides.size()) + wanted : wanted;
-    if (index < 0 || index >= static_cast<int>(sides.size())) {
-      throw std::invalid_argument(at + ": the formula has " + std::to_string(sides.size()) + " sides, not " +
+    const int index = wanted < 0 ? static_cast<int>(read.sides.size()) + wanted : wanted;
+    if (index < 0 || index >= static_cast<int>(read.sides.size())) {
+      throw std::invalid_argument(at + ": the formula has " + std::to_string(read.sides.size()) + " sides, not " +
                                   std::to_string(std::abs(wanted) + (wanted < 0 ? 0 : 1)));
     }
-    try {
-      GiNaC::ex side = parse_tex_math(sides[static_cast<std::size_t>(index)], paper_symbols());
-      if (GiNaC::is_a<GiNaC::matrix>(side.evalm())) side = side.evalm();
-      f.sides.push_back(side);
-    } catch (const tex_parse_error& e) {
-      throw std::invalid_argument(at + ": cannot parse the formula: " + e.what());
-    }
+    GiNaC::ex side = read_side(read, static_cast<std::size_t>(index), declared);
+    if (GiNaC::is_a<GiNaC::matrix>(side.evalm())) side = side.evalm();
+    f.sides.push_back(side);
   }
   f.value = f.sides.back();
   return f;
@@ -67,12 +53,22 @@ printed_formula read_formula(const paper_source& paper, const formula_location& 
 
 }  // namespace
 
-paper_reading read_paper(const paper_source& paper) {
+paper_reading read_note(const paper_source& source) {
+  paper_reading reading;
+  reading.origin = source.origin;
+  reading.sha256 = source.sha256;
+  reading.source = source;
+  reading.document = std::make_shared<const tex_document>(read_document(source));
+  return reading;
+}
+
+paper_reading read_paper(const paper_source& paper, const tex_declarations& declared) {
   paper_reading reading;
   reading.origin = paper.origin;
   reading.sha256 = paper.sha256;
   reading.source = paper;
-  for (const formula_location& where : printed_formula_locations()) reading.formulas.emplace(where.name, read_formula(paper, where));
+  reading.document = std::make_shared<const tex_document>(read_document(paper, "paper"));
+  for (const formula_location& where : printed_formula_locations()) reading.formulas.emplace(where.name, read_formula(*reading.document, declared, where));
   return reading;
 }
 

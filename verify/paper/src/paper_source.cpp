@@ -14,30 +14,6 @@
 namespace simpson::verify {
 namespace {
 
-/// The math of the display that starts at or before `from` and ends at the next display end.
-tex_display display_from(const paper_source& paper, std::size_t from, const std::string& locator) {
-  static const char* ends[] = {"\\monendstar", "\\monend", "\\end{equation", "\\end{eqnarray"};
-  std::size_t end = std::string::npos;
-  for (const char* e : ends) end = std::min(end, paper.text.find(e, from));
-  if (end == std::string::npos) {
-    throw std::invalid_argument("paper '" + paper.origin + "', " + locator + ": the display has no end");
-  }
-  std::string tex = paper.text.substr(from, end - from);
-  std::replace(tex.begin(), tex.end(), '\n', ' ');
-  std::size_t first = from;
-  while (first < end && std::isspace(static_cast<unsigned char>(paper.text[first]))) ++first;
-  return {locator, line_at(paper.text, first), tex};
-}
-
-std::size_t anchor_position(const paper_source& paper, const std::string& anchor) {
-  const auto found = find_ignoring_space(paper.text, anchor);
-  if (!found) {
-    throw std::invalid_argument("paper '" + paper.origin + "': the anchor '" + anchor + "' the ledger needs is not there");
-  }
-  return found->first;
-}
-
-bool is_dollar(const std::string& text, std::size_t k) { return text[k] == '$' && (k == 0 || text[k - 1] != '\\'); }
 
 }  // namespace
 
@@ -103,6 +79,12 @@ std::string without_comments(const std::string& tex) {
   return out;
 }
 
+void replace_text(paper_source& source, std::size_t at, std::size_t length, const std::string& to) {
+  if (source.raw.empty()) source.raw = source.text;
+  source.raw.replace(at, length, to);
+  source.text = without_comments(source.raw);
+}
+
 paper_source embedded_paper() {
   return {"embedded", without_comments(embedded_paper_text()), sha256_hex(embedded_paper_text()), embedded_paper_text()};
 }
@@ -142,64 +124,6 @@ paper_source load_document(const std::string& path, const std::string& title) {
     throw std::invalid_argument("document '" + path + "': does not print its claims file's title '" + title + "'");
   }
   return document;
-}
-
-tex_display find_labelled(const paper_source& paper, const std::string& label) {
-  const std::string key = "\\label{" + label + "}";
-  const std::size_t at = paper.text.find(key);
-  if (at == std::string::npos) {
-    throw std::invalid_argument("paper '" + paper.origin + "': the label '" + label + "' the ledger needs is not there");
-  }
-  return display_from(paper, at + key.size(), "label " + label);
-}
-
-tex_display find_anchored(const paper_source& paper, const std::string& anchor) {
-  const std::size_t at = anchor_position(paper, anchor);
-  static const char* starts[] = {"\\moneqstar", "\\moneq", "\\begin{equation"};
-  std::size_t start = std::string::npos, length = 0;
-  for (const char* s : starts) {
-    const std::size_t found = paper.text.find(s, at);
-    if (found < start) {
-      start = found;
-      length = std::string(s).size();
-    }
-  }
-  if (start == std::string::npos) {
-    throw std::invalid_argument("paper '" + paper.origin + "': no display after the anchor '" + anchor + "'");
-  }
-  if (paper.text.compare(start, 6, "\\begin") == 0) {  // \begin{equation} or \begin{equation*}: after its '}'
-    const std::size_t close = paper.text.find('}', start);
-    length = close == std::string::npos ? length : close + 1 - start;
-  }
-  return display_from(paper, start + length, "anchor '" + anchor + "'");
-}
-
-}  // namespace simpson::verify
-
-namespace simpson::verify {
-
-tex_display find_inline(const paper_source& paper, const std::string& anchor) {
-  const std::size_t at = anchor_position(paper, anchor);
-  std::size_t dollars = 0, last = std::string::npos;
-  for (std::size_t k = 0; k < at; ++k) {
-    if (is_dollar(paper.text, k)) {
-      ++dollars;
-      last = k;
-    }
-  }
-  std::size_t open = last;
-  if (dollars % 2 == 0) {  // the anchor is prose: the first inline formula after it
-    open = at;
-    while (open < paper.text.size() && !is_dollar(paper.text, open)) ++open;
-  }
-  std::size_t close = open + 1;
-  while (close < paper.text.size() && !is_dollar(paper.text, close)) ++close;
-  if (open >= paper.text.size() || close >= paper.text.size()) {
-    throw std::invalid_argument("paper '" + paper.origin + "': no inline formula at the anchor '" + anchor + "'");
-  }
-  std::string tex = paper.text.substr(open + 1, close - open - 1);
-  std::replace(tex.begin(), tex.end(), '\n', ' ');
-  return {"inline formula at '" + anchor + "'", line_at(paper.text, open), tex};
 }
 
 }  // namespace simpson::verify

@@ -1,9 +1,13 @@
+// What a document's math means: see tex_math.hpp. One function per construct; a node no function
+// takes is refused, named.
+
 #include <simpson/verify/tex_math.hpp>
+
+#include <simpson/verify/tex_macros.hpp>
 
 #include <algorithm>
 #include <cctype>
-#include <sstream>
-#include <set>
+#include <optional>
 
 namespace simpson::verify {
 
@@ -18,21 +22,22 @@ tex_symbols& paper_symbols() {
   return symbols;
 }
 
-namespace {
-
-std::vector<std::string>& function_registry() {
-  static std::vector<std::string> names{"V", "L_d", "L_h", "H_d", "Q", "Q_c", "q", "varphi_0", "varphi_1/2", "varphi_1", "psi"};
+const std::map<std::string, std::string>& reserved_names() {
+  static const std::map<std::string, std::string> names{
+      {"O", "O(...) is Landau's symbol"}, {"pi", "\\pi is the constant"}};
   return names;
 }
 
-}  // namespace
+namespace {
 
-const std::vector<std::string>& function_names() { return function_registry(); }
-
-void declare_function(const std::string& name) {
-  std::vector<std::string>& names = function_registry();
-  if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+/// The GiNaC serial of each function the reader registered, by name and arity (a cache of GiNaC's
+/// own registry, which is process-wide by GiNaC's design).
+std::map<std::pair<std::string, std::size_t>, unsigned>& registered_functions() {
+  static std::map<std::pair<std::string, std::size_t>, unsigned> serials;
+  return serials;
 }
+
+}  // namespace
 
 std::string function_name(const std::string& name, std::size_t arity) {
   // One of GiNaC's own (psi, the digamma function; beta; zeta): ours is registered apart under a
@@ -51,7 +56,7 @@ std::string function_name(const std::string& name, std::size_t arity) {
 }
 
 GiNaC::ex apply_function(const std::string& name, const GiNaC::exvector& args) {
-  static std::map<std::pair<std::string, std::size_t>, unsigned> serials;
+  auto& serials = registered_functions();
   const auto key = std::make_pair(name, args.size());
   auto it = serials.find(key);
   if (it == serials.end()) {
@@ -59,6 +64,15 @@ GiNaC::ex apply_function(const std::string& name, const GiNaC::exvector& args) {
     it = serials.emplace(key, GiNaC::function::register_new(GiNaC::function_options(registered, static_cast<unsigned>(args.size())))).first;
   }
   return GiNaC::function(it->second, args);
+}
+
+bool is_reader_function(const GiNaC::ex& e) {
+  if (!GiNaC::is_a<GiNaC::function>(e)) return false;
+  const unsigned serial = GiNaC::ex_to<GiNaC::function>(e).get_serial();
+  for (const auto& [key, registered] : registered_functions()) {
+    if (registered == serial) return key.first != "sum";
+  }
+  return false;
 }
 
 std::string derivative_name(const std::string& of, const std::string& by, int k, int n) {
@@ -70,666 +84,764 @@ bool is_sum(const GiNaC::ex& e) {
   return GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "sum" && e.nops() == 4;
 }
 
+// det and tr of a named matrix: held until the matrix is put in, then evaluated.
 namespace {
 
-struct token {
-  enum class kind { command, character, end } what;
-  std::string text;  // "\omega", "(", "4", "q"
-  std::size_t offset;
-};
-
-std::vector<token> tokenize(const std::string& tex) {
-  std::vector<token> out;
-  for (std::size_t k = 0; k < tex.size();) {
-    const char c = tex[k];
-    if (std::isspace(static_cast<unsigned char>(c)) || c == '~') {
-      ++k;
-    } else if (c == '\\') {
-      std::size_t j = k + 1;
-      while (j < tex.size() && std::isalpha(static_cast<unsigned char>(tex[j]))) ++j;
-      if (j == k + 1 && j < tex.size()) ++j;  // a one-character command: \, \! \; \\ \{
-      out.push_back({token::kind::command, tex.substr(k, j - k), k});
-      k = j;
-    } else {
-      out.push_back({token::kind::character, std::string(1, c), k});
-      ++k;
-    }
+GiNaC::ex det_eval(const GiNaC::ex& x) {
+  const GiNaC::ex m = GiNaC::is_a<GiNaC::matrix>(x) ? x : x.evalm();
+  if (GiNaC::is_a<GiNaC::matrix>(m) && GiNaC::ex_to<GiNaC::matrix>(m).rows() == GiNaC::ex_to<GiNaC::matrix>(m).cols()) {
+    return GiNaC::ex_to<GiNaC::matrix>(m).determinant();
   }
-  out.push_back({token::kind::end, "end of formula", tex.size()});
+  return GiNaC::function(GiNaC::function::find_function("det", 1), x).hold();
+}
+
+GiNaC::ex trace_eval(const GiNaC::ex& x) {
+  const GiNaC::ex m = GiNaC::is_a<GiNaC::matrix>(x) ? x : x.evalm();
+  if (GiNaC::is_a<GiNaC::matrix>(m) && GiNaC::ex_to<GiNaC::matrix>(m).rows() == GiNaC::ex_to<GiNaC::matrix>(m).cols()) {
+    return GiNaC::ex_to<GiNaC::matrix>(m).trace();
+  }
+  return GiNaC::function(GiNaC::function::find_function("tr", 1), x).hold();
+}
+
+unsigned det_serial() {
+  static const unsigned serial = GiNaC::function::register_new(GiNaC::function_options("det", 1).eval_func(det_eval).latex_name("\\det"));
+  return serial;
+}
+
+unsigned trace_serial() {
+  static const unsigned serial = GiNaC::function::register_new(GiNaC::function_options("tr", 1).eval_func(trace_eval).latex_name("\\operatorname{tr}"));
+  return serial;
+}
+
+GiNaC::ex determinant_of(const GiNaC::ex& x) { return GiNaC::function(det_serial(), x); }
+GiNaC::ex trace_of(const GiNaC::ex& x) { return GiNaC::function(trace_serial(), x); }
+
+// --- names
+
+const tex_node& unwrapped(const tex_node& n) {  // {x} is x
+  if (n.kind == tex_node_kind::group && n.children.size() == 1) return unwrapped(n.children.front());
+  return n;
+}
+
+tex_list unwrapped_list(const tex_list& list) {  // {{a b}} is a b
+  if (list.size() == 1 && list.front().kind == tex_node_kind::group) return unwrapped_list(list.front().children);
+  return list;
+}
+
+[[noreturn]] void refuse(const std::string& why, const tex_node& n, const std::string& hint = {}) {
+  throw tex_error(why, n.offset, n.text, hint);
+}
+
+std::string greek_name(const std::string& command) {
+  if (command == "\\ell") return "l";
+  return command.substr(1);
+}
+
+bool is_greek_or_letter(const tex_node& n) {
+  if (n.kind != tex_node_kind::atom) return false;
+  if (n.text.size() == 1) return std::isalpha(static_cast<unsigned char>(n.text[0])) != 0;
+  static const std::set<std::string> letters{"\\alpha", "\\beta",  "\\gamma", "\\delta", "\\epsilon", "\\varepsilon", "\\zeta", "\\eta",
+                                             "\\theta", "\\vartheta", "\\iota", "\\kappa", "\\lambda", "\\mu",     "\\nu",   "\\xi",
+                                             "\\varpi", "\\rho",   "\\varrho", "\\sigma", "\\varsigma", "\\tau", "\\upsilon", "\\phi",
+                                             "\\varphi", "\\chi",  "\\psi",   "\\omega", "\\Gamma", "\\Delta",   "\\Theta", "\\Lambda",
+                                             "\\Xi",    "\\Pi",    "\\Sigma", "\\Upsilon", "\\Phi", "\\Psi",     "\\Omega", "\\ell", "\\hbar"};
+  return letters.count(n.text) > 0;
+}
+
+/// The text of a subscript: q_{j+1} is "j+1", q_\ell "l", t_{\rm end} "end".
+std::string subscript_text(const tex_node& n) {
+  switch (n.kind) {
+    case tex_node_kind::atom:
+      if (n.text.size() > 1 && n.text[0] == '\\') {
+        if (is_greek_or_letter(n)) return greek_name(n.text);
+        refuse("the symbol " + n.text + " in a subscript", n);
+      }
+      return n.text;
+    case tex_node_kind::group:
+    case tex_node_kind::font: {
+      std::string out;
+      for (const tex_node& c : n.children) out += subscript_text(c);
+      return out;
+    }
+    case tex_node_kind::scripts:
+      if (!n.sup.empty()) refuse("a superscript inside a subscript", n);
+      return subscript_text(n.children.front()) + "_" + subscript_text(n.sub.front());
+    case tex_node_kind::label: return "";
+    default: refuse("a subscript that is not a name nor an index (a fraction, a root, ...)", n);
+  }
+}
+
+std::optional<std::string> font_letters(const tex_node& n) {  // \mathrm{tr}: "tr"
+  if (n.kind != tex_node_kind::font) return std::nullopt;
+  const tex_list& letters = n.children.size() == 1 && n.children.front().kind == tex_node_kind::group ? n.children.front().children : n.children;
+  std::string out;
+  for (const tex_node& c : letters) {
+    const tex_node& u = unwrapped(c);
+    if (u.kind != tex_node_kind::atom || u.text.size() != 1 || !std::isalpha(static_cast<unsigned char>(u.text[0]))) return std::nullopt;
+    out += u.text;
+  }
   return out;
 }
 
-// The tables of the subset.
-const std::set<std::string>& ignored_commands() {
-  static const std::set<std::string> names{"\\,", "\\!", "\\;", "\\:", "\\ ", "\\quad", "\\qquad", "\\displaystyle",
-                                           "\\big", "\\Big", "\\bigg", "\\Bigg", "\\bigl", "\\bigr", "\\Bigl", "\\Bigr",
-                                           "\\left", "\\right", "\\textstyle", "\\limits"};
-  return names;
+/// The upright letters of {\rm det}, \mathrm{tr}, \operatorname{tr}, \mathcal O: the font and its
+/// letters, when the node (or the group it is alone in) is that.
+std::optional<std::pair<std::string, std::string>> upright(const tex_node& given) {
+  const tex_node& n = unwrapped(given);
+  if (n.kind != tex_node_kind::font) return std::nullopt;
+  const std::optional<std::string> letters = font_letters(n);
+  if (!letters) return std::nullopt;
+  return std::make_pair(n.text, *letters);
 }
 
-const std::map<std::string, std::string>& greek() {
-  static const std::map<std::string, std::string> names{
-      {"\\omega", "omega"}, {"\\theta", "theta"}, {"\\alpha", "alpha"}, {"\\beta", "beta"},     {"\\gamma", "gamma"},
-      {"\\delta", "delta"}, {"\\xi", "xi"},       {"\\eta", "eta"},     {"\\zeta", "zeta"},     {"\\varphi", "varphi"},
-      {"\\phi", "phi"},     {"\\psi", "psi"},     {"\\Delta", "Delta"}, {"\\Phi", "Phi"},       {"\\Gamma", "Gamma"},
-      {"\\Sigma", "Sigma"}, {"\\ell", "l"},       {"\\pi", "pi"}};
-  return names;
+}  // namespace
+
+std::string symbol_name(const tex_node& given) {
+  const tex_node& n = unwrapped(given);
+  if (is_greek_or_letter(n)) return n.text.size() == 1 ? n.text : greek_name(n.text);
+  if (n.kind == tex_node_kind::scripts && n.sup.empty() && !n.sub.empty()) return symbol_name(n.children.front()) + "_" + subscript_text(n.sub.front());
+  if (n.kind == tex_node_kind::accent) {
+    const std::string base = symbol_name(n.children.front());
+    if (n.text == "\\dot") return derivative_name(base, "t", 1, 1);
+    if (n.text == "\\ddot") return derivative_name(base, "t", 2, 2);
+    if (n.text == "\\dddot") return derivative_name(base, "t", 3, 3);
+    return n.text.substr(1) + "(" + base + ")";
+  }
+  if (n.kind == tex_node_kind::font && (n.text == "mathbf" || n.text == "boldsymbol" || n.text == "mathcal" || n.text == "mathbb")) {
+    if (n.children.size() == 1 && is_greek_or_letter(unwrapped(n.children.front()))) {
+      return std::string(n.text == "mathcal" ? "cal" : n.text == "mathbb" ? "bb" : "bold") + "(" + symbol_name(n.children.front()) + ")";
+    }
+  }
+  refuse("not one name", n);
 }
 
-class parser {
+namespace {
+
+// --- the reader
+
+/// A differential mark: d, {\rm d}, \mathrm{d}, \operatorname{d}, \partial; its order when it
+/// carries one (d^2).
+struct differential {
+  bool partial = false;
+  bool plain_d = false;  // the letter d
+  int order = 1;
+};
+
+std::optional<differential> differential_of(const tex_node& given) {
+  const tex_node& n = unwrapped(given);
+  if (n.kind == tex_node_kind::scripts && n.sub.empty() && !n.sup.empty()) {
+    std::optional<differential> d = differential_of(n.children.front());
+    const tex_node& sup = unwrapped(n.sup.front());
+    if (!d || sup.kind != tex_node_kind::atom || sup.text.size() != 1 || !std::isdigit(static_cast<unsigned char>(sup.text[0]))) return std::nullopt;
+    d->order = sup.text[0] - '0';
+    return d;
+  }
+  if (n.kind == tex_node_kind::atom && n.text == "d") return differential{false, true, 1};
+  if (n.kind == tex_node_kind::atom && n.text == "\\partial") return differential{true, false, 1};
+  if (const auto u = upright(n); u && u->second == "d" && (u->first == "mathrm" || u->first == "operatorname")) return differential{false, false, 1};
+  return std::nullopt;
+}
+
+class reader {
  public:
-  parser(const std::string& tex, tex_symbols& symbols) : tokens_(tokenize(tex)), symbols_(symbols) {}
+  reader(const tex_declarations& declared, tex_symbols& symbols) : declared_(declared), symbols_(symbols) {}
 
-  GiNaC::ex parse_all() {
-    GiNaC::ex e = expression();
-    if (peek().what != token::kind::end) fail("unexpected token");
+  GiNaC::ex whole(const tex_list& list) {
+    cursor c{&list, 0};
+    GiNaC::ex e = sum(c, {});
+    if (!c.done()) refuse("unexpected '" + c.node().text + "'", c.node());
     return e;
   }
 
  private:
-  const token& peek() {
-    while (tokens_[at_].what == token::kind::command && ignored_commands().count(tokens_[at_].text)) ++at_;
-    return tokens_[at_];
+  struct cursor {
+    const tex_list* list;
+    std::size_t k;
+    void skip() {
+      while (k < list->size() && ((*list)[k].kind == tex_node_kind::label || ((*list)[k].kind == tex_node_kind::group && (*list)[k].children.empty()))) ++k;
+    }
+    bool done() {
+      skip();
+      return k >= list->size();
+    }
+    const tex_node& node() {
+      skip();
+      return (*list)[k];
+    }
+    const tex_node* next_after() {  // the node after the current one
+      skip();
+      std::size_t j = k + 1;
+      while (j < list->size() && (*list)[j].kind == tex_node_kind::label) ++j;
+      return j < list->size() ? &(*list)[j] : nullptr;
+    }
+  };
+
+  static bool is_atom(const tex_node& n, const std::string& text) { return n.kind == tex_node_kind::atom && n.text == text; }
+
+  /// A closing atom (or one carrying scripts, \Big)^2) of `closers`.
+  static bool closes(const tex_node& n, const std::vector<std::string>& closers) {
+    const tex_node& atom = n.kind == tex_node_kind::scripts ? n.children.front() : n;
+    return atom.kind == tex_node_kind::atom && std::find(closers.begin(), closers.end(), atom.text) != closers.end();
   }
-  token next() {
-    const token t = peek();
-    if (t.what != token::kind::end) ++at_;
-    return t;
-  }
-  bool accept(const std::string& text) {
-    if (peek().text == text && peek().what != token::kind::end) {
-      ++at_;
+
+  static bool ends_term(cursor& c, const std::vector<std::string>& closers) {
+    if (c.done()) return true;
+    const tex_node& n = c.node();
+    if (closes(n, closers)) return true;
+    if (n.kind == tex_node_kind::atom && (n.text == "+" || n.text == "-" || n.atom_class == tex_class::rel || n.atom_class == tex_class::punct)) {
       return true;
     }
     return false;
   }
-  void expect(const std::string& text) {
-    if (!accept(text)) fail("expected '" + text + "'");
-  }
-  [[noreturn]] void fail(const std::string& why) {
-    const token& t = peek();
-    throw tex_parse_error(why + " at token '" + t.text + "'", t.text, t.offset);
-  }
 
-  bool ends_product(const token& t) {
-    if (t.what == token::kind::end) return true;
-    if (integrands_ > 0 && at_differential()) return true;  // \int ... \dd x: the integrand ends at its differential
-    static const std::set<std::string> stops{"+", "-", ")", "]", "}", "&", "\\\\", "\\over", ",", ".", "=", "<",
-                                             "\\equiv", "\\end"};
-    return stops.count(t.text) > 0;
-  }
-
-  // expression := [±] product {± product}
-  GiNaC::ex expression() {
-    GiNaC::ex sum = 0;
+  // sum := [+-] term {+- term}
+  GiNaC::ex sum(cursor& c, const std::vector<std::string>& closers) {
+    if (c.done()) throw tex_error("an empty formula", 0);
     bool negative = false;
-    if (accept("-")) negative = true;
-    else accept("+");
-    sum = negative ? -product() : product();
+    if (is_atom(c.node(), "-")) {
+      negative = true;
+      ++c.k;
+    } else if (is_atom(c.node(), "+")) {
+      ++c.k;
+    } else if (is_atom(c.node(), "\\pm") || is_atom(c.node(), "\\mp")) {
+      refuse("a " + c.node().text + " (two formulas in one)", c.node());
+    }
+    GiNaC::ex s = term(c, closers);
+    if (negative) s = -s;
     for (;;) {
-      if (accept("+")) {
-        sum += product();
-      } else if (accept("-")) {
-        sum -= product();
+      if (c.done() || closes(c.node(), closers)) return s;
+      const tex_node& n = c.node();
+      if (is_atom(n, "+")) {
+        ++c.k;
+        s += term(c, closers);
+      } else if (is_atom(n, "-")) {
+        ++c.k;
+        s -= term(c, closers);
+      } else if (n.atom_class == tex_class::punct && std::find(closers.begin(), closers.end(), n.text) != closers.end()) {
+        return s;
       } else {
-        return sum;
+        refuse("unexpected '" + n.text + "'", n);
       }
     }
   }
 
-  // product := power {power | \cdot power}: implicit multiplication
-  GiNaC::ex product() {
-    GiNaC::ex p = power();
-    while (!ends_product(peek())) {
-      if (accept("\\cdot") || accept("\\times")) continue;
-      p = p * power();
+  // term := factor {[\cdot \times * /] factor}
+  GiNaC::ex term(cursor& c, const std::vector<std::string>& closers) {
+    if (ends_term(c, closers)) {
+      if (c.done()) throw tex_error("a term missing at the end of the formula", 0);
+      refuse("a term missing before '" + c.node().text + "'", c.node());
     }
-    return p;
-  }
-
-  // power := atom [^ script]
-  GiNaC::ex power() {
-    GiNaC::ex base = atom();
-    if (accept("^")) base = GiNaC::pow(base, script());
-    return base;
-  }
-
-  // A script takes one token, or a group: h^24 is h² · 4, as in TeX.
-  GiNaC::ex script() {
-    if (accept("{")) {
-      GiNaC::ex e = group_body();
-      expect("}");
-      return e;
-    }
-    const token t = next();
-    if (t.what == token::kind::character && std::isdigit(static_cast<unsigned char>(t.text[0]))) return GiNaC::numeric(t.text[0] - '0');
-    if (t.what == token::kind::character && std::isalpha(static_cast<unsigned char>(t.text[0]))) return symbols_[t.text];
-    if (greek().count(t.text)) return symbols_[greek().at(t.text)];
-    --at_;
-    fail("expected a one-token script");
-  }
-
-  // The text of a subscript: q_\ell → "l", q_{j+1} → "j+1".
-  std::string subscript_text() {
-    if (accept("{")) {
-      std::string text;
-      int depth = 1;
-      for (;;) {
-        const token t = next();
-        if (t.what == token::kind::end) fail("unclosed subscript");
-        if (t.text == "{") ++depth;
-        if (t.text == "}" && --depth == 0) break;
-        text += greek().count(t.text) ? greek().at(t.text) : t.text;
+    GiNaC::ex p = factor(c, closers);
+    for (;;) {
+      if (ends_term(c, closers)) return p;
+      const tex_node& n = c.node();
+      if (is_atom(n, "\\cdot") || is_atom(n, "\\times") || is_atom(n, "*")) {
+        ++c.k;
+        p *= factor(c, closers);
+        continue;
       }
-      return text;
+      if (is_atom(n, "/")) {
+        const tex_node& slash = n;
+        ++c.k;
+        if (ends_term(c, closers)) refuse("a '/' with nothing after it", slash);
+        const GiNaC::ex divisor = factor(c, closers);
+        if (!ends_term(c, closers)) {
+          refuse("a / b followed by more factors: whether they divide or multiply is not written", slash, "write \\frac{...}{...}");
+        }
+        return p / divisor;
+      }
+      if (n.kind == tex_node_kind::atom && n.atom_class == tex_class::bin) refuse("the operation " + n.text, n);
+      p *= factor(c, closers);
     }
-    const token t = next();
-    if (greek().count(t.text)) return greek().at(t.text);
-    if (t.what == token::kind::character) return t.text;
-    --at_;
-    fail("expected a subscript");
   }
 
-  // A group's body: an expression, or a fraction {a \over b}.
-  GiNaC::ex group_body() {
-    GiNaC::ex e = peek().text == "}" ? GiNaC::ex(1) : expression();
-    if (accept("\\over")) e = e / expression();
-    return e;
+  GiNaC::ex factor(cursor& c, const std::vector<std::string>& closers) {
+    GiNaC::ex f = primary(c, closers);
+    while (!c.done() && is_atom(c.node(), "!")) {  // n!
+      ++c.k;
+      f = GiNaC::factorial(f);
+    }
+    return f;
   }
 
-  GiNaC::ex symbol_with_subscript(std::string name) {
-    if (accept("_")) name += "_" + subscript_text();
-    const auto& functions = function_names();
-    if (peek().text == "(" && std::find(functions.begin(), functions.end(), name) != functions.end()) {
-      return apply_function(name, arguments());
+  GiNaC::ex primary(cursor& c, const std::vector<std::string>& closers) {
+    const tex_node& n = c.node();
+    switch (n.kind) {
+      case tex_node_kind::atom: return atom(c);
+      case tex_node_kind::group: {
+        if (const auto landau = order_term(c)) return *landau;
+        if (const auto op = named_operator(c)) return *op;
+        // {{dV}\over{dq}}(x): a fraction alone in its group (\over's braces) is read where the group
+        // is, so that an application after it applies to it.
+        if (unwrapped(n).kind == tex_node_kind::fraction) return fraction(c);
+        if (differential_of(n)) refuse("an upright d outside a derivative or an integral", n);
+        ++c.k;
+        return whole(n.children);
+      }
+      case tex_node_kind::fraction: return fraction(c);
+      case tex_node_kind::root: {
+        ++c.k;
+        const GiNaC::ex radicand = whole(n.children[0].children);
+        if (n.children.size() == 1) return GiNaC::sqrt(radicand);
+        return GiNaC::pow(radicand, 1 / whole(n.children[1].children));
+      }
+      case tex_node_kind::scripts: return scripts(c, closers);
+      case tex_node_kind::delimited: {
+        ++c.k;
+        return delimited(n);
+      }
+      case tex_node_kind::environment: {
+        ++c.k;
+        return environment(n);
+      }
+      case tex_node_kind::font: {
+        if (const auto landau = order_term(c)) return *landau;
+        if (const auto op = named_operator(c)) return *op;
+        if (n.text == "mathbf" || n.text == "boldsymbol" || n.text == "mathcal" || n.text == "mathbb") return named(c, symbol_name(n));
+        if (differential_of(n)) refuse("an upright d outside a derivative or an integral", n);
+        refuse("the font " + n.text + " on '" + normal_form(n.children) + "': an upright name the reader gives no meaning to", n,
+               "\\operatorname{tr}, \\det, \\mathrm d in a derivative, \\mathcal O(h^k)");
+      }
+      case tex_node_kind::op: return op(c, closers);
+      case tex_node_kind::accent: return named(c, symbol_name(n));
+      case tex_node_kind::text: refuse("words inside a formula (\\text{" + n.text + "})", n);
+      case tex_node_kind::label: break;
+    }
+    refuse("unexpected", n);
+  }
+
+  GiNaC::ex atom(cursor& c) {
+    const tex_node& n = c.node();
+    if (n.text.size() == 1 && std::isdigit(static_cast<unsigned char>(n.text[0]))) return number(c);
+    if (n.text == "O") {
+      if (const auto landau = order_term(c)) return *landau;
+      refuse("O without its argument in parentheses", n, "O(h^4)");
+    }
+    if (n.text == "\\pi") {
+      ++c.k;
+      return GiNaC::Pi;
+    }
+    if (is_greek_or_letter(n)) return named(c, symbol_name(n));
+    if (n.atom_class == tex_class::open) {
+      ++c.k;
+      return parenthesised(c, n);
+    }
+    if (n.text == "|") {
+      ++c.k;
+      const GiNaC::ex inside = sum(c, {"|"});
+      if (c.done() || !is_atom(c.node(), "|")) refuse("a '|' that is never closed", n);
+      ++c.k;
+      return GiNaC::abs(inside);
+    }
+    if (n.text == "\\partial") refuse("a \\partial outside a derivative", n, "\\frac{\\partial L}{\\partial q} or \\partial_q L");
+    if (n.text == "\\ldots" || n.text == "\\cdots" || n.text == "\\dots") refuse("an ellipsis: what it stands for is not written", n);
+    if (n.text == "\\infty") refuse("\\infty", n);
+    if (n.text == "\\prime") refuse("a prime on nothing", n);
+    if (n.atom_class == tex_class::close) refuse("a '" + n.text + "' that closes nothing", n);
+    refuse("unexpected '" + n.text + "'", n);
+  }
+
+  /// Digits (and a decimal point between digits): an exact number; a superscript on its last digit
+  /// is on the number (12^2).
+  GiNaC::ex number(cursor& c) {
+    std::string digits;
+    std::optional<GiNaC::ex> power;
+    const tex_node& first = c.node();
+    while (!c.done()) {
+      const tex_node& n = c.node();
+      const bool digit = n.kind == tex_node_kind::atom && n.text.size() == 1 && std::isdigit(static_cast<unsigned char>(n.text[0]));
+      if (digit) {
+        digits += n.text;
+        ++c.k;
+        continue;
+      }
+      if (n.kind == tex_node_kind::atom && n.text == "." && !digits.empty() && digits.find('.') == std::string::npos) {
+        const tex_node* after = c.next_after();
+        if (after && after->kind == tex_node_kind::atom && after->text.size() == 1 && std::isdigit(static_cast<unsigned char>(after->text[0]))) {
+          digits += '.';
+          ++c.k;
+          continue;
+        }
+      }
+      if (n.kind == tex_node_kind::scripts && n.children.front().kind == tex_node_kind::atom && n.children.front().text.size() == 1 &&
+          std::isdigit(static_cast<unsigned char>(n.children.front().text[0]))) {
+        if (!n.sub.empty()) refuse("a subscript on a number", n);
+        digits += n.children.front().text;
+        power = whole_node(n.sup.front());
+        ++c.k;
+      }
+      break;
+    }
+    GiNaC::numeric value;
+    const std::size_t point = digits.find('.');
+    if (point == std::string::npos) {
+      value = GiNaC::numeric(digits.c_str());
+    } else {
+      const std::string whole_digits = digits.substr(0, point) + digits.substr(point + 1);
+      value = GiNaC::numeric(whole_digits.c_str()) / GiNaC::numeric(10).power(static_cast<long>(digits.size() - point - 1));
+    }
+    (void)first;
+    return power ? GiNaC::pow(value, *power) : GiNaC::ex(value);
+  }
+
+  GiNaC::ex whole_node(const tex_node& n) { return n.kind == tex_node_kind::group ? whole(n.children) : whole({n}); }
+
+  /// After an opening atom: the expression to its closing one (which may carry a superscript:
+  /// \Big( ... \Big)^2 squares the whole).
+  GiNaC::ex parenthesised(cursor& c, const tex_node& open) {
+    static const std::map<std::string, std::string> pairs{{"(", ")"}, {"[", "]"}, {"\\{", "\\}"}, {"\\lbrace", "\\rbrace"}};
+    const auto pair = pairs.find(open.text);
+    if (pair == pairs.end()) refuse("the delimiter " + open.text, open);
+    if (c.done()) refuse("a '" + open.text + "' that is never closed", open);
+    GiNaC::ex inside = sum(c, {pair->second});
+    if (c.done() || !closes(c.node(), {pair->second})) refuse("a '" + open.text + "' that is never closed", open);
+    const tex_node& close = c.node();
+    ++c.k;
+    if (close.kind == tex_node_kind::scripts) {
+      if (!close.sub.empty()) refuse("a subscript on a closing '" + pair->second + "'", close);
+      inside = GiNaC::pow(inside, whole_node(close.sup.front()));
+    }
+    return inside;
+  }
+
+  /// The arguments of an application: after '(' (an atom) up to its ')', split at commas.
+  GiNaC::exvector arguments(cursor& c) {
+    const tex_node& open = c.node();
+    if (open.kind == tex_node_kind::delimited) {
+      ++c.k;
+      if (open.text != "(" || open.close != ")") refuse("an application in \\left" + open.text + " ... \\right" + open.close, open);
+      GiNaC::exvector args;
+      tex_list part;
+      int depth = 0;
+      for (const tex_node& n : open.children) {
+        if (n.kind == tex_node_kind::atom && n.atom_class == tex_class::open) ++depth;
+        if (n.kind == tex_node_kind::atom && n.atom_class == tex_class::close) --depth;
+        if (depth == 0 && is_atom(n, ",")) {
+          args.push_back(whole(part));
+          part.clear();
+          continue;
+        }
+        part.push_back(n);
+      }
+      args.push_back(whole(part));
+      return args;
+    }
+    ++c.k;  // '('
+    GiNaC::exvector args;
+    for (;;) {
+      args.push_back(sum(c, {")", ","}));
+      if (c.done()) refuse("a '(' that is never closed", open);
+      const tex_node& n = c.node();
+      ++c.k;
+      if (is_atom(n, ",")) continue;
+      if (n.kind == tex_node_kind::scripts) refuse("a superscript on a function's closing ')'", n);
+      return args;
+    }
+  }
+
+  static bool opens_application(const tex_node* n) {
+    if (!n) return false;
+    if (n->kind == tex_node_kind::atom && n->text == "(") return true;
+    return n->kind == tex_node_kind::delimited && n->text == "(";
+  }
+
+  /// A name: a symbol, or a declared function applied to what follows in parentheses.
+  GiNaC::ex named(cursor& c, const std::string& name, int derivative = 0) {
+    const tex_node& at = c.node();
+    if (name == "O") refuse("O is Landau's symbol: O(h^k)", at);
+    ++c.k;
+    const bool applied = !c.done() && opens_application(&c.node());
+    if (declared_.is_function(name) && applied) {
+      const GiNaC::exvector args = arguments(c);
+      if (derivative == 0) return apply_function(name, args);
+      if (args.size() != 1) refuse("a derivative of " + name + ", a function of " + std::to_string(args.size()) + " arguments: by which is not written", at);
+      const GiNaC::symbol x("derivative_variable");
+      return GiNaC::diff(apply_function(name, {x}), x, static_cast<unsigned>(derivative)).subs(x == args.front());
+    }
+    if (derivative > 0) {
+      if (!declared_.is_function(name)) {
+        refuse("the derivative " + name + std::string(static_cast<std::size_t>(derivative), '\'') + " of " + name +
+                   ", which the claims file does not declare a function",
+               at, "declare " + name + " under [symbols] functions");
+      }
+      refuse("the derivative of " + name + " without its argument in parentheses", at);
     }
     return symbols_[name];
   }
 
-  // ( a, b, ... ) after a function name.
-  GiNaC::exvector arguments() {
-    expect("(");
-    GiNaC::exvector args{expression()};
-    while (accept(",")) args.push_back(expression());
-    expect(")");
-    return args;
+  // --- fractions and derivatives
+
+  GiNaC::ex fraction(cursor& c) {
+    const tex_node& n = unwrapped(c.node());
+    if (n.text == "\\binom" || n.text == "\\atop") refuse("a binomial coefficient or \\atop", n);
+    if (const auto d = leibniz(c)) return *d;
+    ++c.k;
+    return whole(n.children[0].children) / whole(n.children[1].children);
   }
 
-  // A name in a derivative: a letter or a Greek letter, with its subscript.
-  std::string derivative_operand() {
-    const token t = next();
-    std::string name;
-    if (t.what == token::kind::character && std::isalpha(static_cast<unsigned char>(t.text[0]))) name = t.text;
-    else if (greek().count(t.text)) name = greek().at(t.text);
-    else fail("expected a name in the derivative");
-    if (accept("_")) name += "_" + subscript_text();
-    return name;
-  }
-
-  int derivative_order() {
-    if (!accept("^")) return 1;
-    const token t = next();
-    if (t.what != token::kind::character || !std::isdigit(static_cast<unsigned char>(t.text[0]))) fail("expected an order");
-    return t.text[0] - '0';
-  }
-
-  // The differential: \dd, \partial, or {\rm d} and \mathrm{d} (what a document's own \dd
-  // expands to), consumed when there; nothing consumed otherwise.
-  bool accept_differential() {
-    if (accept("\\dd") || accept("\\partial")) return true;
-    const std::size_t saved = at_;
-    if (accept("{") && accept("\\rm") && accept("d") && accept("}")) return true;
-    at_ = saved;
-    if (accept("\\mathrm") && accept("{") && accept("d") && accept("}")) return true;
-    at_ = saved;
-    return false;
-  }
-
-  bool at_differential() {
-    const std::size_t saved = at_;
-    const bool is = accept_differential();
-    at_ = saved;
-    return is;
-  }
-
-  // \int_a^b f \dd x: GiNaC's integral of f in x over [a, b], unevaluated.
-  GiNaC::ex integral() {
-    expect("_");
-    const GiNaC::ex lower = script();
-    expect("^");
-    const GiNaC::ex upper = script();
-    ++integrands_;
-    const GiNaC::ex integrand = expression();
-    --integrands_;
-    if (!accept_differential()) fail("expected the differential of the integral");
-    const GiNaC::ex variable = symbols_[derivative_operand()];
-    // Held: an integrand written in the state q and dq/dt, not in the variable, must not be taken
-    // for a constant (GiNaC would return (b - a) f).
-    return GiNaC::integral(variable, lower, upper, integrand).hold();
-  }
-
-  // After the outer '{': {\dd^k x}\over{\dd t^n}} (or \partial, {\rm d}). Only when the group starts
-  // so; otherwise nothing is consumed.
-  bool starts_derivative() {
-    const std::size_t saved = at_;
-    const bool is = accept("{") && accept_differential();
-    at_ = saved;
-    return is;
-  }
-  GiNaC::ex derivative() {
-    expect("{");
-    accept_differential();
-    const int k = derivative_order();
-    const std::string of = derivative_operand();
-    expect("}");
-    expect("\\over");
-    expect("{");
-    if (!accept_differential()) fail("expected \\dd in the denominator of a derivative");
-    const std::string by = derivative_operand();
-    const int n = derivative_order();
-    expect("}");
-    expect("}");
-    const auto& functions = function_names();
-    // The state q is a function of t whose derivatives the paper writes without an argument:
-    // {{\dd^k q}\over{\dd t^n}} stays a named symbol (a misprinted order stays visible).
-    const bool state = of == "q" && peek().text != "(";
-    if (!state && std::find(functions.begin(), functions.end(), of) != functions.end()) {
-      if (k != n) fail("derivative of " + of + " of order " + std::to_string(k) + " over d" + by + "^" + std::to_string(n));
-      // {{\dd V}\over{\dd q}} alone is V' at q; followed by (x), at x.
-      const GiNaC::exvector args = peek().text == "(" ? arguments() : GiNaC::exvector{symbols_[by]};
-      if (args.size() != 1) fail("a derivative of a function of one argument");
+  /// \frac{d^k X}{d y^k}, {\rm d}, \mathrm d, \partial: the derivative, or none when the fraction
+  /// is not one.
+  std::optional<GiNaC::ex> leibniz(cursor& c) {
+    const tex_node& n = unwrapped(c.node());
+    const tex_list top = unwrapped_list(n.children[0].children), bottom = unwrapped_list(n.children[1].children);
+    if (top.empty() || bottom.size() < 2) return std::nullopt;
+    const std::optional<differential> dt = differential_of(top.front()), db = differential_of(bottom.front());
+    if (!dt || !db) return std::nullopt;
+    if (dt->partial != db->partial) refuse("a derivative with d above and \\partial below, or the reverse", n);
+    if (dt->plain_d && declared_.symbols.count("d")) {
+      refuse("\\frac{d...}{d...} with d declared a symbol is ambiguous: a derivative, or a quotient of products of d", n,
+             "write \\mathrm d, or do not declare d");
+    }
+    if (top.size() == 1) refuse("a derivative operator \\frac{d}{dt} applied to what follows", n, "write \\frac{dX}{dt}");
+    if (top.size() != 2) refuse("a derivative of more than one name (the numerator after its d)", n);
+    if (bottom.size() != 2 || db->order != 1) refuse("a derivative by more than one variable, or by a variable whose order is not written after it", n);
+    const std::string of = symbol_name(top[1]);
+    const tex_node& variable = unwrapped(bottom[1]);
+    std::string by;
+    int k = dt->order, order = 1;
+    if (variable.kind == tex_node_kind::scripts && !variable.sup.empty()) {
+      const tex_node& sup = unwrapped(variable.sup.front());
+      if (sup.kind != tex_node_kind::atom || sup.text.size() != 1 || !std::isdigit(static_cast<unsigned char>(sup.text[0]))) {
+        refuse("a derivative whose order is not a digit", variable);
+      }
+      order = sup.text[0] - '0';
+      tex_node base = variable;
+      base.sup.clear();
+      by = base.sub.empty() ? symbol_name(base.children.front()) : symbol_name(base);
+    } else {
+      by = symbol_name(variable);
+    }
+    ++c.k;
+    const bool applied = !c.done() && opens_application(&c.node());
+    // A function's derivative: at its argument when one follows (a state's too: dq/dt(0) is q'(0)),
+    // else at the variable below (dV/dq is V' at q); a state's without one is a quantity, dq/dt.
+    if (declared_.is_function(of) && (applied || !declared_.is_state(of))) {
+      if (k != order) refuse("the derivative d^" + std::to_string(k) + " " + of + " / d" + by + "^" + std::to_string(order) + ": the orders differ", n);
+      const GiNaC::exvector args = applied ? arguments(c) : GiNaC::exvector{symbols_[by]};
+      if (args.size() != 1) refuse("a derivative of " + of + ", a function of " + std::to_string(args.size()) + " arguments, by name", n);
       const GiNaC::symbol x("derivative_variable");
       return GiNaC::diff(apply_function(of, {x}), x, static_cast<unsigned>(k)).subs(x == args.front());
     }
-    return symbols_[derivative_name(of, by, k, n)];
+    if (applied) {
+      refuse("\\frac{d" + of + "}{d" + by + "}(...) applies the derivative of " + of + " to an argument, and " + of + " is not declared a function", n,
+             "declare " + of + " under [symbols] functions");
+    }
+    return GiNaC::ex(symbols_[derivative_name(of, by, k, order)]);
   }
 
-  // \sum_{j=a}^{b} s: the summand is the product that follows.
-  GiNaC::ex sum() {
-    expect("_");
-    expect("{");
-    const GiNaC::ex index = symbols_[derivative_operand()];
-    expect("=");
-    const GiNaC::ex lower = expression();
-    expect("}");
-    expect("^");
-    const GiNaC::ex upper = script();
-    const GiNaC::ex summand = product();
-    return apply_function("sum", {summand, index, lower, upper});
+  // --- scripts
+
+  GiNaC::ex scripts(cursor& c, const std::vector<std::string>& closers) {
+    const tex_node& n = c.node();
+    const tex_node& base = unwrapped(n.children.front());
+    if (base.kind == tex_node_kind::op) return op(c, closers);
+    if (base.kind == tex_node_kind::atom && base.text == "\\partial") {
+      if (!n.sup.empty() || n.sub.empty()) refuse("\\partial with a superscript", n);
+      const std::string by = subscript_text(n.sub.front());
+      ++c.k;
+      if (c.done()) refuse("\\partial_" + by + " of nothing", n);
+      const std::string of = symbol_name(c.node());
+      ++c.k;
+      if (!c.done() && opens_application(&c.node())) refuse("\\partial_" + by + " " + of + "(...): a partial derivative of a function by name", n);
+      return symbols_[derivative_name(of, by, 1, 1)];
+    }
+    if (base.kind == tex_node_kind::atom && (base.atom_class == tex_class::close || base.atom_class == tex_class::open)) {
+      refuse("a script on the delimiter '" + base.text + "'", n);
+    }
+    // A name (with its subscript), and a superscript that is a power, or primes (a derivative).
+    const bool nameable = is_greek_or_letter(base) || base.kind == tex_node_kind::accent ||
+                          (base.kind == tex_node_kind::font && (base.text == "mathbf" || base.text == "boldsymbol" || base.text == "mathcal"));
+    if (base.kind == tex_node_kind::atom && base.text.size() == 1 && std::isdigit(static_cast<unsigned char>(base.text[0]))) return number(c);
+    if (nameable) {
+      if (base.kind == tex_node_kind::atom && base.text == "O") refuse("a script on Landau's O", n);
+      tex_node named_node = n;
+      named_node.sup.clear();
+      const std::string name = n.sub.empty() ? symbol_name(base) : symbol_name(named_node);
+      if (n.sup.empty()) return named(c, name);
+      const tex_list sup = n.sup.front().kind == tex_node_kind::group ? n.sup.front().children : tex_list{n.sup.front()};
+      int primes = 0;
+      while (primes < static_cast<int>(sup.size()) && sup[static_cast<std::size_t>(primes)].kind == tex_node_kind::atom &&
+             sup[static_cast<std::size_t>(primes)].text == "\\prime") {
+        ++primes;
+      }
+      if (primes > 0) {
+        if (primes != static_cast<int>(sup.size())) refuse("a power on a derivative written with primes (V'^2)", n, "write (V'(x))^2");
+        return named(c, name, primes);
+      }
+      if (const std::optional<int> k = parenthesised_order(sup)) {
+        if (!declared_.is_function(name)) refuse(name + "^{(" + std::to_string(*k) + ")}: a derivative of a name not declared a function", n);
+        return named(c, name, *k);
+      }
+      if (declared_.is_function(name) && !declared_.is_state(name)) {
+        const tex_node* after = c.next_after();
+        if (opens_application(after)) refuse("a superscript on the function " + name + " before its argument", n, "write (" + name + "(x))^k");
+      }
+      const GiNaC::ex exponent = whole(sup);
+      return GiNaC::pow(named(c, name), exponent);
+    }
+    if (!n.sub.empty()) refuse("a subscript on what is not a name", n);
+    // A power of a group, a fraction, a root, a delimited expression, a matrix.
+    tex_node inner = n.children.front();
+    const GiNaC::ex exponent = whole_node(n.sup.front());
+    tex_list alone{inner};
+    cursor base_cursor{&alone, 0};
+    const GiNaC::ex value = primary(base_cursor, {});
+    if (!base_cursor.done()) refuse("unexpected", inner);
+    ++c.k;
+    return GiNaC::pow(value, exponent);
   }
 
-  GiNaC::ex atom() {
-    const token t = next();
-    if (t.what == token::kind::end) fail("unexpected end of formula");
-    if (t.what == token::kind::character) {
-      const char c = t.text[0];
-      if (std::isdigit(static_cast<unsigned char>(c))) {
-        std::string digits = t.text;
-        while (peek().what == token::kind::character && std::isdigit(static_cast<unsigned char>(peek().text[0]))) digits += next().text;
-        return GiNaC::numeric(digits.c_str());
-      }
-      if (std::isalpha(static_cast<unsigned char>(c))) return symbol_with_subscript(t.text);
-      if (c == '(' || c == '[') {
-        GiNaC::ex e = expression();
-        expect(c == '(' ? ")" : "]");
-        return e;
-      }
-      if (c == '{' && peek().text == "\\rm") {  // {\rm O}(h^k): the order term; {\rm d}: upright letters
-        next();
-        std::string name;
-        while (peek().what == token::kind::character && std::isalpha(static_cast<unsigned char>(peek().text[0]))) name += next().text;
-        expect("}");
-        if (name == "O") {
-          expect("(");
-          GiNaC::ex e = expression();
-          expect(")");
-          return GiNaC::Order(e);
+  static std::optional<int> parenthesised_order(const tex_list& sup) {  // ^{(3)}
+    if (sup.size() != 3 || !is_atom(sup[0], "(") || !is_atom(sup[2], ")")) return std::nullopt;
+    if (sup[1].kind != tex_node_kind::atom || sup[1].text.size() != 1 || !std::isdigit(static_cast<unsigned char>(sup[1].text[0]))) return std::nullopt;
+    return sup[1].text[0] - '0';
+  }
+
+  // --- delimiters, matrices
+
+  GiNaC::ex delimited(const tex_node& n) {
+    const tex_list body = n.children;
+    if (n.text == "|" && n.close == "|") return GiNaC::abs(whole(body));
+    if ((n.text == "(" && n.close == ")") || (n.text == "[" && n.close == "]") || (n.text == "\\{" && n.close == "\\}")) return whole(body);
+    refuse("\\left" + n.text + " ... \\right" + n.close, n);
+  }
+
+  GiNaC::ex environment(const tex_node& n) {
+    static const std::set<std::string> matrices{"matrix", "pmatrix", "bmatrix", "Bmatrix", "smallmatrix", "array", "vmatrix"};
+    if (!matrices.count(n.text)) refuse("the environment " + n.text + " inside an expression", n);
+    const std::size_t columns = n.rows.front().size();
+    GiNaC::matrix m(static_cast<unsigned>(n.rows.size()), static_cast<unsigned>(columns));
+    for (std::size_t r = 0; r < n.rows.size(); ++r) {
+      if (n.rows[r].size() != columns) refuse("a matrix whose rows have different lengths", n);
+      for (std::size_t col = 0; col < columns; ++col) {
+        const tex_list& cell = n.rows[r][col].children;
+        if (std::any_of(cell.begin(), cell.end(), [](const tex_node& x) { return x.kind == tex_node_kind::atom && x.atom_class == tex_class::rel; })) {
+          refuse("a relation inside a matrix", n);
         }
-        return symbols_[name];
-      }
-      if (c == '{' && starts_derivative()) return derivative();
-      if (c == '{') {
-        GiNaC::ex e = group_body();
-        expect("}");
-        // {\Phi}_3: a subscript on a braced symbol.
-        if (peek().text == "_" && GiNaC::is_a<GiNaC::symbol>(e)) return symbol_with_subscript(GiNaC::ex_to<GiNaC::symbol>(e).get_name());
-        return e;
+        m(static_cast<unsigned>(r), static_cast<unsigned>(col)) = whole(cell);
       }
     }
-    if (greek().count(t.text)) return symbol_with_subscript(greek().at(t.text));
-    if (t.text == "\\frac" || t.text == "\\tfrac" || t.text == "\\dfrac") {
-      expect("{");
-      GiNaC::ex num = group_body();
-      expect("}");
-      expect("{");
-      GiNaC::ex den = group_body();
-      expect("}");
-      return num / den;
-    }
-    if (t.text == "\\sqrt") {
-      expect("{");
-      GiNaC::ex e = group_body();
-      expect("}");
-      return GiNaC::sqrt(e);
-    }
-    if (t.text == "\\begin") return matrix_environment();
-    if (t.text == "\\sum") return sum();
-    if (t.text == "\\int") return integral();
-    --at_;
-    fail("unsupported token");
-  }
-
-  // \begin{array}{cc} a & b \\ c & d \end{array}, or pmatrix.
-  GiNaC::ex matrix_environment() {
-    expect("{");
-    std::string name;
-    while (peek().text != "}" && peek().what != token::kind::end) name += next().text;
-    expect("}");
-    if (name != "array" && name != "pmatrix") fail("unsupported environment '" + name + "'");
-    if (name == "array") {  // the column specification
-      expect("{");
-      while (peek().text != "}" && peek().what != token::kind::end) next();
-      expect("}");
-    }
-    std::vector<std::vector<GiNaC::ex>> rows(1);
-    for (;;) {
-      rows.back().push_back(expression());
-      if (accept("&")) continue;
-      if (accept("\\\\")) {
-        if (peek().text == "\\end") break;
-        rows.emplace_back();
-        continue;
-      }
-      break;
-    }
-    expect("\\end");
-    expect("{");
-    while (peek().text != "}" && peek().what != token::kind::end) next();
-    expect("}");
-    const std::size_t columns = rows.front().size();
-    GiNaC::matrix m(static_cast<unsigned>(rows.size()), static_cast<unsigned>(columns));
-    for (std::size_t r = 0; r < rows.size(); ++r) {
-      if (rows[r].size() != columns) fail("rows of different lengths");
-      for (std::size_t c = 0; c < columns; ++c) m(static_cast<unsigned>(r), static_cast<unsigned>(c)) = rows[r][c];
+    if (n.text == "vmatrix") {
+      if (m.rows() != m.cols()) refuse("a determinant of a matrix that is not square", n);
+      return m.determinant();
     }
     return m;
   }
 
-  std::vector<token> tokens_;
-  std::size_t at_ = 0;
-  int integrands_ = 0;  // integrals being read: their integrands end at a differential
+  // --- operators
+
+  /// {\rm O}(h^k), \mathcal O(h^k), O(h^k): GiNaC's order term.
+  std::optional<GiNaC::ex> order_term(cursor& c) {
+    const tex_node& n = c.node();
+    const tex_node& u = unwrapped(n);
+    const bool o = (u.kind == tex_node_kind::atom && u.text == "O") ||
+                   (upright(u) && upright(u)->second == "O" && (upright(u)->first == "mathrm" || upright(u)->first == "mathcal"));
+    if (!o) return std::nullopt;
+    const tex_node* after = c.next_after();
+    if (!opens_application(after)) refuse("Landau's O without its argument in parentheses", n, "O(h^4)");
+    ++c.k;
+    const GiNaC::exvector args = arguments(c);
+    if (args.size() != 1) refuse("O of more than one argument", n);
+    return GiNaC::Order(args.front());
+  }
+
+  /// \det, \operatorname{tr}, \mathrm{tr}, {\rm det}: of the factor that follows.
+  std::optional<GiNaC::ex> named_operator(cursor& c) {
+    const auto u = upright(c.node());
+    if (!u || (u->first != "mathrm" && u->first != "operatorname")) return std::nullopt;
+    const tex_node& n = c.node();
+    const std::string& name = u->second;
+    if (name != "tr" && name != "Tr" && name != "trace" && name != "det") {
+      refuse("the operator '" + name + "' is not one the reader knows", n, "\\det, \\operatorname{tr}");
+    }
+    ++c.k;
+    if (c.done()) refuse("the operator " + name + " of nothing", n);
+    const GiNaC::ex of = factor(c, {});
+    return name == "det" ? determinant_of(of) : trace_of(of);
+  }
+
+  GiNaC::ex op(cursor& c, const std::vector<std::string>& closers) {
+    const tex_node& n = c.node();
+    const tex_node& o = n.kind == tex_node_kind::scripts ? unwrapped(n.children.front()) : n;
+    const std::string& name = o.text;
+    if (name == "\\sum") return sum_of(c, closers);
+    if (name == "\\int") return integral(c, closers);
+    static const std::set<std::string> functions{"\\sin", "\\cos", "\\tan", "\\exp", "\\log", "\\ln", "\\det", "\\sinh", "\\cosh", "\\tanh"};
+    if (!functions.count(name)) refuse("the operator " + name, n);
+    if (n.kind == tex_node_kind::scripts && !n.sub.empty()) refuse(name + " with a subscript", n);
+    std::optional<GiNaC::ex> power;
+    if (n.kind == tex_node_kind::scripts) power = whole_node(n.sup.front());  // \sin^2 x
+    ++c.k;
+    if (c.done()) refuse(name + " of nothing", n);
+    const GiNaC::ex x = factor(c, {});
+    GiNaC::ex value;
+    if (name == "\\sin") value = GiNaC::sin(x);
+    if (name == "\\cos") value = GiNaC::cos(x);
+    if (name == "\\tan") value = GiNaC::tan(x);
+    if (name == "\\exp") value = GiNaC::exp(x);
+    if (name == "\\log" || name == "\\ln") value = GiNaC::log(x);
+    if (name == "\\sinh") value = GiNaC::sinh(x);
+    if (name == "\\cosh") value = GiNaC::cosh(x);
+    if (name == "\\tanh") value = GiNaC::tanh(x);
+    if (name == "\\det") value = determinant_of(x);
+    return power ? GiNaC::pow(value, *power) : value;
+  }
+
+  /// \sum_{j=a}^{b} s: the summand is the rest of the term.
+  GiNaC::ex sum_of(cursor& c, const std::vector<std::string>& closers) {
+    const tex_node& n = c.node();
+    if (n.kind != tex_node_kind::scripts || n.sub.empty() || n.sup.empty()) refuse("a \\sum without both its limits", n, "\\sum_{j=0}^{N-1}");
+    const tex_list lower = unwrapped_list(n.sub.front().kind == tex_node_kind::group ? n.sub.front().children : tex_list{n.sub.front()});
+    if (lower.size() < 3 || !is_atom(lower[1], "=")) refuse("a \\sum whose lower limit is not 'index = value'", n);
+    const GiNaC::ex index = symbols_[symbol_name(lower[0])];
+    const GiNaC::ex from = whole(tex_list(lower.begin() + 2, lower.end()));
+    const GiNaC::ex to = whole_node(n.sup.front());
+    ++c.k;
+    const GiNaC::ex summand = term(c, closers);
+    return apply_function("sum", {summand, index, from, to});
+  }
+
+  /// \int_a^b f \, dx: held (an integrand written in the state and its derivative must not be
+  /// taken for a constant of x).
+  GiNaC::ex integral(cursor& c, const std::vector<std::string>& closers) {
+    const tex_node& n = c.node();
+    if (n.kind != tex_node_kind::scripts || n.sub.empty() || n.sup.empty()) refuse("an integral without both its limits", n, "\\int_0^h");
+    const GiNaC::ex lower = whole_node(n.sub.front()), upper = whole_node(n.sup.front());
+    ++c.k;
+    GiNaC::ex integrand = 1;
+    bool any = false;
+    for (;;) {
+      if (c.done() || ends_term(c, closers)) refuse("an integral without its differential (d x)", n);
+      const std::optional<differential> d = differential_of(c.node());
+      if (d && !d->partial && d->order == 1 && !(d->plain_d && declared_.symbols.count("d"))) {
+        const tex_node* variable = c.next_after();
+        if (variable && any) {
+          ++c.k;
+          const std::string name = symbol_name(*variable);
+          ++c.k;
+          return GiNaC::integral(symbols_[name], lower, upper, integrand).hold();
+        }
+      }
+      integrand *= factor(c, closers);
+      any = true;
+    }
+  }
+
+  const tex_declarations& declared_;
   tex_symbols& symbols_;
 };
 
 }  // namespace
 
-std::vector<std::string> relation_sides(const std::string& tex) {
-  std::vector<std::string> sides(1);
-  int depth = 0;
-  for (std::size_t k = 0; k < tex.size(); ++k) {
-    const char c = tex[k];
-    if (c == '{' || c == '(' || c == '[') ++depth;
-    if (c == '}' || c == ')' || c == ']') --depth;
-    if (depth == 0 && (c == '=' || c == '<')) {
-      sides.emplace_back();
-      continue;
-    }
-    if (depth == 0 && tex.compare(k, 6, "\\equiv") == 0) {
-      sides.emplace_back();
-      k += 5;
-      continue;
-    }
-    if (depth == 0 && tex.compare(k, 6, "\\simeq") == 0) {  // an approximation: a quadrature rule against its integral
-      sides.emplace_back();
-      k += 5;
-      continue;
-    }
-    if (depth == 0 && tex.compare(k, 4, "\\leq") == 0 && (k + 4 == tex.size() || !std::isalpha(static_cast<unsigned char>(tex[k + 4])))) {
-      sides.emplace_back();  // a range 0 \leq t \leq T, as 0 < t < T is
-      k += 3;
-      continue;
-    }
-    sides.back() += c;
-  }
-  for (std::string& s : sides) {
-    // Trailing punctuation and spacing of the display: "... \, ." or "... :".
-    for (;;) {
-      while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.pop_back();
-      if (s.size() >= 2 && s[s.size() - 2] == '\\' && (s.back() == ',' || s.back() == ';' || s.back() == '!')) {
-        s.resize(s.size() - 2);  // spacing: \, \; \! (before the punctuation test, which would take its comma)
-      } else if (!s.empty() && (s.back() == '.' || s.back() == ',' || s.back() == ':')) {
-        s.pop_back();
-      } else {
-        break;
-      }
-    }
-  }
-  return sides;
-}
+GiNaC::ex read_math(const tex_list& side, const tex_declarations& declared, tex_symbols& symbols) { return reader(declared, symbols).whole(side); }
 
-namespace {
-
-/// `tex` without \vspace{...} and \vspace*{...}.
-std::string without_vspace(std::string tex) {
-  for (std::size_t at; (at = tex.find("\\vspace")) != std::string::npos;) {
-    const std::size_t close = tex.find('}', at);
-    tex.erase(at, close == std::string::npos ? std::string::npos : close + 1 - at);
+GiNaC::ex read_tex(const std::string& tex, const tex_declarations& declared, tex_symbols& symbols, const tex_macros* macros) {
+  std::vector<tex_token> tokens = tex_tokenize(tex);
+  if (macros) tokens = expand_all(tokens, *macros);
+  const tex_list list = parse_tex_tree(tokens);
+  for (const tex_node& n : list) {
+    if (n.kind == tex_node_kind::atom && n.atom_class == tex_class::rel) throw tex_error("a relation '" + n.text + "' in one side", n.offset, n.text);
   }
-  return tex;
-}
-
-/// True when `tex` holds nothing but spacing commands and white space.
-bool only_spacing(const std::string& tex) {
-  std::size_t k = 0;
-  while (k < tex.size()) {
-    if (std::isspace(static_cast<unsigned char>(tex[k]))) {
-      ++k;
-    } else if (tex[k] == '\\' && k + 1 < tex.size() && std::string(",;!: ").find(tex[k + 1]) != std::string::npos) {
-      k += 2;
-    } else if (tex.compare(k, 6, "\\quad") == 0) {
-      k += 5;
-    } else if (tex.compare(k, 13, "\\displaystyle") == 0) {
-      k += 13;
-    } else {
-      return false;
-    }
-  }
-  return true;
-}
-
-/// `tex` with leading spacing commands removed.
-std::string trimmed(const std::string& tex) {
-  std::size_t k = 0;
-  for (;;) {
-    while (k < tex.size() && std::isspace(static_cast<unsigned char>(tex[k]))) ++k;
-    std::size_t next = k;
-    for (const char* s : {"\\displaystyle", "\\quad", "\\,", "\\;", "\\!", "\\left\\{"}) {
-      if (tex.compare(k, std::string(s).size(), s) == 0) next = k + std::string(s).size();
-    }
-    if (next == k) return tex.substr(k);
-    k = next;
-  }
-}
-
-/// Splits at `separator` where it is outside every group; escaped braces \{ \} are not groups.
-std::vector<std::string> split_top_level(const std::string& tex, const std::string& separator) {
-  std::vector<std::string> parts(1);
-  int depth = 0;
-  for (std::size_t k = 0; k < tex.size(); ++k) {
-    const char c = tex[k];
-    if (c == '\\' && k + 1 < tex.size() && !(depth == 0 && tex.compare(k, separator.size(), separator) == 0)) {
-      parts.back() += tex.substr(k, 2);  // \, \{ \} and the first letter of a command are never separators or groups
-      ++k;
-      continue;
-    }
-    if (c == '{' || c == '(' || c == '[') ++depth;
-    if (c == '}' || c == ')' || c == ']') --depth;
-    if (depth == 0 && tex.compare(k, separator.size(), separator) == 0) {
-      parts.emplace_back();
-      k += separator.size() - 1;
-      continue;
-    }
-    parts.back() += c;
-  }
-  return parts;
-}
-
-}  // namespace
-
-std::vector<std::string> display_equations(const std::string& display) {
-  const std::string tex = trimmed(without_vspace(display));
-  std::vector<std::string> equations;
-  if (tex.compare(0, 13, "\\begin{array}") == 0) {
-    const std::size_t body = tex.find('}', 13);  // the end of the column specification
-    const std::size_t end = tex.rfind("\\end{array}");
-    const std::string rows = tex.substr(body + 1, end == std::string::npos ? std::string::npos : end - body - 1);
-    for (const std::string& row : split_top_level(rows, "\\\\")) {
-      if (only_spacing(row)) continue;
-      if (!equations.empty() && trimmed(row).compare(0, 1, "=") == 0) {
-        equations.back() += " " + row;  // "\quad = ..." continues the equation above
-      } else {
-        equations.push_back(row);
-      }
-    }
-    return equations;
-  }
-  for (const std::string& part : split_top_level(tex, ",")) {
-    if (!only_spacing(part) && trimmed(part) != ".") equations.push_back(part);
-  }
-  return equations;
-}
-
-GiNaC::ex parse_tex_math(const std::string& tex, tex_symbols& symbols) { return parser(tex, symbols).parse_all(); }
-
-namespace {
-
-std::string numeric_text(const GiNaC::numeric& n) {
-  std::ostringstream out;
-  out << n;
-  return out.str();
-}
-
-/// A polynomial (expanded) as a sum of monomials: coefficients exact, symbols in name order,
-/// terms by decreasing total degree, then by text.
-std::string polynomial_text(const GiNaC::ex& poly, const std::vector<GiNaC::symbol>& symbols) {
-  const GiNaC::ex expanded = GiNaC::expand(poly);
-  std::vector<GiNaC::ex> terms;
-  if (GiNaC::is_a<GiNaC::add>(expanded)) {
-    for (std::size_t k = 0; k < expanded.nops(); ++k) terms.push_back(expanded.op(k));
-  } else {
-    terms.push_back(expanded);
-  }
-  std::vector<std::pair<int, std::string>> texts;
-  for (const GiNaC::ex& term : terms) {
-    GiNaC::ex rest = term;
-    std::string monomial;
-    int total = 0;
-    for (const GiNaC::symbol& x : symbols) {
-      const int d = term.degree(x);
-      if (d == 0) continue;
-      rest = rest / GiNaC::pow(x, d);
-      total += d;
-      monomial += "*" + x.get_name() + (d == 1 ? "" : "^" + std::to_string(d));
-    }
-    rest = GiNaC::normal(rest);
-    // A numeric coefficient, or a function of one symbol such as Order(h^6), whose printing is fixed.
-    std::ostringstream other;
-    other << rest;
-    std::string coefficient = GiNaC::is_a<GiNaC::numeric>(rest) ? numeric_text(GiNaC::ex_to<GiNaC::numeric>(rest)) : other.str();
-    std::string text;
-    if (monomial.empty()) {
-      text = coefficient;
-    } else if (coefficient == "1") {
-      text = monomial.substr(1);
-    } else if (coefficient == "-1") {
-      text = "-" + monomial.substr(1);
-    } else {
-      text = coefficient + monomial;
-    }
-    texts.emplace_back(-total, text);
-  }
-  std::sort(texts.begin(), texts.end());
-  std::string out;
-  for (const auto& t : texts) out += (out.empty() || t.second[0] == '-' ? "" : "+") + t.second;
-  return out.empty() ? "0" : out;
-}
-
-/// Every function application (V(x), D[0](V)(x), Order(h^6), sum(...)) replaced by a symbol named
-/// by its canonical text, so that its arguments print in name order and equal applications are one
-/// symbol: GiNaC orders the terms of an argument by serial numbers, which depend on the process.
-struct functions_as_symbols : GiNaC::map_function {
-  std::map<std::string, GiNaC::symbol> named;
-  GiNaC::ex operator()(const GiNaC::ex& e) override {
-    if (GiNaC::is_a<GiNaC::integral>(e)) {  // integral(x, a, b, f), unevaluated
-      return symbol_named("integral(" + canonical_text(e.op(0)) + ", " + canonical_text(e.op(1)) + ", " + canonical_text(e.op(2)) + ", " +
-                          canonical_text(e.op(3)) + ")");
-    }
-    if (!GiNaC::is_a<GiNaC::function>(e) && !GiNaC::is_a<GiNaC::fderivative>(e)) return e.map(*this);
-    GiNaC::ex shape = e;
-    std::vector<std::string> arguments;
-    for (std::size_t k = 0; k < e.nops(); ++k) {
-      arguments.push_back(canonical_text(e.op(k)));
-      shape.let_op(k) = GiNaC::symbol("#" + std::to_string(k) + "#");
-    }
-    std::ostringstream out;
-    out << shape;
-    std::string name = out.str();
-    for (std::size_t k = 0; k < arguments.size(); ++k) {
-      const std::string mark = "#" + std::to_string(k) + "#";
-      for (std::size_t at; (at = name.find(mark)) != std::string::npos;) name.replace(at, mark.size(), arguments[k]);
-    }
-    // Ours registered apart from one of GiNaC's (psi_f): printed under the name the text gives it.
-    const std::string registered = GiNaC::ex_to<GiNaC::function>(e).get_name();
-    const std::string base = registered.size() > 2 ? registered.substr(0, registered.size() - 2) : "";
-    if (!base.empty() && registered.compare(registered.size() - 2, 2, "_f") == 0 && function_name(base, e.nops()) == registered) {
-      for (std::size_t at; (at = name.find(registered)) != std::string::npos;) name.replace(at, registered.size(), base);
-    }
-    return symbol_named(name);
-  }
-
-  GiNaC::ex symbol_named(const std::string& name) {
-    auto it = named.find(name);
-    if (it == named.end()) it = named.emplace(name, GiNaC::symbol(name)).first;
-    return it->second;
-  }
-};
-
-}  // namespace
-
-std::string canonical_text(const GiNaC::ex& given) {
-  functions_as_symbols rename;
-  const GiNaC::ex e = rename(given);
-  if (GiNaC::is_a<GiNaC::matrix>(e)) {
-    const GiNaC::matrix& m = GiNaC::ex_to<GiNaC::matrix>(e);
-    std::string out = "[";
-    for (unsigned r = 0; r < m.rows(); ++r) {
-      out += r ? ", [" : "[";
-      for (unsigned c = 0; c < m.cols(); ++c) out += (c ? ", " : "") + canonical_text(m(r, c));
-      out += "]";
-    }
-    return out + "]";
-  }
-  std::vector<GiNaC::symbol> symbols;
-  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
-    if (GiNaC::is_a<GiNaC::symbol>(*it)) symbols.push_back(GiNaC::ex_to<GiNaC::symbol>(*it));
-  }
-  std::sort(symbols.begin(), symbols.end(), [](const GiNaC::symbol& a, const GiNaC::symbol& b) { return a.get_name() < b.get_name(); });
-  symbols.erase(std::unique(symbols.begin(), symbols.end(),
-                            [](const GiNaC::symbol& a, const GiNaC::symbol& b) { return a.get_name() == b.get_name(); }),
-                symbols.end());
-  const GiNaC::ex n = GiNaC::normal(e);
-  GiNaC::ex num = GiNaC::numer(n), den = GiNaC::denom(n);
-  if (den.is_equal(GiNaC::ex(1))) return polynomial_text(num, symbols);
-  // GiNaC makes the denominator's leading coefficient positive in its own order of the symbols, which
-  // depends on the order they were made in: a quotient may come out as (-a)/(-b) in one run and a/b
-  // in another. The text's denominator starts with a positive term, in the text's order.
-  std::string denominator = polynomial_text(den, symbols);
-  if (!denominator.empty() && denominator.front() == '-') {
-    num = -num;
-    den = -den;
-    denominator = polynomial_text(den, symbols);
-  }
-  return "(" + polynomial_text(num, symbols) + ")/(" + denominator + ")";
+  return read_math(list, declared, symbols);
 }
 
 }  // namespace simpson::verify

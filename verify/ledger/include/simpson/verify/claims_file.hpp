@@ -56,19 +56,25 @@ class claims_file_error : public std::invalid_argument {
   std::string field_;
 };
 
-/// What a claims file for a document other than the paper declares: its [document] (a phrase the
-/// document prints, its title: the --paper given must contain it) and its [symbols] (every symbol
-/// the formulas read may use, those assumed positive apart).
+/// A claims file's [document]: the file checks a document other than the paper, which prints this
+/// phrase (its title: the --paper given must contain it).
 struct claims_document {
   std::string title;
-  std::vector<std::string> positive;  // symbols > 0 (parameters: m, omega, h)
-  std::vector<std::string> real;      // other real symbols (the state: q_0, p_0, ...)
-  std::vector<std::string> functions;  // functions of the document, applied as f(x) (V and psi are the reader's own)
+  int line = 0;
+};
+
+/// A claims file's [symbols], as written (TeX): what decides what the document's TeX leaves open
+/// (tex_math.hpp). A name may be a function and a symbol (a state: q(t), dq/dt), nothing else twice.
+struct claims_symbols {
+  std::vector<std::string> positive;   // symbols > 0 (parameters: m, omega, h)
+  std::vector<std::string> real;       // other real symbols (the state: q_0, p_0, ...)
+  std::vector<std::string> functions;  // applied as f(x): V, L_d, \psi
   int line = 0;
 };
 
 struct claims_file_contents {
   std::optional<claims_document> document;  // none for the paper's own claims
+  std::optional<claims_symbols> symbols;    // [symbols]: required with a [document]
   std::vector<claim_record> records;
 };
 

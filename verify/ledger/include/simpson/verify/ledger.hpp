@@ -1,52 +1,69 @@
 #pragma once
-// The claims ledger: every checkable statement of the paper, in the paper's order.
+// The claims ledger: a claims file read into a book of claims (every checkable statement, in the
+// file's order), each claim carrying what it needs to run (its shape's arguments, the file's
+// declarations). The paper's book is claims/paper.toml, compiled in; --claims-file installs another.
 
 #include <simpson/verify/claim.hpp>
+#include <simpson/verify/claim_declarations.hpp>
 #include <simpson/verify/claims_file.hpp>
+#include <simpson/verify/paper_reading.hpp>
 #include <simpson/verify/paper_source.hpp>
 
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace simpson::verify {
 
-/// All claims, built once from the embedded claims/paper.toml and the registered checks; ids are
-/// unique and stable.
+/// A claims file read: its records, its [document] and declarations, and its claims, each joined
+/// with the check or shape its record names.
+struct claim_book {
+  std::string file;                                         // "claims/paper.toml", or the path given
+  std::optional<claims_document> document;                  // [document]: a document other than the paper
+  std::shared_ptr<const claim_declarations> declarations;   // never null
+  std::vector<claim_record> records;
+  std::vector<claim> claims;
+};
+
+/// Reads a claims file into a book: every record checked (claims_file.hpp), every `check` a
+/// registered one, every shape's arguments of their kinds, the declarations read. Throws
+/// claims_file_error.
+claim_book read_claim_book(const std::string& text, const std::string& file);
+
+/// The paper's book (the embedded claims/paper.toml), read once.
+const claim_book& paper_book();
+
+/// The book of the run: the file --claims-file installed, or the paper's.
+const claim_book& installed_book();
+
+/// All claims of the installed book.
 const std::vector<claim>& ledger();
 
 /// The records of a claims file whose every `check` is a registered one (read_claims_file).
 std::vector<claim_record> read_claims_with_known_checks(const std::string& text, const std::string& file);
 
-/// The claims of records, each joined with the check its record names.
-std::vector<claim> claims_of(const std::vector<claim_record>& records);
-
-/// From now on ledger() is the claims of this file instead of claims/paper.toml (the CLI's
+/// From now on the installed book is this file's instead of claims/paper.toml's (the CLI's
 /// --claims-file, before anything runs). Throws claims_file_error when the file does not read.
 void use_claims_file(const std::string& text, const std::string& file);
 
-/// The [document] and [symbols] of the claims file installed, when it checks a document other than
-/// the paper; null otherwise.
+/// The [document] of the installed book, when it checks a document other than the paper; null
+/// otherwise.
 const claims_document* installed_document();
 
-/// Reads every formula the installed file's shape records name (the embedded claims/paper.toml's
-/// when no file is installed; only the claims `only` lists, when given) from `document`, before
-/// anything runs: throws claims_file_error naming the record's argument when one is missing, does
-/// not parse, or uses a symbol the file does not declare.
+/// Reads every formula the installed book's shape records name (only the claims `only` lists, when
+/// given) from `document`, before anything runs: throws claims_file_error naming the record's
+/// argument when one is missing or uses a symbol the file does not declare, and
+/// std::invalid_argument naming the document's line when its TeX does not read.
 void check_claims_file_formulas(const paper_source& document, const std::vector<std::string>* only = nullptr);
 
 /// The claim with this id; throws std::invalid_argument naming the id when there is none.
 const claim& find_claim(const std::string& id);
 
 /// The ids that every run of the `paper` scene must contain: the headline claims of its records.
-inline const std::vector<std::string>& required_claim_ids() {
-  static const std::vector<std::string> ids = [] {
-    std::vector<std::string> out;
-    for (const claim& c : ledger()) {
-      if (c.headline) out.push_back(c.id);
-    }
-    return out;
-  }();
-  return ids;
-}
+std::vector<std::string> required_claim_ids();
+
+/// The paper read with its book's declarations (claims/paper.toml's [symbols]), as its claims read it.
+paper_reading read_paper(const paper_source& paper);
 
 }  // namespace simpson::verify

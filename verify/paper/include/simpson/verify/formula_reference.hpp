@@ -13,7 +13,8 @@
 //   "$\omega h$"      the TeX fragment itself
 
 #include <simpson/verify/paper_source.hpp>
-#include <simpson/verify/tex_macros.hpp>
+#include <simpson/verify/tex_document.hpp>
+#include <simpson/verify/tex_math.hpp>
 
 #include <ginac/ginac.h>
 
@@ -36,20 +37,36 @@ struct formula_reference {
 /// Reads the text of a reference; throws std::invalid_argument saying what is wrong with it.
 formula_reference parse_reference(const std::string& text);
 
-/// One formula read: where, its TeX (the equation), its sides' TeX, and the side the reference
-/// names parsed (a GiNaC matrix for a matrix).
+/// The document's TeX does not read (a construct refused, a group never closed): bad input that
+/// names the document and its line, never a claims file's record.
+class document_error : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+/// One formula read: where, its TeX (the equation), its sides' TeX and trees, and the side the
+/// reference names read (a GiNaC matrix for a matrix).
 struct referenced_formula {
   std::string locator;  // "label phi (line 12)", "inline formula at 'stable for' (line 30)", "the record's TeX"
   std::string place;    // the same without its line: "label phi"
+  std::string origin;   // the document's ("note.tex", "embedded"); empty for the record's own TeX
+  const tex_document* document = nullptr;  // where it was read (its lines name a fault); null for the record's own TeX
   int line = 0;
   std::string tex;
-  std::vector<std::string> sides;
+  std::vector<std::string> sides;      // each side's TeX
+  std::vector<std::string> relations;  // between them: "=", "<", "\\leq"
+  std::vector<tex_list> side_trees;
   GiNaC::ex value;
 };
 
-/// Reads `reference` from `document` (its macros `macros` expanded) into paper_symbols(). Throws
-/// std::invalid_argument with one line saying what is missing or does not parse.
-referenced_formula read_reference(const paper_source& document, const std::map<std::string, tex_macro>& macros, const std::string& reference);
+/// Reads `reference` from `document` into paper_symbols(), `declared` deciding what TeX leaves
+/// open. Throws std::invalid_argument with one line saying what is missing or does not read, and
+/// where.
+referenced_formula read_reference(const tex_document& document, const tex_declarations& declared, const std::string& reference);
+
+/// Side `k` of `f` read (its tree); throws document_error naming the document, the formula's place
+/// and line (std::invalid_argument for the record's own TeX).
+GiNaC::ex read_side(const referenced_formula& f, std::size_t k, const tex_declarations& declared);
 
 /// Every symbol in `e`, by name.
 std::vector<std::string> symbol_names(const GiNaC::ex& e);
@@ -66,7 +83,7 @@ struct definition {
   std::string function{};               // a function's name ("V"): V(x) is value at parameter = x, and V' its derivative
   std::optional<GiNaC::symbol> parameter{};
 };
-definition read_definition(const paper_source& document, const std::map<std::string, tex_macro>& macros, const std::string& reference);
+definition read_definition(const tex_document& document, const tex_declarations& declared, const std::string& reference);
 
 /// `e` with the definitions put in (a function's at each of its applications and derivatives, V'(x)
 /// as the derivative of V's value, a derivative written without an argument, dq/dt with q(t)

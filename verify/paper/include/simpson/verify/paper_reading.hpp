@@ -4,11 +4,13 @@
 // formula the reader cannot parse, is an error naming the label, the line and the token.
 
 #include <simpson/verify/paper_source.hpp>
+#include <simpson/verify/tex_document.hpp>
 #include <simpson/verify/tex_math.hpp>
 
 #include <ginac/ginac.h>
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -41,13 +43,20 @@ struct paper_reading {
   std::string origin;  // "embedded" or the file read
   std::string sha256;  // of the source's bytes
   paper_source source; // the text read (the prose claims quote their sentences from it)
+  std::shared_ptr<const tex_document> document;  // the source read as TeX, once
   std::map<std::string, printed_formula> formulas;
   const printed_formula& at(const std::string& name) const;
 };
 
-/// Reads every formula of printed_formula_locations() from the paper, in paper_symbols(). Throws
+/// A document other than the paper, read as TeX (its claims read their formulas themselves): no
+/// formula of printed_formula_locations(). Throws std::invalid_argument naming the document's line
+/// when its TeX does not read.
+paper_reading read_note(const paper_source& source);
+
+/// Reads every formula of printed_formula_locations() from the paper, in paper_symbols(), `declared`
+/// (the paper's claims file's [symbols]) deciding what TeX leaves open. Throws
 /// std::invalid_argument with one line naming the paper, the label (or anchor), the line and the
-/// token when one is missing or does not parse.
-paper_reading read_paper(const paper_source& paper);
+/// construct when one is missing or does not read.
+paper_reading read_paper(const paper_source& paper, const tex_declarations& declared);
 
 }  // namespace simpson::verify

@@ -37,19 +37,6 @@ paper_source load_paper(const std::string& path);
 /// unreadable, empty, or does not print `title`.
 paper_source load_document(const std::string& path, const std::string& title);
 
-/// The display carrying \label{label}. Throws std::invalid_argument naming the paper and the label
-/// when there is none.
-tex_display find_labelled(const paper_source& paper, const std::string& label);
-
-/// The first display after the prose `anchor` (white space in it matches any white space). Throws std::invalid_argument when the anchor or a
-/// display after it is missing.
-tex_display find_anchored(const paper_source& paper, const std::string& anchor);
-
-/// The inline formula ($...$) that contains the anchor, or, when the anchor is prose, the first one
-/// after it. White space in the anchor matches any white space in the text. Throws
-/// std::invalid_argument when the anchor or the formula is missing.
-tex_display find_inline(const paper_source& paper, const std::string& anchor);
-
 /// Where `needle` occurs in `text` at or after `from`, white space ignored on both sides (the source
 /// breaks lines where it likes): [begin, end) of the match, or none. With `whole_word`, a needle that
 /// starts with a letter or a digit does not match inside a word ("is" not in "discrete"); with
@@ -66,5 +53,9 @@ std::string folded_space(const std::string& text);
 
 /// The source with every comment (from an unescaped % to the end of its line) blanked out.
 std::string without_comments(const std::string& tex);
+
+/// `source` with [at, at + length) of its text replaced by `to`, in the text as read (`raw`) and in
+/// the text without comments alike (an altered copy of a source: the offsets of the two agree).
+void replace_text(paper_source& source, std::size_t at, std::size_t length, const std::string& to);
 
 }  // namespace simpson::verify

@@ -1,32 +1,65 @@
 #pragma once
-// The macros a LaTeX source defines (\newcommand, \renewcommand, \providecommand, \def), and their
-// expansion in the math a claim reads: a note that writes \newcommand{\om}{\omega} or
-// \newcommand{\half}[1]{\frac{#1}{2}} is read as TeX would read it.
+// The macros a LaTeX source defines, and their expansion as TeX expands them (The TeXbook, chapter
+// 20): \newcommand, \renewcommand, \providecommand (an argument count, and an optional first
+// argument with its default), \def, \gdef and \edef (a parameter text with delimiters included),
+// \let, and amsmath's \DeclareMathOperator. An undelimited argument is the next token that is not a
+// space, or a braced group without its braces; a delimited one runs to its delimiter. A macro's
+// body is put in with its arguments' tokens as they are, as TeX does: \newcommand{\sq}[1]{#1^2}
+// makes \sq{a+b} a + b^2.
+
+#include <simpson/verify/tex_tokens.hpp>
 
 #include <map>
-#include <stdexcept>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace simpson::verify {
 
 struct tex_macro {
+  std::string name;  // with its backslash: "\\om"
   int arguments = 0;  // #1 ... #9
-  std::string body;
+  /// \newcommand's optional first argument: its default, when the definition gives one.
+  std::optional<std::vector<tex_token>> default_first{};
+  /// \def's parameter text: the tokens between the name and the body, #n included (delimiters
+  /// between them); empty for \newcommand.
+  std::vector<tex_token> parameter_text{};
+  std::vector<tex_token> body{};
   int line = 0;       // where it is defined
-  /// A \def whose parameter text has delimiters (\def\section*#1{}): read, so that the source
-  /// reads, but never expanded: a formula that uses it does not read.
-  bool delimited = false;
+  std::size_t offset = 0;
 };
 
-/// The macros `text` defines, by name with its backslash ("\\om"); a later definition replaces an
-/// earlier one, as \renewcommand does. A definition that does not read (no body, an argument count
-/// that is not 1 to 9) throws std::invalid_argument naming its line.
-std::map<std::string, tex_macro> defined_macros(const std::string& text);
+class tex_macros {
+ public:
+  const tex_macro* find(const std::string& name) const;
+  void define(tex_macro macro) { macros_[macro.name] = std::move(macro); }
+  bool empty() const { return macros_.empty(); }
+  const std::map<std::string, tex_macro>& all() const { return macros_; }
 
-/// `tex` with every use of a macro of `macros` replaced by its body, the arguments (a braced group
-/// or one token each) put in for #1 ... #9, again until none is left. Throws std::invalid_argument
-/// naming the macro when an argument is missing or the expansion does not end (a macro that uses
-/// itself).
-std::string expand_macros(const std::string& tex, const std::map<std::string, tex_macro>& macros);
+ private:
+  std::map<std::string, tex_macro> macros_;
+};
+
+/// Whether `name` ("\\newcommand", "\\def", ...) starts a definition the reader reads.
+bool is_definition_command(const std::string& name);
+
+/// Reads the definition that starts at tokens[at] (\newcommand ...), into `macros`; returns the
+/// index just after it. Throws tex_error naming the line's offset when it does not read (no name,
+/// no body, an argument count that is not 1 to 9).
+std::size_t read_definition(const std::vector<tex_token>& tokens, std::size_t at, tex_macros& macros);
+
+/// Expands the macro call at tokens[at] in place (its arguments read from the tokens after it);
+/// the body's own tokens take the call's offset and the macro's name. Throws tex_error when an
+/// argument is missing or a delimited parameter text does not match ("Use of \x doesn't match its
+/// definition", as TeX says).
+void expand_at(std::vector<tex_token>& tokens, std::size_t at, const tex_macro& macro);
+
+/// Every macro of `macros` in `tokens` expanded, again until none is left; at most `limit`
+/// expansions (a macro that uses itself never ends: tex_error).
+std::vector<tex_token> expand_all(std::vector<tex_token> tokens, const tex_macros& macros, int limit = 20000);
+
+/// The macros `text` defines, in order (a later definition replaces an earlier one), read by
+/// scanning its tokens for definitions; throws tex_error.
+tex_macros defined_macros(const std::string& text);
 
 }  // namespace simpson::verify

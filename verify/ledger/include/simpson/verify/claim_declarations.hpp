@@ -1,0 +1,32 @@
+#pragma once
+// What a claims file declares of its document's names ([symbols]), read into the reader's names:
+// the value the engine passes with every claim it runs, so that a formula means the same wherever
+// it is read (tex_math.hpp says what declarations decide).
+
+#include <simpson/verify/claims_file.hpp>
+#include <simpson/verify/tex_math.hpp>
+
+#include <set>
+#include <string>
+
+namespace simpson::verify {
+
+struct claim_declarations {
+  claims_symbols written;           // as the file writes them (TeX)
+  tex_declarations reading;         // the reader's functions and symbols
+  std::set<std::string> positive;   // the reader's names of the symbols declared positive
+  std::set<std::string> real;       // ... declared real
+  /// A file with a [document]: every symbol a formula it reads uses must be declared (a symbol the
+  /// file does not name is a misreading, or a name it forgot).
+  bool complete = false;
+};
+
+/// The declarations of a claims file's contents. Throws claims_file_error naming the field when a
+/// name is not one name, or is one the reader keeps (O, \pi).
+claim_declarations read_declarations(const claims_file_contents& contents, const std::string& file);
+
+/// The reader's name of a TeX name ('q_{j+1}' is "q_j+1", '\omega' "omega"); throws
+/// std::invalid_argument when it is not one name.
+std::string reader_name(const std::string& tex);
+
+}  // namespace simpson::verify

@@ -1,0 +1,141 @@
+// The canonical text of an expression: see tex_math.hpp.
+
+#include <simpson/verify/tex_math.hpp>
+
+#include <algorithm>
+#include <sstream>
+
+namespace simpson::verify {
+
+namespace {
+
+std::string numeric_text(const GiNaC::numeric& n) {
+  std::ostringstream out;
+  out << n;
+  return out.str();
+}
+
+/// A polynomial (expanded) as a sum of monomials: coefficients exact, symbols in name order,
+/// terms by decreasing total degree, then by text.
+std::string polynomial_text(const GiNaC::ex& poly, const std::vector<GiNaC::symbol>& symbols) {
+  const GiNaC::ex expanded = GiNaC::expand(poly);
+  std::vector<GiNaC::ex> terms;
+  if (GiNaC::is_a<GiNaC::add>(expanded)) {
+    for (std::size_t k = 0; k < expanded.nops(); ++k) terms.push_back(expanded.op(k));
+  } else {
+    terms.push_back(expanded);
+  }
+  std::vector<std::pair<int, std::string>> texts;
+  for (const GiNaC::ex& term : terms) {
+    GiNaC::ex rest = term;
+    std::string monomial;
+    int total = 0;
+    for (const GiNaC::symbol& x : symbols) {
+      const int d = term.degree(x);
+      if (d == 0) continue;
+      rest = rest / GiNaC::pow(x, d);
+      total += d;
+      monomial += "*" + x.get_name() + (d == 1 ? "" : "^" + std::to_string(d));
+    }
+    rest = GiNaC::normal(rest);
+    // A numeric coefficient, or a function of one symbol such as Order(h^6), whose printing is fixed.
+    std::ostringstream other;
+    other << rest;
+    std::string coefficient = GiNaC::is_a<GiNaC::numeric>(rest) ? numeric_text(GiNaC::ex_to<GiNaC::numeric>(rest)) : other.str();
+    std::string text;
+    if (monomial.empty()) {
+      text = coefficient;
+    } else if (coefficient == "1") {
+      text = monomial.substr(1);
+    } else if (coefficient == "-1") {
+      text = "-" + monomial.substr(1);
+    } else {
+      text = coefficient + monomial;
+    }
+    texts.emplace_back(-total, text);
+  }
+  std::sort(texts.begin(), texts.end());
+  std::string out;
+  for (const auto& t : texts) out += (out.empty() || t.second[0] == '-' ? "" : "+") + t.second;
+  return out.empty() ? "0" : out;
+}
+
+/// Every function application (V(x), D[0](V)(x), Order(h^6), sum(...)) replaced by a symbol named
+/// by its canonical text, so that its arguments print in name order and equal applications are one
+/// symbol: GiNaC orders the terms of an argument by serial numbers, which depend on the process.
+struct functions_as_symbols : GiNaC::map_function {
+  std::map<std::string, GiNaC::symbol> named;
+  GiNaC::ex operator()(const GiNaC::ex& e) override {
+    if (GiNaC::is_a<GiNaC::integral>(e)) {  // integral(x, a, b, f), unevaluated
+      return symbol_named("integral(" + canonical_text(e.op(0)) + ", " + canonical_text(e.op(1)) + ", " + canonical_text(e.op(2)) + ", " +
+                          canonical_text(e.op(3)) + ")");
+    }
+    if (!GiNaC::is_a<GiNaC::function>(e) && !GiNaC::is_a<GiNaC::fderivative>(e)) return e.map(*this);
+    GiNaC::ex shape = e;
+    std::vector<std::string> arguments;
+    for (std::size_t k = 0; k < e.nops(); ++k) {
+      arguments.push_back(canonical_text(e.op(k)));
+      shape.let_op(k) = GiNaC::symbol("#" + std::to_string(k) + "#");
+    }
+    std::ostringstream out;
+    out << shape;
+    std::string name = out.str();
+    for (std::size_t k = 0; k < arguments.size(); ++k) {
+      const std::string mark = "#" + std::to_string(k) + "#";
+      for (std::size_t at; (at = name.find(mark)) != std::string::npos;) name.replace(at, mark.size(), arguments[k]);
+    }
+    // Ours registered apart from one of GiNaC's (psi_f): printed under the name the text gives it.
+    const std::string registered = GiNaC::ex_to<GiNaC::function>(e).get_name();
+    const std::string base = registered.size() > 2 ? registered.substr(0, registered.size() - 2) : "";
+    if (!base.empty() && registered.compare(registered.size() - 2, 2, "_f") == 0 && function_name(base, e.nops()) == registered) {
+      for (std::size_t at; (at = name.find(registered)) != std::string::npos;) name.replace(at, registered.size(), base);
+    }
+    return symbol_named(name);
+  }
+
+  GiNaC::ex symbol_named(const std::string& name) {
+    auto it = named.find(name);
+    if (it == named.end()) it = named.emplace(name, GiNaC::symbol(name)).first;
+    return it->second;
+  }
+};
+
+}  // namespace
+
+std::string canonical_text(const GiNaC::ex& given) {
+  functions_as_symbols rename;
+  const GiNaC::ex e = rename(given);
+  if (GiNaC::is_a<GiNaC::matrix>(e)) {
+    const GiNaC::matrix& m = GiNaC::ex_to<GiNaC::matrix>(e);
+    std::string out = "[";
+    for (unsigned r = 0; r < m.rows(); ++r) {
+      out += r ? ", [" : "[";
+      for (unsigned c = 0; c < m.cols(); ++c) out += (c ? ", " : "") + canonical_text(m(r, c));
+      out += "]";
+    }
+    return out + "]";
+  }
+  std::vector<GiNaC::symbol> symbols;
+  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (GiNaC::is_a<GiNaC::symbol>(*it)) symbols.push_back(GiNaC::ex_to<GiNaC::symbol>(*it));
+  }
+  std::sort(symbols.begin(), symbols.end(), [](const GiNaC::symbol& a, const GiNaC::symbol& b) { return a.get_name() < b.get_name(); });
+  symbols.erase(std::unique(symbols.begin(), symbols.end(),
+                            [](const GiNaC::symbol& a, const GiNaC::symbol& b) { return a.get_name() == b.get_name(); }),
+                symbols.end());
+  const GiNaC::ex n = GiNaC::normal(e);
+  GiNaC::ex num = GiNaC::numer(n), den = GiNaC::denom(n);
+  if (den.is_equal(GiNaC::ex(1))) return polynomial_text(num, symbols);
+  // GiNaC makes the denominator's leading coefficient positive in its own order of the symbols, which
+  // depends on the order they were made in: a quotient may come out as (-a)/(-b) in one run and a/b
+  // in another. The text's denominator starts with a positive term, in the text's order.
+  std::string denominator = polynomial_text(den, symbols);
+  if (!denominator.empty() && denominator.front() == '-') {
+    num = -num;
+    den = -den;
+    denominator = polynomial_text(den, symbols);
+  }
+  return "(" + polynomial_text(num, symbols) + ")/(" + denominator + ")";
+}
+
+}  // namespace simpson::verify

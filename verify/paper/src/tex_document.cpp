@@ -1,0 +1,544 @@
+// A LaTeX document read as TeX reads it: see tex_document.hpp.
+
+#include <simpson/verify/tex_document.hpp>
+
+#include <algorithm>
+#include <map>
+#include <optional>
+#include <set>
+
+namespace simpson::verify {
+namespace {
+
+using tokens_t = std::vector<tex_token>;
+
+struct math_environment {
+  bool aligned;  // rows with alignment points
+  bool rows;     // \\ separates rows (gather: rows without alignment points)
+  bool one_equation;  // multline: its rows are one equation's lines
+  int arguments;  // alignat{n}: one
+};
+
+const std::map<std::string, math_environment>& math_environments() {
+  static const std::map<std::string, math_environment> envs{
+      {"equation", {false, false, false, 0}},  {"equation*", {false, false, false, 0}}, {"displaymath", {false, false, false, 0}},
+      {"math", {false, false, false, 0}},      {"align", {true, true, false, 0}},       {"align*", {true, true, false, 0}},
+      {"flalign", {true, true, false, 0}},     {"flalign*", {true, true, false, 0}},    {"alignat", {true, true, false, 1}},
+      {"alignat*", {true, true, false, 1}},    {"eqnarray", {true, true, false, 0}},    {"eqnarray*", {true, true, false, 0}},
+      {"gather", {false, true, false, 0}},     {"gather*", {false, true, false, 0}},    {"multline", {false, true, true, 0}},
+      {"multline*", {false, true, true, 0}}};
+  return envs;
+}
+
+bool is_text_command(const std::string& name) {
+  static const std::set<std::string> names{"\\text", "\\textrm", "\\textit", "\\textbf", "\\textnormal", "\\mbox", "\\hbox", "\\textsf", "\\texttt"};
+  return names.count(name) > 0;
+}
+
+std::size_t skip_space_tokens(const tokens_t& t, std::size_t k) {
+  while (k < t.size() && t[k].category == tex_category::space) ++k;
+  return k;
+}
+
+/// The index after the braced group that opens at t[k] (t[k] is '{'), or none when it never closes.
+std::optional<std::size_t> group_end(const tokens_t& t, std::size_t k) {
+  int depth = 0;
+  for (std::size_t j = k; j < t.size(); ++j) {
+    if (t[j].category == tex_category::begin_group) ++depth;
+    if (t[j].category == tex_category::end_group && --depth == 0) return j + 1;
+  }
+  return std::nullopt;
+}
+
+/// \begin{name} or \end{name} at t[k]: the name and the index after it.
+std::optional<std::pair<std::string, std::size_t>> environment_at(const tokens_t& t, std::size_t k) {
+  const std::size_t open = skip_space_tokens(t, k + 1);
+  if (open >= t.size() || t[open].category != tex_category::begin_group) return std::nullopt;
+  const std::optional<std::size_t> end = group_end(t, open);
+  if (!end) return std::nullopt;
+  std::string name = tex_text(t.begin() + static_cast<std::ptrdiff_t>(open) + 1, t.begin() + static_cast<std::ptrdiff_t>(*end) - 1);
+  name.erase(std::remove(name.begin(), name.end(), ' '), name.end());
+  return std::make_pair(name, *end);
+}
+
+int line_of_offset(const std::string& text, std::size_t offset) { return line_at(text, std::min(offset, text.size())); }
+
+/// The labels in `tokens` (\label{...} at any depth).
+std::vector<std::string> labels_in(const tokens_t& tokens) {
+  std::vector<std::string> out;
+  for (std::size_t k = 0; k < tokens.size(); ++k) {
+    if (!tokens[k].is_control("\\label")) continue;
+    const std::size_t open = skip_space_tokens(tokens, k + 1);
+    if (open >= tokens.size() || tokens[open].category != tex_category::begin_group) continue;
+    const std::optional<std::size_t> end = group_end(tokens, open);
+    if (end) out.push_back(tex_text(tokens.begin() + static_cast<std::ptrdiff_t>(open) + 1, tokens.begin() + static_cast<std::ptrdiff_t>(*end) - 1));
+  }
+  return out;
+}
+
+/// The offset of the first token of `tokens` the source itself holds that is math: not a space, not
+/// inside a \label{...}, not \nonumber; the row's `fallback` when there is none.
+std::size_t first_math_offset(const tokens_t& tokens, std::size_t fallback) {
+  for (std::size_t k = 0; k < tokens.size(); ++k) {
+    const tex_token& t = tokens[k];
+    if (t.is_control("\\label")) {
+      const std::size_t open = skip_space_tokens(tokens, k + 1);
+      if (open < tokens.size() && tokens[open].category == tex_category::begin_group) {
+        if (const std::optional<std::size_t> end = group_end(tokens, open)) k = *end - 1;
+      }
+      continue;
+    }
+    if (t.category == tex_category::space || t.length == 0 || t.is_control("\\nonumber") || t.is_control("\\notag")) continue;
+    return t.offset;
+  }
+  return fallback;
+}
+
+/// Splits `body` at its top-level \\ (outside groups and environments), each with its [dimension]
+/// and * consumed.
+std::vector<tokens_t> split_rows(const tokens_t& body) {
+  std::vector<tokens_t> rows(1);
+  int depth = 0;
+  for (std::size_t k = 0; k < body.size(); ++k) {
+    const tex_token& t = body[k];
+    if (t.category == tex_category::begin_group || t.is_control("\\begin")) ++depth;
+    if (t.category == tex_category::end_group || t.is_control("\\end")) --depth;
+    if (depth == 0 && t.is_control("\\\\")) {
+      std::size_t j = k + 1;
+      if (j < body.size() && body[j].is_char('*')) ++j;
+      const std::size_t bracket = skip_space_tokens(body, j);
+      if (bracket < body.size() && body[bracket].is_char('[')) {
+        std::size_t close = bracket + 1;
+        while (close < body.size() && !body[close].is_char(']')) ++close;
+        if (close >= body.size()) throw tex_error("a '\\\\[' that is never closed", body[bracket].offset, "\\\\[");
+        j = close + 1;
+      }
+      k = j - 1;
+      rows.emplace_back();
+      continue;
+    }
+    rows.back().push_back(t);
+  }
+  // A last row of nothing but spacing (after a final \\): amsmath drops it.
+  const auto blank = [](const tokens_t& row) {
+    return std::all_of(row.begin(), row.end(), [](const tex_token& t) { return t.category == tex_category::space; });
+  };
+  if (rows.size() > 1 && blank(rows.back())) rows.pop_back();
+  return rows;
+}
+
+class scanner {
+ public:
+  scanner(const std::string& text, tex_macros& macros, std::vector<tex_region>& regions)
+      : text_(text), t_(tex_tokenize(text)), macros_(macros), regions_(regions) {}
+
+  void run() {
+    bool began = false, ended = false;
+    std::size_t k = 0;
+    while (k < t_.size()) {
+      const tex_token& tok = t_[k];
+      if (tok.category == tex_category::control || tok.category == tex_category::active) {
+        if (tok.category == tex_category::control && is_definition_command(tok.text)) {
+          k = read_definition(t_, k, macros_);
+          continue;
+        }
+        if (const tex_macro* macro = macros_.find(tok.text)) {
+          expand(k, *macro);
+          continue;
+        }
+        if (tok.is_control("\\verb")) {
+          k = after_verb(k);
+          continue;
+        }
+        if (tok.is_control("\\(") || tok.is_control("\\[")) {
+          k = region(k + 1, tok.offset, tok.text, false);
+          continue;
+        }
+        if (tok.is_control("\\begin")) {
+          const auto env = environment_at(t_, k);
+          if (!env) throw tex_error("\\begin without its environment's name in braces", tok.offset, "\\begin");
+          if (env->first == "document") began = true;
+          if (math_environments().count(env->first)) {
+            k = region(env->second, tok.offset, env->first, false);
+            continue;
+          }
+          if (env->first == "verbatim" || env->first == "comment" || env->first == "lstlisting" || env->first == "verbatim*") {
+            k = after_verbatim(env->second, env->first, tok.offset);
+            continue;
+          }
+          k = env->second;
+          continue;
+        }
+        if (tok.is_control("\\end")) {
+          const auto env = environment_at(t_, k);
+          if (env && env->first == "document") {
+            ended = true;
+            break;  // TeX reads nothing after it
+          }
+          if (env && math_environments().count(env->first)) {
+            throw tex_error("\\end{" + env->first + "} with no \\begin{" + env->first + "}", tok.offset, "\\end");
+          }
+        }
+        if (tok.is_control("\\)") || tok.is_control("\\]")) throw tex_error(tok.text + " with no math to close", tok.offset, tok.text);
+        ++k;
+        continue;
+      }
+      if (tok.category == tex_category::math_shift) {
+        const bool display = k + 1 < t_.size() && t_[k + 1].category == tex_category::math_shift;
+        k = region(k + (display ? 2 : 1), tok.offset, display ? "$$" : "$", !display);
+        continue;
+      }
+      ++k;
+    }
+    if (began && !ended) {
+      throw tex_error("the document ends without \\end{document}: truncated?", text_.empty() ? 0 : text_.size() - 1, "\\end{document}");
+    }
+  }
+
+ private:
+  void expand(std::size_t k, const tex_macro& macro) {
+    if (++expansions_ > 200000) throw tex_error("the macro " + macro.name + " expands without end", t_[k].offset, macro.name);
+    expand_at(t_, k, macro);
+  }
+
+  std::size_t after_verb(std::size_t k) {
+    // \verb|...|: the tokens up to the delimiter again, whatever they are.
+    if (k + 1 >= t_.size()) return k + 1;
+    const std::string delimiter = t_[k + 1].text;
+    std::size_t j = k + 2;
+    while (j < t_.size() && t_[j].text != delimiter) ++j;
+    return j + 1;
+  }
+
+  std::size_t after_verbatim(std::size_t k, const std::string& name, std::size_t opener) {
+    for (; k < t_.size(); ++k) {
+      if (!t_[k].is_control("\\end")) continue;
+      const auto env = environment_at(t_, k);
+      if (env && env->first == name) return env->second;
+    }
+    throw tex_error("\\begin{" + name + "} is never closed: truncated?", opener, "\\begin{" + name + "}");
+  }
+
+  /// The math from t_[k] to its closer; returns the index after the closer.
+  std::size_t region(std::size_t k, std::size_t opener, const std::string& environment, bool inline_dollar) {
+    tex_region r;
+    r.environment = environment;
+    r.opener = opener;
+    r.display = !(inline_dollar || environment == "\\(" || environment == "math");
+    const auto env = math_environments().find(environment);
+    if (env != math_environments().end()) {
+      r.aligned = env->second.aligned;
+      for (int a = 0; a < env->second.arguments; ++a) {  // alignat{2}
+        const std::size_t open = skip_space_tokens(t_, k);
+        if (open >= t_.size() || t_[open].category != tex_category::begin_group) {
+          throw tex_error("\\begin{" + environment + "} without its argument", opener, environment);
+        }
+        k = *group_end(t_, open);
+      }
+    }
+    const std::string what = environment == "$" ? "the formula '$'" : environment == "$$" ? "the display '$$'" : environment == "\\(" ? "the formula '\\('"
+                             : environment == "\\[" ? "the display '\\['" : "\\begin{" + environment + "}";
+    r.begin = k < t_.size() ? t_[k].offset : text_.size();
+    tokens_t body;
+    int same = 0;  // nested \begin{environment}s
+    for (;;) {
+      if (k >= t_.size()) throw tex_error(what + " opened here is never closed: truncated?", opener, environment);
+      const tex_token& tok = t_[k];
+      if (tok.category == tex_category::control || tok.category == tex_category::active) {
+        if (tok.category == tex_category::control && is_definition_command(tok.text)) {
+          k = read_definition(t_, k, macros_);
+          continue;
+        }
+        if (const tex_macro* macro = macros_.find(tok.text)) {
+          expand(k, *macro);
+          continue;
+        }
+        if (is_text_command(tok.text)) {  // \text{... $x$ ...}: its group as it is, math shifts and all
+          const std::size_t open = skip_space_tokens(t_, k + 1);
+          if (open < t_.size() && t_[open].category == tex_category::begin_group) {
+            const std::optional<std::size_t> end = group_end(t_, open);
+            if (!end) throw tex_error(tok.text + "'s '{' is never closed", tok.offset, tok.text);
+            body.insert(body.end(), t_.begin() + static_cast<std::ptrdiff_t>(k), t_.begin() + static_cast<std::ptrdiff_t>(*end));
+            k = *end;
+            continue;
+          }
+        }
+        if ((tok.is_control("\\)") && environment == "\\(") || (tok.is_control("\\]") && environment == "\\[")) {
+          r.end = tok.offset;
+          finish(r, body);
+          return k + 1;
+        }
+        if (tok.is_control("\\begin") || tok.is_control("\\end")) {
+          const auto e = environment_at(t_, k);
+          if (e && e->first == environment) {
+            if (tok.is_control("\\begin")) {
+              ++same;
+            } else if (same-- == 0) {
+              r.end = tok.offset;
+              finish(r, body);
+              return e->second;
+            }
+          }
+          if (e && tok.is_control("\\end") && e->first == "document") {
+            throw tex_error(what + " opened here is never closed (\\end{document} comes first)", opener, environment);
+          }
+        }
+      }
+      if (tok.category == tex_category::math_shift) {
+        if (environment == "$") {
+          r.end = tok.offset;
+          finish(r, body);
+          return k + 1;
+        }
+        if (environment == "$$" && k + 1 < t_.size() && t_[k + 1].category == tex_category::math_shift) {
+          r.end = tok.offset;
+          finish(r, body);
+          return k + 2;
+        }
+        throw tex_error("a '$' inside " + what + " (opened on line " + std::to_string(line_of_offset(text_, opener)) + ")", tok.offset, "$");
+      }
+      if (tok.category == tex_category::paragraph) {
+        throw tex_error("a blank line inside " + what + " (opened on line " + std::to_string(line_of_offset(text_, opener)) +
+                            "): a closing '$' or \\end missing?",
+                        tok.offset, "\\par");
+      }
+      body.push_back(tok);
+      ++k;
+    }
+  }
+
+  void finish(tex_region& r, const tokens_t& body) {
+    const auto env = math_environments().find(r.environment);
+    std::vector<tokens_t> rows{body};
+    if (env != math_environments().end() && env->second.rows) {
+      rows = split_rows(body);
+      if (env->second.one_equation) {  // multline: one equation over several lines
+        tokens_t joined;
+        for (const tokens_t& row : rows) joined.insert(joined.end(), row.begin(), row.end());
+        rows = {joined};
+      }
+    }
+    for (tokens_t& tokens : rows) {
+      tex_row row;
+      row.begin = tokens.empty() ? r.begin : tokens.front().offset;
+      row.end = tokens.empty() ? r.end : tokens.back().offset + tokens.back().length;
+      row.labels = labels_in(tokens);
+      row.line = r.display ? line_of_offset(text_, first_math_offset(tokens, r.begin)) : line_of_offset(text_, r.opener);
+      row.tokens = std::move(tokens);
+      r.rows.push_back(std::move(row));
+    }
+    regions_.push_back(std::move(r));
+  }
+
+  const std::string& text_;
+  tokens_t t_;
+  tex_macros& macros_;
+  std::vector<tex_region>& regions_;
+  long expansions_ = 0;
+};
+
+// --- equations
+
+bool is_relation(const tex_node& n) { return n.kind == tex_node_kind::atom && n.atom_class == tex_class::rel; }
+bool is_comma(const tex_node& n) { return n.kind == tex_node_kind::atom && n.atom_class == tex_class::punct && n.text == ","; }
+bool is_blank(const tex_node& n) { return n.kind == tex_node_kind::label || (n.kind == tex_node_kind::group && n.children.empty()); }
+
+/// The parts of a list at its top-level commas (outside parentheses and brackets).
+std::vector<tex_list> at_commas(const tex_list& list) {
+  std::vector<tex_list> parts(1);
+  int depth = 0;
+  for (const tex_node& n : list) {
+    if (n.kind == tex_node_kind::atom && n.atom_class == tex_class::open) ++depth;
+    if (n.kind == tex_node_kind::atom && n.atom_class == tex_class::close) --depth;
+    if (depth == 0 && is_comma(n)) {
+      parts.emplace_back();
+      continue;
+    }
+    parts.back().push_back(n);
+  }
+  return parts;
+}
+
+/// The environment a list holds alone (spacing and labels aside), its rows equations: a system
+/// (array, aligned, gathered, split, alignedat), alone or in \left\{ ... \right.; none otherwise.
+const tex_node* system_in(const tex_list& list) {
+  std::vector<const tex_node*> nodes;
+  for (const tex_node& n : list) {
+    if (!is_blank(n)) nodes.push_back(&n);
+  }
+  if (nodes.size() != 1) return nullptr;
+  const tex_node* n = nodes.front();
+  if (n->kind == tex_node_kind::delimited && n->close == ".") return system_in(n->children);
+  static const std::set<std::string> systems{"array", "aligned", "gathered", "split", "alignedat"};
+  if (n->kind != tex_node_kind::environment || !systems.count(n->text)) return nullptr;
+  for (const auto& row : n->rows) {
+    for (const tex_node& cell : row) {
+      if (std::any_of(cell.children.begin(), cell.children.end(), is_relation)) return n;
+    }
+  }
+  return nullptr;
+}
+
+/// Every token index of `list` moved by `base` (a row's tokens placed after the rows before it).
+void shift_tokens(tex_list& list, std::size_t base) {
+  for (tex_node& n : list) {
+    n.first_token += base;
+    n.last_token += base;
+    shift_tokens(n.children, base);
+    shift_tokens(n.sup, base);
+    shift_tokens(n.sub, base);
+    for (auto& r : n.rows) shift_tokens(r, base);
+  }
+}
+
+struct equation_part {
+  tex_list nodes;
+  std::vector<std::string> texts;  // the TeX of each row it was joined from
+};
+
+std::string text_of_nodes(const tex_list& nodes, const tokens_t& tokens) {
+  std::size_t first = std::string::npos, last = 0;
+  for (const tex_node& n : nodes) {
+    if ((n.last_token == 0 && n.first_token == 0) || n.kind == tex_node_kind::label) continue;
+    first = std::min(first, n.first_token);
+    last = std::max(last, n.last_token);
+  }
+  if (first == std::string::npos || last > tokens.size()) return "";
+  return folded_space(tex_text(tokens.begin() + static_cast<std::ptrdiff_t>(first), tokens.begin() + static_cast<std::ptrdiff_t>(last)));
+}
+
+/// Appends `part` to `out`, or to the equation above when it starts with a relation ("= ..."
+/// continues it: a chain over rows).
+void append_part(equation_part part, std::vector<equation_part>& out) {
+  const auto first = std::find_if(part.nodes.begin(), part.nodes.end(), [](const tex_node& n) { return !is_blank(n); });
+  if (!out.empty() && first != part.nodes.end() && is_relation(*first)) {
+    out.back().nodes.insert(out.back().nodes.end(), part.nodes.begin(), part.nodes.end());
+    out.back().texts.insert(out.back().texts.end(), part.texts.begin(), part.texts.end());
+  } else {
+    out.push_back(std::move(part));
+  }
+}
+
+void add_parts(const tex_list& list, const tokens_t& tokens, std::vector<equation_part>& out) {
+  if (const tex_node* system = system_in(list)) {
+    for (const auto& row : system->rows) {
+      tex_list joined;
+      for (const tex_node& cell : row) joined.insert(joined.end(), cell.children.begin(), cell.children.end());
+      add_parts(joined, tokens, out);
+    }
+    return;
+  }
+  for (tex_list& part : at_commas(list)) {
+    // A last period, comma, colon or semicolon is the sentence's.
+    while (!part.empty() && (is_blank(part.back()) || (part.back().kind == tex_node_kind::atom &&
+                                                       (part.back().text == "." || part.back().text == ":" || part.back().text == ";")))) {
+      part.pop_back();
+    }
+    if (part.empty()) continue;
+    append_part({part, {text_of_nodes(part, tokens)}}, out);
+  }
+}
+
+tex_equation equation_of(const equation_part& part, const tokens_t& tokens) {
+  tex_equation e;
+  for (const std::string& t : part.texts) e.tex += (e.tex.empty() || t.empty() ? "" : " ") + t;
+  e.sides.emplace_back();
+  int depth = 0;
+  for (const tex_node& n : part.nodes) {
+    if (n.kind == tex_node_kind::atom && n.atom_class == tex_class::open) ++depth;
+    if (n.kind == tex_node_kind::atom && n.atom_class == tex_class::close) --depth;
+    if (depth == 0 && is_relation(n)) {
+      e.relations.push_back(n.text);
+      e.sides.emplace_back();
+      continue;
+    }
+    if (!is_blank(n)) e.sides.back().push_back(n);
+  }
+  for (std::size_t s = 0; s < e.sides.size(); ++s) {
+    if (e.sides[s].empty()) {
+      const std::size_t at = part.nodes.empty() ? 0 : part.nodes.front().offset;
+      throw tex_error(s == 0 ? "an equation that starts with '" + e.relations.front() + "' and continues none"
+                             : "an equation with nothing after its '" + e.relations[s - 1] + "'",
+                      at, s == 0 ? e.relations.front() : e.relations[s - 1]);
+    }
+    e.side_tex.push_back(text_of_nodes(e.sides[s], tokens));
+  }
+  return e;
+}
+
+}  // namespace
+
+tex_document::tex_document(const paper_source& source) : origin_(source.origin), text_(source.raw.empty() ? source.text : source.raw) {
+  scanner(text_, macros_, regions_).run();
+}
+
+tex_document read_document(const paper_source& source, const std::string& what) {
+  try {
+    return tex_document(source);
+  } catch (const tex_error& e) {
+    throw std::invalid_argument(what + " '" + source.origin + "', " + describe(e, source.raw.empty() ? source.text : source.raw));
+  }
+}
+
+tex_document::located tex_document::labelled(const std::string& label) const {
+  std::optional<located> found;
+  for (const tex_region& r : regions_) {
+    for (std::size_t row = 0; row < r.rows.size(); ++row) {
+      for (const std::string& l : r.rows[row].labels) {
+        if (l != label) continue;
+        if (found) throw std::invalid_argument("\\label{" + label + "} twice");
+        found = located{&r, r.rows.size() > 1 ? static_cast<int>(row) : -1};
+      }
+    }
+  }
+  if (!found) throw std::invalid_argument("no \\label{" + label + "}");
+  return *found;
+}
+
+const tex_region* tex_document::display_after(std::size_t offset) const {
+  for (const tex_region& r : regions_) {
+    if (r.display && r.opener >= offset) return &r;
+  }
+  return nullptr;
+}
+
+const tex_region* tex_document::inline_at(std::size_t offset) const {
+  for (const tex_region& r : regions_) {
+    if (!r.display && r.opener <= offset && offset < r.end) return &r;
+  }
+  for (const tex_region& r : regions_) {
+    if (!r.display && r.opener >= offset) return &r;
+  }
+  return nullptr;
+}
+
+std::vector<tex_equation> equations_of(const tex_region& region, int row) {
+  // Each row's parts, in order, a row that starts with a relation continuing the one above; an
+  // equation's TeX and sides refer to the tokens of the rows it spans.
+  std::vector<tex_equation> out;
+  std::vector<equation_part> parts;
+  tokens_t all;  // the rows' tokens, one after the other: the parts' token indices point into it
+  for (std::size_t k = 0; k < region.rows.size(); ++k) {
+    if (row >= 0 && static_cast<int>(k) != row) continue;
+    const std::size_t base = all.size();
+    all.insert(all.end(), region.rows[k].tokens.begin(), region.rows[k].tokens.end());
+    tex_list list = parse_tex_tree(region.rows[k].tokens, {region.aligned});
+    shift_tokens(list, base);
+    add_parts(list, all, parts);
+  }
+  for (const equation_part& p : parts) out.push_back(equation_of(p, all));
+  return out;
+}
+
+int line_of(const tex_region& region, int row) {
+  if (region.rows.empty()) return 0;
+  return region.rows[row < 0 ? 0 : static_cast<std::size_t>(row)].line;
+}
+
+std::string describe(const tex_error& e, const std::string& text) {
+  std::string out = "line " + std::to_string(line_at(text, std::min(e.offset(), text.size()))) + ": " + e.what();
+  if (!e.hint().empty()) out += " (" + e.hint() + ")";
+  return out;
+}
+
+}  // namespace simpson::verify
