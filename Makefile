@@ -58,7 +58,7 @@ bench: configure
 # time than it saves run time.
 # It is the one other compile of the suite, and each of its two uses needs it:
 #   - `make sanitize` runs the tests of `make test` in it;
-#   - `make fuzz` runs the libFuzzer targets of the scene parser and the claims-file reader, built in
+#   - `make fuzz` runs the libFuzzer targets of the TeX reader, the scene parser and the claims-file reader, built in
 #     the same tree (libFuzzer needs clang): only scene.cpp and claims_file.cpp get libFuzzer's
 #     coverage instrumentation, the rest is reused as it is.
 # The Release build of `make test` is not replaced by it: that is what users build (GCC, -O2, whose
@@ -125,12 +125,14 @@ sanitize: sanitize-build
 # process each, so one core each); the targets are built by sanitize-build. Each one's report is
 # printed whole after both have stopped, the first's before the second's.
 fuzz: sanitize-build
-	@scripts/run-fuzz $(SANITIZE_BUILD)/bin/scene_parser_fuzz 25 >$(SANITIZE_BUILD)/fuzz-scene.out 2>&1 & scene=$$!; \
-	  scripts/run-fuzz $(SANITIZE_BUILD)/bin/claims_file_fuzz 20 >$(SANITIZE_BUILD)/fuzz-claims.out 2>&1; claims=$$?; \
-	  wait $$scene; scene=$$?; \
+	@scripts/run-fuzz $(SANITIZE_BUILD)/bin/tex_reader_fuzz 25 >$(SANITIZE_BUILD)/fuzz-tex.out 2>&1 & tex=$$!; \
+	  scripts/run-fuzz $(SANITIZE_BUILD)/bin/scene_parser_fuzz 12 >$(SANITIZE_BUILD)/fuzz-scene.out 2>&1; scene=$$?; \
+	  scripts/run-fuzz $(SANITIZE_BUILD)/bin/claims_file_fuzz 12 >$(SANITIZE_BUILD)/fuzz-claims.out 2>&1; claims=$$?; \
+	  wait $$tex; tex=$$?; \
+	  echo "fuzz: TeX reader (exit $$tex):"; cat $(SANITIZE_BUILD)/fuzz-tex.out; \
 	  echo "fuzz: scene parser (exit $$scene):"; cat $(SANITIZE_BUILD)/fuzz-scene.out; \
 	  echo "fuzz: claims-file reader (exit $$claims):"; cat $(SANITIZE_BUILD)/fuzz-claims.out; \
-	  [ $$scene = 0 ] && [ $$claims = 0 ]
+	  [ $$tex = 0 ] && [ $$scene = 0 ] && [ $$claims = 0 ]
 
 # What CI runs (.ci/run, which times each phase): the tests, then the same under sanitizers, then the fuzzer.
 ci: test sanitize fuzz

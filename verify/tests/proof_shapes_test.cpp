@@ -8,6 +8,7 @@
 #include "proof_shapes.hpp"
 
 #include <simpson/verify/claims_file.hpp>
+#include <simpson/verify/consequences.hpp>
 #include <simpson/verify/formula_reference.hpp>
 #include <simpson/verify/ledger.hpp>
 #include <simpson/verify/paper_reading.hpp>
@@ -28,7 +29,7 @@ paper_source document(const std::string& text) { return {"test.tex", without_com
 
 // ---- macros ----
 
-std::string expanded(const std::string& tex, const tex_macros& macros) { return tex_text(expand_all(tex_tokenize(tex), macros)); }
+std::string macros_expanded(const std::string& tex, const tex_macros& macros) { return tex_text(expand_all(tex_tokenize(tex), macros)); }
 
 TEST(TexMacros, DefinitionsWithArgumentsExpandAsTeXWould) {
   const tex_macros macros = defined_macros(R"(\newcommand{\om}{\omega} \newcommand\half[1]{\frac{#1}{2}}
@@ -36,10 +37,10 @@ TEST(TexMacros, DefinitionsWithArgumentsExpandAsTeXWould) {
   ASSERT_EQ(macros.all().size(), 3u);
   EXPECT_EQ(macros.find("\\half")->arguments, 1);
   // The arguments' tokens go in as they are, as TeX puts them: \sq x is x^2, \half{\om h} \frac{\Omega h}{2}.
-  EXPECT_EQ(expanded(R"(\half{\om h} + \sq x)", macros), R"(\frac{\Omega h}{2} + x^2)");
-  EXPECT_EQ(expanded(R"(\omh)", macros), R"(\omh)");  // not \om followed by h
-  EXPECT_THROW(expanded(R"(\half)", macros), tex_error);
-  EXPECT_THROW(expanded(R"(\a)", defined_macros(R"(\newcommand{\a}{\a x})")), tex_error);
+  EXPECT_EQ(macros_expanded(R"(\half{\om h} + \sq x)", macros), R"(\frac{\Omega h}{2} + x^2)");
+  EXPECT_EQ(macros_expanded(R"(\omh)", macros), R"(\omh)");  // not \om followed by h
+  EXPECT_THROW(macros_expanded(R"(\half)", macros), tex_error);
+  EXPECT_THROW(macros_expanded(R"(\a)", defined_macros(R"(\newcommand{\a}{\a x})")), tex_error);
   EXPECT_THROW(defined_macros(R"(\newcommand{\b}[12]{x})"), tex_error);
 }
 
@@ -50,19 +51,19 @@ TEST(TexMacros, ADefWithDelimitersExpandsAsTeXDoes) {
 \def\section*#1{} \newcommand{\dd}{{\rm d}} \def\pair(#1,#2){[#1;#2]})");
   ASSERT_EQ(macros.all().size(), 4u);
   EXPECT_EQ(macros.find("\\section")->arguments, 1);
-  EXPECT_EQ(expanded(R"(\dd q)", macros), R"({\rm d} q)");
-  EXPECT_EQ(expanded(R"(a\section*{x}b)", macros), "ab");
-  EXPECT_EQ(expanded(R"(\pair(u,{v,w}))", macros), "[u;v,w]");
-  EXPECT_THROW(expanded(R"(\section{x})", macros), tex_error);
+  EXPECT_EQ(macros_expanded(R"(\dd q)", macros), R"({\rm d} q)");
+  EXPECT_EQ(macros_expanded(R"(a\section*{x}b)", macros), "ab");
+  EXPECT_EQ(macros_expanded(R"(\pair(u,{v,w}))", macros), "[u;v,w]");
+  EXPECT_THROW(macros_expanded(R"(\section{x})", macros), tex_error);
   EXPECT_THROW(defined_macros(R"(\def\x*#1)"), tex_error);  // no body
 }
 
 TEST(TexMacros, AnOptionalFirstArgumentAndDeclaredOperators) {
   const tex_macros macros = defined_macros(R"(\newcommand{\pd}[2][t]{\frac{\partial #2}{\partial #1}} \DeclareMathOperator{\tr}{tr}
 \let\phi\varphi)");
-  EXPECT_EQ(expanded(R"(\pd{q} \pd[x]{V})", macros), R"(\frac{\partial q}{\partial t} \frac{\partial V}{\partial x})");
-  EXPECT_EQ(expanded(R"(\tr\Phi)", macros), R"(\operatorname{tr}\Phi)");
-  EXPECT_EQ(expanded(R"(\phi)", macros), R"(\varphi)");
+  EXPECT_EQ(macros_expanded(R"(\pd{q} \pd[x]{V})", macros), R"(\frac{\partial q}{\partial t} \frac{\partial V}{\partial x})");
+  EXPECT_EQ(macros_expanded(R"(\tr\Phi)", macros), R"(\operatorname{tr}\Phi)");
+  EXPECT_EQ(macros_expanded(R"(\phi)", macros), R"(\varphi)");
 }
 
 // ---- references ----
@@ -343,7 +344,7 @@ title = "Shapes under test"
 positive = ['m', '\omega', 'h']
 real = ['q', 'p', 'q_0', 'q_1', 'q_m', 'p_0', 'p_1', 'q_{j-1}', 'q_j', 'q_{j+1}', 'a', 'b', 'k', 'x', 'r', 'c', '\theta', 'p_j', 'p_{j+1}', 't', 'T', 'N', 'j',
         'u', 'v', 'w', 's']
-functions = ['\psi', 'g', 'V', 'q', 'L_d', '\varphi_0', '\varphi_1']
+functions = ['\psi', 'f', 'V', 'q', 'L_d', '\varphi_0', '\varphi_1']
 )";
 
 std::string record(const std::string& id, const std::string& shape, const std::string& with) {
@@ -367,6 +368,46 @@ class ShapesOnADocument : public ::testing::Test {
 
   paper_reading reading_;
 };
+
+// Consequences traced: an erratum's corrected formula put in where another claim reads it. The
+// claim that then holds follows from it; a typed link the derivation contradicts is a harness fault.
+TEST_F(ShapesOnADocument, ConsequencesAreTracedAndTypedLinksChecked) {
+  const std::string records = record("misprint", "identity", R"({ lhs = "sum", rhs = "expanded" })") +
+                              record("reads-it", "identity", R"({ lhs = "expanded", rhs = "$(a + b)^2$" })") +
+                              record("still-wrong", "identity", R"({ lhs = "expanded", rhs = "$a^3$" })");
+  // The document with (expanded) misprinted a^2 + b^2; each record judged as printed, then traced.
+  const auto judge = [&](const std::string& file) {
+    use_claims_file(declarations + file, "test.toml");
+    std::string text = shape_document;
+    text.replace(text.find("t = a^2 + 2 a b + b^2"), 21, "t = a^2 + b^2");
+    reading_ = read_note(document(text));
+    check_claims_file_formulas(reading_.source);
+    run_context ctx;
+    ctx.paper = &reading_;
+    std::vector<claim_result> results;
+    std::vector<const claim*> claims;
+    for (const claim& c : ledger()) {
+      claims.push_back(&c);
+      results.push_back(check_claim(c, ctx));
+    }
+    std::vector<const claim_result*> pointers;
+    for (const claim_result& r : results) pointers.push_back(&r);
+    return std::make_pair(results, trace_consequences(claims, pointers, ctx));
+  };
+  // 'misprint' is an erratum; 'reads-it' fails as printed and holds with the corrected (expanded);
+  // 'still-wrong' does not, and follows from nothing.
+  const auto [results, traced] = judge(records);
+  EXPECT_EQ(results[0].outcome, verdict::erratum);
+  EXPECT_EQ(results[1].outcome, verdict::erratum);
+  ASSERT_EQ(traced.size(), 3u);
+  EXPECT_FALSE(traced[0]);
+  ASSERT_TRUE(traced[1]);
+  EXPECT_EQ(traced[1]->cause, "misprint");
+  EXPECT_EQ(traced[1]->corrected, std::vector<std::string>{"(expanded)"});
+  EXPECT_FALSE(traced[2]);
+  // A record that types 'still-wrong' as following from 'misprint': the derivation contradicts it.
+  EXPECT_THROW(judge(records + "follows_from = \"misprint\"\n"), std::logic_error);
+}
 
 TEST_F(ShapesOnADocument, Identity) {
   const claim_result holds = run("identity", R"({ lhs = "sum", rhs = "expanded" })");
@@ -481,7 +522,7 @@ TEST_F(ShapesOnADocument, InvarianceSystem) {
   EXPECT_FALSE(wrong.refutation.empty()) << "the printed rows refuted in Coq";
   EXPECT_NE(wrong.certificate.find("under_test_derived"), std::string::npos) << "the derived rows certified: " << wrong.certificate;
   // The last side, 0, is not the system.
-  EXPECT_EQ(run("invariance-system", R"({ system = "invsys", )" + rest + " }").outcome, verdict::fails);
+  EXPECT_EQ(run("invariance-system", R"({ system = "invsys", )" + rest + " }").outcome, verdict::undecided);
 }
 
 // The determinant of the system a form's invariance asks of its coefficients (Section 7's det Gamma),
@@ -503,7 +544,7 @@ TEST_F(ShapesOnADocument, InvarianceDeterminant) {
   EXPECT_NE(wrong.certificate.find("under_test_derived"), std::string::npos) << wrong.certificate;
   // A form with two coefficients for three monomials: no square system, no determinant.
   EXPECT_EQ(run("invariance-determinant", R"({ printed = 'inline:Its determinant is', form = 'inline:and a form', map = 'inline:A square map', state = ['q', 'p'], unknowns = ['a', 'b'] })").outcome,
-            verdict::fails);
+            verdict::undecided);
 }
 
 // "det G vanishes when us - vw = 1", for the printed system's determinant. The misprinted system
@@ -524,9 +565,9 @@ TEST_F(ShapesOnADocument, InvarianceSingular) {
   EXPECT_EQ(wrong.correction.rfind("the system as derived (the rows invariance-system derives) is singular there", 0), 0u) << wrong.correction;
   EXPECT_FALSE(wrong.refutation.empty());
   EXPECT_NE(wrong.certificate.find("under_test_derived"), std::string::npos) << wrong.certificate;
-  // A condition not linear in the symbol it is solved for: nothing is put in, it fails.
+  // A condition not linear in the symbol it is solved for: nothing is put in, the shape cannot judge it (undecided, never a finding).
   const claim_result circle = run("invariance-singular", R"({ system = "invsys:side2", conditions = ['inline:on a circle'], solve_for = ['s'], )" + rest + " }");
-  EXPECT_EQ(circle.outcome, verdict::fails);
+  EXPECT_EQ(circle.outcome, verdict::undecided);
   EXPECT_NE(circle.note.find("is not linear in s"), std::string::npos) << circle.note;
 }
 
@@ -562,12 +603,12 @@ TEST_F(ShapesOnADocument, InvarianceKernel) {
   const claim_result obtains = run("invariance-kernel", R"({ system = "invsys:side2", obtains = ['inline:not only'], )" + on + rest + " }");
   EXPECT_EQ(obtains.outcome, verdict::fails) << obtains.note;
   EXPECT_NE(obtains.note.find("c = 0 does not hold"), std::string::npos) << obtains.note;
-  // A form not linear in its coefficients: no one value of them, it fails (not a harness fault).
+  // A form not linear in its coefficients: no one value of them, undecided (not a harness fault, not a finding).
   const std::string squared_form = R"(form = '$\frac{1}{2} a^2 q^2 + b q p + \frac{1}{2} c p^2$', map = 'inline:A square map', state = ['q', 'p'], unknowns = ['a', 'b', 'c'])";
-  EXPECT_EQ(run("invariance-kernel", R"({ system = "invsys:side2", )" + on + squared_form + " }").outcome, verdict::fails);
+  EXPECT_EQ(run("invariance-kernel", R"({ system = "invsys:side2", )" + on + squared_form + " }").outcome, verdict::undecided);
   // Not the form for any coefficients.
   const std::string cube = R"(printed = 'inline:a cube', conditions = ['inline:With equal diagonal', 'inline:Of unit determinant'], solve_for = ['s', 'w'], )";
-  EXPECT_EQ(run("invariance-kernel", R"({ system = "invsys:side2", )" + cube + rest + " }").outcome, verdict::fails);
+  EXPECT_EQ(run("invariance-kernel", R"({ system = "invsys:side2", )" + cube + rest + " }").outcome, verdict::undecided);
 }
 
 TEST_F(ShapesOnADocument, EulerLagrange) {
@@ -602,7 +643,7 @@ TEST_F(ShapesOnADocument, StabilityInterval) {
     EXPECT_NE(wrong.certificate.find("0 < (((-1) * x) + 4)"), std::string::npos) << wrong.certificate;
   }
   const claim_result not_det_one = run("stability-interval", R"({ map = "mapwrong", variable = '$\omega h$', condition = "inline:Stable for" })");
-  EXPECT_EQ(not_det_one.outcome, verdict::fails);
+  EXPECT_EQ(not_det_one.outcome, verdict::undecided);
 }
 
 TEST_F(ShapesOnADocument, DiscreteMap) {
@@ -621,7 +662,7 @@ TEST_F(ShapesOnADocument, DiscreteMap) {
   // constant instead would leave it in the map.
   const claim_result internal = run("discrete-map", "{ map = \"free\", lagrangian = \"ldm\", internal = ['q_m'], " + ends + " }");
   EXPECT_EQ(internal.outcome, verdict::holds) << internal.note << internal.evidence.dump();
-  EXPECT_EQ(run("discrete-map", "{ map = \"free\", lagrangian = \"ldm\", " + ends + " }").outcome, verdict::fails);
+  EXPECT_EQ(run("discrete-map", "{ map = \"free\", lagrangian = \"ldm\", " + ends + " }").outcome, verdict::undecided);
 }
 
 TEST_F(ShapesOnADocument, Truncation) {
@@ -949,10 +990,10 @@ TEST_F(ShapesOnADocument, Linear) {
 }
 
 TEST_F(ShapesOnADocument, AFunctionTheFileDeclares) {
-  // g is declared a function: g(q^2) is applied, its derivative the chain rule's (V's is the reader's own).
-  const claim_result chain = run("derivative", R"({ function = '$g(q^2)$', variable = ['q'], printed = '$2 q {{\partial g}\over{\partial q}}(q^2)$' })");
+  // f is declared a function: f(q^2) is applied, its derivative the chain rule's.
+  const claim_result chain = run("derivative", R"({ function = '$f(q^2)$', variable = ['q'], printed = '$2 q {{\partial f}\over{\partial q}}(q^2)$' })");
   EXPECT_EQ(chain.outcome, verdict::holds) << chain.note << chain.evidence.dump();
-  EXPECT_EQ(run("derivative", R"({ function = '$g(q^2)$', variable = ['q'], printed = '$q {{\partial g}\over{\partial q}}(q^2)$' })").outcome,
+  EXPECT_EQ(run("derivative", R"({ function = '$f(q^2)$', variable = ['q'], printed = '$q {{\partial f}\over{\partial q}}(q^2)$' })").outcome,
             verdict::erratum);
 }
 
@@ -1021,11 +1062,11 @@ TEST_F(ShapesOnADocument, Characteristic) {
   EXPECT_EQ(run("characteristic", "{ " + scheme + R"(, printed = "inline:With the constant:lhs" })").outcome, verdict::erratum);
   // c named unprinted but printed as a number: not one whole coefficient of the polynomial.
   const claim_result no_hole = run("characteristic", "{ " + scheme + R"(, printed = "inline:With the constant:lhs", unprinted = ['c'] })");
-  EXPECT_EQ(no_hole.outcome, verdict::fails);
+  EXPECT_EQ(no_hole.outcome, verdict::undecided);
   EXPECT_NE(no_hole.note.find("The unprinted c is not one whole coefficient"), std::string::npos) << no_hole.note;
   // Not a three-term scheme in the sequence given.
   EXPECT_EQ(run("characteristic", R"({ scheme = "sv:lhs", sequence = ['q_0', 'q_j', 'q_1'], root = ['r'], printed = "inline:Its roots solve:lhs", unprinted = ['c'] })").outcome,
-            verdict::fails);
+            verdict::undecided);
 }
 
 // The signs of a printed product's factors on a printed interval, against a sentence. Q's two factors

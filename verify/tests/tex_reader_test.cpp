@@ -19,17 +19,17 @@ ex symbol_of(const std::string& name) { return paper_symbols()[name]; }
 
 /// A note's declarations: V, f, L and psi applied; q a state (q(t) and dq/dt).
 const tex_declarations& note_declarations() {
-  static const tex_declarations declared{{"V", "f", "L", "psi", "q", "Phi"}, {"q", "h", "m", "omega", "t", "x", "p", "r"}};
+  static const tex_declarations declared{{"V", "f", "L", "psi", "q"}, {"q", "h", "m", "omega", "t", "x", "p", "r", "Phi"}};
   return declared;
 }
 
-ex read(const std::string& tex, const tex_declarations& declared = note_declarations()) { return read_tex(tex, declared, paper_symbols()); }
+ex reading_of(const std::string& tex, const tex_declarations& declared = note_declarations()) { return read_tex(tex, declared, paper_symbols()); }
 
-bool same(const ex& a, const ex& b) { return GiNaC::normal((a - b).evalm()).is_zero(); }
+bool equal_values(const ex& a, const ex& b) { return GiNaC::normal((a - b).evalm()).is_zero(); }
 
-std::string refusal(const std::string& tex, const tex_declarations& declared = note_declarations()) {
+std::string why_refused(const std::string& tex, const tex_declarations& declared = note_declarations()) {
   try {
-    read(tex, declared);
+    reading_of(tex, declared);
   } catch (const tex_error& e) {
     return std::string(e.what()) + " (" + e.hint() + ")";
   }
@@ -38,90 +38,93 @@ std::string refusal(const std::string& tex, const tex_declarations& declared = n
 
 TEST(TexReader, ArgumentsAreGrabbedAsTeXGrabsThem) {
   const ex h = symbol_of("h"), m = symbol_of("m"), x = symbol_of("x");
-  EXPECT_TRUE(same(read("\\frac12"), ex(1) / 2));
-  EXPECT_TRUE(same(read("\\sqrt2"), GiNaC::sqrt(ex(2))));
-  EXPECT_TRUE(same(read("x^\\frac12"), GiNaC::sqrt(x)));
-  EXPECT_TRUE(same(read("\\frac1{2m}"), 1 / (2 * m)));
-  EXPECT_TRUE(same(read("h^24"), 4 * h * h));  // one token: h squared, then 4
-  EXPECT_TRUE(same(read("{1 \\over 2} h"), h / 2));
-  EXPECT_TRUE(same(read("\\tfrac{h}{2} + \\dfrac{h}{2}"), h));
-  EXPECT_TRUE(same(read("\\sqrt[3]{8}"), 2));
-  EXPECT_TRUE(same(read("1.57"), ex(157) / 100));
-  EXPECT_TRUE(same(read("12^2"), 144));
+  EXPECT_TRUE(equal_values(reading_of("\\frac12"), ex(1) / 2));
+  EXPECT_TRUE(equal_values(reading_of("\\sqrt2"), GiNaC::sqrt(ex(2))));
+  EXPECT_TRUE(equal_values(reading_of("x^\\frac12"), GiNaC::sqrt(x)));
+  EXPECT_TRUE(equal_values(reading_of("\\frac1{2m}"), 1 / (2 * m)));
+  EXPECT_TRUE(equal_values(reading_of("h^24"), 4 * h * h));  // one token: h squared, then 4
+  EXPECT_TRUE(equal_values(reading_of("{1 \\over 2} h"), h / 2));
+  EXPECT_TRUE(equal_values(reading_of("\\tfrac{h}{2} + \\dfrac{h}{2}"), h));
+  EXPECT_TRUE(equal_values(reading_of("\\sqrt[3]{8}"), 2));
+  EXPECT_TRUE(equal_values(reading_of("1.57"), ex(157) / 100));
+  EXPECT_TRUE(equal_values(reading_of("12^2"), 144));
 }
 
 TEST(TexReader, SpacingStyleAndSizeAreConsumedByTheirRules) {
   const ex h = symbol_of("h"), t = symbol_of("t");
-  EXPECT_TRUE(same(read("\\displaystyle 2 \\, h \\; \\! \\quad + \\qquad \\left( h \\right) \\Big( h \\Big) \\bigl[ h \\bigr]"), 2 * h + h * h * h));
-  EXPECT_TRUE(same(read("h \\kern 3mu \\hspace{2pt} \\vspace*{-7pt} h \\mkern-1.5mu"), h * h));
-  EXPECT_TRUE(same(read("h \\cdot t \\times 2"), 2 * h * t));
+  EXPECT_TRUE(equal_values(reading_of("\\displaystyle 2 \\, h \\; \\! \\quad + \\qquad \\left( h \\right) \\Big( h \\Big) \\bigl[ h \\bigr]"), 2 * h + h * h * h));
+  EXPECT_TRUE(equal_values(reading_of("h \\kern 3mu \\hspace{2pt} \\vspace*{-7pt} h \\mkern-1.5mu"), h * h));
+  EXPECT_TRUE(equal_values(reading_of("h \\cdot t \\times 2"), 2 * h * t));
   // A second \over in one group is TeX's own error, not a guess.
-  EXPECT_NE(refusal("{a \\over b \\over c}").find("a second \\over"), std::string::npos);
-  EXPECT_NE(refusal("x^2^3").find("Double superscript"), std::string::npos);
+  EXPECT_NE(why_refused("{a \\over b \\over c}").find("a second \\over"), std::string::npos);
+  EXPECT_NE(why_refused("x^2^3").find("Double superscript"), std::string::npos);
 }
 
 TEST(TexReader, EveryUnknownConstructIsRefusedByName) {
-  EXPECT_NE(refusal("h + \\foo").find("\\foo"), std::string::npos);
-  EXPECT_NE(refusal("h \\ldots").find("ellipsis"), std::string::npos);
-  EXPECT_NE(refusal("\\text{if } h").find("words"), std::string::npos);
-  EXPECT_NE(refusal("\\frac{d}{dt} q").find("\\frac{dX}{dt}"), std::string::npos);
-  EXPECT_NE(refusal("a / b c").find("not written"), std::string::npos);
-  EXPECT_NE(refusal("ω h").find("\\omega"), std::string::npos);  // a UTF-8 letter: the TeX spelling named
-  EXPECT_NE(refusal("\\operatorname{sgn} h").find("sgn"), std::string::npos);
+  EXPECT_NE(why_refused("h + \\foo").find("\\foo"), std::string::npos);
+  EXPECT_NE(why_refused("h \\ldots").find("ellipsis"), std::string::npos);
+  EXPECT_NE(why_refused("\\text{if } h").find("words"), std::string::npos);
+  EXPECT_NE(why_refused("\\frac{d}{dt} q").find("\\frac{dX}{dt}"), std::string::npos);
+  EXPECT_NE(why_refused("a / b c").find("not written"), std::string::npos);
+  EXPECT_NE(why_refused("ω h").find("\\omega"), std::string::npos);  // a UTF-8 letter: the TeX spelling named
+  EXPECT_NE(why_refused("\\operatorname{sgn} h").find("sgn"), std::string::npos);
 }
 
 TEST(TexReader, ApplicationOrProductIsTheDeclarationsChoice) {
+  // A declared function alone, or with a power on its argument's closing delimiter.
+  EXPECT_NE(why_refused("V + 1").find("without its argument"), std::string::npos);
+  EXPECT_TRUE(equal_values(reading_of("V\\left(x\\right)^{2} + V(x)^2"), 2 * GiNaC::pow(apply_function("V", {symbol_of("x")}), 2)));
   const ex x = symbol_of("x"), m = symbol_of("m"), h = symbol_of("h");
-  EXPECT_TRUE(same(read("V(x)"), apply_function("V", {x})));
-  EXPECT_TRUE(same(read("m(x + h)"), m * (x + h)));  // m is a symbol
-  EXPECT_TRUE(same(read("V \\big( x \\big) + V\\left(2x\\right)"), apply_function("V", {x}) + apply_function("V", {2 * x})));
-  EXPECT_TRUE(same(read("L(x, h)"), apply_function("L", {x, h})));
+  EXPECT_TRUE(equal_values(reading_of("V(x)"), apply_function("V", {x})));
+  EXPECT_TRUE(equal_values(reading_of("m(x + h)"), m * (x + h)));  // m is a symbol
+  EXPECT_TRUE(equal_values(reading_of("V \\big( x \\big) + V\\left(2x\\right)"), apply_function("V", {x}) + apply_function("V", {2 * x})));
+  EXPECT_TRUE(equal_values(reading_of("L(x, h)"), apply_function("L", {x, h})));
   // The state q: q(t) applied, q alone the symbol, dq/dt a quantity.
-  EXPECT_TRUE(same(read("q(t)"), apply_function("q", {symbol_of("t")})));
-  EXPECT_TRUE(same(read("q"), symbol_of("q")));
+  EXPECT_TRUE(equal_values(reading_of("q(t)"), apply_function("q", {symbol_of("t")})));
+  EXPECT_TRUE(equal_values(reading_of("q"), symbol_of("q")));
 }
 
 TEST(TexReader, DerivativesAsPeopleWriteThem) {
   const ex x = symbol_of("x");
   const GiNaC::symbol y("y");
   const ex v1 = GiNaC::diff(apply_function("V", {y}), y).subs(y == x), v2 = GiNaC::diff(apply_function("V", {y}), y, 2).subs(y == x);
-  EXPECT_TRUE(same(read("V'(x)"), v1));
-  EXPECT_TRUE(same(read("V''(x)"), v2));
-  EXPECT_TRUE(same(read("V^{(2)}(x)"), v2));
-  EXPECT_TRUE(same(read("\\frac{dV}{dq}(x)"), v1));
-  EXPECT_TRUE(same(read("\\frac{\\mathrm d V}{\\mathrm d q}(x)"), v1));
-  EXPECT_TRUE(same(read("\\frac{\\mathrm{d}^2 V}{\\mathrm{d} q^2}(x)"), v2));
-  EXPECT_TRUE(same(read("{{\\rm d} V \\over {\\rm d} q}(x)"), v1));
-  EXPECT_TRUE(same(read("\\frac{\\partial H}{\\partial p}"), symbol_of("dH/dp")));  // H no function: a quantity named by its notation
-  EXPECT_TRUE(same(read("\\partial_q H"), symbol_of("dH/dq")));
-  EXPECT_TRUE(same(read("\\dot q + \\ddot q"), symbol_of("dq/dt") + symbol_of("d^2q/dt^2")));
-  EXPECT_TRUE(same(read("\\frac{d q}{d t}"), symbol_of("dq/dt")));
-  EXPECT_TRUE(same(read("\\frac{d^6 q}{d t^5}"), symbol_of("d^6q/dt^5")));  // a misprinted order stays visible
-  EXPECT_TRUE(same(read("\\frac{dV}{dq}"), GiNaC::diff(apply_function("V", {y}), y).subs(y == symbol_of("q"))));  // V' at q
+  EXPECT_TRUE(equal_values(reading_of("V'(x)"), v1));
+  EXPECT_TRUE(equal_values(reading_of("V''(x)"), v2));
+  EXPECT_TRUE(equal_values(reading_of("V^{(2)}(x)"), v2));
+  EXPECT_TRUE(equal_values(reading_of("\\frac{dV}{dq}(x)"), v1));
+  EXPECT_TRUE(equal_values(reading_of("\\frac{\\mathrm d V}{\\mathrm d q}(x)"), v1));
+  EXPECT_TRUE(equal_values(reading_of("\\frac{\\mathrm{d}^2 V}{\\mathrm{d} q^2}(x)"), v2));
+  EXPECT_TRUE(equal_values(reading_of("{{\\rm d} V \\over {\\rm d} q}(x)"), v1));
+  EXPECT_TRUE(equal_values(reading_of("\\frac{\\partial H}{\\partial p}"), symbol_of("dH/dp")));  // H no function: a quantity named by its notation
+  EXPECT_TRUE(equal_values(reading_of("\\partial_q H"), symbol_of("dH/dq")));
+  EXPECT_TRUE(equal_values(reading_of("\\dot q + \\ddot q"), symbol_of("dq/dt") + symbol_of("d^2q/dt^2")));
+  EXPECT_TRUE(equal_values(reading_of("\\frac{d q}{d t}"), symbol_of("dq/dt")));
+  EXPECT_TRUE(equal_values(reading_of("\\frac{d^6 q}{d t^5}"), symbol_of("d^6q/dt^5")));  // a misprinted order stays visible
+  EXPECT_TRUE(equal_values(reading_of("\\frac{dV}{dq}"), GiNaC::diff(apply_function("V", {y}), y).subs(y == symbol_of("q"))));  // V' at q
 }
 
 TEST(TexReader, LandauTraceAndDeterminant) {
   const ex h = symbol_of("h");
-  EXPECT_TRUE(same(read("h + O(h^4)") - h, GiNaC::Order(GiNaC::pow(h, 4))));
-  EXPECT_TRUE(same(read("\\mathcal O(h^4)"), GiNaC::Order(GiNaC::pow(h, 4))));
-  EXPECT_TRUE(same(read("{\\rm O}(h^4)"), GiNaC::Order(GiNaC::pow(h, 4))));
-  EXPECT_NE(refusal("O h").find("Landau"), std::string::npos);
+  EXPECT_TRUE(equal_values(reading_of("h + O(h^4)") - h, GiNaC::Order(GiNaC::pow(h, 4))));
+  EXPECT_TRUE(equal_values(reading_of("\\mathcal O(h^4)"), GiNaC::Order(GiNaC::pow(h, 4))));
+  EXPECT_TRUE(equal_values(reading_of("{\\rm O}(h^4)"), GiNaC::Order(GiNaC::pow(h, 4))));
+  EXPECT_NE(why_refused("O h").find("Landau"), std::string::npos);
   const GiNaC::matrix m{{1, 2}, {3, 4}};
   for (const char* tr : {"\\operatorname{tr}\\Phi", "\\mathrm{tr}\\,\\Phi", "{\\rm tr} \\Phi"}) {
-    const ex e = read(tr);
-    EXPECT_TRUE(same(e.subs(symbol_of("Phi") == m), 5)) << tr << ": " << e;
+    const ex e = reading_of(tr);
+    EXPECT_TRUE(equal_values(e.subs(symbol_of("Phi") == m), 5)) << tr << ": " << e;
   }
-  EXPECT_TRUE(same(read("\\det \\Phi").subs(symbol_of("Phi") == m), -2));
-  EXPECT_TRUE(same(read("\\begin{vmatrix} 1 & 2 \\\\ 3 & 4 \\end{vmatrix}"), -2));
-  EXPECT_TRUE(same(read("\\det\\begin{pmatrix} 1 & 2 \\\\[2pt] 3 & 4 \\end{pmatrix}"), -2));
+  EXPECT_TRUE(equal_values(reading_of("\\det \\Phi").subs(symbol_of("Phi") == m), -2));
+  EXPECT_TRUE(equal_values(reading_of("\\begin{vmatrix} 1 & 2 \\\\ 3 & 4 \\end{vmatrix}"), -2));
+  EXPECT_TRUE(equal_values(reading_of("\\det\\begin{pmatrix} 1 & 2 \\\\[2pt] 3 & 4 \\end{pmatrix}"), -2));
 }
 
 TEST(TexReader, NoDeclarationTurnsAMisreadIntoAReading) {
   // t declared beside \\[2pt]: the row's space below is consumed by the row's rule, never 2pt.
   const tex_declarations with_t{{}, {"t", "p", "h"}};
-  const ex row = read("\\begin{pmatrix} h \\\\[2pt] h \\end{pmatrix}", with_t);
+  const ex row = reading_of("\\begin{pmatrix} h \\\\[2pt] h \\end{pmatrix}", with_t);
   ASSERT_TRUE(GiNaC::is_a<GiNaC::matrix>(row));
-  EXPECT_TRUE(same(row, GiNaC::matrix{{symbol_of("h")}, {symbol_of("h")}}));
+  EXPECT_TRUE(equal_values(row, GiNaC::matrix{{symbol_of("h")}, {symbol_of("h")}}));
   // V declared a symbol beside \frac{\dd V}{\dd q}(q_j): refused, never V/q times q_j.
   const tex_declarations v_symbol{{}, {"V", "q", "q_j"}};
   const tex_macros macros = defined_macros("\\newcommand{\\dd}{{\\rm d}}");
@@ -132,10 +135,10 @@ TEST(TexReader, NoDeclarationTurnsAMisreadIntoAReading) {
     EXPECT_NE(std::string(e.what()).find("not declared a function"), std::string::npos) << e.what();
   }
   // V' of a name not declared a function: refused, with what to declare.
-  EXPECT_NE(refusal("V'(x)", v_symbol).find("declare V"), std::string::npos);
+  EXPECT_NE(why_refused("V'(x)", v_symbol).find("declare V"), std::string::npos);
   // d declared a symbol: \frac{dV}{dq} is ambiguous, and refused.
   const tex_declarations d_symbol{{"V"}, {"d", "q"}};
-  EXPECT_NE(refusal("\\frac{dV}{dq}", d_symbol).find("ambiguous"), std::string::npos);
+  EXPECT_NE(why_refused("\\frac{dV}{dq}", d_symbol).find("ambiguous"), std::string::npos);
   // O and \pi cannot be declared at all.
   claims_file_contents contents;
   contents.symbols = claims_symbols{{}, {"O"}, {}, 3};

@@ -108,7 +108,7 @@ verdict_counts count_verdicts(const run_record& r) {
     }
     (o.checked->origin == claim_origin::paper ? c.paper : c.harness) += 1;
     if (o.checked->origin == claim_origin::paper && is_finding(o.result.outcome)) {
-      if (o.checked->follows_from.empty()) {
+      if (cause_of(o).empty()) {
         ++c.distinct;
         c.typographical += o.checked->typographical;
       } else {
@@ -258,7 +258,7 @@ json report_json(const run_record& r, const plot_outcome& plots) {
                {"as_expected", as_expected(o.result.outcome, o.expected)},
                {"origin", c.origin == claim_origin::paper ? "paper" : "harness"},
                {"finding", to_string(finding_of(o))}};
-    if (!c.follows_from.empty()) entry["follows_from"] = c.follows_from;
+    if (!cause_of(o).empty()) entry["follows_from"] = cause_of(o);
     if (c.typographical) entry["typographical"] = true;
     if (!o.result.correction.empty()) entry["correction"] = o.result.correction;
     if (!o.result.note.empty()) entry["note"] = o.result.note;
@@ -465,10 +465,10 @@ std::string referee_summary_markdown(const run_record& r) {
   for (const bool typographical : {false, true}) {
     for (const claim_outcome& o : r.outcomes) {
       const claim& k = *o.checked;
-      if (k.origin != claim_origin::paper || !is_finding(o.result.outcome) || !k.follows_from.empty() || k.typographical != typographical) continue;
+      if (k.origin != claim_origin::paper || !is_finding(o.result.outcome) || !cause_of(o).empty() || k.typographical != typographical) continue;
       std::vector<std::string> consequences;
       for (const claim_outcome& other : r.outcomes) {
-        if (other.checked->follows_from == k.id && is_finding(other.result.outcome)) consequences.push_back("`" + other.checked->id + "`");
+        if (cause_of(other) == k.id && is_finding(other.result.outcome)) consequences.push_back("`" + other.checked->id + "`");
       }
       const std::string what = !o.result.correction.empty() ? o.result.correction : first_sentence(o.result.note);
       const bool stops = !what.empty() && what.back() == '.';

@@ -9,6 +9,10 @@
 #include <simpson/verify/run.hpp>
 
 #include <simpson/verify/certify.hpp>
+#include <simpson/verify/consequences.hpp>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <chrono>
 #include <cstdlib>
@@ -70,6 +74,25 @@ run_record run(const scene& s, const paper_reading& paper, const progress_callba
     outcome.seconds = std::chrono::duration<double>(clock::now() - claim_start).count();
     r.outcomes.push_back(std::move(outcome));
     if (progress) progress(k, s.claims.size(), c, &r.outcomes.back());
+  }
+  // Consequences traced: a claim that does not hold, judged again with an erratum's corrected
+  // formulas, that then holds, is counted under that erratum.
+  {
+    std::vector<const claim*> claims;
+    std::vector<const claim_result*> results;
+    for (const claim_outcome& o : r.outcomes) {
+      claims.push_back(o.checked);
+      results.push_back(&o.result);
+    }
+    const std::vector<std::optional<consequence>> traced = trace_consequences(claims, results, ctx);
+    for (std::size_t k = 0; k < traced.size(); ++k) {
+      if (!traced[k]) continue;
+      claim_outcome& o = r.outcomes[k];
+      o.consequence_of = traced[k]->cause;
+      const std::string follows = fmt::format("Follows from `{}`: holds once {} is corrected as that claim proves.", traced[k]->cause,
+                                              fmt::format("{}", fmt::join(traced[k]->corrected, " and ")));
+      o.result.note = o.result.note.empty() ? follows : follows + " " + o.result.note;
+    }
   }
   for (const claim_outcome& o : r.outcomes) {
     if (!o.result.printed.is_null()) {

@@ -89,6 +89,7 @@ detail::check_function check_of(const claim_record& r, const std::shared_ptr<con
     detail::shape_call call{r.id, r.statement, r.with, declared};
     return [call, run = shape.run](const run_context& ctx) {
       detail::shape_call with_document = call;
+      with_document.corrections = ctx.corrections;
       if (with_document.statement.empty()) with_document.statement = find_claim(call.claim_id).statement;  // the TeX read
       const auto start = std::chrono::steady_clock::now();
       claim_result result = run(with_document, ctx);

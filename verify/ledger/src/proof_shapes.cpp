@@ -36,7 +36,8 @@ std::vector<shape_parameter> with_series(std::vector<shape_parameter> parameters
            {"scheme", argument_kind::formula, true, "the scheme's expression (= 0) in three consecutive states"},
            {"sequence", argument_kind::symbols, true, "the three states q_{j-1}, q_j, q_{j+1}", 3},
            {"step", argument_kind::symbols, true, "the step h", 1},
-           {"frequency", argument_kind::formula, true, "omega of q'' = -omega^2 q"}}) {
+           {"frequency", argument_kind::formula, true, "omega of q'' = -omega^2 q"},
+           {"scale", argument_kind::formula, false, "a factor the text divides the scheme by ('the scheme divided by m'), free of the states"}}) {
     parameters.push_back(std::move(p));
   }
   return parameters;
@@ -151,6 +152,13 @@ const std::map<std::string, proof_shape>& proof_shapes() {
                      {"positive", argument_kind::symbols, false, "symbols positive besides the step (m, omega), for the denominators' signs"},
                      pattern_with_hole("sentence", "the sentence's pattern: the hole {kind}, 'explicit' or 'implicit'", "kind")}),
          explicit_map_shape});
+    add({"explicit-scheme", "the sentence's {kind} (explicit or implicit) is what the scheme is for the document's functions left general: explicit when it "
+                            "gives its next state in closed form (linear in it, and never inside an application of a function such as V')",
+         "scheme",
+         with_where({{"scheme", argument_kind::formula, true, "the scheme's expression (= 0) in consecutive states, its functions (V) uninterpreted"},
+                     {"sequence", argument_kind::symbols, true, "its states, the last the one a step computes (q_{j+1})"},
+                     pattern_with_hole("sentence", "the sentence's pattern: the hole {kind}, 'explicit' or 'implicit'", "kind")}),
+         explicit_scheme_shape});
     add({"discrete-momenta", "every side of each printed equation equals its first once p_j = -D_1 L(q_j, q_{j+1}) and p_{j+1} = D_2 L(q_j, q_{j+1}) are put in",
          "equations",
          with_where({{"equations", argument_kind::equations, true, "the printed system: equations in the states and the momenta of one step"},

@@ -48,6 +48,7 @@ struct shape_call {
   std::string statement;
   std::map<std::string, shape_argument> with;
   std::shared_ptr<const claim_declarations> declared;
+  const formula_corrections* corrections = nullptr;  // the run's, when the claim is judged again with corrected formulas
 };
 
 using shape_function = std::function<claim_result(const shape_call&, const run_context&)>;

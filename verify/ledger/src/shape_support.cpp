@@ -32,6 +32,14 @@ shape_reader::shape_reader(const shape_call& call, const tex_document& document)
   if (where != call.with.end()) {
     for (const std::string& reference : where->second.values) {
       definitions_.push_back(read_definition(document_, reading(), reference));
+      if (call.corrections) {  // a definition whose display a proved correction replaces: its value corrected
+        const std::string identity = read_reference(document_, reading(), reference).identity;
+        for (const auto& c : call.corrections->corrected) {
+          if (c->identity != identity) continue;
+          definitions_.back().value = c->value;
+          call.corrections->used = true;
+        }
+      }
       const definition& d = definitions_.back();
       definitions_read_.push_back({{"reference", reference},
                                    {"label", d.locator + ", put in"},
@@ -102,9 +110,37 @@ ex shape_reader::formula(const std::string& parameter) {
   return with_definitions(f.value, definitions_);
 }
 
+referenced_formula shape_reader::corrected(referenced_formula f) const {
+  if (!call_.corrections) return f;
+  for (const auto& c : call_.corrections->corrected) {
+    if (c->identity != f.identity) continue;
+    f.value = c->value;
+    call_.corrections->used = true;
+  }
+  return f;
+}
+
+const std::string& shape_reader::identity_of(const std::string& parameter) const {
+  const auto it = identities_.find(parameter);
+  if (it == identities_.end()) throw std::logic_error("identity_of: the argument '" + parameter + "' was never read");
+  return it->second;
+}
+
+std::shared_ptr<const corrected_formula> shape_reader::correction_of(const std::string& parameter, const GiNaC::ex& value) const {
+  // Named as a reader of the document names it: (label), or the display or formula at its phrase.
+  const std::string& identity = identity_of(parameter);
+  const std::string place = identity.substr(0, identity.rfind('#'));
+  std::string shown = place;
+  if (place.rfind("label ", 0) == 0) shown = "(" + place.substr(6) + ")";
+  if (place.rfind("anchor ", 0) == 0) shown = "the display after " + place.substr(7);
+  if (place.rfind("inline formula at ", 0) == 0) shown = "the formula at " + place.substr(18);
+  return std::make_shared<const corrected_formula>(corrected_formula{identity, shown, value});
+}
+
 referenced_formula shape_reader::raw(const std::string& parameter) {
   const std::string& reference = call_.with.at(parameter).values.front();
-  referenced_formula f = read_reference(document_, reading(), reference);
+  referenced_formula f = corrected(read_reference(document_, reading(), reference));
+  identities_[parameter] = f.identity;
   declared_only(f.value, f.locator);
   // Shown with its matrix products multiplied out (1/(1 + x) times a matrix, as printed), unless a
   // definition is still to make one of its symbols a matrix.

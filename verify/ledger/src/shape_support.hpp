@@ -70,11 +70,20 @@ class shape_reader {
   /// What was read, the principal formula first (each shape reads it first), the definitions last.
   json printed() const;
 
+  /// The identity of the formula the argument names (referenced_formula::identity), once read.
+  const std::string& identity_of(const std::string& parameter) const;
+
+  /// A proved correction of the formula the argument names, `value` standing where it is printed:
+  /// what the claims that read it are judged again with.
+  std::shared_ptr<const corrected_formula> correction_of(const std::string& parameter, const GiNaC::ex& value) const;
+
  private:
   void read_entries(const std::vector<std::string>& references);
   void declared_only(const GiNaC::ex& e, const std::string& where) const;
   GiNaC::ex parsed_side(const referenced_formula& equation, std::size_t k) const;
   void record(const std::string& reference, const std::string& locator, int line, const std::string& tex, const std::optional<GiNaC::ex>& value);
+  /// `f` with its value corrected when the call is judged again with a correction of it.
+  referenced_formula corrected(referenced_formula f) const;
 
   const shape_call& call_;
   const tex_document& document_;
@@ -82,6 +91,7 @@ class shape_reader {
   std::vector<definition> definitions_;
   json read_ = json::array();
   json definitions_read_ = json::array();
+  std::map<std::string, std::string> identities_;  // parameter: the identity of its formula
 };
 
 /// The run's document: its paper, or the embedded one when it has none.
@@ -162,6 +172,7 @@ claim_result euler_lagrange_shape(const shape_call& call, const run_context& ctx
 claim_result stationary_shape(const shape_call& call, const run_context& ctx);
 claim_result discrete_momenta_shape(const shape_call& call, const run_context& ctx);
 claim_result explicit_map_shape(const shape_call& call, const run_context& ctx);
+claim_result explicit_scheme_shape(const shape_call& call, const run_context& ctx);
 claim_result discrete_map_shape(const shape_call& call, const run_context& ctx);
 claim_result truncation_shape(const shape_call& call, const run_context& ctx);
 claim_result stated_order_shape(const shape_call& call, const run_context& ctx);

@@ -174,7 +174,7 @@ claim_result characteristic_shape(const shape_call& call, const run_context& ctx
   claim_result result;
   result.printed = read.printed();
   if (!c.why_not.empty()) {
-    result.outcome = verdict::fails;
+    result.outcome = verdict::undecided;  // the shape cannot judge it: a tool's limit, never a finding
     result.note = c.why_not;
     return result;
   }
@@ -207,7 +207,7 @@ claim_result discriminant_shape(const shape_call& call, const run_context& ctx) 
   claim_result result;
   result.printed = read.printed();
   const auto cannot = [&](const std::string& why) {
-    result.outcome = verdict::fails;
+    result.outcome = verdict::undecided;  // the shape cannot judge it: a tool's limit, never a finding
     result.note = why;
     return result;
   };
@@ -278,11 +278,11 @@ claim_result characteristic_roots_shape(const shape_call& call, const run_contex
     return result;
   };
   const std::optional<three_term_coefficients> terms = linear_three_term(scheme, q);
-  if (!terms) return cannot(verdict::fails, "The shape decides linear three-term schemes; (" + scheme_ref + ") is not linear in its states.");
+  if (!terms) return cannot(verdict::undecided, "The shape decides linear three-term schemes; (" + scheme_ref + ") is not linear in its states.");
   // The product of the roots, P₀/P₂: a number, in both kernels.
   const ex product = GiNaC::normal(terms->previous / terms->next);
   if (!GiNaC::is_a<GiNaC::numeric>(product) || !GiNaC::ex_to<GiNaC::numeric>(product).is_rational()) {
-    return cannot(verdict::fails, "The roots' product " + text_of(product) + " of (" + scheme_ref + ") is not a number: the shape does not judge it.");
+    return cannot(verdict::undecided, "The roots' product " + text_of(product) + " of (" + scheme_ref + ") is not a number: the shape does not judge it.");
   }
   const kernel_decision product_own = kernel_decides_zero(terms->previous - product * terms->next);
   // The discriminant's sign on the interval, in both kernels.
@@ -332,7 +332,7 @@ claim_result characteristic_roots_shape(const shape_call& call, const run_contex
     return result;
   }
   if (conclusion_said && !stability) {
-    return cannot(verdict::fails, "The facts do not decide stability here (" + facts + "): the words' '" + *conclusion_said + "' is not judged.");
+    return cannot(verdict::undecided, "The facts do not decide stability here (" + facts + "): the words' '" + *conclusion_said + "' is not judged.");
   }
   result.outcome = verdict::erratum;
   result.correction = "As proved: " + facts;
@@ -356,7 +356,7 @@ std::optional<reversible_scheme> reversible_premise(const ex& scheme, const std:
   reversible_scheme out;
   const std::optional<three_term_coefficients> terms = linear_three_term(scheme, q);
   if (!terms || !reversible(*terms, out.reversible_own)) {
-    result.outcome = verdict::fails;
+    result.outcome = verdict::undecided;
     result.note = "The shape judges linear three-term schemes whose first and last coefficients are equal; (" + scheme_ref + ") is not one.";
     return std::nullopt;
   }
@@ -364,7 +364,7 @@ std::optional<reversible_scheme> reversible_premise(const ex& scheme, const std:
   out.delta = monic_discriminant(*terms);
   out.g = in_variable(out.delta, v);
   if (!out.g) {
-    result.outcome = verdict::fails;
+    result.outcome = verdict::undecided;
     result.note = "The discriminant " + text_of(out.delta) + " is not a function of " + text_of(v) + " alone.";
     return std::nullopt;
   }

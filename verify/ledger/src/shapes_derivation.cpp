@@ -96,7 +96,7 @@ claim_result discrete_map_shape(const shape_call& call, const run_context& ctx) 
   const std::vector<GiNaC::symbol> internal = read.has("internal") ? read.symbols("internal") : std::vector<GiNaC::symbol>{};
   const auto no_map = [&](const std::string& why) {
     claim_result result;
-    result.outcome = verdict::fails;
+    result.outcome = verdict::undecided;  // no map derived: the shape's limit
     result.note = why;
     result.printed = read.printed();
     result.certificate_missing = "no map derived";
@@ -162,6 +162,7 @@ claim_result discrete_map_shape(const shape_call& call, const run_context& ctx) 
   claim_result result = identity_verdict(call, read, "printed", what, ex(printed), ex(derived),
                                          fmt::format("as derived from ({}): ({}) = {}", reference_of(call, "lagrangian"), reference_of(call, "map"),
                                                      text_of(ex(derived))));
+  if (result.outcome == verdict::erratum) result.corrected_formulas.push_back(read.correction_of("map", ex(derived)));
   result.evidence["exact"]["derivation"] = {{"q_1", text_of(q1)}, {"p_1", text_of(p1)},
                                             {"internal_nodes", internal.empty() ? std::string("none") : std::to_string(internal.size()) + " eliminated"}};
   // Coq is also told the derived map's defining property, which "printed = derived" leaves to GiNaC's

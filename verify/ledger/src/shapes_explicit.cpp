@@ -12,6 +12,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -173,6 +174,92 @@ claim_result explicit_map_shape(const shape_call& call, const run_context& ctx) 
     result.certificate_missing = polynomial ? "no denominator depends on the step: nothing to certify" : "no denominator shown positive";
   } else {
     record_certificate(result, coq_certificate(call.claim_id, call.statement, goals));
+  }
+  return result;
+}
+
+}  // namespace simpson::verify::detail
+
+namespace simpson::verify::detail {
+
+/// "is explicit (implicit) for a general potential": what the scheme is with the document's
+/// functions left uninterpreted. A step computes the last state of the sequence; it does so in
+/// closed form when the scheme is linear in it, with a coefficient that does not vanish
+/// identically, and the state is never inside the argument of an uninterpreted function (q_{j+1}
+/// in V'((q_j + q_{j+1})/2) makes the step a nonlinear equation for a general V, whatever the
+/// harmonic case allows). GiNaC reads the structure and solves; our kernel decides that the
+/// solution satisfies the scheme (that identity is the Coq certificate). The sentence's hole {kind}
+/// says "explicit" or "implicit".
+claim_result explicit_scheme_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const ex scheme = read.formula("scheme");
+  const std::vector<GiNaC::symbol> sequence = read.symbols("sequence");
+  const GiNaC::symbol& next = sequence.back();
+  const quoted_sentence said = quote(ctx, call.with.at("sentence").values.front());
+  const std::string stated = said.choice("kind", {{"explicit", "explicit"}, {"implicit", "implicit"}, {"not explicit", "implicit"}});
+  claim_result result;
+  result.printed = read.printed();
+  result.evidence["stated"] = stated;
+  const std::string scheme_ref = reference_of(call, "scheme"), state = next.get_name();
+  // Where the next state is an argument of an uninterpreted function.
+  std::vector<std::string> arguments_of;
+  for (auto it = scheme.preorder_begin(); it != scheme.preorder_end(); ++it) {
+    if (!is_reader_function(*it) || !it->has(next)) continue;
+    const std::string text = text_of(*it);
+    if (std::find(arguments_of.begin(), arguments_of.end(), text) == arguments_of.end()) arguments_of.push_back(text);
+  }
+  std::string computed, why;
+  std::optional<ex> solution;
+  if (!arguments_of.empty()) {
+    computed = "implicit";
+    why = fmt::format("{} is in the argument of {}: for a general function the step solves a nonlinear equation in it", state, fmt::join(arguments_of, ", "));
+  } else {
+    const ex normal = GiNaC::normal(scheme);
+    const ex numerator = GiNaC::numer(normal);
+    if (GiNaC::denom(normal).has(next)) {
+      computed = "implicit";
+      why = fmt::format("{} is in a denominator of the scheme: the step solves a nonlinear equation in it", state);
+    } else if (numerator.degree(next) == 0) {
+      result.outcome = verdict::undecided;
+      result.note = fmt::format("({}) does not involve {}: it computes no step.", scheme_ref, state);
+      result.certificate_missing = "no step to certify";
+      return result;
+    } else if (numerator.degree(next) > 1) {
+      computed = "implicit";
+      why = fmt::format("the scheme is of degree {} in {}: the step solves a polynomial equation", numerator.degree(next), state);
+    } else {
+      computed = "explicit";
+      solution = GiNaC::normal(-numerator.coeff(next, 0) / numerator.coeff(next, 1));
+      why = fmt::format("the scheme is linear in {}, never inside a function's argument: {} = {}", state, state, text_of(*solution));
+    }
+  }
+  json exact = {{"statement", fmt::format("({}) gives {} in closed form, its functions left general", scheme_ref, state)},
+                {"ginac", (computed == "explicit" ? "holds: " : "fails: ") + why}};
+  if (solution) {
+    const kernel_decision own = kernel_decides_zero(scheme.subs(GiNaC::exmap{{next, *solution}}, GiNaC::subs_options::no_pattern));
+    exact["own"] = own.outcome == kernel_decision::result::zero      ? fmt::format("holds: ({}) at {} = the solution is 0 ({})", scheme_ref, state, own.evidence)
+                   : own.outcome == kernel_decision::result::nonzero ? "contradicts GiNaC: " + own.evidence
+                                                                     : "not applicable: " + own.evidence;
+    if (own.outcome == kernel_decision::result::nonzero) {
+      result.evidence["exact"] = exact;
+      result.outcome = verdict::kernels_disagree;
+      result.note = "GiNaC and our kernel reached different conclusions on the step's solution: a bug in one of them.";
+      return result;
+    }
+    record_certificate(result, coq_certificate(call.claim_id, call.statement,
+                                               {decided("solution", scheme.subs(GiNaC::exmap{{next, *solution}}, GiNaC::subs_options::no_pattern), 0)}));
+  } else {
+    exact["own"] = "not applicable: where the next state stands (a function's argument, a denominator, a power) is read from the formula's structure";
+    result.certificate_missing = "a structural fact (where the next state stands), no identity to certify";
+  }
+  result.evidence["exact"] = exact;
+  const std::string fact = fmt::format("The scheme is {}: {}", computed, why);
+  if (stated == computed) {
+    result.outcome = verdict::holds;
+    result.note = fact + ".";
+  } else {
+    result.outcome = verdict::erratum;
+    result.correction = fact + ".";
   }
   return result;
 }

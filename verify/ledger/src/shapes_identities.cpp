@@ -158,8 +158,10 @@ claim_result identity_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const ex rhs = read.formula("rhs"), lhs = read.formula("lhs");
   const std::string what = fmt::format("({}) = ({})", reference_of(call, "lhs"), reference_of(call, "rhs"));
-  return identity_verdict(call, read, "identity", what, lhs, rhs,
-                          fmt::format("as derived from ({}): ({}) = {}", reference_of(call, "lhs"), reference_of(call, "rhs"), text_of(lhs)));
+  claim_result result = identity_verdict(call, read, "identity", what, lhs, rhs,
+                                         fmt::format("as derived from ({}): ({}) = {}", reference_of(call, "lhs"), reference_of(call, "rhs"), text_of(lhs)));
+  if (result.outcome == verdict::erratum) result.corrected_formulas.push_back(read.correction_of("rhs", lhs));
+  return result;
 }
 
 /// Printed equations whose sides are all equal ("q(0) = q_l", "g_l = dq/dt(0) = (1/h)(...)"), the

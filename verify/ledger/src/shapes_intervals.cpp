@@ -70,7 +70,7 @@ claim_result stability_interval_shape(const shape_call& call, const run_context&
     const kernel_decision det_own = kernel_decides_zero(det - 1);
     if (!GiNaC::normal(det - 1).is_zero() || det_own.outcome == kernel_decision::result::nonzero) {
       result.printed = read.printed();
-      result.outcome = verdict::fails;
+      result.outcome = verdict::undecided;
       result.note = "The shape decides maps with det 1; det (" + what + ") = " + text_of(GiNaC::normal(det)) + ".";
       return result;
     }
@@ -84,7 +84,7 @@ claim_result stability_interval_shape(const shape_call& call, const run_context&
     kernel_decision reversible_own;
     if (!terms || !reversible(*terms, reversible_own)) {
       result.printed = read.printed();
-      result.outcome = verdict::fails;
+      result.outcome = verdict::undecided;
       result.note = "The shape decides linear three-term schemes whose " + q[2].get_name() + " and " + q[0].get_name() + " coefficients are equal; (" +
                     what + ") " + (terms ? "has " + text_of(GiNaC::normal(terms->next)) + " and " + text_of(GiNaC::normal(terms->previous)) : "is not linear in its states") + ".";
       return result;
@@ -99,7 +99,7 @@ claim_result stability_interval_shape(const shape_call& call, const run_context&
   const ex high = interval_end(condition, v, read.reading());
   const std::optional<one_variable> excess = in_variable(trace * trace - 4, v);  // < 0 exactly on the stable set
   if (!excess) {
-    result.outcome = verdict::fails;
+    result.outcome = verdict::undecided;
     result.note = "The trace of " + what + " is not a function of " + text_of(v) + " alone.";
     return result;
   }
@@ -187,7 +187,7 @@ claim_result sign_on_interval_shape(const shape_call& call, const run_context& c
   const ex high = interval_end(condition, v, read.reading());
   const std::optional<one_variable> g = in_variable(f, v);
   if (!g) {
-    result.outcome = verdict::fails;
+    result.outcome = verdict::undecided;
     result.note = "(" + reference_of(call, "expression") + ") is not a function of " + text_of(v) + " alone.";
     return result;
   }

@@ -92,12 +92,12 @@ claim_result invariance_system_shape(const shape_call& call, const run_context& 
   result.printed = read.printed();
   if (!GiNaC::is_a<GiNaC::matrix>(system) || GiNaC::ex_to<GiNaC::matrix>(system).cols() != 1 ||
       GiNaC::ex_to<GiNaC::matrix>(system).rows() != monomials.size()) {
-    result.outcome = verdict::fails;
+    result.outcome = verdict::undecided;
     result.note = fmt::format("({}) is not a column of {} rows, one for each of {}.", system_ref, monomials.size(), fmt::join(named, ", "));
     return result;
   }
   if (!d.not_quadratic.empty()) {
-    result.outcome = verdict::fails;
+    result.outcome = verdict::undecided;
     result.note = fmt::format("({})(({}) y) − ({})(y) is not a quadratic form in the state: {} is left beyond the monomials {}.", form_ref, map_ref,
                               form_ref, d.not_quadratic, fmt::join(named, ", "));
     return result;
@@ -128,6 +128,11 @@ claim_result invariance_system_shape(const shape_call& call, const run_context& 
       }
     }
     record_certificate(result, coq_certificate(call.claim_id, call.statement, {decided("system", change, printed_sum), decided("derived", change, derived_sum)}));
+    GiNaC::matrix column(derived.rows(), 1);  // the system as it should be printed: the derived rows times the unknowns
+    for (unsigned k = 0; k < derived.rows(); ++k) {
+      for (std::size_t u = 0; u < unknowns.size(); ++u) column(k, 0) += derived(k, static_cast<unsigned>(u)) * unknowns[u];
+    }
+    result.corrected_formulas.push_back(read.correction_of("system", column));
   }
   return result;
 }
@@ -148,7 +153,7 @@ claim_result invariance_determinant_shape(const shape_call& call, const run_cont
   claim_result result;
   result.printed = read.printed();
   if (!d.not_quadratic.empty() || d.derived.rows() != d.derived.cols()) {
-    result.outcome = verdict::fails;
+    result.outcome = verdict::undecided;
     result.note = d.not_quadratic.empty()
                       ? fmt::format("The system has {} rows ({}) and {} unknowns: no determinant.", d.derived.rows(), fmt::join(d.named, ", "),
                                     d.derived.cols())
@@ -360,7 +365,7 @@ claim_result invariance_singular_shape(const shape_call& call, const run_context
   claim_result result;
   result.printed = read.printed();
   if (!p.wrong.empty()) {
-    result.outcome = verdict::fails;
+    result.outcome = verdict::undecided;
     result.note = p.wrong;
     return result;
   }
@@ -433,7 +438,7 @@ claim_result invariance_kernel_shape(const shape_call& call, const run_context& 
     wrong = fmt::format("({}) is not ({}) for one value of its coefficients {}.", printed_ref, reference_of(call, "form"), fmt::join(call.with.at("unknowns").values, ", "));
   }
   if (!wrong.empty()) {
-    result.outcome = verdict::fails;
+    result.outcome = verdict::undecided;
     result.note = wrong;
     return result;
   }

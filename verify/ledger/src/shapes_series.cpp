@@ -36,6 +36,19 @@ int taylor_degree(const shape_call& call, const ex& scheme, const std::vector<Gi
   return order - 1 + static_cast<int>(kernel_denominator_degree(scheme, h.get_name()));
 }
 
+/// The scheme a series shape expands: as printed, or divided by the record's `scale` (the text's
+/// "the scheme divided by m"), a factor free of the states.
+ex scaled_scheme(shape_reader& read) {
+  const ex scheme = read.formula("scheme");
+  if (!read.has("scale")) return scheme;
+  const ex scale = read.formula("scale");
+  if (GiNaC::normal(scale).is_zero()) throw argument_error("scale", "the scale is 0");
+  for (const GiNaC::symbol& state : read.symbols("sequence")) {
+    if (scale.has(state)) throw argument_error("scale", "the scale depends on the state " + state.get_name());
+  }
+  return scheme / scale;
+}
+
 /// The scheme (= 0, in three consecutive states) on the Taylor polynomials of degree `degree` of the
 /// exact solution of q'' = −ω² q through the middle state, q(t_j ± h) = q_j cos ωh ± (v_j/ω) sin ωh.
 ex on_taylor_solution(const ex& scheme, const std::vector<GiNaC::symbol>& sequence, const GiNaC::symbol& h, const ex& omega, int degree) {
@@ -336,7 +349,7 @@ claim_result taylor_expansion_shape(const shape_call& call, const run_context& c
 claim_result truncation_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const ex printed = read.formula("printed");
-  const ex scheme = read.formula("scheme");
+  const ex scheme = scaled_scheme(read);
   const ex omega = read.formula("frequency");
   const std::vector<GiNaC::symbol> sequence = read.symbols("sequence"), step = read.symbols("step");
   const GiNaC::symbol& h = step.front();
@@ -407,7 +420,7 @@ claim_result truncation_shape(const shape_call& call, const run_context& ctx) {
 /// kernel_confirms_order).
 claim_result stated_order_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
-  const ex scheme = read.formula("scheme");
+  const ex scheme = scaled_scheme(read);
   const ex omega = read.formula("frequency");
   const std::vector<GiNaC::symbol> sequence = read.symbols("sequence"), step = read.symbols("step");
   const GiNaC::symbol& h = step.front();

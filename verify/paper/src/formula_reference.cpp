@@ -148,7 +148,9 @@ referenced_formula read_reference(const tex_document& document, const tex_declar
   }
   // Not evaluated as matrices yet: a symbol a definition makes a matrix (Phi in "Phi (q_0, p_0)")
   // must not be taken for a scalar factor first.
-  f.value = read_side(f, r.side == 0 ? f.sides.size() - 1 : static_cast<std::size_t>(r.side - 1), declared);
+  const std::size_t side = r.side == 0 ? f.sides.size() - 1 : static_cast<std::size_t>(r.side - 1);
+  f.identity = f.place + "#" + std::to_string(r.equation) + ":side" + std::to_string(side + 1);
+  f.value = read_side(f, side, declared);
   return f;
 }
 

@@ -3,6 +3,7 @@
 #include <simpson/verify/tex_document.hpp>
 
 #include <algorithm>
+#include <deque>
 #include <map>
 #include <optional>
 #include <set>
@@ -35,13 +36,15 @@ bool is_text_command(const std::string& name) {
   return names.count(name) > 0;
 }
 
-std::size_t skip_space_tokens(const tokens_t& t, std::size_t k) {
+template <class Tokens>
+std::size_t skip_space_tokens(const Tokens& t, std::size_t k) {
   while (k < t.size() && t[k].category == tex_category::space) ++k;
   return k;
 }
 
 /// The index after the braced group that opens at t[k] (t[k] is '{'), or none when it never closes.
-std::optional<std::size_t> group_end(const tokens_t& t, std::size_t k) {
+template <class Tokens>
+std::optional<std::size_t> group_end(const Tokens& t, std::size_t k) {
   int depth = 0;
   for (std::size_t j = k; j < t.size(); ++j) {
     if (t[j].category == tex_category::begin_group) ++depth;
@@ -51,12 +54,14 @@ std::optional<std::size_t> group_end(const tokens_t& t, std::size_t k) {
 }
 
 /// \begin{name} or \end{name} at t[k]: the name and the index after it.
-std::optional<std::pair<std::string, std::size_t>> environment_at(const tokens_t& t, std::size_t k) {
+template <class Tokens>
+std::optional<std::pair<std::string, std::size_t>> environment_at(const Tokens& t, std::size_t k) {
   const std::size_t open = skip_space_tokens(t, k + 1);
   if (open >= t.size() || t[open].category != tex_category::begin_group) return std::nullopt;
   const std::optional<std::size_t> end = group_end(t, open);
   if (!end) return std::nullopt;
-  std::string name = tex_text(t.begin() + static_cast<std::ptrdiff_t>(open) + 1, t.begin() + static_cast<std::ptrdiff_t>(*end) - 1);
+  std::string name;
+  for (std::size_t j = open + 1; j + 1 < *end; ++j) name += t[j].text;
   name.erase(std::remove(name.begin(), name.end(), ' '), name.end());
   return std::make_pair(name, *end);
 }
@@ -127,50 +132,55 @@ std::vector<tokens_t> split_rows(const tokens_t& body) {
   return rows;
 }
 
+/// The document read from its first token to its last, as TeX's eyes and mouth read it: the input
+/// is a stream whose front is the next token; a definition is read off it, a macro's call replaced
+/// there by its expansion (so an expansion costs what it holds, never what the document holds).
 class scanner {
  public:
-  scanner(const std::string& text, tex_macros& macros, std::vector<tex_region>& regions)
-      : text_(text), t_(tex_tokenize(text)), macros_(macros), regions_(regions) {}
+  scanner(const std::string& text, tex_macros& macros, std::vector<tex_region>& regions) : text_(text), macros_(macros), regions_(regions) {
+    const tokens_t tokens = tex_tokenize(text);
+    in_.assign(tokens.begin(), tokens.end());
+  }
 
   void run() {
     bool began = false, ended = false;
-    std::size_t k = 0;
-    while (k < t_.size()) {
-      const tex_token& tok = t_[k];
+    while (!in_.empty()) {
+      const tex_token tok = in_.front();
       if (tok.category == tex_category::control || tok.category == tex_category::active) {
         if (tok.category == tex_category::control && is_definition_command(tok.text)) {
-          k = read_definition(t_, k, macros_);
+          drop(read_definition(in_, 0, macros_));
           continue;
         }
         if (const tex_macro* macro = macros_.find(tok.text)) {
-          expand(k, *macro);
+          expand(*macro);
           continue;
         }
-        if (tok.is_control("\\verb")) {
-          k = after_verb(k);
+        if (tok.is_control("\\verb")) {  // \verb|...|: the tokens up to the delimiter again, whatever they are
+          const std::string delimiter = in_.size() > 1 ? in_[1].text : "";
+          std::size_t j = 2;
+          while (j < in_.size() && in_[j].text != delimiter) ++j;
+          drop(std::min(j + 1, in_.size()));
           continue;
         }
         if (tok.is_control("\\(") || tok.is_control("\\[")) {
-          k = region(k + 1, tok.offset, tok.text, false);
+          drop(1);
+          region(tok.offset, tok.text, false);
           continue;
         }
         if (tok.is_control("\\begin")) {
-          const auto env = environment_at(t_, k);
+          const auto env = environment_at(in_, 0);
           if (!env) throw tex_error("\\begin without its environment's name in braces", tok.offset, "\\begin");
+          drop(env->second);
           if (env->first == "document") began = true;
           if (math_environments().count(env->first)) {
-            k = region(env->second, tok.offset, env->first, false);
-            continue;
+            region(tok.offset, env->first, false);
+          } else if (env->first == "verbatim" || env->first == "comment" || env->first == "lstlisting" || env->first == "verbatim*") {
+            after_verbatim(env->first, tok.offset);
           }
-          if (env->first == "verbatim" || env->first == "comment" || env->first == "lstlisting" || env->first == "verbatim*") {
-            k = after_verbatim(env->second, env->first, tok.offset);
-            continue;
-          }
-          k = env->second;
           continue;
         }
         if (tok.is_control("\\end")) {
-          const auto env = environment_at(t_, k);
+          const auto env = environment_at(in_, 0);
           if (env && env->first == "document") {
             ended = true;
             break;  // TeX reads nothing after it
@@ -180,15 +190,16 @@ class scanner {
           }
         }
         if (tok.is_control("\\)") || tok.is_control("\\]")) throw tex_error(tok.text + " with no math to close", tok.offset, tok.text);
-        ++k;
+        drop(1);
         continue;
       }
       if (tok.category == tex_category::math_shift) {
-        const bool display = k + 1 < t_.size() && t_[k + 1].category == tex_category::math_shift;
-        k = region(k + (display ? 2 : 1), tok.offset, display ? "$$" : "$", !display);
+        const bool display = in_.size() > 1 && in_[1].category == tex_category::math_shift;
+        drop(display ? 2 : 1);
+        region(tok.offset, display ? "$$" : "$", !display);
         continue;
       }
-      ++k;
+      drop(1);
     }
     if (began && !ended) {
       throw tex_error("the document ends without \\end{document}: truncated?", text_.empty() ? 0 : text_.size() - 1, "\\end{document}");
@@ -196,31 +207,39 @@ class scanner {
   }
 
  private:
-  void expand(std::size_t k, const tex_macro& macro) {
-    if (++expansions_ > 200000) throw tex_error("the macro " + macro.name + " expands without end", t_[k].offset, macro.name);
-    expand_at(t_, k, macro);
+  void drop(std::size_t n) {
+    n = std::min(n, in_.size());
+    in_.erase(in_.begin(), in_.begin() + static_cast<std::ptrdiff_t>(n));
+    consumed_ += n;
   }
 
-  std::size_t after_verb(std::size_t k) {
-    // \verb|...|: the tokens up to the delimiter again, whatever they are.
-    if (k + 1 >= t_.size()) return k + 1;
-    const std::string delimiter = t_[k + 1].text;
-    std::size_t j = k + 2;
-    while (j < t_.size() && t_[j].text != delimiter) ++j;
-    return j + 1;
+  void expand(const tex_macro& macro) {
+    // A macro whose expansion starts with itself (\def\a{\a\a}) loops at one place; TeX's own limit
+    // is its memory ("capacity exceeded"), ours a count, at one place and in all.
+    same_place_ = consumed_ == last_place_ ? same_place_ + 1 : 0;
+    last_place_ = consumed_;
+    if (++expansions_ > 20000 || same_place_ > 1000) throw tex_error("the macro " + macro.name + " expands without end", in_.front().offset, macro.name);
+    expand_at(in_, 0, macro);
+    // A macro that multiplies its tokens on every expansion: refused before the machine's memory is.
+    if (in_.size() > 4'000'000) throw tex_error("the macro " + macro.name + " expands to more than 4 million tokens", in_.front().offset, macro.name);
   }
 
-  std::size_t after_verbatim(std::size_t k, const std::string& name, std::size_t opener) {
-    for (; k < t_.size(); ++k) {
-      if (!t_[k].is_control("\\end")) continue;
-      const auto env = environment_at(t_, k);
-      if (env && env->first == name) return env->second;
+  void after_verbatim(const std::string& name, std::size_t opener) {
+    while (!in_.empty()) {
+      if (in_.front().is_control("\\end")) {
+        const auto env = environment_at(in_, 0);
+        if (env && env->first == name) {
+          drop(env->second);
+          return;
+        }
+      }
+      drop(1);
     }
     throw tex_error("\\begin{" + name + "} is never closed: truncated?", opener, "\\begin{" + name + "}");
   }
 
-  /// The math from t_[k] to its closer; returns the index after the closer.
-  std::size_t region(std::size_t k, std::size_t opener, const std::string& environment, bool inline_dollar) {
+  /// The math from the front of the input to its closer, which is consumed too.
+  void region(std::size_t opener, const std::string& environment, bool inline_dollar) {
     tex_region r;
     r.environment = environment;
     r.opener = opener;
@@ -229,54 +248,55 @@ class scanner {
     if (env != math_environments().end()) {
       r.aligned = env->second.aligned;
       for (int a = 0; a < env->second.arguments; ++a) {  // alignat{2}
-        const std::size_t open = skip_space_tokens(t_, k);
-        if (open >= t_.size() || t_[open].category != tex_category::begin_group) {
-          throw tex_error("\\begin{" + environment + "} without its argument", opener, environment);
-        }
-        k = *group_end(t_, open);
+        const std::size_t open = skip_space_tokens(in_, 0);
+        const std::optional<std::size_t> end = open < in_.size() && in_[open].category == tex_category::begin_group ? group_end(in_, open) : std::nullopt;
+        if (!end) throw tex_error("\\begin{" + environment + "} without its argument", opener, environment);
+        drop(*end);
       }
     }
     const std::string what = environment == "$" ? "the formula '$'" : environment == "$$" ? "the display '$$'" : environment == "\\(" ? "the formula '\\('"
                              : environment == "\\[" ? "the display '\\['" : "\\begin{" + environment + "}";
-    r.begin = k < t_.size() ? t_[k].offset : text_.size();
+    r.begin = in_.empty() ? text_.size() : in_.front().offset;
     tokens_t body;
     int same = 0;  // nested \begin{environment}s
     for (;;) {
-      if (k >= t_.size()) throw tex_error(what + " opened here is never closed: truncated?", opener, environment);
-      const tex_token& tok = t_[k];
+      if (in_.empty()) throw tex_error(what + " opened here is never closed: truncated?", opener, environment);
+      const tex_token tok = in_.front();
       if (tok.category == tex_category::control || tok.category == tex_category::active) {
         if (tok.category == tex_category::control && is_definition_command(tok.text)) {
-          k = read_definition(t_, k, macros_);
+          drop(read_definition(in_, 0, macros_));
           continue;
         }
         if (const tex_macro* macro = macros_.find(tok.text)) {
-          expand(k, *macro);
+          expand(*macro);
           continue;
         }
         if (is_text_command(tok.text)) {  // \text{... $x$ ...}: its group as it is, math shifts and all
-          const std::size_t open = skip_space_tokens(t_, k + 1);
-          if (open < t_.size() && t_[open].category == tex_category::begin_group) {
-            const std::optional<std::size_t> end = group_end(t_, open);
+          const std::size_t open = skip_space_tokens(in_, 1);
+          if (open < in_.size() && in_[open].category == tex_category::begin_group) {
+            const std::optional<std::size_t> end = group_end(in_, open);
             if (!end) throw tex_error(tok.text + "'s '{' is never closed", tok.offset, tok.text);
-            body.insert(body.end(), t_.begin() + static_cast<std::ptrdiff_t>(k), t_.begin() + static_cast<std::ptrdiff_t>(*end));
-            k = *end;
+            body.insert(body.end(), in_.begin(), in_.begin() + static_cast<std::ptrdiff_t>(*end));
+            drop(*end);
             continue;
           }
         }
         if ((tok.is_control("\\)") && environment == "\\(") || (tok.is_control("\\]") && environment == "\\[")) {
           r.end = tok.offset;
+          drop(1);
           finish(r, body);
-          return k + 1;
+          return;
         }
         if (tok.is_control("\\begin") || tok.is_control("\\end")) {
-          const auto e = environment_at(t_, k);
+          const auto e = environment_at(in_, 0);
           if (e && e->first == environment) {
             if (tok.is_control("\\begin")) {
               ++same;
             } else if (same-- == 0) {
               r.end = tok.offset;
+              drop(e->second);
               finish(r, body);
-              return e->second;
+              return;
             }
           }
           if (e && tok.is_control("\\end") && e->first == "document") {
@@ -287,13 +307,15 @@ class scanner {
       if (tok.category == tex_category::math_shift) {
         if (environment == "$") {
           r.end = tok.offset;
+          drop(1);
           finish(r, body);
-          return k + 1;
+          return;
         }
-        if (environment == "$$" && k + 1 < t_.size() && t_[k + 1].category == tex_category::math_shift) {
+        if (environment == "$$" && in_.size() > 1 && in_[1].category == tex_category::math_shift) {
           r.end = tok.offset;
+          drop(2);
           finish(r, body);
-          return k + 2;
+          return;
         }
         throw tex_error("a '$' inside " + what + " (opened on line " + std::to_string(line_of_offset(text_, opener)) + ")", tok.offset, "$");
       }
@@ -303,7 +325,7 @@ class scanner {
                         tok.offset, "\\par");
       }
       body.push_back(tok);
-      ++k;
+      drop(1);
     }
   }
 
@@ -331,10 +353,13 @@ class scanner {
   }
 
   const std::string& text_;
-  tokens_t t_;
+  std::deque<tex_token> in_;
   tex_macros& macros_;
   std::vector<tex_region>& regions_;
   long expansions_ = 0;
+  std::size_t consumed_ = 0;  // tokens read off the input: an expansion with none read since the last is at the same place
+  std::size_t last_place_ = std::string::npos;
+  long same_place_ = 0;
 };
 
 // --- equations

@@ -12,20 +12,25 @@ using tokens_t = std::vector<tex_token>;
 
 bool is_space(const tex_token& t) { return t.category == tex_category::space; }
 
-std::size_t skip_spaces(const tokens_t& tokens, std::size_t k) {
+// Each helper reads a container of tokens, a vector or the scanner's input stream (a deque whose
+// front is the next token: expansion there costs what the expansion holds, not the document).
+template <class Tokens>
+std::size_t skip_spaces(const Tokens& tokens, std::size_t k) {
   while (k < tokens.size() && is_space(tokens[k])) ++k;
   return k;
 }
 
 /// The offset to blame for a fault at tokens[k] (the end of the tokens: the last one).
-std::size_t offset_at(const tokens_t& tokens, std::size_t k) {
+template <class Tokens>
+std::size_t offset_at(const Tokens& tokens, std::size_t k) {
   if (tokens.empty()) return 0;
   return k < tokens.size() ? tokens[k].offset : tokens.back().offset + tokens.back().length;
 }
 
 /// The braced group that opens at tokens[k]: its tokens without the braces, and the index after its
 /// closing brace. Throws tex_error when it never closes.
-std::pair<tokens_t, std::size_t> braced_group(const tokens_t& tokens, std::size_t k, const std::string& what) {
+template <class Tokens>
+std::pair<tokens_t, std::size_t> braced_group(const Tokens& tokens, std::size_t k, const std::string& what) {
   int depth = 0;
   for (std::size_t j = k; j < tokens.size(); ++j) {
     if (tokens[j].category == tex_category::begin_group) ++depth;
@@ -38,7 +43,8 @@ std::pair<tokens_t, std::size_t> braced_group(const tokens_t& tokens, std::size_
 
 /// An undelimited argument at tokens[k] (spaces before it skipped): a braced group's tokens, or one
 /// token; and the index after it.
-std::pair<tokens_t, std::size_t> undelimited_argument(const tokens_t& tokens, std::size_t k, const std::string& macro, int n) {
+template <class Tokens>
+std::pair<tokens_t, std::size_t> undelimited_argument(const Tokens& tokens, std::size_t k, const std::string& macro, int n) {
   k = skip_spaces(tokens, k);
   if (k >= tokens.size() || tokens[k].category == tex_category::end_group || tokens[k].category == tex_category::paragraph) {
     throw tex_error("the macro " + macro + " is missing its argument " + std::to_string(n), offset_at(tokens, k), macro);
@@ -48,7 +54,8 @@ std::pair<tokens_t, std::size_t> undelimited_argument(const tokens_t& tokens, st
 }
 
 /// [ ... ] at tokens[k], the brackets at brace depth 0: its tokens and the index after ']'.
-std::pair<tokens_t, std::size_t> bracketed(const tokens_t& tokens, std::size_t k, const std::string& what) {
+template <class Tokens>
+std::pair<tokens_t, std::size_t> bracketed(const Tokens& tokens, std::size_t k, const std::string& what) {
   int depth = 0;
   for (std::size_t j = k + 1; j < tokens.size(); ++j) {
     if (tokens[j].category == tex_category::begin_group) ++depth;
@@ -65,7 +72,8 @@ bool same(const tex_token& a, const tex_token& b) { return a.category == b.categ
 /// A delimited argument: the tokens up to the first occurrence of `delimiter` at brace depth 0
 /// (one pair of braces around the whole of it removed, as TeX does), and the index after the
 /// delimiter.
-std::pair<tokens_t, std::size_t> delimited_argument(const tokens_t& tokens, std::size_t k, const tokens_t& delimiter, const std::string& macro) {
+template <class Tokens>
+std::pair<tokens_t, std::size_t> delimited_argument(const Tokens& tokens, std::size_t k, const tokens_t& delimiter, const std::string& macro) {
   int depth = 0;
   for (std::size_t j = k; j < tokens.size(); ++j) {
     if (depth == 0 && j + delimiter.size() <= tokens.size() &&
@@ -105,12 +113,19 @@ bool is_definition_command(const std::string& name) {
   return std::any_of(std::begin(names), std::end(names), [&](const char* n) { return name == n; });
 }
 
-std::size_t read_definition(const tokens_t& tokens, std::size_t at, tex_macros& macros) {
+namespace {
+
+template <class Tokens>
+std::size_t read_definition_in(const Tokens& tokens, std::size_t at, tex_macros& macros) {
   const std::string command = tokens[at].text;
   const auto fail = [&](const std::string& why, std::size_t k) -> tex_error { return tex_error(command + ": " + why, offset_at(tokens, k), command); };
   std::size_t k = skip_spaces(tokens, at + 1);
   tex_macro macro;
   macro.offset = tokens[at].offset;
+  macro.command = command;
+  const auto ending = [&](std::size_t after) {  // the source offset where the definition ends
+    return after > 0 && after <= tokens.size() ? tokens[after - 1].offset + tokens[after - 1].length : macro.offset;
+  };
   const bool latex = command == "\\newcommand" || command == "\\renewcommand" || command == "\\providecommand" || command == "\\DeclareMathOperator";
   bool starred = false;
   if (latex && k < tokens.size() && tokens[k].is_char('*')) {
@@ -142,6 +157,7 @@ std::size_t read_definition(const tokens_t& tokens, std::size_t at, tex_macros& 
     macro.body.push_back({tex_category::begin_group, "{", call, 0});
     macro.body.insert(macro.body.end(), text.begin(), text.end());
     macro.body.push_back({tex_category::end_group, "}", call, 0});
+    macro.end = ending(end);
     macros.define(std::move(macro));
     return end;
   }
@@ -153,9 +169,12 @@ std::size_t read_definition(const tokens_t& tokens, std::size_t at, tex_macros& 
       tex_macro copy = *existing;
       copy.name = macro.name;
       copy.offset = macro.offset;
+      copy.end = ending(k + 1);
+      copy.command = command;
       macros.define(std::move(copy));
     } else {
       macro.body.push_back(tokens[k]);
+      macro.end = ending(k + 1);
       macros.define(std::move(macro));
     }
     return k + 1;
@@ -194,11 +213,13 @@ std::size_t read_definition(const tokens_t& tokens, std::size_t at, tex_macros& 
   macro.body = std::move(body);
   if (command == "\\edef" || command == "\\xdef") macro.body = expand_all(macro.body, macros);
   if (command == "\\providecommand" && macros.find(macro.name)) return end;
+  macro.end = ending(end);
   macros.define(std::move(macro));
   return end;
 }
 
-void expand_at(tokens_t& tokens, std::size_t at, const tex_macro& macro) {
+template <class Tokens>
+void expand_in(Tokens& tokens, std::size_t at, const tex_macro& macro) {
   const tex_token call = tokens[at];
   std::vector<tokens_t> arguments;
   std::size_t k = at + 1;
@@ -266,6 +287,13 @@ void expand_at(tokens_t& tokens, std::size_t at, const tex_macro& macro) {
   tokens.erase(tokens.begin() + static_cast<std::ptrdiff_t>(at), tokens.begin() + static_cast<std::ptrdiff_t>(k));
   tokens.insert(tokens.begin() + static_cast<std::ptrdiff_t>(at), expansion.begin(), expansion.end());
 }
+
+}  // namespace
+
+std::size_t read_definition(const std::vector<tex_token>& tokens, std::size_t at, tex_macros& macros) { return read_definition_in(tokens, at, macros); }
+std::size_t read_definition(const std::deque<tex_token>& tokens, std::size_t at, tex_macros& macros) { return read_definition_in(tokens, at, macros); }
+void expand_at(std::vector<tex_token>& tokens, std::size_t at, const tex_macro& macro) { expand_in(tokens, at, macro); }
+void expand_at(std::deque<tex_token>& tokens, std::size_t at, const tex_macro& macro) { expand_in(tokens, at, macro); }
 
 tokens_t expand_all(tokens_t tokens, const tex_macros& macros, int limit) {
   if (macros.empty()) return tokens;

@@ -357,13 +357,16 @@ class reader {
   GiNaC::ex factor(cursor& c, const std::vector<std::string>& closers) {
     GiNaC::ex f = primary(c, closers);
     while (!c.done() && is_atom(c.node(), "!")) {  // n!
+      const tex_node& bang = c.node();
       ++c.k;
+      if (GiNaC::is_a<GiNaC::numeric>(f) && GiNaC::ex_to<GiNaC::numeric>(f) > 1000) refuse("a factorial beyond the reader's exact arithmetic", bang);
       f = GiNaC::factorial(f);
     }
     return f;
   }
 
   GiNaC::ex primary(cursor& c, const std::vector<std::string>& closers) {
+    if (c.done()) throw tex_error("a factor missing at the end of the formula (after \\cdot, \\times or an operator)", c.list->empty() ? 0 : c.list->back().offset);
     const tex_node& n = c.node();
     switch (n.kind) {
       case tex_node_kind::atom: return atom(c);
@@ -382,7 +385,7 @@ class reader {
         ++c.k;
         const GiNaC::ex radicand = whole(n.children[0].children);
         if (n.children.size() == 1) return GiNaC::sqrt(radicand);
-        return GiNaC::pow(radicand, 1 / whole(n.children[1].children));
+        return power_of(radicand, 1 / whole(n.children[1].children));
       }
       case tex_node_kind::scripts: return scripts(c, closers);
       case tex_node_kind::delimited: {
@@ -480,7 +483,7 @@ class reader {
       value = GiNaC::numeric(whole_digits.c_str()) / GiNaC::numeric(10).power(static_cast<long>(digits.size() - point - 1));
     }
     (void)first;
-    return power ? GiNaC::pow(value, *power) : GiNaC::ex(value);
+    return power ? power_of(value, *power) : GiNaC::ex(value);
   }
 
   GiNaC::ex whole_node(const tex_node& n) { return n.kind == tex_node_kind::group ? whole(n.children) : whole({n}); }
@@ -498,49 +501,83 @@ class reader {
     ++c.k;
     if (close.kind == tex_node_kind::scripts) {
       if (!close.sub.empty()) refuse("a subscript on a closing '" + pair->second + "'", close);
-      inside = GiNaC::pow(inside, whole_node(close.sup.front()));
+      inside = power_of(inside, whole_node(close.sup.front()));
     }
     return inside;
   }
 
-  /// The arguments of an application: after '(' (an atom) up to its ')', split at commas.
-  GiNaC::exvector arguments(cursor& c) {
-    const tex_node& open = c.node();
+  /// The arguments of an application: after '(' (an atom) up to its ')', split at commas, or a
+  /// \left( ... \right); and a power on its closing delimiter (V(x)^2 squares the application).
+  struct application {
+    GiNaC::exvector args;
+    std::optional<GiNaC::ex> power;
+  };
+  application arguments_and_power(cursor& c) {
+    const tex_node& at = c.node();
+    const tex_node& open = at.kind == tex_node_kind::scripts ? at.children.front() : at;
+    application out;
     if (open.kind == tex_node_kind::delimited) {
       ++c.k;
       if (open.text != "(" || open.close != ")") refuse("an application in \\left" + open.text + " ... \\right" + open.close, open);
-      GiNaC::exvector args;
+      if (at.kind == tex_node_kind::scripts) {
+        if (!at.sub.empty()) refuse("a subscript on a function's argument", at);
+        out.power = whole_node(at.sup.front());
+      }
       tex_list part;
       int depth = 0;
       for (const tex_node& n : open.children) {
         if (n.kind == tex_node_kind::atom && n.atom_class == tex_class::open) ++depth;
         if (n.kind == tex_node_kind::atom && n.atom_class == tex_class::close) --depth;
         if (depth == 0 && is_atom(n, ",")) {
-          args.push_back(whole(part));
+          out.args.push_back(whole(part));
           part.clear();
           continue;
         }
         part.push_back(n);
       }
-      args.push_back(whole(part));
-      return args;
+      out.args.push_back(whole(part));
+      return out;
     }
     ++c.k;  // '('
-    GiNaC::exvector args;
     for (;;) {
-      args.push_back(sum(c, {")", ","}));
+      out.args.push_back(sum(c, {")", ","}));
       if (c.done()) refuse("a '(' that is never closed", open);
       const tex_node& n = c.node();
       ++c.k;
       if (is_atom(n, ",")) continue;
-      if (n.kind == tex_node_kind::scripts) refuse("a superscript on a function's closing ')'", n);
-      return args;
+      if (n.kind == tex_node_kind::scripts) {
+        if (!n.sub.empty()) refuse("a subscript on a function's closing ')'", n);
+        out.power = whole_node(n.sup.front());
+      }
+      return out;
     }
+  }
+
+  GiNaC::exvector arguments(cursor& c) {
+    const tex_node& at = c.node();
+    application a = arguments_and_power(c);
+    if (a.power) refuse("a power on the argument's closing delimiter where no power can stand", at);
+    return a.args;
+  }
+
+  GiNaC::ex raised(const GiNaC::ex& e, const std::optional<GiNaC::ex>& power) { return power ? power_of(e, *power) : e; }
+
+  /// base^exponent, an exponent whose numerator or denominator exceeds 1000 refused: exact arithmetic
+  /// on 9^{9^9} would take what no formula of a derivation needs.
+  GiNaC::ex power_of(const GiNaC::ex& base, const GiNaC::ex& exponent) {
+    if (GiNaC::is_a<GiNaC::numeric>(exponent)) {
+      const GiNaC::numeric& e = GiNaC::ex_to<GiNaC::numeric>(exponent);
+      if (!e.is_rational() || GiNaC::abs(e.numer()) > 1000 || e.denom() > 1000) {
+        throw tex_error("an exponent beyond the reader's exact arithmetic (" + canonical_text(exponent) + ")", 0);
+      }
+    }
+    return GiNaC::pow(base, exponent);
   }
 
   static bool opens_application(const tex_node* n) {
     if (!n) return false;
     if (n->kind == tex_node_kind::atom && n->text == "(") return true;
+    if (n->kind == tex_node_kind::scripts && n->children.front().kind == tex_node_kind::delimited) return n->children.front().text == "(";
     return n->kind == tex_node_kind::delimited && n->text == "(";
   }
 
@@ -551,11 +588,11 @@ class reader {
     ++c.k;
     const bool applied = !c.done() && opens_application(&c.node());
     if (declared_.is_function(name) && applied) {
-      const GiNaC::exvector args = arguments(c);
-      if (derivative == 0) return apply_function(name, args);
-      if (args.size() != 1) refuse("a derivative of " + name + ", a function of " + std::to_string(args.size()) + " arguments: by which is not written", at);
+      const application a = arguments_and_power(c);
+      if (derivative == 0) return raised(apply_function(name, a.args), a.power);
+      if (a.args.size() != 1) refuse("a derivative of " + name + ", a function of " + std::to_string(a.args.size()) + " arguments: by which is not written", at);
       const GiNaC::symbol x("derivative_variable");
-      return GiNaC::diff(apply_function(name, {x}), x, static_cast<unsigned>(derivative)).subs(x == args.front());
+      return raised(GiNaC::diff(apply_function(name, {x}), x, static_cast<unsigned>(derivative)).subs(x == a.args.front()), a.power);
     }
     if (derivative > 0) {
       if (!declared_.is_function(name)) {
@@ -564,6 +601,10 @@ class reader {
                at, "declare " + name + " under [symbols] functions");
       }
       refuse("the derivative of " + name + " without its argument in parentheses", at);
+    }
+    // A function alone is no number: read as a symbol it would be a guess (V (h)^2 is not V h^2).
+    if (declared_.is_function(name) && !declared_.is_state(name)) {
+      refuse("the function " + name + " without its argument in parentheses", at, name + "(x)");
     }
     return symbols_[name];
   }
@@ -616,10 +657,10 @@ class reader {
     // else at the variable below (dV/dq is V' at q); a state's without one is a quantity, dq/dt.
     if (declared_.is_function(of) && (applied || !declared_.is_state(of))) {
       if (k != order) refuse("the derivative d^" + std::to_string(k) + " " + of + " / d" + by + "^" + std::to_string(order) + ": the orders differ", n);
-      const GiNaC::exvector args = applied ? arguments(c) : GiNaC::exvector{symbols_[by]};
-      if (args.size() != 1) refuse("a derivative of " + of + ", a function of " + std::to_string(args.size()) + " arguments, by name", n);
+      const application a = applied ? arguments_and_power(c) : application{{symbols_[by]}, std::nullopt};
+      if (a.args.size() != 1) refuse("a derivative of " + of + ", a function of " + std::to_string(a.args.size()) + " arguments, by name", n);
       const GiNaC::symbol x("derivative_variable");
-      return GiNaC::diff(apply_function(of, {x}), x, static_cast<unsigned>(k)).subs(x == args.front());
+      return raised(GiNaC::diff(apply_function(of, {x}), x, static_cast<unsigned>(k)).subs(x == a.args.front()), a.power);
     }
     if (applied) {
       refuse("\\frac{d" + of + "}{d" + by + "}(...) applies the derivative of " + of + " to an argument, and " + of + " is not declared a function", n,
@@ -676,7 +717,7 @@ class reader {
         if (opens_application(after)) refuse("a superscript on the function " + name + " before its argument", n, "write (" + name + "(x))^k");
       }
       const GiNaC::ex exponent = whole(sup);
-      return GiNaC::pow(named(c, name), exponent);
+      return power_of(named(c, name), exponent);
     }
     if (!n.sub.empty()) refuse("a subscript on what is not a name", n);
     // A power of a group, a fraction, a root, a delimited expression, a matrix.
@@ -687,7 +728,7 @@ class reader {
     const GiNaC::ex value = primary(base_cursor, {});
     if (!base_cursor.done()) refuse("unexpected", inner);
     ++c.k;
-    return GiNaC::pow(value, exponent);
+    return power_of(value, exponent);
   }
 
   static std::optional<int> parenthesised_order(const tex_list& sup) {  // ^{(3)}
@@ -783,7 +824,7 @@ class reader {
     if (name == "\\cosh") value = GiNaC::cosh(x);
     if (name == "\\tanh") value = GiNaC::tanh(x);
     if (name == "\\det") value = determinant_of(x);
-    return power ? GiNaC::pow(value, *power) : value;
+    return power ? power_of(value, *power) : value;
   }
 
   /// \sum_{j=a}^{b} s: the summand is the rest of the term.
@@ -832,7 +873,13 @@ class reader {
 
 }  // namespace
 
-GiNaC::ex read_math(const tex_list& side, const tex_declarations& declared, tex_symbols& symbols) { return reader(declared, symbols).whole(side); }
+GiNaC::ex read_math(const tex_list& side, const tex_declarations& declared, tex_symbols& symbols) {
+  try {
+    return reader(declared, symbols).whole(side);
+  } catch (const GiNaC::pole_error& e) {  // 1/0 as printed: undefined, not a formula
+    throw tex_error(std::string("the formula divides by zero (") + e.what() + ")", side.empty() ? 0 : side.front().offset);
+  }
+}
 
 GiNaC::ex read_tex(const std::string& tex, const tex_declarations& declared, tex_symbols& symbols, const tex_macros* macros) {
   std::vector<tex_token> tokens = tex_tokenize(tex);

@@ -200,7 +200,7 @@ class tree_parser {
   // --- lists
   /// Atoms up to a terminator ('}', '&', '\\', \end, \right, \middle, or the end), a {a \over b}
   /// split where it is; the terminator is left for the caller.
-  tex_list list() {
+  tex_list list(bool stop_at_over = false) {
     tex_list out;
     std::optional<std::size_t> over;  // index in `out` where \over split it
     std::string over_kind;
@@ -213,6 +213,7 @@ class tree_parser {
         break;
       }
       if (t.is_control("\\over") || t.is_control("\\atop") || t.is_control("\\choose")) {
+        if (stop_at_over) break;  // a font switch's reach ends where \over splits its group
         if (over) fail("a second " + t.text + " in one group (TeX: 'Ambiguous; you need another { and }')", t);
         over = out.size();
         over_kind = t.text;
@@ -226,7 +227,7 @@ class tree_parser {
         ++k_;
         tex_node font{tex_node_kind::font, switched->second};
         font.offset = start;
-        font.children = list();
+        font.children = list(true);
         font.first_token = index;
         font.last_token = k_;
         out.push_back(std::move(font));
@@ -246,8 +247,20 @@ class tree_parser {
     return {std::move(fraction)};
   }
 
+  /// Nested groups, arguments and environments beyond this depth are refused: TeX itself has a
+  /// limit (its save stack), and the reader's recursion must not meet the machine's.
+  static constexpr int deepest = 400;
+  struct nested {
+    int& depth;
+    nested(int& d, const tex_token& at, tree_parser& p) : depth(d) {
+      if (++depth > deepest) p.fail("groups nested more than " + std::to_string(deepest) + " deep", at);
+    }
+    ~nested() { --depth; }
+  };
+
   tex_node group() {  // at '{'
     const std::size_t open = k_;
+    const nested guard(depth_, t_[open], *this);
     ++k_;
     tex_node g{tex_node_kind::group};
     g.offset = t_[open].offset;
@@ -316,6 +329,7 @@ class tree_parser {
 
   /// x^a, x_a, x' (primes), attached to the last atom of `out` (an empty base when there is none).
   void scripts_into(tex_list& out) {
+    const nested guard(depth_, t_[k_], *this);
     tex_node base;
     const std::size_t from = k_;
     if (!out.empty() && out.back().kind == tex_node_kind::scripts) {
@@ -386,6 +400,7 @@ class tree_parser {
 
   std::optional<tex_node> command() {
     const tex_token t = t_[k_];
+    const nested guard(depth_, t, *this);
     const std::string& name = t.text;
     ++k_;
     const auto node_of = [&](tex_node_kind kind, std::string text) {
@@ -636,6 +651,7 @@ class tree_parser {
 
   const tokens_t& t_;
   std::size_t k_ = 0;
+  int depth_ = 0;
 };
 
 // --- the normal form

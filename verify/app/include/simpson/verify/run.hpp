@@ -18,7 +18,13 @@ struct claim_outcome {
   verdict expected = verdict::holds;
   claim_result result;
   double seconds = 0;
+  /// The erratum it follows from, derived (consequences.hpp): it holds once that erratum's proved
+  /// corrections are put in; empty when it does not follow so.
+  std::string consequence_of;
 };
+
+/// The finding a claim's outcome is counted under: its derived cause, or the one its record types.
+inline const std::string& cause_of(const claim_outcome& o) { return o.consequence_of.empty() ? o.checked->follows_from : o.consequence_of; }
 
 struct run_record {
   scene run_scene;

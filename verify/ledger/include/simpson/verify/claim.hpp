@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,14 @@ inline bool as_expected(verdict got, verdict expected) { return got == expected 
 /// What a check is given: the precisions of the numeric rechecks, the seed and how many random
 /// samples each recheck draws per precision.
 struct paper_reading;
+struct corrected_formula;  // formula_reference.hpp: a printed formula's proved correction
+
+/// Corrections of printed formulas a claim is judged again with (its consequences traced): each put
+/// in where the claim reads its formula; `used` says whether any was.
+struct formula_corrections {
+  std::vector<std::shared_ptr<const corrected_formula>> corrected;
+  mutable bool used = false;
+};
 
 struct run_context {
   std::vector<precision> precisions;
@@ -61,6 +70,9 @@ struct run_context {
   /// may rise to (doubling) before the claim is undecided.
   unsigned enclosure_digits = 40;
   unsigned enclosure_budget_digits = 640;
+  /// Corrected formulas to read instead of the printed ones (a consequence's second judgment); null
+  /// for a judgment of the document as printed.
+  const formula_corrections* corrections = nullptr;
 };
 
 /// What a check found. `evidence` has one member per method ("exact", "numeric", ...).
@@ -87,6 +99,9 @@ struct claim_result {
   /// without `certificate`.
   std::string refutation;
   std::vector<std::string> refutation_lemmas;
+  /// The printed formulas this erratum's correction replaces, with what should stand there: the
+  /// claims that read them are judged again with them (ledger.hpp, trace_consequences).
+  std::vector<std::shared_ptr<const corrected_formula>> corrected_formulas;
 };
 
 /// The class of a finding, one policy for all (docs/findings.md, "How findings are classified"):

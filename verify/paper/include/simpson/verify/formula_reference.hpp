@@ -57,6 +57,17 @@ struct referenced_formula {
   std::vector<std::string> relations;  // between them: "=", "<", "\\leq"
   std::vector<tex_list> side_trees;
   GiNaC::ex value;
+  /// Which printed formula this is, whatever the reference's spelling: its place, equation and side
+  /// ("label eq:PhiS#1:side2"); what a proved correction of it names.
+  std::string identity;
+};
+
+/// A printed formula's proved correction: the value that should stand where `identity` is printed
+/// (an erratum's derived formula), and how the reports name it ("(eq:PhiS)").
+struct corrected_formula {
+  std::string identity;
+  std::string shown;
+  GiNaC::ex value;
 };
 
 /// Reads `reference` from `document` into paper_symbols(), `declared` deciding what TeX leaves

@@ -9,6 +9,7 @@
 
 #include <simpson/verify/tex_tokens.hpp>
 
+#include <deque>
 #include <map>
 #include <optional>
 #include <string>
@@ -26,7 +27,9 @@ struct tex_macro {
   std::vector<tex_token> parameter_text{};
   std::vector<tex_token> body{};
   int line = 0;       // where it is defined
-  std::size_t offset = 0;
+  std::size_t offset = 0;      // its definition's span in the source: [offset, end)
+  std::size_t end = 0;
+  std::string command{};       // "\\newcommand", "\\def", "\\DeclareMathOperator", ...
 };
 
 class tex_macros {
@@ -47,16 +50,18 @@ bool is_definition_command(const std::string& name);
 /// index just after it. Throws tex_error naming the line's offset when it does not read (no name,
 /// no body, an argument count that is not 1 to 9).
 std::size_t read_definition(const std::vector<tex_token>& tokens, std::size_t at, tex_macros& macros);
+std::size_t read_definition(const std::deque<tex_token>& tokens, std::size_t at, tex_macros& macros);
 
 /// Expands the macro call at tokens[at] in place (its arguments read from the tokens after it);
 /// the body's own tokens take the call's offset and the macro's name. Throws tex_error when an
 /// argument is missing or a delimited parameter text does not match ("Use of \x doesn't match its
 /// definition", as TeX says).
 void expand_at(std::vector<tex_token>& tokens, std::size_t at, const tex_macro& macro);
+void expand_at(std::deque<tex_token>& tokens, std::size_t at, const tex_macro& macro);
 
 /// Every macro of `macros` in `tokens` expanded, again until none is left; at most `limit`
 /// expansions (a macro that uses itself never ends: tex_error).
-std::vector<tex_token> expand_all(std::vector<tex_token> tokens, const tex_macros& macros, int limit = 20000);
+std::vector<tex_token> expand_all(std::vector<tex_token> tokens, const tex_macros& macros, int limit = 2000);
 
 /// The macros `text` defines, in order (a later definition replaces an earlier one), read by
 /// scanning its tokens for definitions; throws tex_error.

@@ -1,0 +1,65 @@
+// Consequences traced: see consequences.hpp.
+
+#include <simpson/verify/consequences.hpp>
+
+#include <simpson/verify/formula_reference.hpp>
+#include <simpson/verify/printed_checks.hpp>
+
+#include <stdexcept>
+
+namespace simpson::verify {
+namespace {
+
+/// The claim's verdict with `corrected` read instead of the printed formulas, and whether it read any.
+std::pair<verdict, bool> judged_with(const claim& c, const claim_result& cause, const run_context& ctx) {
+  formula_corrections corrections{cause.corrected_formulas};
+  run_context again = ctx;
+  again.corrections = &corrections;
+  again.quotes = nullptr;  // the document's sentences are quoted once, by the judgment as printed
+  const claim_result r = check_claim(c, again);
+  return {r.outcome, corrections.used};
+}
+
+std::vector<std::string> shown(const claim_result& cause) {
+  std::vector<std::string> out;
+  for (const auto& c : cause.corrected_formulas) out.push_back(c->shown);
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::optional<consequence>> trace_consequences(const std::vector<const claim*>& claims, const std::vector<const claim_result*>& results,
+                                                           const run_context& ctx) {
+  std::vector<std::optional<consequence>> out(claims.size());
+  std::vector<std::size_t> causes;  // the errata with proved corrections of printed formulas
+  for (std::size_t k = 0; k < claims.size(); ++k) {
+    if (results[k]->outcome == verdict::erratum && !results[k]->corrected_formulas.empty()) causes.push_back(k);
+  }
+  if (causes.empty()) return out;
+  for (std::size_t k = 0; k < claims.size(); ++k) {
+    const claim& c = *claims[k];
+    const verdict v = results[k]->outcome;
+    if (v == verdict::holds || v == verdict::text_changed || v == verdict::skipped || c.check_name.rfind("shape ", 0) != 0) continue;
+    // The typed cause first: what the derivation says of it decides whether the record's link stands.
+    std::vector<std::size_t> order;
+    for (const std::size_t e : causes) {
+      if (claims[e]->id == c.follows_from) order.insert(order.begin(), e);
+      else if (e != k) order.push_back(e);
+    }
+    for (const std::size_t e : order) {
+      const auto [again, read] = judged_with(c, *results[e], ctx);
+      const bool typed = claims[e]->id == c.follows_from;
+      if (read && again == verdict::holds) {
+        out[k] = consequence{claims[e]->id, shown(*results[e])};
+        break;
+      }
+      if (typed && read) {
+        throw std::logic_error("claim '" + c.id + "' is recorded to follow from '" + c.follows_from + "', but with the corrected " + shown(*results[e]).front() +
+                               " it is still " + to_string(again) + ": a link the derivation contradicts");
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace simpson::verify
