@@ -81,8 +81,8 @@ int main(int argc, char** argv) {
       const tex_document document = read_document(source);
       for (const tex_region& region : document.regions()) {
         for (const tex_row& row : region.rows) {
-          const auto [from, to] = source_span(row.tokens);
-          if (from == std::string::npos) continue;  // nothing of the source's own
+          if (source_span(row.tokens).first == std::string::npos) continue;  // nothing of the source's own
+          const std::size_t from = row.begin, to = std::max(row.begin, row.end);
           const std::string tex = document.text().substr(from, to - from);
           json line = {{"file", argv[a]},
                        {"line", line_at(document.text(), from)},

@@ -98,7 +98,13 @@ function rowForm(tree, aligned) {
   if (!aligned) return list(tree);
   const array = tree.find((n) => n.type === 'array');
   const cells = [];
-  for (const row of array.body) for (const c of row) item(c, cells);
+  // A cell is KaTeX's styling around an ordgroup: its symbols, not a group of them.
+  const cellItems = (c) => {
+    if (c.type === 'styling') for (const x of c.body) cellItems(x);
+    else if (c.type === 'ordgroup') for (const x of c.body) item(x, cells);
+    else item(c, cells);
+  };
+  for (const row of array.body) for (const c of row) cellItems(c);
   return joined(cells);
 }
 

@@ -8,6 +8,7 @@
 #include "shape_support.hpp"
 
 #include <simpson/verify/formula_reference.hpp>
+#include <simpson/verify/prose_span.hpp>
 
 #include <fmt/format.h>
 
@@ -236,7 +237,10 @@ const std::map<std::string, proof_shape>& proof_shapes() {
                      {"state", argument_kind::symbols, true, "the state q, a function the definitions give (q(t) = ...)", 1}}),
          discrete_lagrangian_shape});
     add({"sum-range", "the printed sum runs over the elements of the printed interval, from the first (starting at its start) to the last (ending at its end)", "sum",
-         with_where({{"sum", argument_kind::formula, true, "the printed sum \\sum_{j=a}^{b}"},
+         with_where({{"sum", argument_kind::formula, false, "the printed sum \\sum_{j=a}^{b}", 0, "", false, {}, "", "sentence"},
+                     pattern_with_hole("sentence", "instead of a printed sum: a sentence stating its range, with the holes {from} and {to} (TeX: '$1$', '$N - 1$')",
+                                       "from", false),
+                     {"index", argument_kind::word, false, "the sum's index, with a sentence: 'j'", 0, "", false, {}, "", "", "sentence"},
                      {"element", argument_kind::symbols, true, "the summand's first and last nodes, x_j and x_{j+1}", 2},
                      {"node", argument_kind::formula, true, "the printed time of node j, t_j = j h"},
                      {"range", argument_kind::condition, true, "the printed interval a <= t <= b"}}),
@@ -247,6 +251,13 @@ const std::map<std::string, proof_shape>& proof_shapes() {
                      {"condition", argument_kind::condition, true, "the printed interval 0 < variable < c"},
                      {"sign", argument_kind::word, true, "positive or negative", 0, "", false, {"positive", "negative"}}}),
          sign_on_interval_shape});
+    add({"sign-iff", "expression has the stated sign if and only if 0 < variable < c: on the printed interval, and nowhere else for variable > 0",
+         "expression",
+         with_where({{"expression", argument_kind::formula, true, "a function of the variable alone once scaled"},
+                     {"variable", argument_kind::formula, true, "the variable of the condition, a product of positive symbols", 0, "", true},
+                     {"condition", argument_kind::condition, true, "the printed interval 0 < variable < c"},
+                     {"sign", argument_kind::word, true, "positive or negative", 0, "", false, {"positive", "negative"}}}),
+         sign_iff_shape});
     add({"factor-signs", "each factor of the printed product, and the product, have the signs a sentence states on the printed interval 0 < variable < c",
          "expression",
          with_where({{"expression", argument_kind::formula, true, "the printed product: its sums are its factors, the rest one prefactor"},
@@ -353,6 +364,13 @@ void check_shape_arguments(const claim_record& record, const std::string& file) 
     const auto it = record.with.find(p.name);
     if (!p.hole.empty() && it != record.with.end() && it->second.values.front().find("{" + p.hole + "}") == std::string::npos) {
       throw claims_file_error(file, it->second.line, "with." + p.name, "the sentence's pattern has no hole {" + p.hole + "}");
+    }
+    if ((!p.hole.empty() || p.name == "says") && it != record.with.end()) {
+      try {
+        check_pattern(it->second.values.front());
+      } catch (const std::invalid_argument& e) {
+        throw claims_file_error(file, it->second.line, "with." + p.name, e.what());
+      }
     }
   }
   // The words: a sentence and the property it states, both or neither.

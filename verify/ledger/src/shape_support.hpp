@@ -173,6 +173,7 @@ claim_result stationary_shape(const shape_call& call, const run_context& ctx);
 claim_result discrete_momenta_shape(const shape_call& call, const run_context& ctx);
 claim_result explicit_map_shape(const shape_call& call, const run_context& ctx);
 claim_result explicit_scheme_shape(const shape_call& call, const run_context& ctx);
+claim_result sign_iff_shape(const shape_call& call, const run_context& ctx);
 claim_result discrete_map_shape(const shape_call& call, const run_context& ctx);
 claim_result truncation_shape(const shape_call& call, const run_context& ctx);
 claim_result stated_order_shape(const shape_call& call, const run_context& ctx);

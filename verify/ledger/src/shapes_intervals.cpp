@@ -13,6 +13,7 @@
 #include <simpson/verify/tex_math.hpp>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <optional>
@@ -331,6 +332,104 @@ claim_result factor_signs_shape(const shape_call& call, const run_context& ctx) 
                     ? fmt::format("Wording: 'all the factors' are said to be {}, which the prefactor {} is not; the factors that are sums are {}, and "
                                   "the product's sign is as stated.", said.words("sign"), fmt::join(unlike, ", "), said.words("sign"))
                     : "As printed, the factors' signs are not the sentence's: " + fmt::format("{}", fmt::join(unlike, ", ")) + ".";
+  return result;
+}
+
+}  // namespace simpson::verify::detail
+
+namespace simpson::verify::detail {
+
+/// "positive if and only if 0 < v < c": the function has the stated sign on the printed interval and
+/// nowhere else for v > 0 (but at isolated points). Our kernel's Sturm sequences find every positive
+/// root and pole; the sign is probed on each interval between them: the printed end must be one of
+/// them, the sign the stated one before it and never after it. Coq certifies the sign on the printed
+/// interval, and on each bounded interval beyond it between rational ends; the unbounded last one is
+/// our kernel's alone.
+claim_result sign_iff_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const ex f = read.formula("expression");
+  const referenced_formula condition = read.raw("condition");
+  const ex v = read.formula("variable");
+  const std::string claimed = call.with.at("sign").values.front();
+  const int want = claimed == "positive" ? 1 : -1;
+  claim_result result;
+  result.printed = read.printed();
+  const ex high = interval_end(condition, v, read.reading());
+  const std::optional<one_variable> g = in_variable(f, v);
+  if (!g) {
+    result.outcome = verdict::undecided;
+    result.note = "(" + reference_of(call, "expression") + ") is not a function of " + text_of(v) + " alone.";
+    return result;
+  }
+  const std::optional<rational> c = g->exact(high);
+  if (!c || *c <= 0) {
+    result.outcome = verdict::undecided;
+    result.note = "The interval's end " + text_of(high) + " is not a positive rational" + (g->in_square ? " in its square" : "") +
+                  ": our kernel compares ends exactly, and cannot here.";
+    return result;
+  }
+  // The intervals of v > 0 between the roots and poles, each with its sign (probed inside it).
+  struct band {
+    rational from, to;  // to < 0: unbounded
+    bool from_exact = true, to_exact = true;
+    std::string from_text, to_text;
+    int sign = 0;
+  };
+  std::vector<band> bands;
+  rational from(0);
+  std::string from_text = "0";
+  bool from_exact = true;
+  for (const positive_root& e : g->ends) {
+    const rational probe = (from + e.low) / 2;
+    bands.push_back({from, e.low, from_exact, e.exact(), from_text, g->text(e), g->sign_at(probe)});
+    from = e.high;
+    from_text = g->text(e);
+    from_exact = e.exact();
+  }
+  bands.push_back({from, rational(-1), from_exact, true, from_text, "", g->sign_at(from + rational(1))});
+  // Where the function has the stated sign, as bands of v.
+  const std::string var = text_of(v);
+  std::vector<std::string> where;
+  for (const band& b : bands) {
+    if (b.sign != want) continue;
+    where.push_back(b.to < 0 ? fmt::format("{} > {}", var, b.from_text) : fmt::format("{} < {} < {}", b.from_text, var, b.to_text));
+  }
+  // The printed statement: the first band ends exactly at c, with the stated sign, and no other band has it.
+  const bool first_is_printed = !bands.empty() && bands.front().sign == want && bands.front().to_exact && bands.front().to == *c;
+  bool others_opposite = true;
+  for (std::size_t k = 1; k < bands.size(); ++k) others_opposite = others_opposite && bands[k].sign != want;
+  const bool holds = first_is_printed && others_opposite;
+  result.evidence["exact"] = {
+      {"statement", fmt::format("({}) is {} exactly for 0 < {} < {}", reference_of(call, "expression"), claimed, var, text_of(high))},
+      {"in_variable", text_of(g->of_t.subs(g->t == v))},
+      {"bands", [&] {
+         json all = json::array();
+         for (const band& b : bands) {
+           all.push_back(fmt::format("{} on ({}, {})", b.sign > 0 ? "positive" : "negative", b.from_text, b.to < 0 ? "infinity" : b.to_text));
+         }
+         return all;
+       }()},
+      {"interval_end", fmt::format("{} = {} (exact)", g->in_square ? "c^2" : "c", c->str())},
+      {"own", "our kernel's Sturm sequences: every positive root and pole, the sign probed between them"}};
+  std::vector<proof_goal> goals;
+  if (first_is_printed) goals.push_back(g->sign_goal_on("sign_before", want, *c));
+  for (std::size_t k = 1; k < bands.size(); ++k) {
+    if (bands[k].to < 0 || !bands[k].from_exact || !bands[k].to_exact) continue;
+    goals.push_back(g->sign_goal_between("sign_band_" + std::to_string(k), bands[k].sign, bands[k].from, bands[k].to));
+  }
+  if (goals.empty()) {
+    result.certificate_missing = "no band with rational ends to state; our kernel's Sturm sequences decide it";
+  } else {
+    record_certificate(result, coq_certificate(call.claim_id, call.statement, goals));
+  }
+  if (holds) {
+    result.outcome = verdict::holds;
+    return result;
+  }
+  result.outcome = verdict::erratum;
+  result.correction = where.empty() ? fmt::format("{} is never {} for {} > 0", text_of(f), claimed, var)
+                                    : fmt::format("{} is {} exactly for {}", text_of(f), claimed, fmt::join(where, " and for "));
+  result.note = "As printed: (" + reference_of(call, "expression") + ") is said to be " + claimed + " if and only if " + folded_space(condition.tex) + ".";
   return result;
 }
 

@@ -5,6 +5,7 @@
 
 #include "printed_check_support.hpp"
 
+#include <simpson/verify/quoted_words.hpp>
 #include <simpson/verify/tex_math.hpp>
 
 #include <fmt/format.h>
@@ -40,10 +41,31 @@ ex index_where(const ex& time, const GiNaC::symbol& j, const ex& at, const std::
 /// against it).
 claim_result sum_range_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
-  const ex sum = read.formula("sum");
-  if (!is_sum(sum)) throw std::invalid_argument(reference_of(call, "sum") + " is not a sum \\sum_{j=a}^{b}");
-  const GiNaC::symbol j = GiNaC::ex_to<GiNaC::symbol>(sum.op(1));
-  const ex lower = sum.op(2), upper = sum.op(3);
+  // The bounds as printed in the sum, or as a sentence states them ("j running from $1$ to $N$").
+  GiNaC::symbol j;
+  ex lower, upper;
+  const bool in_words = read.has("sentence");
+  if (in_words) {
+    const quoted_sentence said = quote(ctx, call.with.at("sentence").values.front());
+    j = symbol_named(call.with.at("index").values.front());
+    const auto bound = [&](const std::string& hole) {
+      try {
+        const ex value = read_tex(said.words(hole), read.reading(), paper_symbols());
+        said.record(hole, text_of(value));
+        return value;
+      } catch (const tex_error&) {
+        said.unparsed(hole, "a bound written as TeX ($1$, $N - 1$)");
+      }
+    };
+    lower = bound("from");
+    upper = bound("to");
+  } else {
+    const ex sum = read.formula("sum");
+    if (!is_sum(sum)) throw std::invalid_argument(reference_of(call, "sum") + " is not a sum \\sum_{j=a}^{b}");
+    j = GiNaC::ex_to<GiNaC::symbol>(sum.op(1));
+    lower = sum.op(2);
+    upper = sum.op(3);
+  }
   const std::vector<GiNaC::symbol> element = read.symbols("element");
   const GiNaC::numeric k0 = offset_of(element.front().get_name(), j.get_name()), k1 = offset_of(element.back().get_name(), j.get_name());
   const ex time = read.formula("node");
@@ -66,7 +88,7 @@ claim_result sum_range_shape(const shape_call& call, const run_context& ctx) {
   claim_result result;
   result.printed = read.printed();
   result.evidence["exact"] = {
-      {"statement", fmt::format("the range of ({}) over the elements of ({}), the nodes at ({})", reference_of(call, "sum"), reference_of(call, "range"),
+      {"statement", fmt::format("the range of ({}) over the elements of ({}), the nodes at ({})", in_words ? "the sum the sentence states" : reference_of(call, "sum"), reference_of(call, "range"),
                                 reference_of(call, "node"))},
       {"printed", fmt::format("{} = {}, ..., {}: {} terms", j_name, text_of(lower), text_of(upper), text_of(GiNaC::normal(upper - lower + 1)))},
       {"derived", fmt::format("element {} from t = {} to t = {}; the first starts at {}, the last ends at {}: {}", j_name, text_of(starts), text_of(ends),
@@ -77,12 +99,18 @@ claim_result sum_range_shape(const shape_call& call, const run_context& ctx) {
                            : "holds: the derived ends at the interval's (" + at_start.evidence + "; " + at_end.evidence +
                                  "), the printed bounds against them (" + low.evidence + "; " + high.evidence + "): they " +
                                  (own_holds ? "are these" : "differ")}};
-  // The correction: the printed TeX with the derived bounds: "S_d = \sum_{j=0}^{N-1} L_d (q_j ,\, q_{j+1} )".
-  const referenced_formula printed = read.raw("sum");
-  std::string corrected = std::regex_replace(folded_space(printed.sides.back()), std::regex(R"(\\sum_\{[^{}]*\}\^(\{[^{}]*\}|\S))"),
-                                             fmt::format("\\sum_{{{}={}}}^{{{}}}", j_name, text_of(first), text_of(last)),
-                                             std::regex_constants::format_first_only);  // no $ in the replacement
-  if (printed.sides.size() > 1) corrected = folded_space(printed.sides.front()) + " = " + corrected;
+  // The correction: the printed TeX with the derived bounds: "S_d = \\sum_{j=0}^{N-1} L_d (q_j ,\\, q_{j+1} )"; or,
+  // for bounds stated in words, the words as they should be.
+  std::string corrected;
+  if (in_words) {
+    corrected = fmt::format("{} runs from {} to {}, not from {} to {}", j_name, text_of(first), text_of(last), text_of(lower), text_of(upper));
+  } else {
+    const referenced_formula printed = read.raw("sum");
+    corrected = std::regex_replace(folded_space(printed.sides.back()), std::regex(R"(\\sum_\{[^{}]*\}\^(\{[^{}]*\}|\S))"),
+                                   fmt::format("\\sum_{{{}={}}}^{{{}}}", j_name, text_of(first), text_of(last)),
+                                   std::regex_constants::format_first_only);  // no $ in the replacement
+    if (printed.sides.size() > 1) corrected = folded_space(printed.sides.front()) + " = " + corrected;
+  }
   settle(result, own_decided && own_holds != ginac_holds, ginac_holds, "the range",
          fmt::format("{}: the elements of [{}, {}] are {}", corrected, text_of(range.front()), text_of(range.back()), derived));
   if (result.outcome == verdict::erratum) {

@@ -329,10 +329,26 @@ GiNaC::exmap derivative_symbols(const GiNaC::ex& e, const std::vector<definition
 }  // namespace
 
 GiNaC::ex with_definitions(const GiNaC::ex& e, const std::vector<definition>& given) {
-  const std::vector<definition> definitions = in_their_arguments(given);
+  std::vector<definition> definitions = in_their_arguments(given);
   GiNaC::exmap values;
   for (const definition& d : definitions) {
     if (d.function.empty()) values[d.name] = d.value;
+  }
+  // A symbol's value with the other symbols' put in (q_1 = q_0 + h v_{1/2}, v_{1/2} = v_0 - ...): a
+  // partial derivative of it (dq_1/dq_0) is the derivative of that, not of the value as printed.
+  for (std::size_t round = 0; round <= definitions.size(); ++round) {
+    bool changed = false;
+    for (definition& d : definitions) {
+      if (!d.function.empty()) continue;
+      const GiNaC::ex next = d.value.subs(values);
+      if (!next.is_equal(d.value)) {
+        d.value = next;
+        values[d.name] = next;
+        changed = true;
+      }
+    }
+    if (!changed) break;
+    if (round == definitions.size()) throw std::invalid_argument("the definitions use each other without end");
   }
   GiNaC::ex out = e;
   for (std::size_t round = 0; round <= definitions.size(); ++round) {

@@ -23,7 +23,7 @@ std::vector<pattern_part> split_pattern(const std::string& pattern) {
     if (c == '{' && k + 1 < pattern.size() && std::isalpha(static_cast<unsigned char>(pattern[k + 1])) &&
         (k == 0 || is_space(pattern[k - 1]) || pattern[k - 1] == '(')) {
       const std::size_t close = pattern.find('}', k);
-      if (close == std::string::npos) throw std::logic_error("prose pattern '" + pattern + "': unclosed hole");
+      if (close == std::string::npos) throw std::invalid_argument("the sentence's pattern '" + pattern + "' has an unclosed hole");
       const std::string name = pattern.substr(k + 1, close - k - 1);
       if (name.size() < 2 || name.find_first_not_of("abcdefghijklmnopqrstuvwxyz_") != std::string::npos) {
         parts.back().literal += pattern.substr(k, close - k + 1);  // TeX such as {\rm det}: text, not a hole
@@ -31,7 +31,7 @@ std::vector<pattern_part> split_pattern(const std::string& pattern) {
         continue;
       }
       if (parts.back().literal.empty()) {
-        throw std::logic_error("prose pattern '" + pattern + "': a hole must follow printed words");
+        throw std::invalid_argument("the sentence's pattern '" + pattern + "' starts with a hole: a hole must follow printed words");
       }
       parts.back().hole = name;
       parts.emplace_back();
@@ -41,12 +41,14 @@ std::vector<pattern_part> split_pattern(const std::string& pattern) {
     }
   }
   if (parts.back().literal.empty() && parts.size() > 1) {
-    throw std::logic_error("prose pattern '" + pattern + "': a hole must be followed by printed words");
+    throw std::invalid_argument("the sentence's pattern '" + pattern + "' ends with a hole: a hole must be followed by printed words");
   }
   return parts;
 }
 
 }  // namespace
+
+void check_pattern(const std::string& pattern) { (void)split_pattern(pattern); }
 
 std::optional<prose_span> find_prose(const paper_source& paper, const std::string& pattern) {
   constexpr std::size_t longest_hole = 240;

@@ -100,8 +100,8 @@ std::size_t first_math_offset(const tokens_t& tokens, std::size_t fallback) {
 }
 
 /// Splits `body` at its top-level \\ (outside groups and environments), each with its [dimension]
-/// and * consumed.
-std::vector<tokens_t> split_rows(const tokens_t& body) {
+/// and * consumed; `breaks` gets each separator's source span.
+std::vector<tokens_t> split_rows(const tokens_t& body, std::vector<std::pair<std::size_t, std::size_t>>& breaks) {
   std::vector<tokens_t> rows(1);
   int depth = 0;
   for (std::size_t k = 0; k < body.size(); ++k) {
@@ -118,6 +118,7 @@ std::vector<tokens_t> split_rows(const tokens_t& body) {
         if (close >= body.size()) throw tex_error("a '\\\\[' that is never closed", body[bracket].offset, "\\\\[");
         j = close + 1;
       }
+      breaks.emplace_back(t.offset, body[j - 1].offset + body[j - 1].length);
       k = j - 1;
       rows.emplace_back();
       continue;
@@ -128,7 +129,10 @@ std::vector<tokens_t> split_rows(const tokens_t& body) {
   const auto blank = [](const tokens_t& row) {
     return std::all_of(row.begin(), row.end(), [](const tex_token& t) { return t.category == tex_category::space; });
   };
-  if (rows.size() > 1 && blank(rows.back())) rows.pop_back();
+  if (rows.size() > 1 && blank(rows.back())) {
+    rows.pop_back();
+    breaks.pop_back();
+  }
   return rows;
 }
 
@@ -332,18 +336,29 @@ class scanner {
   void finish(tex_region& r, const tokens_t& body) {
     const auto env = math_environments().find(r.environment);
     std::vector<tokens_t> rows{body};
+    std::vector<std::pair<std::size_t, std::size_t>> breaks;
     if (env != math_environments().end() && env->second.rows) {
-      rows = split_rows(body);
+      rows = split_rows(body, breaks);
       if (env->second.one_equation) {  // multline: one equation over several lines
         tokens_t joined;
         for (const tokens_t& row : rows) joined.insert(joined.end(), row.begin(), row.end());
         rows = {joined};
+        breaks.clear();
       }
     }
-    for (tokens_t& tokens : rows) {
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      tokens_t& tokens = rows[k];
       tex_row row;
-      row.begin = tokens.empty() ? r.begin : tokens.front().offset;
-      row.end = tokens.empty() ? r.end : tokens.back().offset + tokens.back().length;
+      // Its span in the source: between the line breaks around it (a row's last token may be a
+      // macro's argument, whose closing brace the expansion took).
+      row.begin = r.begin;
+      if (k > 0) {
+        row.begin = breaks[k - 1].second;
+      } else {  // after what opened the display (\moneq's own tokens are the macro's, not the source's)
+        const auto first = std::find_if(tokens.begin(), tokens.end(), [](const tex_token& t) { return t.length > 0; });
+        if (first != tokens.end()) row.begin = first->offset;
+      }
+      row.end = k < breaks.size() ? breaks[k].first : r.end;
       row.labels = labels_in(tokens);
       row.line = r.display ? line_of_offset(text_, first_math_offset(tokens, r.begin)) : line_of_offset(text_, r.opener);
       row.tokens = std::move(tokens);

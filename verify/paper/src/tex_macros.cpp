@@ -232,7 +232,13 @@ void expand_in(Tokens& tokens, std::size_t at, const tex_macro& macro) {
         arguments.push_back(std::move(argument));
         k = end;
       } else {
-        arguments.push_back(*macro.default_first);
+        tokens_t given = *macro.default_first;  // the default is the macro's own: at the call, as its body is
+        for (tex_token& t : given) {
+          t.offset = tokens[at].offset;
+          t.length = 0;
+          t.macro = tokens[at].macro.empty() ? macro.name : tokens[at].macro;
+        }
+        arguments.push_back(std::move(given));
       }
       first = 2;
     }

@@ -22,9 +22,13 @@ struct prose_span {
 };
 
 /// The first span of the paper that matches `pattern`; none when the sentence is no longer there
-/// (or a hole would span more than 240 characters). Throws std::logic_error for a pattern that
-/// starts with a hole, has two holes side by side, or an unclosed brace.
+/// (or a hole would span more than 240 characters). Throws std::invalid_argument for a pattern that
+/// starts or ends with a hole, has two holes side by side, or an unclosed brace.
 std::optional<prose_span> find_prose(const paper_source& paper, const std::string& pattern);
+
+/// Throws std::invalid_argument, as find_prose would, for a pattern that cannot match: what a
+/// claims file's record is checked for before anything runs.
+void check_pattern(const std::string& pattern);
 
 /// The words of TeX prose or math with the markup a reader does not read dropped: $, TeX's
 /// spacing (\, \! \; \quad ~), \big-style sizes, and white space folded to one space.
