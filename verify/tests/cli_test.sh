@@ -353,7 +353,10 @@ grep -q "phi3-det: verdict" "$work/err" && fail "corrected paper: phi3-det named
 check "corrected paper, validated" 0 --validate --claims 'taylor-display,*-action-range' --precisions double \
     --paper "$work/corrected.tex" --out "$work/corrected-validated"
 check "printed paper, validated" 1 --validate --claims '*-action-range' --precisions double --out "$work/printed-validated"
-grep -q "simpson-action-range: verdict erratum, expected holds" "$work/err" || fail "printed paper, validated: simpson-action-range not named: $(cat "$work/err")"
+grep -q "^simpson-verify: simpson-action-range: erratum$" "$work/err" || fail "printed paper, validated: simpson-action-range not named: $(cat "$work/err")"
+grep -q "^Exit code 1: 2 claims do not hold as written (classical-action-range, simpson-action-range); see Failures" "$work/out" ||
+  fail "printed paper, validated: the exit line speaks of expected verdicts: $(grep '^Exit code' "$work/out")"
+grep -q '"mode": "validation"' "$work/printed-validated/report.json" || fail "printed paper, validated: summary.mode is not validation"
 grep -q '"validate": true' "$work/printed-validated/report.json" || fail "printed paper, validated: report.json does not say so"
 check "claims pattern" 0 --scene quick --claims '*-action-range,phi3-d*' --precisions double --out "$work/pattern"
 grep -q '"simpson-action-range"' "$work/pattern/report.json" && grep -q '"phi3-det"' "$work/pattern/report.json" || fail "claims pattern: a matching claim not run"

@@ -1,6 +1,7 @@
 // report.junit.xml parses as XML (Boost.PropertyTree's parser) and counts every claim and table.
 
 #include <simpson/verify/junit.hpp>
+#include <simpson/verify/report.hpp>
 #include <simpson/verify/scene.hpp>
 
 #include <boost/property_tree/ptree.hpp>
@@ -103,6 +104,39 @@ TEST(JUnit, FailuresAreExactlyWhatMakesTheExitCodeNonZero) {
   EXPECT_EQ(verdicts["table-values"], "fails");
   EXPECT_EQ(verdicts["phi3-det"], "holds");
   EXPECT_TRUE(fault_recorded) << "the underflow of the extreme masses is recorded";
+}
+
+// A validation (no expected verdicts) speaks of what holds: an erratum fails as a claim that does
+// not hold, its consequence fails naming its cause, and no line talks of expected verdicts. A
+// regression run over the same verdicts would pass (they are the ledger's expected ones).
+TEST(JUnit, AValidationFailsWhatDoesNotHoldAndNamesACauseOnce) {
+  scene s = load_scene("quick");
+  s.claims = {"gamma-system", "gamma-singular", "phi3-det"};
+  s.experiments = experiment_settings{};
+  for (const std::string& id : s.claims) s.expected_overrides[id] = verdict::holds;
+  s.overrides["validate"] = true;
+  const run_record r = run(s);
+  ASSERT_TRUE(r.validation);
+  ASSERT_EQ(run_exit_code(r), 1);
+  const boost::property_tree::ptree tree = parsed(report_junit(r));
+  std::map<std::string, std::string> types, messages;
+  for (const auto& [tag, suite] : tree.get_child("testsuites")) {
+    if (tag != "testsuite") continue;
+    for (const auto& [case_tag, testcase] : suite) {
+      if (case_tag != "testcase" || testcase.count("failure") == 0) continue;
+      const std::string name = testcase.get<std::string>("<xmlattr>.name");
+      types[name] = testcase.get<std::string>("failure.<xmlattr>.type");
+      messages[name] = testcase.get<std::string>("failure.<xmlattr>.message");
+    }
+  }
+  EXPECT_EQ(types.size(), 2u);
+  EXPECT_EQ(types["gamma-system"], "does-not-hold");
+  EXPECT_EQ(types["gamma-singular"], "consequence");
+  EXPECT_NE(messages["gamma-singular"].find("a consequence of gamma-system"), std::string::npos) << messages["gamma-singular"];
+  const std::string line = expectation_line(r);
+  EXPECT_EQ(line.rfind("Exit code 1: 1 claim does not hold as written (gamma-system); 1 follows from", 0), 0u) << line;
+  EXPECT_EQ(line.find("expected"), std::string::npos) << line;
+  EXPECT_NE(summary_line(r).find("2 not holding"), std::string::npos) << summary_line(r);
 }
 
 // A section's expectation is a testcase of its section: passed while the run shows what was

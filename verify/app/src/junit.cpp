@@ -78,7 +78,8 @@ std::string suite_xml(const std::string& name, const std::vector<testcase>& case
 /// certificate coqc rejected), an error when its check threw; an erratum as expected passes with
 /// its printed and corrected statements in <system-out>; a `fails` as expected is skipped with its
 /// reason (an expected failure, as pytest writes xfail), so that a CI view shows both for what they are.
-testcase claim_case(const claim_outcome& o) {
+/// In a validation (no expected verdicts) a claim that does not hold fails, a consequence naming its cause.
+testcase claim_case(const claim_outcome& o, bool validation) {
   const claim& c = *o.checked;
   testcase t{c.id, "claims.section-" + c.section, {}, testcase::result::passed, "", "", "", ""};
   const std::string verdict = to_string(o.result.outcome), expected = to_string(o.expected);
@@ -111,6 +112,12 @@ testcase claim_case(const claim_outcome& o) {
     t.outcome = testcase::result::failure;
     t.type = "text-changed";
     t.message = o.result.evidence.value("text_changed", std::string("the quoted words changed"));
+    t.detail = summary;
+  } else if (o.result.outcome != o.expected && validation) {  // no expected verdicts: the claim is to hold
+    t.outcome = testcase::result::failure;
+    t.type = cause_of(o).empty() ? "does-not-hold" : "consequence";
+    t.message = cause_of(o).empty() ? verdict + ": the claim does not hold as written"
+                                    : verdict + ": a consequence of " + cause_of(o) + ", which does not hold as written";
     t.detail = summary;
   } else if (o.result.outcome != o.expected) {
     t.outcome = testcase::result::failure;
@@ -173,7 +180,7 @@ testcase expectation_case(const section_result& section, const expectation& e) {
 std::string report_junit(const run_record& r) {
   suite_counts total;
   std::vector<testcase> claims;
-  for (const claim_outcome& o : r.outcomes) claims.push_back(claim_case(o));
+  for (const claim_outcome& o : r.outcomes) claims.push_back(claim_case(o, r.validation));
   std::string body = suite_xml("claims", claims, total);
   for (const section_result& section : r.sections) {
     std::vector<testcase> tables;

@@ -391,12 +391,18 @@ int main(int argc, char** argv) {
       const bool expected_verdict = faulted || as_expected(o.result.outcome, o.expected);
       if (!quiet) {
         fmt::print("  {:<8} {:<34}{}\n", faulted ? "fault" : to_string(o.result.outcome), o.checked->id,
-                   faulted ? "  <- the check threw (a bug in the harness)" : expected_verdict ? "" : "  <- expected " + to_string(o.expected));
+                   faulted            ? "  <- the check threw (a bug in the harness)"
+                   : expected_verdict ? ""
+                   : record.validation ? (cause_of(o).empty() ? "  <- does not hold" : "  <- follows from " + cause_of(o))
+                                       : "  <- expected " + to_string(o.expected));
         if (o.result.outcome == verdict::erratum && !o.result.correction.empty()) {
           fmt::print("           corrected: {}\n", o.result.correction);
         }
       }
-      if (!expected_verdict) {
+      if (!expected_verdict && record.validation) {
+        fmt::print(stderr, "simpson-verify: {}: {}{}\n", o.checked->id, to_string(o.result.outcome),
+                   cause_of(o).empty() ? "" : ", a consequence of " + cause_of(o));
+      } else if (!expected_verdict) {
         fmt::print(stderr, "simpson-verify: {}: verdict {}, expected {}\n", o.checked->id, to_string(o.result.outcome),
                    to_string(o.expected));
       }

@@ -146,9 +146,49 @@ std::string summary_line(const run_record& r) {
                      c.undecided ? fmt::format(", {} undecided within the enclosure budget", c.undecided) : "",
                      c.unproved ? fmt::format(", {} unproved (Gappa could not bound the round-off)", c.unproved) : "",
                      c.skipped ? fmt::format(", {} skipped (gappa not installed)", c.skipped) : "",
-                     c.unexpected.empty() ? std::string("all verdicts as expected")
-                                          : fmt::format("{} not as expected ({})", c.unexpected.size(), join(c.unexpected, ", ")));
+                     r.validation ? (c.unexpected.empty() ? std::string("every claim holds")
+                                                          : fmt::format("{} not holding ({})", c.unexpected.size(), join(c.unexpected, ", ")))
+                     : c.unexpected.empty() ? std::string("all verdicts as expected")
+                                            : fmt::format("{} not as expected ({})", c.unexpected.size(), join(c.unexpected, ", ")));
 }
+
+namespace {
+
+/// A validation's exit line: what holds in the document, with no talk of expected verdicts. A claim
+/// that holds once another's correction is put in is counted with its cause, never twice.
+std::string validation_line(const run_record& r, const verdict_counts& c) {
+  std::vector<std::string> causes, consequences, undecided, other;
+  for (const claim_outcome& o : r.outcomes) {
+    if (as_expected(o.result.outcome, o.expected)) continue;
+    const std::string& id = o.checked->id;
+    if (o.result.outcome == verdict::undecided || o.result.outcome == verdict::unproved || o.result.outcome == verdict::kernels_disagree) {
+      undecided.push_back(id);
+    } else if (is_finding(o.result.outcome) && !cause_of(o).empty()) {
+      consequences.push_back(id + " (from " + cause_of(o) + ")");
+    } else if (is_finding(o.result.outcome)) {
+      causes.push_back(id);
+    } else {
+      other.push_back(id + " (" + to_string(o.result.outcome) + ")");
+    }
+  }
+  std::vector<std::string> parts;
+  if (!causes.empty()) {
+    parts.push_back(fmt::format("{} claim{} {} not hold as written ({})", causes.size(), causes.size() == 1 ? "" : "s",
+                                causes.size() == 1 ? "does" : "do", join(causes, ", ")));
+  }
+  if (!consequences.empty()) {
+    parts.push_back(fmt::format("{} follow{} from another's correction ({})", consequences.size(), consequences.size() == 1 ? "s" : "",
+                                join(consequences, ", ")));
+  }
+  if (!undecided.empty()) {
+    parts.push_back(fmt::format("{} could not be decided ({}: the tool's limits, not findings)", undecided.size(), join(undecided, ", ")));
+  }
+  if (!other.empty()) parts.push_back(fmt::format("{} changed ({})", other.size(), join(other, ", ")));
+  (void)c;
+  return join(parts, "; ");
+}
+
+}  // namespace
 
 std::string expectation_line(const run_record& r) {
   const std::vector<std::string> failed = failed_expectations(r);
@@ -167,6 +207,16 @@ std::string expectation_line(const run_record& r) {
   const std::string judgment = document ? "the claims file's expected verdicts for its document" : "the ledger's recorded judgment of the printed paper";
   const std::string changed = document ? "the document" : "the paper";
   const bool rejected = !rejected_certificates(r).empty();
+  if (r.validation) {  // no expected verdicts: the document's claims are to hold
+    if (code == 0) return fmt::format("Exit code 0: every claim of the {} holds.", r.of_the_paper ? "paper" : "document");
+    std::string why = validation_line(r, c);
+    if (rejected) why += (why.empty() ? "" : "; ") + std::string("coqc rejected a certificate");
+    if (!failed.empty()) {
+      why += (why.empty() ? "" : "; ") + fmt::format("{} expectation{} of the experiments failed ({})", failed.size(), failed.size() == 1 ? "" : "s",
+                                                     join(failed, ", "));
+    }
+    return "Exit code 1: " + why + "; see Failures.";
+  }
   if (code != 0) {
     std::string why;
     if (!c.unexpected.empty()) {
@@ -204,7 +254,8 @@ json summary_json(const run_record& r) {
           {"text_changed", c.text_changed}, {"undecided", c.undecided}, {"unproved", c.unproved}, {"skipped", c.skipped},
           {"machine_read", c.machine_read}, {"quoted", c.quoted}, {"typed", r.outcomes.size() - c.machine_read - c.quoted},
           {"coq_exported", c.coq_exported}, {"coq_checked", c.coq_checked},
-          {"unexpected", c.unexpected}, {"failed_expectations", failed_expectations(r)}};
+          {"unexpected", c.unexpected}, {"failed_expectations", failed_expectations(r)},
+          {"mode", r.validation ? "validation" : "regression"}};
 }
 
 std::size_t machine_read(const run_record& r) { return count_verdicts(r).machine_read; }
@@ -534,12 +585,14 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
   md += referee_summary_markdown(r);
   {
     const verdict_counts c = count_verdicts(r);
-    md += fmt::format("{} of {} claims read their formula from the paper's LaTeX source ({}) and prove it in GiNaC against "
+    const std::string source = r.of_the_paper ? "the paper" : "the document";
+    md += fmt::format("{} of {} claims read their formula from {}'s LaTeX source ({}) and prove it in GiNaC against "
                       "the derived one, beside our own kernel; {} quote the prose sentence they judge from that source and parse "
                       "the words that carry the claim from it (a sentence gone, or words that no longer parse, give "
-                      "**text-changed**); {} {} no words of the paper (the harness's own lemmas and findings).\n\n",
-                      c.machine_read, r.outcomes.size(), markdown_escaped(r.paper_origin), c.quoted,
-                      r.outcomes.size() - c.machine_read - c.quoted, r.outcomes.size() - c.machine_read - c.quoted == 1 ? "quotes" : "quote");
+                      "**text-changed**); {} {} no words of {} ({}).\n\n",
+                      c.machine_read, r.outcomes.size(), source, markdown_escaped(r.paper_origin), c.quoted,
+                      r.outcomes.size() - c.machine_read - c.quoted, r.outcomes.size() - c.machine_read - c.quoted == 1 ? "quotes" : "quote",
+                      source, r.of_the_paper ? "the harness's own lemmas and findings" : "statements typed in the claims file");
   }
   md += coq_markdown(r);
   md += r.run_scene.timing ? "Run times: [timing.md](timing.md). " : "Not timed (--no-timing). ";
@@ -564,7 +617,8 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
         "| id | § | equation | statement | the paper says | verdict | expected | methods |\n|---|---|---|---|---|---|---|---|\n";
   for (const claim_outcome& o : r.outcomes) {
     const claim& c = *o.checked;
-    const std::string verdict_text = "**" + to_string(o.result.outcome) + "**" + (as_expected(o.result.outcome, o.expected) ? "" : " **(unexpected)**");
+    const std::string verdict_text = "**" + to_string(o.result.outcome) + "**" +
+                                     (as_expected(o.result.outcome, o.expected) ? "" : r.validation ? " **(does not hold)**" : " **(unexpected)**");
     md += fmt::format("| [{}](#{}) | {} | {} | {} | {} | {} | {} | {} |\n", c.id, heading_slug(c.id), c.section, markdown_cell(c.equation),
                       !o.result.printed.is_null() ? "read" : !o.result.quoted.empty() ? "quoted" : "typed", what_the_paper_says(o),
                       verdict_text, to_string(o.expected), join(c.methods, ", ") + (o.result.printed.is_null() ? "" : ", GiNaC"));
@@ -594,6 +648,9 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
                                 ? "its check threw, a bug in the harness: " + o.result.evidence["error"].get<std::string>()
                             : o.result.outcome == o.expected
                                 ? "an expected failure: the ledger expects this verdict, so the exit code is 0"
+                            : r.validation
+                                ? (cause_of(o).empty() ? std::string("the claim does not hold as written: the exit code is 1")
+                                                       : "a consequence of " + cause_of(o) + ": the exit code is 1")
                                 : "not as expected (expected " + to_string(o.expected) + "): the exit code is 1";
     md += finding_markdown(o, "**" + to_string(o.result.outcome) + "**, " + markdown_escaped(why));
   }

@@ -46,6 +46,8 @@ run_record run(const scene& s, const paper_reading& paper, const progress_callba
   const auto start = clock::now();
   run_record r;
   r.run_scene = s;
+  r.validation = s.overrides.value("validate", false) || !installed_book().guards;
+  r.of_the_paper = installed_document() == nullptr;
   r.paper_origin = paper.origin;
   run_context ctx{s.precisions, s.seed, s.samples, &paper};
   ctx.enclosure_budget_digits = s.enclosure_budget_digits;

@@ -246,7 +246,10 @@ claims_file_contents read_claims_contents(const std::string& text, const std::st
     // Without `expected` a claim is to hold: a file of such records validates a derivation (exit 0
     // when every claim holds) instead of guarding a judged paper against regressions.
     const std::string expected = read.text("expected", false);
-    if (!expected.empty()) r.expected = verdict_named(expected, file, read.line_of_field("expected"));
+    if (!expected.empty()) {
+      r.expected = verdict_named(expected, file, read.line_of_field("expected"));
+      r.expected_given = true;
+    }
     const std::string kind = read.text("finding", false);
     const bool is_finding = r.expected == verdict::erratum || r.expected == verdict::fails || r.expected == verdict::unverifiable;
     if (!kind.empty()) r.kind = finding_named(kind, file, read.line_of_field("finding"));

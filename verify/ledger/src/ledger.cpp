@@ -131,6 +131,7 @@ claim_book read_claim_book(const std::string& text, const std::string& file) {
   book.declarations = std::make_shared<const claim_declarations>(read_declarations(contents, file));
   book.records = std::move(contents.records);
   book.claims = claims_of(book.records, book.declarations);
+  book.guards = std::any_of(book.records.begin(), book.records.end(), [](const claim_record& r) { return r.expected_given; });
   return book;
 }
 

@@ -292,8 +292,9 @@ claim_result checked_with_quotes(const claim& c, const run_context& ctx) {
     result = claim_result{};
     result.outcome = verdict::text_changed;
     result.evidence["text_changed"] = e.what();
-    result.note = std::string("The paper's words changed under this claim: ") + e.what() +
-                  ". Its check judges the words it quotes; update the ledger's pattern or parser once the new words are read.";
+    result.note = std::string("The words this claim quotes did not read: ") + e.what() +
+                  ". Its check judges only words it reads: a new wording is judged once the claim's sentence pattern matches it "
+                  "(docs/claims-file.md, sentence patterns).";
   }
   result.quoted = std::move(quotes);
   return result;

@@ -53,7 +53,7 @@ void quoted_sentence::record(const std::string& hole, const json& parsed) const 
 }
 
 void quoted_sentence::unparsed(const std::string& hole, const std::string& expected) const {
-  throw text_changed("paper '" + origin_ + "', line " + std::to_string(span_.line) + ": the words '" + words(hole) +
+  throw text_changed("document '" + origin_ + "', line " + std::to_string(span_.line) + ": the words '" + words(hole) +
                      "' do not parse as " + expected + " (in: " + span_.text + ")");
 }
 
@@ -118,7 +118,7 @@ quoted_sentence quote_sentence(const paper_source& paper, const std::string& pat
   const std::optional<prose_span> span = find_prose(paper, pattern);
   if (!span) {
     if (quotes != nullptr) quotes->push_back({{"source", paper.origin}, {"pattern", pattern}, {"found", false}});
-    throw text_changed("paper '" + paper.origin + "': the sentence the claim judges is no longer there (looked for: " + pattern + ")");
+    throw text_changed("document '" + paper.origin + "': the sentence the claim judges is no longer there (looked for: " + pattern + ")");
   }
   std::size_t index = 0;
   if (quotes != nullptr) {

@@ -28,6 +28,10 @@ inline const std::string& cause_of(const claim_outcome& o) { return o.consequenc
 
 struct run_record {
   scene run_scene;
+  /// A validation of the document (its claims file records no expected verdict, or --validate): the
+  /// reports speak of what holds in the document, not of regressions against expected verdicts.
+  bool validation = false;
+  bool of_the_paper = true;  // the paper's claims, not a claims file's document
   std::string paper_origin;  // the paper's source the formula claims read
   std::vector<claim_outcome> outcomes;
   double ginac_derivation_seconds = 0;

@@ -32,6 +32,7 @@ struct claim_record {
   std::string shape;      // the name of the proof shape that decides it (proof_shapes.hpp), with
   std::map<std::string, shape_argument> with;  // its arguments
   verdict expected = verdict::holds;
+  bool expected_given = false;  // the record says `expected`: a regression guard, not a validation
   finding kind = finding::none;
   std::string follows_from;
   bool typographical = false;

@@ -24,6 +24,9 @@ struct claim_book {
   std::shared_ptr<const claim_declarations> declarations;   // never null
   std::vector<claim_record> records;
   std::vector<claim> claims;
+  /// Whether any record says what its verdict is expected to be: a guard against regressions. A file
+  /// whose records say none validates its document (every claim is to hold).
+  bool guards = false;
 };
 
 /// Reads a claims file into a book: every record checked (claims_file.hpp), every `check` a
