@@ -58,7 +58,7 @@ struct verdict_counts {
   std::size_t distinct = 0, typographical = 0, consequences = 0;  // the paper's findings, each cause once
   std::size_t unverifiable = 0;
   std::size_t held = 0, errata = 0, failed = 0, disagreed = 0, text_changed = 0, undecided = 0, unproved = 0, skipped = 0, machine_read = 0,
-              quoted = 0, coq_exported = 0,
+              quoted = 0, typed = 0, read_and_quoted = 0, coq_exported = 0,
               coq_checked = 0;
   std::vector<std::string> unexpected;
 };
@@ -125,7 +125,9 @@ verdict_counts count_verdicts(const run_record& r) {
     c.skipped += o.result.outcome == verdict::skipped;
     c.unverifiable += o.result.outcome == verdict::unverifiable;
     c.machine_read += !o.result.printed.is_null();
-    c.quoted += o.result.printed.is_null() && !o.result.quoted.empty();
+    c.quoted += !o.result.quoted.empty();  // a claim may read a formula and quote its sentence: counted in both
+    c.typed += o.result.printed.is_null() && o.result.quoted.empty();
+    c.read_and_quoted += !o.result.printed.is_null() && !o.result.quoted.empty();
     c.coq_exported += !certificate_documents(o).empty();
     c.coq_checked += o.result.evidence.contains("coq") && o.result.evidence["coq"].value("status", "") == "checked";
     if (!as_expected(o.result.outcome, o.expected)) c.unexpected.push_back(o.checked->id);
@@ -252,7 +254,7 @@ json summary_json(const run_record& r) {
           {"paper_claims", c.paper},     {"harness_claims", c.harness},
           {"distinct_findings", c.distinct}, {"typographical_findings", c.typographical}, {"consequences", c.consequences},
           {"text_changed", c.text_changed}, {"undecided", c.undecided}, {"unproved", c.unproved}, {"skipped", c.skipped},
-          {"machine_read", c.machine_read}, {"quoted", c.quoted}, {"typed", r.outcomes.size() - c.machine_read - c.quoted},
+          {"machine_read", c.machine_read}, {"quoted", c.quoted}, {"typed", c.typed},
           {"coq_exported", c.coq_exported}, {"coq_checked", c.coq_checked},
           {"unexpected", c.unexpected}, {"failed_expectations", failed_expectations(r)},
           {"mode", r.validation ? "validation" : "regression"}};
@@ -587,12 +589,13 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
     const verdict_counts c = count_verdicts(r);
     const std::string source = r.of_the_paper ? "the paper" : "the document";
     md += fmt::format("{} of {} claims read their formula from {}'s LaTeX source ({}) and prove it in GiNaC against "
-                      "the derived one, beside our own kernel; {} quote the prose sentence they judge from that source and parse "
+                      "the derived one, beside our own kernel; {} quote the prose sentence they judge from that source{} and parse "
                       "the words that carry the claim from it (a sentence gone, or words that no longer parse, give "
                       "**text-changed**); {} {} no words of {} ({}).\n\n",
                       c.machine_read, r.outcomes.size(), source, markdown_escaped(r.paper_origin), c.quoted,
-                      r.outcomes.size() - c.machine_read - c.quoted, r.outcomes.size() - c.machine_read - c.quoted == 1 ? "quotes" : "quote",
-                      source, r.of_the_paper ? "the harness's own lemmas and findings" : "statements typed in the claims file");
+                      c.read_and_quoted ? fmt::format(" ({} of them also read a formula)", c.read_and_quoted) : "", c.typed,
+                      c.typed == 1 ? "quotes" : "quote", source,
+                      r.of_the_paper ? "the harness's own lemmas and findings" : "statements typed in the claims file");
   }
   md += coq_markdown(r);
   md += r.run_scene.timing ? "Run times: [timing.md](timing.md). " : "Not timed (--no-timing). ";
