@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.26961e-07:0.000902635]
+set xrange [1.2671e-07:0.00094099]
 set xtics autofreq
 set mxtics default
 set yrange [2.94139e-15:0.34373]
@@ -37,7 +37,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [6.08696e-08:2.48636e-05]
+set xrange [6.086e-08:2.49464e-05]
 set xtics autofreq
 set mxtics default
 set yrange [3.26923e-14:0.306488]
@@ -61,7 +61,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [7.5857e-06:0.0769379]
+set xrange [7.7075e-06:0.0788733]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -111,7 +111,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.26961e-07:0.000902635]
+set xrange [1.2671e-07:0.00094099]
 set xtics autofreq
 set mxtics default
 set yrange [2.94139e-15:0.34373]
@@ -135,7 +135,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [6.08696e-08:2.48636e-05]
+set xrange [6.086e-08:2.49464e-05]
 set xtics autofreq
 set mxtics default
 set yrange [3.26923e-14:0.306488]
@@ -159,7 +159,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [7.5857e-06:0.0769379]
+set xrange [7.7075e-06:0.0788733]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
