@@ -13,6 +13,7 @@
 #include <simpson/verify/ledger.hpp>
 #include <simpson/verify/paper_reading.hpp>
 #include <simpson/verify/printed_checks.hpp>
+#include <simpson/verify/sentence_holes.hpp>
 #include <simpson/verify/tex_document.hpp>
 #include <simpson/verify/tex_macros.hpp>
 #include <simpson/verify/tex_math.hpp>
@@ -1043,6 +1044,43 @@ TEST_F(ShapesOnADocument, SignOnInterval) {
   EXPECT_NE(wide.certificate_lemmas[0].find("_sign_before_root"), std::string::npos);
   EXPECT_NE(wide.certificate.find("0 < (((-1) * x) + 4)"), std::string::npos) << wide.certificate;
   EXPECT_EQ(run("sign-on-interval", "{ " + args + R"(, condition = "inline:positive on", sign = "negative" })").outcome, verdict::erratum);
+  // The sign read from the sentence that states it, not typed: the document's word decides. Printed
+  // "negative", the same record is an erratum; printed "nonnegative" (no word the hole reads), it
+  // is text-changed, never a guess.
+  const std::string said = "{ " + args + R"(, condition = "inline:positive on", sentence = 'Coefficient $1 - \frac{\om^2 h^2}{4}$ {sign} on' })";
+  EXPECT_EQ(run("sign-on-interval", said).outcome, verdict::holds);
+  std::string negative = shape_document;
+  negative.replace(negative.find("$ positive on"), 13, "$ negative on");
+  EXPECT_EQ(run("sign-on-interval", "{ " + args + R"(, condition = "inline:negative on", sentence = 'Coefficient $1 - \frac{\om^2 h^2}{4}$ {sign} on' })", negative).outcome,
+            verdict::erratum);
+  std::string unread = shape_document;
+  unread.replace(unread.find("$ positive on"), 13, "$ nonnegative on");
+  EXPECT_EQ(run("sign-on-interval", "{ " + args + R"(, condition = "inline:nonnegative on", sentence = 'Coefficient $1 - \frac{\om^2 h^2}{4}$ {sign} on' })", unread).outcome,
+            verdict::text_changed);
+}
+
+// Every hole a shape's pattern names is in the one table the shapes read their words by, and the
+// reference generated from it (--list-holes) lists it with the shapes that take it.
+TEST(SentenceHoles, EveryHoleAShapeTakesIsInTheTable) {
+  const std::string reference = holes_markdown();
+  std::size_t holes = 0;
+  for (const auto& [name, shape] : detail::proof_shapes()) {
+    for (const detail::shape_parameter& p : shape.parameters) {
+      if (p.kind != detail::argument_kind::word) continue;
+      for (std::size_t at = p.meaning.find('{'); at != std::string::npos; at = p.meaning.find('{', at + 1)) {
+        const std::size_t end = p.meaning.find('}', at);
+        const std::string hole = p.meaning.substr(at + 1, end - at - 1);
+        // A hole's name is two or more lower-case letters (prose_span.hpp): {j+1} is TeX, not a hole.
+        if (hole.size() < 2 || !std::all_of(hole.begin(), hole.end(), [](char c) { return c >= 'a' && c <= 'z'; })) continue;
+        ++holes;
+        EXPECT_NO_THROW(hole_named(hole)) << name << " takes {" << hole << "}";
+        EXPECT_NE(reference.find("| `{" + hole + "}` |"), std::string::npos) << hole;
+      }
+    }
+  }
+  EXPECT_GT(holes, 10u);
+  EXPECT_THROW(hole_named("no-such-hole"), std::logic_error);
+  EXPECT_NE(reference.find("`sign-iff`"), std::string::npos) << reference;
 }
 
 // The characteristic polynomial of (sv), r^2 - (2 - omega^2 h^2) r + 1 times 1/h^2: the printed one

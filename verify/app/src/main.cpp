@@ -14,6 +14,7 @@
 #include <simpson/verify/report_compare.hpp>
 #include <simpson/verify/scene.hpp>
 #include <simpson/verify/selection.hpp>
+#include <simpson/verify/sentence_holes.hpp>
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
@@ -216,6 +217,10 @@ int main(int argc, char** argv) {
                "holds (the recorded errata of the paper then fail)");
   app.add_flag("--list-scenes", want_scenes, "list the embedded scenes and exit");
   app.add_flag("--list-precisions", want_precisions, "list the precisions and exit");
+  bool want_holes = false;
+  app.add_flag("--list-holes", want_holes,
+               "list the holes of a sentence's pattern ({order}, {sign}, ...), the shapes that take each and the words each accepts "
+               "(a Markdown table), and exit");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -252,6 +257,10 @@ int main(int argc, char** argv) {
     if (want_claims) return list_claims(list_format);
     if (want_scenes) return list_scenes();
     if (want_precisions) return list_precisions();
+    if (want_holes) {
+      fmt::print("{}", simpson::verify::holes_markdown());
+      return 0;
+    }
     s = load_scene(scene_name);
     if (!paper_file.empty()) s.paper_file = paper_file;
     if (const claims_document* document = installed_document()) {

@@ -195,11 +195,6 @@ inline claim_result as_the_words_say(claim_result computed, bool words_affirm, s
   return computed;
 }
 
-/// Whether quoted words affirm or deny a property: `word`, or "not word" / "in"/"un" + word.
-inline std::vector<std::pair<std::string, std::string>> affirmed_or_denied(const std::string& word) {
-  return {{word, "affirmed"}, {"not " + word, "denied"}, {"in" + word, "denied"}, {"un" + word, "denied"}, {"non-" + word, "denied"}};
-}
-
 /// The numeric recheck of a check that lives beside its formula in the core:
 /// `check(parameters, state)` returns its residual and round-off bound at each sampled case.
 template <class Check>

@@ -1,3 +1,4 @@
+#include <simpson/verify/sentence_holes.hpp>
 #include <simpson/verify/ledger.hpp>
 
 #include <simpson/verify/claims_file.hpp>
@@ -71,7 +72,7 @@ claim_result as_the_sentence_says(claim_result result, const detail::shape_call&
   const auto says = call.with.find("says"), property = call.with.find("property");
   if (says == call.with.end() || property == call.with.end()) return result;
   const quoted_sentence said = quote(ctx, says->second.values.front());
-  const bool affirmed = said.choice("property", detail::affirmed_or_denied(property->second.values.front())) == "affirmed";
+  const bool affirmed = said.choice("property", affirmed_or_denied(property->second.values.front())) == "affirmed";
   result.evidence["stated"] = affirmed ? property->second.values.front() : "not " + property->second.values.front();
   const json& statement = result.evidence["exact"]["statement"];
   const std::string fact = "It is " + property->second.values.front() + ": " + (statement.is_string() ? statement.get<std::string>() : call.statement);

@@ -249,14 +249,16 @@ const std::map<std::string, proof_shape>& proof_shapes() {
          with_where({{"expression", argument_kind::formula, true, "a function of the variable alone once scaled"},
                      {"variable", argument_kind::formula, true, "the variable of the condition, a product of positive symbols", 0, "", true},
                      {"condition", argument_kind::condition, true, "the printed interval 0 < variable < c"},
-                     {"sign", argument_kind::word, true, "positive or negative", 0, "", false, {"positive", "negative"}}}),
+                     {"sign", argument_kind::word, false, "positive or negative, when no sentence states it", 0, "", false, {"positive", "negative"}, "", "sentence"},
+                     pattern_with_hole("sentence", "the sentence that states the sign, with the hole {sign}: '... is {sign} for'", "sign", false)}),
          sign_on_interval_shape});
     add({"sign-iff", "expression has the stated sign if and only if 0 < variable < c: on the printed interval, and nowhere else for variable > 0",
          "expression",
          with_where({{"expression", argument_kind::formula, true, "a function of the variable alone once scaled"},
                      {"variable", argument_kind::formula, true, "the variable of the condition, a product of positive symbols", 0, "", true},
                      {"condition", argument_kind::condition, true, "the printed interval 0 < variable < c"},
-                     {"sign", argument_kind::word, true, "positive or negative", 0, "", false, {"positive", "negative"}}}),
+                     {"sign", argument_kind::word, false, "positive or negative, when no sentence states it", 0, "", false, {"positive", "negative"}, "", "sentence"},
+                     pattern_with_hole("sentence", "the sentence that states the sign, with the hole {sign}: '... is {sign} if and only if'", "sign", false)}),
          sign_iff_shape});
     add({"factor-signs", "each factor of the printed product, and the product, have the signs a sentence states on the printed interval 0 < variable < c",
          "expression",

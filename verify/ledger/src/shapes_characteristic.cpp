@@ -9,6 +9,7 @@
 #include "one_variable.hpp"
 #include "printed_check_support.hpp"
 
+#include <simpson/verify/sentence_holes.hpp>
 #include <simpson/verify/quoted_words.hpp>
 
 #include <fmt/format.h>
@@ -257,9 +258,7 @@ claim_result characteristic_roots_shape(const shape_call& call, const run_contex
   const ex v = read.formula("variable");
   const std::string pattern = call.with.at("sentence").values.front();
   const quoted_sentence said = quote(ctx, pattern);
-  const std::string roots_said = said.choice("roots", {{"conjugate complex", "complex conjugate"}, {"complex conjugate", "complex conjugate"},
-                                                       {"complex", "complex conjugate"}, {"real", "real"}, {"distinct real", "real"},
-                                                       {"real distinct", "real"}});
+  const std::string roots_said = said.choice("roots", hole_named("roots").phrases);
   std::optional<stated_bound> product_said;
   if (pattern.find("{product}") != std::string::npos) {
     product_said = said.bound("product");
@@ -267,7 +266,7 @@ claim_result characteristic_roots_shape(const shape_call& call, const run_contex
   }
   std::optional<std::string> conclusion_said;
   if (pattern.find("{conclusion}") != std::string::npos) {
-    conclusion_said = said.choice("conclusion", {{"stable", "stable"}, {"unstable", "unstable"}, {"not stable", "unstable"}});
+    conclusion_said = said.choice("conclusion", hole_named("conclusion").phrases);
   }
   const std::string scheme_ref = reference_of(call, "scheme");
   claim_result result;
@@ -501,18 +500,14 @@ claim_result unconditional_stability_shape(const shape_call& call, const run_con
   const quoted_sentence said = quote(ctx, call.with.at("sentence").values.front());
   // The qualifier may be in the hole itself; else the qualifying sentence gives it, or the default
   // (for every step).
-  const std::string stated_words = said.choice(
-      "stability", {{"linearly stable", "stable"}, {"stable", "stable"}, {"unconditionally stable", "unconditionally stable"},
-                    {"inconditionally stable", "unconditionally stable"}, {"conditionally stable", "conditionally stable"},
-                    {"conditionnally stable", "conditionally stable"}, {"linearly unstable", "unstable"}, {"unstable", "unstable"}});
+  const std::string stated_words = said.choice("stability", hole_named("stability").phrases);
   const std::string stated = stated_words == "unstable" ? "unstable" : "stable";
   std::string qualifier = stated_words == "unconditionally stable" ? "unconditional" : stated_words == "conditionally stable" ? "conditional" : "";
   if (qualifier.empty()) {
     qualifier = "unconditional";  // no qualifying words: stable means for every step
     if (call.with.count("qualifier")) {
       qualifier = quote(ctx, call.with.at("qualifier").values.front())
-                      .choice("qualifier", {{"unconditionally", "unconditional"}, {"inconditionally", "unconditional"}, {"conditionally", "conditional"},
-                                            {"conditionnally", "conditional"}});
+                      .choice("qualifier", hole_named("qualifier").phrases);
     }
   }
   const std::string scheme_ref = reference_of(call, "scheme");

@@ -6,6 +6,7 @@
 #include "coq_export.hpp"
 #include "printed_check_support.hpp"
 
+#include <simpson/verify/sentence_holes.hpp>
 #include <simpson/verify/quoted_words.hpp>
 
 #include <fmt/format.h>
@@ -100,7 +101,7 @@ claim_result explicit_map_shape(const shape_call& call, const run_context& ctx) 
     }
   }
   const quoted_sentence said = quote(ctx, call.with.at("sentence").values.front());
-  const std::string stated = said.choice("kind", {{"explicit", "explicit"}, {"implicit", "implicit"}, {"not explicit", "implicit"}});
+  const std::string stated = said.choice("kind", hole_named("kind").phrases);
   const GiNaC::symbol delta("delta_step");
   bool polynomial = true, own_polynomial = true, own_decided = true, regular = true;
   std::vector<std::string> denominators, own_evidence;
@@ -196,7 +197,7 @@ claim_result explicit_scheme_shape(const shape_call& call, const run_context& ct
   const std::vector<GiNaC::symbol> sequence = read.symbols("sequence");
   const GiNaC::symbol& next = sequence.back();
   const quoted_sentence said = quote(ctx, call.with.at("sentence").values.front());
-  const std::string stated = said.choice("kind", {{"explicit", "explicit"}, {"implicit", "implicit"}, {"not explicit", "implicit"}});
+  const std::string stated = said.choice("kind", hole_named("kind").phrases);
   claim_result result;
   result.printed = read.printed();
   result.evidence["stated"] = stated;

@@ -6,6 +6,7 @@
 #include "coq_export.hpp"
 #include "printed_check_support.hpp"
 
+#include <simpson/verify/sentence_holes.hpp>
 #include <simpson/verify/quoted_words.hpp>
 
 #include <fmt/format.h>
@@ -324,8 +325,7 @@ claim_result linear_shape(const shape_call& call, const run_context& ctx) {
   const ex e = read.formula("expression");
   const std::vector<GiNaC::symbol> variables = read.symbols("variables");
   const quoted_sentence said = quote(ctx, call.with.at("sentence").values.front());
-  const std::string stated = said.choice("linearity", {{"linear", "linear"}, {"not linear", "not linear"}, {"nonlinear", "not linear"},
-                                                       {"non-linear", "not linear"}, {"non linear", "not linear"}});
+  const std::string stated = said.choice("linearity", hole_named("linearity").phrases);
   ex combination = 0;
   std::vector<std::string> names, terms;
   std::string pole;  // a unit vector where the expression has no value: not linear

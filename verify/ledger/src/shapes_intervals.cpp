@@ -8,6 +8,7 @@
 #include "one_variable.hpp"
 #include "printed_check_support.hpp"
 
+#include <simpson/verify/sentence_holes.hpp>
 #include <simpson/verify/quoted_words.hpp>
 #include <simpson/verify/stability_analysis.hpp>
 #include <simpson/verify/tex_math.hpp>
@@ -174,6 +175,13 @@ claim_result stability_interval_shape(const shape_call& call, const run_context&
   return result;
 }
 
+/// The sign a claim states: the words of its sentence's hole {sign}, or, with no sentence, the
+/// record's `sign`.
+std::string stated_sign(const shape_call& call, const run_context& ctx) {
+  if (!call.with.count("sentence")) return call.with.at("sign").values.front();
+  return quote(ctx, call.with.at("sentence").values.front()).choice("sign", hole_named("sign").phrases);
+}
+
 /// The claimed sign of a function of v on the printed interval 0 < v < c: no root or pole of it
 /// inside (our kernel's Sturm sequences, the end compared exactly), and the sign at a point inside.
 claim_result sign_on_interval_shape(const shape_call& call, const run_context& ctx) {
@@ -181,7 +189,7 @@ claim_result sign_on_interval_shape(const shape_call& call, const run_context& c
   const ex f = read.formula("expression");
   const referenced_formula condition = read.raw("condition");
   const ex v = read.formula("variable");
-  const std::string claimed = call.with.at("sign").values.front();
+  const std::string claimed = stated_sign(call, ctx);
   const int want = claimed == "positive" ? 1 : -1;
   claim_result result;
   result.printed = read.printed();
@@ -255,7 +263,7 @@ claim_result factor_signs_shape(const shape_call& call, const run_context& ctx) 
   const ex v = read.formula("variable");
   const std::string pattern = call.with.at("sentence").values.front();
   const quoted_sentence said = quote(ctx, pattern);
-  const int stated = said.choice("sign", {{"negative", "-1"}, {"positive", "1"}}) == "-1" ? -1 : 1;
+  const int stated = said.choice("sign", hole_named("sign").phrases) == "negative" ? -1 : 1;
   const bool has_relation = pattern.find("{relation}") != std::string::npos;
   std::optional<stated_bound> relation;
   if (has_relation) {
@@ -350,7 +358,7 @@ claim_result sign_iff_shape(const shape_call& call, const run_context& ctx) {
   const ex f = read.formula("expression");
   const referenced_formula condition = read.raw("condition");
   const ex v = read.formula("variable");
-  const std::string claimed = call.with.at("sign").values.front();
+  const std::string claimed = stated_sign(call, ctx);
   const int want = claimed == "positive" ? 1 : -1;
   claim_result result;
   result.printed = read.printed();

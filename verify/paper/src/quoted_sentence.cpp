@@ -16,20 +16,37 @@ std::string lower(std::string s) {
 
 /// "three", "third", "3" → 3; -1 when the word is none of them.
 int number_word(const std::string& word) {
-  static const std::map<std::string, int> words = {
-      {"zero", 0},    {"one", 1},     {"first", 1},   {"two", 2},      {"second", 2},   {"three", 3},   {"third", 3},
-      {"four", 4},    {"fourth", 4},  {"five", 5},    {"fifth", 5},    {"six", 6},      {"sixth", 6},   {"seven", 7},
-      {"seventh", 7}, {"eight", 8},   {"eighth", 8},  {"nine", 9},     {"ninth", 9},    {"ten", 10},    {"tenth", 10},
-      {"eleven", 11}, {"eleventh", 11}, {"twelve", 12}, {"twelfth", 12}};
   const std::string w = lower(word);
   if (!w.empty() && w.size() <= 6 && std::all_of(w.begin(), w.end(), [](unsigned char c) { return std::isdigit(c) != 0; })) {
     return std::stoi(w);
   }
-  const auto it = words.find(w);
-  return it == words.end() ? -1 : it->second;
+  for (const auto& [name, value] : number_words()) {
+    if (name == w) return value;
+  }
+  return -1;
 }
 
 }  // namespace
+
+const std::vector<std::pair<std::string, int>>& number_words() {
+  static const std::vector<std::pair<std::string, int>> words = {
+      {"zero", 0},    {"one", 1},       {"first", 1},   {"two", 2},      {"second", 2},   {"three", 3},   {"third", 3},
+      {"four", 4},    {"fourth", 4},    {"five", 5},    {"fifth", 5},    {"six", 6},      {"sixth", 6},   {"seven", 7},
+      {"seventh", 7}, {"eight", 8},     {"eighth", 8},  {"nine", 9},     {"ninth", 9},    {"ten", 10},    {"tenth", 10},
+      {"eleven", 11}, {"eleventh", 11}, {"twelve", 12}, {"twelfth", 12}};
+  return words;
+}
+
+const std::vector<std::pair<std::string, std::string>>& bound_relations() {
+  static const std::vector<std::pair<std::string, std::string>> relations = {
+      {"smaller than or equal to", "<="}, {"smaller or equal to", "<="}, {"less than or equal to", "<="}, {"less or equal to", "<="},
+      {"not greater than", "<="},         {"at most", "<="},             {"\\leq", "<="},                  {"\\le", "<="},
+      {"<=", "<="},                       {"smaller than", "<"},         {"less than", "<"},               {"<", "<"},
+      {"equal to", "="},                  {"=", "="},                    {"greater than or equal to", ">="}, {"greater or equal to", ">="},
+      {"at least", ">="},                 {"\\geq", ">="},               {"\\ge", ">="},                   {">=", ">="},
+      {"greater than", ">"},              {">", ">"}};
+  return relations;
+}
 
 bool stated_bound::admits(int x) const {
   if (relation == "<") return x < value;
@@ -65,15 +82,8 @@ int quoted_sentence::number(const std::string& hole) const {
 }
 
 stated_bound quoted_sentence::bound(const std::string& hole) const {
-  static const std::vector<std::pair<std::string, std::string>> relations = {
-      {"smaller than or equal to", "<="}, {"smaller or equal to", "<="}, {"less than or equal to", "<="}, {"less or equal to", "<="},
-      {"not greater than", "<="},         {"at most", "<="},             {"\\leq", "<="},                  {"\\le", "<="},
-      {"<=", "<="},                       {"smaller than", "<"},         {"less than", "<"},               {"<", "<"},
-      {"equal to", "="},                  {"=", "="},                    {"greater than or equal to", ">="}, {"greater or equal to", ">="},
-      {"at least", ">="},                 {"\\geq", ">="},               {"\\ge", ">="},                   {">=", ">="},
-      {"greater than", ">"},              {">", ">"}};
   const std::string w = lower(words(hole));
-  for (const auto& [phrase, relation] : relations) {
+  for (const auto& [phrase, relation] : bound_relations()) {
     if (w.rfind(phrase, 0) != 0) continue;
     std::string rest = w.substr(phrase.size());
     rest.erase(0, rest.find_first_not_of(' '));

@@ -61,6 +61,12 @@ class quoted_sentence {
   std::size_t index_;
 };
 
+/// The words a number hole reads besides digits ("three", "fourth"), each with its value.
+const std::vector<std::pair<std::string, int>>& number_words();
+/// The phrases a bound hole reads before its number ("smaller or equal to"), each with its relation,
+/// in the order they are tried (the longest first where one begins another).
+const std::vector<std::pair<std::string, std::string>>& bound_relations();
+
 /// The sentence of `paper` that matches `pattern`; recorded in `quotes` when given (the
 /// claim's evidence). Throws text_changed naming the pattern when it is not there.
 quoted_sentence quote_sentence(const paper_source& paper, const std::string& pattern, json* quotes);
