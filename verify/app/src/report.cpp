@@ -507,13 +507,16 @@ std::string first_sentence(const std::string& text) {
 std::string referee_summary_markdown(const run_record& r) {
   const verdict_counts c = count_verdicts(r);
   if (r.outcomes.empty()) return {};
+  const std::string the = r.of_the_paper ? "paper" : "document";
   std::string md = "## Referee's summary\n\n";
-  md += fmt::format("{} of the {} claims are the paper's ({} the harness's own statements, not counted below). ", c.paper,
-                    r.outcomes.size(), c.harness);
-  if (c.distinct + c.consequences == 0) return md + "No finding: every claim of the paper checked holds as printed.\n\n";
-  md += fmt::format("**{} distinct finding{}** about the paper ({} substantive, {} typographical), and {} consequence{} counted under "
+  if (c.harness > 0) {
+    md += fmt::format("{} of the {} claims are the {}'s ({} the harness's own statements, not counted below). ", c.paper, r.outcomes.size(),
+                      the, c.harness);
+  }
+  if (c.distinct + c.consequences == 0) return md + fmt::format("No finding: every claim of the {} checked holds as printed.\n\n", the);
+  md += fmt::format("**{} distinct finding{}** about the {} ({} substantive, {} typographical), and {} consequence{} counted under "
                     "their cause. Classes (docs/findings.md): erratum, wording, derivation gap, naming, unverifiable.\n\n",
-                    c.distinct, c.distinct == 1 ? "" : "s", c.distinct - c.typographical, c.typographical, c.consequences,
+                    c.distinct, c.distinct == 1 ? "" : "s", the, c.distinct - c.typographical, c.typographical, c.consequences,
                     c.consequences == 1 ? "" : "s");
   for (const bool typographical : {false, true}) {
     for (const claim_outcome& o : r.outcomes) {
@@ -599,7 +602,8 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
   }
   md += coq_markdown(r);
   md += r.run_scene.timing ? "Run times: [timing.md](timing.md). " : "Not timed (--no-timing). ";
-  md += "The tool's version and commit, the machine, the command line and the SHA-256 of the scene and the paper are in "
+  md += "The tool's version and commit, the machine, the command line and the SHA-256 of the scene and the " +
+        std::string(r.of_the_paper ? "paper" : "document") + " are in "
         "report.json (`environment`).\n\n";
   md += fmt::format("Seed {} · {} random samples per numeric recheck and precision · precisions: {} · interval enclosures from "
                     "40 digits, doubled up to {}\n\n", r.run_scene.seed,
@@ -613,11 +617,15 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
         "floating-point claim not decided because gappa is not installed: never counted against the run), **unverifiable** (material "
         "the claim needs is absent from the source, a figure or a reference: no verdict on its words).\n\n";
 
-  md += "## Claims\n\nStatement: *read* when its formulas are read from the paper's source and proved in both kernels "
-        "(our kernel and GiNaC), *quoted* when its prose sentence is quoted from the source and its words parsed, *typed* when "
-        "it quotes nothing of the paper. The paper says: the sentence quoted, or the first display read (its TeX, cut at "
-        + std::to_string(said_cut) + " characters), with its line; for a typed claim, its record's statement.\n\n"
-        "| id | § | equation | statement | the paper says | verdict | expected | methods |\n|---|---|---|---|---|---|---|---|\n";
+  {
+    const std::string the = r.of_the_paper ? "paper" : "document";
+    md += fmt::format("## Claims\n\nStatement: *read* when its formulas are read from the {0}'s source and proved in both kernels "
+                      "(our kernel and GiNaC), *quoted* when its prose sentence is quoted from the source and its words parsed, *typed* when "
+                      "it quotes nothing of the {0}. The {0} says: the sentence quoted, or the first display read (its TeX, cut at "
+                      "{1} characters), with its line; for a typed claim, its record's statement.\n\n"
+                      "| id | § | equation | statement | the {0} says | verdict | {2} | methods |\n|---|---|---|---|---|---|---|---|\n",
+                      the, said_cut, r.validation ? "to hold" : "expected");
+  }
   for (const claim_outcome& o : r.outcomes) {
     const claim& c = *o.checked;
     const std::string verdict_text = "**" + to_string(o.result.outcome) + "**" +
@@ -736,7 +744,8 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
                         markdown_escaped(exact["own"].get<std::string>()), markdown_escaped(exact["ginac"].get<std::string>()));
     }
     for (const json& q : o.result.quoted) md += quoted_markdown(q);
-    if (o.result.printed.is_null() && o.result.quoted.empty()) md += "Statement typed into the ledger: it quotes no words of the paper.\n\n";
+    if (o.result.printed.is_null() && o.result.quoted.empty()) md += r.of_the_paper ? "Statement typed into the ledger: it quotes no words of the paper.\n\n"
+                          : "Statement typed in the claims file: it quotes no words of the document.\n\n";
     if (!o.result.correction.empty()) md += "Corrected: " + markdown_escaped(o.result.correction) + "\n\n";
     if (!o.result.note.empty()) md += "Note: " + markdown_escaped(o.result.note) + "\n\n";
     md += enclosure_markdown(o.result.evidence);

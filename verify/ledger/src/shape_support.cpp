@@ -220,7 +220,8 @@ void shape_reader::declared_only(const ex& e, const std::string& where) const {
   };
   for (const std::string& name : symbol_names(e)) {
     if (!declared_.count(name) && !bound.count(name) && !derivative_of_declared(name)) {
-      throw std::invalid_argument(where + ": the symbol '" + name + "' is not declared in [symbols]");
+      throw std::invalid_argument(where + ": the symbol '" + name + "' is not declared in [symbols] (declare it under positive or real; "
+                                  "or under functions if the document applies it, " + name + "(x))");
     }
   }
 }

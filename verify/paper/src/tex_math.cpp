@@ -431,14 +431,17 @@ class reader {
     if (n.text == "|") {
       ++c.k;
       const GiNaC::ex inside = sum(c, {"|"});
-      if (c.done() || !is_atom(c.node(), "|")) refuse("a '|' that is never closed", n);
+      if (c.done() || !closes(c.node(), {"|"})) refuse("a '|' that is never closed", n);
+      const tex_node& close = c.node();
       ++c.k;
-      return GiNaC::abs(inside);
+      if (close.kind != tex_node_kind::scripts) return GiNaC::abs(inside);
+      if (!close.sub.empty()) refuse("a subscript on a closing '|'", close);
+      return power_of(GiNaC::abs(inside), whole_node(close.sup.front()));  // |r|^2
     }
     if (n.text == "\\partial") refuse("a \\partial outside a derivative", n, "\\frac{\\partial L}{\\partial q} or \\partial_q L");
     if (n.text == "\\ldots" || n.text == "\\cdots" || n.text == "\\dots") refuse("an ellipsis: what it stands for is not written", n);
     if (n.text == "\\infty") refuse("\\infty", n);
-    if (n.text == "\\prime") refuse("a prime on nothing", n);
+    if (n.text == "\\prime") refuse("a prime on no function (a prime is the derivative of a declared function: V'(x))", n);
     if (n.atom_class == tex_class::close) refuse("a '" + n.text + "' that closes nothing", n);
     refuse("unexpected '" + n.text + "'", n);
   }
