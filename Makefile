@@ -121,9 +121,9 @@ sanitize: sanitize-build
 	      failed=$$(sed 's/^[0-9]*://; s/[][\\.*^$$+?(){}|/]/\\&/g' Testing/Temporary/LastTestsFailed.log | paste -sd'|'); \
 	      $(call SANITIZE_ENV,1) ctest --output-on-failure -j $(JOBS) -R "^($$failed)\$$"; fi; exit 1; }
 
-# The scene parser and the claims-file reader under libFuzzer, 25 s and 20 s, side by side (one
-# process each, so one core each); the targets are built by sanitize-build. Each one's report is
-# printed whole after both have stopped, the first's before the second's.
+# The TeX reader under libFuzzer for 25 s on one core, beside the scene parser and then the
+# claims-file reader for 12 s each on the other; the targets are built by sanitize-build. Each one's
+# report is printed whole after all have stopped, in that order.
 fuzz: sanitize-build
 	@scripts/run-fuzz $(SANITIZE_BUILD)/bin/tex_reader_fuzz 25 >$(SANITIZE_BUILD)/fuzz-tex.out 2>&1 & tex=$$!; \
 	  scripts/run-fuzz $(SANITIZE_BUILD)/bin/scene_parser_fuzz 12 >$(SANITIZE_BUILD)/fuzz-scene.out 2>&1; scene=$$?; \
