@@ -182,32 +182,59 @@ std::string stated_sign(const shape_call& call, const run_context& ctx) {
   return quote(ctx, call.with.at("sentence").values.front()).choice("sign", hole_named("sign").phrases);
 }
 
+/// What the sign shapes read: the expression as a function of the variable alone, the printed
+/// interval 0 < v < c with c exact, and the sign the claim states. None when our kernel cannot decide
+/// (the expression not a function of v alone, or c not a positive rational): `result` is then
+/// undecided, with the reason.
+struct sign_claim {
+  ex f, v, high;
+  referenced_formula condition;
+  std::string claimed;
+  int want = 0;
+  std::optional<one_variable> g;
+  rational c;
+};
+
+std::optional<sign_claim> read_sign_claim(shape_reader& read, const shape_call& call, const run_context& ctx, claim_result& result) {
+  sign_claim s;
+  s.f = read.formula("expression");
+  s.condition = read.raw("condition");
+  s.v = read.formula("variable");
+  s.claimed = stated_sign(call, ctx);
+  s.want = s.claimed == "positive" ? 1 : -1;
+  result.printed = read.printed();
+  s.high = interval_end(s.condition, s.v, read.reading());
+  s.g = in_variable(s.f, s.v);
+  if (!s.g) {
+    result.outcome = verdict::undecided;
+    result.note = "(" + reference_of(call, "expression") + ") is not a function of " + text_of(s.v) + " alone.";
+    return std::nullopt;
+  }
+  const std::optional<rational> c = s.g->exact(s.high);
+  if (!c || *c <= 0) {
+    result.outcome = verdict::undecided;
+    result.note = "The interval's end " + text_of(s.high) + " is not a positive rational" + (s.g->in_square ? " in its square" : "") +
+                  ": our kernel compares ends exactly, and cannot here.";
+    return std::nullopt;
+  }
+  s.c = *c;
+  return s;
+}
+
 /// The claimed sign of a function of v on the printed interval 0 < v < c: no root or pole of it
 /// inside (our kernel's Sturm sequences, the end compared exactly), and the sign at a point inside.
 claim_result sign_on_interval_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
-  const ex f = read.formula("expression");
-  const referenced_formula condition = read.raw("condition");
-  const ex v = read.formula("variable");
-  const std::string claimed = stated_sign(call, ctx);
-  const int want = claimed == "positive" ? 1 : -1;
   claim_result result;
-  result.printed = read.printed();
-  const ex high = interval_end(condition, v, read.reading());
-  const std::optional<one_variable> g = in_variable(f, v);
-  if (!g) {
-    result.outcome = verdict::undecided;
-    result.note = "(" + reference_of(call, "expression") + ") is not a function of " + text_of(v) + " alone.";
-    return result;
-  }
+  const std::optional<sign_claim> claim = read_sign_claim(read, call, ctx, result);
+  if (!claim) return result;
+  const ex &f = claim->f, &v = claim->v, &high = claim->high;
+  const referenced_formula& condition = claim->condition;
+  const std::string& claimed = claim->claimed;
+  const int want = claim->want;
+  const std::optional<one_variable>& g = claim->g;
+  const std::optional<rational> c = claim->c;
   const std::string var = text_of(v);
-  const std::optional<rational> c = g->exact(high);
-  if (!c || *c <= 0) {
-    result.outcome = verdict::undecided;
-    result.note = "The interval's end " + text_of(high) + " is not a positive rational" + (g->in_square ? " in its square" : "") +
-                  ": our kernel compares ends exactly, and cannot here.";
-    return result;
-  }
   // The first root or pole of f inside (0, c), if any.
   const one_variable::inside_of found = g->first_inside(*c);
   if (found.ambiguous) {
@@ -355,27 +382,15 @@ namespace simpson::verify::detail {
 /// our kernel's alone.
 claim_result sign_iff_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
-  const ex f = read.formula("expression");
-  const referenced_formula condition = read.raw("condition");
-  const ex v = read.formula("variable");
-  const std::string claimed = stated_sign(call, ctx);
-  const int want = claimed == "positive" ? 1 : -1;
   claim_result result;
-  result.printed = read.printed();
-  const ex high = interval_end(condition, v, read.reading());
-  const std::optional<one_variable> g = in_variable(f, v);
-  if (!g) {
-    result.outcome = verdict::undecided;
-    result.note = "(" + reference_of(call, "expression") + ") is not a function of " + text_of(v) + " alone.";
-    return result;
-  }
-  const std::optional<rational> c = g->exact(high);
-  if (!c || *c <= 0) {
-    result.outcome = verdict::undecided;
-    result.note = "The interval's end " + text_of(high) + " is not a positive rational" + (g->in_square ? " in its square" : "") +
-                  ": our kernel compares ends exactly, and cannot here.";
-    return result;
-  }
+  const std::optional<sign_claim> claim = read_sign_claim(read, call, ctx, result);
+  if (!claim) return result;
+  const ex &f = claim->f, &v = claim->v, &high = claim->high;
+  const referenced_formula& condition = claim->condition;
+  const std::string& claimed = claim->claimed;
+  const int want = claim->want;
+  const std::optional<one_variable>& g = claim->g;
+  const std::optional<rational> c = claim->c;
   // The intervals of v > 0 between the roots and poles, each with its sign (probed inside it).
   struct band {
     rational from, to;  // to < 0: unbounded

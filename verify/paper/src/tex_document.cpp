@@ -151,14 +151,7 @@ class scanner {
     while (!in_.empty()) {
       const tex_token tok = in_.front();
       if (tok.category == tex_category::control || tok.category == tex_category::active) {
-        if (tok.category == tex_category::control && is_definition_command(tok.text)) {
-          drop(read_definition(in_, 0, macros_));
-          continue;
-        }
-        if (const tex_macro* macro = macros_.find(tok.text)) {
-          expand(*macro);
-          continue;
-        }
+        if (defined_or_expanded(tok)) continue;
         if (tok.is_control("\\verb")) {  // \verb|...|: the tokens up to the delimiter again, whatever they are
           const std::string delimiter = in_.size() > 1 ? in_[1].text : "";
           std::size_t j = 2;
@@ -217,6 +210,20 @@ class scanner {
     consumed_ += n;
   }
 
+  /// At a definition, reads it; at a macro of the document, expands it: what TeX's mouth does before
+  /// its stomach sees a token. False for any other token.
+  bool defined_or_expanded(const tex_token& tok) {
+    if (tok.category == tex_category::control && is_definition_command(tok.text)) {
+      drop(read_definition(in_, 0, macros_));
+      return true;
+    }
+    if (const tex_macro* macro = macros_.find(tok.text)) {
+      expand(*macro);
+      return true;
+    }
+    return false;
+  }
+
   void expand(const tex_macro& macro) {
     // A macro whose expansion starts with itself (\def\a{\a\a}) loops at one place; TeX's own limit
     // is its memory ("capacity exceeded"), ours a count, at one place and in all.
@@ -267,14 +274,7 @@ class scanner {
       if (in_.empty()) throw tex_error(what + " opened here is never closed: truncated?", opener, environment);
       const tex_token tok = in_.front();
       if (tok.category == tex_category::control || tok.category == tex_category::active) {
-        if (tok.category == tex_category::control && is_definition_command(tok.text)) {
-          drop(read_definition(in_, 0, macros_));
-          continue;
-        }
-        if (const tex_macro* macro = macros_.find(tok.text)) {
-          expand(*macro);
-          continue;
-        }
+        if (defined_or_expanded(tok)) continue;
         if (is_text_command(tok.text)) {  // \text{... $x$ ...}: its group as it is, math shifts and all
           const std::size_t open = skip_space_tokens(in_, 1);
           if (open < in_.size() && in_[open].category == tex_category::begin_group) {
