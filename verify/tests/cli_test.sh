@@ -412,6 +412,8 @@ grep -q 'internal error (a bug in the harness) in phi3-det: injected fault' "$wo
 grep -q 'phi3-det: verdict fails' "$work/err" && fail "internal error: announced as a failed claim: $(cat "$work/err")"
 grep -q '^2 claims: 1 held, 0 errata, 0 failed, 1 without a verdict (a harness fault' "$work/out" ||
   fail "internal error: the summary counts it as a verdict: $(tail -3 "$work/out")"
+grep -q 'without a verdict (a harness fault: the check threw); no verdict on the run: a harness fault' "$work/out" ||
+  fail "internal error: the summary line calls the run green: $(grep '^2 claims' "$work/out")"
 [ -f "$work/fault/report.json" ] || fail "internal error: no report"
 # compare: the committed reference against itself, against an altered copy, and bad input.
 reference="$(dirname "$0")/../../reports/reference/paper"

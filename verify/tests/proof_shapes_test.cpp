@@ -1222,6 +1222,14 @@ TEST(ShapeRecords, ADeclaredFunctionIsOneName) {
 
 TEST(ShapeRecords, BadRecordsAreNamedWithTheirLineAndArgument) {
   EXPECT_EQ(error_of("identity", R"({ lhs = "sum", rhs = "expanded" })"), "");
+  // A misused argument is bad input before the run, never a harness fault in it: a scale that
+  // depends on the states, or is 0 (the shape's own check, reached at run time, was exit 3).
+  const std::string series = R"(printed = "trunc", scheme = "sv:lhs", sequence = ['q_{j-1}', 'q_j', 'q_{j+1}'], step = ['h'], frequency = '$\omega$')";
+  EXPECT_EQ(error_of("truncation", "{ " + series + R"(, scale = '$m$' })"), "");
+  EXPECT_NE(error_of("truncation", "{ " + series + R"(, scale = '$q_j$' })").find("field 'with.scale': the record's TeX 'q_j' depends on q_j"),
+            std::string::npos);
+  EXPECT_NE(error_of("truncation", "{ " + series + R"(, scale = '$m - m$' })").find("field 'with.scale': the record's TeX 'm - m' is 0"),
+            std::string::npos);
   EXPECT_NE(error_of("no-such-shape", "{}").find("field 'shape': no proof shape is named 'no-such-shape'"), std::string::npos);
   EXPECT_NE(error_of("identity", R"({ lhs = "sum" })").find("field 'with.rhs': missing"), std::string::npos);
   EXPECT_NE(error_of("identity", R"({ lhs = "sum", rhs = "expanded", extra = "x" })").find("field 'with.extra': not an argument"),

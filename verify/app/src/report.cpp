@@ -148,7 +148,8 @@ std::string summary_line(const run_record& r) {
                      c.undecided ? fmt::format(", {} undecided within the enclosure budget", c.undecided) : "",
                      c.unproved ? fmt::format(", {} unproved (Gappa could not bound the round-off)", c.unproved) : "",
                      c.skipped ? fmt::format(", {} skipped (gappa not installed)", c.skipped) : "",
-                     r.validation ? (c.unexpected.empty() ? std::string("every claim holds")
+                     c.faults ? std::string("no verdict on the run: a harness fault")
+                     : r.validation ? (c.unexpected.empty() ? std::string("every claim holds")
                                                           : fmt::format("{} not holding ({})", c.unexpected.size(), join(c.unexpected, ", ")))
                      : c.unexpected.empty() ? std::string("all verdicts as expected")
                                             : fmt::format("{} not as expected ({})", c.unexpected.size(), join(c.unexpected, ", ")));

@@ -39,6 +39,7 @@ std::vector<shape_parameter> with_series(std::vector<shape_parameter> parameters
            {"step", argument_kind::symbols, true, "the step h", 1},
            {"frequency", argument_kind::formula, true, "omega of q'' = -omega^2 q"},
            {"scale", argument_kind::formula, false, "a factor the text divides the scheme by ('the scheme divided by m'), free of the states"}}) {
+    if (p.name == "scale") p.free_of = "sequence";
     parameters.push_back(std::move(p));
   }
   return parameters;
@@ -429,6 +430,15 @@ std::string check_shape_formulas(const claim_record& record, const std::string& 
             rows[p.name] = GiNaC::ex_to<GiNaC::matrix>(m).rows();
             if (p.size != 0 && rows[p.name] != p.size) {
               throw claims_file_error(file, line, field, fmt::format("{} is {} x {}, not {} x {}", f.locator, rows[p.name], rows[p.name], p.size, p.size));
+            }
+          }
+          if (!p.free_of.empty() && record.with.count(p.free_of)) {
+            const ex value = read->formula(p.name);
+            if (GiNaC::normal(value).is_zero()) throw claims_file_error(file, line, field, f.locator + " is 0");
+            for (const GiNaC::symbol& s : read->symbols(p.free_of)) {
+              if (value.has(s)) {
+                throw claims_file_error(file, line, field, f.locator + " depends on " + s.get_name() + ", one of the symbols of '" + p.free_of + "'");
+              }
             }
           }
           if (p.kind == argument_kind::condition && f.sides.size() != 3) {

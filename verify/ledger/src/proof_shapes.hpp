@@ -39,6 +39,7 @@ struct shape_parameter {
   std::string instead_of{};          // given instead of this argument: exactly one of the two (neither `required`)
   std::string only_with{};           // given exactly when this argument is
   std::string hole{};                // word: a sentence's pattern, which must hold the hole {hole}
+  std::string free_of{};             // formula: nonzero, and free of this symbols argument's symbols (a scale free of the states)
 };
 
 /// One call: the claim's id and statement, its arguments, and its claims file's declarations (they
