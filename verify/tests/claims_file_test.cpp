@@ -41,17 +41,17 @@ std::string error_of(const std::string& text) {
 
 TEST(ClaimsFile, TheEmbeddedFileIsTheLedgerRecordForRecord) {
   const std::vector<claim_record> records = read_claims_with_known_checks(embedded_claims_text(), "claims/paper.toml");
-  ASSERT_EQ(records.size(), ledger().size());
+  ASSERT_EQ(records.size(), paper_book().claims.size());
   std::set<std::string> headline;
   for (std::size_t k = 0; k < records.size(); ++k) {
-    EXPECT_EQ(records[k].id, ledger()[k].id);
-    EXPECT_EQ(records[k].shape.empty() ? records[k].check : "shape " + records[k].shape, ledger()[k].check_name);
-    EXPECT_EQ(records[k].expected, ledger()[k].expected) << records[k].id;
+    EXPECT_EQ(records[k].id, paper_book().claims[k].id);
+    EXPECT_EQ(records[k].shape.empty() ? records[k].check : "shape " + records[k].shape, paper_book().claims[k].check_name);
+    EXPECT_EQ(records[k].expected, paper_book().claims[k].expected) << records[k].id;
     if (records[k].headline) headline.insert(records[k].id);
   }
   EXPECT_EQ(headline, (std::set<std::string>{"phi3-det", "discriminant-factorization", "hd-invariance", "truncation-1440"}));
-  EXPECT_EQ(find_claim("abstract-explicit").follows_from, "phi3-explicit");
-  EXPECT_FALSE(find_claim("table-orders").coq_none.empty());
+  EXPECT_EQ(paper_book().find("abstract-explicit").follows_from, "phi3-explicit");
+  EXPECT_FALSE(paper_book().find("table-orders").coq_none.empty());
 }
 
 TEST(ClaimsFile, ACheckBringsItsFacetsUnderItsOneName) {
@@ -60,19 +60,19 @@ TEST(ClaimsFile, ACheckBringsItsFacetsUnderItsOneName) {
   const detail::registered_check* derivation = detail::registered_checks().find("derivation-phi3");
   ASSERT_NE(derivation, nullptr);
   EXPECT_EQ(derivation->formulas, (std::vector<std::string>{"Phi3"}));
-  EXPECT_TRUE(reads_printed_formula("derivation-phi3"));
+  EXPECT_TRUE(reads_printed_formula(paper_book().find("derivation-phi3")));
   EXPECT_FALSE(derivation->coq_goals);
   // A claim a proof shape decides names no check: it reads the displays its arguments name.
   EXPECT_EQ(detail::registered_checks().find("phi3-det"), nullptr);
-  EXPECT_EQ(find_claim("phi3-det").check_name, "shape determinant");
-  EXPECT_EQ(find_claim("hd-invariance").labels_read, (std::vector<std::string>{"Phi3", "hamiltonien-discret"}));
-  EXPECT_TRUE(reads_printed_formula("phi3-det"));
+  EXPECT_EQ(paper_book().find("phi3-det").check_name, "shape determinant");
+  EXPECT_EQ(paper_book().find("hd-invariance").labels_read, (std::vector<std::string>{"Phi3", "hamiltonien-discret"}));
+  EXPECT_TRUE(reads_printed_formula(paper_book().find("phi3-det")));
   const detail::registered_check* shears = detail::registered_checks().find("phi3-shear-factorization");
   ASSERT_NE(shears, nullptr);
   EXPECT_TRUE(shears->coq_goals);
-  EXPECT_FALSE(reads_printed_formula("phi3-shear-factorization"));
+  EXPECT_FALSE(reads_printed_formula(paper_book().find("phi3-shear-factorization")));
   // Named under the check, not the claim: figure1-statements's check is figure1.
-  EXPECT_EQ(find_claim("figure1-statements").check_name, "figure1");
+  EXPECT_EQ(paper_book().find("figure1-statements").check_name, "figure1");
   EXPECT_NE(detail::registered_checks().find("figure1"), nullptr);
   // A facet for a check that is not registered is a harness fault.
   detail::check_registry registry;

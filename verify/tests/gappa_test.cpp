@@ -197,7 +197,7 @@ claim_result table_roundoff_with_state_printed(const std::string& printed) {
   const paper_reading paper = read_paper(copy);
   run_context ctx;
   ctx.paper = &paper;
-  return find_claim("table-roundoff").check(ctx);
+  return paper_book().find("table-roundoff").check(ctx);
 }
 
 TEST(GappaClaims, TableOnesDigitsAreAboveTheProvedRoundoffAndTooManyDigitsFail) {

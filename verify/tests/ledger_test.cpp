@@ -11,7 +11,7 @@ namespace {
 TEST(LedgerShape, IdsAreUniqueKebabCase) {
   std::set<std::string> seen;
   const std::regex kebab("[a-z0-9]+(-[a-z0-9]+)*");
-  for (const claim& c : ledger()) {
+  for (const claim& c : paper_book().claims) {
     EXPECT_TRUE(std::regex_match(c.id, kebab)) << c.id;
     EXPECT_TRUE(seen.insert(c.id).second) << "duplicate id " << c.id;
     EXPECT_FALSE(c.statement.empty()) << c.id;
@@ -22,18 +22,18 @@ TEST(LedgerShape, IdsAreUniqueKebabCase) {
 }
 
 TEST(LedgerShape, HasTheRequiredClaimsAndCoversSectionsTwoToNine) {
-  for (const std::string& id : required_claim_ids()) EXPECT_NO_THROW(find_claim(id)) << id;
-  EXPECT_GE(ledger().size(), 25u);
+  for (const std::string& id : required_claim_ids()) EXPECT_NO_THROW(paper_book().find(id)) << id;
+  EXPECT_GE(paper_book().claims.size(), 25u);
   for (const char* section : {"2", "3", "4", "5", "6", "7", "8", "9"}) {
     std::size_t n = 0;
-    for (const claim& c : ledger()) n += c.section == section;
+    for (const claim& c : paper_book().claims) n += c.section == section;
     EXPECT_GT(n, 0u) << "no claim from Section " << section;
   }
 }
 
 TEST(LedgerShape, UnknownIdIsNamed) {
   try {
-    find_claim("phi4-det");
+    paper_book().find("phi4-det");
     ADD_FAILURE() << "found a claim that does not exist";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("'phi4-det'"), std::string::npos) << e.what();
@@ -45,7 +45,7 @@ TEST(LedgerShape, UnknownIdIsNamed) {
 class ClaimVerdict : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(ClaimVerdict, IsAsExpected) {
-  const claim& c = find_claim(GetParam());
+  const claim& c = paper_book().find(GetParam());
   const run_context ctx{{precision::parse("double"), precision::parse("mpfr:40"), precision::parse("rational")}, 7, 3};
   const claim_result r = c.check(ctx);
   EXPECT_EQ(to_string(r.outcome), to_string(c.expected)) << r.evidence.dump(2);
@@ -57,7 +57,7 @@ TEST_P(ClaimVerdict, IsAsExpected) {
 
 std::vector<std::string> all_ids() {
   std::vector<std::string> ids;
-  for (const claim& c : ledger()) ids.push_back(c.id);
+  for (const claim& c : paper_book().claims) ids.push_back(c.id);
   return ids;
 }
 

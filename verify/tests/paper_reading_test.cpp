@@ -21,15 +21,15 @@ namespace {
 /// anchor): comments keep an older Φ₃, so the replacement is made where the reader looks.
 verdict verdict_of(const std::string& id, const paper_reading& paper) {
   const run_context ctx{{precision::parse("double"), precision::parse("rational")}, 20230830, 2, &paper};
-  return check_claim(find_claim(id), ctx).outcome;
+  return check_claim(paper_book().find(id), ctx).outcome;
 }
 
 TEST(PaperReading, EveryFormulaOfTheEmbeddedPaperParsesAndKeepsItsVerdict) {
   const paper_reading paper = read_paper(embedded_paper());
   EXPECT_EQ(paper.formulas.size(), printed_formula_locations().size());
   std::size_t read = 0;
-  for (const claim& c : ledger()) {
-    if (!reads_printed_formula(c.id)) continue;
+  for (const claim& c : paper_book().claims) {
+    if (!reads_printed_formula(c)) continue;
     ++read;
     const claim_result r = check_claim(c, run_context{{precision::parse("double"), precision::parse("rational")}, 20230830, 2, &paper});
     EXPECT_EQ(r.outcome, c.expected) << c.id << ": " << r.note;
@@ -47,12 +47,12 @@ TEST(PaperReading, EveryFormulaOfTheEmbeddedPaperParsesAndKeepsItsVerdict) {
       EXPECT_TRUE(r.evidence.at("kernels").at("ginac").at("derived_holds").get<bool>()) << c.id;
     }
   }
-  EXPECT_EQ(read, printed_formula_claim_count());
+  EXPECT_EQ(read, printed_formula_claim_count(paper_book().claims));
   EXPECT_GE(read, 30u);  // every claim whose statement is a formula
   for (const char* id : {"phi3-det", "discriminant-factorization", "hd-invariance", "truncation-1440", "gamma-system",
                          "gamma-determinant", "taylor-display", "classical-action-range", "simpson-action-range",
                          "derivation-phi3", "lh-dqm", "internal-equation", "simpson-lagrangian", "classical-euler-lagrange"}) {
-    EXPECT_TRUE(reads_printed_formula(id)) << id;
+    EXPECT_TRUE(reads_printed_formula(paper_book().find(id))) << id;
   }
   EXPECT_EQ(paper.at("Phi3").source.line, 488);
 }
@@ -153,7 +153,7 @@ TEST(PaperReading, TheStabilityBandIsReadFromTheDisplay) {
   EXPECT_EQ(verdict_of("discriminant-negative", paper), verdict::erratum);  // wording: the prefactor is positive, as on (0, 8)
   EXPECT_EQ(verdict_of("roots-product-one", paper), verdict::holds);
   const run_context ctx{{precision::parse("double")}, 20230830, 2, &paper};
-  const claim_result r = check_claim(find_claim("discriminant-negative"), ctx);
+  const claim_result r = check_claim(paper_book().find("discriminant-negative"), ctx);
   EXPECT_EQ(r.evidence.at("exact").at("statement"), "the factors of (after:can be factorized) on 0 < h*omega < 2") << r.evidence.at("exact").dump();
   // Printed as 0 < omega h < pi: no rational band, so the signs on it are not decided (our kernel
   // compares ends exactly).
@@ -165,7 +165,7 @@ TEST(PaperReading, TheStabilityBandIsReadFromTheDisplay) {
 TEST(PaperReading, AnErratumOfAFormulaIsCorrectedByTheDerivedOne) {
   const paper_reading paper = read_paper(altered("\\label{qm-oscillateur-harmonique}", "{{q_\\ell + q_r}\\over2}", "{{q_\\ell + q_r}\\over3}"));
   const run_context ctx{{precision::parse("double")}, 20230830, 2, &paper};
-  const claim_result r = check_claim(find_claim("qm-harmonic"), ctx);
+  const claim_result r = check_claim(paper_book().find("qm-harmonic"), ctx);
   EXPECT_EQ(r.outcome, verdict::erratum);
   EXPECT_NE(r.correction.find("as derived"), std::string::npos) << r.correction;
   EXPECT_EQ(r.printed["formulas"][0]["label"], "label qm-oscillateur-harmonique");
@@ -194,7 +194,7 @@ paper_source corrected_copy() {
 TEST(PaperReading, ACopyWithTheErrataCorrectedMakesThemHold) {
   const paper_reading paper = read_paper(corrected_copy());
   for (const char* id : {"gamma-system", "gamma-determinant", "taylor-display", "classical-action-range", "simpson-action-range"}) {
-    const claim_result r = check_claim(find_claim(id), run_context{{precision::parse("double")}, 20230830, 2, &paper});
+    const claim_result r = check_claim(paper_book().find(id), run_context{{precision::parse("double")}, 20230830, 2, &paper});
     EXPECT_EQ(r.outcome, verdict::holds) << id << ": " << r.note;
     EXPECT_TRUE(r.correction.empty()) << id;
   }
@@ -206,7 +206,7 @@ TEST(PaperReading, ACopyWithTheErrataCorrectedMakesThemHold) {
 
 TEST(PaperReading, KernelsThatDisagreeOnTheDerivedStatementAreItsOwnVerdict) {
   const paper_reading paper = read_paper(embedded_paper());
-  claim broken = find_claim("derivation-phi3");
+  claim broken = paper_book().find("derivation-phi3");
   broken.check = [](const run_context&) {  // our kernel, pretending not to prove the derivation
     claim_result r;
     r.outcome = verdict::fails;
@@ -220,7 +220,7 @@ TEST(PaperReading, KernelsThatDisagreeOnTheDerivedStatementAreItsOwnVerdict) {
 
 TEST(PaperReading, AClaimNoEnclosureDecidesIsUndecidedWithItsEnclosureNamed) {
   const paper_reading paper = read_paper(embedded_paper());
-  claim wide = find_claim("phi3-det");
+  claim wide = paper_book().find("phi3-det");
   wide.check = [](const run_context&) -> claim_result {
     throw enclosure_undecided("phi3-det: the residual's enclosure 0 ± 3e-20 decides nothing at 640 digits, the run's budget");
   };
@@ -244,7 +244,8 @@ TEST(PaperReading, BadSourcesAreNamedWithLabelLineAndToken) {
   paper_source renamed = embedded_paper();
   replace_text(renamed, renamed.text.find("\\label{moment-ordre-3}"), 22, "\\label{moment-order-3}");
   try {
-    check_claims_file_formulas(renamed);
+    claim_book book = paper_book();
+    check_claims_file_formulas(book, renamed);
     ADD_FAILURE();
   } catch (const claims_file_error& e) {
     EXPECT_NE(std::string(e.what()).find("field 'with.printed': no \\label{moment-ordre-3}"), std::string::npos) << e.what();

@@ -356,17 +356,17 @@ std::string record(const std::string& id, const std::string& shape, const std::s
 /// The verdict of each record run on shape_document.
 class ShapesOnADocument : public ::testing::Test {
  protected:
-  void TearDown() override { use_claims_file(embedded_claims_text(), "claims/paper.toml"); }
-
   claim_result run(const std::string& shape, const std::string& with, const std::string& text = shape_document) {
-    use_claims_file(declarations + record("under-test", shape, with), "test.toml");
+    book_ = read_claim_book(declarations + record("under-test", shape, with), "test.toml");
     reading_ = read_note(document(text));
-    check_claims_file_formulas(reading_.source);
+    check_claims_file_formulas(book_, reading_.source);
     run_context ctx;
     ctx.paper = &reading_;
-    return check_claim(find_claim("under-test"), ctx);
+    ctx.book = &book_;
+    return check_claim(book_.find("under-test"), ctx);
   }
 
+  claim_book book_;
   paper_reading reading_;
 };
 
@@ -378,16 +378,17 @@ TEST_F(ShapesOnADocument, ConsequencesAreTracedAndTypedLinksChecked) {
                               record("still-wrong", "identity", R"({ lhs = "expanded", rhs = "$a^3$" })");
   // The document with (expanded) misprinted a^2 + b^2; each record judged as printed, then traced.
   const auto judge = [&](const std::string& file) {
-    use_claims_file(declarations + file, "test.toml");
+    book_ = read_claim_book(declarations + file, "test.toml");
     std::string text = shape_document;
     text.replace(text.find("t = a^2 + 2 a b + b^2"), 21, "t = a^2 + b^2");
     reading_ = read_note(document(text));
-    check_claims_file_formulas(reading_.source);
+    check_claims_file_formulas(book_, reading_.source);
     run_context ctx;
     ctx.paper = &reading_;
+    ctx.book = &book_;
     std::vector<claim_result> results;
     std::vector<const claim*> claims;
-    for (const claim& c : ledger()) {
+    for (const claim& c : book_.claims) {
       claims.push_back(&c);
       results.push_back(check_claim(c, ctx));
     }
@@ -1199,25 +1200,22 @@ TEST_F(ShapesOnADocument, RootCriterion) {
 /// The error a record gives at reading (or at reading its formulas), or "".
 std::string error_of(const std::string& shape, const std::string& with, const std::string& extra = "") {
   try {
-    use_claims_file(declarations + record("bad", shape, with) + extra, "bad.toml");
-    check_claims_file_formulas(document(shape_document));
+    claim_book book = read_claim_book(declarations + record("bad", shape, with) + extra, "bad.toml");
+    check_claims_file_formulas(book, document(shape_document));
   } catch (const claims_file_error& e) {
-    use_claims_file(embedded_claims_text(), "claims/paper.toml");
     return e.what();
   }
-  use_claims_file(embedded_claims_text(), "claims/paper.toml");
   return "";
 }
 
 TEST(ShapeRecords, ADeclaredFunctionIsOneName) {
   const std::string file = "[document]\ntitle = \"x\"\n[symbols]\nreal = ['x']\nfunctions = ['f + g']\n" + record("r", "identity", R"({ lhs = '$x$', rhs = '$x$' })");
   try {
-    use_claims_file(file, "bad.toml");
+    read_claim_book(file, "bad.toml");
     ADD_FAILURE() << "a function 'f + g' was read";
   } catch (const claims_file_error& e) {
     EXPECT_NE(std::string(e.what()).find("field 'symbols.functions': 'f + g' is not one name"), std::string::npos) << e.what();
   }
-  use_claims_file(embedded_claims_text(), "claims/paper.toml");
 }
 
 TEST(ShapeRecords, BadRecordsAreNamedWithTheirLineAndArgument) {
@@ -1338,13 +1336,14 @@ std::string file_text(const std::string& path) {
 
 TEST(TrapezoidalNote, EveryVerdictIsTheOneItsClaimsFileExpects) {
   const std::string dir = std::string(SIMPSON_SOURCE_DIR) + "/verify/tests/notes/";
-  use_claims_file(file_text(dir + "trapezoidal-note.toml"), "trapezoidal-note.toml");
-  const paper_reading reading = read_note(load_document(dir + "trapezoidal-note.tex", installed_document()->title));
-  check_claims_file_formulas(reading.source);
+  claim_book book = read_claim_book(file_text(dir + "trapezoidal-note.toml"), "trapezoidal-note.toml");
+  const paper_reading reading = read_note(load_document(dir + "trapezoidal-note.tex", book.checked_document()->title));
+  check_claims_file_formulas(book, reading.source);
   run_context ctx;
   ctx.paper = &reading;
+  ctx.book = &book;
   int errata = 0;
-  for (const claim& c : ledger()) {
+  for (const claim& c : book.claims) {
     const claim_result r = check_claim(c, ctx);
     EXPECT_EQ(r.outcome, c.expected) << c.id << ": " << r.note;
     if (r.outcome == verdict::erratum) {
@@ -1353,14 +1352,13 @@ TEST(TrapezoidalNote, EveryVerdictIsTheOneItsClaimsFileExpects) {
     }
   }
   EXPECT_EQ(errata, 6);  // five deliberate errors, and one consequence of the energy's
-  EXPECT_EQ(find_claim("energy-positive").follows_from, "modified-energy");
-  EXPECT_EQ(check_claim(find_claim("energy-positive"), ctx).correction,
+  EXPECT_EQ(book.find("energy-positive").follows_from, "modified-energy");
+  EXPECT_EQ(check_claim(book.find("energy-positive"), ctx).correction,
             "(-h^2*omega^2+2)/(2) is positive for 0 < h*omega < sqrt(2) only, and changes sign there");
-  EXPECT_EQ(check_claim(find_claim("stability-condition"), ctx).correction, "stable exactly for 0 < h*omega < 2");
-  EXPECT_EQ(check_claim(find_claim("map-order"), ctx).correction, "the map is of order 2: its local error is O(h^3)");
-  EXPECT_EQ(check_claim(find_claim("rule-exactness"), ctx).correction,
+  EXPECT_EQ(check_claim(book.find("stability-condition"), ctx).correction, "stable exactly for 0 < h*omega < 2");
+  EXPECT_EQ(check_claim(book.find("map-order"), ctx).correction, "the map is of order 2: its local error is O(h^3)");
+  EXPECT_EQ(check_claim(book.find("rule-exactness"), ctx).correction,
             "The rule is exact for every polynomial of degree <= 1 and not for degree 2 (the printed words say 'two')");
-  use_claims_file(embedded_claims_text(), "claims/paper.toml");
 }
 
 }  // namespace

@@ -108,7 +108,7 @@ class ChangedSentence : public testing::TestWithParam<sentence_change> {};
 TEST_P(ChangedSentence, FlipsOrFlagsTheClaimThatQuotesIt) {
   const sentence_change& a = GetParam();
   const paper_reading reading = altered_reading(a.from, a.to);
-  const claim& c = find_claim(a.claim);
+  const claim& c = paper_book().find(a.claim);
   const run_context ctx{{precision::parse("double"), precision::parse("rational")}, 20230830, 2, &reading};
   const claim_result r = check_claim(c, ctx);
   EXPECT_EQ(to_string(r.outcome), to_string(a.expected)) << r.note << " " << r.evidence.dump().substr(0, 600);
@@ -173,13 +173,13 @@ INSTANTIATE_TEST_SUITE_P(
 // (8 - omega^2 h^2), the substance is false too: still an erratum, no longer a matter of wording.
 TEST(ChangedSentence, TheDiscriminantsFactorsAreWordingAsPrintedAndSubstanceWhenChanged) {
   const run_context printed{{precision::parse("double")}, 20230830, 2, nullptr};
-  const claim_result as_printed = check_claim(find_claim("discriminant-negative"), printed);
+  const claim_result as_printed = check_claim(paper_book().find("discriminant-negative"), printed);
   EXPECT_EQ(as_printed.outcome, verdict::erratum);
   EXPECT_EQ(as_printed.note.rfind("Wording:", 0), 0u) << as_printed.note;
   for (const auto& [from, to] : {std::pair<std::string, std::string>{"are negative", "are positive"},
                                  std::pair<std::string, std::string>{"(\\omega^2 \\, h^2 - 8 )", "(8 - \\omega^2 \\, h^2)"}}) {
     const paper_reading reading = altered_reading(from, to);
-    const claim_result r = check_claim(find_claim("discriminant-negative"), run_context{{precision::parse("double")}, 20230830, 2, &reading});
+    const claim_result r = check_claim(paper_book().find("discriminant-negative"), run_context{{precision::parse("double")}, 20230830, 2, &reading});
     EXPECT_EQ(r.outcome, verdict::erratum) << to;
     EXPECT_EQ(r.note.find("Wording:"), std::string::npos) << to << ": " << r.note;
   }
@@ -190,7 +190,7 @@ TEST(ChangedSentence, TheDiscriminantsFactorsAreWordingAsPrintedAndSubstanceWhen
 // it names Newmark's momentum as the close one.
 TEST(ChangedSentence, FigureOneIsUnverifiableWithoutItsFileAndJudgedWithIt) {
   const paper_reading absent = altered_reading("with the  symplectic Simpson scheme.", "with the Newmark scheme.");
-  EXPECT_EQ(check_claim(find_claim("figure1-statements"), run_context{{precision::parse("double")}, 20230830, 2, &absent}).outcome,
+  EXPECT_EQ(check_claim(paper_book().find("figure1-statements"), run_context{{precision::parse("double")}, 20230830, 2, &absent}).outcome,
             verdict::unverifiable);
   paper_source with_figure = embedded_paper();
   const std::string empty = "\\centerline {\\includegraphics[width=.96\\textwidth]{ }}";
@@ -198,32 +198,32 @@ TEST(ChangedSentence, FigureOneIsUnverifiableWithoutItsFileAndJudgedWithIt) {
   ASSERT_NE(at, std::string::npos);
   replace_text(with_figure, at, empty.size(), "\\centerline {\\includegraphics[width=.96\\textwidth]{figure1.pdf}}");
   const paper_reading present = read_paper(with_figure);
-  const claim_result r = check_claim(find_claim("figure1-statements"), run_context{{precision::parse("double")}, 20230830, 2, &present});
+  const claim_result r = check_claim(paper_book().find("figure1-statements"), run_context{{precision::parse("double")}, 20230830, 2, &present});
   EXPECT_EQ(r.outcome, verdict::holds) << r.note;
   paper_source newmark = with_figure;
   const std::string simpson = "with the  symplectic Simpson scheme.";
   replace_text(newmark, newmark.text.find(simpson), simpson.size(), "with the Newmark scheme.");
   const paper_reading named = read_paper(newmark);
-  EXPECT_EQ(check_claim(find_claim("figure1-statements"), run_context{{precision::parse("double")}, 20230830, 2, &named}).outcome,
+  EXPECT_EQ(check_claim(paper_book().find("figure1-statements"), run_context{{precision::parse("double")}, 20230830, 2, &named}).outcome,
             verdict::fails);
 }
 
 TEST(ChangedSentence, ExplicitForNonlinearProblemsIsStillAnErratum) {
   // "nonlinear" is not a restriction to linear problems: the words are wrong in substance, not wording.
   const paper_reading reading = altered_reading("explicit, and  symplectic", "explicit for nonlinear problems too, and symplectic");
-  const claim_result r = check_claim(find_claim("abstract-explicit"), run_context{{precision::parse("double")}, 20230830, 2, &reading});
+  const claim_result r = check_claim(paper_book().find("abstract-explicit"), run_context{{precision::parse("double")}, 20230830, 2, &reading});
   EXPECT_EQ(r.outcome, verdict::erratum);
   EXPECT_EQ(r.evidence.at("stated").at("qualified"), false);
   EXPECT_EQ(r.note.find("Wording"), std::string::npos) << r.note;
   // As printed (explicit for the harmonic oscillator, read in context): Section 6's wording finding.
-  const claim_result printed = check_claim(find_claim("abstract-explicit"), run_context{{precision::parse("double")}, 20230830, 2, nullptr});
+  const claim_result printed = check_claim(paper_book().find("abstract-explicit"), run_context{{precision::parse("double")}, 20230830, 2, nullptr});
   EXPECT_EQ(printed.outcome, verdict::erratum);
   EXPECT_EQ(printed.note.rfind("Wording", 0), 0u) << printed.note;
-  EXPECT_EQ(find_claim("abstract-explicit").follows_from, "phi3-explicit");
+  EXPECT_EQ(paper_book().find("abstract-explicit").follows_from, "phi3-explicit");
   // "It" is the scheme the sentence before makes explicit for the harmonic oscillator; made explicit
   // for general systems instead, "explicit" is false in substance too.
   const paper_reading general = altered_reading("is explicited for an elementary harmonic oscillator", "is explicited for general dynamical systems");
-  const claim_result unqualified = check_claim(find_claim("abstract-explicit"), run_context{{precision::parse("double")}, 20230830, 2, &general});
+  const claim_result unqualified = check_claim(paper_book().find("abstract-explicit"), run_context{{precision::parse("double")}, 20230830, 2, &general});
   EXPECT_EQ(unqualified.outcome, verdict::erratum);
   EXPECT_EQ(unqualified.note.find("Wording"), std::string::npos) << unqualified.note;
 }
@@ -233,7 +233,7 @@ TEST(ChangedSentence, ExplicitForNonlinearProblemsIsStillAnErratum) {
 // without a real root) held, and called Newmark's implicit midpoint explicit too: the shape's own
 // test (ShapesOnADocument.ExplicitMap) shows the criterion separates the two.
 TEST(ChangedSentence, ExplicitIsJudgedAsTheFieldDefinesIt) {
-  const claim_result printed = check_claim(find_claim("phi3-explicit"), run_context{{precision::parse("double")}, 20230830, 2, nullptr});
+  const claim_result printed = check_claim(paper_book().find("phi3-explicit"), run_context{{precision::parse("double")}, 20230830, 2, nullptr});
   EXPECT_EQ(printed.outcome, verdict::erratum);
   EXPECT_EQ(printed.note.rfind("Wording:", 0), 0u) << printed.note;
   const GiNaC::ex w = paper_symbols()["omega"], h = paper_symbols()["h"];
@@ -244,7 +244,7 @@ TEST(ChangedSentence, ExplicitIsJudgedAsTheFieldDefinesIt) {
 TEST(ChangedTable, TableOneIsJudgedAsPrinted) {
   // table-values already fails as printed: a changed entry shows in its evidence, read from the copy.
   const paper_reading reading = altered_reading("$ 4.11  \\,\\, 10^{-4} $", "$ 4.11  \\,\\, 10^{-3} $");
-  const claim_result r = check_claim(find_claim("table-values"), run_context{{precision::parse("double")}, 20230830, 2, &reading});
+  const claim_result r = check_claim(paper_book().find("table-values"), run_context{{precision::parse("double")}, 20230830, 2, &reading});
   EXPECT_EQ(r.evidence.at("numeric").at("rows")[3]["published_N_10_20_40"][0], "4.11e-03");
   EXPECT_NE(r.note.find("Symplectic Simpson state 0.997-9.84x ours"), std::string::npos) << r.note;
 }
@@ -253,11 +253,11 @@ TEST(ChangedTable, TableOneIsJudgedAsPrinted) {
 // reproduce Table 1 and another exact solution does (an erratum, with it); with a table no convention
 // reproduces, the stated pair is not supported either (fails). The same sentence in both copies.
 TEST(ChangedTable, TheStatedConventionsAreJudgedByWhetherTheyReproduceTheTable) {
-  const claim_result printed = check_claim(find_claim("experiment-conventions"), run_context{{precision::parse("double")}, 20230830, 2, nullptr});
+  const claim_result printed = check_claim(paper_book().find("experiment-conventions"), run_context{{precision::parse("double")}, 20230830, 2, nullptr});
   EXPECT_EQ(printed.outcome, verdict::erratum);
   EXPECT_NE(printed.correction.find("amplitude = "), std::string::npos) << printed.correction;
   const paper_reading reading = altered_reading("$ 4.11  \\,\\, 10^{-4} $", "$ 4.11  \\,\\, 10^{-3} $");
-  const claim_result changed = check_claim(find_claim("experiment-conventions"), run_context{{precision::parse("double")}, 20230830, 2, &reading});
+  const claim_result changed = check_claim(paper_book().find("experiment-conventions"), run_context{{precision::parse("double")}, 20230830, 2, &reading});
   EXPECT_EQ(changed.outcome, verdict::fails) << changed.note;
 }
 
@@ -265,7 +265,7 @@ TEST(ChangedTable, AnEntryIsJudgedToTheDigitsItIsPrintedWith) {
   // "4.2 10^{-4}" has two significant digits: its interval is 4.2e-4 ± 0.05e-4, and ours (4.18e-4) is
   // inside; printed "4.11" (three digits, ± 0.005e-4) it is not.
   const paper_reading reading = altered_reading("$ 4.11  \\,\\, 10^{-4} $", "$ 4.2 \\,\\, 10^{-4} $");
-  const claim_result r = check_claim(find_claim("table-values"), run_context{{precision::parse("double")}, 20230830, 2, &reading});
+  const claim_result r = check_claim(paper_book().find("table-values"), run_context{{precision::parse("double")}, 20230830, 2, &reading});
   const json& entry = r.evidence.at("search").at("stated").at("entries")[9];
   EXPECT_EQ(entry["row"], "Symplectic Simpson state");
   EXPECT_EQ(entry["printed"], "4.2e-04");
@@ -277,10 +277,10 @@ TEST(ChangedFormula, TheContractionConstantFollowsThePrintedInternalEquation) {
   // omega h < 2 sqrt(2) to omega h < 2, no longer the stability bound.
   const paper_reading reading = altered_reading("m\\, {{4}\\over{h^2}} \\, \\big( q_\\ell -2", "m\\, {{2}\\over{h^2}} \\, \\big( q_\\ell -2");
   const run_context ctx{{precision::parse("double")}, 20230830, 2, &reading};
-  const claim_result r = check_claim(find_claim("nonlinear-internal-node"), ctx);
+  const claim_result r = check_claim(paper_book().find("nonlinear-internal-node"), ctx);
   EXPECT_EQ(r.evidence.at("exact").at("pendulum_contraction_constant"), "(h^2*omega^2)/(4)");
   EXPECT_EQ(r.evidence.at("exact").at("same_bound"), false);
-  const claim_result printed = check_claim(find_claim("nonlinear-internal-node"), run_context{{precision::parse("double")}, 20230830, 2, nullptr});
+  const claim_result printed = check_claim(paper_book().find("nonlinear-internal-node"), run_context{{precision::parse("double")}, 20230830, 2, nullptr});
   EXPECT_EQ(printed.evidence.at("exact").at("same_bound"), true);
 }
 

@@ -25,10 +25,10 @@ TEST(Scene, EmbeddedScenesParseAndPaperHasEveryClaim) {
   const scene paper = load_scene("paper");
   const scene beyond = load_scene("beyond");
   // "all" is every claim of the paper; "beyond" the rest of the ledger.
-  EXPECT_EQ(paper.claims.size() + beyond.claims.size(), ledger().size());
-  const auto of_the_paper = std::count_if(ledger().begin(), ledger().end(), [](const claim& c) { return c.section != "beyond"; });
+  EXPECT_EQ(paper.claims.size() + beyond.claims.size(), paper_book().claims.size());
+  const auto of_the_paper = std::count_if(paper_book().claims.begin(), paper_book().claims.end(), [](const claim& c) { return c.section != "beyond"; });
   EXPECT_EQ(paper.claims.size(), static_cast<std::size_t>(of_the_paper));
-  for (const std::string& id : beyond.claims) EXPECT_EQ(find_claim(id).section, "beyond") << id;
+  for (const std::string& id : beyond.claims) EXPECT_EQ(paper_book().find(id).section, "beyond") << id;
   EXPECT_EQ(paper.seed, default_seed);
   const scene quick = load_scene("quick");
   for (const std::string& id : required_claim_ids()) {

@@ -67,10 +67,10 @@ int interrupted_exit(const interrupted& e) {
   return 128 + e.signal();
 }
 
-int list_claims(const std::string& format) {
+int list_claims(const claim_book& book, const std::string& format) {
   if (format == "json") {
     json out = json::array();
-    for (const claim& c : ledger()) {
+    for (const claim& c : book.claims) {
       json one{{"id", c.id},           {"section", c.section},   {"equation", c.equation}, {"statement", c.statement},
                {"methods", c.methods}, {"check", c.check_name}, {"expected", to_string(c.expected)}};
       if (c.kind != finding::none) one["finding"] = to_string(c.kind);
@@ -80,7 +80,7 @@ int list_claims(const std::string& format) {
     fmt::print("{}\n", out.dump(2));
     return 0;
   }
-  for (const claim& c : ledger()) {
+  for (const claim& c : book.claims) {
     fmt::print("{:<34} §{:<8} {:<8} {}\n", c.id, c.section, to_string(c.expected), c.equation);
   }
   return 0;
@@ -245,6 +245,9 @@ int main(int argc, char** argv) {
   std::signal(SIGTERM, record_signal);
   scene s;
   std::optional<simpson::verify::paper_reading> paper;
+  // The run's book: the paper's, or the claims file's; read once, bound to its document once, and
+  // passed to the run.
+  auto book = std::make_shared<claim_book>(paper_book());
   std::filesystem::path out;
   cost_estimate cost;
   try {
@@ -252,18 +255,18 @@ int main(int argc, char** argv) {
       std::ifstream in(claims_file, std::ios::binary);
       if (!in) throw std::invalid_argument("claims file '" + claims_file + "': cannot be read");
       const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-      use_claims_file(text, claims_file);  // a file that does not read is bad input: nothing runs
+      *book = read_claim_book(text, claims_file);  // a file that does not read is bad input: nothing runs
     }
-    if (want_claims) return list_claims(list_format);
+    if (want_claims) return list_claims(*book, list_format);
     if (want_scenes) return list_scenes();
     if (want_precisions) return list_precisions();
     if (want_holes) {
       fmt::print("{}", simpson::verify::holes_markdown());
       return 0;
     }
-    s = load_scene(scene_name);
+    s = load_scene(scene_name, *book);
     if (!paper_file.empty()) s.paper_file = paper_file;
-    if (const claims_document* document = installed_document()) {
+    if (const claims_document* document = book->checked_document()) {
       // A document's claims file: its claims alone, in a scene named after the file (its report in
       // reports/out/<name>); none of the paper's sections unless --sections asks for them.
       s.name = std::filesystem::path(claims_file).stem().string();
@@ -274,8 +277,8 @@ int main(int argc, char** argv) {
     scene_selection selection;
     if (app.count("--claims") > 0) selection.claims = claim_ids;
     if (app.count("--sections") > 0) selection.sections = section_list;
-    apply_selection(s, selection);
-    paper = read_scene_paper(s);  // a paper that is missing or does not parse is bad input: nothing runs
+    apply_selection(s, selection, *book);
+    paper = read_scene_paper(s, *book);  // a paper that is missing or does not parse is bad input: nothing runs
     if (!paper_file.empty()) s.overrides["paper"] = paper_file;
     if (!claims_file.empty()) s.overrides["claims_file"] = claims_file;
     if (validate) {
@@ -335,7 +338,7 @@ int main(int argc, char** argv) {
     }
     recheck_load rechecks{0, s.samples, s.precisions};
     for (const std::string& id : s.claims) {
-      const std::vector<std::string>& methods = find_claim(id).methods;
+      const std::vector<std::string>& methods = book->find(id).methods;
       if (std::find(methods.begin(), methods.end(), "numeric") != methods.end()) ++rechecks.numeric_claims;
     }
     cost = estimate_cost(s.experiments, rechecks);
@@ -372,7 +375,7 @@ int main(int argc, char** argv) {
   try {
     throw_if_interrupted();  // a signal while the run was being set up: nothing was written yet
     const auto start = std::chrono::steady_clock::now();
-    run_record record = run(s, *paper, [&](std::size_t k, std::size_t n, const claim& c, const claim_outcome* done) {
+    run_record record = run(s, book, *paper, [&](std::size_t k, std::size_t n, const claim& c, const claim_outcome* done) {
       if (!done || quiet) return;
       fmt::print(stderr, "[{:>2}/{}] {:<34} {:<8} {:.2f} s\n", k + 1, n, c.id, to_string(done->result.outcome), done->seconds);
     }, [quiet](const std::string& section, double seconds) {

@@ -206,7 +206,7 @@ std::string expectation_line(const run_record& r) {
   const int code = run_exit_code(r);
   if (code == 3) return "Exit code 3: a check threw (a bug in the harness); see Failures.";
   // What the expected verdicts are: the paper's, as the ledger judges it, or a claims file's for its document.
-  const bool document = installed_document() != nullptr;
+  const bool document = !r.of_the_paper;
   const std::string judgment = document ? "the claims file's expected verdicts for its document" : "the ledger's recorded judgment of the printed paper";
   const std::string changed = document ? "the document" : "the paper";
   const bool rejected = !rejected_certificates(r).empty();

@@ -20,40 +20,45 @@
 
 namespace simpson::verify {
 
-paper_reading read_scene_paper(const scene& s) {
-  if (const claims_document* document = installed_document()) {
+paper_reading read_scene_paper(const scene& s, claim_book& book) {
+  if (const claims_document* document = book.checked_document()) {
     // A document other than the paper: its claims read their formulas themselves (proof shapes).
     if (s.paper_file.empty()) throw std::invalid_argument("the claims file checks a document ([document]): give its LaTeX with --paper");
     paper_reading reading = read_note(load_document(s.paper_file, document->title));
-    check_claims_file_formulas(reading.source);
+    check_claims_file_formulas(book, reading.source);
     return reading;
   }
-  paper_reading reading = read_paper(s.paper_file.empty() ? embedded_paper() : load_paper(s.paper_file), installed_book().declarations->reading);
+  paper_reading reading = read_paper(s.paper_file.empty() ? embedded_paper() : load_paper(s.paper_file), book.declarations->reading);
   // What the scene's shape records read, before anything runs: a label or phrase the paper no longer
   // has is bad input, named, not a harness fault in the middle of a run.
-  check_claims_file_formulas(reading.source, &s.claims);
+  check_claims_file_formulas(book, reading.source, &s.claims);
   return reading;
 }
 
 run_record run(const scene& s, const progress_callback& progress,
                const std::function<void(const std::string&, double)>& section_progress) {
-  return run(s, read_scene_paper(s), progress, section_progress);
+  auto book = std::make_shared<claim_book>(paper_book());
+  const paper_reading paper = read_scene_paper(s, *book);
+  return run(s, std::move(book), paper, progress, section_progress);
 }
 
-run_record run(const scene& s, const paper_reading& paper, const progress_callback& progress,
+run_record run(const scene& s, std::shared_ptr<const claim_book> book, const paper_reading& paper, const progress_callback& progress,
                const std::function<void(const std::string&, double)>& section_progress) {
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
   run_record r;
   r.run_scene = s;
-  r.validation = s.overrides.value("validate", false) || !installed_book().guards;
-  r.of_the_paper = installed_document() == nullptr;
+  if (!book) throw std::logic_error("run: no book");
+  r.book = book;
+  r.validation = s.overrides.value("validate", false) || !book->guards;
+  r.of_the_paper = book->checked_document() == nullptr;
   r.paper_origin = paper.origin;
   run_context ctx{s.precisions, s.seed, s.samples, &paper};
+  ctx.book = book.get();
   ctx.enclosure_budget_digits = s.enclosure_budget_digits;
   for (std::size_t k = 0; k < s.claims.size(); ++k) {
     throw_if_interrupted();
-    const claim& c = find_claim(s.claims[k]);
+    const claim& c = book->find(s.claims[k]);
     if (progress) progress(k, s.claims.size(), c, nullptr);
     claim_outcome outcome;
     outcome.checked = &c;
@@ -140,7 +145,7 @@ run_record run(const scene& s, const paper_reading& paper, const progress_callba
   if (e.family) section([&] { return run_family(*e.family); });
   if (e.fpu) section([&] { return run_fpu(*e.fpu); });
   // Φ₃ at the paper's configuration: the paper's, not a document's that a claims file checks.
-  if (!installed_document()) r.paper_configuration = paper_configuration(s.precisions);
+  if (r.of_the_paper) r.paper_configuration = paper_configuration(s.precisions);
   r.environment = build_environment(s, paper);
   r.seconds = std::chrono::duration<double>(clock::now() - start).count();
   return r;

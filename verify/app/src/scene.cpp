@@ -298,7 +298,7 @@ experiment_settings parse_experiments(const nlohmann::json& doc, const std::stri
 
 }  // namespace
 
-scene parse_scene(const std::string& text, const std::string& origin) {
+scene parse_scene(const std::string& text, const std::string& origin, const claim_book& book) {
   nlohmann::json doc;
   try {
     doc = nlohmann::json::parse(text);
@@ -341,14 +341,14 @@ scene parse_scene(const std::string& text, const std::string& origin) {
   if (claims.is_string() && (claims.get<std::string>() == "all" || claims.get<std::string>() == "beyond")) {
     // "all": every claim of the paper; "beyond": the ledger's part beyond the paper (section "beyond").
     const bool beyond = claims.get<std::string>() == "beyond";
-    for (const claim& c : ledger()) {
+    for (const claim& c : book.claims) {
       if ((c.section == "beyond") == beyond) wanted.insert(c.id);
     }
   } else if (claims.is_array() && (!claims.empty() || !doc.contains("claims"))) {
     for (std::size_t k = 0; k < claims.size(); ++k) {
       if (!claims[k].is_string()) fail(origin, "'claims[" + std::to_string(k) + "]' must be a string");
       try {
-        wanted.insert(find_claim(claims[k].get<std::string>()).id);
+        wanted.insert(book.find(claims[k].get<std::string>()).id);
       } catch (const std::invalid_argument& e) {
         fail(origin, "'claims[" + std::to_string(k) + "]': " + e.what());
       }
@@ -356,7 +356,7 @@ scene parse_scene(const std::string& text, const std::string& origin) {
   } else {
     fail(origin, "'claims' must be \"all\" (the paper's), \"beyond\" (beyond the paper) or a non-empty list of claim ids");
   }
-  for (const claim& c : ledger()) {
+  for (const claim& c : book.claims) {
     if (wanted.count(c.id)) s.claims.push_back(c.id);
   }
   // The precisions of the claims' numeric rechecks: required with claims, "double" otherwise.
@@ -401,7 +401,7 @@ scene parse_scene(const std::string& text, const std::string& origin) {
     for (const auto& item : o.items()) {
       const std::string field = "'expected_overrides." + item.key() + "'";
       try {
-        find_claim(item.key());
+        book.find(item.key());
       } catch (const std::invalid_argument& e) {
         fail(origin, field + ": " + e.what());
       }
@@ -418,16 +418,16 @@ const std::map<std::string, std::string>& embedded_scenes() {
   return scenes;
 }
 
-scene load_scene(const std::string& name_or_path) {
+scene load_scene(const std::string& name_or_path, const claim_book& book) {
   const auto embedded = embedded_scenes().find(name_or_path);
-  if (embedded != embedded_scenes().end()) return parse_scene(embedded->second, name_or_path);
+  if (embedded != embedded_scenes().end()) return parse_scene(embedded->second, name_or_path, book);
   std::ifstream in(name_or_path, std::ios::binary);
   if (!in) {
     throw std::invalid_argument("scene '" + name_or_path + "': no embedded scene of that name and no readable file");
   }
   std::ostringstream text;
   text << in.rdbuf();
-  return parse_scene(text.str(), name_or_path);
+  return parse_scene(text.str(), name_or_path, book);
 }
 
 }  // namespace simpson::verify

@@ -69,7 +69,7 @@ const std::vector<std::string>& section_names() {
   return names;
 }
 
-void apply_selection(scene& s, const scene_selection& selection) {
+void apply_selection(scene& s, const scene_selection& selection, const claim_book& book) {
   if (!selection.claims && !selection.sections) return;
   std::vector<std::string> parts;
   if (selection.claims) {
@@ -85,7 +85,7 @@ void apply_selection(scene& s, const scene_selection& selection) {
       }
       if (id.find_first_of("*?[") != std::string::npos) {  // a pattern, as test runners take them: gamma-*
         bool matched = false;
-        for (const claim& c : ledger()) {
+        for (const claim& c : book.claims) {
           if (fnmatch(id.c_str(), c.id.c_str(), 0) != 0) continue;
           matched = true;
           if (std::find(ids.begin(), ids.end(), c.id) == ids.end()) ids.push_back(c.id);
@@ -93,12 +93,12 @@ void apply_selection(scene& s, const scene_selection& selection) {
         if (!matched) throw std::invalid_argument("--claims: the pattern '" + id + "' matches no claim id (see --list-claims)");
         continue;
       }
-      const std::string& known = find_claim(id).id;  // throws std::invalid_argument naming an unknown id
+      const std::string& known = book.find(id).id;  // throws std::invalid_argument naming an unknown id
       if (std::find(ids.begin(), ids.end(), known) == ids.end()) ids.push_back(known);
     }
     if (ids.empty()) throw std::invalid_argument("--claims: no claim id given");
     std::vector<std::string> ordered;  // in ledger order
-    for (const claim& c : ledger()) {
+    for (const claim& c : book.claims) {
       if (std::find(ids.begin(), ids.end(), c.id) != ids.end()) ordered.push_back(c.id);
     }
     // Every claim of the scene (--claims all) is said so, not listed.

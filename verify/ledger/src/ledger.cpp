@@ -91,7 +91,6 @@ detail::check_function check_of(const claim_record& r, const std::shared_ptr<con
     return [call, run = shape.run](const run_context& ctx) {
       detail::shape_call with_document = call;
       with_document.corrections = ctx.corrections;
-      if (with_document.statement.empty()) with_document.statement = find_claim(call.claim_id).statement;  // the TeX read
       const auto start = std::chrono::steady_clock::now();
       claim_result result = run(with_document, ctx);
       result.printed_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();  // GiNaC's and ours
@@ -160,50 +159,28 @@ const claim_book& paper_book() {
   return book;
 }
 
-namespace {
-
-/// The book --claims-file installed (use_claims_file); none: the paper's.
-std::optional<claim_book>& installed() {
-  static std::optional<claim_book> book;
-  return book;
-}
-
-}  // namespace
-
-const claim_book& installed_book() { return installed() ? *installed() : paper_book(); }
-
-const std::vector<claim>& ledger() { return installed_book().claims; }
-
-void use_claims_file(const std::string& text, const std::string& file) {
-  claim_book book = read_claim_book(text, file);
-  if (file == "claims/paper.toml" && text == embedded_claims_text()) {
-    installed().reset();  // the paper's own book again
-    return;
-  }
-  installed() = std::move(book);
-}
-
-const claims_document* installed_document() { return installed_book().document ? &*installed_book().document : nullptr; }
-
-void check_claims_file_formulas(const paper_source& source, const std::vector<std::string>* only) {
-  const tex_document document = read_document(source, installed_document() ? "document" : "paper");
-  const claim_book& book = installed_book();
-  for (const claim_record& r : book.records) {
-    if (r.shape.empty() || (only && std::find(only->begin(), only->end(), r.id) == only->end())) continue;
-    const std::string printed = detail::check_shape_formulas(r, book.file, document, *book.declarations);
-    if (!r.statement.empty() || !installed()) continue;
-    // A record without a statement: the reports show the TeX it reads.
-    for (claim& c : installed()->claims) {
-      if (c.id == r.id) c.statement = printed;
-    }
-  }
-}
-
-const claim& find_claim(const std::string& id) {
-  for (const claim& c : ledger()) {
+const claim& claim_book::find(const std::string& id) const {
+  for (const claim& c : claims) {
     if (c.id == id) return c;
   }
   throw std::invalid_argument("unknown claim id '" + id + "' (see --list-claims)");
+}
+
+void check_claims_file_formulas(claim_book& book, const paper_source& source, const std::vector<std::string>* only) {
+  const tex_document document = read_document(source, book.checked_document() ? "document" : "paper");
+  for (const claim_record& r : book.records) {
+    if (r.shape.empty() || (only && std::find(only->begin(), only->end(), r.id) == only->end())) continue;
+    const std::string printed = detail::check_shape_formulas(r, book.file, document, *book.declarations);
+    if (!r.statement.empty()) continue;
+    // A record without a statement: the reports, and its shape's notes, show the TeX it reads.
+    claim_record stated = r;
+    stated.statement = printed;
+    for (claim& c : book.claims) {
+      if (c.id != r.id) continue;
+      c.statement = printed;
+      c.check = check_of(stated, book.declarations);
+    }
+  }
 }
 
 paper_reading read_paper(const paper_source& paper) { return read_paper(paper, paper_book().declarations->reading); }

@@ -245,11 +245,11 @@ bool reads_printed(const claim& c) { return printed_facet(c) != nullptr || decid
 
 }  // namespace
 
-bool reads_printed_formula(const std::string& claim_id) { return reads_printed(find_claim(claim_id)); }
+bool reads_printed_formula(const claim& c) { return reads_printed(c); }
 
-std::vector<std::string> claims_reading_formula(const std::string& label) {
+std::vector<std::string> claims_reading_formula(const std::vector<claim>& claims, const std::string& label) {
   std::vector<std::string> ids;
-  for (const claim& c : ledger()) {
+  for (const claim& c : claims) {
     const detail::registered_check* check = printed_facet(c);
     std::vector<std::string> names = check != nullptr ? check->formulas : std::vector<std::string>{};
     names.insert(names.end(), c.labels_read.begin(), c.labels_read.end());
@@ -265,9 +265,9 @@ std::vector<std::string> claims_reading_formula(const std::string& label) {
 
 double ginac_derivation_seconds() { return detail::derivation().seconds; }
 
-std::size_t printed_formula_claim_count() {
+std::size_t printed_formula_claim_count(const std::vector<claim>& claims) {
   std::size_t count = 0;
-  for (const claim& c : ledger()) count += reads_printed(c) ? 1 : 0;
+  for (const claim& c : claims) count += reads_printed(c) ? 1 : 0;
   return count;
 }
 

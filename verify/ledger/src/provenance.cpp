@@ -21,7 +21,7 @@ json earlier_text_json(const paper_reading& live, const run_context& ctx, const 
     json entry = {{"label", d.label}, {"line", d.line}, {"tex", folded_space(d.tex)}};
     paper_reading earlier;
     try {
-      earlier = read_paper(with_earlier_display(live.source, d), installed_book().declarations->reading);
+      earlier = read_paper(with_earlier_display(live.source, d), ctx.book->declarations->reading);
     } catch (const std::invalid_argument& e) {
       entry["reads"] = false;
       entry["error"] = e.what();
@@ -33,11 +33,11 @@ json earlier_text_json(const paper_reading& live, const run_context& ctx, const 
     run_context on_earlier = ctx;
     on_earlier.paper = &earlier;
     on_earlier.quotes = nullptr;
-    for (const std::string& id : claims_reading_formula(d.label)) {
+    for (const std::string& id : claims_reading_formula(ctx.book->claims, d.label)) {
       const auto it = std::find_if(checked.begin(), checked.end(), [&](const checked_claim& c) { return c.id == id; });
       if (it == checked.end()) continue;
       const verdict now = it->live;
-      const claim_result before = check_claim(find_claim(id), on_earlier);
+      const claim_result before = check_claim(ctx.book->find(id), on_earlier);
       json row = {{"claim", id}, {"live", to_string(now)}, {"earlier", to_string(before.outcome)},
                   {"differs", now != before.outcome}};
       if (now != before.outcome) {
@@ -55,6 +55,7 @@ json earlier_text_json(const paper_reading& live, const run_context& ctx, const 
 }  // namespace
 
 json provenance_json(const paper_reading& paper, const run_context& ctx, const std::vector<checked_claim>& checked) {
+  if (ctx.book == nullptr) throw std::logic_error("provenance_json: the run's book is not given");
   const paper_provenance p = read_provenance(paper.source);
   json uses = json::array();
   for (const citation_use& c : p.citations) uses.push_back({{"key", c.key}, {"line", c.line}});

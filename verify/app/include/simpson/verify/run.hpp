@@ -2,12 +2,14 @@
 // Running a scene: its claims, then the experiment sections it asks for, into one run record.
 
 #include <simpson/verify/claim.hpp>
+#include <simpson/verify/ledger.hpp>
 #include <simpson/verify/paper_reading.hpp>
 #include <simpson/verify/experiments.hpp>
 #include <simpson/verify/result_model.hpp>
 #include <simpson/verify/scene.hpp>
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -28,6 +30,8 @@ inline const std::string& cause_of(const claim_outcome& o) { return o.consequenc
 
 struct run_record {
   scene run_scene;
+  /// The book the run judged, bound to its document: every outcome's claim is one of its claims.
+  std::shared_ptr<const claim_book> book;
   /// A validation of the document (its claims file records no expected verdict, or --validate): the
   /// reports speak of what holds in the document, not of regressions against expected verdicts.
   bool validation = false;
@@ -53,22 +57,25 @@ struct run_record {
 /// Called before and after each claim: (index, count, claim, outcome or nullptr).
 using progress_callback = std::function<void(std::size_t, std::size_t, const claim&, const claim_outcome*)>;
 
-/// Runs every claim of the scene; a check that throws is recorded as `fails` with the message, and
-/// in `internal_errors`.
+/// Runs every claim of the scene, each one of `book`'s (bound to `paper` by read_scene_paper); a
+/// check that throws is recorded as `fails` with the message, and in `internal_errors`.
 /// Throws simpson::verify::interrupted when interruption_signal() is set (checked between claims
 /// and between numeric samples).
 /// Then runs the experiment sections the scene asks for (table1, work_precision, stability,
 /// long_time), calling `section_progress(name, seconds)` after each.
-run_record run(const scene& s, const paper_reading& paper, const progress_callback& progress = {},
+run_record run(const scene& s, std::shared_ptr<const claim_book> book, const paper_reading& paper, const progress_callback& progress = {},
                const std::function<void(const std::string&, double)>& section_progress = {});
 
-/// The same, reading the scene's paper first (the embedded one unless the scene names a file).
+/// The same for the paper's book, reading the scene's paper first (the embedded one unless the
+/// scene names a file) and binding the book to it.
 run_record run(const scene& s, const progress_callback& progress = {},
                const std::function<void(const std::string&, double)>& section_progress = {});
 
-/// The paper a scene names, read: embedded, or its `paper` file. Throws std::invalid_argument
-/// (one line: the file, the label, the line, the token) when it is missing or does not parse.
-paper_reading read_scene_paper(const scene& s);
+/// The document a scene's book checks, read, and `book` bound to it (check_claims_file_formulas):
+/// the paper (embedded, or the scene's `paper` file), or the book's [document] from the scene's
+/// `paper` file. Throws std::invalid_argument (one line: the file, the label, the line, the token)
+/// when it is missing or does not parse, and claims_file_error when a record does not bind.
+paper_reading read_scene_paper(const scene& s, claim_book& book);
 
 /// True when every verdict equals its expected verdict.
 bool all_as_expected(const run_record& r);

@@ -17,6 +17,7 @@
 
 #include <simpson/precision.hpp>
 #include <simpson/verify/claim.hpp>
+#include <simpson/verify/ledger.hpp>
 #include <simpson/verify/experiments.hpp>
 
 #include <cstdint>
@@ -56,12 +57,13 @@ struct scene {
   bool timing = true;
 };
 
-/// Parses and validates a scene; `origin` names it in errors. Throws std::invalid_argument with a
-/// one-line message naming the field (and, for malformed JSON, the line and column).
-scene parse_scene(const std::string& text, const std::string& origin);
+/// Parses and validates a scene against the claims of `book` (its ids, "all"); `origin` names it in
+/// errors. Throws std::invalid_argument with a one-line message naming the field (and, for malformed
+/// JSON, the line and column).
+scene parse_scene(const std::string& text, const std::string& origin, const claim_book& book = paper_book());
 
 /// An embedded scene by name ("paper", "quick"), or else a file path.
-scene load_scene(const std::string& name_or_path);
+scene load_scene(const std::string& name_or_path, const claim_book& book = paper_book());
 
 /// Names and texts of the embedded scenes (the files of scenes/, compiled in).
 const std::map<std::string, std::string>& embedded_scenes();

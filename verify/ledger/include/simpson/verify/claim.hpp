@@ -56,6 +56,8 @@ struct formula_corrections {
   mutable bool used = false;
 };
 
+struct claim_book;  // ledger.hpp
+
 struct run_context {
   std::vector<precision> precisions;
   std::uint64_t seed = 0;
@@ -73,6 +75,9 @@ struct run_context {
   /// Corrected formulas to read instead of the printed ones (a consequence's second judgment); null
   /// for a judgment of the document as printed.
   const formula_corrections* corrections = nullptr;
+  /// The book the claim belongs to (ledger.hpp): the claims its run may judge again (the paper's
+  /// earlier text) and the declarations its document is read with; null for a check run on its own.
+  const claim_book* book = nullptr;
 };
 
 /// What a check found. `evidence` has one member per method ("exact", "numeric", ...).

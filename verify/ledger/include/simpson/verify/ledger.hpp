@@ -1,7 +1,9 @@
 #pragma once
 // The claims ledger: a claims file read into a book of claims (every checkable statement, in the
 // file's order), each claim carrying what it needs to run (its shape's arguments, the file's
-// declarations). The paper's book is claims/paper.toml, compiled in; --claims-file installs another.
+// declarations). The paper's book is claims/paper.toml, compiled in; --claims-file reads another.
+// A book is a value: read once, bound to its document once, and passed to the run; nothing in the
+// process remembers which book is "installed".
 
 #include <simpson/verify/claim.hpp>
 #include <simpson/verify/claim_declarations.hpp>
@@ -27,6 +29,11 @@ struct claim_book {
   /// Whether any record says what its verdict is expected to be: a guard against regressions. A file
   /// whose records say none validates its document (every claim is to hold).
   bool guards = false;
+
+  /// The claim with this id; throws std::invalid_argument naming the id when there is none.
+  const claim& find(const std::string& id) const;
+  /// The [document] it checks, when it is a document other than the paper; null otherwise.
+  const claims_document* checked_document() const { return document ? &*document : nullptr; }
 };
 
 /// Reads a claims file into a book: every record checked (claims_file.hpp), every `check` a
@@ -37,31 +44,15 @@ claim_book read_claim_book(const std::string& text, const std::string& file);
 /// The paper's book (the embedded claims/paper.toml), read once.
 const claim_book& paper_book();
 
-/// The book of the run: the file --claims-file installed, or the paper's.
-const claim_book& installed_book();
-
-/// All claims of the installed book.
-const std::vector<claim>& ledger();
-
 /// The records of a claims file whose every `check` is a registered one (read_claims_file).
 std::vector<claim_record> read_claims_with_known_checks(const std::string& text, const std::string& file);
 
-/// From now on the installed book is this file's instead of claims/paper.toml's (the CLI's
-/// --claims-file, before anything runs). Throws claims_file_error when the file does not read.
-void use_claims_file(const std::string& text, const std::string& file);
-
-/// The [document] of the installed book, when it checks a document other than the paper; null
-/// otherwise.
-const claims_document* installed_document();
-
-/// Reads every formula the installed book's shape records name (only the claims `only` lists, when
-/// given) from `document`, before anything runs: throws claims_file_error naming the record's
-/// argument when one is missing or uses a symbol the file does not declare, and
-/// std::invalid_argument naming the document's line when its TeX does not read.
-void check_claims_file_formulas(const paper_source& document, const std::vector<std::string>* only = nullptr);
-
-/// The claim with this id; throws std::invalid_argument naming the id when there is none.
-const claim& find_claim(const std::string& id);
+/// Binds `book` to `document` before anything runs: reads every formula its shape records name
+/// (only the claims `only` lists, when given). Throws claims_file_error naming the record's argument
+/// when one is missing or uses a symbol the file does not declare, and std::invalid_argument naming
+/// the document's line when its TeX does not read. A record without a statement gets the TeX of the
+/// formula it judges, with where it was read.
+void check_claims_file_formulas(claim_book& book, const paper_source& document, const std::vector<std::string>* only = nullptr);
 
 /// The ids that every run of the `paper` scene must contain: the headline claims of its records.
 std::vector<std::string> required_claim_ids();

@@ -14,17 +14,18 @@
 
 namespace simpson::verify {
 
-/// True when `claim_id` reads its formula from the paper.
-bool reads_printed_formula(const std::string& claim_id);
+/// True when the claim reads its formula from the paper.
+bool reads_printed_formula(const claim& c);
 
-/// The claims that read the printed formula `label` (a \label of the paper, or one of its equations).
-std::vector<std::string> claims_reading_formula(const std::string& label);
+/// The claims of `claims` that read the printed formula `label` (a \label of the paper, or one of
+/// its equations).
+std::vector<std::string> claims_reading_formula(const std::vector<claim>& claims, const std::string& label);
 
 /// Seconds the GiNaC derivation from first principles took (performed once per process, on first use).
 double ginac_derivation_seconds();
 
-/// How many claims read a formula from the paper.
-std::size_t printed_formula_claim_count();
+/// How many of `claims` read a formula from the paper.
+std::size_t printed_formula_claim_count(const std::vector<claim>& claims);
 
 /// Runs the claim's check, then, when the run has a paper and the claim reads a formula, the
 /// GiNaC check. Both kernels must prove the derived statement (else kernels-disagree); the printed
