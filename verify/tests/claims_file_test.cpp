@@ -147,7 +147,10 @@ INSTANTIATE_TEST_SUITE_P(
                      replaced(replaced(good_record, "\"first\"", "\"second\""), "expected = \"holds\"", "expected = \"holds\"\nfollows_from = \"first\""),
                  "claims file 'test.toml', line 2, field 'follows_from': following the causes from 'first' comes back to 'first' (a cycle)"},
         bad_file{"bad_origin", replaced(good_record, "expected = \"holds\"", "expected = \"holds\"\norigin = \"referee\""),
-                 "claims file 'test.toml', line 10, field 'origin': 'referee' is neither 'paper' nor 'harness'"},
+                 "claims file 'test.toml', line 10, field 'origin': 'referee' is not 'paper', 'beyond' or 'harness'"},
+        // A claim beyond the paper that its record leaves the paper's would count as a finding about the paper.
+        bad_file{"beyond_as_the_paper", replaced(good_record, "section = \"2\"", "section = \"beyond\""),
+                 "claims file 'test.toml', line 4, field 'origin': a claim of the section 'beyond' is not the paper's: say origin = \"beyond\" (or \"harness\")"},
         bad_file{"other_table", "[claims]\nid = 1\n",
                  "claims file 'test.toml', line 1, field 'claims': not a table of a claims file ([document], [symbols], [[claim]])"},
         bad_file{"document_without_symbols", "[document]\ntitle = 'T'\n" + good_record,

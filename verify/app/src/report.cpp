@@ -54,7 +54,7 @@ std::string enclosure_markdown(const json& evidence) {
 
 struct verdict_counts {
   std::size_t faults = 0;  // checks that threw: a bug in the harness, no verdict (exit 3)
-  std::size_t paper = 0, harness = 0;                        // whose statements
+  std::size_t paper = 0, beyond = 0, harness = 0;            // whose statements
   std::size_t distinct = 0, typographical = 0, consequences = 0;  // the paper's findings, each cause once
   std::size_t unverifiable = 0;
   std::size_t held = 0, errata = 0, failed = 0, disagreed = 0, text_changed = 0, undecided = 0, unproved = 0, skipped = 0, machine_read = 0,
@@ -106,7 +106,7 @@ verdict_counts count_verdicts(const run_record& r) {
       ++c.faults;
       continue;
     }
-    (o.checked->origin == claim_origin::paper ? c.paper : c.harness) += 1;
+    (o.checked->origin == claim_origin::paper ? c.paper : o.checked->origin == claim_origin::beyond ? c.beyond : c.harness) += 1;
     if (o.checked->origin == claim_origin::paper && is_finding(o.result.outcome)) {
       if (cause_of(o).empty()) {
         ++c.distinct;
@@ -252,7 +252,7 @@ json summary_json(const run_record& r) {
   return {{"line", summary_line(r)},     {"expectation", expectation_line(r)}, {"claims", r.outcomes.size()},
           {"held", c.held},              {"errata", c.errata},
           {"failed", c.failed},          {"harness_faults", c.faults}, {"kernels_disagree", c.disagreed},
-          {"paper_claims", c.paper},     {"harness_claims", c.harness},
+          {"paper_claims", c.paper},     {"beyond_claims", c.beyond},   {"harness_claims", c.harness},
           {"distinct_findings", c.distinct}, {"typographical_findings", c.typographical}, {"consequences", c.consequences},
           {"text_changed", c.text_changed}, {"undecided", c.undecided}, {"unproved", c.unproved}, {"skipped", c.skipped},
           {"machine_read", c.machine_read}, {"quoted", c.quoted}, {"typed", c.typed},
@@ -310,7 +310,7 @@ json report_json(const run_record& r, const plot_outcome& plots) {
                {"verdict", to_string(o.result.outcome)},
                {"expected", to_string(o.expected)},
                {"as_expected", as_expected(o.result.outcome, o.expected)},
-               {"origin", c.origin == claim_origin::paper ? "paper" : "harness"},
+               {"origin", to_string(c.origin)},
                {"finding", to_string(finding_of(o))}};
     if (!cause_of(o).empty()) entry["follows_from"] = cause_of(o);
     if (c.typographical) entry["typographical"] = true;
@@ -510,9 +510,11 @@ std::string referee_summary_markdown(const run_record& r) {
   if (r.outcomes.empty()) return {};
   const std::string the = r.of_the_paper ? "paper" : "document";
   std::string md = "## Referee's summary\n\n";
-  if (c.harness > 0) {
-    md += fmt::format("{} of the {} claims are the {}'s ({} the harness's own statements, not counted below). ", c.paper, r.outcomes.size(),
-                      the, c.harness);
+  if (c.harness + c.beyond > 0) {
+    md += fmt::format("{} of the {} claims are the {}'s ({}, not counted below). ", c.paper, r.outcomes.size(), the,
+                      c.beyond == 0    ? fmt::format("{} the harness's own statements", c.harness)
+                      : c.harness == 0 ? fmt::format("{} beyond the {}", c.beyond, the)
+                                       : fmt::format("{} beyond the {} and {} the harness's own statements", c.beyond, the, c.harness));
   }
   if (c.distinct + c.consequences == 0) return md + fmt::format("No finding: every claim of the {} checked holds as printed.\n\n", the);
   md += fmt::format("**{} distinct finding{}** about the {} ({} substantive, {} typographical), and {} consequence{} counted under "

@@ -266,8 +266,15 @@ claims_file_contents read_claims_contents(const std::string& text, const std::st
     const std::string origin = read.text("origin", false);
     if (origin == "harness") {
       r.origin = claim_origin::harness;
+    } else if (origin == "beyond") {
+      r.origin = claim_origin::beyond;
     } else if (!origin.empty() && origin != "paper") {
-      throw claims_file_error(file, read.line_of_field("origin"), "origin", "'" + origin + "' is neither 'paper' nor 'harness'");
+      throw claims_file_error(file, read.line_of_field("origin"), "origin", "'" + origin + "' is not 'paper', 'beyond' or 'harness'");
+    }
+    // A claim in the section beyond the paper is not the paper's: its record says whose it is.
+    if (r.section == "beyond" && r.origin == claim_origin::paper) {
+      throw claims_file_error(file, origin.empty() ? read.line_of_field("section") : read.line_of_field("origin"), "origin",
+                              "a claim of the section 'beyond' is not the paper's: say origin = \"beyond\" (or \"harness\")");
     }
     r.headline = read.flag("headline");
     r.coq_none = read.text("coq_none", false);

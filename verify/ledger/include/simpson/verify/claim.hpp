@@ -132,7 +132,12 @@ inline std::string to_string(finding f) {
 
 /// Whose statement a claim is: the paper's, or the harness's own (a lemma the proofs use, a
 /// finding beyond the paper), counted apart.
-enum class claim_origin { paper, harness };
+/// Where a claim comes from: the paper (or the document a claims file checks), beyond it (a claim of
+/// the harness about the scheme that the paper does not make), or the harness's own statement about
+/// itself (a lemma, a finding of the experiments). Only the paper's are findings about the paper.
+enum class claim_origin { paper, beyond, harness };
+
+inline std::string to_string(claim_origin o) { return o == claim_origin::paper ? "paper" : o == claim_origin::beyond ? "beyond" : "harness"; }
 
 struct claim {
   std::string id;         // stable kebab-case
