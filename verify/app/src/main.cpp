@@ -80,6 +80,20 @@ int list_claims(const claim_book& book, const std::string& format) {
     fmt::print("{}\n", out.dump(2));
     return 0;
   }
+  if (format == "markdown") {
+    // One row per record: what decides it, what it reads, whose it is, what it is expected to be,
+    // and the core formulas it binds to the print (docs/ledger.md's list, generated).
+    fmt::print("| id | § | decided by | reads | origin | expected | binds our core |\n|---|---|---|---|---|---|---|\n");
+    for (const claim_record& r : book.records) {
+      const claim& c = book.find(r.id);
+      std::vector<std::string> core;
+      for (const core_binding& b : r.core) core.push_back("`" + b.function + "`");
+      const std::string expected = to_string(c.expected) + (c.follows_from.empty() ? "" : ", follows from `" + c.follows_from + "`");
+      fmt::print("| `{}` | {} | {} | {} | {} | {} | {} |\n", c.id, c.section, r.shape.empty() ? "check `" + r.check + "`" : "shape `" + r.shape + "`",
+                 c.equation, to_string(c.origin), expected, core.empty() ? "" : fmt::format("{}", fmt::join(core, ", ")));
+    }
+    return 0;
+  }
   for (const claim& c : book.claims) {
     fmt::print("{:<34} §{:<8} {:<8} {}\n", c.id, c.section, to_string(c.expected), c.equation);
   }
@@ -209,8 +223,10 @@ int main(int argc, char** argv) {
                "measure no run time: no timing.json, timing.md or time plot, and every file is the same from run to run");
   app.add_flag("--list-claims", want_claims, "list the claims of the ledger and exit");
   std::string list_format = "text";
-  app.add_option("--format", list_format, "--list-claims: text (one line each) or json (every field of each record, its statement included)")
-      ->check(CLI::IsMember({"text", "json"}));
+  app.add_option("--format", list_format,
+                 "--list-claims: text (one line each), json (every field of each record, its statement included) or markdown (a table: "
+                 "what decides each, what it reads, whose it is, its expected verdict, the core formulas it binds)")
+      ->check(CLI::IsMember({"text", "json", "markdown"}));
   bool validate = false;
   app.add_flag("--validate", validate,
                "judge every claim by whether it holds, not by the verdict its record expects: exit 0 only when every claim "
@@ -221,6 +237,10 @@ int main(int argc, char** argv) {
   app.add_flag("--list-holes", want_holes,
                "list the holes of a sentence's pattern ({order}, {sign}, ...), the shapes that take each and the words each accepts "
                "(a Markdown table), and exit");
+  bool want_core = false;
+  app.add_flag("--list-core", want_core,
+               "list the formulas of our core a record may bind to the print (core = { function = ... }), the label each "
+               "implements and the records that bind it (a Markdown table), and exit");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -262,6 +282,10 @@ int main(int argc, char** argv) {
     if (want_precisions) return list_precisions();
     if (want_holes) {
       fmt::print("{}", simpson::verify::holes_markdown());
+      return 0;
+    }
+    if (want_core) {
+      fmt::print("{}", simpson::verify::core_formulas_markdown(*book));
       return 0;
     }
     s = load_scene(scene_name, *book);

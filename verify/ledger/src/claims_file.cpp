@@ -36,7 +36,7 @@ class record_reader {
   record_reader(const toml::table& table, const std::string& file) : table_(table), file_(file), line_(line_of(table)) {
     static const std::set<std::string> fields{"id",       "section",  "equation",     "statement",     "methods", "check",
                                               "expected",    "finding",       "follows_from",
-                                              "typographical", "origin", "headline",  "coq_none", "shape", "with"};
+                                              "typographical", "origin", "headline",  "coq_none", "shape", "with", "core"};
     for (const auto& [key, node] : table_) {
       if (!fields.count(std::string(key.str()))) {
         throw claims_file_error(file_, line_of(node), std::string(key.str()), "not a field of a claim record (docs/claims-file.md)");
@@ -104,6 +104,54 @@ class record_reader {
         throw claims_file_error(file_, a.line, field, "must be a string or an array of strings");
       }
       out.emplace(std::string(key.str()), std::move(a));
+    }
+    return out;
+  }
+
+  /// `core`: a table (one binding) or an array of tables.
+  std::vector<core_binding> core_bindings(const known_name& known) const {
+    std::vector<core_binding> out;
+    const toml::node* node = table_.get("core");
+    if (!node) return out;
+    const auto one = [&](const toml::node& item) {
+      const toml::table* t = item.as_table();
+      if (!t) throw claims_file_error(file_, line_of(item), "core", "must be a table { function = ..., formula = ... } or an array of them");
+      core_binding b;
+      b.line = line_of(item);
+      for (const auto& [key, value] : *t) {
+        const std::string field = "core." + std::string(key.str());
+        const std::string k(key.str());
+        if (k == "function" || k == "formula" || k == "potential") {
+          const auto* text = value.as_string();
+          if (!text || text->get().empty()) throw claims_file_error(file_, line_of(value), field, "must be a non-empty string");
+          (k == "function" ? b.function : k == "formula" ? b.formula : b.potential) = text->get();
+        } else if (k == "variables" || k == "parameters") {
+          const auto* array = value.as_array();
+          if (!array) throw claims_file_error(file_, line_of(value), field, "must be an array of symbols (TeX)");
+          for (const toml::node& v : *array) {
+            const auto* text = v.as_string();
+            if (!text || text->get().empty()) throw claims_file_error(file_, line_of(v), field, "must be an array of symbols (TeX)");
+            (k == "variables" ? b.variables : b.parameters).push_back(text->get());
+          }
+        } else {
+          throw claims_file_error(file_, line_of(value), field, "not a field of core (function, formula, variables, parameters, potential)");
+        }
+      }
+      if (b.function.empty()) throw claims_file_error(file_, b.line, "core.function", "missing: the name of the core's formula (simpson-verify --list-core)");
+      if (b.formula.empty()) throw claims_file_error(file_, b.line, "core.formula", "missing: the printed formula it implements (a formula reference)");
+      if (!known("core", b.function)) {
+        throw claims_file_error(file_, line_of(*t->get("function")), "core.function", "no core formula is named '" + b.function + "' (simpson-verify --list-core)");
+      }
+      if (b.parameters.empty()) b.parameters = {"m", "\\omega", "h"};
+      if (b.parameters.size() != 3) throw claims_file_error(file_, line_of(*t->get("parameters")), "core.parameters", "names m, omega and h: three symbols");
+      if (b.potential.empty()) b.potential = "V";
+      out.push_back(std::move(b));
+    };
+    if (const toml::array* array = node->as_array()) {
+      if (array->empty()) throw claims_file_error(file_, line_of(*node), "core", "an empty list binds nothing");
+      for (const toml::node& item : *array) one(item);
+    } else {
+      one(*node);
     }
     return out;
   }
@@ -278,6 +326,7 @@ claims_file_contents read_claims_contents(const std::string& text, const std::st
     }
     r.headline = read.flag("headline");
     r.coq_none = read.text("coq_none", false);
+    r.core = read.core_bindings(known);
     records.push_back(std::move(r));
   }
   // Every cause named exists, and following the links never comes back.

@@ -8,6 +8,7 @@
 #include <simpson/verify/quoted_words.hpp>
 
 #include "check_registry.hpp"
+#include "core_bindings.hpp"
 #include "claim_support.hpp"
 #include "proof_shapes.hpp"
 #include "printed_check_support.hpp"
@@ -85,21 +86,26 @@ claim_result as_the_sentence_says(claim_result result, const detail::shape_call&
 /// The check of a record: its bespoke check, or its shape run with its arguments and the file's
 /// declarations.
 detail::check_function check_of(const claim_record& r, const std::shared_ptr<const claim_declarations>& declared) {
+  detail::shape_call call{r.id, r.statement, r.with, declared};
   if (!r.shape.empty()) {
     const detail::proof_shape& shape = detail::proof_shapes().at(r.shape);
-    detail::shape_call call{r.id, r.statement, r.with, declared};
-    return [call, run = shape.run](const run_context& ctx) {
+    return [call, run = shape.run, core = r.core](const run_context& ctx) {
       detail::shape_call with_document = call;
       with_document.corrections = ctx.corrections;
       const auto start = std::chrono::steady_clock::now();
       claim_result result = run(with_document, ctx);
       result.printed_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();  // GiNaC's and ours
-      return as_the_sentence_says(std::move(result), with_document, ctx);
+      return detail::bound_to_core(as_the_sentence_says(std::move(result), with_document, ctx), core, with_document, ctx);
     };
   }
   const detail::registered_check* check = detail::registered_checks().find(r.check);
   if (!check) throw std::logic_error("claims_of: no check is named '" + r.check + "'");
-  return check->check;
+  if (r.core.empty()) return check->check;
+  return [call, run = check->check, core = r.core](const run_context& ctx) {
+    detail::shape_call with_document = call;
+    with_document.corrections = ctx.corrections;
+    return detail::bound_to_core(run(ctx), core, with_document, ctx);
+  };
 }
 
 std::vector<claim> claims_of(const std::vector<claim_record>& records, const std::shared_ptr<const claim_declarations>& declared) {
@@ -120,6 +126,7 @@ std::vector<claim> claims_of(const std::vector<claim_record>& records, const std
 claim_book read_claim_book(const std::string& text, const std::string& file) {
   claims_file_contents contents = read_claims_contents(text, file, [](const std::string& field, const std::string& name) {
     if (field == "shape") return detail::proof_shapes().count(name) > 0;
+    if (field == "core") return detail::find_core_formula(name) != nullptr;
     return detail::registered_checks().find(name) != nullptr;
   });
   for (const claim_record& r : contents.records) {
@@ -169,8 +176,13 @@ const claim& claim_book::find(const std::string& id) const {
 void check_claims_file_formulas(claim_book& book, const paper_source& source, const std::vector<std::string>* only) {
   const tex_document document = read_document(source, book.checked_document() ? "document" : "paper");
   for (const claim_record& r : book.records) {
-    if (r.shape.empty() || (only && std::find(only->begin(), only->end(), r.id) == only->end())) continue;
+    if (only && std::find(only->begin(), only->end(), r.id) == only->end()) continue;
+    if (r.shape.empty()) {
+      detail::check_core_bindings(r, book.file, document, *book.declarations);
+      continue;
+    }
     const std::string printed = detail::check_shape_formulas(r, book.file, document, *book.declarations);
+    detail::check_core_bindings(r, book.file, document, *book.declarations);
     if (!r.statement.empty()) continue;
     // A record without a statement: the reports, and its shape's notes, show the TeX it reads.
     claim_record stated = r;

@@ -253,8 +253,12 @@ claim_result derivative_shape(const shape_call& call, const run_context& ctx) {
     derived = derived.subs(to, GiNaC::subs_options::no_pattern);
   }
   const std::string what = fmt::format("d({})/d{}{} = ({})", reference_of(call, "function"), variable.get_name(), at, reference_of(call, "printed"));
-  return identity_verdict(call, read, "derivative", what, derived, printed,
-                          fmt::format("as derived: d({})/d{}{} = {}", reference_of(call, "function"), variable.get_name(), at, text_of(GiNaC::normal(derived))));
+  claim_result result =
+      identity_verdict(call, read, "derivative", what, derived, printed,
+                       fmt::format("as derived: d({})/d{}{} = {}", reference_of(call, "function"), variable.get_name(), at, text_of(GiNaC::normal(derived))));
+  // What should stand where the derivative is printed: the claims that read it are judged again with it.
+  if (result.outcome == verdict::erratum) result.corrected_formulas.push_back(read.correction_of("printed", GiNaC::normal(derived)));
+  return result;
 }
 
 /// A printed solution: the equation (= 0) is 0 with the unknown replaced by the solution, the
@@ -266,8 +270,9 @@ claim_result solves_shape(const shape_call& call, const run_context& ctx) {
   const GiNaC::symbol unknown = read.symbols("unknown").front();
   const std::string what = fmt::format("({}) = 0 at {} = ({})", reference_of(call, "equation"), unknown.get_name(), reference_of(call, "solution"));
   std::string correction;
+  ex solved;
   try {
-    const ex solved = GiNaC::lsolve(equation == 0, unknown);
+    solved = GiNaC::lsolve(equation == 0, unknown);
     if (!solved.has(unknown) && !(GiNaC::is_a<GiNaC::lst>(solved) && solved.nops() == 0)) {
       correction = fmt::format("as derived from ({}): {} = {}", reference_of(call, "equation"), unknown.get_name(), text_of(GiNaC::normal(solved)));
     }
@@ -276,8 +281,11 @@ claim_result solves_shape(const shape_call& call, const run_context& ctx) {
   if (const auto pole = vanishing_denominator(equation, {{unknown, solution}})) {
     return undefined_there(read, fmt::format("({}) at {} = ({})", reference_of(call, "equation"), unknown.get_name(), reference_of(call, "solution")), *pole);
   }
-  return identity_verdict(call, read, "solution", what, equation.subs(unknown == solution), 0, correction,
-                          correction.empty() ? verdict::fails : verdict::erratum);
+  claim_result result = identity_verdict(call, read, "solution", what, equation.subs(unknown == solution), 0, correction,
+                                         correction.empty() ? verdict::fails : verdict::erratum);
+  // What should stand where the solution is printed: the claims that read it are judged again with it.
+  if (result.outcome == verdict::erratum) result.corrected_formulas.push_back(read.correction_of("solution", GiNaC::normal(solved)));
+  return result;
 }
 
 claim_result determinant_shape(const shape_call& call, const run_context& ctx) {

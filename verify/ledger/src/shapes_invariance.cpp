@@ -175,6 +175,8 @@ claim_result invariance_determinant_shape(const shape_call& call, const run_cont
   result.evidence["exact"]["derived_rows"] = d.rows_text;
   if (result.outcome == verdict::erratum) {  // the correction certified beside the refutation
     record_certificate(result, coq_certificate(call.claim_id, call.statement, {decided("determinant", det, printed), decided("derived", det, corrected)}));
+    // What should stand where the determinant is printed: the claims that read it are judged again with it.
+    result.corrected_formulas.push_back(read.correction_of("printed", corrected));
   }
   return result;
 }

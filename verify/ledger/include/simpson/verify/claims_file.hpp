@@ -21,6 +21,21 @@ struct shape_argument {
   int line = 0;
 };
 
+/// A record's `core`: one of our core's formulas (core_formulas(): "simpson_map", "discrete_energy", ...)
+/// bound to the printed formula it implements. The core's template is instantiated in GiNaC with
+/// the document's symbols: its parameters m, ω, h (`parameters`, as written: m, \omega, h unless
+/// given), its variables in the core's order (`variables`: p and q of a phase point, q_l and q_r of an
+/// interval, ...) and the potential (`potential`, for the formulas that take one: V unless given).
+/// The record's verdict then also says whether our code computes what is printed.
+struct core_binding {
+  std::string function;                 // core_formulas()'s name
+  std::string formula;                  // a formula reference (formula_reference.hpp)
+  std::vector<std::string> variables;   // TeX, in the core's order
+  std::vector<std::string> parameters;  // TeX of m, omega, h
+  std::string potential;                // the declared function the core's V is
+  int line = 0;
+};
+
 /// One record, as read.
 struct claim_record {
   std::string id;         // kebab-case, unique in the file
@@ -39,6 +54,7 @@ struct claim_record {
   claim_origin origin = claim_origin::paper;
   bool headline = false;  // one of the claims whose GiNaC time the report's speed line sums
   std::string coq_none;   // why no Coq statement is exported, when none is
+  std::vector<core_binding> core;  // the core's formulas bound to the print (one table or a list of them)
   int line = 0;           // the line of its [[claim]] header
 };
 

@@ -57,6 +57,11 @@ void check_claims_file_formulas(claim_book& book, const paper_source& document, 
 /// The ids that every run of the `paper` scene must contain: the headline claims of its records.
 std::vector<std::string> required_claim_ids();
 
+/// The formulas of our core that a record may bind to the print (`core = { function = ... }`), as a
+/// Markdown table: each one's name, the paper's label it implements, its variables, and the records
+/// of `book` that bind it (simpson-verify --list-core).
+std::string core_formulas_markdown(const claim_book& book);
+
 /// The paper read with its book's declarations (claims/paper.toml's [symbols]), as its claims read it.
 paper_reading read_paper(const paper_source& paper);
 
