@@ -1,0 +1,25 @@
+#pragma once
+// simpson-verify's commands, each one function: main() parses the command line and dispatches.
+
+#include "cli_options.hpp"
+
+#include <simpson/verify/ledger.hpp>
+
+#include <string>
+
+namespace simpson::verify {
+
+/// --list-claims: the book's claims, as text (one line each), json (every field) or markdown (a table).
+int list_claims(const claim_book& book, const std::string& format);
+/// --list-scenes, --list-precisions.
+int list_scenes();
+int list_precisions();
+
+/// `simpson-verify compare OLD NEW`: 0 when the reports agree, 1 on a difference (one line each), 2
+/// on bad input.
+int compare_report_directories(const std::string& old_dir, const std::string& new_dir, bool quiet, bool subset);
+
+/// A run of a scene (or a list asked for): the exit code of simpson-verify.
+int run_command(cli_options& o, const CLI::App& app, int argc, char** argv);
+
+}  // namespace simpson::verify

@@ -1,0 +1,65 @@
+// simpson-verify's lists (cli_commands.hpp): the claims of a book, the scenes, the precisions.
+
+#include "cli_commands.hpp"
+
+#include <simpson/precision.hpp>
+#include <simpson/verify/ledger.hpp>
+#include <simpson/verify/scene.hpp>
+
+#include <fmt/core.h>
+#include <fmt/format.h>
+
+#include <string>
+#include <vector>
+
+namespace simpson::verify {
+
+int list_claims(const claim_book& book, const std::string& format) {
+  if (format == "json") {
+    json out = json::array();
+    for (const claim& c : book.claims) {
+      json one{{"id", c.id},           {"section", c.section},   {"equation", c.equation}, {"statement", c.statement},
+               {"methods", c.methods}, {"check", c.check_name}, {"expected", to_string(c.expected)}};
+      if (c.kind != finding::none) one["finding"] = to_string(c.kind);
+      if (!c.follows_from.empty()) one["follows_from"] = c.follows_from;
+      out.push_back(std::move(one));
+    }
+    fmt::print("{}\n", out.dump(2));
+    return 0;
+  }
+  if (format == "markdown") {
+    // One row per record: what decides it, what it reads, whose it is, what it is expected to be,
+    // and the core formulas it binds to the print (docs/ledger.md's list, generated).
+    fmt::print("| id | § | decided by | reads | origin | expected | binds our core |\n|---|---|---|---|---|---|---|\n");
+    for (const claim_record& r : book.records) {
+      const claim& c = book.find(r.id);
+      std::vector<std::string> core;
+      for (const core_binding& b : r.core) core.push_back("`" + b.function + "`");
+      const std::string expected = to_string(c.expected) + (c.follows_from.empty() ? "" : ", follows from `" + c.follows_from + "`");
+      fmt::print("| `{}` | {} | {} | {} | {} | {} | {} |\n", c.id, c.section, r.shape.empty() ? "check `" + r.check + "`" : "shape `" + r.shape + "`",
+                 c.equation, to_string(c.origin), expected, core.empty() ? "" : fmt::format("{}", fmt::join(core, ", ")));
+    }
+    return 0;
+  }
+  for (const claim& c : book.claims) {
+    fmt::print("{:<34} §{:<8} {:<8} {}\n", c.id, c.section, to_string(c.expected), c.equation);
+  }
+  return 0;
+}
+
+int list_scenes() {
+  for (const auto& [name, text] : embedded_scenes()) {
+    const scene s = parse_scene(text, name);
+    fmt::print("{:<8} {} claims, {} precisions: {}\n", name, s.claims.size(), s.precisions.size(), s.description);
+  }
+  return 0;
+}
+
+int list_precisions() {
+  fmt::print("double, long double (or long-double), float128, bin50, bin100, mpfr:D ({} <= D <= {}), rational\n",
+             simpson::precision::min_mpfr_digits, simpson::precision::max_mpfr_digits);
+  for (const simpson::precision& p : simpson::default_precisions()) fmt::print("{:<12} epsilon {}\n", p.name(), p.epsilon());
+  return 0;
+}
+
+}  // namespace simpson::verify
