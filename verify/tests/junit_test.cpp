@@ -7,6 +7,7 @@
 #include <boost/property_tree/ptree.hpp>
 #include <boost/property_tree/xml_parser.hpp>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -169,6 +170,63 @@ TEST(JUnit, AFailedExpectationOfASectionFailsTheRun) {
     }
   }
   EXPECT_TRUE(found);
+}
+
+// The summary is the exit code: a run with a failing expectation and a claim not as expected says
+// so on the summary line, in the expectation line (report.md's headline), in report.json's summary
+// and all_as_expected, and in JUnit; the same run with both as expected says "as expected"
+// everywhere, and counts its expectations.
+TEST(JUnit, EveryPlaceThatSummarisesARunAgreesWithItsExitCode) {
+  scene s = load_scene("quick");
+  s.claims = {"phi3-det"};
+  s.experiments = {};
+  s.experiments.stability = load_scene("quick").experiments.stability;
+  run_record r = run(s);
+  ASSERT_EQ(r.sections.size(), 1u);
+  const std::size_t expectations = r.sections[0].expectations.size();
+  ASSERT_GT(expectations, 0u);
+  ASSERT_EQ(run_exit_code(r), 0);
+  const std::string green = summary_line(r);
+  EXPECT_NE(green.find(fmt::format("; {} expectations of the experiments: {} hold; all verdicts as expected", expectations, expectations)),
+            std::string::npos) << green;
+  EXPECT_EQ(expectation_line(r).rfind("Exit code 0", 0), 0u) << expectation_line(r);
+  json report = report_json(r);
+  EXPECT_TRUE(report["all_as_expected"].get<bool>());
+  EXPECT_EQ(report["summary"]["exit_code"], 0);
+  EXPECT_EQ(report["summary"]["expectations"], expectations);
+
+  expectation& changed = r.sections[0].expectations.front();
+  changed.holds = false;
+  r.outcomes.front().expected = verdict::erratum;  // as if the ledger expected another verdict
+  ASSERT_EQ(run_exit_code(r), 1);
+  const std::string red = summary_line(r);
+  EXPECT_EQ(red.find("as expected;"), std::string::npos) << red;
+  EXPECT_EQ(red.find("all verdicts as expected"), std::string::npos) << red;
+  EXPECT_NE(red.find("1 not as expected (phi3-det)"), std::string::npos) << red;
+  EXPECT_NE(red.find(fmt::format("{} expectations of the experiments: {} hold, 1 failed", expectations, expectations - 1)), std::string::npos) << red;
+  EXPECT_NE(red.find("1 expectation failed (stability." + changed.key + ")"), std::string::npos) << red;
+  const std::string headline = expectation_line(r);
+  EXPECT_EQ(headline.rfind("Exit code 1", 0), 0u) << headline;
+  EXPECT_NE(headline.find("stability." + changed.key), std::string::npos) << headline;
+  report = report_json(r);
+  EXPECT_FALSE(report["all_as_expected"].get<bool>());
+  EXPECT_EQ(report["summary"]["exit_code"], 1);
+  EXPECT_EQ(report["summary"]["line"], red);
+  EXPECT_EQ(report["summary"]["failed_expectations"].size(), 1u);
+  EXPECT_EQ(report["summary"]["unexpected"], json::array({"phi3-det"}));
+  const std::string markdown = report_markdown(r);
+  EXPECT_NE(markdown.find("**" + red + "**"), std::string::npos);
+  EXPECT_NE(markdown.find(headline), std::string::npos);
+  EXPECT_EQ(parsed(report_junit(r)).get<std::size_t>("testsuites.<xmlattr>.failures"), 2u);
+
+  // Validation: the same run says what does not hold, never "every claim holds".
+  r.validation = true;
+  r.outcomes.front().expected = verdict::holds;
+  r.outcomes.front().result.outcome = verdict::fails;
+  const std::string validation = summary_line(r);
+  EXPECT_EQ(validation.find("every claim"), std::string::npos) << validation;
+  EXPECT_NE(validation.find("1 not holding (phi3-det)"), std::string::npos) << validation;
+  EXPECT_NE(validation.find("1 expectation failed"), std::string::npos) << validation;
 }
 
 // A check that throws is an error of its testcase (exit code 3).

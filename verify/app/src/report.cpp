@@ -137,9 +137,48 @@ verdict_counts count_verdicts(const run_record& r) {
 
 }  // namespace
 
+namespace {
+
+/// The experiments' expectations of a run: how many, and the keys of those that failed.
+struct expectation_counts {
+  std::size_t total = 0;
+  std::vector<std::string> failed;
+};
+
+expectation_counts count_expectations(const run_record& r) {
+  expectation_counts e;
+  for (const section_result& section : r.sections) e.total += section.expectations.size();
+  e.failed = failed_expectations(r);
+  return e;
+}
+
+}  // namespace
+
 std::string summary_line(const run_record& r) {
   const verdict_counts c = count_verdicts(r);
-  return fmt::format("{} {}: {} held, {} errata, {} failed{}{}{}{}{}{}{}; {}", r.outcomes.size(), r.outcomes.size() == 1 ? "claim" : "claims",
+  const expectation_counts e = count_expectations(r);
+  const std::vector<std::string> rejected = rejected_certificates(r);
+  // What makes the exit code 1, each named: the line says "as expected" only when it is 0.
+  std::vector<std::string> problems;
+  if (!c.unexpected.empty()) {
+    problems.push_back(r.validation ? fmt::format("{} not holding ({})", c.unexpected.size(), join(c.unexpected, ", "))
+                                    : fmt::format("{} not as expected ({})", c.unexpected.size(), join(c.unexpected, ", ")));
+  }
+  if (!e.failed.empty()) {
+    problems.push_back(fmt::format("{} expectation{} failed ({})", e.failed.size(), e.failed.size() == 1 ? "" : "s", join(e.failed, ", ")));
+  }
+  if (!rejected.empty()) {
+    problems.push_back(fmt::format("coqc rejected {} certificate{} ({})", rejected.size(), rejected.size() == 1 ? "" : "s", join(rejected, ", ")));
+  }
+  const std::string expectations =
+      e.total == 0 ? std::string()
+                   : fmt::format("; {} expectation{} of the experiments: {} hold{}", e.total, e.total == 1 ? "" : "s", e.total - e.failed.size(),
+                                 e.failed.empty() ? "" : fmt::format(", {} failed", e.failed.size()));
+  const std::string ending = c.faults           ? std::string("no verdict on the run: a harness fault")
+                             : !problems.empty() ? join(problems, "; ")
+                             : r.validation      ? std::string(e.total == 0 ? "every claim holds" : "every claim and expectation holds")
+                                                 : std::string("all verdicts as expected");
+  return fmt::format("{} {}: {} held, {} errata, {} failed{}{}{}{}{}{}{}{}; {}", r.outcomes.size(), r.outcomes.size() == 1 ? "claim" : "claims",
                      c.held, c.errata, c.failed,
                      c.unverifiable ? fmt::format(", {} unverifiable (material absent from the source)", c.unverifiable) : "",
                      c.faults ? fmt::format(", {} without a verdict (a harness fault: the check threw)", c.faults) : "",
@@ -147,12 +186,7 @@ std::string summary_line(const run_record& r) {
                      c.text_changed ? fmt::format(", {} whose quoted words changed (text-changed)", c.text_changed) : "",
                      c.undecided ? fmt::format(", {} undecided within the enclosure budget", c.undecided) : "",
                      c.unproved ? fmt::format(", {} unproved (Gappa could not bound the round-off)", c.unproved) : "",
-                     c.skipped ? fmt::format(", {} skipped (gappa not installed)", c.skipped) : "",
-                     c.faults ? std::string("no verdict on the run: a harness fault")
-                     : r.validation ? (c.unexpected.empty() ? std::string("every claim holds")
-                                                          : fmt::format("{} not holding ({})", c.unexpected.size(), join(c.unexpected, ", ")))
-                     : c.unexpected.empty() ? std::string("all verdicts as expected")
-                                            : fmt::format("{} not as expected ({})", c.unexpected.size(), join(c.unexpected, ", ")));
+                     c.skipped ? fmt::format(", {} skipped (gappa not installed)", c.skipped) : "", expectations, ending);
 }
 
 namespace {
@@ -258,6 +292,8 @@ json summary_json(const run_record& r) {
           {"machine_read", c.machine_read}, {"quoted", c.quoted}, {"typed", c.typed},
           {"coq_exported", c.coq_exported}, {"coq_checked", c.coq_checked},
           {"unexpected", c.unexpected}, {"failed_expectations", failed_expectations(r)},
+          {"expectations", count_expectations(r).total},
+          {"exit_code", run_exit_code(r)},
           {"mode", r.validation ? "validation" : "regression"}};
 }
 
@@ -345,7 +381,7 @@ json report_json(const run_record& r, const plot_outcome& plots) {
               {"paper", r.paper_origin},
               {"overrides", r.run_scene.overrides},
               {"summary", summary_json(r)},
-              {"all_as_expected", all_as_expected(r)},
+              {"all_as_expected", run_exit_code(r) == 0},
               {"claims", claims},
               {"experiments", experiments},
               {"plots", plot_list},
