@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 namespace simpson::verify {
@@ -65,6 +66,76 @@ TEST(ReferenceReport, PaperSceneReproducesTheCommittedReport) {
   // Every table of the committed page is a table (a '|' left unescaped once made one a paragraph).
   test::expect_html_tables_rendered(dir);
   test::expect_no_bare_non_finite(dir);
+}
+
+/// Whether `text` is valid UTF-8 (a CI log that is not is shown as binary by grep).
+bool valid_utf8(const std::string& text) {
+  for (std::size_t k = 0; k < text.size();) {
+    const auto c = static_cast<unsigned char>(text[k]);
+    const std::size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
+    if (n == 0 || k + n > text.size()) return false;
+    for (std::size_t j = 1; j < n; ++j) {
+      if ((static_cast<unsigned char>(text[k + j]) & 0xC0) != 0x80) return false;
+    }
+    k += n;
+  }
+  return true;
+}
+
+// The paper is compared by its SHA-256: the same bytes given with --paper (its name a path, not
+// "embedded") is one paper and a note; other bytes under that name are compared as before.
+TEST(ReferenceReport, CompareTakesTheSamePaperUnderAnotherNameAsOne) {
+  const std::filesystem::path dir = std::filesystem::path(SIMPSON_SOURCE_DIR) / "reports" / "reference" / "paper";
+  const json reference = load_report(dir);
+  const std::string name = reference["paper"].get<std::string>();
+  json renamed = reference;
+  std::size_t renamed_places = 0;
+  std::function<void(json&)> rename = [&](json& v) {
+    if (v.is_string() && v.get<std::string>() == name) {
+      v = "/ci/checkout/paper.tex";
+      ++renamed_places;
+    } else if (v.is_structured()) {
+      for (json& item : v) rename(item);
+    }
+  };
+  for (auto& [key, value] : renamed.items()) {
+    if (key != "environment") rename(value);
+  }
+  renamed["environment"]["paper"] = "/ci/checkout/paper.tex";
+  renamed["overrides"]["paper"] = "/ci/checkout/paper.tex";
+  ASSERT_GT(renamed_places, 50u);
+  const report_comparison same = compare_reports(reference, renamed);
+  EXPECT_TRUE(same.differences.empty()) << ::testing::PrintToString(same.differences);
+  ASSERT_EQ(same.notes.size(), 1u);
+  EXPECT_NE(same.notes[0].find("the same paper (SHA-256"), std::string::npos) << same.notes[0];
+  EXPECT_TRUE(compare_report_subset(reference, renamed).differences.empty());
+  // Other bytes: the name is a difference again.
+  renamed["environment"]["paper_sha256"] = std::string(64, '0');
+  EXPECT_GT(compare_reports(reference, renamed).differences.size(), 50u);
+}
+
+// A long value that changes near its end is shown around the change, cut between characters: the
+// output is valid UTF-8 and holds both versions of the changed part.
+TEST(ReferenceReport, CompareShowsWhereALongValueDiffersAndCutsBetweenCharacters) {
+  const std::filesystem::path dir = std::filesystem::path(SIMPSON_SOURCE_DIR) / "reports" / "reference" / "paper";
+  const json reference = load_report(dir);
+  std::string long_text;
+  for (int k = 0; k < 80; ++k) long_text += "x − y ";
+  json a = reference, b = reference;
+  a["claims"][0]["note"] = long_text + "end 11/24";
+  b["claims"][0]["note"] = long_text + "end 11/25";
+  const std::vector<std::string> lines = compare_reports(a, b).differences;
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_TRUE(valid_utf8(lines[0])) << lines[0];
+  EXPECT_NE(lines[0].find("end 11/24"), std::string::npos) << lines[0];
+  EXPECT_NE(lines[0].find("end 11/25"), std::string::npos) << lines[0];
+  EXPECT_LT(lines[0].size(), 400u) << lines[0];
+  for (std::size_t shift = 0; shift < 6; ++shift) {  // every cut position against the 3-byte '−'
+    json c = reference, d = reference;
+    c["claims"][0]["note"] = std::string(shift, 'x') + long_text + "a";
+    d["claims"][0]["note"] = std::string(shift, 'x') + long_text + "b";
+    for (const std::string& line : compare_reports(c, d).differences) EXPECT_TRUE(valid_utf8(line)) << shift << ": " << line;
+  }
 }
 
 TEST(ReferenceReport, CompareFindsAChangedFigureAndNamesIt) {

@@ -2,6 +2,8 @@
 
 #include <simpson/precision.hpp>
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <optional>
 
@@ -24,9 +26,36 @@ const std::set<std::string>& ignored_keys() {
   return keys;
 }
 
-std::string shown(const json& v) {
-  const std::string text = v.dump();
-  return text.size() > 120 ? text.substr(0, 117) + "..." : text;
+/// The start of the UTF-8 character at or before `at`: a cut there never splits a character.
+std::size_t character_start(const std::string& text, std::size_t at) {
+  while (at > 0 && at < text.size() && (static_cast<unsigned char>(text[at]) & 0xC0) == 0x80) --at;
+  return at;
+}
+
+/// A value as the reader needs it: whole up to 120 bytes; longer, cut at character boundaries
+/// around `from`, where it differs from the value it is compared with ("..." where cut).
+std::string shown(const json& v, std::size_t from = 0) {
+  const std::string text = v.dump(-1, ' ', false, json::error_handler_t::replace);
+  constexpr std::size_t most = 120;
+  if (text.size() <= most) return text;
+  std::size_t start = from > 40 ? character_start(text, from - 40) : 0;
+  std::size_t end = character_start(text, std::min(text.size(), start + most - 6));
+  if (end == text.size()) start = character_start(text, text.size() > most - 6 ? text.size() - (most - 6) : 0);
+  return (start > 0 ? "..." : "") + text.substr(start, end - start) + (end < text.size() ? "..." : "");
+}
+
+/// The first byte where two values' texts differ, at a character boundary.
+std::size_t first_difference(const json& a, const json& b) {
+  const std::string x = a.dump(-1, ' ', false, json::error_handler_t::replace), y = b.dump(-1, ' ', false, json::error_handler_t::replace);
+  std::size_t k = 0;
+  while (k < x.size() && k < y.size() && x[k] == y[k]) ++k;
+  return character_start(x.size() < y.size() ? y : x, k);
+}
+
+/// Two values that differ, each shown around where they differ.
+std::string old_and_new(const json& a, const json& b) {
+  const std::size_t at = first_difference(a, b);
+  return shown(a, at) + " → " + shown(b, at);
 }
 
 /// Within round-off of a row's precision: 1024 ε. A formula that changes moves a figure far more.
@@ -101,7 +130,7 @@ void walk(const json& a, const json& b, const std::string& where, std::vector<st
     const double limit = roundoff_units * *epsilon;
     if (x && y && std::abs(*x) <= limit && std::abs(*y) <= limit) return;  // both at round-off level
   }
-  out.push_back(where + ": " + shown(a) + " → " + shown(b));
+  out.push_back(where + ": " + old_and_new(a, b));
 }
 
 /// Whether a run measured no run time (--no-timing).
@@ -215,6 +244,7 @@ const std::vector<std::string>& comparison_tolerances() {
       "figures at round-off level, in a row that names its precision: equal when both are at most 1024 epsilon of it",
       "what one run chose not to compute (Coq checks with --no-certify or without coqc; timing with --no-timing): noted, "
       "not a difference",
+      "the paper: by its SHA-256 (the same bytes named 'embedded' in one report and by a path in the other: a note)",
       "run times (timing.json, not compared) and the environment (build, machine, timestamp, command line): ignored"};
   return lines;
 }
@@ -238,8 +268,35 @@ json without_timed_parts(json report) {
 
 }  // namespace
 
-report_comparison compare_reports(const json& old_report, const json& new_report) {
+/// `from` with every string equal to `name` replaced by `as` (the paper's name in a report).
+void rename_strings(json& from, const std::string& name, const std::string& as) {
+  if (from.is_string()) {
+    if (from.get<std::string>() == name) from = as;
+  } else if (from.is_structured()) {
+    for (json& item : from) rename_strings(item, name, as);
+  }
+}
+
+/// The paper is compared by its SHA-256: the same bytes under another name (embedded, or the path
+/// given with --paper) are one paper, and its name is a note, not a difference on every claim.
+void paper_by_digest(json& a, json& b, report_comparison& result) {
+  const auto digest = [](const json& r) { return r.value("environment", json::object()).value("paper_sha256", std::string()); };
+  if (digest(a).empty() || digest(a) != digest(b)) return;
+  const json old_name = a.value("paper", json()), new_name = b.value("paper", json());
+  if (old_name.is_string() && new_name.is_string() && old_name != new_name) {
+    rename_strings(b, new_name.get<std::string>(), old_name.get<std::string>());
+    result.notes.push_back(fmt::format("the same paper (SHA-256 {}...) is '{}' in the old report and '{}' in the new one: compared as one",
+                                       digest(a).substr(0, 12), old_name.get<std::string>(), new_name.get<std::string>()));
+  }
+  for (json* r : {&a, &b}) {
+    if (r->contains("overrides") && (*r)["overrides"].is_object()) (*r)["overrides"].erase("paper");
+  }
+}
+
+report_comparison compare_reports(const json& given_old, const json& given_new) {
   report_comparison result;
+  json old_report = given_old, new_report = given_new;
+  paper_by_digest(old_report, new_report, result);
   std::vector<std::string>& out = result.differences;
   const bool timing_differs = untimed(old_report) != untimed(new_report);
   const json a = timing_differs ? without_timed_parts(old_report) : old_report;
@@ -275,8 +332,10 @@ report_comparison compare_reports(const json& old_report, const json& new_report
   return result;
 }
 
-report_comparison compare_report_subset(const json& a, const json& b) {
+report_comparison compare_report_subset(const json& given_old, const json& given_new) {
   report_comparison result;
+  json a = given_old, b = given_new;
+  paper_by_digest(a, b, result);
   std::vector<std::string>& out = result.differences;
   for (const char* key : {"schema_version", "tool", "scene", "paper", "seed", "samples", "precisions"}) {
     if (a.contains(key) != b.contains(key)) {

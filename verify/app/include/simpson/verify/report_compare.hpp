@@ -13,6 +13,10 @@
 // - what one run chose not to compute is a note, not a difference: Coq certificates exported but
 //   not checked by coqc (--no-certify, or no coqc), and what --no-timing leaves out (timing files,
 //   plots of run times, the timed section's title);
+// - the paper: by its SHA-256; the same bytes named "embedded" in one report and by a path in the
+//   other (--paper) are one paper, its name a note;
+// - values longer than 120 bytes are shown around where they differ, cut at UTF-8 character
+//   boundaries;
 // - run times (in timing.json, which is not compared) and the environment: ignored.
 
 #include <simpson/verify/json.hpp>
