@@ -3,7 +3,7 @@ BUILD ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 SANITIZE_BUILD ?= build-sanitize
 
-.PHONY: all deps configure build verify test certify bench sanitize-build sanitize fuzz ci clean
+.PHONY: all deps configure build verify test certify reference bench sanitize-build sanitize fuzz ci clean
 
 all: build
 
@@ -36,6 +36,15 @@ verify: configure
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# The committed reference report, regenerated whole by one run, from a clean tree at a commit (the
+# report records it; ReferenceReport.IsOneRunFromACleanTree checks it), and README's generated counts.
+reference: configure
+	@test -z "$$(git status --porcelain)" || \
+	  { echo "make reference: the tree has uncommitted changes; commit them first (the report records its commit)"; exit 2; }
+	cmake --build $(BUILD) -j $(JOBS) --target simpson-verify
+	$(BUILD)/bin/simpson-verify --out reports/reference/paper
+	scripts/readme-counts --write
 
 # The paper scene's claims with their Coq certificates checked by coqc (certificates/*.v in
 # reports/out/certify); exit 1 when coqc rejects one. Also ctest's label coq, part of `make test`.

@@ -325,6 +325,21 @@ check "formula does not parse" 2 --claims phi3-det --paper "$work/unparsable.tex
 grep -qF "document '$work/unparsable.tex', label Phi3, line 490: the command \\foo is not one the reader knows" "$work/err" || fail "formula does not parse: label, line, construct not named: $(cat "$work/err")"
 grep -q "claims file" "$work/err" && fail "formula does not parse: a claims file blamed for the paper's TeX: $(cat "$work/err")"
 for k in 1 2 3 4; do [ -e "$work/none-paper$k" ] && fail "bad paper wrote $work/none-paper$k"; done
+# A paper cut short (no \end{document}) is bad input, named with its file, its last line and the
+# likely cause, before anything runs; a ')' missing from a display names the document and its line,
+# never the embedded claims file (none was given).
+head -600 "$paper_src" >"$work/cut.tex"
+check "paper cut short" 2 --claims all --sections none --paper "$work/cut.tex" --out "$work/none-paper5"
+grep -q "paper '$work/cut.tex', line 600: the document ends without .end{document}: truncated?" "$work/err" ||
+  fail "paper cut short: not named: $(cat "$work/err")"
+sed '423s/(\\omega^2 \\, h^2 - 8 )/(\\omega^2 \\, h^2 - 8 /' "$paper_src" >"$work/paren.tex"
+cmp -s "$paper_src" "$work/paren.tex" && fail "missing paren: sed changed nothing"
+check "a ( never closed" 2 --claims all --sections none --paper "$work/paren.tex" --out "$work/none-paper6"
+grep -q "document '$work/paren.tex', anchor 'can be factorized', line 423: .*a '(' that is never closed" "$work/err" ||
+  fail "a ( never closed: not named: $(cat "$work/err")"
+grep -q "claims file" "$work/err" && fail "a ( never closed: a claims file blamed for the paper's TeX: $(cat "$work/err")"
+for k in 5 6; do [ -e "$work/none-paper$k" ] && fail "bad paper wrote $work/none-paper$k"; done
+
 # A copy with one coefficient of p_r changed (omega^4 -> omega^6) turns momentum-order-3 into an erratum: exit 1.
 sed 's/{{m \\, \\omega^4}\\over48}/{{m \\, \\omega^6}\\over48}/' "$paper_src" >"$work/altered.tex"
 cmp -s "$paper_src" "$work/altered.tex" && fail "altered copy: sed changed nothing"

@@ -15,6 +15,8 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <iterator>
+#include <set>
 #include <functional>
 #include <sstream>
 
@@ -66,6 +68,26 @@ TEST(ReferenceReport, PaperSceneReproducesTheCommittedReport) {
   // Every table of the committed page is a table (a '|' left unescaped once made one a paragraph).
   test::expect_html_tables_rendered(dir);
   test::expect_no_bare_non_finite(dir);
+}
+
+// The committed reference is one run from a clean tree (`make reference`): report.json not dirty,
+// timing.json of the same run (its timestamp) and naming the same claims, report.md's headline the
+// summary line of report.json.
+TEST(ReferenceReport, IsOneRunFromACleanTree) {
+  const std::filesystem::path dir = std::filesystem::path(SIMPSON_SOURCE_DIR) / "reports" / "reference" / "paper";
+  const json report = load_report(dir);
+  EXPECT_FALSE(report["environment"]["git_dirty"].get<bool>()) << "regenerate it with make reference, from a clean tree";
+  std::ifstream timing_in(dir / "timing.json");
+  ASSERT_TRUE(timing_in) << "no timing.json beside report.json";
+  const json timing = json::parse(timing_in);
+  EXPECT_EQ(timing["timestamp_utc"], report["environment"]["timestamp_utc"]) << "timing.json is of another run than report.json";
+  std::set<std::string> claims, timed;
+  for (const json& c : report["claims"]) claims.insert(c["id"].get<std::string>());
+  for (const auto& [id, seconds] : timing["claims"].items()) timed.insert(id);
+  EXPECT_EQ(claims, timed);
+  std::ifstream md_in(dir / "report.md");
+  const std::string md((std::istreambuf_iterator<char>(md_in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(md.find("**" + report["summary"]["line"].get<std::string>() + "**"), std::string::npos) << "report.md is of another run";
 }
 
 /// Whether `text` is valid UTF-8 (a CI log that is not is shown as binary by grep).
