@@ -139,8 +139,12 @@ TEST(Scene, RejectsEveryBadExperimentParameter) {
                        "'stability.stiff_ratios'[0]"));
   EXPECT_TRUE(mentions(section(R"("stability": {"precisions": ["double"], "stiff_doublings": 61})"),
                        "'stability.stiff_doublings' must be an integer from 10 to 60"));
-  EXPECT_TRUE(mentions(section(R"("stability": {"precisions": ["double"], "endpoint_power": 10})"),
-                       "'stability.endpoint_power' must be an integer from 1000"));
+  // A size too small for the endpoints' fit to decide is refused, naming the smallest that decides
+  // (1000 once made six endpoint expectations fail).
+  EXPECT_TRUE(mentions(section(R"("stability": {"precisions": ["double"], "endpoint_power": 1000})"),
+                       "'stability.endpoint_power' must be at least 1000000, the smallest size whose fit decides"));
+  EXPECT_TRUE(mentions(section(R"("stability": {"precisions": ["double"], "endpoint_power": 0})"),
+                       "'stability.endpoint_power' must be an integer from 1"));
   EXPECT_TRUE(mentions(section(R"("stability": {"precisions": ["double"], "masses": [0]})"), "'stability.masses'[0]"));
   EXPECT_TRUE(mentions(section(R"("stability": {"precisions": ["double"], "steps": 0})"), "'stability.steps' must be an integer"));
   EXPECT_TRUE(mentions(section(R"("long_time": {"omega_h": 3})"), "'long_time.omega_h' must be a number greater than 0 and at most 2"));

@@ -204,7 +204,18 @@ experiment_settings parse_experiments(const nlohmann::json& doc, const std::stri
     if (r.has("omega_h")) st.omega_h = r.numbers("omega_h", 0, 1e3);
     if (r.has("masses")) st.masses = r.numbers("masses", 0, 1e300);
     if (r.has("steps")) st.steps = r.integer("steps", 1, max_steps);
-    if (r.has("endpoint_power")) st.endpoint_power = r.integer("endpoint_power", 1000, 1000000000000LL);
+    if (r.has("endpoint_power")) {
+      // The smallest size whose fit decides every endpoint's growth (measured: from 5e5 every power
+      // up to 1e12 decides; at 3e5 the growth just above 2√2 is not yet told from linear): a value
+      // below it would make expectations fail that no run of that size can decide.
+      constexpr long long deciding = 1000000;
+      st.endpoint_power = r.integer("endpoint_power", 1, 1000000000000LL);
+      if (st.endpoint_power < deciding) {
+        fail(origin, fmt::format("'stability.endpoint_power' must be at least {}, the smallest size whose fit decides the endpoints' "
+                                 "growth (bounded, linear or exponential; docs/stiff.md), got {}",
+                                 deciding, st.endpoint_power));
+      }
+    }
     e.stability = st;
   }
   if (doc.contains("long_time")) {
