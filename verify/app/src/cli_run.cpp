@@ -253,12 +253,13 @@ int execute_run(prepared_run& r, const cli_options& o) {
     const bool quiet = o.quiet;
     for (const claim_outcome& o : record.outcomes) {
       const bool faulted = o.result.evidence.contains("error");
-      const bool expected_verdict = faulted || as_expected(o.result.outcome, o.expected);
+      const bool expected_verdict = faulted || outcome_as_expected(o);
       if (!quiet) {
         fmt::print("  {:<8} {:<34}{}\n", faulted ? "fault" : to_string(o.result.outcome), o.checked->id,
                    faulted            ? "  <- the check threw (a bug in the harness)"
                    : expected_verdict ? ""
                    : record.validation ? (cause_of(o).empty() ? "  <- does not hold" : "  <- follows from " + cause_of(o))
+                   : !o.content_changed.empty() ? "  <- not the recorded erratum"
                                        : "  <- expected " + to_string(o.expected));
         if (o.result.outcome == verdict::erratum && !o.result.correction.empty()) {
           fmt::print("           corrected: {}\n", o.result.correction);
@@ -267,6 +268,8 @@ int execute_run(prepared_run& r, const cli_options& o) {
       if (!expected_verdict && record.validation) {
         fmt::print(stderr, "simpson-verify: {}: {}{}\n", o.checked->id, to_string(o.result.outcome),
                    cause_of(o).empty() ? "" : ", a consequence of " + cause_of(o));
+      } else if (!o.content_changed.empty()) {
+        fmt::print(stderr, "simpson-verify: {}: erratum as expected, but {}\n", o.checked->id, o.content_changed);
       } else if (!expected_verdict) {
         fmt::print(stderr, "simpson-verify: {}: verdict {}, expected {}\n", o.checked->id, to_string(o.result.outcome),
                    to_string(o.expected));

@@ -124,6 +124,11 @@ testcase claim_case(const claim_outcome& o, bool validation) {
     t.type = "unexpected-verdict";
     t.message = "verdict " + verdict + ", expected " + expected;
     t.detail = summary;
+  } else if (!o.content_changed.empty()) {  // the expected erratum, but another one
+    t.outcome = testcase::result::failure;
+    t.type = "erratum-changed";
+    t.message = "erratum, as expected, but " + o.content_changed;
+    t.detail = summary;
   } else if (evidence.contains("coq") && evidence["coq"].value("status", "") == "failed") {
     t.outcome = testcase::result::failure;
     t.type = "certificate-rejected";

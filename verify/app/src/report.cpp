@@ -130,7 +130,7 @@ verdict_counts count_verdicts(const run_record& r) {
     c.read_and_quoted += !o.result.printed.is_null() && !o.result.quoted.empty();
     c.coq_exported += !certificate_documents(o).empty();
     c.coq_checked += o.result.evidence.contains("coq") && o.result.evidence["coq"].value("status", "") == "checked";
-    if (!as_expected(o.result.outcome, o.expected)) c.unexpected.push_back(o.checked->id);
+    if (!outcome_as_expected(o)) c.unexpected.push_back(o.checked->id);
   }
   return c;
 }
@@ -196,7 +196,7 @@ namespace {
 std::string validation_line(const run_record& r, const verdict_counts& c) {
   std::vector<std::string> causes, consequences, undecided, other;
   for (const claim_outcome& o : r.outcomes) {
-    if (as_expected(o.result.outcome, o.expected)) continue;
+    if (outcome_as_expected(o)) continue;
     const std::string& id = o.checked->id;
     if (o.result.outcome == verdict::undecided || o.result.outcome == verdict::unproved || o.result.outcome == verdict::kernels_disagree) {
       undecided.push_back(id);
@@ -345,10 +345,11 @@ json report_json(const run_record& r, const plot_outcome& plots) {
                {"methods", c.methods},
                {"verdict", to_string(o.result.outcome)},
                {"expected", to_string(o.expected)},
-               {"as_expected", as_expected(o.result.outcome, o.expected)},
+               {"as_expected", outcome_as_expected(o)},
                {"origin", to_string(c.origin)},
                {"finding", to_string(finding_of(o))}};
     if (!cause_of(o).empty()) entry["follows_from"] = cause_of(o);
+    if (!o.content_changed.empty()) entry["content_changed"] = o.content_changed;
     if (c.typographical) entry["typographical"] = true;
     if (!o.result.correction.empty()) entry["correction"] = o.result.correction;
     if (!o.result.note.empty()) entry["note"] = o.result.note;
@@ -668,7 +669,7 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
   for (const claim_outcome& o : r.outcomes) {
     const claim& c = *o.checked;
     const std::string verdict_text = "**" + to_string(o.result.outcome) + "**" +
-                                     (as_expected(o.result.outcome, o.expected) ? "" : r.validation ? " **(does not hold)**" : " **(unexpected)**");
+                                     (outcome_as_expected(o) ? "" : r.validation ? " **(does not hold)**" : " **(unexpected)**");
     md += fmt::format("| [{}](#{}) | {} | {} | {} | {} | {} | {} | {} |\n", c.id, heading_slug(c.id), c.section, markdown_cell(c.equation),
                       !o.result.printed.is_null() ? "read" : !o.result.quoted.empty() ? "quoted" : "typed", what_the_paper_says(o),
                       verdict_text, to_string(o.expected), join(c.methods, ", ") + (o.result.printed.is_null() ? "" : ", GiNaC"));
@@ -692,10 +693,12 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
     const bool failed = o.result.outcome == verdict::fails || o.result.outcome == verdict::kernels_disagree ||
                         o.result.outcome == verdict::text_changed || o.result.outcome == verdict::undecided ||
                         o.result.outcome == verdict::unproved;
-    if (!failed && as_expected(o.result.outcome, o.expected)) continue;  // also a holds or erratum not as expected
+    if (!failed && outcome_as_expected(o)) continue;  // also a holds or erratum not as expected
     any_failure = true;
     const std::string why = o.result.evidence.contains("error")
                                 ? "its check threw, a bug in the harness: " + o.result.evidence["error"].get<std::string>()
+                            : !o.content_changed.empty()
+                                ? "the expected verdict, but not the expected erratum: " + o.content_changed + "; the exit code is 1"
                             : o.result.outcome == o.expected
                                 ? "an expected failure: the ledger expects this verdict, so the exit code is 0"
                             : r.validation

@@ -42,6 +42,30 @@ run_record run(const scene& s, const progress_callback& progress,
   return run(s, std::move(book), paper, progress, section_progress);
 }
 
+namespace {
+
+/// The start of the UTF-8 character at or before `at`.
+std::size_t character_start(const std::string& text, std::size_t at) {
+  while (at > 0 && at < text.size() && (static_cast<unsigned char>(text[at]) & 0xC0) == 0x80) --at;
+  return at;
+}
+
+/// `text` from about 40 bytes before `at`, at most 160 bytes, cut between characters.
+std::string around(const std::string& text, std::size_t at) {
+  const std::size_t start = at > 40 ? character_start(text, at - 40) : 0;
+  const std::size_t end = character_start(text, std::min(text.size(), start + 160));
+  return (start > 0 ? "..." : "") + text.substr(start, end - start) + (end < text.size() ? "..." : "");
+}
+
+}  // namespace
+
+std::string correction_change(const std::string& recorded, const std::string& now) {
+  std::size_t k = 0;
+  while (k < recorded.size() && k < now.size() && recorded[k] == now[k]) ++k;
+  k = character_start(recorded.size() < now.size() ? now : recorded, k);
+  return fmt::format("its correction is not the recorded one: recorded '{}', now '{}'", around(recorded, k), around(now, k));
+}
+
 run_record run(const scene& s, std::shared_ptr<const claim_book> book, const paper_reading& paper, const progress_callback& progress,
                const std::function<void(const std::string&, double)>& section_progress) {
   using clock = std::chrono::steady_clock;
@@ -79,6 +103,10 @@ run_record run(const scene& s, std::shared_ptr<const claim_book> book, const pap
       r.internal_errors.push_back(c.id + ": " + e.what());
     }
     outcome.seconds = std::chrono::duration<double>(clock::now() - claim_start).count();
+    if (outcome.expected == verdict::erratum && outcome.result.outcome == verdict::erratum && !c.expected_correction.empty() &&
+        outcome.result.correction != c.expected_correction && s.expected_overrides.find(c.id) == s.expected_overrides.end()) {
+      outcome.content_changed = correction_change(c.expected_correction, outcome.result.correction);
+    }
     r.outcomes.push_back(std::move(outcome));
     if (progress) progress(k, s.claims.size(), c, &r.outcomes.back());
   }
@@ -153,7 +181,7 @@ run_record run(const scene& s, std::shared_ptr<const claim_book> book, const pap
 
 bool all_as_expected(const run_record& r) {
   for (const claim_outcome& o : r.outcomes) {
-    if (!as_expected(o.result.outcome, o.expected)) return false;
+    if (!outcome_as_expected(o)) return false;
   }
   return true;
 }

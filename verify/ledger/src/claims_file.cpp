@@ -36,7 +36,7 @@ class record_reader {
   record_reader(const toml::table& table, const std::string& file) : table_(table), file_(file), line_(line_of(table)) {
     static const std::set<std::string> fields{"id",       "section",  "equation",     "statement",     "methods", "check",
                                               "expected",    "finding",       "follows_from",
-                                              "typographical", "origin", "headline",  "coq_none", "shape", "with", "core"};
+                                              "typographical", "origin", "headline",  "coq_none", "shape", "with", "core", "correction"};
     for (const auto& [key, node] : table_) {
       if (!fields.count(std::string(key.str()))) {
         throw claims_file_error(file_, line_of(node), std::string(key.str()), "not a field of a claim record (docs/claims-file.md)");
@@ -327,6 +327,12 @@ claims_file_contents read_claims_contents(const std::string& text, const std::st
     r.headline = read.flag("headline");
     r.coq_none = read.text("coq_none", false);
     r.core = read.core_bindings(known);
+    // An erratum's content: the correction it is expected to have. Only an expected erratum has one.
+    r.correction = read.text("correction", false);
+    if (!r.correction.empty() && r.expected != verdict::erratum) {
+      throw claims_file_error(file, read.line_of_field("correction"), "correction",
+                              "given for a claim whose expected verdict is " + to_string(r.expected) + ": only an expected erratum records its correction");
+    }
     records.push_back(std::move(r));
   }
   // Every cause named exists, and following the links never comes back.

@@ -116,6 +116,7 @@ std::vector<claim> claims_of(const std::vector<claim_record>& records, const std
     c.labels_read = labels_read(r);
     c.headline = r.headline;
     c.coq_none = r.coq_none;
+    c.expected_correction = r.correction;
     out.push_back(std::move(c));
   }
   return out;

@@ -23,7 +23,14 @@ struct claim_outcome {
   /// The erratum it follows from, derived (consequences.hpp): it holds once that erratum's proved
   /// corrections are put in; empty when it does not follow so.
   std::string consequence_of;
+  /// An expected erratum whose correction is not the recorded one (a new error inside an old
+  /// erratum): what changed, the recorded and the new correction around where they differ.
+  std::string content_changed;
 };
+
+/// Whether an outcome is the one its record expects: its verdict, and for an erratum whose record
+/// recorded its correction, that correction. The one rule every report and the exit code use.
+inline bool outcome_as_expected(const claim_outcome& o) { return o.content_changed.empty() && as_expected(o.result.outcome, o.expected); }
 
 /// The finding a claim's outcome is counted under: its derived cause, or the one its record types.
 inline const std::string& cause_of(const claim_outcome& o) { return o.consequence_of.empty() ? o.checked->follows_from : o.consequence_of; }
@@ -79,6 +86,10 @@ paper_reading read_scene_paper(const scene& s, claim_book& book);
 
 /// True when every verdict equals its expected verdict.
 bool all_as_expected(const run_record& r);
+
+/// What changed between an erratum's recorded correction and the one a run proved, each shown
+/// around where they first differ (cut between UTF-8 characters).
+std::string correction_change(const std::string& recorded, const std::string& now);
 
 /// The claims whose Coq certificate coqc rejected (evidence "coq" status "failed", with --certify).
 std::vector<std::string> rejected_certificates(const run_record& r);

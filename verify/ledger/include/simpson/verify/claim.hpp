@@ -161,6 +161,10 @@ struct claim {
   std::vector<std::string> labels_read = {};
   bool headline = false;
   std::string coq_none = {};
+  /// For an expected erratum: the proved correction its record recorded (`correction`), the
+  /// erratum's content. The same verdict with another correction (a second error in a formula
+  /// already known to be wrong) is a changed verdict. Empty: not recorded.
+  std::string expected_correction = {};
 };
 
 }  // namespace simpson::verify

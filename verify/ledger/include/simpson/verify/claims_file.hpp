@@ -55,6 +55,7 @@ struct claim_record {
   bool headline = false;  // one of the claims whose GiNaC time the report's speed line sums
   std::string coq_none;   // why no Coq statement is exported, when none is
   std::vector<core_binding> core;  // the core's formulas bound to the print (one table or a list of them)
+  std::string correction;          // an expected erratum's proved correction, as recorded: its content
   int line = 0;           // the line of its [[claim]] header
 };
 

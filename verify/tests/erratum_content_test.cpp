@@ -1,0 +1,95 @@
+// Errata guarded by their content: a recorded erratum records its proved correction
+// (`correction` in claims/paper.toml); a second error inside a formula already known to be wrong
+// gives the same verdict word with another correction, and that is a changed verdict (exit 1, named
+// in the summary, the report and JUnit). The same runs on the printed paper are as expected.
+
+#include "altered_paper.hpp"
+
+#include <simpson/verify/claims_file.hpp>
+#include <simpson/verify/junit.hpp>
+#include <simpson/verify/ledger.hpp>
+#include <simpson/verify/report.hpp>
+#include <simpson/verify/run.hpp>
+#include <simpson/verify/scene.hpp>
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
+
+namespace simpson::verify {
+namespace {
+
+run_record run_on(const std::string& id, const paper_source& paper) {
+  scene s = load_scene("quick");
+  s.claims = {id};
+  s.experiments = {};
+  auto book = std::make_shared<claim_book>(paper_book());
+  const paper_reading reading = read_paper(paper);
+  check_claims_file_formulas(*book, reading.source);
+  return run(s, book, reading);
+}
+
+void expect_content_changed(const std::string& id, const paper_source& second_error) {
+  const run_record printed = run_on(id, embedded_paper());
+  ASSERT_EQ(printed.outcomes.size(), 1u);
+  EXPECT_EQ(printed.outcomes[0].result.outcome, verdict::erratum);
+  EXPECT_TRUE(printed.outcomes[0].content_changed.empty()) << printed.outcomes[0].content_changed;
+  EXPECT_EQ(run_exit_code(printed), 0);
+
+  const run_record r = run_on(id, second_error);
+  ASSERT_EQ(r.outcomes.size(), 1u);
+  const claim_outcome& o = r.outcomes[0];
+  EXPECT_EQ(o.result.outcome, verdict::erratum) << id << ": " << o.result.note;  // the same word ...
+  EXPECT_NE(o.content_changed.find("its correction is not the recorded one"), std::string::npos) << id;  // ... another erratum
+  EXPECT_EQ(run_exit_code(r), 1) << id;
+  EXPECT_NE(summary_line(r).find("1 not as expected (" + id + ")"), std::string::npos) << summary_line(r);
+  EXPECT_NE(report_junit(r).find("erratum-changed"), std::string::npos) << id;
+  EXPECT_NE(report_markdown(r).find("not the expected erratum"), std::string::npos) << id;
+  EXPECT_EQ(report_json(r)["claims"][0]["content_changed"], o.content_changed);
+}
+
+TEST(ErratumContent, ASecondWrongEntryOfGammaIsAChangedVerdict) {
+  // Gamma's entry (1, 2) printed 2 alpha gamma: entry (3, 3) is still wrong, and now (1, 2) too.
+  expect_content_changed("gamma-system", altered("the following homogeneous linear system", "& \\alpha \\, \\gamma &", "& 2 \\, \\alpha \\, \\gamma &"));
+}
+
+TEST(ErratumContent, ASecondSlipInTheTaylorDisplayIsAChangedVerdict) {
+  // h^4/24 printed h^4/25 in the expansion of q_{j+1}, beside the d^6q/dt^5 already misprinted:
+  // the correction names each wrong term ("printed X, should be Y"), so it changes.
+  expect_content_changed("taylor-display", altered("at the precise points", "{{h^4}\\over{24}}", "{{h^4}\\over{25}}"));
+}
+
+TEST(ErratumContent, OneMoreChangedEntryOfTable1IsAChangedVerdict) {
+  // Newmark's momentum at N = 20 printed 5.12e-1 for 5.02e-1: no convention reproduces the table
+  // any more, so the verdict word itself changes (fails), named as a change.
+  const run_record r = run_on("table-values", altered("\\begin{tabular}", "5.02 \\,\\, 10^{-1}", "5.12 \\,\\, 10^{-1}"));
+  ASSERT_EQ(r.outcomes.size(), 1u);
+  EXPECT_FALSE(outcome_as_expected(r.outcomes[0])) << to_string(r.outcomes[0].result.outcome) << ": " << r.outcomes[0].result.correction;
+  EXPECT_EQ(run_exit_code(r), 1);
+  EXPECT_NE(summary_line(r).find("1 not as expected (table-values)"), std::string::npos) << summary_line(r);
+  EXPECT_NE(report_junit(r).find("failures=\"1\""), std::string::npos);
+}
+
+// Only an expected erratum records a correction: on another record it is bad input, named.
+TEST(ErratumContent, ACorrectionOnARecordThatIsNoErratumIsBadInput) {
+  const std::string record = R"([[claim]]
+id = "phi3-unit"
+section = "6"
+equation = 'Phi3'
+statement = 'det Phi_3 = 1.'
+methods = ["exact"]
+shape = "determinant"
+with = { matrix = "Phi3", equals = "inline:It is easy with SageMath to verify that" }
+correction = 'det = 1'
+)";
+  try {
+    read_claim_book(record, "test.toml");
+    ADD_FAILURE() << "a correction on a record expected to hold was read";
+  } catch (const claims_file_error& e) {
+    EXPECT_NE(std::string(e.what()).find("line 9, field 'correction': given for a claim whose expected verdict is holds"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace simpson::verify
