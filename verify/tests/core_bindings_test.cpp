@@ -3,6 +3,7 @@
 // claim fail, naming the entries; a misprint is compared with its proved correction.
 
 #include "altered_paper.hpp"
+#include "phi3_unit_record.hpp"
 #include "core_bindings.hpp"
 
 #include <simpson/verify/claims_file.hpp>
@@ -57,15 +58,7 @@ TEST(CoreBinding, EveryCoreFormulaIsBoundByARecordOfThePaperAndIsThePrint) {
 // The record holds without its binding; bound to a core formula that is not the printed one, it
 // fails and names the entries: a weaker check (the record alone) would pass.
 TEST(CoreBinding, ACoreFormulaThatIsNotThePrintMakesItsClaimFail) {
-  const std::string record = R"([[claim]]
-id = "phi3-unit"
-section = "6"
-equation = 'Phi3'
-statement = 'det Phi_3 = 1.'
-methods = ["exact"]
-shape = "determinant"
-with = { matrix = "Phi3", equals = "inline:It is easy with SageMath to verify that" }
-)";
+  const std::string& record = phi3_unit_record;
   claim_book alone = read_claim_book(record, "test.toml");
   EXPECT_EQ(judged(alone, "phi3-unit", embedded_paper()).outcome, verdict::holds);
 
@@ -107,15 +100,7 @@ TEST(CoreBinding, AMisprintIsComparedWithItsProvedCorrection) {
 }
 
 TEST(CoreBinding, ABindingThatDoesNotFitIsBadInputNamingItsField) {
-  const std::string record = R"([[claim]]
-id = "phi3-unit"
-section = "6"
-equation = 'Phi3'
-statement = 'det Phi_3 = 1.'
-methods = ["exact"]
-shape = "determinant"
-with = { matrix = "Phi3", equals = "inline:It is easy with SageMath to verify that" }
-)";
+  const std::string& record = phi3_unit_record;
   const auto error_of = [&](const std::string& core) -> std::string {
     try {
       claim_book book = read_claim_book(record + core + "\n", "test.toml");

@@ -4,6 +4,7 @@
 // in the summary, the report and JUnit). The same runs on the printed paper are as expected.
 
 #include "altered_paper.hpp"
+#include "phi3_unit_record.hpp"
 
 #include <simpson/verify/claims_file.hpp>
 #include <simpson/verify/junit.hpp>
@@ -73,16 +74,7 @@ TEST(ErratumContent, OneMoreChangedEntryOfTable1IsAChangedVerdict) {
 
 // Only an expected erratum records a correction: on another record it is bad input, named.
 TEST(ErratumContent, ACorrectionOnARecordThatIsNoErratumIsBadInput) {
-  const std::string record = R"([[claim]]
-id = "phi3-unit"
-section = "6"
-equation = 'Phi3'
-statement = 'det Phi_3 = 1.'
-methods = ["exact"]
-shape = "determinant"
-with = { matrix = "Phi3", equals = "inline:It is easy with SageMath to verify that" }
-correction = 'det = 1'
-)";
+  const std::string record = phi3_unit_record + "correction = 'det = 1'\n";
   try {
     read_claim_book(record, "test.toml");
     ADD_FAILURE() << "a correction on a record expected to hold was read";

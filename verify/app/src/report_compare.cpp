@@ -1,6 +1,7 @@
 #include <simpson/verify/report_compare.hpp>
 
 #include <simpson/precision.hpp>
+#include <simpson/verify/utf8_text.hpp>
 
 #include <fmt/format.h>
 
@@ -26,35 +27,15 @@ const std::set<std::string>& ignored_keys() {
   return keys;
 }
 
-/// The start of the UTF-8 character at or before `at`: a cut there never splits a character.
-std::size_t character_start(const std::string& text, std::size_t at) {
-  while (at > 0 && at < text.size() && (static_cast<unsigned char>(text[at]) & 0xC0) == 0x80) --at;
-  return at;
-}
+std::string text_of_value(const json& v) { return v.dump(-1, ' ', false, json::error_handler_t::replace); }
 
 /// A value as the reader needs it: whole up to 120 bytes; longer, cut at character boundaries
 /// around `from`, where it differs from the value it is compared with ("..." where cut).
-std::string shown(const json& v, std::size_t from = 0) {
-  const std::string text = v.dump(-1, ' ', false, json::error_handler_t::replace);
-  constexpr std::size_t most = 120;
-  if (text.size() <= most) return text;
-  std::size_t start = from > 40 ? character_start(text, from - 40) : 0;
-  std::size_t end = character_start(text, std::min(text.size(), start + most - 6));
-  if (end == text.size()) start = character_start(text, text.size() > most - 6 ? text.size() - (most - 6) : 0);
-  return (start > 0 ? "..." : "") + text.substr(start, end - start) + (end < text.size() ? "..." : "");
-}
-
-/// The first byte where two values' texts differ, at a character boundary.
-std::size_t first_difference(const json& a, const json& b) {
-  const std::string x = a.dump(-1, ' ', false, json::error_handler_t::replace), y = b.dump(-1, ' ', false, json::error_handler_t::replace);
-  std::size_t k = 0;
-  while (k < x.size() && k < y.size() && x[k] == y[k]) ++k;
-  return character_start(x.size() < y.size() ? y : x, k);
-}
+std::string shown(const json& v, std::size_t from = 0) { return utf8_around(text_of_value(v), from, 120); }
 
 /// Two values that differ, each shown around where they differ.
 std::string old_and_new(const json& a, const json& b) {
-  const std::size_t at = first_difference(a, b);
+  const std::size_t at = utf8_first_difference(text_of_value(a), text_of_value(b));
   return shown(a, at) + " → " + shown(b, at);
 }
 

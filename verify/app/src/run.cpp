@@ -7,6 +7,7 @@
 #include <simpson/verify/provenance.hpp>
 #include <simpson/verify/quoted_sentence.hpp>
 #include <simpson/verify/run.hpp>
+#include <simpson/verify/utf8_text.hpp>
 
 #include <simpson/verify/certify.hpp>
 #include <simpson/verify/consequences.hpp>
@@ -42,28 +43,9 @@ run_record run(const scene& s, const progress_callback& progress,
   return run(s, std::move(book), paper, progress, section_progress);
 }
 
-namespace {
-
-/// The start of the UTF-8 character at or before `at`.
-std::size_t character_start(const std::string& text, std::size_t at) {
-  while (at > 0 && at < text.size() && (static_cast<unsigned char>(text[at]) & 0xC0) == 0x80) --at;
-  return at;
-}
-
-/// `text` from about 40 bytes before `at`, at most 160 bytes, cut between characters.
-std::string around(const std::string& text, std::size_t at) {
-  const std::size_t start = at > 40 ? character_start(text, at - 40) : 0;
-  const std::size_t end = character_start(text, std::min(text.size(), start + 160));
-  return (start > 0 ? "..." : "") + text.substr(start, end - start) + (end < text.size() ? "..." : "");
-}
-
-}  // namespace
-
 std::string correction_change(const std::string& recorded, const std::string& now) {
-  std::size_t k = 0;
-  while (k < recorded.size() && k < now.size() && recorded[k] == now[k]) ++k;
-  k = character_start(recorded.size() < now.size() ? now : recorded, k);
-  return fmt::format("its correction is not the recorded one: recorded '{}', now '{}'", around(recorded, k), around(now, k));
+  const std::size_t k = utf8_first_difference(recorded, now);
+  return fmt::format("its correction is not the recorded one: recorded '{}', now '{}'", utf8_around(recorded, k, 160), utf8_around(now, k, 160));
 }
 
 run_record run(const scene& s, std::shared_ptr<const claim_book> book, const paper_reading& paper, const progress_callback& progress,
