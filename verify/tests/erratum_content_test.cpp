@@ -21,10 +21,11 @@
 namespace simpson::verify {
 namespace {
 
-run_record run_on(const std::string& id, const paper_source& paper) {
+run_record run_on(const std::string& id, const paper_source& paper, bool accept_fixes = false) {
   scene s = load_scene("quick");
   s.claims = {id};
   s.experiments = {};
+  s.accept_fixes = accept_fixes;
   auto book = std::make_shared<claim_book>(paper_book());
   const paper_reading reading = read_paper(paper);
   check_claims_file_formulas(*book, reading.source);
@@ -70,6 +71,41 @@ TEST(ErratumContent, OneMoreChangedEntryOfTable1IsAChangedVerdict) {
   EXPECT_EQ(run_exit_code(r), 1);
   EXPECT_NE(summary_line(r).find("1 not as expected (table-values)"), std::string::npos) << summary_line(r);
   EXPECT_NE(report_junit(r).find("failures=\"1\""), std::string::npos);
+}
+
+// An author's fix is an outcome of its own: Gamma printed with (delta^2 - 1)/2 holds, and
+// gamma-system, recorded as an erratum, is fixed. A guard (the default) reports it as a change,
+// exit 1, under Fixed and not under Failures; --accept-fixes passes it.
+TEST(ErratumContent, AFixIsReportedAsFixedAndPassesWhenAccepted) {
+  const paper_source corrected = altered("the following homogeneous linear system", "{{\\gamma^2-1}\\over2}", "{{\\delta^2-1}\\over2}");
+  const run_record guard = run_on("gamma-system", corrected);
+  ASSERT_EQ(guard.outcomes.size(), 1u);
+  EXPECT_EQ(guard.outcomes[0].result.outcome, verdict::holds);
+  EXPECT_TRUE(guard.outcomes[0].fixed);
+  EXPECT_EQ(run_exit_code(guard), 1);
+  EXPECT_NE(summary_line(guard).find("1 fixed (gamma-system"), std::string::npos) << summary_line(guard);
+  EXPECT_NE(report_junit(guard).find("type=\"fixed\""), std::string::npos);
+  const std::string md = report_markdown(guard);
+  const std::size_t fixed_at = md.find("## Fixed"), failures_at = md.find("## Failures");
+  ASSERT_NE(fixed_at, std::string::npos);
+  EXPECT_NE(md.find("**gamma-system**", fixed_at), std::string::npos);
+  ASSERT_NE(failures_at, std::string::npos);
+  const std::string failures = md.substr(failures_at, md.find("\n## ", failures_at + 1) - failures_at);
+  EXPECT_EQ(failures.find("gamma-system"), std::string::npos) << "a fix listed among the failures: " << failures;
+
+  const run_record author = run_on("gamma-system", corrected, true);
+  EXPECT_EQ(run_exit_code(author), 0);
+  EXPECT_NE(summary_line(author).find("all verdicts as expected, 1 fixed, fixes accepted (gamma-system)"), std::string::npos) << summary_line(author);
+  const json report = report_json(author);
+  EXPECT_TRUE(report["all_as_expected"].get<bool>());
+  EXPECT_TRUE(report["claims"][0]["fixed"].get<bool>());
+  EXPECT_EQ(report["summary"]["fixed"], json::array({"gamma-system"}));
+  EXPECT_EQ(report_junit(author).find("type=\"fixed\""), std::string::npos);
+
+  // Accepting fixes accepts nothing else: a second error in Gamma still fails.
+  const run_record worse =
+      run_on("gamma-system", altered("the following homogeneous linear system", "& \\alpha \\, \\gamma &", "& 2 \\, \\alpha \\, \\gamma &"), true);
+  EXPECT_EQ(run_exit_code(worse), 1);
 }
 
 // Only an expected erratum records a correction: on another record it is bad input, named.

@@ -74,6 +74,10 @@ void declare_options(CLI::App& app, cli_options& o) {
   app.add_flag("--validate", o.validate,
                "judge every claim by whether it holds, not by the verdict its record expects: exit 0 only when every claim "
                "holds (the recorded errata of the paper then fail)");
+  app.add_flag("--accept-fixes", o.accept_fixes,
+               "a claim recorded as a finding (erratum, fails) that now holds is a fix, and passes: an author's pipeline (without "
+               "it a fix is a change, exit 1: a guard's pipeline)")
+      ->excludes("--validate");
   app.add_flag("--list-scenes", o.want_scenes, "list the embedded scenes and exit");
   app.add_flag("--list-precisions", o.want_precisions, "list the precisions and exit");
   app.add_flag("--list-holes", o.want_holes,

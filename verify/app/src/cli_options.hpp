@@ -14,6 +14,7 @@ struct cli_options {
   std::vector<std::string> claim_ids, section_list, precision_names;
   bool want_claims = false, want_scenes = false, want_precisions = false, want_holes = false, want_core = false;
   bool allow_expensive = false, long_run = false, quiet = false, no_timing = false, certify = false, no_certify = false, validate = false;
+  bool accept_fixes = false;
   std::string list_format = "text";
   CLI::App* compare = nullptr;  // the `compare` subcommand
   std::string compare_old, compare_new;

@@ -124,6 +124,10 @@ std::optional<int> prepare_run(cli_options& o, const CLI::App& app, int argc, ch
     paper = read_scene_paper(s, *book);  // a paper that is missing or does not parse is bad input: nothing runs
     if (!o.paper_file.empty()) s.overrides["paper"] = o.paper_file;
     if (!o.claims_file.empty()) s.overrides["claims_file"] = o.claims_file;
+    if (o.accept_fixes) {
+      s.accept_fixes = true;
+      s.overrides["accept_fixes"] = true;
+    }
     if (o.validate) {
       for (const std::string& id : s.claims) s.expected_overrides[id] = verdict::holds;
       s.overrides["validate"] = true;
@@ -260,6 +264,7 @@ int execute_run(prepared_run& r, const cli_options& o) {
                    : expected_verdict ? ""
                    : record.validation ? (cause_of(o).empty() ? "  <- does not hold" : "  <- follows from " + cause_of(o))
                    : !o.content_changed.empty() ? "  <- not the recorded erratum"
+                   : o.fixed ? "  <- fixed (recorded " + to_string(o.expected) + ")"
                                        : "  <- expected " + to_string(o.expected));
         if (o.result.outcome == verdict::erratum && !o.result.correction.empty()) {
           fmt::print("           corrected: {}\n", o.result.correction);
@@ -268,6 +273,9 @@ int execute_run(prepared_run& r, const cli_options& o) {
       if (!expected_verdict && record.validation) {
         fmt::print(stderr, "simpson-verify: {}: {}{}\n", o.checked->id, to_string(o.result.outcome),
                    cause_of(o).empty() ? "" : ", a consequence of " + cause_of(o));
+      } else if (o.fixed && !o.fix_accepted) {
+        fmt::print(stderr, "simpson-verify: {}: fixed: recorded as {}, now holds (--accept-fixes accepts a fix)\n", o.checked->id,
+                   to_string(o.expected));
       } else if (!o.content_changed.empty()) {
         fmt::print(stderr, "simpson-verify: {}: erratum as expected, but {}\n", o.checked->id, o.content_changed);
       } else if (!expected_verdict) {

@@ -113,6 +113,15 @@ testcase claim_case(const claim_outcome& o, bool validation) {
     t.type = "text-changed";
     t.message = o.result.evidence.value("text_changed", std::string("the quoted words changed"));
     t.detail = summary;
+  } else if (o.fixed) {  // a finding of the record that now holds
+    if (o.fix_accepted) {
+      t.out = "Fixed: recorded as " + expected + ", now holds (accepted: --accept-fixes).\n" + summary;
+    } else {
+      t.outcome = testcase::result::failure;
+      t.type = "fixed";
+      t.message = "fixed: recorded as " + expected + ", now holds (--accept-fixes accepts a fix)";
+      t.detail = summary;
+    }
   } else if (o.result.outcome != o.expected && validation) {  // no expected verdicts: the claim is to hold
     t.outcome = testcase::result::failure;
     t.type = cause_of(o).empty() ? "does-not-hold" : "consequence";

@@ -60,7 +60,8 @@ struct verdict_counts {
   std::size_t held = 0, errata = 0, failed = 0, disagreed = 0, text_changed = 0, undecided = 0, unproved = 0, skipped = 0, machine_read = 0,
               quoted = 0, typed = 0, read_and_quoted = 0, coq_exported = 0,
               coq_checked = 0;
-  std::vector<std::string> unexpected;
+  std::vector<std::string> unexpected;  // not as expected, fixes not accepted apart
+  std::vector<std::string> fixed, fixes_not_accepted;
 };
 
 /// How many characters of a display's TeX the claims table shows.
@@ -130,7 +131,12 @@ verdict_counts count_verdicts(const run_record& r) {
     c.read_and_quoted += !o.result.printed.is_null() && !o.result.quoted.empty();
     c.coq_exported += !certificate_documents(o).empty();
     c.coq_checked += o.result.evidence.contains("coq") && o.result.evidence["coq"].value("status", "") == "checked";
-    if (!outcome_as_expected(o)) c.unexpected.push_back(o.checked->id);
+    if (o.fixed) c.fixed.push_back(o.checked->id);
+    if (o.fixed && !outcome_as_expected(o)) {
+      c.fixes_not_accepted.push_back(o.checked->id);
+    } else if (!outcome_as_expected(o)) {
+      c.unexpected.push_back(o.checked->id);
+    }
   }
   return c;
 }
@@ -164,6 +170,10 @@ std::string summary_line(const run_record& r) {
     problems.push_back(r.validation ? fmt::format("{} not holding ({})", c.unexpected.size(), join(c.unexpected, ", "))
                                     : fmt::format("{} not as expected ({})", c.unexpected.size(), join(c.unexpected, ", ")));
   }
+  if (!c.fixes_not_accepted.empty()) {
+    problems.push_back(fmt::format("{} fixed ({}: recorded as a finding, now holds; --accept-fixes accepts a fix)", c.fixes_not_accepted.size(),
+                                   join(c.fixes_not_accepted, ", ")));
+  }
   if (!e.failed.empty()) {
     problems.push_back(fmt::format("{} expectation{} failed ({})", e.failed.size(), e.failed.size() == 1 ? "" : "s", join(e.failed, ", ")));
   }
@@ -177,6 +187,7 @@ std::string summary_line(const run_record& r) {
   const std::string ending = c.faults           ? std::string("no verdict on the run: a harness fault")
                              : !problems.empty() ? join(problems, "; ")
                              : r.validation      ? std::string(e.total == 0 ? "every claim holds" : "every claim and expectation holds")
+                             : !c.fixed.empty()  ? fmt::format("all verdicts as expected, {} fixed, fixes accepted ({})", c.fixed.size(), join(c.fixed, ", "))
                                                  : std::string("all verdicts as expected");
   return fmt::format("{} {}: {} held, {} errata, {} failed{}{}{}{}{}{}{}{}; {}", r.outcomes.size(), r.outcomes.size() == 1 ? "claim" : "claims",
                      c.held, c.errata, c.failed,
@@ -260,6 +271,12 @@ std::string expectation_line(const run_record& r) {
       why = fmt::format("{} verdict{} differ{} from the expected one ({}): either {} or the harness changed", c.unexpected.size(),
                         c.unexpected.size() == 1 ? "" : "s", c.unexpected.size() == 1 ? "s" : "", judgment, changed);
     }
+    if (!c.fixes_not_accepted.empty()) {
+      why += (why.empty() ? "" : "; ") + fmt::format("{} finding{} of the record now hold{} ({}): a fix of {}, which a guard reports as a "
+                                                     "change (--accept-fixes accepts fixes); see Fixed",
+                                                     c.fixes_not_accepted.size(), c.fixes_not_accepted.size() == 1 ? "" : "s",
+                                                     c.fixes_not_accepted.size() == 1 ? "s" : "", join(c.fixes_not_accepted, ", "), changed);
+    }
     if (rejected) why += (why.empty() ? "" : "; ") + std::string("coqc rejected a certificate");
     if (!failed.empty()) {
       why += (why.empty() ? "" : "; ") + fmt::format("{} expectation{} of the experiments failed ({})", failed.size(), failed.size() == 1 ? "" : "s",
@@ -293,6 +310,8 @@ json summary_json(const run_record& r) {
           {"coq_exported", c.coq_exported}, {"coq_checked", c.coq_checked},
           {"unexpected", c.unexpected}, {"failed_expectations", failed_expectations(r)},
           {"expectations", count_expectations(r).total},
+          {"fixed", c.fixed},
+          {"fixes_accepted", r.run_scene.accept_fixes},
           {"exit_code", run_exit_code(r)},
           {"mode", r.validation ? "validation" : "regression"}};
 }
@@ -350,6 +369,7 @@ json report_json(const run_record& r, const plot_outcome& plots) {
                {"finding", to_string(finding_of(o))}};
     if (!cause_of(o).empty()) entry["follows_from"] = cause_of(o);
     if (!o.content_changed.empty()) entry["content_changed"] = o.content_changed;
+    if (o.fixed) entry["fixed"] = true;
     if (c.typographical) entry["typographical"] = true;
     if (!o.result.correction.empty()) entry["correction"] = o.result.correction;
     if (!o.result.note.empty()) entry["note"] = o.result.note;
@@ -687,13 +707,22 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
   md += "## Unverifiable\n\nClaims about material the source does not carry (a figure, a reference): no verdict on the words is "
         "possible; what the harness computed beside them is context.\n\n" + section_of(verdict::unverifiable);
 
+  bool any_fix = false;
+  std::string fixes;
+  for (const claim_outcome& o : r.outcomes) {
+    if (!o.fixed) continue;
+    any_fix = true;
+    fixes += fmt::format("- **{}** (§{}): recorded as {}, now **holds**{}.\n", o.checked->id, o.checked->section, to_string(o.expected),
+                         o.fix_accepted ? " (accepted: --accept-fixes)" : ": a change of the paper; the exit code is 1 unless --accept-fixes accepts fixes");
+  }
+  if (any_fix) md += "## Fixed\n\nFindings of the record that the checked text no longer has.\n\n" + fixes + "\n";
   md += "## Failures\n\n";
   bool any_failure = false;
   for (const claim_outcome& o : r.outcomes) {
     const bool failed = o.result.outcome == verdict::fails || o.result.outcome == verdict::kernels_disagree ||
                         o.result.outcome == verdict::text_changed || o.result.outcome == verdict::undecided ||
                         o.result.outcome == verdict::unproved;
-    if (!failed && outcome_as_expected(o)) continue;  // also a holds or erratum not as expected
+    if (o.fixed || (!failed && outcome_as_expected(o))) continue;  // also a holds or erratum not as expected; fixes apart
     any_failure = true;
     const std::string why = o.result.evidence.contains("error")
                                 ? "its check threw, a bug in the harness: " + o.result.evidence["error"].get<std::string>()

@@ -89,6 +89,12 @@ run_record run(const scene& s, std::shared_ptr<const claim_book> book, const pap
         outcome.result.correction != c.expected_correction && s.expected_overrides.find(c.id) == s.expected_overrides.end()) {
       outcome.content_changed = correction_change(c.expected_correction, outcome.result.correction);
     }
+    // A finding of the record that now holds: fixed (the ledger's expectation, not an override).
+    if (outcome.result.outcome == verdict::holds && (outcome.expected == verdict::erratum || outcome.expected == verdict::fails) &&
+        s.expected_overrides.find(c.id) == s.expected_overrides.end()) {
+      outcome.fixed = true;
+      outcome.fix_accepted = s.accept_fixes;
+    }
     r.outcomes.push_back(std::move(outcome));
     if (progress) progress(k, s.claims.size(), c, &r.outcomes.back());
   }

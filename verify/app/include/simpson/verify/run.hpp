@@ -26,11 +26,17 @@ struct claim_outcome {
   /// An expected erratum whose correction is not the recorded one (a new error inside an old
   /// erratum): what changed, the recorded and the new correction around where they differ.
   std::string content_changed;
+  /// Recorded as a finding (erratum or fails), and it now holds: a fix of the paper, reported apart
+  /// from failures; `fix_accepted` when the run accepts fixes (--accept-fixes).
+  bool fixed = false;
+  bool fix_accepted = false;
 };
 
 /// Whether an outcome is the one its record expects: its verdict, and for an erratum whose record
 /// recorded its correction, that correction. The one rule every report and the exit code use.
-inline bool outcome_as_expected(const claim_outcome& o) { return o.content_changed.empty() && as_expected(o.result.outcome, o.expected); }
+inline bool outcome_as_expected(const claim_outcome& o) {
+  return o.content_changed.empty() && (as_expected(o.result.outcome, o.expected) || o.fix_accepted);
+}
 
 /// The finding a claim's outcome is counted under: its derived cause, or the one its record types.
 inline const std::string& cause_of(const claim_outcome& o) { return o.consequence_of.empty() ? o.checked->follows_from : o.consequence_of; }

@@ -41,6 +41,9 @@ struct scene {
   unsigned enclosure_budget_digits = 640;
   std::uint64_t seed = default_seed;
   std::map<std::string, verdict> expected_overrides;
+  /// --accept-fixes: a claim recorded as a finding (erratum, fails) that now holds is a fix, and a
+  /// fix passes (an author's pipeline); without it a fix is a change, and the run fails (a guard's).
+  bool accept_fixes = false;
   experiment_settings experiments;
   /// The paper's source the formula claims read: empty for the embedded copy, else a file.
   std::string paper_file;
