@@ -276,7 +276,7 @@ check "claims file, incomplete record" 2 --claims-file "$work/incomplete.toml" -
 for k in 1 2 3 4; do [ -e "$work/none-claims$k" ] && fail "bad claims file wrote $work/none-claims$k"; done
 awk 'BEGIN{p=0} /^id = "phi3-det"/{p=1} p && /^expected = "holds"/{sub(/holds/, "erratum\"\nfinding = \"erratum"); p=0} {print}' "$claims_src" >"$work/phi3-erratum.toml"
 check "claims file read" 1 --claims-file "$work/phi3-erratum.toml" --scene quick --claims phi3-det --out "$work/claims-file"
-grep -q "phi3-det: verdict holds, expected erratum" "$work/err" || fail "claims file read: expectation not from the file: $(cat "$work/err")"
+grep -q "phi3-det: fixed: recorded as erratum, now holds" "$work/err" || fail "claims file read: expectation not from the file: $(cat "$work/err")"
 # A note the harness has never seen, checked from its claims file alone: its four deliberate
 # errors are errata with corrections (exit 0: as the file expects); --validate judges them failures.
 note_dir="$(dirname "$0")/notes"
@@ -359,9 +359,13 @@ corrected_claims=(taylor-display classical-action-range simpson-action-range)
 check "corrected paper" 1 --claims "$(IFS=,; echo "${corrected_claims[*]}"),phi3-det" \
     --precisions double,rational --paper "$work/corrected.tex" --out "$work/corrected"
 for id in "${corrected_claims[@]}"; do
-  grep -q "$id: verdict holds, expected erratum" "$work/err" || fail "corrected paper: $id not named: $(cat "$work/err")"
+  grep -q "$id: fixed: recorded as erratum, now holds" "$work/err" || fail "corrected paper: $id not named: $(cat "$work/err")"
 done
-grep -q "phi3-det: verdict" "$work/err" && fail "corrected paper: phi3-det named"
+grep -q "phi3-det: " "$work/err" && fail "corrected paper: phi3-det named"
+# An author's pipeline accepts the fixes: the same run passes.
+check "corrected paper, fixes accepted" 0 --accept-fixes --claims "$(IFS=,; echo "${corrected_claims[*]}"),phi3-det" \
+    --precisions double,rational --paper "$work/corrected.tex" --quiet --out "$work/corrected-accepted"
+grep -q "fixes accepted" "$work/out" || fail "corrected paper, fixes accepted: not said: $(cat "$work/out")"
 # Judged by whether each claim holds (--validate), the corrected copy passes: a correct fix is exit 0,
 # and the printed paper's errata are exit 1. (The typos whose claims are cheap: each run here costs a
 # few seconds under the sanitizers; the corrected Gamma is checked by "corrected paper" above.)
