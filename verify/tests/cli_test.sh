@@ -443,6 +443,15 @@ sed 's/"verdict": "erratum"/"verdict": "holds"/' "$reference/report.json" >"$wor
 check "compare altered" 1 compare "$reference" "$work/altered-report"
 grep -q '^claim gamma-system: verdict: "erratum" → "holds"$' "$work/out" || fail "compare altered: claim not named: $(head -12 "$work/out")"
 check "compare missing" 2 compare "$reference" "$work/no-such-report"
+# compare for a CI's test view: --junit writes a failing testcase per difference, --format json the
+# differences as data; a JUnit file that cannot be written is bad input, and nothing is left behind.
+check "compare --junit" 1 compare "$reference" "$work/altered-report" --junit "$work/compare.junit.xml" --format json
+python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert not d['agree'] and any(x['where'] == 'claim gamma-system: verdict' for x in d['differences'])" "$work/out" ||
+  fail "compare --format json: not the differences: $(head -5 "$work/out")"
+grep -q 'testcase classname="compare" name="claim gamma-system: verdict"><failure type="difference"' "$work/compare.junit.xml" ||
+  fail "compare --junit: no failing testcase for the changed verdict"
+check "compare --junit, cannot write" 2 compare "$reference" "$reference" --junit "$work/no-such-dir/compare.xml"
+[ -e "$work/no-such-dir/compare.xml.partial" ] && fail "compare --junit left a partial file"
 check "list claims" 0 --list-claims
 check "version" 0 --version
 grep -Eq '^simpson-verify [0-9]+\.[0-9]+\.[0-9]+ \(commit ([0-9a-f]{40}|unknown), ' "$work/out" || fail "version: no commit: $(cat "$work/out")"

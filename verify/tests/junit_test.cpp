@@ -2,6 +2,7 @@
 
 #include <simpson/verify/junit.hpp>
 #include <simpson/verify/report.hpp>
+#include <simpson/verify/report_compare.hpp>
 #include <simpson/verify/scene.hpp>
 
 #include <boost/property_tree/ptree.hpp>
@@ -10,6 +11,8 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <set>
 #include <cstdlib>
 #include <map>
 #include <sstream>
@@ -227,6 +230,35 @@ TEST(JUnit, EveryPlaceThatSummarisesARunAgreesWithItsExitCode) {
   EXPECT_EQ(validation.find("every claim"), std::string::npos) << validation;
   EXPECT_NE(validation.find("1 not holding (phi3-det)"), std::string::npos) << validation;
   EXPECT_NE(validation.find("1 expectation failed"), std::string::npos) << validation;
+}
+
+// `compare --junit`: a failing testcase per difference, named by its place, in XML a CI parses; one
+// passing testcase when the reports agree. `--format json`: the same as data.
+TEST(JUnit, ACompareOfTwoReportsIsATestSuiteOfItsDifferences) {
+  const json reference = load_report(std::filesystem::path(SIMPSON_SOURCE_DIR) / "reports" / "reference" / "paper");
+  json changed = reference;
+  for (json& c : changed["claims"]) {
+    if (c["id"] == "phi3-det") c["verdict"] = "fails";
+    if (c["id"] == "gamma-system") c["correction"] = "entry (3, 3) is <less> & \"more\"";
+  }
+  const report_comparison found = compare_reports(reference, changed);
+  ASSERT_EQ(found.differences.size(), 2u);
+  const boost::property_tree::ptree tree = parsed(comparison_junit(found, "old", "new"));
+  EXPECT_EQ(tree.get<std::size_t>("testsuites.<xmlattr>.failures"), 2u);
+  std::set<std::string> names;
+  for (const auto& [tag, testcase] : tree.get_child("testsuites.testsuite")) {
+    if (tag != "testcase") continue;
+    names.insert(testcase.get<std::string>("<xmlattr>.name"));
+    EXPECT_EQ(testcase.get<std::string>("failure.<xmlattr>.type"), "difference");
+  }
+  EXPECT_EQ(names, (std::set<std::string>{"claim phi3-det: verdict", "claim gamma-system: correction"}));
+  const json as_data = comparison_json(found, "old", "new");
+  EXPECT_FALSE(as_data["agree"].get<bool>());
+  EXPECT_EQ(as_data["differences"][0]["where"], "claim phi3-det: verdict");
+
+  const boost::property_tree::ptree agree = parsed(comparison_junit(compare_reports(reference, reference), "old", "new"));
+  EXPECT_EQ(agree.get<std::size_t>("testsuites.<xmlattr>.failures"), 0u);
+  EXPECT_EQ(agree.get<std::string>("testsuites.testsuite.testcase.<xmlattr>.name"), "the reports agree");
 }
 
 // A check that throws is an error of its testcase (exit code 3).

@@ -15,9 +15,9 @@ int list_claims(const claim_book& book, const std::string& format);
 int list_scenes();
 int list_precisions();
 
-/// `simpson-verify compare OLD NEW`: 0 when the reports agree, 1 on a difference (one line each), 2
-/// on bad input.
-int compare_report_directories(const std::string& old_dir, const std::string& new_dir, bool quiet, bool subset);
+/// `simpson-verify compare OLD NEW [--subset] [--junit FILE] [--format json]`: 0 when the reports
+/// agree, 1 on a difference (one line each), 2 on bad input.
+int compare_report_directories(const cli_options& o);
 
 /// A run of a scene (or a list asked for): the exit code of simpson-verify.
 int run_command(cli_options& o, const CLI::App& app, int argc, char** argv);

@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <cstdio>
 #include <set>
 #include <string>
@@ -16,7 +18,12 @@ namespace simpson::verify {
 
 /// `simpson-verify compare OLD NEW`: 0 when the reports agree, 1 on a difference (one line each), 2
 /// on bad input.
-int compare_report_directories(const std::string& old_dir, const std::string& new_dir, bool quiet, bool subset) {
+int compare_report_directories(const cli_options& o) {
+  const std::string& old_dir = o.compare_old;
+  const std::string& new_dir = o.compare_new;
+  const bool subset = o.compare_subset;
+  const bool json_out = o.compare_format == "json";
+  const bool quiet = o.quiet || json_out;
   json old_report, new_report;
   try {
     old_report = load_report(old_dir);
@@ -46,6 +53,24 @@ int compare_report_directories(const std::string& old_dir, const std::string& ne
                                     new_report.value("experiments", json::object()).size())
                       : std::string());
     for (const std::string& line : comparison_tolerances()) fmt::print("  - {}\n", line);
+  }
+  if (!o.compare_junit.empty()) {
+    // Written whole or not at all: a temporary file beside it, renamed into place.
+    const std::filesystem::path target(o.compare_junit), temporary = target.string() + ".partial";
+    std::ofstream out(temporary, std::ios::binary);
+    out << comparison_junit(found, old_dir, new_dir);
+    out.close();
+    std::error_code renamed;
+    if (out) std::filesystem::rename(temporary, target, renamed);
+    if (!out || renamed) {
+      std::filesystem::remove(temporary, renamed);
+      std::fprintf(stderr, "simpson-verify: compare --junit '%s': cannot be written\n", o.compare_junit.c_str());
+      return 2;
+    }
+  }
+  if (json_out) {
+    fmt::print("{}\n", comparison_json(found, old_dir, new_dir).dump(2));
+    return differences.empty() ? 0 : 1;
   }
   for (const std::string& line : found.notes) fmt::print("note: {}\n", line);
   for (const std::string& line : differences) fmt::print("{}\n", line);

@@ -40,6 +40,11 @@ void declare_options(CLI::App& app, cli_options& o) {
   o.compare->add_option("new", o.compare_new, "the report directory to check (or its report.json)");
   o.compare->add_flag("--subset", o.compare_subset,
                     "compare only the claims and sections of NEW (a run of a selection) with those of OLD (a fuller report)");
+  o.compare->add_option("--junit", o.compare_junit,
+                         "also write the differences as JUnit XML to FILE (a failing testcase each; one passing testcase when the "
+                         "reports agree), for a CI's test view");
+  o.compare->add_option("--format", o.compare_format, "text (one line per difference) or json (the differences and notes as one JSON document)")
+      ->check(CLI::IsMember({"text", "json"}));
   o.compare->fallthrough();
   app.add_option("--precisions", o.precision_names,
                  "comma-separated precisions of the claims' rechecks and of the sections work_precision and stability "

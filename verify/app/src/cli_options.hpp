@@ -17,7 +17,7 @@ struct cli_options {
   bool accept_fixes = false;
   std::string list_format = "text";
   CLI::App* compare = nullptr;  // the `compare` subcommand
-  std::string compare_old, compare_new;
+  std::string compare_old, compare_new, compare_junit, compare_format = "text";
   bool compare_subset = false;
 };
 

@@ -28,7 +28,7 @@ int main(int argc, char** argv) {
                    "then NEW, the run to check\n");
       return 2;
     }
-    return compare_report_directories(o.compare_old, o.compare_new, o.quiet, o.compare_subset);
+    return compare_report_directories(o);
   }
   return run_command(o, app, argc, argv);
 }

@@ -1,6 +1,7 @@
 #include <simpson/verify/report_compare.hpp>
 
 #include <simpson/precision.hpp>
+#include <simpson/verify/report_html.hpp>
 #include <simpson/verify/utf8_text.hpp>
 
 #include <fmt/format.h>
@@ -329,6 +330,49 @@ report_comparison compare_report_subset(const json& given_old, const json& given
   compare_claims(a.value("claims", json::array()), b.value("claims", json::array()), result, true);
   compare_sections(a.value("experiments", json::object()), b.value("experiments", json::object()), out, true, timing_differs);
   return result;
+}
+
+namespace {
+
+/// A difference's place and what changed: "claim phi3-det: verdict: ..." is place "claim
+/// phi3-det: verdict" and the rest what changed (a claim's line names the claim, then the field);
+/// any other line's place is up to its first ": ".
+std::pair<std::string, std::string> place_and_change(const std::string& line) {
+  std::size_t cut = line.find(": ");
+  if (line.rfind("claim ", 0) == 0 && cut != std::string::npos) cut = line.find(": ", cut + 2);
+  if (cut == std::string::npos) return {line, line};
+  return {line.substr(0, cut), line.substr(cut + 2)};
+}
+
+}  // namespace
+
+std::string comparison_junit(const report_comparison& found, const std::string& old_name, const std::string& new_name) {
+  std::string notes;
+  for (const std::string& n : found.notes) notes += "note: " + n + "\n";
+  const std::size_t tests = std::max<std::size_t>(1, found.differences.size());
+  std::string xml = fmt::format("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"simpson-verify compare\" tests=\"{}\" failures=\"{}\">\n"
+                                "  <testsuite name=\"compare\" tests=\"{}\" failures=\"{}\">\n"
+                                "    <properties><property name=\"old\" value=\"{}\"/><property name=\"new\" value=\"{}\"/></properties>\n",
+                                tests, found.differences.size(), tests, found.differences.size(), markup_escaped(old_name), markup_escaped(new_name));
+  if (found.differences.empty()) {
+    xml += fmt::format("    <testcase classname=\"compare\" name=\"the reports agree\"><system-out>{}</system-out></testcase>\n", markup_escaped(notes));
+  }
+  for (const std::string& line : found.differences) {
+    const auto [place, change] = place_and_change(line);
+    xml += fmt::format("    <testcase classname=\"compare\" name=\"{}\"><failure type=\"difference\" message=\"{}\">{}</failure></testcase>\n",
+                       markup_escaped(place), markup_escaped(change), markup_escaped(line));
+  }
+  if (!notes.empty()) xml += "    <system-out>" + markup_escaped(notes) + "</system-out>\n";
+  return xml + "  </testsuite>\n</testsuites>\n";
+}
+
+json comparison_json(const report_comparison& found, const std::string& old_name, const std::string& new_name) {
+  json differences = json::array();
+  for (const std::string& line : found.differences) {
+    const auto [place, change] = place_and_change(line);
+    differences.push_back({{"where", place}, {"what", change}});
+  }
+  return {{"old", old_name}, {"new", new_name}, {"agree", found.differences.empty()}, {"differences", differences}, {"notes", found.notes}};
 }
 
 json load_report(const std::filesystem::path& given) {

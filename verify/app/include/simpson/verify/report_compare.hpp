@@ -46,6 +46,14 @@ report_comparison compare_reports(const json& old_report, const json& new_report
 /// leaves out is not.
 report_comparison compare_report_subset(const json& old_report, const json& new_report);
 
+/// The comparison as JUnit XML, for a CI's test view: a testsuite "compare", a failing testcase per
+/// difference (named by its place: "claim phi3-det: verdict"), the notes in <system-out>; one
+/// passing testcase when the reports agree.
+std::string comparison_junit(const report_comparison& found, const std::string& old_name, const std::string& new_name);
+
+/// The comparison as JSON: {"old", "new", "agree", "differences": [{"where", "what"}], "notes"}.
+json comparison_json(const report_comparison& found, const std::string& old_name, const std::string& new_name);
+
 /// report.json of a report directory (or the file itself). Throws std::invalid_argument naming the
 /// path when it is missing or is not a simpson-verify report.
 json load_report(const std::filesystem::path& dir_or_file);
