@@ -10,22 +10,25 @@
 #include <simpson/verify/junit.hpp>
 #include <simpson/verify/ledger.hpp>
 #include <simpson/verify/report.hpp>
+#include <simpson/verify/report_compare.hpp>
 #include <simpson/verify/run.hpp>
 #include <simpson/verify/scene.hpp>
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <memory>
 #include <string>
 
 namespace simpson::verify {
 namespace {
 
-run_record run_on(const std::string& id, const paper_source& paper, bool accept_fixes = false) {
+run_record run_on(const std::string& id, const paper_source& paper, bool accept_fixes = false, const json* baseline = nullptr) {
   scene s = load_scene("quick");
   s.claims = {id};
   s.experiments = {};
   s.accept_fixes = accept_fixes;
+  if (baseline) apply_baseline(s, *baseline, "reference");
   auto book = std::make_shared<claim_book>(paper_book());
   const paper_reading reading = read_paper(paper);
   check_claims_file_formulas(*book, reading.source);
@@ -106,6 +109,29 @@ TEST(ErratumContent, AFixIsReportedAsFixedAndPassesWhenAccepted) {
   const run_record worse =
       run_on("gamma-system", altered("the following homogeneous linear system", "& \\alpha \\, \\gamma &", "& 2 \\, \\alpha \\, \\gamma &"), true);
   EXPECT_EQ(run_exit_code(worse), 1);
+}
+
+// --baseline REPORT: nothing may get worse than that report. Against the committed reference, the
+// printed paper passes, a fix passes, and a second error in Gamma or a new failure of det Phi_3
+// fails.
+TEST(ErratumContent, NothingMayGetWorseThanABaseline) {
+  const json reference = load_report(std::filesystem::path(SIMPSON_SOURCE_DIR) / "reports" / "reference" / "paper");
+  EXPECT_EQ(run_exit_code(run_on("gamma-system", embedded_paper(), false, &reference)), 0);
+  const run_record fixed =
+      run_on("gamma-system", altered("the following homogeneous linear system", "{{\\gamma^2-1}\\over2}", "{{\\delta^2-1}\\over2}"), false, &reference);
+  EXPECT_TRUE(fixed.outcomes[0].fixed);
+  EXPECT_EQ(run_exit_code(fixed), 0);
+  const run_record worse =
+      run_on("gamma-system", altered("the following homogeneous linear system", "& \\alpha \\, \\gamma &", "& 2 \\, \\alpha \\, \\gamma &"), false, &reference);
+  EXPECT_FALSE(worse.outcomes[0].content_changed.empty());
+  EXPECT_EQ(run_exit_code(worse), 1);
+  const run_record broken = run_on("phi3-det", altered("\\label{Phi3}", "{11\\over24}", "{13\\over24}"), false, &reference);
+  EXPECT_EQ(broken.outcomes[0].result.outcome, verdict::fails);
+  EXPECT_EQ(run_exit_code(broken), 1);
+  json no_claims = reference;
+  no_claims.erase("claims");
+  scene s = load_scene("quick");
+  EXPECT_THROW(apply_baseline(s, no_claims, "x"), std::invalid_argument);
 }
 
 // Only an expected erratum records a correction: on another record it is bad input, named.

@@ -83,6 +83,10 @@ void declare_options(CLI::App& app, cli_options& o) {
                "a claim recorded as a finding (erratum, fails) that now holds is a fix, and passes: an author's pipeline (without "
                "it a fix is a change, exit 1: a guard's pipeline)")
       ->excludes("--validate");
+  app.add_option("--baseline", o.baseline,
+                 "a report directory (or its report.json): nothing may get worse than it. Each claim it judged is expected to "
+                 "keep its verdict there, an erratum its correction there; fixes pass (implies --accept-fixes)")
+      ->excludes("--validate");
   app.add_flag("--list-scenes", o.want_scenes, "list the embedded scenes and exit");
   app.add_flag("--list-precisions", o.want_precisions, "list the precisions and exit");
   app.add_flag("--list-holes", o.want_holes,

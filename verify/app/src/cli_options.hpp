@@ -15,6 +15,7 @@ struct cli_options {
   bool want_claims = false, want_scenes = false, want_precisions = false, want_holes = false, want_core = false;
   bool allow_expensive = false, long_run = false, quiet = false, no_timing = false, certify = false, no_certify = false, validate = false;
   bool accept_fixes = false;
+  std::string baseline;
   std::string list_format = "text";
   CLI::App* compare = nullptr;  // the `compare` subcommand
   std::string compare_old, compare_new, compare_junit, compare_format = "text";

@@ -12,6 +12,7 @@
 #include <simpson/verify/output_location.hpp>
 #include <simpson/verify/progress.hpp>
 #include <simpson/verify/report.hpp>
+#include <simpson/verify/report_compare.hpp>
 #include <simpson/verify/scene.hpp>
 #include <simpson/verify/selection.hpp>
 #include <simpson/verify/sentence_holes.hpp>
@@ -128,6 +129,7 @@ std::optional<int> prepare_run(cli_options& o, const CLI::App& app, int argc, ch
       s.accept_fixes = true;
       s.overrides["accept_fixes"] = true;
     }
+    if (!o.baseline.empty()) apply_baseline(s, load_report(o.baseline), o.baseline);  // a report that does not load: bad input
     if (o.validate) {
       for (const std::string& id : s.claims) s.expected_overrides[id] = verdict::holds;
       s.overrides["validate"] = true;

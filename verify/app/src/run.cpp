@@ -16,6 +16,8 @@
 #include <fmt/ranges.h>
 
 #include <chrono>
+#include <map>
+#include <optional>
 #include <cstdlib>
 #include <exception>
 
@@ -41,6 +43,28 @@ run_record run(const scene& s, const progress_callback& progress,
   auto book = std::make_shared<claim_book>(paper_book());
   const paper_reading paper = read_scene_paper(s, *book);
   return run(s, std::move(book), paper, progress, section_progress);
+}
+
+void apply_baseline(scene& s, const json& baseline, const std::string& name) {
+  std::map<std::string, const json*> judged;
+  if (!baseline.contains("claims") || !baseline.at("claims").is_array()) throw std::invalid_argument("--baseline '" + name + "': no claims");
+  for (const json& c : baseline.at("claims")) judged[c.value("id", "")] = &c;
+  for (const std::string& id : s.claims) {
+    const auto it = judged.find(id);
+    if (it == judged.end()) continue;  // a claim the baseline did not judge keeps its record's expectation
+    const std::string word = it->second->value("verdict", "");
+    std::optional<verdict> v;
+    for (const verdict candidate : {verdict::holds, verdict::erratum, verdict::fails, verdict::kernels_disagree, verdict::text_changed,
+                                    verdict::undecided, verdict::unproved, verdict::skipped, verdict::unverifiable}) {
+      if (to_string(candidate) == word) v = candidate;
+    }
+    if (!v) throw std::invalid_argument("--baseline '" + name + "': claim " + id + " has no verdict ('" + word + "')");
+    s.expected_overrides[id] = *v;
+    if (*v == verdict::erratum) s.baseline_corrections[id] = it->second->value("correction", "");
+  }
+  s.baseline = name;
+  s.accept_fixes = true;
+  s.overrides["baseline"] = name;
 }
 
 std::string correction_change(const std::string& recorded, const std::string& now) {
@@ -85,13 +109,19 @@ run_record run(const scene& s, std::shared_ptr<const claim_book> book, const pap
       r.internal_errors.push_back(c.id + ": " + e.what());
     }
     outcome.seconds = std::chrono::duration<double>(clock::now() - claim_start).count();
-    if (outcome.expected == verdict::erratum && outcome.result.outcome == verdict::erratum && !c.expected_correction.empty() &&
-        outcome.result.correction != c.expected_correction && s.expected_overrides.find(c.id) == s.expected_overrides.end()) {
-      outcome.content_changed = correction_change(c.expected_correction, outcome.result.correction);
+    // The erratum's content: the record's correction, or the baseline's (--baseline).
+    const bool overridden = s.expected_overrides.find(c.id) != s.expected_overrides.end();
+    const auto from_baseline = s.baseline_corrections.find(c.id);
+    const std::string recorded = from_baseline != s.baseline_corrections.end() ? from_baseline->second
+                                 : overridden                                  ? std::string()
+                                                                               : c.expected_correction;
+    if (outcome.expected == verdict::erratum && outcome.result.outcome == verdict::erratum && !recorded.empty() &&
+        outcome.result.correction != recorded) {
+      outcome.content_changed = correction_change(recorded, outcome.result.correction);
     }
     // A finding of the record that now holds: fixed (the ledger's expectation, not an override).
     if (outcome.result.outcome == verdict::holds && (outcome.expected == verdict::erratum || outcome.expected == verdict::fails) &&
-        s.expected_overrides.find(c.id) == s.expected_overrides.end()) {
+        (!overridden || !s.baseline.empty())) {
       outcome.fixed = true;
       outcome.fix_accepted = s.accept_fixes;
     }

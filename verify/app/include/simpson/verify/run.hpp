@@ -93,6 +93,11 @@ paper_reading read_scene_paper(const scene& s, claim_book& book);
 /// True when every verdict equals its expected verdict.
 bool all_as_expected(const run_record& r);
 
+/// --baseline: each of the scene's claims that `baseline` (a report.json) judged is expected to keep
+/// its verdict there, an erratum its correction there, and fixes pass. Throws std::invalid_argument
+/// naming `name` when a verdict there is not one.
+void apply_baseline(scene& s, const json& baseline, const std::string& name);
+
 /// What changed between an erratum's recorded correction and the one a run proved, each shown
 /// around where they first differ (cut between UTF-8 characters).
 std::string correction_change(const std::string& recorded, const std::string& now);

@@ -44,6 +44,11 @@ struct scene {
   /// --accept-fixes: a claim recorded as a finding (erratum, fails) that now holds is a fix, and a
   /// fix passes (an author's pipeline); without it a fix is a change, and the run fails (a guard's).
   bool accept_fixes = false;
+  /// --baseline REPORT: each claim the baseline judged is expected to have its verdict there (in
+  /// expected_overrides), an erratum its correction there (baseline_corrections), and fixes pass:
+  /// nothing may get worse than that report. Empty: no baseline.
+  std::string baseline;
+  std::map<std::string, std::string> baseline_corrections;
   experiment_settings experiments;
   /// The paper's source the formula claims read: empty for the embedded copy, else a file.
   std::string paper_file;
