@@ -261,6 +261,20 @@ TEST(JUnit, ACompareOfTwoReportsIsATestSuiteOfItsDifferences) {
   EXPECT_EQ(agree.get<std::string>("testsuites.testsuite.testcase.<xmlattr>.name"), "the reports agree");
 }
 
+// The smallest endpoint_power a scene may ask for (10^6, scene.cpp) decides every endpoint
+// expectation: the refusal below it is not a guess. 10^3, the old minimum, did not.
+TEST(JUnit, TheSmallestEndpointPowerAllowedDecidesEveryExpectation) {
+  scene s = load_scene("quick");
+  s.claims.clear();
+  s.experiments = {};
+  s.experiments.stability = load_scene("quick").experiments.stability;
+  s.experiments.stability->endpoint_power = 1000000;
+  const run_record r = run(s);
+  EXPECT_TRUE(failed_expectations(r).empty()) << ::testing::PrintToString(failed_expectations(r));
+  s.experiments.stability->endpoint_power = 1000;
+  EXPECT_FALSE(failed_expectations(run(s)).empty());  // why the minimum is not 1000
+}
+
 // A check that throws is an error of its testcase (exit code 3).
 TEST(JUnit, AThrowingCheckIsAnError) {
   scene s = load_scene("quick");

@@ -53,11 +53,7 @@ void apply_baseline(scene& s, const json& baseline, const std::string& name) {
     const auto it = judged.find(id);
     if (it == judged.end()) continue;  // a claim the baseline did not judge keeps its record's expectation
     const std::string word = it->second->value("verdict", "");
-    std::optional<verdict> v;
-    for (const verdict candidate : {verdict::holds, verdict::erratum, verdict::fails, verdict::kernels_disagree, verdict::text_changed,
-                                    verdict::undecided, verdict::unproved, verdict::skipped, verdict::unverifiable}) {
-      if (to_string(candidate) == word) v = candidate;
-    }
+    const std::optional<verdict> v = verdict_of_name(word);
     if (!v) throw std::invalid_argument("--baseline '" + name + "': claim " + id + " has no verdict ('" + word + "')");
     s.expected_overrides[id] = *v;
     if (*v == verdict::erratum) s.baseline_corrections[id] = it->second->value("correction", "");

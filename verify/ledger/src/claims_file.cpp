@@ -15,10 +15,7 @@ namespace {
 int line_of(const toml::node& node) { return static_cast<int>(node.source().begin.line); }
 
 verdict verdict_named(const std::string& text, const std::string& file, int line) {
-  for (const verdict v : {verdict::holds, verdict::erratum, verdict::fails, verdict::kernels_disagree, verdict::text_changed,
-                          verdict::undecided, verdict::unproved, verdict::skipped, verdict::unverifiable}) {
-    if (to_string(v) == text) return v;
-  }
+  if (const std::optional<verdict> v = verdict_of_name(text)) return *v;
   throw claims_file_error(file, line, "expected", "'" + text + "' is not a verdict (holds, erratum, fails, unverifiable, ...)");
 }
 

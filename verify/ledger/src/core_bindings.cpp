@@ -137,7 +137,8 @@ claim_result bound_to_core(claim_result result, const std::vector<core_binding>&
       pair.printed = corrected->value.evalm();
       against = "as corrected by this claim";
     }
-    if (against == "as printed" && result.outcome == verdict::erratum && !differing_entries(pair.core, pair.printed).empty()) {
+    const std::vector<std::string> entries = differing_entries(pair.core, pair.printed);
+    if (against == "as printed" && result.outcome == verdict::erratum && !entries.empty()) {
       // The claim proves the printed formula wrong but gives no formula to stand in its place: the
       // core cannot be compared with what should be printed, and that is said, not counted.
       evidence.push_back({{"core", b.function},
@@ -146,7 +147,6 @@ claim_result bound_to_core(claim_result result, const std::vector<core_binding>&
                           {"not_compared", "this claim proves the printed formula wrong and gives no formula to stand in its place"}});
       continue;
     }
-    const std::vector<std::string> entries = differing_entries(pair.core, pair.printed);
     const kernel_decision own = kernel_decides_zero(kernel_difference(pair.core, pair.printed));
     const bool ginac_zero = entries.empty();
     json e = {{"core", b.function},

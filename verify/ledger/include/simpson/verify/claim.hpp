@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,15 @@ inline std::string to_string(verdict v) {
     case verdict::unverifiable: return "unverifiable";
   }
   return "?";
+}
+
+/// The verdict a report or a claims file spells `text` (to_string's spelling), or none.
+inline std::optional<verdict> verdict_of_name(const std::string& text) {
+  for (const verdict v : {verdict::holds, verdict::erratum, verdict::fails, verdict::kernels_disagree, verdict::text_changed,
+                          verdict::undecided, verdict::unproved, verdict::skipped, verdict::unverifiable}) {
+    if (to_string(v) == text) return v;
+  }
+  return std::nullopt;
 }
 
 /// Whether a verdict is the expected one for the run's exit code: equal, or skipped (a prover not
