@@ -310,6 +310,7 @@ grep -q "the symbol 'p_0' is not declared" "$work/err" || fail "a note, undeclar
 for k in 1 2 3 4; do [ -e "$work/none-note$k" ] && fail "a bad note run wrote $work/none-note$k"; done
 # The paper's source as an input (--paper, or the scene key "paper"): bad sources are bad input.
 paper_src="$(dirname "$0")/../paper/text/simpson-symplectic-gsi2023.tex"
+source "$(dirname "$0")/paper_copies.sh"
 check "paper missing" 2 --claims phi3-det --paper "$work/no-such.tex" --out "$work/none-paper1"
 grep -q "paper '$work/no-such.tex': missing or unreadable" "$work/err" || fail "paper missing: not named"
 echo 'Some other paper.' >"$work/other.tex"
@@ -341,17 +342,13 @@ grep -q "claims file" "$work/err" && fail "a ( never closed: a claims file blame
 for k in 5 6; do [ -e "$work/none-paper$k" ] && fail "bad paper wrote $work/none-paper$k"; done
 
 # A copy with one coefficient of p_r changed (omega^4 -> omega^6) turns momentum-order-3 into an erratum: exit 1.
-sed 's/{{m \\, \\omega^4}\\over48}/{{m \\, \\omega^6}\\over48}/' "$paper_src" >"$work/altered.tex"
-cmp -s "$paper_src" "$work/altered.tex" && fail "altered copy: sed changed nothing"
+new_error_copy "$paper_src" "$work/altered.tex" || fail "altered copy: sed changed nothing"
 check "altered paper" 1 --claims momentum-order-3,phi3-det --precisions double,rational --paper "$work/altered.tex" --out "$work/altered"
 grep -q "momentum-order-3: verdict erratum, expected holds" "$work/err" || fail "altered paper: claim not named: $(cat "$work/err")"
 echo "{\"name\": \"altered\", \"claims\": [\"momentum-order-3\"], \"precisions\": [\"double\"], \"paper\": \"$work/altered.tex\"}" >"$work/altered.json"
 check "scene key paper" 1 --scene "$work/altered.json" --out "$work/altered-scene"
 # A copy with the errata corrected: those claims now hold, so they differ from their expected verdicts (exit 1, named).
-sed -e 's/{{\\dd^6 q}\\over{\\dd t^5}}/{{\\dd^6 q}\\over{\\dd t^6}}/g' -e 's/\\sum_{j=1}^{N-1}/\\sum_{j=0}^{N-1}/' \
-    -e 's/{{\\gamma^2-1}\\over2}   \\end{pmatrix}/{{\\delta^2-1}\\over2} \\end{pmatrix}/' \
-    -e 's/{\\rm det} \\, \\Gamma = /{\\rm det} \\, \\Gamma = {1\\over4} \\, /' "$paper_src" >"$work/corrected.tex"
-[ "$(diff "$paper_src" "$work/corrected.tex" | grep -c "^>")" = 6 ] || fail "corrected copy: sed did not change six lines"
+corrected_copy "$paper_src" "$work/corrected.tex" || fail "corrected copy: sed did not change six lines"
 # Under the sanitizers the four claims on Gamma are left out here (about 12 s there): the same
 # corrections make them hold in PaperReading.ACopyWithTheErrataCorrectedMakesThemHold, which runs there too.
 corrected_claims=(taylor-display classical-action-range simpson-action-range)
