@@ -384,7 +384,84 @@ convention_candidate global_fit(const std::vector<printed_entry>& printed, const
   }
   return best;
 }
+/// Less complex first among candidates that reproduce as many entries; then the smaller worst residual.
+bool simpler(const convention_candidate& a, const convention_candidate& b) {
+  if (a.reproduced != b.reproduced) return a.reproduced > b.reproduced;
+  if (a.complexity != b.complexity) return a.complexity < b.complexity;
+  return a.worst < b.worst;
+}
+
+/// A fitted candidate's values named with the fewest significant digits (at least 4) at which the
+/// rounded values, run again, reproduce as many entries as the candidate: no printed value claims
+/// more than it does.
+void name_fitted_values(convention_candidate& c, const std::vector<printed_entry>& printed, const parametrised_experiment& experiment,
+                        std::size_t& evaluations) {
+  for (int digits = 4; digits <= 17; ++digits) {
+    parameter_values rounded;
+    std::map<std::string, std::string> names;
+    for (const auto& [name, value] : c.values) {
+      names[name] = fmt::format("{:.{}g}", value, digits);
+      rounded[name] = std::stod(names[name]);
+    }
+    if (digits == 17 || judged(printed, c.choice, rounded, experiment, evaluations).reproduced == c.reproduced) {
+      c.value_names = std::move(names);
+      return;
+    }
+  }
+}
+
 }  // namespace
+
+entry_miss miss_of(const printed_entry& printed, double computed) {
+  const double half = half_unit_of_last_digit(printed.value, printed.digits);
+  return {std::abs(computed - printed.value) - half, computed > printed.value ? printed.value + half : printed.value - half};
+}
+
+std::vector<convention_candidate> simple_hypotheses(const std::vector<printed_entry>& printed, const std::vector<discrete_convention>& discrete,
+                                                    const std::vector<continuous_parameter>& continuous, const simple_values& simple,
+                                                    const parametrised_experiment& experiment, std::size_t& evaluations) {
+  std::vector<convention_candidate> out;
+  if (simple.empty()) return out;
+  // Each parameter's list: its simple values, or its stated value alone.
+  std::vector<std::vector<simple_value>> lists;
+  for (const continuous_parameter& p : continuous) {
+    const auto it = simple.find(p.name);
+    if (it != simple.end() && !it->second.empty()) lists.push_back(it->second);
+    else lists.push_back({{fmt::format("{:g}", p.stated), p.stated}});
+  }
+  std::vector<std::size_t> d_index(discrete.size(), 0);
+  for (;;) {
+    convention_choice choice;
+    int departures = 0;
+    for (std::size_t k = 0; k < discrete.size(); ++k) {
+      choice[discrete[k].name] = discrete[k].options[d_index[k]];
+      departures += discrete[k].options[d_index[k]] == discrete[k].stated ? 0 : 1;
+    }
+    std::vector<std::size_t> v_index(lists.size(), 0);
+    for (;;) {
+      parameter_values values;
+      std::map<std::string, std::string> names;
+      int rank = 0;
+      for (std::size_t k = 0; k < lists.size(); ++k) {
+        values[continuous[k].name] = lists[k][v_index[k]].value;
+        names[continuous[k].name] = lists[k][v_index[k]].name;
+        rank += static_cast<int>(v_index[k]);
+      }
+      convention_candidate c = judged(printed, choice, values, experiment, evaluations);
+      c.value_names = std::move(names);
+      c.complexity = departures + rank;
+      out.push_back(std::move(c));
+      std::size_t k = 0;
+      while (k < lists.size() && ++v_index[k] == lists[k].size()) v_index[k++] = 0;
+      if (k == lists.size()) break;
+    }
+    std::size_t k = 0;
+    while (k < discrete.size() && ++d_index[k] == discrete[k].options.size()) d_index[k++] = 0;
+    if (k == discrete.size()) break;
+  }
+  std::stable_sort(out.begin(), out.end(), simpler);
+  return out;
+}
 
 bool convention_search_result::stated_reproduces() const { return stated.reproduced == stated.entries.size(); }
 
@@ -419,7 +496,7 @@ std::vector<entry_score> score_entries(const std::vector<printed_entry>& printed
 
 convention_search_result search_conventions(const std::vector<printed_entry>& printed, const std::vector<discrete_convention>& discrete,
                                             const std::vector<continuous_parameter>& continuous, const parametrised_experiment& experiment,
-                                            std::size_t scan_points) {
+                                            const simple_values& simple, std::size_t scan_points) {
   const auto start = std::chrono::steady_clock::now();
   convention_search_result result;
   convention_choice stated_choice;
@@ -432,6 +509,7 @@ convention_search_result search_conventions(const std::vector<printed_entry>& pr
     stated_values[p.name] = p.stated;
   }
   result.stated = judged(printed, stated_choice, stated_values, experiment, result.evaluations);
+  result.simple = simple_hypotheses(printed, discrete, continuous, simple, experiment, result.evaluations);
 
   std::vector<std::size_t> index(discrete.size(), 0);
   for (;;) {
@@ -467,6 +545,7 @@ convention_search_result search_conventions(const std::vector<printed_entry>& pr
       best.pinned[p.name] = interval;
     }
   }
+  for (std::size_t k = 0; k < result.tried.size() && k < 12; ++k) name_fitted_values(result.tried[k], printed, experiment, result.evaluations);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
@@ -474,7 +553,10 @@ convention_search_result search_conventions(const std::vector<printed_entry>& pr
 std::string describe(const convention_candidate& c) {
   std::vector<std::string> parts;
   for (const auto& [name, option] : c.choice) parts.push_back(fmt::format("{}: {}", name, option));
-  for (const auto& [name, value] : c.values) parts.push_back(fmt::format("{} = {:.4g}", name, value));
+  for (const auto& [name, value] : c.values) {
+    const auto named = c.value_names.find(name);
+    parts.push_back(named != c.value_names.end() ? fmt::format("{} = {}", name, named->second) : fmt::format("{} = {:.4g}", name, value));
+  }
   return fmt::format("{}", fmt::join(parts, "; "));
 }
 

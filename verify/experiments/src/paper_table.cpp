@@ -85,7 +85,7 @@ std::string table_not_reproduced(const printed_table_values& printed, const prin
     }
   }
   if (differ.empty()) return "Every published entry is reproduced within 5%.";
-  return fmt::format("Not reproduced under the stated conventions: {}; published over ours: {}. No parameter was tuned to match.",
+  return fmt::format("Under the stated conventions, with no parameter tuned: {}; published over ours: {}.",
                      agree.empty() ? "no row agrees within 5%"
                                    : fmt::format("{} {} within {:.1f}%", fmt::join(agree, ", "), agree.size() == 1 ? "agrees" : "agree",
                                                  100 * agree_worst),

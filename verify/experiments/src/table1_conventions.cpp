@@ -1,5 +1,7 @@
 #include <simpson/verify/table1_conventions.hpp>
 
+#include <fmt/format.h>
+
 namespace simpson::verify {
 
 namespace {
@@ -163,6 +165,99 @@ std::vector<continuous_parameter> table1_continuous_parameters() {
           {"phase", 0, boost::math::constants::two_pi<double>(), 0, false, false}};
 }
 
+namespace {
+
+/// A simple value exactly: (num/den) π^pi_power, and its name.
+struct exact_simple {
+  const char* name;
+  long num, den;
+  int pi_power;
+  double value() const { return double(num) / double(den) * std::pow(boost::math::constants::pi<double>(), pi_power); }
+};
+
+// q(t) = A sin(omega t + phase): phase 0 starts at q_0 = 0 (the stated sin), pi/2 at rest at q_0 = A
+// (a cos); the errors do not see the solution's sign, so pi and 3 pi/2 would repeat these. A = 1/(2 pi)
+// is the unit initial velocity (omega = 2 pi).
+const std::vector<exact_simple>& simple_masses() {
+  static const std::vector<exact_simple> list{{"1", 1, 1, 0}, {"2", 2, 1, 0}, {"1/2", 1, 2, 0}};
+  return list;
+}
+const std::vector<exact_simple>& simple_amplitudes() {
+  static const std::vector<exact_simple> list{{"1", 1, 1, 0}, {"π/2", 1, 2, 1}, {"π/4", 1, 4, 1}, {"2", 2, 1, 0},  {"1/2", 1, 2, 0},
+                                              {"π", 1, 1, 1}, {"3π/2", 3, 2, 1}, {"2π", 2, 1, 1}, {"1/(2π)", 1, 2, -1}};
+  return list;
+}
+
+}  // namespace
+
+simple_values table1_simple_values() {
+  std::vector<simple_value> m, amplitude;
+  for (const exact_simple& v : simple_masses()) m.push_back({v.name, v.value()});
+  for (const exact_simple& v : simple_amplitudes()) amplitude.push_back({v.name, v.value()});
+  return {{"m", m}, {"amplitude", amplitude}, {"phase", {{"0", 0}, {"π/2", boost::math::constants::half_pi<double>()}}}};
+}
+
+std::optional<exact_start> table1_exact_start(const convention_candidate& c) {
+  if (c.choice != table1_stated_conventions() || c.value_names.empty()) return std::nullopt;
+  const auto find = [&](const std::vector<exact_simple>& list, const std::string& parameter) -> const exact_simple* {
+    const auto named = c.value_names.find(parameter);
+    if (named == c.value_names.end()) return nullptr;
+    for (const exact_simple& v : list) {
+      if (named->second == v.name) return &v;
+    }
+    return nullptr;
+  };
+  const exact_simple* m = find(simple_masses(), "m");
+  const exact_simple* A = find(simple_amplitudes(), "amplitude");
+  const auto phase = c.value_names.find("phase");
+  if (m == nullptr || A == nullptr || phase == c.value_names.end() || (phase->second != "0" && phase->second != "π/2")) return std::nullopt;
+  return exact_start{m->num, m->den, A->num, A->den, A->pi_power, phase->second == "π/2"};
+}
+
+std::string table1_start(const convention_candidate& c) {
+  const auto name = [&](const std::string& p) {
+    const auto it = c.value_names.find(p);
+    return it != c.value_names.end() ? it->second : fmt::format("{:.6g}", c.values.at(p));
+  };
+  const std::string A = name("amplitude"), m = name("m");
+  const double phase = c.values.at("phase"), pi = boost::math::constants::pi<double>();
+  if (std::abs(phase - pi / 2) < 1e-15) return fmt::format("released from rest at q₀ = {}, p₀ = 0, m = {} (q(t) = {} cos ωt)", A, m, A);
+  if (phase == 0) {
+    const std::string velocity = A == "1/(2π)" ? "1" : A == "1" ? "2π" : "2π·" + A;
+    return fmt::format("started at q₀ = 0 with dq/dt(0) = {}, m = {} (q(t) = {} sin ωt)", velocity, m, A == "1" ? "" : A);
+  }
+  return fmt::format("q(t) = {} sin(ωt + {}), m = {}", A, name("phase"), m);
+}
+
+std::string table1_explanation(const convention_search_result& r, const std::vector<printed_entry>& printed) {
+  const convention_candidate* s = r.simplest();
+  if (s == nullptr) return "";
+  std::vector<std::string> departures;
+  for (const discrete_convention& d : table1_discrete_conventions()) {
+    if (s->choice.at(d.name) != d.stated) departures.push_back(d.name + ": " + s->choice.at(d.name));
+  }
+  std::string text = fmt::format("the oscillator {}, {}, reproduces {} of the {} entries within their printed digits", table1_start(*s),
+                                 departures.empty() ? "under the stated discrete conventions"
+                                                    : fmt::format("with {} (the other discrete conventions as stated)", fmt::join(departures, ", ")),
+                                 s->reproduced, printed.size());
+  std::vector<std::string> misses;
+  for (std::size_t k = 0; k < printed.size(); ++k) {
+    if (s->entries[k].reproduced) continue;
+    const printed_entry& e = printed[k];
+    if (e.round_off) {
+      misses.push_back(fmt::format("{} at {}, printed at round-off, computes {:.4g}", e.row, e.column.substr(e.column.find("N =")), s->entries[k].computed));
+      continue;
+    }
+    const entry_miss miss = miss_of(e, s->entries[k].computed);
+    misses.push_back(fmt::format("{} at {}, computes {:.7g}, printed {:.{}g}: {:.1e} past its rounding boundary {:.{}g}", e.row, e.column,
+                                 s->entries[k].computed, e.value, e.digits, miss.past, miss.boundary, e.digits + 1));
+  }
+  if (misses.size() == 1) text += "; the one it misses, " + misses.front();
+  else if (!misses.empty() && misses.size() <= 4) text += fmt::format("; the {} it misses: {}", misses.size(), fmt::join(misses, "; "));
+  else if (!misses.empty()) text += fmt::format("; it misses {} (the evidence lists each)", misses.size());
+  return text;
+}
+
 std::vector<computed_entry> table1_under(const convention_choice& choice, const parameter_values& values) {
   std::array<std::array<table1_run_errors, 3>, 2> runs{};
   for (int s = 0; s < 2; ++s) {
@@ -189,7 +284,8 @@ convention_search_result search_table1(const std::vector<printed_entry>& printed
   for (const auto& [values, result] : searched) {
     if (values == key) return result;
   }
-  searched.emplace_back(key, search_conventions(printed, table1_discrete_conventions(), table1_continuous_parameters(), table1_under));
+  searched.emplace_back(key, search_conventions(printed, table1_discrete_conventions(), table1_continuous_parameters(), table1_under,
+                                                      table1_simple_values()));
   return searched.back().second;
 }
 

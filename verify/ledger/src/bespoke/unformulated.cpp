@@ -11,6 +11,8 @@
 
 #include <simpson/internal_node.hpp>
 
+#include <fmt/format.h>
+
 #include <cctype>
 #include <map>
 
@@ -141,10 +143,15 @@ claim_result check_experiment_conventions(const run_context& ctx) {
     return confirmed_if(true, evidence, "The stated pair is one exact solution (p = m dq/dt) with T = 1 one period, omega = 2 pi, "
                                         "and it reproduces Table 1. " + unstated);
   }
-  if (const convention_candidate* found = search.reproducing()) {
+  const std::vector<printed_entry> entries = table1_printed(printed.values, printed.orders, &printed.digits);
+  const convention_candidate* simplest = search.simplest();
+  const std::string stated_count = fmt::format("q(t) = sin ωt with m = 1 reproduces {} of the {}", search.stated.reproduced, entries.size());
+  if (simplest != nullptr && (simplest->reproduced == entries.size() || search.reproducing() != nullptr)) {
+    evidence["table1"]["simplest"] = table1_explanation(search, entries);
     return words_erratum(evidence,
-                         "Table 1 is the experiment of another exact solution: " + describe(*found) +
-                             " (q(t) = A sin(omega t + phase), p = m dq/dt) reproduces every entry; q(t) = sin omega t does not",
+                         "Table 1 is the experiment of another exact solution: " + table1_explanation(search, entries) +
+                             (simplest->reproduced == entries.size() ? "" : "; a fit of m, the amplitude and the phase reproduces every entry (table-values)") +
+                             "; " + stated_count,
                          "The stated pair is one exact solution with T = 1 one period, but not the one Table 1 was computed with "
                          "(table-values, convention search). " + unstated);
   }

@@ -62,6 +62,11 @@ struct entry_score {
 struct convention_candidate {
   convention_choice choice;
   parameter_values values;
+  /// For a simple hypothesis: each parameter's value in words ("pi/2"); empty for a fitted candidate.
+  std::map<std::string, std::string> value_names;
+  /// For a simple hypothesis: how far it is from the stated conventions (a discrete convention that
+  /// departs from the stated one counts 1, a simple value its rank in its list); 0 for the stated.
+  int complexity = 0;
   std::vector<entry_score> entries;
   std::size_t reproduced = 0;  // entries reproduced
   double worst = 0;            // the largest residual
@@ -70,15 +75,43 @@ struct convention_candidate {
   std::map<std::string, std::pair<double, double>> pinned;
 };
 
+/// A simple value a parameter is tried at before any fit: the value and its name in words ("pi/2").
+struct simple_value {
+  std::string name;
+  double value = 0;
+};
+/// For each continuous parameter, its simple values, simplest first.
+using simple_values = std::map<std::string, std::vector<simple_value>>;
+
 struct convention_search_result {
   convention_candidate stated;           // the stated conventions and values, unfitted
+  /// Every combination of the discrete conventions and the simple values, judged by a full run, best
+  /// first: most entries reproduced, then the least complex, then the smallest worst residual.
+  std::vector<convention_candidate> simple;
   std::vector<convention_candidate> tried;  // every discrete combination, fitted, best first
   std::size_t evaluations = 0;           // experiment runs
   double seconds = 0;
   bool stated_reproduces() const;
   /// The best candidate, when it reproduces every entry.
   const convention_candidate* reproducing() const;
+  /// The simplest hypothesis that explains the most entries (null when none was tried).
+  const convention_candidate* simplest() const { return simple.empty() ? nullptr : &simple.front(); }
 };
+
+/// A missed entry's distance past the nearer boundary of its printed digits' interval, in the units
+/// of the value (|computed − printed| − half a unit of the last digit), and that boundary.
+struct entry_miss {
+  double past = 0;
+  double boundary = 0;
+};
+entry_miss miss_of(const printed_entry& printed, double computed);
+
+/// Every combination of the discrete conventions and of `simple` (a parameter missing there stays at
+/// its stated value), each judged by a full run of the experiment; best first, as
+/// convention_search_result::simple.
+std::vector<convention_candidate> simple_hypotheses(const std::vector<printed_entry>& printed, const std::vector<discrete_convention>& discrete,
+                                                    const std::vector<continuous_parameter>& continuous, const simple_values& simple,
+                                                    const parametrised_experiment& experiment, std::size_t& evaluations);
 
 /// Half a unit of the last printed digit of `value` printed with `digits` significant digits.
 double half_unit_of_last_digit(double value, int digits);
@@ -97,11 +130,13 @@ std::vector<entry_score> score_entries(const std::vector<printed_entry>& printed
 ///      largest residual in half-units, the quantity the verdict judges.
 /// Every candidate is judged by a full run of the experiment, never by the fit. Candidates sorted by
 /// entries reproduced, then by worst residual.
+/// First every simple hypothesis (simple_hypotheses), then the fit above.
 convention_search_result search_conventions(const std::vector<printed_entry>& printed, const std::vector<discrete_convention>& discrete,
                                             const std::vector<continuous_parameter>& continuous, const parametrised_experiment& experiment,
-                                            std::size_t scan_points = 128);
+                                            const simple_values& simple = {}, std::size_t scan_points = 128);
 
-/// "momentum: p/(m omega), m = 2.05": a candidate in words.
+/// "momentum: p/(m omega), m = 2.05": a candidate in words (a simple value by its name; a fitted one
+/// with the digits that reproduce what the candidate reproduces: see shortest_reproducing).
 std::string describe(const convention_candidate& c);
 
 }  // namespace simpson::verify

@@ -6,8 +6,10 @@
 
 #include <simpson/verify/convention_search.hpp>
 #include <simpson/verify/paper_table.hpp>
+#include <simpson/verify/table1_enclosed.hpp>
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,6 +35,21 @@ std::vector<printed_entry> table1_printed(const std::array<std::array<double, 3>
 
 std::vector<discrete_convention> table1_discrete_conventions();
 std::vector<continuous_parameter> table1_continuous_parameters();
+
+/// The simple values tried before any fit: m, the amplitude and the phase of the exact solution.
+simple_values table1_simple_values();
+
+/// A simple hypothesis under the stated discrete conventions as an exact start (for its enclosure);
+/// none for a fitted candidate or other conventions.
+std::optional<exact_start> table1_exact_start(const convention_candidate& c);
+
+/// A candidate's exact solution in words: "released from rest at q₀ = π/2, p₀ = 0, m = 1 (...)".
+std::string table1_start(const convention_candidate& c);
+
+/// The simplest hypothesis of a search in words: the exact solution, the discrete conventions that
+/// depart from the stated ones, the count of entries it reproduces, and each miss with its distance
+/// past its rounding boundary.
+std::string table1_explanation(const convention_search_result& r, const std::vector<printed_entry>& printed);
 
 /// Table 1's entries computed under `choice` and `values`.
 std::vector<computed_entry> table1_under(const convention_choice& choice, const parameter_values& values);

@@ -50,6 +50,25 @@ struct printed_value {
 };
 std::vector<entry_decision> enclosed_stated_entries(const std::vector<printed_value>& printed, unsigned digits = 40);
 
+/// An exact solution of the oscillator with ω = 2π, exactly: m = m_num/m_den, amplitude A =
+/// (amplitude_num/amplitude_den) π^amplitude_pi_power, started at q_0 = 0 with p_0 = m ω A (the
+/// stated q = sin ωt when A = m = 1) or released from rest at q_0 = A.
+struct exact_start {
+  long m_num = 1, m_den = 1;
+  long amplitude_num = 1, amplitude_den = 1;
+  int amplitude_pi_power = 0;
+  bool at_rest = false;
+  /// H_0 over the stated one's (m A² in both starts, ω fixed), in double: for the round-off floor.
+  double energy_factor() const {
+    double A = double(amplitude_num) / double(amplitude_den);
+    for (int k = 0; k < amplitude_pi_power; ++k) A *= 3.141592653589793;
+    for (int k = 0; k > amplitude_pi_power; --k) A /= 3.141592653589793;
+    return double(m_num) / double(m_den) * A * A;
+  }
+};
+/// The same judgment (enclosed_stated_entries) under the stated discrete conventions from `start`.
+std::vector<entry_decision> enclosed_entries(const std::vector<printed_value>& printed, const exact_start& start, unsigned digits = 40);
+
 bounded_errors enclosed_errors_within(bool simpson_scheme, long long N, const std::vector<std::pair<long, long>>& bounds,
                                       unsigned digits = 40);
 
