@@ -137,11 +137,13 @@ void add_convention_search(section_result& out, const printed_table_values& valu
   }
   unit.add(figure::of(low), figure::of(1.0));
   unit.add(figure::of(high), figure::of(1.0));
-  scatter.curves = {unit, stated, best};
+  // The best fit drawn over the simplest: both sit on 1 where they reproduce.
+  scatter.curves = {unit, stated};
   if (simplest != nullptr) scatter.curves.push_back(simple);
+  scatter.curves.push_back(best);
   out.add(plot_description{"table1_search",
                            "Table 1's entries (round-off rows left out): computed over printed under the stated conventions "
-                           "under the simplest hypothesis and under the best fit; an entry is reproduced only within half a unit of its third "
+                           ", under the simplest hypothesis and under the best fit; an entry is reproduced only within half a unit of its third "
                            "digit (about ±0.05 to ±0.5%)",
                            {scatter}, 1, 900, 600});
 }
