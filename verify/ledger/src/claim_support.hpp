@@ -186,6 +186,15 @@ inline claim_result words_erratum(json evidence, std::string correction, std::st
   return r;
 }
 
+/// A verdict that a word of the quoted sentence decides (the computation beside it cannot move it):
+/// said as such in the evidence ("lexical") and at the head of the note, so that it is not read as a
+/// computed finding.
+inline claim_result lexical(claim_result r, const std::string& word, const std::string& computed) {
+  r.evidence["lexical"] = "the verdict follows from the word '" + word + "' read in the quoted sentence; " + computed;
+  r.note = "Lexical: decided by the word '" + word + "'; " + computed + "." + (r.note.empty() ? "" : " " + r.note);
+  return r;
+}
+
 /// A computed result judged against the words quoted for it: when the computation holds but the
 /// words deny it ("not consistent", "not symplectic"), an erratum whose correction is `computed_statement`.
 inline claim_result as_the_words_say(claim_result computed, bool words_affirm, std::string computed_statement) {

@@ -72,7 +72,7 @@ GiNaC::ex sym(const std::string& name);
 oscillator_parameters<GiNaC::ex> parameters(const symbolic_derivation& d);
 
 /// A one-step matrix of the core as a GiNaC matrix.
-GiNaC::matrix as_matrix(const one_step_matrix<GiNaC::ex>& phi);
+inline GiNaC::matrix as_matrix(const one_step_matrix<GiNaC::ex>& phi) { return GiNaC::matrix{{phi.alpha, phi.beta}, {phi.gamma, phi.delta}}; }
 
 /// A printed formula with g_l, g_m, g_r replaced by the derived Gear values.
 GiNaC::ex with_gear(const GiNaC::ex& e, const symbolic_derivation& d);

@@ -11,6 +11,8 @@ const std::vector<formula_location>& printed_formula_locations() {
   static const std::vector<formula_location> formulas{
       // What the bespoke checks read (check_registry.hpp's add_printed); a proof shape reads its
       // record's references instead (formula_reference.hpp).
+      // §2
+      {"matrice-symplectique-ordre-2", k::labelled, "matrice-symplectique-ordre-2"},
       // §5
       {"equation-milieu-intervalle", k::labelled, "equation-milieu-intervalle", 0, {0}},
       {"stabilite", k::labelled, "stabilite", 0, {0, 1, 2}},

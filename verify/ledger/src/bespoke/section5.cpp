@@ -48,19 +48,22 @@ claim_result check_maupertuis_naming(const run_context& ctx) {
   const proof corrected = prove_zero_on_grid(std::string(unit_reduction) +
                                                  "; L_h (LLhh) minus Simpson's rule on Hamilton's integrand L = m (dq/dt)^2/2 - V(q)",
                                              {"q_l", "q_m", "q_r"}, 2, [&](const auto& v) { return along(v, false); });
+  const std::string computed = "the computation (L_h is Simpson's rule on L, not on p dq/dt) is the same whatever the name";
   if (named != "abbreviated action (Maupertuis)" && corrected.proved && !printed.proved) {
     json evidence;
     evidence["exact"] = corrected.evidence;
     evidence["named"] = named;
-    return confirmed_if(true, evidence, "The words name the principle whose functional L_h discretises: Simpson's rule on L = "
-                                        "m (dq/dt)^2/2 - V(q), proved; not Simpson's rule on p dq/dt.");
+    return lexical(confirmed_if(true, evidence, "The words name the principle whose functional L_h discretises: Simpson's rule on L = "
+                                                "m (dq/dt)^2/2 - V(q), proved; not Simpson's rule on p dq/dt."),
+                   said.words("principle"), computed);
   }
-  return erratum(printed, corrected,
+  return lexical(erratum(printed, corrected,
                  "delta Sigma_d = 0 (variations of the nodes, times fixed) is the discrete form of Hamilton's stationary-action "
                  "principle: Sigma_d approximates the integral of L dt",
                  "A naming finding, not a formula: Maupertuis's principle makes the abbreviated action (the integral of p dq) "
                  "stationary among motions of fixed energy; the equations derived from delta Sigma_d = 0 (internal-equation, "
-                 "scheme-order-3) are unaffected.");
+                 "scheme-order-3) are unaffected."),
+                 said.words("principle"), computed);
 }
 
 }  // namespace
