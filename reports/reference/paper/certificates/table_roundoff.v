@@ -82,24 +82,24 @@ Proof. first [ring | unfold float2R, Float1, Defs.F2R; simpl; unfold Z.pow_pos; 
 Lemma b4 : r44 = r52.
  apply a4.
 Qed.
-Definition f1 := Float2 (-7) (0).
-Definition f2 := Float2 (7) (0).
+Definition f1 := Float2 (-89) (-3).
+Definition f2 := Float2 (89) (-3).
 Definition i1 := makepairF f1 f2.
-Notation p1 := (BND _p i1). (* BND(p, [-7, 7]) *)
-Definition f3 := Float2 (-9) (-3).
-Definition f4 := Float2 (9) (-3).
+Notation p1 := (BND _p i1). (* BND(p, [-11.125, 11.125]) *)
+Definition f3 := Float2 (-15) (-3).
+Definition f4 := Float2 (15) (-3).
 Definition i2 := makepairF f3 f4.
-Notation p2 := (BND _q i2). (* BND(q, [-1.125, 1.125]) *)
+Notation p2 := (BND _q i2). (* BND(q, [-1.875, 1.875]) *)
 Definition s2 := (p1 /\ p2).
-Definition f5 := Float2 (-925736877196153353) (-108).
-Definition f6 := Float2 (925736877196153353) (-108).
+Definition f5 := Float2 (-643630877231412395) (-107).
+Definition f6 := Float2 (643630877231412395) (-107).
 Definition i3 := makepairF f5 f6.
-Notation p3 := (BND r1 i3). (* BND(p1 - p_exact, [-2.85265e-15, 2.85265e-15]) *)
+Notation p3 := (BND r1 i3). (* BND(p1 - p_exact, [-3.96668e-15, 3.96668e-15]) *)
 Definition s10 := (not p3).
-Definition f7 := Float2 (-438082172521787831) (-110).
-Definition f8 := Float2 (438082172521787831) (-110).
+Definition f7 := Float2 (-412272233861470031) (-109).
+Definition f8 := Float2 (412272233861470031) (-109).
 Definition i4 := makepairF f7 f8.
-Notation p4 := (BND r27 i4). (* BND(q1 - q_exact, [-3.37486e-16, 3.37486e-16]) *)
+Notation p4 := (BND r27 i4). (* BND(q1 - q_exact, [-6.35206e-16, 6.35206e-16]) *)
 Definition s11 := (not p4).
 Definition s9 := (s10 \/ s11).
 Notation r58 := ((Rabs _ap)%R).
@@ -147,24 +147,21 @@ Proof.
  assert (h1 := h0).
  exact (proj2 h1).
 Qed.
-Definition f11 := Float2 (796993203702337) (-47).
+Definition f11 := Float2 (2533299826053857) (-48).
 Definition i6 := makepairF f9 f11.
-Notation p11 := (BND r58 i6). (* BND(|ap|, [0, 5.66298]) *)
-Notation p12 := (ABS _ap i6). (* ABS(ap, [0, 5.66298]) *)
-Definition f12 := Float2 (-796993203702337) (-47).
+Notation p11 := (BND r58 i6). (* BND(|ap|, [0, 9.00009]) *)
+Notation p12 := (ABS _ap i6). (* ABS(ap, [0, 9.00009]) *)
+Definition f12 := Float2 (-2533299826053857) (-48).
 Definition i7 := makepairF f12 f11.
-Notation p13 := (BND _ap i7). (* BND(ap, [-5.66298, 5.66298]) *)
-Definition f13 := Float2 (-12751891259237393) (-51).
-Definition f14 := Float2 (12751891259237393) (-51).
+Notation p13 := (BND _ap i7). (* BND(ap, [-9.00009, 9.00009]) *)
+Notation p14 := (BND _ap_ideal i7). (* BND(ap_ideal, [-9.00009, 9.00009]) *)
+Definition f13 := Float2 (1) (-1).
+Definition f14 := Float2 (3643397502639255) (-52).
 Definition i8 := makepairF f13 f14.
-Notation p14 := (BND _ap_ideal i8). (* BND(ap_ideal, [-5.66298, 5.66298]) *)
-Definition f15 := Float2 (1) (-1).
-Definition f16 := Float2 (3643397502639255) (-52).
-Definition i9 := makepairF f15 f16.
-Notation p15 := (BND _delta i9). (* BND(delta, [0.5, 0.808997]) *)
+Notation p15 := (BND _delta i8). (* BND(delta, [0.5, 0.808997]) *)
 Lemma t1 : p15.
 Proof.
- refine (constant2 _ i9 _) ; finalize.
+ refine (constant2 _ i8 _) ; finalize.
 Qed.
 Lemma l14 : s1 -> p15 (* BND(delta, [0.5, 0.808997]) *).
 Proof.
@@ -177,7 +174,7 @@ Proof.
  assert (h1 := h0).
  exact (proj1 h1).
 Qed.
-Lemma l15 : s1 -> p1 (* BND(p, [-7, 7]) *).
+Lemma l15 : s1 -> p1 (* BND(p, [-11.125, 11.125]) *).
 Proof.
  intros h0.
  assert (h1 := l16 h0).
@@ -186,9 +183,9 @@ Qed.
 Lemma t2 : p15 -> p1 -> p14.
 Proof.
  intros h0 h1.
- refine (mul_po _delta _p i9 i1 i8 h0 h1 _) ; finalize.
+ refine (mul_po _delta _p i8 i1 i7 h0 h1 _) ; finalize.
 Qed.
-Lemma l13 : s1 -> p14 (* BND(ap_ideal, [-5.66298, 5.66298]) *).
+Lemma l13 : s1 -> p14 (* BND(ap_ideal, [-9.00009, 9.00009]) *).
 Proof.
  intros h0.
  assert (h1 := l14 h0).
@@ -198,9 +195,9 @@ Qed.
 Lemma t3 : p14 -> p13.
 Proof.
  intros h0.
- refine (float_round_ne _ _ _ap_ideal i8 i7 h0 _) ; finalize.
+ refine (float_round_ne _ _ _ap_ideal i7 i7 h0 _) ; finalize.
 Qed.
-Lemma l12 : s1 -> p13 (* BND(ap, [-5.66298, 5.66298]) *).
+Lemma l12 : s1 -> p13 (* BND(ap, [-9.00009, 9.00009]) *).
 Proof.
  intros h0.
  assert (h1 := l13 h0).
@@ -211,7 +208,7 @@ Proof.
  intros h0.
  refine (abs_of_bnd_o _ap i7 i6 h0 _) ; finalize.
 Qed.
-Lemma l11 : s1 -> p12 (* ABS(ap, [0, 5.66298]) *).
+Lemma l11 : s1 -> p12 (* ABS(ap, [0, 9.00009]) *).
 Proof.
  intros h0.
  assert (h1 := l12 h0).
@@ -222,7 +219,7 @@ Proof.
  intros h0.
  refine (uabs_of_abs _ap i6 h0) ; finalize.
 Qed.
-Lemma l10 : s1 -> p11 (* BND(|ap|, [0, 5.66298]) *).
+Lemma l10 : s1 -> p11 (* BND(|ap|, [0, 9.00009]) *).
 Proof.
  intros h0.
  assert (h1 := l11 h0).
@@ -235,15 +232,18 @@ Proof.
  assert (h2 := l10 h0).
  refine (simplify (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Tatom false (Abnd 3%nat i5))) (Tatom false (Abnd 4%nat i5))) (Tatom false (Abnd 5%nat i5))) (Tatom false (Abnd 6%nat i5))) (Tatom false (Abnd 7%nat i5))) (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 3%nat i5))) (Tatom false (Abnd 4%nat i5))) (Tatom false (Abnd 5%nat i5))) (Tatom false (Abnd 6%nat i5))) (Tatom false (Abnd 7%nat i5))) (Abnd 2%nat i6) (List.cons r1 (List.cons r27 (List.cons r58 (List.cons r59 (List.cons r60 (List.cons r61 (List.cons r62 (List.cons r63 List.nil)))))))) h2 h1 _) ; finalize.
 Qed.
-Definition f17 := Float2 (2049411095234581) (-51).
-Definition i10 := makepairF f9 f17.
-Notation p16 := (BND r62 i10). (* BND(|dq|, [0, 0.910121]) *)
-Notation p17 := (ABS _dq i10). (* ABS(dq, [0, 0.910121]) *)
-Definition f18 := Float2 (-2049411095234581) (-51).
-Definition i11 := makepairF f18 f17.
-Notation p18 := (BND _dq i11). (* BND(dq, [-0.910121, 0.910121]) *)
-Notation p19 := (BND _dq_ideal i11). (* BND(dq_ideal, [-0.910121, 0.910121]) *)
-Lemma l21 : s1 -> p2 (* BND(q, [-1.125, 1.125]) *).
+Definition f15 := Float2 (6831370317448603) (-52).
+Definition i9 := makepairF f9 f15.
+Notation p16 := (BND r62 i9). (* BND(|dq|, [0, 1.51687]) *)
+Notation p17 := (ABS _dq i9). (* ABS(dq, [0, 1.51687]) *)
+Definition f16 := Float2 (-6831370317448603) (-52).
+Definition i10 := makepairF f16 f15.
+Notation p18 := (BND _dq i10). (* BND(dq, [-1.51687, 1.51687]) *)
+Definition f17 := Float2 (-27325481269794413) (-54).
+Definition f18 := Float2 (27325481269794413) (-54).
+Definition i11 := makepairF f17 f18.
+Notation p19 := (BND _dq_ideal i11). (* BND(dq_ideal, [-1.51687, 1.51687]) *)
+Lemma l21 : s1 -> p2 (* BND(q, [-1.875, 1.875]) *).
 Proof.
  intros h0.
  assert (h1 := l16 h0).
@@ -252,9 +252,9 @@ Qed.
 Lemma t6 : p15 -> p2 -> p19.
 Proof.
  intros h0 h1.
- refine (mul_po _delta _q i9 i2 i11 h0 h1 _) ; finalize.
+ refine (mul_po _delta _q i8 i2 i11 h0 h1 _) ; finalize.
 Qed.
-Lemma l20 : s1 -> p19 (* BND(dq_ideal, [-0.910121, 0.910121]) *).
+Lemma l20 : s1 -> p19 (* BND(dq_ideal, [-1.51687, 1.51687]) *).
 Proof.
  intros h0.
  assert (h1 := l14 h0).
@@ -264,9 +264,9 @@ Qed.
 Lemma t7 : p19 -> p18.
 Proof.
  intros h0.
- refine (float_round_ne _ _ _dq_ideal i11 i11 h0 _) ; finalize.
+ refine (float_round_ne _ _ _dq_ideal i11 i10 h0 _) ; finalize.
 Qed.
-Lemma l19 : s1 -> p18 (* BND(dq, [-0.910121, 0.910121]) *).
+Lemma l19 : s1 -> p18 (* BND(dq, [-1.51687, 1.51687]) *).
 Proof.
  intros h0.
  assert (h1 := l20 h0).
@@ -275,9 +275,9 @@ Qed.
 Lemma t8 : p18 -> p17.
 Proof.
  intros h0.
- refine (abs_of_bnd_o _dq i11 i10 h0 _) ; finalize.
+ refine (abs_of_bnd_o _dq i10 i9 h0 _) ; finalize.
 Qed.
-Lemma l18 : s1 -> p17 (* ABS(dq, [0, 0.910121]) *).
+Lemma l18 : s1 -> p17 (* ABS(dq, [0, 1.51687]) *).
 Proof.
  intros h0.
  assert (h1 := l19 h0).
@@ -286,9 +286,9 @@ Qed.
 Lemma t9 : p17 -> p16.
 Proof.
  intros h0.
- refine (uabs_of_abs _dq i10 h0) ; finalize.
+ refine (uabs_of_abs _dq i9 h0) ; finalize.
 Qed.
-Lemma l17 : s1 -> p16 (* BND(|dq|, [0, 0.910121]) *).
+Lemma l17 : s1 -> p16 (* BND(|dq|, [0, 1.51687]) *).
 Proof.
  intros h0.
  assert (h1 := l18 h0).
@@ -299,23 +299,26 @@ Proof.
  intros h0.
  assert (h1 := l8 h0).
  assert (h2 := l17 h0).
- refine (simplify (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Tatom false (Abnd 3%nat i5))) (Tatom false (Abnd 4%nat i5))) (Tatom false (Abnd 5%nat i5))) (Tatom false (Abnd 6%nat i5))) (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Tatom false (Abnd 3%nat i5))) (Tatom false (Abnd 4%nat i5))) (Tatom false (Abnd 6%nat i5))) (Abnd 5%nat i10) (List.cons r1 (List.cons r27 (List.cons r59 (List.cons r60 (List.cons r61 (List.cons r62 (List.cons r63 List.nil))))))) h2 h1 _) ; finalize.
+ refine (simplify (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Tatom false (Abnd 3%nat i5))) (Tatom false (Abnd 4%nat i5))) (Tatom false (Abnd 5%nat i5))) (Tatom false (Abnd 6%nat i5))) (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Tatom false (Abnd 3%nat i5))) (Tatom false (Abnd 4%nat i5))) (Tatom false (Abnd 6%nat i5))) (Abnd 5%nat i9) (List.cons r1 (List.cons r27 (List.cons r59 (List.cons r60 (List.cons r61 (List.cons r62 (List.cons r63 List.nil))))))) h2 h1 _) ; finalize.
 Qed.
-Definition f19 := Float2 (1169863044109211) (-48).
+Definition f19 := Float2 (7799086960728073) (-50).
 Definition i12 := makepairF f9 f19.
-Notation p20 := (BND r59 i12). (* BND(|bq|, [0, 4.15619]) *)
-Notation p21 := (ABS _bq i12). (* ABS(bq, [0, 4.15619]) *)
-Definition f20 := Float2 (-1169863044109211) (-48).
+Notation p20 := (BND r59 i12). (* BND(|bq|, [0, 6.92698]) *)
+Notation p21 := (ABS _bq i12). (* ABS(bq, [0, 6.92698]) *)
+Definition f20 := Float2 (-7799086960728073) (-50).
 Definition i13 := makepairF f20 f19.
-Notation p22 := (BND _bq i13). (* BND(bq, [-4.15619, 4.15619]) *)
-Notation p23 := (BND _bq_ideal i13). (* BND(bq_ideal, [-4.15619, 4.15619]) *)
-Definition f21 := Float2 (-4159513045721639) (-50).
-Definition f22 := Float2 (-1) (0).
+Notation p22 := (BND _bq i13). (* BND(bq, [-6.92698, 6.92698]) *)
+Definition f21 := Float2 (-31196347842912293) (-52).
+Definition f22 := Float2 (31196347842912293) (-52).
 Definition i14 := makepairF f21 f22.
-Notation p24 := (BND _beta i14). (* BND(beta, [-3.69439, -1]) *)
+Notation p23 := (BND _bq_ideal i14). (* BND(bq_ideal, [-6.92698, 6.92698]) *)
+Definition f23 := Float2 (-4159513045721639) (-50).
+Definition f24 := Float2 (-1) (0).
+Definition i15 := makepairF f23 f24.
+Notation p24 := (BND _beta i15). (* BND(beta, [-3.69439, -1]) *)
 Lemma t10 : p24.
 Proof.
- refine (constant2 _ i14 _) ; finalize.
+ refine (constant2 _ i15 _) ; finalize.
 Qed.
 Lemma l26 : s1 -> p24 (* BND(beta, [-3.69439, -1]) *).
 Proof.
@@ -325,9 +328,9 @@ Qed.
 Lemma t11 : p24 -> p2 -> p23.
 Proof.
  intros h0 h1.
- refine (mul_no _beta _q i14 i2 i13 h0 h1 _) ; finalize.
+ refine (mul_no _beta _q i15 i2 i14 h0 h1 _) ; finalize.
 Qed.
-Lemma l25 : s1 -> p23 (* BND(bq_ideal, [-4.15619, 4.15619]) *).
+Lemma l25 : s1 -> p23 (* BND(bq_ideal, [-6.92698, 6.92698]) *).
 Proof.
  intros h0.
  assert (h1 := l26 h0).
@@ -337,9 +340,9 @@ Qed.
 Lemma t12 : p23 -> p22.
 Proof.
  intros h0.
- refine (float_round_ne _ _ _bq_ideal i13 i13 h0 _) ; finalize.
+ refine (float_round_ne _ _ _bq_ideal i14 i13 h0 _) ; finalize.
 Qed.
-Lemma l24 : s1 -> p22 (* BND(bq, [-4.15619, 4.15619]) *).
+Lemma l24 : s1 -> p22 (* BND(bq, [-6.92698, 6.92698]) *).
 Proof.
  intros h0.
  assert (h1 := l25 h0).
@@ -350,7 +353,7 @@ Proof.
  intros h0.
  refine (abs_of_bnd_o _bq i13 i12 h0 _) ; finalize.
 Qed.
-Lemma l23 : s1 -> p21 (* ABS(bq, [0, 4.15619]) *).
+Lemma l23 : s1 -> p21 (* ABS(bq, [0, 6.92698]) *).
 Proof.
  intros h0.
  assert (h1 := l24 h0).
@@ -361,7 +364,7 @@ Proof.
  intros h0.
  refine (uabs_of_abs _bq i12 h0) ; finalize.
 Qed.
-Lemma l22 : s1 -> p20 (* BND(|bq|, [0, 4.15619]) *).
+Lemma l22 : s1 -> p20 (* BND(|bq|, [0, 6.92698]) *).
 Proof.
  intros h0.
  assert (h1 := l23 h0).
@@ -374,21 +377,21 @@ Proof.
  assert (h2 := l22 h0).
  refine (simplify (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Tatom false (Abnd 3%nat i5))) (Tatom false (Abnd 4%nat i5))) (Tatom false (Abnd 5%nat i5))) (Ttree false (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 3%nat i5))) (Tatom false (Abnd 4%nat i5))) (Tatom false (Abnd 5%nat i5))) (Abnd 2%nat i12) (List.cons r1 (List.cons r27 (List.cons r59 (List.cons r60 (List.cons r61 (List.cons r63 List.nil)))))) h2 h1 _) ; finalize.
 Qed.
-Definition f23 := Float2 (5896898164600551) (-53).
-Definition i15 := makepairF f9 f23.
-Notation p25 := (BND r61 i15). (* BND(|gp|, [0, 0.654687]) *)
-Notation p26 := (ABS _gp i15). (* ABS(gp, [0, 0.654687]) *)
-Definition f24 := Float2 (-5896898164600551) (-53).
-Definition i16 := makepairF f24 f23.
-Notation p27 := (BND _gp i16). (* BND(gp, [-0.654687, 0.654687]) *)
-Notation p28 := (BND _gp_ideal i16). (* BND(gp_ideal, [-0.654687, 0.654687]) *)
-Definition f25 := Float2 (1) (-4).
-Definition f26 := Float2 (6739312188114915) (-56).
-Definition i17 := makepairF f25 f26.
-Notation p29 := (BND _gamma i17). (* BND(gamma, [0.0625, 0.0935267]) *)
+Definition f25 := Float2 (1171482001449663) (-50).
+Definition i16 := makepairF f9 f25.
+Notation p25 := (BND r61 i16). (* BND(|gp|, [0, 1.04049]) *)
+Notation p26 := (ABS _gp i16). (* ABS(gp, [0, 1.04049]) *)
+Definition f26 := Float2 (-1171482001449663) (-50).
+Definition i17 := makepairF f26 f25.
+Notation p27 := (BND _gp i17). (* BND(gp, [-1.04049, 1.04049]) *)
+Notation p28 := (BND _gp_ideal i17). (* BND(gp_ideal, [-1.04049, 1.04049]) *)
+Definition f27 := Float2 (1) (-4).
+Definition f28 := Float2 (6739312188114915) (-56).
+Definition i18 := makepairF f27 f28.
+Notation p29 := (BND _gamma i18). (* BND(gamma, [0.0625, 0.0935267]) *)
 Lemma t15 : p29.
 Proof.
- refine (constant2 _ i17 _) ; finalize.
+ refine (constant2 _ i18 _) ; finalize.
 Qed.
 Lemma l31 : s1 -> p29 (* BND(gamma, [0.0625, 0.0935267]) *).
 Proof.
@@ -398,9 +401,9 @@ Qed.
 Lemma t16 : p29 -> p1 -> p28.
 Proof.
  intros h0 h1.
- refine (mul_po _gamma _p i17 i1 i16 h0 h1 _) ; finalize.
+ refine (mul_po _gamma _p i18 i1 i17 h0 h1 _) ; finalize.
 Qed.
-Lemma l30 : s1 -> p28 (* BND(gp_ideal, [-0.654687, 0.654687]) *).
+Lemma l30 : s1 -> p28 (* BND(gp_ideal, [-1.04049, 1.04049]) *).
 Proof.
  intros h0.
  assert (h1 := l31 h0).
@@ -410,9 +413,9 @@ Qed.
 Lemma t17 : p28 -> p27.
 Proof.
  intros h0.
- refine (float_round_ne _ _ _gp_ideal i16 i16 h0 _) ; finalize.
+ refine (float_round_ne _ _ _gp_ideal i17 i17 h0 _) ; finalize.
 Qed.
-Lemma l29 : s1 -> p27 (* BND(gp, [-0.654687, 0.654687]) *).
+Lemma l29 : s1 -> p27 (* BND(gp, [-1.04049, 1.04049]) *).
 Proof.
  intros h0.
  assert (h1 := l30 h0).
@@ -421,9 +424,9 @@ Qed.
 Lemma t18 : p27 -> p26.
 Proof.
  intros h0.
- refine (abs_of_bnd_o _gp i16 i15 h0 _) ; finalize.
+ refine (abs_of_bnd_o _gp i17 i16 h0 _) ; finalize.
 Qed.
-Lemma l28 : s1 -> p26 (* ABS(gp, [0, 0.654687]) *).
+Lemma l28 : s1 -> p26 (* ABS(gp, [0, 1.04049]) *).
 Proof.
  intros h0.
  assert (h1 := l29 h0).
@@ -432,9 +435,9 @@ Qed.
 Lemma t19 : p26 -> p25.
 Proof.
  intros h0.
- refine (uabs_of_abs _gp i15 h0) ; finalize.
+ refine (uabs_of_abs _gp i16 h0) ; finalize.
 Qed.
-Lemma l27 : s1 -> p25 (* BND(|gp|, [0, 0.654687]) *).
+Lemma l27 : s1 -> p25 (* BND(|gp|, [0, 1.04049]) *).
 Proof.
  intros h0.
  assert (h1 := l28 h0).
@@ -445,22 +448,25 @@ Proof.
  intros h0.
  assert (h1 := l6 h0).
  assert (h2 := l27 h0).
- refine (simplify (Ttree false (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Tatom false (Abnd 3%nat i5))) (Tatom false (Abnd 4%nat i5))) (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Tatom false (Abnd 4%nat i5))) (Abnd 3%nat i15) (List.cons r1 (List.cons r27 (List.cons r60 (List.cons r61 (List.cons r63 List.nil))))) h2 h1 _) ; finalize.
+ refine (simplify (Ttree false (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Tatom false (Abnd 3%nat i5))) (Tatom false (Abnd 4%nat i5))) (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Tatom false (Abnd 4%nat i5))) (Abnd 3%nat i16) (List.cons r1 (List.cons r27 (List.cons r60 (List.cons r61 (List.cons r63 List.nil))))) h2 h1 _) ; finalize.
 Qed.
-Definition f27 := Float2 (2763849451513885) (-48).
-Definition i18 := makepairF f9 f27.
-Notation p30 := (BND r60 i18). (* BND(|p1|, [0, 9.81917]) *)
-Notation p31 := (ABS _p1 i18). (* ABS(p1, [0, 9.81917]) *)
-Definition f28 := Float2 (-2763849451513885) (-48).
-Definition i19 := makepairF f28 f27.
-Notation p32 := (BND _p1 i19). (* BND(p1, [-9.81917, 9.81917]) *)
-Notation p33 := (BND r3 i19). (* BND(ap + bq, [-9.81917, 9.81917]) *)
+Definition f29 := Float2 (4483071566235875) (-48).
+Definition i19 := makepairF f9 f29.
+Notation p30 := (BND r60 i19). (* BND(|p1|, [0, 15.9271]) *)
+Notation p31 := (ABS _p1 i19). (* ABS(p1, [0, 15.9271]) *)
+Definition f30 := Float2 (-4483071566235875) (-48).
+Definition i20 := makepairF f30 f29.
+Notation p32 := (BND _p1 i20). (* BND(p1, [-15.9271, 15.9271]) *)
+Definition f31 := Float2 (-17932286264943501) (-50).
+Definition f32 := Float2 (17932286264943501) (-50).
+Definition i21 := makepairF f31 f32.
+Notation p33 := (BND r3 i21). (* BND(ap + bq, [-15.9271, 15.9271]) *)
 Lemma t20 : p13 -> p22 -> p33.
 Proof.
  intros h0 h1.
- refine (add _ap _bq i7 i13 i19 h0 h1 _) ; finalize.
+ refine (add _ap _bq i7 i13 i21 h0 h1 _) ; finalize.
 Qed.
-Lemma l35 : s1 -> p33 (* BND(ap + bq, [-9.81917, 9.81917]) *).
+Lemma l35 : s1 -> p33 (* BND(ap + bq, [-15.9271, 15.9271]) *).
 Proof.
  intros h0.
  assert (h1 := l12 h0).
@@ -470,9 +476,9 @@ Qed.
 Lemma t21 : p33 -> p32.
 Proof.
  intros h0.
- refine (float_round_ne _ _ r3 i19 i19 h0 _) ; finalize.
+ refine (float_round_ne _ _ r3 i21 i20 h0 _) ; finalize.
 Qed.
-Lemma l34 : s1 -> p32 (* BND(p1, [-9.81917, 9.81917]) *).
+Lemma l34 : s1 -> p32 (* BND(p1, [-15.9271, 15.9271]) *).
 Proof.
  intros h0.
  assert (h1 := l35 h0).
@@ -481,9 +487,9 @@ Qed.
 Lemma t22 : p32 -> p31.
 Proof.
  intros h0.
- refine (abs_of_bnd_o _p1 i19 i18 h0 _) ; finalize.
+ refine (abs_of_bnd_o _p1 i20 i19 h0 _) ; finalize.
 Qed.
-Lemma l33 : s1 -> p31 (* ABS(p1, [0, 9.81917]) *).
+Lemma l33 : s1 -> p31 (* ABS(p1, [0, 15.9271]) *).
 Proof.
  intros h0.
  assert (h1 := l34 h0).
@@ -492,9 +498,9 @@ Qed.
 Lemma t23 : p31 -> p30.
 Proof.
  intros h0.
- refine (uabs_of_abs _p1 i18 h0) ; finalize.
+ refine (uabs_of_abs _p1 i19 h0) ; finalize.
 Qed.
-Lemma l32 : s1 -> p30 (* BND(|p1|, [0, 9.81917]) *).
+Lemma l32 : s1 -> p30 (* BND(|p1|, [0, 15.9271]) *).
 Proof.
  intros h0.
  assert (h1 := l33 h0).
@@ -505,38 +511,38 @@ Proof.
  intros h0.
  assert (h1 := l5 h0).
  assert (h2 := l32 h0).
- refine (simplify (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Tatom false (Abnd 3%nat i5))) (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 3%nat i5))) (Abnd 2%nat i18) (List.cons r1 (List.cons r27 (List.cons r60 (List.cons r63 List.nil)))) h2 h1 _) ; finalize.
+ refine (simplify (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Tatom false (Abnd 3%nat i5))) (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 3%nat i5))) (Abnd 2%nat i19) (List.cons r1 (List.cons r27 (List.cons r60 (List.cons r63 List.nil)))) h2 h1 _) ; finalize.
 Qed.
-Definition f29 := Float2 (3523635636384719) (-51).
-Definition i20 := makepairF f9 f29.
-Notation p34 := (BND r63 i20). (* BND(|q1|, [0, 1.56481]) *)
-Notation p35 := (ABS _q1 i20). (* ABS(q1, [0, 1.56481]) *)
-Definition f30 := Float2 (-3523635636384719) (-51).
-Definition i21 := makepairF f30 f29.
-Notation p36 := (BND _q1 i21). (* BND(q1, [-1.56481, 1.56481]) *)
-Notation p37 := (BND r29 i21). (* BND(gp + dq, [-1.56481, 1.56481]) *)
-Definition f31 := Float2 (-737112270575069) (-50).
-Definition f32 := Float2 (737112270575069) (-50).
-Definition i22 := makepairF f31 f32.
-Notation p38 := (BND _gp i22). (* BND(gp, [-0.654687, 0.654687]) *)
-Lemma t24 : p38 -> p18 -> p37.
+Definition f33 := Float2 (1439662290405907) (-49).
+Definition i22 := makepairF f9 f33.
+Notation p34 := (BND r63 i22). (* BND(|q1|, [0, 2.55735]) *)
+Notation p35 := (ABS _q1 i22). (* ABS(q1, [0, 2.55735]) *)
+Definition f34 := Float2 (-1439662290405907) (-49).
+Definition i23 := makepairF f34 f33.
+Notation p36 := (BND _q1 i23). (* BND(q1, [-2.55735, 2.55735]) *)
+Notation p37 := (BND r29 i23). (* BND(gp + dq, [-2.55735, 2.55735]) *)
+Definition f35 := Float2 (-1707842579362151) (-50).
+Definition f36 := Float2 (1707842579362151) (-50).
+Definition i24 := makepairF f35 f36.
+Notation p38 := (BND _dq i24). (* BND(dq, [-1.51687, 1.51687]) *)
+Lemma t24 : p27 -> p38 -> p37.
 Proof.
  intros h0 h1.
- refine (add _gp _dq i22 i11 i21 h0 h1 _) ; finalize.
+ refine (add _gp _dq i17 i24 i23 h0 h1 _) ; finalize.
 Qed.
-Lemma l39 : s1 -> p37 (* BND(gp + dq, [-1.56481, 1.56481]) *).
+Lemma l39 : s1 -> p37 (* BND(gp + dq, [-2.55735, 2.55735]) *).
 Proof.
  intros h0.
  assert (h1 := l29 h0).
  assert (h2 := l19 h0).
- apply t24. refine (subset _gp i16 i22 h1 _) ; finalize. exact h2.
+ apply t24. exact h1. refine (subset _dq i10 i24 h2 _) ; finalize.
 Qed.
 Lemma t25 : p37 -> p36.
 Proof.
  intros h0.
- refine (float_round_ne _ _ r29 i21 i21 h0 _) ; finalize.
+ refine (float_round_ne _ _ r29 i23 i23 h0 _) ; finalize.
 Qed.
-Lemma l38 : s1 -> p36 (* BND(q1, [-1.56481, 1.56481]) *).
+Lemma l38 : s1 -> p36 (* BND(q1, [-2.55735, 2.55735]) *).
 Proof.
  intros h0.
  assert (h1 := l39 h0).
@@ -545,9 +551,9 @@ Qed.
 Lemma t26 : p36 -> p35.
 Proof.
  intros h0.
- refine (abs_of_bnd_o _q1 i21 i20 h0 _) ; finalize.
+ refine (abs_of_bnd_o _q1 i23 i22 h0 _) ; finalize.
 Qed.
-Lemma l37 : s1 -> p35 (* ABS(q1, [0, 1.56481]) *).
+Lemma l37 : s1 -> p35 (* ABS(q1, [0, 2.55735]) *).
 Proof.
  intros h0.
  assert (h1 := l38 h0).
@@ -556,9 +562,9 @@ Qed.
 Lemma t27 : p35 -> p34.
 Proof.
  intros h0.
- refine (uabs_of_abs _q1 i20 h0) ; finalize.
+ refine (uabs_of_abs _q1 i22 h0) ; finalize.
 Qed.
-Lemma l36 : s1 -> p34 (* BND(|q1|, [0, 1.56481]) *).
+Lemma l36 : s1 -> p34 (* BND(|q1|, [0, 2.55735]) *).
 Proof.
  intros h0.
  assert (h1 := l37 h0).
@@ -569,42 +575,42 @@ Proof.
  intros h0.
  assert (h1 := l4 h0).
  assert (h2 := l36 h0).
- refine (simplify (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Abnd 2%nat i20) (List.cons r1 (List.cons r27 (List.cons r63 List.nil))) h2 h1 _) ; finalize.
+ refine (simplify (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Abnd 2%nat i22) (List.cons r1 (List.cons r27 (List.cons r63 List.nil))) h2 h1 _) ; finalize.
 Qed.
-Notation p39 := (BND r23 i3). (* BND(p1 - p1_ideal + (p1_ideal - p_exact), [-2.85265e-15, 2.85265e-15]) *)
-Definition f33 := Float2 (-1) (-49).
-Definition f34 := Float2 (1) (-49).
-Definition i23 := makepairF f33 f34.
-Notation p40 := (BND r24 i23). (* BND(p1 - p1_ideal, [-1.77636e-15, 1.77636e-15]) *)
+Notation p39 := (BND r23 i3). (* BND(p1 - p1_ideal + (p1_ideal - p_exact), [-3.96668e-15, 3.96668e-15]) *)
+Definition f37 := Float2 (-5) (-51).
+Definition f38 := Float2 (5) (-51).
+Definition i25 := makepairF f37 f38.
+Notation p40 := (BND r24 i25). (* BND(p1 - p1_ideal, [-2.22045e-15, 2.22045e-15]) *)
 Notation r65 := ((_p1 - r3)%R).
 Notation r66 := ((r3 - _p1_ideal)%R).
 Notation r64 := ((r65 + r66)%R).
-Notation p41 := (BND r64 i23). (* BND(p1 - (ap + bq) + (ap + bq - p1_ideal), [-1.77636e-15, 1.77636e-15]) *)
-Definition f35 := Float2 (-1) (-50).
-Definition f36 := Float2 (1) (-50).
-Definition i24 := makepairF f35 f36.
-Notation p42 := (BND r65 i24). (* BND(p1 - (ap + bq), [-8.88178e-16, 8.88178e-16]) *)
-Definition f37 := Float2 (1) (4).
-Definition i25 := makepairF f9 f37.
-Notation p43 := (ABS r3 i25). (* ABS(ap + bq, [0, 16]) *)
-Definition f38 := Float2 (-1) (4).
-Definition i26 := makepairF f38 f37.
-Notation p44 := (BND r3 i26). (* BND(ap + bq, [-16, 16]) *)
+Notation p41 := (BND r64 i25). (* BND(p1 - (ap + bq) + (ap + bq - p1_ideal), [-2.22045e-15, 2.22045e-15]) *)
+Definition f39 := Float2 (-1) (-50).
+Definition f40 := Float2 (1) (-50).
+Definition i26 := makepairF f39 f40.
+Notation p42 := (BND r65 i26). (* BND(p1 - (ap + bq), [-8.88178e-16, 8.88178e-16]) *)
+Definition f41 := Float2 (1) (4).
+Definition i27 := makepairF f9 f41.
+Notation p43 := (ABS r3 i27). (* ABS(ap + bq, [0, 16]) *)
+Definition f42 := Float2 (-1) (4).
+Definition i28 := makepairF f42 f41.
+Notation p44 := (BND r3 i28). (* BND(ap + bq, [-16, 16]) *)
 Lemma t28 : p44 -> p43.
 Proof.
  intros h0.
- refine (abs_of_bnd_o r3 i26 i25 h0 _) ; finalize.
+ refine (abs_of_bnd_o r3 i28 i27 h0 _) ; finalize.
 Qed.
 Lemma l45 : s1 -> p43 (* ABS(ap + bq, [0, 16]) *).
 Proof.
  intros h0.
  assert (h1 := l35 h0).
- apply t28. refine (subset r3 i19 i26 h1 _) ; finalize.
+ apply t28. refine (subset r3 i21 i28 h1 _) ; finalize.
 Qed.
 Lemma t29 : p43 -> p42.
 Proof.
  intros h0.
- refine (float_absolute_wide_ne _ _ r3 i25 i24 h0 _) ; finalize.
+ refine (float_absolute_wide_ne _ _ r3 i27 i26 h0 _) ; finalize.
 Qed.
 Lemma l44 : s1 -> p42 (* BND(p1 - (ap + bq), [-8.88178e-16, 8.88178e-16]) *).
 Proof.
@@ -612,138 +618,137 @@ Proof.
  assert (h1 := l45 h0).
  apply t29. exact h1.
 Qed.
-Notation p45 := (BND r66 i24). (* BND(ap + bq - p1_ideal, [-8.88178e-16, 8.88178e-16]) *)
+Definition f43 := Float2 (-3) (-51).
+Definition f44 := Float2 (3) (-51).
+Definition i29 := makepairF f43 f44.
+Notation p45 := (BND r66 i29). (* BND(ap + bq - p1_ideal, [-1.33227e-15, 1.33227e-15]) *)
 Notation r68 := ((_ap - _ap_ideal)%R).
 Notation r69 := ((_bq - _bq_ideal)%R).
 Notation r67 := ((r68 + r69)%R).
-Notation p46 := (BND r67 i24). (* BND(ap - ap_ideal + (bq - bq_ideal), [-8.88178e-16, 8.88178e-16]) *)
-Definition f39 := Float2 (-1) (-51).
-Definition f40 := Float2 (1) (-51).
-Definition i27 := makepairF f39 f40.
-Notation p47 := (BND r68 i27). (* BND(ap - ap_ideal, [-4.44089e-16, 4.44089e-16]) *)
-Definition f41 := Float2 (1) (3).
-Definition i28 := makepairF f9 f41.
-Notation p48 := (ABS _ap_ideal i28). (* ABS(ap_ideal, [0, 8]) *)
-Definition f42 := Float2 (7) (-3).
-Definition i29 := makepairF f15 f42.
-Notation p49 := (ABS _delta i29). (* ABS(delta, [0.5, 0.875]) *)
-Notation p50 := (BND _delta i29). (* BND(delta, [0.5, 0.875]) *)
+Notation p46 := (BND r67 i29). (* BND(ap - ap_ideal + (bq - bq_ideal), [-1.33227e-15, 1.33227e-15]) *)
+Notation p47 := (BND r68 i26). (* BND(ap - ap_ideal, [-8.88178e-16, 8.88178e-16]) *)
+Notation p48 := (ABS _ap_ideal i27). (* ABS(ap_ideal, [0, 16]) *)
+Definition f45 := Float2 (1) (0).
+Definition i30 := makepairF f13 f45.
+Notation p49 := (ABS _delta i30). (* ABS(delta, [0.5, 1]) *)
+Notation p50 := (BND _delta i30). (* BND(delta, [0.5, 1]) *)
 Lemma t30 : p50 -> p49.
 Proof.
  intros h0.
- refine (abs_of_bnd_p _delta i29 i29 h0 _) ; finalize.
+ refine (abs_of_bnd_p _delta i30 i30 h0 _) ; finalize.
 Qed.
-Lemma l50 : s1 -> p49 (* ABS(delta, [0.5, 0.875]) *).
+Lemma l50 : s1 -> p49 (* ABS(delta, [0.5, 1]) *).
 Proof.
  intros h0.
  assert (h1 := l14 h0).
- apply t30. refine (subset _delta i9 i29 h1 _) ; finalize.
+ apply t30. refine (subset _delta i8 i30 h1 _) ; finalize.
 Qed.
-Notation p51 := (ABS _p i28). (* ABS(p, [0, 8]) *)
-Definition f43 := Float2 (-1) (3).
-Definition i30 := makepairF f43 f41.
-Notation p52 := (BND _p i30). (* BND(p, [-8, 8]) *)
+Notation p51 := (ABS _p i27). (* ABS(p, [0, 16]) *)
+Notation p52 := (BND _p i28). (* BND(p, [-16, 16]) *)
 Lemma t31 : p52 -> p51.
 Proof.
  intros h0.
- refine (abs_of_bnd_o _p i30 i28 h0 _) ; finalize.
+ refine (abs_of_bnd_o _p i28 i27 h0 _) ; finalize.
 Qed.
-Lemma l51 : s1 -> p51 (* ABS(p, [0, 8]) *).
+Lemma l51 : s1 -> p51 (* ABS(p, [0, 16]) *).
 Proof.
  intros h0.
  assert (h1 := l15 h0).
- apply t31. refine (subset _p i1 i30 h1 _) ; finalize.
+ apply t31. refine (subset _p i1 i28 h1 _) ; finalize.
 Qed.
-Definition f44 := Float2 (1) (0).
-Definition i31 := makepairF f15 f44.
-Notation p53 := (ABS _delta i31). (* ABS(delta, [0.5, 1]) *)
-Lemma t32 : p53 -> p51 -> p48.
+Lemma t32 : p49 -> p51 -> p48.
 Proof.
  intros h0 h1.
- refine (mul_aa _delta _p i31 i28 i28 h0 h1 _) ; finalize.
+ refine (mul_aa _delta _p i30 i27 i27 h0 h1 _) ; finalize.
 Qed.
-Lemma l49 : s1 -> p48 (* ABS(ap_ideal, [0, 8]) *).
+Lemma l49 : s1 -> p48 (* ABS(ap_ideal, [0, 16]) *).
 Proof.
  intros h0.
  assert (h1 := l50 h0).
  assert (h2 := l51 h0).
- apply t32. refine (abs_subset _delta i29 i31 h1 _) ; finalize. exact h2.
+ apply t32. exact h1. exact h2.
 Qed.
 Lemma t33 : p48 -> p47.
 Proof.
  intros h0.
- refine (float_absolute_wide_ne _ _ _ap_ideal i28 i27 h0 _) ; finalize.
+ refine (float_absolute_wide_ne _ _ _ap_ideal i27 i26 h0 _) ; finalize.
 Qed.
-Lemma l48 : s1 -> p47 (* BND(ap - ap_ideal, [-4.44089e-16, 4.44089e-16]) *).
+Lemma l48 : s1 -> p47 (* BND(ap - ap_ideal, [-8.88178e-16, 8.88178e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l49 h0).
  apply t33. exact h1.
 Qed.
-Notation p54 := (BND r69 i27). (* BND(bq - bq_ideal, [-4.44089e-16, 4.44089e-16]) *)
-Notation p55 := (ABS _bq_ideal i28). (* ABS(bq_ideal, [0, 8]) *)
-Definition f45 := Float2 (1) (2).
-Definition i32 := makepairF f44 f45.
-Notation p56 := (ABS _beta i32). (* ABS(beta, [1, 4]) *)
-Definition f46 := Float2 (-1) (2).
-Definition i33 := makepairF f46 f22.
-Notation p57 := (BND _beta i33). (* BND(beta, [-4, -1]) *)
-Lemma t34 : p57 -> p56.
+Definition f46 := Float2 (-1) (-51).
+Definition f47 := Float2 (1) (-51).
+Definition i31 := makepairF f46 f47.
+Notation p53 := (BND r69 i31). (* BND(bq - bq_ideal, [-4.44089e-16, 4.44089e-16]) *)
+Definition f48 := Float2 (1) (3).
+Definition i32 := makepairF f9 f48.
+Notation p54 := (ABS _bq_ideal i32). (* ABS(bq_ideal, [0, 8]) *)
+Definition f49 := Float2 (1) (2).
+Definition i33 := makepairF f45 f49.
+Notation p55 := (ABS _beta i33). (* ABS(beta, [1, 4]) *)
+Definition f50 := Float2 (-1) (2).
+Definition i34 := makepairF f50 f24.
+Notation p56 := (BND _beta i34). (* BND(beta, [-4, -1]) *)
+Lemma t34 : p56 -> p55.
 Proof.
  intros h0.
- refine (abs_of_bnd_n _beta i33 i32 h0 _) ; finalize.
+ refine (abs_of_bnd_n _beta i34 i33 h0 _) ; finalize.
 Qed.
-Lemma l54 : s1 -> p56 (* ABS(beta, [1, 4]) *).
+Lemma l54 : s1 -> p55 (* ABS(beta, [1, 4]) *).
 Proof.
  intros h0.
  assert (h1 := l26 h0).
- apply t34. refine (subset _beta i14 i33 h1 _) ; finalize.
+ apply t34. refine (subset _beta i15 i34 h1 _) ; finalize.
 Qed.
-Definition i34 := makepairF f9 f4.
-Notation p58 := (ABS _q i34). (* ABS(q, [0, 1.125]) *)
-Lemma t35 : p2 -> p58.
+Definition f51 := Float2 (1) (1).
+Definition i35 := makepairF f9 f51.
+Notation p57 := (ABS _q i35). (* ABS(q, [0, 2]) *)
+Definition f52 := Float2 (-1) (1).
+Definition i36 := makepairF f52 f51.
+Notation p58 := (BND _q i36). (* BND(q, [-2, 2]) *)
+Lemma t35 : p58 -> p57.
 Proof.
  intros h0.
- refine (abs_of_bnd_o _q i2 i34 h0 _) ; finalize.
+ refine (abs_of_bnd_o _q i36 i35 h0 _) ; finalize.
 Qed.
-Lemma l55 : s1 -> p58 (* ABS(q, [0, 1.125]) *).
+Lemma l55 : s1 -> p57 (* ABS(q, [0, 2]) *).
 Proof.
  intros h0.
  assert (h1 := l21 h0).
- apply t35. exact h1.
+ apply t35. refine (subset _q i2 i36 h1 _) ; finalize.
 Qed.
-Definition f47 := Float2 (1) (1).
-Definition i35 := makepairF f9 f47.
-Notation p59 := (ABS _q i35). (* ABS(q, [0, 2]) *)
-Lemma t36 : p56 -> p59 -> p55.
+Lemma t36 : p55 -> p57 -> p54.
 Proof.
  intros h0 h1.
- refine (mul_aa _beta _q i32 i35 i28 h0 h1 _) ; finalize.
+ refine (mul_aa _beta _q i33 i35 i32 h0 h1 _) ; finalize.
 Qed.
-Lemma l53 : s1 -> p55 (* ABS(bq_ideal, [0, 8]) *).
+Lemma l53 : s1 -> p54 (* ABS(bq_ideal, [0, 8]) *).
 Proof.
  intros h0.
  assert (h1 := l54 h0).
  assert (h2 := l55 h0).
- apply t36. exact h1. refine (abs_subset _q i34 i35 h2 _) ; finalize.
+ apply t36. exact h1. exact h2.
 Qed.
-Lemma t37 : p55 -> p54.
+Lemma t37 : p54 -> p53.
 Proof.
  intros h0.
- refine (float_absolute_wide_ne _ _ _bq_ideal i28 i27 h0 _) ; finalize.
+ refine (float_absolute_wide_ne _ _ _bq_ideal i32 i31 h0 _) ; finalize.
 Qed.
-Lemma l52 : s1 -> p54 (* BND(bq - bq_ideal, [-4.44089e-16, 4.44089e-16]) *).
+Lemma l52 : s1 -> p53 (* BND(bq - bq_ideal, [-4.44089e-16, 4.44089e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l53 h0).
  apply t37. exact h1.
 Qed.
-Lemma t38 : p47 -> p54 -> p46.
+Lemma t38 : p47 -> p53 -> p46.
 Proof.
  intros h0 h1.
- refine (add r68 r69 i27 i27 i24 h0 h1 _) ; finalize.
+ refine (add r68 r69 i26 i31 i29 h0 h1 _) ; finalize.
 Qed.
-Lemma l47 : s1 -> p46 (* BND(ap - ap_ideal + (bq - bq_ideal), [-8.88178e-16, 8.88178e-16]) *).
+Lemma l47 : s1 -> p46 (* BND(ap - ap_ideal + (bq - bq_ideal), [-1.33227e-15, 1.33227e-15]) *).
 Proof.
  intros h0.
  assert (h1 := l48 h0).
@@ -753,9 +758,9 @@ Qed.
 Lemma t39 : p46 -> p45.
 Proof.
  intros h0.
- refine (add_mibs _ _ _ _ i24 h0) ; finalize.
+ refine (add_mibs _ _ _ _ i29 h0) ; finalize.
 Qed.
-Lemma l46 : s1 -> p45 (* BND(ap + bq - p1_ideal, [-8.88178e-16, 8.88178e-16]) *).
+Lemma l46 : s1 -> p45 (* BND(ap + bq - p1_ideal, [-1.33227e-15, 1.33227e-15]) *).
 Proof.
  intros h0.
  assert (h1 := l47 h0).
@@ -764,9 +769,9 @@ Qed.
 Lemma t40 : p42 -> p45 -> p41.
 Proof.
  intros h0 h1.
- refine (add r65 r66 i24 i24 i23 h0 h1 _) ; finalize.
+ refine (add r65 r66 i26 i29 i25 h0 h1 _) ; finalize.
 Qed.
-Lemma l43 : s1 -> p41 (* BND(p1 - (ap + bq) + (ap + bq - p1_ideal), [-1.77636e-15, 1.77636e-15]) *).
+Lemma l43 : s1 -> p41 (* BND(p1 - (ap + bq) + (ap + bq - p1_ideal), [-2.22045e-15, 2.22045e-15]) *).
 Proof.
  intros h0.
  assert (h1 := l44 h0).
@@ -776,244 +781,244 @@ Qed.
 Lemma t41 : p41 -> p40.
 Proof.
  intros h0.
- refine (sub_xals _ _ _ i23 h0) ; finalize.
+ refine (sub_xals _ _ _ i25 h0) ; finalize.
 Qed.
-Lemma l42 : s1 -> p40 (* BND(p1 - p1_ideal, [-1.77636e-15, 1.77636e-15]) *).
+Lemma l42 : s1 -> p40 (* BND(p1 - p1_ideal, [-2.22045e-15, 2.22045e-15]) *).
 Proof.
  intros h0.
  assert (h1 := l43 h0).
  apply t41. exact h1.
 Qed.
-Definition f48 := Float2 (-349276124892729865) (-108).
-Definition f49 := Float2 (349276124892729865) (-108).
-Definition i36 := makepairF f48 f49.
-Notation p60 := (BND r26 i36). (* BND(p1_ideal - p_exact, [-1.07629e-15, 1.07629e-15]) *)
-Notation p61 := (BND r45 i36). (* BND(-26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * p + -5970821179440564454679434590496408512463223103559587638046324770355239279 / 14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592 * q, [-1.07629e-15, 1.07629e-15]) *)
-Definition f50 := Float2 (-99773007843412687) (-107).
-Definition f51 := Float2 (99773007843412687) (-107).
-Definition i37 := makepairF f50 f51.
-Notation p62 := (BND r46 i37). (* BND(-26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * p, [-6.14899e-16, 6.14899e-16]) *)
-Definition f52 := Float2 (-14253286834773241) (-107).
-Definition f53 := Float2 (-1) (-54).
-Definition i38 := makepairF f52 f53.
-Notation p63 := (BND r47 i38). (* BND(-26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120, [-8.78427e-17, -5.55112e-17]) *)
-Definition f54 := Float2 (-347705856133536463) (86).
-Definition f55 := Float2 (-1) (144).
-Definition i39 := makepairF f54 f55.
-Notation p64 := (BND r48 i39). (* BND(-26902437575106681925807266903878992704715617, [-2.69024e+43, -2.23007e+43]) *)
-Lemma t42 : p64.
+Definition f53 := Float2 (-283342907041772715) (-107).
+Definition f54 := Float2 (283342907041772715) (-107).
+Definition i37 := makepairF f53 f54.
+Notation p59 := (BND r26 i37). (* BND(p1_ideal - p_exact, [-1.74624e-15, 1.74624e-15]) *)
+Notation p60 := (BND r45 i37). (* BND(-26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * p + -5970821179440564454679434590496408512463223103559587638046324770355239279 / 14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592 * q, [-1.74624e-15, 1.74624e-15]) *)
+Definition f55 := Float2 (-634271264147409225) (-109).
+Definition f56 := Float2 (634271264147409225) (-109).
+Definition i38 := makepairF f55 f56.
+Notation p61 := (BND r46 i38). (* BND(-26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * p, [-9.7725e-16, 9.7725e-16]) *)
+Definition f57 := Float2 (-14253286834773241) (-107).
+Definition f58 := Float2 (-1) (-54).
+Definition i39 := makepairF f57 f58.
+Notation p62 := (BND r47 i39). (* BND(-26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120, [-8.78427e-17, -5.55112e-17]) *)
+Definition f59 := Float2 (-347705856133536463) (86).
+Definition f60 := Float2 (-1) (144).
+Definition i40 := makepairF f59 f60.
+Notation p63 := (BND r48 i40). (* BND(-26902437575106681925807266903878992704715617, [-2.69024e+43, -2.23007e+43]) *)
+Lemma t42 : p63.
 Proof.
- refine (constant1 _ i39 _) ; finalize.
+ refine (constant1 _ i40 _) ; finalize.
 Qed.
-Lemma l60 : s1 -> p64 (* BND(-26902437575106681925807266903878992704715617, [-2.69024e+43, -2.23007e+43]) *).
+Lemma l60 : s1 -> p63 (* BND(-26902437575106681925807266903878992704715617, [-2.69024e+43, -2.23007e+43]) *).
 Proof.
  intros h0.
  apply t42.
 Qed.
-Definition f56 := Float2 (219728681850027027) (140).
-Definition f57 := Float2 (1) (198).
-Definition i40 := makepairF f56 f57.
-Notation p65 := (BND r18 i40). (* BND(306257084171653319081306918663994503898804694316456471429120, [3.06257e+59, 4.01735e+59]) *)
-Lemma t43 : p65.
+Definition f61 := Float2 (219728681850027027) (140).
+Definition f62 := Float2 (1) (198).
+Definition i41 := makepairF f61 f62.
+Notation p64 := (BND r18 i41). (* BND(306257084171653319081306918663994503898804694316456471429120, [3.06257e+59, 4.01735e+59]) *)
+Lemma t43 : p64.
 Proof.
- refine (constant1 _ i40 _) ; finalize.
+ refine (constant1 _ i41 _) ; finalize.
 Qed.
-Lemma l61 : s1 -> p65 (* BND(306257084171653319081306918663994503898804694316456471429120, [3.06257e+59, 4.01735e+59]) *).
+Lemma l61 : s1 -> p64 (* BND(306257084171653319081306918663994503898804694316456471429120, [3.06257e+59, 4.01735e+59]) *).
 Proof.
  intros h0.
  apply t43.
 Qed.
-Lemma t44 : p64 -> p65 -> p63.
+Lemma t44 : p63 -> p64 -> p62.
 Proof.
  intros h0 h1.
- refine (div_np r48 r18 i39 i40 i38 h0 h1 _) ; finalize.
+ refine (div_np r48 r18 i40 i41 i39 h0 h1 _) ; finalize.
 Qed.
-Lemma l59 : s1 -> p63 (* BND(-26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120, [-8.78427e-17, -5.55112e-17]) *).
+Lemma l59 : s1 -> p62 (* BND(-26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120, [-8.78427e-17, -5.55112e-17]) *).
 Proof.
  intros h0.
  assert (h1 := l60 h0).
  assert (h2 := l61 h0).
  apply t44. exact h1. exact h2.
 Qed.
-Lemma t45 : p63 -> p1 -> p62.
+Lemma t45 : p62 -> p1 -> p61.
 Proof.
  intros h0 h1.
- refine (mul_no r47 _p i38 i1 i37 h0 h1 _) ; finalize.
+ refine (mul_no r47 _p i39 i1 i38 h0 h1 _) ; finalize.
 Qed.
-Lemma l58 : s1 -> p62 (* BND(-26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * p, [-6.14899e-16, 6.14899e-16]) *).
+Lemma l58 : s1 -> p61 (* BND(-26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * p, [-9.7725e-16, 9.7725e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l59 h0).
  assert (h2 := l15 h0).
  apply t45. exact h1. exact h2.
 Qed.
-Definition f58 := Float2 (-149730109205904491) (-108).
-Definition f59 := Float2 (149730109205904491) (-108).
-Definition i41 := makepairF f58 f59.
-Notation p66 := (BND r49 i41). (* BND(-5970821179440564454679434590496408512463223103559587638046324770355239279 / 14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592 * q, [-4.61392e-16, 4.61392e-16]) *)
-Definition f60 := Float2 (-33273357601312109) (-106).
-Definition f61 := Float2 (-1) (-52).
-Definition i42 := makepairF f60 f61.
-Notation p67 := (BND r50 i42). (* BND(-5970821179440564454679434590496408512463223103559587638046324770355239279 / 14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592, [-4.10126e-16, -2.22045e-16]) *)
-Definition f62 := Float2 (-243508913248898345) (184).
-Definition f63 := Float2 (-1) (241).
-Definition i43 := makepairF f62 f63.
-Notation p68 := (BND r51 i43). (* BND(-5970821179440564454679434590496408512463223103559587638046324770355239279, [-5.97082e+72, -3.53369e+72]) *)
-Lemma t46 : p68.
+Definition f63 := Float2 (-499100364019681635) (-109).
+Definition f64 := Float2 (499100364019681635) (-109).
+Definition i42 := makepairF f63 f64.
+Notation p65 := (BND r49 i42). (* BND(-5970821179440564454679434590496408512463223103559587638046324770355239279 / 14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592 * q, [-7.68986e-16, 7.68986e-16]) *)
+Definition f65 := Float2 (-33273357601312109) (-106).
+Definition f66 := Float2 (-1) (-52).
+Definition i43 := makepairF f65 f66.
+Notation p66 := (BND r50 i43). (* BND(-5970821179440564454679434590496408512463223103559587638046324770355239279 / 14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592, [-4.10126e-16, -2.22045e-16]) *)
+Definition f67 := Float2 (-243508913248898345) (184).
+Definition f68 := Float2 (-1) (241).
+Definition i44 := makepairF f67 f68.
+Notation p67 := (BND r51 i44). (* BND(-5970821179440564454679434590496408512463223103559587638046324770355239279, [-5.97082e+72, -3.53369e+72]) *)
+Lemma t46 : p67.
 Proof.
- refine (constant1 _ i43 _) ; finalize.
+ refine (constant1 _ i44 _) ; finalize.
 Qed.
-Lemma l64 : s1 -> p68 (* BND(-5970821179440564454679434590496408512463223103559587638046324770355239279, [-5.97082e+72, -3.53369e+72]) *).
+Lemma l64 : s1 -> p67 (* BND(-5970821179440564454679434590496408512463223103559587638046324770355239279, [-5.97082e+72, -3.53369e+72]) *).
 Proof.
  intros h0.
  apply t46.
 Qed.
-Definition f64 := Float2 (527348836440064865) (234).
-Definition f65 := Float2 (1) (293).
-Definition i44 := makepairF f64 f65.
-Notation p69 := (BND r22 i44). (* BND(14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592, [1.45585e+88, 1.59143e+88]) *)
-Lemma t47 : p69.
+Definition f69 := Float2 (527348836440064865) (234).
+Definition f70 := Float2 (1) (293).
+Definition i45 := makepairF f69 f70.
+Notation p68 := (BND r22 i45). (* BND(14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592, [1.45585e+88, 1.59143e+88]) *)
+Lemma t47 : p68.
 Proof.
- refine (constant1 _ i44 _) ; finalize.
+ refine (constant1 _ i45 _) ; finalize.
 Qed.
-Lemma l65 : s1 -> p69 (* BND(14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592, [1.45585e+88, 1.59143e+88]) *).
+Lemma l65 : s1 -> p68 (* BND(14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592, [1.45585e+88, 1.59143e+88]) *).
 Proof.
  intros h0.
  apply t47.
 Qed.
-Lemma t48 : p68 -> p69 -> p67.
+Lemma t48 : p67 -> p68 -> p66.
 Proof.
  intros h0 h1.
- refine (div_np r51 r22 i43 i44 i42 h0 h1 _) ; finalize.
+ refine (div_np r51 r22 i44 i45 i43 h0 h1 _) ; finalize.
 Qed.
-Lemma l63 : s1 -> p67 (* BND(-5970821179440564454679434590496408512463223103559587638046324770355239279 / 14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592, [-4.10126e-16, -2.22045e-16]) *).
+Lemma l63 : s1 -> p66 (* BND(-5970821179440564454679434590496408512463223103559587638046324770355239279 / 14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592, [-4.10126e-16, -2.22045e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l64 h0).
  assert (h2 := l65 h0).
  apply t48. exact h1. exact h2.
 Qed.
-Lemma t49 : p67 -> p2 -> p66.
+Lemma t49 : p66 -> p2 -> p65.
 Proof.
  intros h0 h1.
- refine (mul_no r50 _q i42 i2 i41 h0 h1 _) ; finalize.
+ refine (mul_no r50 _q i43 i2 i42 h0 h1 _) ; finalize.
 Qed.
-Lemma l62 : s1 -> p66 (* BND(-5970821179440564454679434590496408512463223103559587638046324770355239279 / 14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592 * q, [-4.61392e-16, 4.61392e-16]) *).
+Lemma l62 : s1 -> p65 (* BND(-5970821179440564454679434590496408512463223103559587638046324770355239279 / 14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592 * q, [-7.68986e-16, 7.68986e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l63 h0).
  assert (h2 := l21 h0).
  apply t49. exact h1. exact h2.
 Qed.
-Lemma t50 : p62 -> p66 -> p61.
+Lemma t50 : p61 -> p65 -> p60.
 Proof.
  intros h0 h1.
- refine (add r46 r49 i37 i41 i36 h0 h1 _) ; finalize.
+ refine (add r46 r49 i38 i42 i37 h0 h1 _) ; finalize.
 Qed.
-Lemma l57 : s1 -> p61 (* BND(-26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * p + -5970821179440564454679434590496408512463223103559587638046324770355239279 / 14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592 * q, [-1.07629e-15, 1.07629e-15]) *).
+Lemma l57 : s1 -> p60 (* BND(-26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * p + -5970821179440564454679434590496408512463223103559587638046324770355239279 / 14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592 * q, [-1.74624e-15, 1.74624e-15]) *).
 Proof.
  intros h0.
  assert (h1 := l58 h0).
  assert (h2 := l62 h0).
  apply t50. exact h1. exact h2.
 Qed.
-Definition i45 := makepairF f9 f9.
-Notation p70 := (REL r26 r45 i45). (* REL(p1_ideal - p_exact, -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * p + -5970821179440564454679434590496408512463223103559587638046324770355239279 / 14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592 * q, [0, 0]) *)
-Notation p71 := (r26 = r45). (* EQL(p1_ideal - p_exact, -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * p + -5970821179440564454679434590496408512463223103559587638046324770355239279 / 14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592 * q) *)
-Lemma t51 : p71.
+Definition i46 := makepairF f9 f9.
+Notation p69 := (REL r26 r45 i46). (* REL(p1_ideal - p_exact, -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * p + -5970821179440564454679434590496408512463223103559587638046324770355239279 / 14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592 * q, [0, 0]) *)
+Notation p70 := (r26 = r45). (* EQL(p1_ideal - p_exact, -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * p + -5970821179440564454679434590496408512463223103559587638046324770355239279 / 14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592 * q) *)
+Lemma t51 : p70.
 Proof.
  refine (b3) ; finalize.
 Qed.
-Lemma l67 : s1 -> p71 (* EQL(p1_ideal - p_exact, -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * p + -5970821179440564454679434590496408512463223103559587638046324770355239279 / 14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592 * q) *).
+Lemma l67 : s1 -> p70 (* EQL(p1_ideal - p_exact, -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * p + -5970821179440564454679434590496408512463223103559587638046324770355239279 / 14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592 * q) *).
 Proof.
  intros h0.
  apply t51.
 Qed.
-Notation p72 := (REL r45 r45 i45). (* REL(-26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * p + -5970821179440564454679434590496408512463223103559587638046324770355239279 / 14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592 * q, -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * p + -5970821179440564454679434590496408512463223103559587638046324770355239279 / 14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592 * q, [0, 0]) *)
-Lemma t52 : p72.
+Notation p71 := (REL r45 r45 i46). (* REL(-26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * p + -5970821179440564454679434590496408512463223103559587638046324770355239279 / 14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592 * q, -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * p + -5970821179440564454679434590496408512463223103559587638046324770355239279 / 14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592 * q, [0, 0]) *)
+Lemma t52 : p71.
 Proof.
- refine (rel_refl r45 i45 _) ; finalize.
+ refine (rel_refl r45 i46 _) ; finalize.
 Qed.
-Lemma l68 : s1 -> p72 (* REL(-26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * p + -5970821179440564454679434590496408512463223103559587638046324770355239279 / 14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592 * q, -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * p + -5970821179440564454679434590496408512463223103559587638046324770355239279 / 14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592 * q, [0, 0]) *).
+Lemma l68 : s1 -> p71 (* REL(-26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * p + -5970821179440564454679434590496408512463223103559587638046324770355239279 / 14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592 * q, -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * p + -5970821179440564454679434590496408512463223103559587638046324770355239279 / 14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592 * q, [0, 0]) *).
 Proof.
  intros h0.
  apply t52.
 Qed.
-Lemma t53 : p71 -> p72 -> p70.
+Lemma t53 : p70 -> p71 -> p69.
 Proof.
  intros h0 h1.
- refine (rel_rewrite_1 r26 r45 r45 i45 h0 h1) ; finalize.
+ refine (rel_rewrite_1 r26 r45 r45 i46 h0 h1) ; finalize.
 Qed.
-Lemma l66 : s1 -> p70 (* REL(p1_ideal - p_exact, -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * p + -5970821179440564454679434590496408512463223103559587638046324770355239279 / 14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592 * q, [0, 0]) *).
+Lemma l66 : s1 -> p69 (* REL(p1_ideal - p_exact, -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * p + -5970821179440564454679434590496408512463223103559587638046324770355239279 / 14558511621537888898126202167474500637236590474581529455778362919655804383322842534510592 * q, [0, 0]) *).
 Proof.
  intros h0.
  assert (h1 := l67 h0).
  assert (h2 := l68 h0).
  apply t53. exact h1. exact h2.
 Qed.
-Lemma t54 : p61 -> p70 -> p60.
+Lemma t54 : p60 -> p69 -> p59.
 Proof.
  intros h0 h1.
- refine (bnd_of_bnd_rel_o r26 r45 i36 i45 i36 h0 h1 _) ; finalize.
+ refine (bnd_of_bnd_rel_o r26 r45 i37 i46 i37 h0 h1 _) ; finalize.
 Qed.
-Lemma l56 : s1 -> p60 (* BND(p1_ideal - p_exact, [-1.07629e-15, 1.07629e-15]) *).
+Lemma l56 : s1 -> p59 (* BND(p1_ideal - p_exact, [-1.74624e-15, 1.74624e-15]) *).
 Proof.
  intros h0.
  assert (h1 := l57 h0).
  assert (h2 := l66 h0).
  apply t54. exact h1. exact h2.
 Qed.
-Lemma t55 : p40 -> p60 -> p39.
+Lemma t55 : p40 -> p59 -> p39.
 Proof.
  intros h0 h1.
- refine (add r24 r26 i23 i36 i3 h0 h1 _) ; finalize.
+ refine (add r24 r26 i25 i37 i3 h0 h1 _) ; finalize.
 Qed.
-Lemma l41 : s1 -> p39 (* BND(p1 - p1_ideal + (p1_ideal - p_exact), [-2.85265e-15, 2.85265e-15]) *).
+Lemma l41 : s1 -> p39 (* BND(p1 - p1_ideal + (p1_ideal - p_exact), [-3.96668e-15, 3.96668e-15]) *).
 Proof.
  intros h0.
  assert (h1 := l42 h0).
  assert (h2 := l56 h0).
  apply t55. exact h1. exact h2.
 Qed.
-Notation p73 := (REL r1 r23 i45). (* REL(p1 - p_exact, p1 - p1_ideal + (p1_ideal - p_exact), [0, 0]) *)
-Notation p74 := (r1 = r23). (* EQL(p1 - p_exact, p1 - p1_ideal + (p1_ideal - p_exact)) *)
-Lemma t56 : p74.
+Notation p72 := (REL r1 r23 i46). (* REL(p1 - p_exact, p1 - p1_ideal + (p1_ideal - p_exact), [0, 0]) *)
+Notation p73 := (r1 = r23). (* EQL(p1 - p_exact, p1 - p1_ideal + (p1_ideal - p_exact)) *)
+Lemma t56 : p73.
 Proof.
  refine (b1) ; finalize.
 Qed.
-Lemma l70 : s1 -> p74 (* EQL(p1 - p_exact, p1 - p1_ideal + (p1_ideal - p_exact)) *).
+Lemma l70 : s1 -> p73 (* EQL(p1 - p_exact, p1 - p1_ideal + (p1_ideal - p_exact)) *).
 Proof.
  intros h0.
  apply t56.
 Qed.
-Notation p75 := (REL r23 r23 i45). (* REL(p1 - p1_ideal + (p1_ideal - p_exact), p1 - p1_ideal + (p1_ideal - p_exact), [0, 0]) *)
-Lemma t57 : p75.
+Notation p74 := (REL r23 r23 i46). (* REL(p1 - p1_ideal + (p1_ideal - p_exact), p1 - p1_ideal + (p1_ideal - p_exact), [0, 0]) *)
+Lemma t57 : p74.
 Proof.
- refine (rel_refl r23 i45 _) ; finalize.
+ refine (rel_refl r23 i46 _) ; finalize.
 Qed.
-Lemma l71 : s1 -> p75 (* REL(p1 - p1_ideal + (p1_ideal - p_exact), p1 - p1_ideal + (p1_ideal - p_exact), [0, 0]) *).
+Lemma l71 : s1 -> p74 (* REL(p1 - p1_ideal + (p1_ideal - p_exact), p1 - p1_ideal + (p1_ideal - p_exact), [0, 0]) *).
 Proof.
  intros h0.
  apply t57.
 Qed.
-Lemma t58 : p74 -> p75 -> p73.
+Lemma t58 : p73 -> p74 -> p72.
 Proof.
  intros h0 h1.
- refine (rel_rewrite_1 r1 r23 r23 i45 h0 h1) ; finalize.
+ refine (rel_rewrite_1 r1 r23 r23 i46 h0 h1) ; finalize.
 Qed.
-Lemma l69 : s1 -> p73 (* REL(p1 - p_exact, p1 - p1_ideal + (p1_ideal - p_exact), [0, 0]) *).
+Lemma l69 : s1 -> p72 (* REL(p1 - p_exact, p1 - p1_ideal + (p1_ideal - p_exact), [0, 0]) *).
 Proof.
  intros h0.
  assert (h1 := l70 h0).
  assert (h2 := l71 h0).
  apply t58. exact h1. exact h2.
 Qed.
-Lemma t59 : p39 -> p73 -> p3.
+Lemma t59 : p39 -> p72 -> p3.
 Proof.
  intros h0 h1.
- refine (bnd_of_bnd_rel_o r1 r23 i3 i45 i3 h0 h1 _) ; finalize.
+ refine (bnd_of_bnd_rel_o r1 r23 i3 i46 i3 h0 h1 _) ; finalize.
 Qed.
-Lemma l40 : s1 -> p3 (* BND(p1 - p_exact, [-2.85265e-15, 2.85265e-15]) *).
+Lemma l40 : s1 -> p3 (* BND(p1 - p_exact, [-3.96668e-15, 3.96668e-15]) *).
 Proof.
  intros h0.
  assert (h1 := l41 h0).
@@ -1027,350 +1032,347 @@ Proof.
  assert (h2 := l40 h0).
  refine (simplify (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 1%nat i4)) (Abnd 0%nat i3) (List.cons r1 (List.cons r27 List.nil)) h2 h1 _) ; finalize.
 Qed.
-Notation p76 := (BND r41 i4). (* BND(q1 - q1_ideal + (q1_ideal - q_exact), [-3.37486e-16, 3.37486e-16]) *)
-Definition f66 := Float2 (1) (-52).
-Definition i46 := makepairF f61 f66.
-Notation p77 := (BND r42 i46). (* BND(q1 - q1_ideal, [-2.22045e-16, 2.22045e-16]) *)
+Notation p75 := (BND r41 i4). (* BND(q1 - q1_ideal + (q1_ideal - q_exact), [-6.35206e-16, 6.35206e-16]) *)
+Notation p76 := (BND r42 i31). (* BND(q1 - q1_ideal, [-4.44089e-16, 4.44089e-16]) *)
 Notation r71 := ((_q1 - r29)%R).
 Notation r72 := ((r29 - _q1_ideal)%R).
 Notation r70 := ((r71 + r72)%R).
-Notation p78 := (BND r70 i46). (* BND(q1 - (gp + dq) + (gp + dq - q1_ideal), [-2.22045e-16, 2.22045e-16]) *)
-Definition f67 := Float2 (-1) (-53).
-Definition f68 := Float2 (1) (-53).
-Definition i47 := makepairF f67 f68.
-Notation p79 := (BND r71 i47). (* BND(q1 - (gp + dq), [-1.11022e-16, 1.11022e-16]) *)
-Notation p80 := (ABS r29 i35). (* ABS(gp + dq, [0, 2]) *)
-Definition f69 := Float2 (-1) (1).
-Definition i48 := makepairF f69 f47.
-Notation p81 := (BND r29 i48). (* BND(gp + dq, [-2, 2]) *)
-Lemma t60 : p81 -> p80.
+Notation p77 := (BND r70 i31). (* BND(q1 - (gp + dq) + (gp + dq - q1_ideal), [-4.44089e-16, 4.44089e-16]) *)
+Definition f71 := Float2 (1) (-52).
+Definition i47 := makepairF f66 f71.
+Notation p78 := (BND r71 i47). (* BND(q1 - (gp + dq), [-2.22045e-16, 2.22045e-16]) *)
+Definition i48 := makepairF f9 f49.
+Notation p79 := (ABS r29 i48). (* ABS(gp + dq, [0, 4]) *)
+Definition i49 := makepairF f50 f49.
+Notation p80 := (BND r29 i49). (* BND(gp + dq, [-4, 4]) *)
+Lemma t60 : p80 -> p79.
 Proof.
  intros h0.
- refine (abs_of_bnd_o r29 i48 i35 h0 _) ; finalize.
+ refine (abs_of_bnd_o r29 i49 i48 h0 _) ; finalize.
 Qed.
-Lemma l77 : s1 -> p80 (* ABS(gp + dq, [0, 2]) *).
+Lemma l77 : s1 -> p79 (* ABS(gp + dq, [0, 4]) *).
 Proof.
  intros h0.
  assert (h1 := l39 h0).
- apply t60. refine (subset r29 i21 i48 h1 _) ; finalize.
+ apply t60. refine (subset r29 i23 i49 h1 _) ; finalize.
 Qed.
-Lemma t61 : p80 -> p79.
+Lemma t61 : p79 -> p78.
 Proof.
  intros h0.
- refine (float_absolute_wide_ne _ _ r29 i35 i47 h0 _) ; finalize.
+ refine (float_absolute_wide_ne _ _ r29 i48 i47 h0 _) ; finalize.
 Qed.
-Lemma l76 : s1 -> p79 (* BND(q1 - (gp + dq), [-1.11022e-16, 1.11022e-16]) *).
+Lemma l76 : s1 -> p78 (* BND(q1 - (gp + dq), [-2.22045e-16, 2.22045e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l77 h0).
  apply t61. exact h1.
 Qed.
-Notation p82 := (BND r72 i47). (* BND(gp + dq - q1_ideal, [-1.11022e-16, 1.11022e-16]) *)
+Notation p81 := (BND r72 i47). (* BND(gp + dq - q1_ideal, [-2.22045e-16, 2.22045e-16]) *)
 Notation r74 := ((_gp - _gp_ideal)%R).
 Notation r75 := ((_dq - _dq_ideal)%R).
 Notation r73 := ((r74 + r75)%R).
-Notation p83 := (BND r73 i47). (* BND(gp - gp_ideal + (dq - dq_ideal), [-1.11022e-16, 1.11022e-16]) *)
-Definition f70 := Float2 (1) (-54).
-Definition i49 := makepairF f53 f70.
-Notation p84 := (BND r74 i49). (* BND(gp - gp_ideal, [-5.55112e-17, 5.55112e-17]) *)
-Definition i50 := makepairF f9 f44.
-Notation p85 := (ABS _gp_ideal i50). (* ABS(gp_ideal, [0, 1]) *)
-Definition f71 := Float2 (1) (-3).
-Definition i51 := makepairF f25 f71.
-Notation p86 := (ABS _gamma i51). (* ABS(gamma, [0.0625, 0.125]) *)
-Notation p87 := (BND _gamma i51). (* BND(gamma, [0.0625, 0.125]) *)
-Lemma t62 : p87 -> p86.
+Notation p82 := (BND r73 i47). (* BND(gp - gp_ideal + (dq - dq_ideal), [-2.22045e-16, 2.22045e-16]) *)
+Definition f72 := Float2 (-1) (-53).
+Definition f73 := Float2 (1) (-53).
+Definition i50 := makepairF f72 f73.
+Notation p83 := (BND r74 i50). (* BND(gp - gp_ideal, [-1.11022e-16, 1.11022e-16]) *)
+Notation p84 := (ABS _gp_ideal i35). (* ABS(gp_ideal, [0, 2]) *)
+Definition f74 := Float2 (1) (-3).
+Definition i51 := makepairF f27 f74.
+Notation p85 := (ABS _gamma i51). (* ABS(gamma, [0.0625, 0.125]) *)
+Notation p86 := (BND _gamma i51). (* BND(gamma, [0.0625, 0.125]) *)
+Lemma t62 : p86 -> p85.
 Proof.
  intros h0.
  refine (abs_of_bnd_p _gamma i51 i51 h0 _) ; finalize.
 Qed.
-Lemma l82 : s1 -> p86 (* ABS(gamma, [0.0625, 0.125]) *).
+Lemma l82 : s1 -> p85 (* ABS(gamma, [0.0625, 0.125]) *).
 Proof.
  intros h0.
  assert (h1 := l31 h0).
- apply t62. refine (subset _gamma i17 i51 h1 _) ; finalize.
+ apply t62. refine (subset _gamma i18 i51 h1 _) ; finalize.
 Qed.
-Lemma t63 : p86 -> p51 -> p85.
+Lemma t63 : p85 -> p51 -> p84.
 Proof.
  intros h0 h1.
- refine (mul_aa _gamma _p i51 i28 i50 h0 h1 _) ; finalize.
+ refine (mul_aa _gamma _p i51 i27 i35 h0 h1 _) ; finalize.
 Qed.
-Lemma l81 : s1 -> p85 (* ABS(gp_ideal, [0, 1]) *).
+Lemma l81 : s1 -> p84 (* ABS(gp_ideal, [0, 2]) *).
 Proof.
  intros h0.
  assert (h1 := l82 h0).
  assert (h2 := l51 h0).
  apply t63. exact h1. exact h2.
 Qed.
-Lemma t64 : p85 -> p84.
+Lemma t64 : p84 -> p83.
 Proof.
  intros h0.
- refine (float_absolute_wide_ne _ _ _gp_ideal i50 i49 h0 _) ; finalize.
+ refine (float_absolute_wide_ne _ _ _gp_ideal i35 i50 h0 _) ; finalize.
 Qed.
-Lemma l80 : s1 -> p84 (* BND(gp - gp_ideal, [-5.55112e-17, 5.55112e-17]) *).
+Lemma l80 : s1 -> p83 (* BND(gp - gp_ideal, [-1.11022e-16, 1.11022e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l81 h0).
  apply t64. exact h1.
 Qed.
-Notation p88 := (BND r75 i49). (* BND(dq - dq_ideal, [-5.55112e-17, 5.55112e-17]) *)
-Notation p89 := (ABS _dq_ideal i50). (* ABS(dq_ideal, [0, 1]) *)
-Lemma t65 : p49 -> p58 -> p89.
+Notation p87 := (BND r75 i50). (* BND(dq - dq_ideal, [-1.11022e-16, 1.11022e-16]) *)
+Notation p88 := (ABS _dq_ideal i35). (* ABS(dq_ideal, [0, 2]) *)
+Lemma t65 : p49 -> p57 -> p88.
 Proof.
  intros h0 h1.
- refine (mul_aa _delta _q i29 i34 i50 h0 h1 _) ; finalize.
+ refine (mul_aa _delta _q i30 i35 i35 h0 h1 _) ; finalize.
 Qed.
-Lemma l84 : s1 -> p89 (* ABS(dq_ideal, [0, 1]) *).
+Lemma l84 : s1 -> p88 (* ABS(dq_ideal, [0, 2]) *).
 Proof.
  intros h0.
  assert (h1 := l50 h0).
  assert (h2 := l55 h0).
  apply t65. exact h1. exact h2.
 Qed.
-Lemma t66 : p89 -> p88.
+Lemma t66 : p88 -> p87.
 Proof.
  intros h0.
- refine (float_absolute_wide_ne _ _ _dq_ideal i50 i49 h0 _) ; finalize.
+ refine (float_absolute_wide_ne _ _ _dq_ideal i35 i50 h0 _) ; finalize.
 Qed.
-Lemma l83 : s1 -> p88 (* BND(dq - dq_ideal, [-5.55112e-17, 5.55112e-17]) *).
+Lemma l83 : s1 -> p87 (* BND(dq - dq_ideal, [-1.11022e-16, 1.11022e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l84 h0).
  apply t66. exact h1.
 Qed.
-Lemma t67 : p84 -> p88 -> p83.
+Lemma t67 : p83 -> p87 -> p82.
 Proof.
  intros h0 h1.
- refine (add r74 r75 i49 i49 i47 h0 h1 _) ; finalize.
+ refine (add r74 r75 i50 i50 i47 h0 h1 _) ; finalize.
 Qed.
-Lemma l79 : s1 -> p83 (* BND(gp - gp_ideal + (dq - dq_ideal), [-1.11022e-16, 1.11022e-16]) *).
+Lemma l79 : s1 -> p82 (* BND(gp - gp_ideal + (dq - dq_ideal), [-2.22045e-16, 2.22045e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l80 h0).
  assert (h2 := l83 h0).
  apply t67. exact h1. exact h2.
 Qed.
-Lemma t68 : p83 -> p82.
+Lemma t68 : p82 -> p81.
 Proof.
  intros h0.
  refine (add_mibs _ _ _ _ i47 h0) ; finalize.
 Qed.
-Lemma l78 : s1 -> p82 (* BND(gp + dq - q1_ideal, [-1.11022e-16, 1.11022e-16]) *).
+Lemma l78 : s1 -> p81 (* BND(gp + dq - q1_ideal, [-2.22045e-16, 2.22045e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l79 h0).
  apply t68. exact h1.
 Qed.
-Lemma t69 : p79 -> p82 -> p78.
+Lemma t69 : p78 -> p81 -> p77.
 Proof.
  intros h0 h1.
- refine (add r71 r72 i47 i47 i46 h0 h1 _) ; finalize.
+ refine (add r71 r72 i47 i47 i31 h0 h1 _) ; finalize.
 Qed.
-Lemma l75 : s1 -> p78 (* BND(q1 - (gp + dq) + (gp + dq - q1_ideal), [-2.22045e-16, 2.22045e-16]) *).
+Lemma l75 : s1 -> p77 (* BND(q1 - (gp + dq) + (gp + dq - q1_ideal), [-4.44089e-16, 4.44089e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l76 h0).
  assert (h2 := l78 h0).
  apply t69. exact h1. exact h2.
 Qed.
-Lemma t70 : p78 -> p77.
+Lemma t70 : p77 -> p76.
 Proof.
  intros h0.
- refine (sub_xals _ _ _ i46 h0) ; finalize.
+ refine (sub_xals _ _ _ i31 h0) ; finalize.
 Qed.
-Lemma l74 : s1 -> p77 (* BND(q1 - q1_ideal, [-2.22045e-16, 2.22045e-16]) *).
+Lemma l74 : s1 -> p76 (* BND(q1 - q1_ideal, [-4.44089e-16, 4.44089e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l75 h0).
  apply t70. exact h1.
 Qed.
-Definition f72 := Float2 (-149851796370076087) (-110).
-Definition f73 := Float2 (149851796370076087) (-110).
-Definition i52 := makepairF f72 f73.
-Notation p90 := (BND r44 i52). (* BND(q1_ideal - q_exact, [-1.15442e-16, 1.15442e-16]) *)
-Notation p91 := (BND r52 i52). (* BND(1653192778717867398717027865407 / 696347988586361041328261577891668148137807052800 * p + -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * q, [-1.15442e-16, 1.15442e-16]) *)
-Definition f74 := Float2 (-10786107428558459) (-109).
-Definition f75 := Float2 (10786107428558459) (-109).
-Definition i53 := makepairF f74 f75.
-Notation p92 := (BND r53 i53). (* BND(1653192778717867398717027865407 / 696347988586361041328261577891668148137807052800 * p, [-1.66186e-17, 1.66186e-17]) *)
-Definition f76 := Float2 (1) (-59).
-Definition f77 := Float2 (24653959836705049) (-113).
-Definition i54 := makepairF f76 f77.
-Notation p93 := (BND r54 i54). (* BND(1653192778717867398717027865407 / 696347988586361041328261577891668148137807052800, [1.73472e-18, 2.37409e-18]) *)
-Definition f78 := Float2 (1) (100).
-Definition f79 := Float2 (23493282394580709) (46).
-Definition i55 := makepairF f78 f79.
-Notation p94 := (BND r55 i55). (* BND(1653192778717867398717027865407, [1.26765e+30, 1.65319e+30]) *)
-Lemma t71 : p94.
+Definition f75 := Float2 (-124041857709758287) (-109).
+Definition f76 := Float2 (124041857709758287) (-109).
+Definition i52 := makepairF f75 f76.
+Notation p89 := (BND r44 i52). (* BND(q1_ideal - q_exact, [-1.91117e-16, 1.91117e-16]) *)
+Notation p90 := (BND r52 i52). (* BND(1653192778717867398717027865407 / 696347988586361041328261577891668148137807052800 * p + -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * q, [-1.91117e-16, 1.91117e-16]) *)
+Definition f77 := Float2 (-34284412897917959) (-110).
+Definition f78 := Float2 (34284412897917959) (-110).
+Definition i53 := makepairF f77 f78.
+Notation p91 := (BND r53 i53). (* BND(1653192778717867398717027865407 / 696347988586361041328261577891668148137807052800 * p, [-2.64118e-17, 2.64118e-17]) *)
+Definition f79 := Float2 (1) (-59).
+Definition f80 := Float2 (24653959836705049) (-113).
+Definition i54 := makepairF f79 f80.
+Notation p92 := (BND r54 i54). (* BND(1653192778717867398717027865407 / 696347988586361041328261577891668148137807052800, [1.73472e-18, 2.37409e-18]) *)
+Definition f81 := Float2 (1) (100).
+Definition f82 := Float2 (23493282394580709) (46).
+Definition i55 := makepairF f81 f82.
+Notation p93 := (BND r55 i55). (* BND(1653192778717867398717027865407, [1.26765e+30, 1.65319e+30]) *)
+Lemma t71 : p93.
 Proof.
  refine (constant1 _ i55 _) ; finalize.
 Qed.
-Lemma l89 : s1 -> p94 (* BND(1653192778717867398717027865407, [1.26765e+30, 1.65319e+30]) *).
+Lemma l89 : s1 -> p93 (* BND(1653192778717867398717027865407, [1.26765e+30, 1.65319e+30]) *).
 Proof.
  intros h0.
  apply t71.
 Qed.
-Definition f80 := Float2 (274660852312533783) (101).
-Definition f81 := Float2 (1) (159).
-Definition i56 := makepairF f80 f81.
-Notation p95 := (BND r56 i56). (* BND(696347988586361041328261577891668148137807052800, [6.96348e+47, 7.30751e+47]) *)
-Lemma t72 : p95.
+Definition f83 := Float2 (274660852312533783) (101).
+Definition f84 := Float2 (1) (159).
+Definition i56 := makepairF f83 f84.
+Notation p94 := (BND r56 i56). (* BND(696347988586361041328261577891668148137807052800, [6.96348e+47, 7.30751e+47]) *)
+Lemma t72 : p94.
 Proof.
  refine (constant1 _ i56 _) ; finalize.
 Qed.
-Lemma l90 : s1 -> p95 (* BND(696347988586361041328261577891668148137807052800, [6.96348e+47, 7.30751e+47]) *).
+Lemma l90 : s1 -> p94 (* BND(696347988586361041328261577891668148137807052800, [6.96348e+47, 7.30751e+47]) *).
 Proof.
  intros h0.
  apply t72.
 Qed.
-Lemma t73 : p94 -> p95 -> p93.
+Lemma t73 : p93 -> p94 -> p92.
 Proof.
  intros h0 h1.
  refine (div_pp r55 r56 i55 i56 i54 h0 h1 _) ; finalize.
 Qed.
-Lemma l88 : s1 -> p93 (* BND(1653192778717867398717027865407 / 696347988586361041328261577891668148137807052800, [1.73472e-18, 2.37409e-18]) *).
+Lemma l88 : s1 -> p92 (* BND(1653192778717867398717027865407 / 696347988586361041328261577891668148137807052800, [1.73472e-18, 2.37409e-18]) *).
 Proof.
  intros h0.
  assert (h1 := l89 h0).
  assert (h2 := l90 h0).
  apply t73. exact h1. exact h2.
 Qed.
-Lemma t74 : p93 -> p1 -> p92.
+Lemma t74 : p92 -> p1 -> p91.
 Proof.
  intros h0 h1.
  refine (mul_po r54 _p i54 i1 i53 h0 h1 _) ; finalize.
 Qed.
-Lemma l87 : s1 -> p92 (* BND(1653192778717867398717027865407 / 696347988586361041328261577891668148137807052800 * p, [-1.66186e-17, 1.66186e-17]) *).
+Lemma l87 : s1 -> p91 (* BND(1653192778717867398717027865407 / 696347988586361041328261577891668148137807052800 * p, [-2.64118e-17, 2.64118e-17]) *).
 Proof.
  intros h0.
  assert (h1 := l88 h0).
  assert (h2 := l15 h0).
  apply t74. exact h1. exact h2.
 Qed.
-Definition f82 := Float2 (-128279581512959169) (-110).
-Definition f83 := Float2 (128279581512959169) (-110).
-Definition i57 := makepairF f82 f83.
-Notation p96 := (BND r57 i57). (* BND(-26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * q, [-9.8823e-17, 9.8823e-17]) *)
-Lemma t75 : p63 -> p2 -> p96.
+Definition f85 := Float2 (-213799302521598615) (-110).
+Definition f86 := Float2 (213799302521598615) (-110).
+Definition i57 := makepairF f85 f86.
+Notation p95 := (BND r57 i57). (* BND(-26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * q, [-1.64705e-16, 1.64705e-16]) *)
+Lemma t75 : p62 -> p2 -> p95.
 Proof.
  intros h0 h1.
- refine (mul_no r47 _q i38 i2 i57 h0 h1 _) ; finalize.
+ refine (mul_no r47 _q i39 i2 i57 h0 h1 _) ; finalize.
 Qed.
-Lemma l91 : s1 -> p96 (* BND(-26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * q, [-9.8823e-17, 9.8823e-17]) *).
+Lemma l91 : s1 -> p95 (* BND(-26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * q, [-1.64705e-16, 1.64705e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l59 h0).
  assert (h2 := l21 h0).
  apply t75. exact h1. exact h2.
 Qed.
-Lemma t76 : p92 -> p96 -> p91.
+Lemma t76 : p91 -> p95 -> p90.
 Proof.
  intros h0 h1.
  refine (add r53 r57 i53 i57 i52 h0 h1 _) ; finalize.
 Qed.
-Lemma l86 : s1 -> p91 (* BND(1653192778717867398717027865407 / 696347988586361041328261577891668148137807052800 * p + -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * q, [-1.15442e-16, 1.15442e-16]) *).
+Lemma l86 : s1 -> p90 (* BND(1653192778717867398717027865407 / 696347988586361041328261577891668148137807052800 * p + -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * q, [-1.91117e-16, 1.91117e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l87 h0).
  assert (h2 := l91 h0).
  apply t76. exact h1. exact h2.
 Qed.
-Notation p97 := (REL r44 r52 i45). (* REL(q1_ideal - q_exact, 1653192778717867398717027865407 / 696347988586361041328261577891668148137807052800 * p + -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * q, [0, 0]) *)
-Notation p98 := (r44 = r52). (* EQL(q1_ideal - q_exact, 1653192778717867398717027865407 / 696347988586361041328261577891668148137807052800 * p + -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * q) *)
-Lemma t77 : p98.
+Notation p96 := (REL r44 r52 i46). (* REL(q1_ideal - q_exact, 1653192778717867398717027865407 / 696347988586361041328261577891668148137807052800 * p + -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * q, [0, 0]) *)
+Notation p97 := (r44 = r52). (* EQL(q1_ideal - q_exact, 1653192778717867398717027865407 / 696347988586361041328261577891668148137807052800 * p + -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * q) *)
+Lemma t77 : p97.
 Proof.
  refine (b4) ; finalize.
 Qed.
-Lemma l93 : s1 -> p98 (* EQL(q1_ideal - q_exact, 1653192778717867398717027865407 / 696347988586361041328261577891668148137807052800 * p + -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * q) *).
+Lemma l93 : s1 -> p97 (* EQL(q1_ideal - q_exact, 1653192778717867398717027865407 / 696347988586361041328261577891668148137807052800 * p + -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * q) *).
 Proof.
  intros h0.
  apply t77.
 Qed.
-Notation p99 := (REL r52 r52 i45). (* REL(1653192778717867398717027865407 / 696347988586361041328261577891668148137807052800 * p + -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * q, 1653192778717867398717027865407 / 696347988586361041328261577891668148137807052800 * p + -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * q, [0, 0]) *)
-Lemma t78 : p99.
+Notation p98 := (REL r52 r52 i46). (* REL(1653192778717867398717027865407 / 696347988586361041328261577891668148137807052800 * p + -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * q, 1653192778717867398717027865407 / 696347988586361041328261577891668148137807052800 * p + -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * q, [0, 0]) *)
+Lemma t78 : p98.
 Proof.
- refine (rel_refl r52 i45 _) ; finalize.
+ refine (rel_refl r52 i46 _) ; finalize.
 Qed.
-Lemma l94 : s1 -> p99 (* REL(1653192778717867398717027865407 / 696347988586361041328261577891668148137807052800 * p + -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * q, 1653192778717867398717027865407 / 696347988586361041328261577891668148137807052800 * p + -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * q, [0, 0]) *).
+Lemma l94 : s1 -> p98 (* REL(1653192778717867398717027865407 / 696347988586361041328261577891668148137807052800 * p + -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * q, 1653192778717867398717027865407 / 696347988586361041328261577891668148137807052800 * p + -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * q, [0, 0]) *).
 Proof.
  intros h0.
  apply t78.
 Qed.
-Lemma t79 : p98 -> p99 -> p97.
+Lemma t79 : p97 -> p98 -> p96.
 Proof.
  intros h0 h1.
- refine (rel_rewrite_1 r44 r52 r52 i45 h0 h1) ; finalize.
+ refine (rel_rewrite_1 r44 r52 r52 i46 h0 h1) ; finalize.
 Qed.
-Lemma l92 : s1 -> p97 (* REL(q1_ideal - q_exact, 1653192778717867398717027865407 / 696347988586361041328261577891668148137807052800 * p + -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * q, [0, 0]) *).
+Lemma l92 : s1 -> p96 (* REL(q1_ideal - q_exact, 1653192778717867398717027865407 / 696347988586361041328261577891668148137807052800 * p + -26902437575106681925807266903878992704715617 / 306257084171653319081306918663994503898804694316456471429120 * q, [0, 0]) *).
 Proof.
  intros h0.
  assert (h1 := l93 h0).
  assert (h2 := l94 h0).
  apply t79. exact h1. exact h2.
 Qed.
-Lemma t80 : p91 -> p97 -> p90.
+Lemma t80 : p90 -> p96 -> p89.
 Proof.
  intros h0 h1.
- refine (bnd_of_bnd_rel_o r44 r52 i52 i45 i52 h0 h1 _) ; finalize.
+ refine (bnd_of_bnd_rel_o r44 r52 i52 i46 i52 h0 h1 _) ; finalize.
 Qed.
-Lemma l85 : s1 -> p90 (* BND(q1_ideal - q_exact, [-1.15442e-16, 1.15442e-16]) *).
+Lemma l85 : s1 -> p89 (* BND(q1_ideal - q_exact, [-1.91117e-16, 1.91117e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l86 h0).
  assert (h2 := l92 h0).
  apply t80. exact h1. exact h2.
 Qed.
-Lemma t81 : p77 -> p90 -> p76.
+Lemma t81 : p76 -> p89 -> p75.
 Proof.
  intros h0 h1.
- refine (add r42 r44 i46 i52 i4 h0 h1 _) ; finalize.
+ refine (add r42 r44 i31 i52 i4 h0 h1 _) ; finalize.
 Qed.
-Lemma l73 : s1 -> p76 (* BND(q1 - q1_ideal + (q1_ideal - q_exact), [-3.37486e-16, 3.37486e-16]) *).
+Lemma l73 : s1 -> p75 (* BND(q1 - q1_ideal + (q1_ideal - q_exact), [-6.35206e-16, 6.35206e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l74 h0).
  assert (h2 := l85 h0).
  apply t81. exact h1. exact h2.
 Qed.
-Notation p100 := (REL r27 r41 i45). (* REL(q1 - q_exact, q1 - q1_ideal + (q1_ideal - q_exact), [0, 0]) *)
-Notation p101 := (r27 = r41). (* EQL(q1 - q_exact, q1 - q1_ideal + (q1_ideal - q_exact)) *)
-Lemma t82 : p101.
+Notation p99 := (REL r27 r41 i46). (* REL(q1 - q_exact, q1 - q1_ideal + (q1_ideal - q_exact), [0, 0]) *)
+Notation p100 := (r27 = r41). (* EQL(q1 - q_exact, q1 - q1_ideal + (q1_ideal - q_exact)) *)
+Lemma t82 : p100.
 Proof.
  refine (b2) ; finalize.
 Qed.
-Lemma l96 : s1 -> p101 (* EQL(q1 - q_exact, q1 - q1_ideal + (q1_ideal - q_exact)) *).
+Lemma l96 : s1 -> p100 (* EQL(q1 - q_exact, q1 - q1_ideal + (q1_ideal - q_exact)) *).
 Proof.
  intros h0.
  apply t82.
 Qed.
-Notation p102 := (REL r41 r41 i45). (* REL(q1 - q1_ideal + (q1_ideal - q_exact), q1 - q1_ideal + (q1_ideal - q_exact), [0, 0]) *)
-Lemma t83 : p102.
+Notation p101 := (REL r41 r41 i46). (* REL(q1 - q1_ideal + (q1_ideal - q_exact), q1 - q1_ideal + (q1_ideal - q_exact), [0, 0]) *)
+Lemma t83 : p101.
 Proof.
- refine (rel_refl r41 i45 _) ; finalize.
+ refine (rel_refl r41 i46 _) ; finalize.
 Qed.
-Lemma l97 : s1 -> p102 (* REL(q1 - q1_ideal + (q1_ideal - q_exact), q1 - q1_ideal + (q1_ideal - q_exact), [0, 0]) *).
+Lemma l97 : s1 -> p101 (* REL(q1 - q1_ideal + (q1_ideal - q_exact), q1 - q1_ideal + (q1_ideal - q_exact), [0, 0]) *).
 Proof.
  intros h0.
  apply t83.
 Qed.
-Lemma t84 : p101 -> p102 -> p100.
+Lemma t84 : p100 -> p101 -> p99.
 Proof.
  intros h0 h1.
- refine (rel_rewrite_1 r27 r41 r41 i45 h0 h1) ; finalize.
+ refine (rel_rewrite_1 r27 r41 r41 i46 h0 h1) ; finalize.
 Qed.
-Lemma l95 : s1 -> p100 (* REL(q1 - q_exact, q1 - q1_ideal + (q1_ideal - q_exact), [0, 0]) *).
+Lemma l95 : s1 -> p99 (* REL(q1 - q_exact, q1 - q1_ideal + (q1_ideal - q_exact), [0, 0]) *).
 Proof.
  intros h0.
  assert (h1 := l96 h0).
  assert (h2 := l97 h0).
  apply t84. exact h1. exact h2.
 Qed.
-Lemma t85 : p76 -> p100 -> p4.
+Lemma t85 : p75 -> p99 -> p4.
 Proof.
  intros h0 h1.
- refine (bnd_of_bnd_rel_o r27 r41 i4 i45 i4 h0 h1 _) ; finalize.
+ refine (bnd_of_bnd_rel_o r27 r41 i4 i46 i4 h0 h1 _) ; finalize.
 Qed.
-Lemma l72 : s1 -> p4 (* BND(q1 - q_exact, [-3.37486e-16, 3.37486e-16]) *).
+Lemma l72 : s1 -> p4 (* BND(q1 - q_exact, [-6.35206e-16, 6.35206e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l73 h0).
@@ -1400,9 +1402,9 @@ Definition c := (1807641825769423359468802491501 / 19327539251999843498371389135
 Definition d := (247760988533536771305687694478496380154277693914865356389217 / 306257084171653319081306918663994503898804694316456471429120).
 Definition wp := (1 / 1).
 Definition wq := (1344620393163896363098443684166982168191888233073975260599918088275920431239640217637110825 / 34040254924484386204803571210225647169656942870274671704515903447811402264688293144690688).
-Definition Bp := (925736877196153353 / 324518553658426726783156020576256).
-Definition Bq := (438082172521787831 / 1298074214633706907132624082305024).
-Definition eps := (4506248460919717 / 1267650600228229401496703205376).
+Definition Bp := (643630877231412395 / 162259276829213363391578010288128).
+Definition Bq := (412272233861470031 / 649037107316853453566312041152512).
+Definition eps := (891767682444737 / 158456325028528675187087900672).
 
 Definition Q (x y : R) := wp * x * x + wq * y * y.
 
@@ -1537,24 +1539,24 @@ Proof. first [ring | unfold float2R, Float1, Defs.F2R; simpl; unfold Z.pow_pos; 
 Lemma b4 : r44 = r52.
  apply a4.
 Qed.
-Definition f1 := Float2 (-7) (0).
-Definition f2 := Float2 (7) (0).
+Definition f1 := Float2 (-89) (-3).
+Definition f2 := Float2 (89) (-3).
 Definition i1 := makepairF f1 f2.
-Notation p1 := (BND _p i1). (* BND(p, [-7, 7]) *)
-Definition f3 := Float2 (-9) (-3).
-Definition f4 := Float2 (9) (-3).
+Notation p1 := (BND _p i1). (* BND(p, [-11.125, 11.125]) *)
+Definition f3 := Float2 (-15) (-3).
+Definition f4 := Float2 (15) (-3).
 Definition i2 := makepairF f3 f4.
-Notation p2 := (BND _q i2). (* BND(q, [-1.125, 1.125]) *)
+Notation p2 := (BND _q i2). (* BND(q, [-1.875, 1.875]) *)
 Definition s2 := (p1 /\ p2).
-Definition f5 := Float2 (-439973060305787769) (-107).
-Definition f6 := Float2 (439973060305787769) (-107).
+Definition f5 := Float2 (-626183230779878159) (-107).
+Definition f6 := Float2 (626183230779878159) (-107).
 Definition i3 := makepairF f5 f6.
-Notation p3 := (BND r1 i3). (* BND(p1 - p_exact, [-2.71154e-15, 2.71154e-15]) *)
+Notation p3 := (BND r1 i3). (* BND(p1 - p_exact, [-3.85915e-15, 3.85915e-15]) *)
 Definition s10 := (not p3).
-Definition f7 := Float2 (-568336969167987797) (-110).
-Definition f8 := Float2 (568336969167987797) (-110).
+Definition f7 := Float2 (-906491898205906241) (-110).
+Definition f8 := Float2 (906491898205906241) (-110).
 Definition i4 := makepairF f7 f8.
-Notation p4 := (BND r27 i4). (* BND(q1 - q_exact, [-4.37831e-16, 4.37831e-16]) *)
+Notation p4 := (BND r27 i4). (* BND(q1 - q_exact, [-6.98336e-16, 6.98336e-16]) *)
 Definition s11 := (not p4).
 Definition s9 := (s10 \/ s11).
 Notation r58 := ((Rabs _ap)%R).
@@ -1602,14 +1604,14 @@ Proof.
  assert (h1 := h0).
  exact (proj2 h1).
 Qed.
-Definition f11 := Float2 (7495558506137495) (-50).
+Definition f11 := Float2 (5956292027198545) (-49).
 Definition i6 := makepairF f9 f11.
-Notation p11 := (BND r58 i6). (* BND(|ap|, [0, 6.65739]) *)
-Notation p12 := (ABS _ap i6). (* ABS(ap, [0, 6.65739]) *)
-Definition f12 := Float2 (-7495558506137495) (-50).
+Notation p11 := (BND r58 i6). (* BND(|ap|, [0, 10.5805]) *)
+Notation p12 := (ABS _ap i6). (* ABS(ap, [0, 10.5805]) *)
+Definition f12 := Float2 (-5956292027198545) (-49).
 Definition i7 := makepairF f12 f11.
-Notation p13 := (BND _ap i7). (* BND(ap, [-6.65739, 6.65739]) *)
-Notation p14 := (BND _ap_ideal i7). (* BND(ap_ideal, [-6.65739, 6.65739]) *)
+Notation p13 := (BND _ap i7). (* BND(ap, [-10.5805, 10.5805]) *)
+Notation p14 := (BND _ap_ideal i7). (* BND(ap_ideal, [-10.5805, 10.5805]) *)
 Definition f13 := Float2 (1) (-1).
 Definition f14 := Float2 (8566352578442851) (-53).
 Definition i8 := makepairF f13 f14.
@@ -1629,7 +1631,7 @@ Proof.
  assert (h1 := h0).
  exact (proj1 h1).
 Qed.
-Lemma l15 : s1 -> p1 (* BND(p, [-7, 7]) *).
+Lemma l15 : s1 -> p1 (* BND(p, [-11.125, 11.125]) *).
 Proof.
  intros h0.
  assert (h1 := l16 h0).
@@ -1640,7 +1642,7 @@ Proof.
  intros h0 h1.
  refine (mul_po _delta _p i8 i1 i7 h0 h1 _) ; finalize.
 Qed.
-Lemma l13 : s1 -> p14 (* BND(ap_ideal, [-6.65739, 6.65739]) *).
+Lemma l13 : s1 -> p14 (* BND(ap_ideal, [-10.5805, 10.5805]) *).
 Proof.
  intros h0.
  assert (h1 := l14 h0).
@@ -1652,7 +1654,7 @@ Proof.
  intros h0.
  refine (float_round_ne _ _ _ap_ideal i7 i7 h0 _) ; finalize.
 Qed.
-Lemma l12 : s1 -> p13 (* BND(ap, [-6.65739, 6.65739]) *).
+Lemma l12 : s1 -> p13 (* BND(ap, [-10.5805, 10.5805]) *).
 Proof.
  intros h0.
  assert (h1 := l13 h0).
@@ -1663,7 +1665,7 @@ Proof.
  intros h0.
  refine (abs_of_bnd_o _ap i7 i6 h0 _) ; finalize.
 Qed.
-Lemma l11 : s1 -> p12 (* ABS(ap, [0, 6.65739]) *).
+Lemma l11 : s1 -> p12 (* ABS(ap, [0, 10.5805]) *).
 Proof.
  intros h0.
  assert (h1 := l12 h0).
@@ -1674,7 +1676,7 @@ Proof.
  intros h0.
  refine (uabs_of_abs _ap i6 h0) ; finalize.
 Qed.
-Lemma l10 : s1 -> p11 (* BND(|ap|, [0, 6.65739]) *).
+Lemma l10 : s1 -> p11 (* BND(|ap|, [0, 10.5805]) *).
 Proof.
  intros h0.
  assert (h1 := l11 h0).
@@ -1687,15 +1689,15 @@ Proof.
  assert (h2 := l10 h0).
  refine (simplify (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Tatom false (Abnd 3%nat i5))) (Tatom false (Abnd 4%nat i5))) (Tatom false (Abnd 5%nat i5))) (Tatom false (Abnd 6%nat i5))) (Tatom false (Abnd 7%nat i5))) (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 3%nat i5))) (Tatom false (Abnd 4%nat i5))) (Tatom false (Abnd 5%nat i5))) (Tatom false (Abnd 6%nat i5))) (Tatom false (Abnd 7%nat i5))) (Abnd 2%nat i6) (List.cons r1 (List.cons r27 (List.cons r58 (List.cons r59 (List.cons r60 (List.cons r61 (List.cons r62 (List.cons r63 List.nil)))))))) h2 h1 _) ; finalize.
 Qed.
-Definition f15 := Float2 (602321665671763) (-49).
+Definition f15 := Float2 (8030955542290173) (-52).
 Definition i9 := makepairF f9 f15.
-Notation p16 := (BND r62 i9). (* BND(|dq|, [0, 1.06994]) *)
-Notation p17 := (ABS _dq i9). (* ABS(dq, [0, 1.06994]) *)
-Definition f16 := Float2 (-602321665671763) (-49).
+Notation p16 := (BND r62 i9). (* BND(|dq|, [0, 1.78323]) *)
+Notation p17 := (ABS _dq i9). (* ABS(dq, [0, 1.78323]) *)
+Definition f16 := Float2 (-8030955542290173) (-52).
 Definition i10 := makepairF f16 f15.
-Notation p18 := (BND _dq i10). (* BND(dq, [-1.06994, 1.06994]) *)
-Notation p19 := (BND _dq_ideal i10). (* BND(dq_ideal, [-1.06994, 1.06994]) *)
-Lemma l21 : s1 -> p2 (* BND(q, [-1.125, 1.125]) *).
+Notation p18 := (BND _dq i10). (* BND(dq, [-1.78323, 1.78323]) *)
+Notation p19 := (BND _dq_ideal i10). (* BND(dq_ideal, [-1.78323, 1.78323]) *)
+Lemma l21 : s1 -> p2 (* BND(q, [-1.875, 1.875]) *).
 Proof.
  intros h0.
  assert (h1 := l16 h0).
@@ -1706,7 +1708,7 @@ Proof.
  intros h0 h1.
  refine (mul_po _delta _q i8 i2 i10 h0 h1 _) ; finalize.
 Qed.
-Lemma l20 : s1 -> p19 (* BND(dq_ideal, [-1.06994, 1.06994]) *).
+Lemma l20 : s1 -> p19 (* BND(dq_ideal, [-1.78323, 1.78323]) *).
 Proof.
  intros h0.
  assert (h1 := l14 h0).
@@ -1718,7 +1720,7 @@ Proof.
  intros h0.
  refine (float_round_ne _ _ _dq_ideal i10 i10 h0 _) ; finalize.
 Qed.
-Lemma l19 : s1 -> p18 (* BND(dq, [-1.06994, 1.06994]) *).
+Lemma l19 : s1 -> p18 (* BND(dq, [-1.78323, 1.78323]) *).
 Proof.
  intros h0.
  assert (h1 := l20 h0).
@@ -1729,7 +1731,7 @@ Proof.
  intros h0.
  refine (abs_of_bnd_o _dq i10 i9 h0 _) ; finalize.
 Qed.
-Lemma l18 : s1 -> p17 (* ABS(dq, [0, 1.06994]) *).
+Lemma l18 : s1 -> p17 (* ABS(dq, [0, 1.78323]) *).
 Proof.
  intros h0.
  assert (h1 := l19 h0).
@@ -1740,7 +1742,7 @@ Proof.
  intros h0.
  refine (uabs_of_abs _dq i9 h0) ; finalize.
 Qed.
-Lemma l17 : s1 -> p16 (* BND(|dq|, [0, 1.06994]) *).
+Lemma l17 : s1 -> p16 (* BND(|dq|, [0, 1.78323]) *).
 Proof.
  intros h0.
  assert (h1 := l18 h0).
@@ -1753,24 +1755,21 @@ Proof.
  assert (h2 := l17 h0).
  refine (simplify (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Tatom false (Abnd 3%nat i5))) (Tatom false (Abnd 4%nat i5))) (Tatom false (Abnd 5%nat i5))) (Tatom false (Abnd 6%nat i5))) (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Tatom false (Abnd 3%nat i5))) (Tatom false (Abnd 4%nat i5))) (Tatom false (Abnd 6%nat i5))) (Abnd 5%nat i9) (List.cons r1 (List.cons r27 (List.cons r59 (List.cons r60 (List.cons r61 (List.cons r62 (List.cons r63 List.nil))))))) h2 h1 _) ; finalize.
 Qed.
-Definition f17 := Float2 (4918734649323469) (-51).
+Definition f17 := Float2 (4098945541102891) (-50).
 Definition i11 := makepairF f9 f17.
-Notation p20 := (BND r59 i11). (* BND(|bq|, [0, 2.18436]) *)
-Notation p21 := (ABS _bq i11). (* ABS(bq, [0, 2.18436]) *)
-Definition f18 := Float2 (-4918734649323469) (-51).
+Notation p20 := (BND r59 i11). (* BND(|bq|, [0, 3.64059]) *)
+Notation p21 := (ABS _bq i11). (* ABS(bq, [0, 3.64059]) *)
+Definition f18 := Float2 (-4098945541102891) (-50).
 Definition i12 := makepairF f18 f17.
-Notation p22 := (BND _bq i12). (* BND(bq, [-2.18436, 2.18436]) *)
-Definition f19 := Float2 (-19674938597293877) (-53).
-Definition f20 := Float2 (19674938597293877) (-53).
+Notation p22 := (BND _bq i12). (* BND(bq, [-3.64059, 3.64059]) *)
+Notation p23 := (BND _bq_ideal i12). (* BND(bq_ideal, [-3.64059, 3.64059]) *)
+Definition f19 := Float2 (-4372208577176417) (-51).
+Definition f20 := Float2 (-1) (0).
 Definition i13 := makepairF f19 f20.
-Notation p23 := (BND _bq_ideal i13). (* BND(bq_ideal, [-2.18436, 2.18436]) *)
-Definition f21 := Float2 (-4372208577176417) (-51).
-Definition f22 := Float2 (-1) (0).
-Definition i14 := makepairF f21 f22.
-Notation p24 := (BND _beta i14). (* BND(beta, [-1.94165, -1]) *)
+Notation p24 := (BND _beta i13). (* BND(beta, [-1.94165, -1]) *)
 Lemma t10 : p24.
 Proof.
- refine (constant2 _ i14 _) ; finalize.
+ refine (constant2 _ i13 _) ; finalize.
 Qed.
 Lemma l26 : s1 -> p24 (* BND(beta, [-1.94165, -1]) *).
 Proof.
@@ -1780,9 +1779,9 @@ Qed.
 Lemma t11 : p24 -> p2 -> p23.
 Proof.
  intros h0 h1.
- refine (mul_no _beta _q i14 i2 i13 h0 h1 _) ; finalize.
+ refine (mul_no _beta _q i13 i2 i12 h0 h1 _) ; finalize.
 Qed.
-Lemma l25 : s1 -> p23 (* BND(bq_ideal, [-2.18436, 2.18436]) *).
+Lemma l25 : s1 -> p23 (* BND(bq_ideal, [-3.64059, 3.64059]) *).
 Proof.
  intros h0.
  assert (h1 := l26 h0).
@@ -1792,9 +1791,9 @@ Qed.
 Lemma t12 : p23 -> p22.
 Proof.
  intros h0.
- refine (float_round_ne _ _ _bq_ideal i13 i12 h0 _) ; finalize.
+ refine (float_round_ne _ _ _bq_ideal i12 i12 h0 _) ; finalize.
 Qed.
-Lemma l24 : s1 -> p22 (* BND(bq, [-2.18436, 2.18436]) *).
+Lemma l24 : s1 -> p22 (* BND(bq, [-3.64059, 3.64059]) *).
 Proof.
  intros h0.
  assert (h1 := l25 h0).
@@ -1805,7 +1804,7 @@ Proof.
  intros h0.
  refine (abs_of_bnd_o _bq i12 i11 h0 _) ; finalize.
 Qed.
-Lemma l23 : s1 -> p21 (* ABS(bq, [0, 2.18436]) *).
+Lemma l23 : s1 -> p21 (* ABS(bq, [0, 3.64059]) *).
 Proof.
  intros h0.
  assert (h1 := l24 h0).
@@ -1816,7 +1815,7 @@ Proof.
  intros h0.
  refine (uabs_of_abs _bq i11 h0) ; finalize.
 Qed.
-Lemma l22 : s1 -> p20 (* BND(|bq|, [0, 2.18436]) *).
+Lemma l22 : s1 -> p20 (* BND(|bq|, [0, 3.64059]) *).
 Proof.
  intros h0.
  assert (h1 := l23 h0).
@@ -1829,21 +1828,21 @@ Proof.
  assert (h2 := l22 h0).
  refine (simplify (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Tatom false (Abnd 3%nat i5))) (Tatom false (Abnd 4%nat i5))) (Tatom false (Abnd 5%nat i5))) (Ttree false (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 3%nat i5))) (Tatom false (Abnd 4%nat i5))) (Tatom false (Abnd 5%nat i5))) (Abnd 2%nat i11) (List.cons r1 (List.cons r27 (List.cons r59 (List.cons r60 (List.cons r61 (List.cons r63 List.nil)))))) h2 h1 _) ; finalize.
 Qed.
-Definition f23 := Float2 (1550437623732591) (-52).
-Definition i15 := makepairF f9 f23.
-Notation p25 := (BND r61 i15). (* BND(|gp|, [0, 0.344266]) *)
-Notation p26 := (ABS _gp i15). (* ABS(gp, [0, 0.344266]) *)
-Definition f24 := Float2 (-1550437623732591) (-52).
-Definition i16 := makepairF f24 f23.
-Notation p27 := (BND _gp i16). (* BND(gp, [-0.344266, 0.344266]) *)
-Notation p28 := (BND _gp_ideal i16). (* BND(gp_ideal, [-0.344266, 0.344266]) *)
-Definition f25 := Float2 (1) (-5).
-Definition f26 := Float2 (7087714851348987) (-57).
-Definition i17 := makepairF f25 f26.
-Notation p29 := (BND _gamma i17). (* BND(gamma, [0.03125, 0.0491809]) *)
+Definition f21 := Float2 (4928176732578593) (-53).
+Definition i14 := makepairF f9 f21.
+Notation p25 := (BND r61 i14). (* BND(|gp|, [0, 0.547138]) *)
+Notation p26 := (ABS _gp i14). (* ABS(gp, [0, 0.547138]) *)
+Definition f22 := Float2 (-4928176732578593) (-53).
+Definition i15 := makepairF f22 f21.
+Notation p27 := (BND _gp i15). (* BND(gp, [-0.547138, 0.547138]) *)
+Notation p28 := (BND _gp_ideal i15). (* BND(gp_ideal, [-0.547138, 0.547138]) *)
+Definition f23 := Float2 (1) (-5).
+Definition f24 := Float2 (7087714851348987) (-57).
+Definition i16 := makepairF f23 f24.
+Notation p29 := (BND _gamma i16). (* BND(gamma, [0.03125, 0.0491809]) *)
 Lemma t15 : p29.
 Proof.
- refine (constant2 _ i17 _) ; finalize.
+ refine (constant2 _ i16 _) ; finalize.
 Qed.
 Lemma l31 : s1 -> p29 (* BND(gamma, [0.03125, 0.0491809]) *).
 Proof.
@@ -1853,9 +1852,9 @@ Qed.
 Lemma t16 : p29 -> p1 -> p28.
 Proof.
  intros h0 h1.
- refine (mul_po _gamma _p i17 i1 i16 h0 h1 _) ; finalize.
+ refine (mul_po _gamma _p i16 i1 i15 h0 h1 _) ; finalize.
 Qed.
-Lemma l30 : s1 -> p28 (* BND(gp_ideal, [-0.344266, 0.344266]) *).
+Lemma l30 : s1 -> p28 (* BND(gp_ideal, [-0.547138, 0.547138]) *).
 Proof.
  intros h0.
  assert (h1 := l31 h0).
@@ -1865,9 +1864,9 @@ Qed.
 Lemma t17 : p28 -> p27.
 Proof.
  intros h0.
- refine (float_round_ne _ _ _gp_ideal i16 i16 h0 _) ; finalize.
+ refine (float_round_ne _ _ _gp_ideal i15 i15 h0 _) ; finalize.
 Qed.
-Lemma l29 : s1 -> p27 (* BND(gp, [-0.344266, 0.344266]) *).
+Lemma l29 : s1 -> p27 (* BND(gp, [-0.547138, 0.547138]) *).
 Proof.
  intros h0.
  assert (h1 := l30 h0).
@@ -1876,9 +1875,9 @@ Qed.
 Lemma t18 : p27 -> p26.
 Proof.
  intros h0.
- refine (abs_of_bnd_o _gp i16 i15 h0 _) ; finalize.
+ refine (abs_of_bnd_o _gp i15 i14 h0 _) ; finalize.
 Qed.
-Lemma l28 : s1 -> p26 (* ABS(gp, [0, 0.344266]) *).
+Lemma l28 : s1 -> p26 (* ABS(gp, [0, 0.547138]) *).
 Proof.
  intros h0.
  assert (h1 := l29 h0).
@@ -1887,9 +1886,9 @@ Qed.
 Lemma t19 : p26 -> p25.
 Proof.
  intros h0.
- refine (uabs_of_abs _gp i15 h0) ; finalize.
+ refine (uabs_of_abs _gp i14 h0) ; finalize.
 Qed.
-Lemma l27 : s1 -> p25 (* BND(|gp|, [0, 0.344266]) *).
+Lemma l27 : s1 -> p25 (* BND(|gp|, [0, 0.547138]) *).
 Proof.
  intros h0.
  assert (h1 := l28 h0).
@@ -1900,38 +1899,37 @@ Proof.
  intros h0.
  assert (h1 := l6 h0).
  assert (h2 := l27 h0).
- refine (simplify (Ttree false (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Tatom false (Abnd 3%nat i5))) (Tatom false (Abnd 4%nat i5))) (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Tatom false (Abnd 4%nat i5))) (Abnd 3%nat i15) (List.cons r1 (List.cons r27 (List.cons r60 (List.cons r61 (List.cons r63 List.nil))))) h2 h1 _) ; finalize.
+ refine (simplify (Ttree false (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Tatom false (Abnd 3%nat i5))) (Tatom false (Abnd 4%nat i5))) (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Tatom false (Abnd 4%nat i5))) (Abnd 3%nat i14) (List.cons r1 (List.cons r27 (List.cons r60 (List.cons r61 (List.cons r63 List.nil))))) h2 h1 _) ; finalize.
 Qed.
-Definition f27 := Float2 (4977462915399615) (-49).
-Definition i18 := makepairF f9 f27.
-Notation p30 := (BND r60 i18). (* BND(|p1|, [0, 8.84175]) *)
-Notation p31 := (ABS _p1 i18). (* ABS(p1, [0, 8.84175]) *)
-Definition f28 := Float2 (-4977462915399615) (-49).
-Definition i19 := makepairF f28 f27.
-Notation p32 := (BND _p1 i19). (* BND(p1, [-8.84175, 8.84175]) *)
-Notation p33 := (BND r3 i19). (* BND(ap + bq, [-8.84175, 8.84175]) *)
-Definition f29 := Float2 (-2459367324661735) (-50).
-Definition f30 := Float2 (2459367324661735) (-50).
-Definition i20 := makepairF f29 f30.
-Notation p34 := (BND _bq i20). (* BND(bq, [-2.18436, 2.18436]) *)
-Lemma t20 : p13 -> p34 -> p33.
+Definition f25 := Float2 (4002882398874995) (-48).
+Definition i17 := makepairF f9 f25.
+Notation p30 := (BND r60 i17). (* BND(|p1|, [0, 14.2211]) *)
+Notation p31 := (ABS _p1 i17). (* ABS(p1, [0, 14.2211]) *)
+Definition f26 := Float2 (-4002882398874995) (-48).
+Definition i18 := makepairF f26 f25.
+Notation p32 := (BND _p1 i18). (* BND(p1, [-14.2211, 14.2211]) *)
+Definition f27 := Float2 (-16011529595499981) (-50).
+Definition f28 := Float2 (16011529595499981) (-50).
+Definition i19 := makepairF f27 f28.
+Notation p33 := (BND r3 i19). (* BND(ap + bq, [-14.2211, 14.2211]) *)
+Lemma t20 : p13 -> p22 -> p33.
 Proof.
  intros h0 h1.
- refine (add _ap _bq i7 i20 i19 h0 h1 _) ; finalize.
+ refine (add _ap _bq i7 i12 i19 h0 h1 _) ; finalize.
 Qed.
-Lemma l35 : s1 -> p33 (* BND(ap + bq, [-8.84175, 8.84175]) *).
+Lemma l35 : s1 -> p33 (* BND(ap + bq, [-14.2211, 14.2211]) *).
 Proof.
  intros h0.
  assert (h1 := l12 h0).
  assert (h2 := l24 h0).
- apply t20. exact h1. refine (subset _bq i12 i20 h2 _) ; finalize.
+ apply t20. exact h1. exact h2.
 Qed.
 Lemma t21 : p33 -> p32.
 Proof.
  intros h0.
- refine (float_round_ne _ _ r3 i19 i19 h0 _) ; finalize.
+ refine (float_round_ne _ _ r3 i19 i18 h0 _) ; finalize.
 Qed.
-Lemma l34 : s1 -> p32 (* BND(p1, [-8.84175, 8.84175]) *).
+Lemma l34 : s1 -> p32 (* BND(p1, [-14.2211, 14.2211]) *).
 Proof.
  intros h0.
  assert (h1 := l35 h0).
@@ -1940,9 +1938,9 @@ Qed.
 Lemma t22 : p32 -> p31.
 Proof.
  intros h0.
- refine (abs_of_bnd_o _p1 i19 i18 h0 _) ; finalize.
+ refine (abs_of_bnd_o _p1 i18 i17 h0 _) ; finalize.
 Qed.
-Lemma l33 : s1 -> p31 (* ABS(p1, [0, 8.84175]) *).
+Lemma l33 : s1 -> p31 (* ABS(p1, [0, 14.2211]) *).
 Proof.
  intros h0.
  assert (h1 := l34 h0).
@@ -1951,9 +1949,9 @@ Qed.
 Lemma t23 : p31 -> p30.
 Proof.
  intros h0.
- refine (uabs_of_abs _p1 i18 h0) ; finalize.
+ refine (uabs_of_abs _p1 i17 h0) ; finalize.
 Qed.
-Lemma l32 : s1 -> p30 (* BND(|p1|, [0, 8.84175]) *).
+Lemma l32 : s1 -> p30 (* BND(|p1|, [0, 14.2211]) *).
 Proof.
  intros h0.
  assert (h1 := l33 h0).
@@ -1964,56 +1962,60 @@ Proof.
  intros h0.
  assert (h1 := l5 h0).
  assert (h2 := l32 h0).
- refine (simplify (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Tatom false (Abnd 3%nat i5))) (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 3%nat i5))) (Abnd 2%nat i18) (List.cons r1 (List.cons r27 (List.cons r60 (List.cons r63 List.nil)))) h2 h1 _) ; finalize.
+ refine (simplify (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Tatom false (Abnd 3%nat i5))) (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 3%nat i5))) (Abnd 2%nat i17) (List.cons r1 (List.cons r27 (List.cons r60 (List.cons r63 List.nil)))) h2 h1 _) ; finalize.
 Qed.
-Definition f31 := Float2 (6369010949106695) (-52).
-Definition i21 := makepairF f9 f31.
-Notation p35 := (BND r63 i21). (* BND(|q1|, [0, 1.4142]) *)
-Notation p36 := (ABS _q1 i21). (* ABS(q1, [0, 1.4142]) *)
-Definition f32 := Float2 (-6369010949106695) (-52).
-Definition i22 := makepairF f32 f31.
-Notation p37 := (BND _q1 i22). (* BND(q1, [-1.4142, 1.4142]) *)
-Notation p38 := (BND r29 i22). (* BND(gp + dq, [-1.4142, 1.4142]) *)
-Lemma t24 : p27 -> p18 -> p38.
+Definition f29 := Float2 (5247521954289735) (-51).
+Definition i20 := makepairF f9 f29.
+Notation p34 := (BND r63 i20). (* BND(|q1|, [0, 2.33037]) *)
+Notation p35 := (ABS _q1 i20). (* ABS(q1, [0, 2.33037]) *)
+Definition f30 := Float2 (-5247521954289735) (-51).
+Definition i21 := makepairF f30 f29.
+Notation p36 := (BND _q1 i21). (* BND(q1, [-2.33037, 2.33037]) *)
+Notation p37 := (BND r29 i21). (* BND(gp + dq, [-2.33037, 2.33037]) *)
+Definition f31 := Float2 (-2464088366289297) (-52).
+Definition f32 := Float2 (2464088366289297) (-52).
+Definition i22 := makepairF f31 f32.
+Notation p38 := (BND _gp i22). (* BND(gp, [-0.547138, 0.547138]) *)
+Lemma t24 : p38 -> p18 -> p37.
 Proof.
  intros h0 h1.
- refine (add _gp _dq i16 i10 i22 h0 h1 _) ; finalize.
+ refine (add _gp _dq i22 i10 i21 h0 h1 _) ; finalize.
 Qed.
-Lemma l39 : s1 -> p38 (* BND(gp + dq, [-1.4142, 1.4142]) *).
+Lemma l39 : s1 -> p37 (* BND(gp + dq, [-2.33037, 2.33037]) *).
 Proof.
  intros h0.
  assert (h1 := l29 h0).
  assert (h2 := l19 h0).
- apply t24. exact h1. exact h2.
+ apply t24. refine (subset _gp i15 i22 h1 _) ; finalize. exact h2.
 Qed.
-Lemma t25 : p38 -> p37.
+Lemma t25 : p37 -> p36.
 Proof.
  intros h0.
- refine (float_round_ne _ _ r29 i22 i22 h0 _) ; finalize.
+ refine (float_round_ne _ _ r29 i21 i21 h0 _) ; finalize.
 Qed.
-Lemma l38 : s1 -> p37 (* BND(q1, [-1.4142, 1.4142]) *).
+Lemma l38 : s1 -> p36 (* BND(q1, [-2.33037, 2.33037]) *).
 Proof.
  intros h0.
  assert (h1 := l39 h0).
  apply t25. exact h1.
 Qed.
-Lemma t26 : p37 -> p36.
+Lemma t26 : p36 -> p35.
 Proof.
  intros h0.
- refine (abs_of_bnd_o _q1 i22 i21 h0 _) ; finalize.
+ refine (abs_of_bnd_o _q1 i21 i20 h0 _) ; finalize.
 Qed.
-Lemma l37 : s1 -> p36 (* ABS(q1, [0, 1.4142]) *).
+Lemma l37 : s1 -> p35 (* ABS(q1, [0, 2.33037]) *).
 Proof.
  intros h0.
  assert (h1 := l38 h0).
  apply t26. exact h1.
 Qed.
-Lemma t27 : p36 -> p35.
+Lemma t27 : p35 -> p34.
 Proof.
  intros h0.
- refine (uabs_of_abs _q1 i21 h0) ; finalize.
+ refine (uabs_of_abs _q1 i20 h0) ; finalize.
 Qed.
-Lemma l36 : s1 -> p35 (* BND(|q1|, [0, 1.4142]) *).
+Lemma l36 : s1 -> p34 (* BND(|q1|, [0, 2.33037]) *).
 Proof.
  intros h0.
  assert (h1 := l37 h0).
@@ -2024,17 +2026,17 @@ Proof.
  intros h0.
  assert (h1 := l4 h0).
  assert (h2 := l36 h0).
- refine (simplify (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Abnd 2%nat i21) (List.cons r1 (List.cons r27 (List.cons r63 List.nil))) h2 h1 _) ; finalize.
+ refine (simplify (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Abnd 2%nat i20) (List.cons r1 (List.cons r27 (List.cons r63 List.nil))) h2 h1 _) ; finalize.
 Qed.
-Notation p39 := (BND r23 i3). (* BND(p1 - p1_ideal + (p1_ideal - p_exact), [-2.71154e-15, 2.71154e-15]) *)
-Definition f33 := Float2 (-7) (-52).
-Definition f34 := Float2 (7) (-52).
+Notation p39 := (BND r23 i3). (* BND(p1 - p1_ideal + (p1_ideal - p_exact), [-3.85915e-15, 3.85915e-15]) *)
+Definition f33 := Float2 (-9) (-52).
+Definition f34 := Float2 (9) (-52).
 Definition i23 := makepairF f33 f34.
-Notation p40 := (BND r24 i23). (* BND(p1 - p1_ideal, [-1.55431e-15, 1.55431e-15]) *)
+Notation p40 := (BND r24 i23). (* BND(p1 - p1_ideal, [-1.9984e-15, 1.9984e-15]) *)
 Notation r65 := ((_p1 - r3)%R).
 Notation r66 := ((r3 - _p1_ideal)%R).
 Notation r64 := ((r65 + r66)%R).
-Notation p41 := (BND r64 i23). (* BND(p1 - (ap + bq) + (ap + bq - p1_ideal), [-1.55431e-15, 1.55431e-15]) *)
+Notation p41 := (BND r64 i23). (* BND(p1 - (ap + bq) + (ap + bq - p1_ideal), [-1.9984e-15, 1.9984e-15]) *)
 Definition f35 := Float2 (-1) (-50).
 Definition f36 := Float2 (1) (-50).
 Definition i24 := makepairF f35 f36.
@@ -2067,57 +2069,50 @@ Proof.
  assert (h1 := l45 h0).
  apply t29. exact h1.
 Qed.
-Definition f39 := Float2 (-3) (-52).
-Definition f40 := Float2 (3) (-52).
+Definition f39 := Float2 (-5) (-52).
+Definition f40 := Float2 (5) (-52).
 Definition i27 := makepairF f39 f40.
-Notation p45 := (BND r66 i27). (* BND(ap + bq - p1_ideal, [-6.66134e-16, 6.66134e-16]) *)
+Notation p45 := (BND r66 i27). (* BND(ap + bq - p1_ideal, [-1.11022e-15, 1.11022e-15]) *)
 Notation r68 := ((_ap - _ap_ideal)%R).
 Notation r69 := ((_bq - _bq_ideal)%R).
 Notation r67 := ((r68 + r69)%R).
-Notation p46 := (BND r67 i27). (* BND(ap - ap_ideal + (bq - bq_ideal), [-6.66134e-16, 6.66134e-16]) *)
-Definition f41 := Float2 (-1) (-51).
-Definition f42 := Float2 (1) (-51).
-Definition i28 := makepairF f41 f42.
-Notation p47 := (BND r68 i28). (* BND(ap - ap_ideal, [-4.44089e-16, 4.44089e-16]) *)
-Definition f43 := Float2 (1) (3).
-Definition i29 := makepairF f9 f43.
-Notation p48 := (ABS _ap_ideal i29). (* ABS(ap_ideal, [0, 8]) *)
-Definition f44 := Float2 (1) (0).
-Definition i30 := makepairF f13 f44.
-Notation p49 := (ABS _delta i30). (* ABS(delta, [0.5, 1]) *)
-Notation p50 := (BND _delta i30). (* BND(delta, [0.5, 1]) *)
+Notation p46 := (BND r67 i27). (* BND(ap - ap_ideal + (bq - bq_ideal), [-1.11022e-15, 1.11022e-15]) *)
+Notation p47 := (BND r68 i24). (* BND(ap - ap_ideal, [-8.88178e-16, 8.88178e-16]) *)
+Notation p48 := (ABS _ap_ideal i25). (* ABS(ap_ideal, [0, 16]) *)
+Definition f41 := Float2 (1) (0).
+Definition i28 := makepairF f13 f41.
+Notation p49 := (ABS _delta i28). (* ABS(delta, [0.5, 1]) *)
+Notation p50 := (BND _delta i28). (* BND(delta, [0.5, 1]) *)
 Lemma t30 : p50 -> p49.
 Proof.
  intros h0.
- refine (abs_of_bnd_p _delta i30 i30 h0 _) ; finalize.
+ refine (abs_of_bnd_p _delta i28 i28 h0 _) ; finalize.
 Qed.
 Lemma l50 : s1 -> p49 (* ABS(delta, [0.5, 1]) *).
 Proof.
  intros h0.
  assert (h1 := l14 h0).
- apply t30. refine (subset _delta i8 i30 h1 _) ; finalize.
+ apply t30. refine (subset _delta i8 i28 h1 _) ; finalize.
 Qed.
-Notation p51 := (ABS _p i29). (* ABS(p, [0, 8]) *)
-Definition f45 := Float2 (-1) (3).
-Definition i31 := makepairF f45 f43.
-Notation p52 := (BND _p i31). (* BND(p, [-8, 8]) *)
+Notation p51 := (ABS _p i25). (* ABS(p, [0, 16]) *)
+Notation p52 := (BND _p i26). (* BND(p, [-16, 16]) *)
 Lemma t31 : p52 -> p51.
 Proof.
  intros h0.
- refine (abs_of_bnd_o _p i31 i29 h0 _) ; finalize.
+ refine (abs_of_bnd_o _p i26 i25 h0 _) ; finalize.
 Qed.
-Lemma l51 : s1 -> p51 (* ABS(p, [0, 8]) *).
+Lemma l51 : s1 -> p51 (* ABS(p, [0, 16]) *).
 Proof.
  intros h0.
  assert (h1 := l15 h0).
- apply t31. refine (subset _p i1 i31 h1 _) ; finalize.
+ apply t31. refine (subset _p i1 i26 h1 _) ; finalize.
 Qed.
 Lemma t32 : p49 -> p51 -> p48.
 Proof.
  intros h0 h1.
- refine (mul_aa _delta _p i30 i29 i29 h0 h1 _) ; finalize.
+ refine (mul_aa _delta _p i28 i25 i25 h0 h1 _) ; finalize.
 Qed.
-Lemma l49 : s1 -> p48 (* ABS(ap_ideal, [0, 8]) *).
+Lemma l49 : s1 -> p48 (* ABS(ap_ideal, [0, 16]) *).
 Proof.
  intros h0.
  assert (h1 := l50 h0).
@@ -2127,57 +2122,57 @@ Qed.
 Lemma t33 : p48 -> p47.
 Proof.
  intros h0.
- refine (float_absolute_wide_ne _ _ _ap_ideal i29 i28 h0 _) ; finalize.
+ refine (float_absolute_wide_ne _ _ _ap_ideal i25 i24 h0 _) ; finalize.
 Qed.
-Lemma l48 : s1 -> p47 (* BND(ap - ap_ideal, [-4.44089e-16, 4.44089e-16]) *).
+Lemma l48 : s1 -> p47 (* BND(ap - ap_ideal, [-8.88178e-16, 8.88178e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l49 h0).
  apply t33. exact h1.
 Qed.
-Definition f46 := Float2 (-1) (-52).
-Definition f47 := Float2 (1) (-52).
-Definition i32 := makepairF f46 f47.
-Notation p53 := (BND r69 i32). (* BND(bq - bq_ideal, [-2.22045e-16, 2.22045e-16]) *)
-Definition f48 := Float2 (1) (2).
-Definition i33 := makepairF f9 f48.
-Notation p54 := (ABS _bq_ideal i33). (* ABS(bq_ideal, [0, 4]) *)
-Definition f49 := Float2 (1) (1).
-Definition i34 := makepairF f44 f49.
-Notation p55 := (ABS _beta i34). (* ABS(beta, [1, 2]) *)
-Definition f50 := Float2 (-1) (1).
-Definition i35 := makepairF f50 f22.
-Notation p56 := (BND _beta i35). (* BND(beta, [-2, -1]) *)
+Definition f42 := Float2 (-1) (-52).
+Definition f43 := Float2 (1) (-52).
+Definition i29 := makepairF f42 f43.
+Notation p53 := (BND r69 i29). (* BND(bq - bq_ideal, [-2.22045e-16, 2.22045e-16]) *)
+Definition f44 := Float2 (1) (2).
+Definition i30 := makepairF f9 f44.
+Notation p54 := (ABS _bq_ideal i30). (* ABS(bq_ideal, [0, 4]) *)
+Definition f45 := Float2 (1) (1).
+Definition i31 := makepairF f41 f45.
+Notation p55 := (ABS _beta i31). (* ABS(beta, [1, 2]) *)
+Definition f46 := Float2 (-1) (1).
+Definition i32 := makepairF f46 f20.
+Notation p56 := (BND _beta i32). (* BND(beta, [-2, -1]) *)
 Lemma t34 : p56 -> p55.
 Proof.
  intros h0.
- refine (abs_of_bnd_n _beta i35 i34 h0 _) ; finalize.
+ refine (abs_of_bnd_n _beta i32 i31 h0 _) ; finalize.
 Qed.
 Lemma l54 : s1 -> p55 (* ABS(beta, [1, 2]) *).
 Proof.
  intros h0.
  assert (h1 := l26 h0).
- apply t34. refine (subset _beta i14 i35 h1 _) ; finalize.
+ apply t34. refine (subset _beta i13 i32 h1 _) ; finalize.
 Qed.
-Definition i36 := makepairF f9 f49.
-Notation p57 := (ABS _q i36). (* ABS(q, [0, 2]) *)
-Definition i37 := makepairF f50 f49.
-Notation p58 := (BND _q i37). (* BND(q, [-2, 2]) *)
+Definition i33 := makepairF f9 f45.
+Notation p57 := (ABS _q i33). (* ABS(q, [0, 2]) *)
+Definition i34 := makepairF f46 f45.
+Notation p58 := (BND _q i34). (* BND(q, [-2, 2]) *)
 Lemma t35 : p58 -> p57.
 Proof.
  intros h0.
- refine (abs_of_bnd_o _q i37 i36 h0 _) ; finalize.
+ refine (abs_of_bnd_o _q i34 i33 h0 _) ; finalize.
 Qed.
 Lemma l55 : s1 -> p57 (* ABS(q, [0, 2]) *).
 Proof.
  intros h0.
  assert (h1 := l21 h0).
- apply t35. refine (subset _q i2 i37 h1 _) ; finalize.
+ apply t35. refine (subset _q i2 i34 h1 _) ; finalize.
 Qed.
 Lemma t36 : p55 -> p57 -> p54.
 Proof.
  intros h0 h1.
- refine (mul_aa _beta _q i34 i36 i33 h0 h1 _) ; finalize.
+ refine (mul_aa _beta _q i31 i33 i30 h0 h1 _) ; finalize.
 Qed.
 Lemma l53 : s1 -> p54 (* ABS(bq_ideal, [0, 4]) *).
 Proof.
@@ -2189,7 +2184,7 @@ Qed.
 Lemma t37 : p54 -> p53.
 Proof.
  intros h0.
- refine (float_absolute_wide_ne _ _ _bq_ideal i33 i32 h0 _) ; finalize.
+ refine (float_absolute_wide_ne _ _ _bq_ideal i30 i29 h0 _) ; finalize.
 Qed.
 Lemma l52 : s1 -> p53 (* BND(bq - bq_ideal, [-2.22045e-16, 2.22045e-16]) *).
 Proof.
@@ -2200,9 +2195,9 @@ Qed.
 Lemma t38 : p47 -> p53 -> p46.
 Proof.
  intros h0 h1.
- refine (add r68 r69 i28 i32 i27 h0 h1 _) ; finalize.
+ refine (add r68 r69 i24 i29 i27 h0 h1 _) ; finalize.
 Qed.
-Lemma l47 : s1 -> p46 (* BND(ap - ap_ideal + (bq - bq_ideal), [-6.66134e-16, 6.66134e-16]) *).
+Lemma l47 : s1 -> p46 (* BND(ap - ap_ideal + (bq - bq_ideal), [-1.11022e-15, 1.11022e-15]) *).
 Proof.
  intros h0.
  assert (h1 := l48 h0).
@@ -2214,7 +2209,7 @@ Proof.
  intros h0.
  refine (add_mibs _ _ _ _ i27 h0) ; finalize.
 Qed.
-Lemma l46 : s1 -> p45 (* BND(ap + bq - p1_ideal, [-6.66134e-16, 6.66134e-16]) *).
+Lemma l46 : s1 -> p45 (* BND(ap + bq - p1_ideal, [-1.11022e-15, 1.11022e-15]) *).
 Proof.
  intros h0.
  assert (h1 := l47 h0).
@@ -2225,7 +2220,7 @@ Proof.
  intros h0 h1.
  refine (add r65 r66 i24 i27 i23 h0 h1 _) ; finalize.
 Qed.
-Lemma l43 : s1 -> p41 (* BND(p1 - (ap + bq) + (ap + bq - p1_ideal), [-1.55431e-15, 1.55431e-15]) *).
+Lemma l43 : s1 -> p41 (* BND(p1 - (ap + bq) + (ap + bq - p1_ideal), [-1.9984e-15, 1.9984e-15]) *).
 Proof.
  intros h0.
  assert (h1 := l44 h0).
@@ -2237,45 +2232,45 @@ Proof.
  intros h0.
  refine (sub_xals _ _ _ i23 h0) ; finalize.
 Qed.
-Lemma l42 : s1 -> p40 (* BND(p1 - p1_ideal, [-1.55431e-15, 1.55431e-15]) *).
+Lemma l42 : s1 -> p40 (* BND(p1 - p1_ideal, [-1.9984e-15, 1.9984e-15]) *).
 Proof.
  intros h0.
  assert (h1 := l43 h0).
  apply t41. exact h1.
 Qed.
-Definition f51 := Float2 (-187771481173039993) (-107).
-Definition f52 := Float2 (187771481173039993) (-107).
-Definition i38 := makepairF f51 f52.
-Notation p59 := (BND r26 i38). (* BND(p1_ideal - p_exact, [-1.15723e-15, 1.15723e-15]) *)
-Notation p60 := (BND r45 i38). (* BND(-607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * p + 570419849984716187108541389157035433662294559263261888455660546024551170261 / 2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216 * q, [-1.15723e-15, 1.15723e-15]) *)
-Definition f53 := Float2 (-570084015416980609) (-109).
-Definition f54 := Float2 (570084015416980609) (-109).
-Definition i39 := makepairF f53 f54.
-Notation p61 := (BND r46 i39). (* BND(-607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * p, [-8.78354e-16, 8.78354e-16]) *)
-Definition f55 := Float2 (-325762294523988919) (-111).
-Definition f56 := Float2 (-1) (-53).
-Definition i40 := makepairF f55 f56.
-Notation p62 := (BND r47 i40). (* BND(-607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576, [-1.25479e-16, -1.11022e-16]) *)
-Definition f57 := Float2 (-981305814791645417) (89).
-Definition f58 := Float2 (-13) (145).
-Definition i41 := makepairF f57 f58.
-Notation p63 := (BND r48 i41). (* BND(-607398879457070813777175880614497980136962913, [-6.07399e+44, -5.79819e+44]) *)
+Definition f47 := Float2 (-301924057609202447) (-107).
+Definition f48 := Float2 (301924057609202447) (-107).
+Definition i35 := makepairF f47 f48.
+Notation p59 := (BND r26 i35). (* BND(p1_ideal - p_exact, [-1.86075e-15, 1.86075e-15]) *)
+Notation p60 := (BND r45 i35). (* BND(-607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * p + 570419849984716187108541389157035433662294559263261888455660546024551170261 / 2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216 * q, [-1.86075e-15, 1.86075e-15]) *)
+Definition f49 := Float2 (-113253297705605523) (-106).
+Definition f50 := Float2 (113253297705605523) (-106).
+Definition i36 := makepairF f49 f50.
+Notation p61 := (BND r46 i36). (* BND(-607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * p, [-1.39595e-15, 1.39595e-15]) *)
+Definition f51 := Float2 (-325762294523988919) (-111).
+Definition f52 := Float2 (-1) (-53).
+Definition i37 := makepairF f51 f52.
+Notation p62 := (BND r47 i37). (* BND(-607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576, [-1.25479e-16, -1.11022e-16]) *)
+Definition f53 := Float2 (-981305814791645417) (89).
+Definition f54 := Float2 (-13) (145).
+Definition i38 := makepairF f53 f54.
+Notation p63 := (BND r48 i38). (* BND(-607398879457070813777175880614497980136962913, [-6.07399e+44, -5.79819e+44]) *)
 Lemma t42 : p63.
 Proof.
- refine (constant1 _ i41 _) ; finalize.
+ refine (constant1 _ i38 _) ; finalize.
 Qed.
 Lemma l60 : s1 -> p63 (* BND(-607398879457070813777175880614497980136962913, [-6.07399e+44, -5.79819e+44]) *).
 Proof.
  intros h0.
  apply t42.
 Qed.
-Definition f59 := Float2 (868247028191378451) (142).
-Definition f60 := Float2 (13) (198).
-Definition i42 := makepairF f59 f60.
-Notation p64 := (BND r18 i42). (* BND(4840638936269341396294642382423593871270175513277109765144576, [4.84064e+60, 5.22255e+60]) *)
+Definition f55 := Float2 (868247028191378451) (142).
+Definition f56 := Float2 (13) (198).
+Definition i39 := makepairF f55 f56.
+Notation p64 := (BND r18 i39). (* BND(4840638936269341396294642382423593871270175513277109765144576, [4.84064e+60, 5.22255e+60]) *)
 Lemma t43 : p64.
 Proof.
- refine (constant1 _ i42 _) ; finalize.
+ refine (constant1 _ i39 _) ; finalize.
 Qed.
 Lemma l61 : s1 -> p64 (* BND(4840638936269341396294642382423593871270175513277109765144576, [4.84064e+60, 5.22255e+60]) *).
 Proof.
@@ -2285,7 +2280,7 @@ Qed.
 Lemma t44 : p63 -> p64 -> p62.
 Proof.
  intros h0 h1.
- refine (div_np r48 r18 i41 i42 i40 h0 h1 _) ; finalize.
+ refine (div_np r48 r18 i38 i39 i37 h0 h1 _) ; finalize.
 Qed.
 Lemma l59 : s1 -> p62 (* BND(-607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576, [-1.25479e-16, -1.11022e-16]) *).
 Proof.
@@ -2294,127 +2289,130 @@ Proof.
  assert (h2 := l61 h0).
  apply t44. exact h1. exact h2.
 Qed.
-Lemma t45 : p62 -> p1 -> p61.
+Definition f57 := Float2 (-40720286815498615) (-108).
+Definition i40 := makepairF f57 f52.
+Notation p65 := (BND r47 i40). (* BND(-607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576, [-1.25479e-16, -1.11022e-16]) *)
+Lemma t45 : p65 -> p1 -> p61.
 Proof.
  intros h0 h1.
- refine (mul_no r47 _p i40 i1 i39 h0 h1 _) ; finalize.
+ refine (mul_no r47 _p i40 i1 i36 h0 h1 _) ; finalize.
 Qed.
-Lemma l58 : s1 -> p61 (* BND(-607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * p, [-8.78354e-16, 8.78354e-16]) *).
+Lemma l58 : s1 -> p61 (* BND(-607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * p, [-1.39595e-15, 1.39595e-15]) *).
 Proof.
  intros h0.
  assert (h1 := l59 h0).
  assert (h2 := l15 h0).
- apply t45. exact h1. exact h2.
+ apply t45. refine (subset r47 i37 i40 h1 _) ; finalize. exact h2.
 Qed.
-Definition f61 := Float2 (-181001909275179363) (-109).
-Definition f62 := Float2 (181001909275179363) (-109).
+Definition f58 := Float2 (-75417462197991401) (-107).
+Definition f59 := Float2 (75417462197991401) (-107).
+Definition i41 := makepairF f58 f59.
+Notation p66 := (BND r49 i41). (* BND(570419849984716187108541389157035433662294559263261888455660546024551170261 / 2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216 * q, [-4.64796e-16, 4.64796e-16]) *)
+Definition f60 := Float2 (643562344089526621) (-111).
+Definition i42 := makepairF f43 f60.
+Notation p67 := (BND r50 i42). (* BND(570419849984716187108541389157035433662294559263261888455660546024551170261 / 2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216, [2.22045e-16, 2.47891e-16]) *)
+Definition f61 := Float2 (5) (246).
+Definition f62 := Float2 (5679570306000239) (196).
 Definition i43 := makepairF f61 f62.
-Notation p65 := (BND r49 i43). (* BND(570419849984716187108541389157035433662294559263261888455660546024551170261 / 2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216 * q, [-2.78878e-16, 2.78878e-16]) *)
-Definition f63 := Float2 (20111323252797707) (-106).
-Definition i44 := makepairF f47 f63.
-Notation p66 := (BND r50 i44). (* BND(570419849984716187108541389157035433662294559263261888455660546024551170261 / 2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216, [2.22045e-16, 2.47891e-16]) *)
-Definition f64 := Float2 (5) (246).
-Definition f65 := Float2 (5679570306000239) (196).
-Definition i45 := makepairF f64 f65.
-Notation p67 := (BND r51 i45). (* BND(570419849984716187108541389157035433662294559263261888455660546024551170261, [5.65391e+74, 5.7042e+74]) *)
-Lemma t46 : p67.
+Notation p68 := (BND r51 i43). (* BND(570419849984716187108541389157035433662294559263261888455660546024551170261, [5.65391e+74, 5.7042e+74]) *)
+Lemma t46 : p68.
 Proof.
- refine (constant1 _ i45 _) ; finalize.
+ refine (constant1 _ i43 _) ; finalize.
 Qed.
-Lemma l64 : s1 -> p67 (* BND(570419849984716187108541389157035433662294559263261888455660546024551170261, [5.65391e+74, 5.7042e+74]) *).
+Lemma l64 : s1 -> p68 (* BND(570419849984716187108541389157035433662294559263261888455660546024551170261, [5.65391e+74, 5.7042e+74]) *).
 Proof.
  intros h0.
  apply t46.
 Qed.
-Definition f66 := Float2 (162796317785883459) (243).
-Definition f67 := Float2 (5) (298).
-Definition i46 := makepairF f66 f67.
-Notation p68 := (BND r22 i46). (* BND(2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216, [2.30109e+90, 2.54629e+90]) *)
-Lemma t47 : p68.
+Definition f63 := Float2 (325592635571766919) (242).
+Definition f64 := Float2 (5) (298).
+Definition i44 := makepairF f63 f64.
+Notation p69 := (BND r22 i44). (* BND(2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216, [2.30109e+90, 2.54629e+90]) *)
+Lemma t47 : p69.
 Proof.
- refine (constant1 _ i46 _) ; finalize.
+ refine (constant1 _ i44 _) ; finalize.
 Qed.
-Lemma l65 : s1 -> p68 (* BND(2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216, [2.30109e+90, 2.54629e+90]) *).
+Lemma l65 : s1 -> p69 (* BND(2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216, [2.30109e+90, 2.54629e+90]) *).
 Proof.
  intros h0.
  apply t47.
 Qed.
-Lemma t48 : p67 -> p68 -> p66.
+Lemma t48 : p68 -> p69 -> p67.
 Proof.
  intros h0 h1.
- refine (div_pp r51 r22 i45 i46 i44 h0 h1 _) ; finalize.
+ refine (div_pp r51 r22 i43 i44 i42 h0 h1 _) ; finalize.
 Qed.
-Lemma l63 : s1 -> p66 (* BND(570419849984716187108541389157035433662294559263261888455660546024551170261 / 2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216, [2.22045e-16, 2.47891e-16]) *).
+Lemma l63 : s1 -> p67 (* BND(570419849984716187108541389157035433662294559263261888455660546024551170261 / 2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216, [2.22045e-16, 2.47891e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l64 h0).
  assert (h2 := l65 h0).
  apply t48. exact h1. exact h2.
 Qed.
-Lemma t49 : p66 -> p2 -> p65.
+Lemma t49 : p67 -> p2 -> p66.
 Proof.
  intros h0 h1.
- refine (mul_po r50 _q i44 i2 i43 h0 h1 _) ; finalize.
+ refine (mul_po r50 _q i42 i2 i41 h0 h1 _) ; finalize.
 Qed.
-Lemma l62 : s1 -> p65 (* BND(570419849984716187108541389157035433662294559263261888455660546024551170261 / 2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216 * q, [-2.78878e-16, 2.78878e-16]) *).
+Lemma l62 : s1 -> p66 (* BND(570419849984716187108541389157035433662294559263261888455660546024551170261 / 2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216 * q, [-4.64796e-16, 4.64796e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l63 h0).
  assert (h2 := l21 h0).
  apply t49. exact h1. exact h2.
 Qed.
-Lemma t50 : p61 -> p65 -> p60.
+Lemma t50 : p61 -> p66 -> p60.
 Proof.
  intros h0 h1.
- refine (add r46 r49 i39 i43 i38 h0 h1 _) ; finalize.
+ refine (add r46 r49 i36 i41 i35 h0 h1 _) ; finalize.
 Qed.
-Lemma l57 : s1 -> p60 (* BND(-607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * p + 570419849984716187108541389157035433662294559263261888455660546024551170261 / 2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216 * q, [-1.15723e-15, 1.15723e-15]) *).
+Lemma l57 : s1 -> p60 (* BND(-607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * p + 570419849984716187108541389157035433662294559263261888455660546024551170261 / 2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216 * q, [-1.86075e-15, 1.86075e-15]) *).
 Proof.
  intros h0.
  assert (h1 := l58 h0).
  assert (h2 := l62 h0).
  apply t50. exact h1. exact h2.
 Qed.
-Definition i47 := makepairF f9 f9.
-Notation p69 := (REL r26 r45 i47). (* REL(p1_ideal - p_exact, -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * p + 570419849984716187108541389157035433662294559263261888455660546024551170261 / 2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216 * q, [0, 0]) *)
-Notation p70 := (r26 = r45). (* EQL(p1_ideal - p_exact, -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * p + 570419849984716187108541389157035433662294559263261888455660546024551170261 / 2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216 * q) *)
-Lemma t51 : p70.
+Definition i45 := makepairF f9 f9.
+Notation p70 := (REL r26 r45 i45). (* REL(p1_ideal - p_exact, -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * p + 570419849984716187108541389157035433662294559263261888455660546024551170261 / 2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216 * q, [0, 0]) *)
+Notation p71 := (r26 = r45). (* EQL(p1_ideal - p_exact, -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * p + 570419849984716187108541389157035433662294559263261888455660546024551170261 / 2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216 * q) *)
+Lemma t51 : p71.
 Proof.
  refine (b3) ; finalize.
 Qed.
-Lemma l67 : s1 -> p70 (* EQL(p1_ideal - p_exact, -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * p + 570419849984716187108541389157035433662294559263261888455660546024551170261 / 2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216 * q) *).
+Lemma l67 : s1 -> p71 (* EQL(p1_ideal - p_exact, -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * p + 570419849984716187108541389157035433662294559263261888455660546024551170261 / 2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216 * q) *).
 Proof.
  intros h0.
  apply t51.
 Qed.
-Notation p71 := (REL r45 r45 i47). (* REL(-607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * p + 570419849984716187108541389157035433662294559263261888455660546024551170261 / 2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216 * q, -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * p + 570419849984716187108541389157035433662294559263261888455660546024551170261 / 2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216 * q, [0, 0]) *)
-Lemma t52 : p71.
+Notation p72 := (REL r45 r45 i45). (* REL(-607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * p + 570419849984716187108541389157035433662294559263261888455660546024551170261 / 2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216 * q, -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * p + 570419849984716187108541389157035433662294559263261888455660546024551170261 / 2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216 * q, [0, 0]) *)
+Lemma t52 : p72.
 Proof.
- refine (rel_refl r45 i47 _) ; finalize.
+ refine (rel_refl r45 i45 _) ; finalize.
 Qed.
-Lemma l68 : s1 -> p71 (* REL(-607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * p + 570419849984716187108541389157035433662294559263261888455660546024551170261 / 2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216 * q, -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * p + 570419849984716187108541389157035433662294559263261888455660546024551170261 / 2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216 * q, [0, 0]) *).
+Lemma l68 : s1 -> p72 (* REL(-607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * p + 570419849984716187108541389157035433662294559263261888455660546024551170261 / 2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216 * q, -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * p + 570419849984716187108541389157035433662294559263261888455660546024551170261 / 2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216 * q, [0, 0]) *).
 Proof.
  intros h0.
  apply t52.
 Qed.
-Lemma t53 : p70 -> p71 -> p69.
+Lemma t53 : p71 -> p72 -> p70.
 Proof.
  intros h0 h1.
- refine (rel_rewrite_1 r26 r45 r45 i47 h0 h1) ; finalize.
+ refine (rel_rewrite_1 r26 r45 r45 i45 h0 h1) ; finalize.
 Qed.
-Lemma l66 : s1 -> p69 (* REL(p1_ideal - p_exact, -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * p + 570419849984716187108541389157035433662294559263261888455660546024551170261 / 2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216 * q, [0, 0]) *).
+Lemma l66 : s1 -> p70 (* REL(p1_ideal - p_exact, -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * p + 570419849984716187108541389157035433662294559263261888455660546024551170261 / 2301089569893738191214049136294392848876640076138894889705378020928991397008229047222665216 * q, [0, 0]) *).
 Proof.
  intros h0.
  assert (h1 := l67 h0).
  assert (h2 := l68 h0).
  apply t53. exact h1. exact h2.
 Qed.
-Lemma t54 : p60 -> p69 -> p59.
+Lemma t54 : p60 -> p70 -> p59.
 Proof.
  intros h0 h1.
- refine (bnd_of_bnd_rel_o r26 r45 i38 i47 i38 h0 h1 _) ; finalize.
+ refine (bnd_of_bnd_rel_o r26 r45 i35 i45 i35 h0 h1 _) ; finalize.
 Qed.
-Lemma l56 : s1 -> p59 (* BND(p1_ideal - p_exact, [-1.15723e-15, 1.15723e-15]) *).
+Lemma l56 : s1 -> p59 (* BND(p1_ideal - p_exact, [-1.86075e-15, 1.86075e-15]) *).
 Proof.
  intros h0.
  assert (h1 := l57 h0).
@@ -2424,54 +2422,54 @@ Qed.
 Lemma t55 : p40 -> p59 -> p39.
 Proof.
  intros h0 h1.
- refine (add r24 r26 i23 i38 i3 h0 h1 _) ; finalize.
+ refine (add r24 r26 i23 i35 i3 h0 h1 _) ; finalize.
 Qed.
-Lemma l41 : s1 -> p39 (* BND(p1 - p1_ideal + (p1_ideal - p_exact), [-2.71154e-15, 2.71154e-15]) *).
+Lemma l41 : s1 -> p39 (* BND(p1 - p1_ideal + (p1_ideal - p_exact), [-3.85915e-15, 3.85915e-15]) *).
 Proof.
  intros h0.
  assert (h1 := l42 h0).
  assert (h2 := l56 h0).
  apply t55. exact h1. exact h2.
 Qed.
-Notation p72 := (REL r1 r23 i47). (* REL(p1 - p_exact, p1 - p1_ideal + (p1_ideal - p_exact), [0, 0]) *)
-Notation p73 := (r1 = r23). (* EQL(p1 - p_exact, p1 - p1_ideal + (p1_ideal - p_exact)) *)
-Lemma t56 : p73.
+Notation p73 := (REL r1 r23 i45). (* REL(p1 - p_exact, p1 - p1_ideal + (p1_ideal - p_exact), [0, 0]) *)
+Notation p74 := (r1 = r23). (* EQL(p1 - p_exact, p1 - p1_ideal + (p1_ideal - p_exact)) *)
+Lemma t56 : p74.
 Proof.
  refine (b1) ; finalize.
 Qed.
-Lemma l70 : s1 -> p73 (* EQL(p1 - p_exact, p1 - p1_ideal + (p1_ideal - p_exact)) *).
+Lemma l70 : s1 -> p74 (* EQL(p1 - p_exact, p1 - p1_ideal + (p1_ideal - p_exact)) *).
 Proof.
  intros h0.
  apply t56.
 Qed.
-Notation p74 := (REL r23 r23 i47). (* REL(p1 - p1_ideal + (p1_ideal - p_exact), p1 - p1_ideal + (p1_ideal - p_exact), [0, 0]) *)
-Lemma t57 : p74.
+Notation p75 := (REL r23 r23 i45). (* REL(p1 - p1_ideal + (p1_ideal - p_exact), p1 - p1_ideal + (p1_ideal - p_exact), [0, 0]) *)
+Lemma t57 : p75.
 Proof.
- refine (rel_refl r23 i47 _) ; finalize.
+ refine (rel_refl r23 i45 _) ; finalize.
 Qed.
-Lemma l71 : s1 -> p74 (* REL(p1 - p1_ideal + (p1_ideal - p_exact), p1 - p1_ideal + (p1_ideal - p_exact), [0, 0]) *).
+Lemma l71 : s1 -> p75 (* REL(p1 - p1_ideal + (p1_ideal - p_exact), p1 - p1_ideal + (p1_ideal - p_exact), [0, 0]) *).
 Proof.
  intros h0.
  apply t57.
 Qed.
-Lemma t58 : p73 -> p74 -> p72.
+Lemma t58 : p74 -> p75 -> p73.
 Proof.
  intros h0 h1.
- refine (rel_rewrite_1 r1 r23 r23 i47 h0 h1) ; finalize.
+ refine (rel_rewrite_1 r1 r23 r23 i45 h0 h1) ; finalize.
 Qed.
-Lemma l69 : s1 -> p72 (* REL(p1 - p_exact, p1 - p1_ideal + (p1_ideal - p_exact), [0, 0]) *).
+Lemma l69 : s1 -> p73 (* REL(p1 - p_exact, p1 - p1_ideal + (p1_ideal - p_exact), [0, 0]) *).
 Proof.
  intros h0.
  assert (h1 := l70 h0).
  assert (h2 := l71 h0).
  apply t58. exact h1. exact h2.
 Qed.
-Lemma t59 : p39 -> p72 -> p3.
+Lemma t59 : p39 -> p73 -> p3.
 Proof.
  intros h0 h1.
- refine (bnd_of_bnd_rel_o r1 r23 i3 i47 i3 h0 h1 _) ; finalize.
+ refine (bnd_of_bnd_rel_o r1 r23 i3 i45 i3 h0 h1 _) ; finalize.
 Qed.
-Lemma l40 : s1 -> p3 (* BND(p1 - p_exact, [-2.71154e-15, 2.71154e-15]) *).
+Lemma l40 : s1 -> p3 (* BND(p1 - p_exact, [-3.85915e-15, 3.85915e-15]) *).
 Proof.
  intros h0.
  assert (h1 := l41 h0).
@@ -2485,352 +2483,354 @@ Proof.
  assert (h2 := l40 h0).
  refine (simplify (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 1%nat i4)) (Abnd 0%nat i3) (List.cons r1 (List.cons r27 List.nil)) h2 h1 _) ; finalize.
 Qed.
-Notation p75 := (BND r41 i4). (* BND(q1 - q1_ideal + (q1_ideal - q_exact), [-4.37831e-16, 4.37831e-16]) *)
-Definition f68 := Float2 (-9) (-55).
-Definition f69 := Float2 (9) (-55).
-Definition i48 := makepairF f68 f69.
-Notation p76 := (BND r42 i48). (* BND(q1 - q1_ideal, [-2.498e-16, 2.498e-16]) *)
+Notation p76 := (BND r41 i4). (* BND(q1 - q1_ideal + (q1_ideal - q_exact), [-6.98336e-16, 6.98336e-16]) *)
+Definition f65 := Float2 (-7) (-54).
+Definition f66 := Float2 (7) (-54).
+Definition i46 := makepairF f65 f66.
+Notation p77 := (BND r42 i46). (* BND(q1 - q1_ideal, [-3.88578e-16, 3.88578e-16]) *)
 Notation r71 := ((_q1 - r29)%R).
 Notation r72 := ((r29 - _q1_ideal)%R).
 Notation r70 := ((r71 + r72)%R).
-Notation p77 := (BND r70 i48). (* BND(q1 - (gp + dq) + (gp + dq - q1_ideal), [-2.498e-16, 2.498e-16]) *)
-Definition f70 := Float2 (1) (-53).
-Definition i49 := makepairF f56 f70.
-Notation p78 := (BND r71 i49). (* BND(q1 - (gp + dq), [-1.11022e-16, 1.11022e-16]) *)
-Notation p79 := (ABS r29 i36). (* ABS(gp + dq, [0, 2]) *)
-Notation p80 := (BND r29 i37). (* BND(gp + dq, [-2, 2]) *)
-Lemma t60 : p80 -> p79.
+Notation p78 := (BND r70 i46). (* BND(q1 - (gp + dq) + (gp + dq - q1_ideal), [-3.88578e-16, 3.88578e-16]) *)
+Notation p79 := (BND r71 i29). (* BND(q1 - (gp + dq), [-2.22045e-16, 2.22045e-16]) *)
+Notation p80 := (ABS r29 i30). (* ABS(gp + dq, [0, 4]) *)
+Definition f67 := Float2 (-1) (2).
+Definition i47 := makepairF f67 f44.
+Notation p81 := (BND r29 i47). (* BND(gp + dq, [-4, 4]) *)
+Lemma t60 : p81 -> p80.
 Proof.
  intros h0.
- refine (abs_of_bnd_o r29 i37 i36 h0 _) ; finalize.
+ refine (abs_of_bnd_o r29 i47 i30 h0 _) ; finalize.
 Qed.
-Lemma l77 : s1 -> p79 (* ABS(gp + dq, [0, 2]) *).
+Lemma l77 : s1 -> p80 (* ABS(gp + dq, [0, 4]) *).
 Proof.
  intros h0.
  assert (h1 := l39 h0).
- apply t60. refine (subset r29 i22 i37 h1 _) ; finalize.
+ apply t60. refine (subset r29 i21 i47 h1 _) ; finalize.
 Qed.
-Lemma t61 : p79 -> p78.
+Lemma t61 : p80 -> p79.
 Proof.
  intros h0.
- refine (float_absolute_wide_ne _ _ r29 i36 i49 h0 _) ; finalize.
+ refine (float_absolute_wide_ne _ _ r29 i30 i29 h0 _) ; finalize.
 Qed.
-Lemma l76 : s1 -> p78 (* BND(q1 - (gp + dq), [-1.11022e-16, 1.11022e-16]) *).
+Lemma l76 : s1 -> p79 (* BND(q1 - (gp + dq), [-2.22045e-16, 2.22045e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l77 h0).
  apply t61. exact h1.
 Qed.
-Definition f71 := Float2 (-5) (-55).
-Definition f72 := Float2 (5) (-55).
-Definition i50 := makepairF f71 f72.
-Notation p81 := (BND r72 i50). (* BND(gp + dq - q1_ideal, [-1.38778e-16, 1.38778e-16]) *)
+Definition f68 := Float2 (-3) (-54).
+Definition f69 := Float2 (3) (-54).
+Definition i48 := makepairF f68 f69.
+Notation p82 := (BND r72 i48). (* BND(gp + dq - q1_ideal, [-1.66533e-16, 1.66533e-16]) *)
 Notation r74 := ((_gp - _gp_ideal)%R).
 Notation r75 := ((_dq - _dq_ideal)%R).
 Notation r73 := ((r74 + r75)%R).
-Notation p82 := (BND r73 i50). (* BND(gp - gp_ideal + (dq - dq_ideal), [-1.38778e-16, 1.38778e-16]) *)
-Definition f73 := Float2 (-1) (-55).
-Definition f74 := Float2 (1) (-55).
-Definition i51 := makepairF f73 f74.
-Notation p83 := (BND r74 i51). (* BND(gp - gp_ideal, [-2.77556e-17, 2.77556e-17]) *)
-Definition i52 := makepairF f9 f13.
-Notation p84 := (ABS _gp_ideal i52). (* ABS(gp_ideal, [0, 0.5]) *)
-Definition f75 := Float2 (1) (-4).
-Definition i53 := makepairF f25 f75.
-Notation p85 := (ABS _gamma i53). (* ABS(gamma, [0.03125, 0.0625]) *)
-Notation p86 := (BND _gamma i53). (* BND(gamma, [0.03125, 0.0625]) *)
-Lemma t62 : p86 -> p85.
+Notation p83 := (BND r73 i48). (* BND(gp - gp_ideal + (dq - dq_ideal), [-1.66533e-16, 1.66533e-16]) *)
+Definition f70 := Float2 (-1) (-54).
+Definition f71 := Float2 (1) (-54).
+Definition i49 := makepairF f70 f71.
+Notation p84 := (BND r74 i49). (* BND(gp - gp_ideal, [-5.55112e-17, 5.55112e-17]) *)
+Definition i50 := makepairF f9 f41.
+Notation p85 := (ABS _gp_ideal i50). (* ABS(gp_ideal, [0, 1]) *)
+Definition f72 := Float2 (1) (-4).
+Definition i51 := makepairF f23 f72.
+Notation p86 := (ABS _gamma i51). (* ABS(gamma, [0.03125, 0.0625]) *)
+Notation p87 := (BND _gamma i51). (* BND(gamma, [0.03125, 0.0625]) *)
+Lemma t62 : p87 -> p86.
 Proof.
  intros h0.
- refine (abs_of_bnd_p _gamma i53 i53 h0 _) ; finalize.
+ refine (abs_of_bnd_p _gamma i51 i51 h0 _) ; finalize.
 Qed.
-Lemma l82 : s1 -> p85 (* ABS(gamma, [0.03125, 0.0625]) *).
+Lemma l82 : s1 -> p86 (* ABS(gamma, [0.03125, 0.0625]) *).
 Proof.
  intros h0.
  assert (h1 := l31 h0).
- apply t62. refine (subset _gamma i17 i53 h1 _) ; finalize.
+ apply t62. refine (subset _gamma i16 i51 h1 _) ; finalize.
 Qed.
-Lemma t63 : p85 -> p51 -> p84.
+Lemma t63 : p86 -> p51 -> p85.
 Proof.
  intros h0 h1.
- refine (mul_aa _gamma _p i53 i29 i52 h0 h1 _) ; finalize.
+ refine (mul_aa _gamma _p i51 i25 i50 h0 h1 _) ; finalize.
 Qed.
-Lemma l81 : s1 -> p84 (* ABS(gp_ideal, [0, 0.5]) *).
+Lemma l81 : s1 -> p85 (* ABS(gp_ideal, [0, 1]) *).
 Proof.
  intros h0.
  assert (h1 := l82 h0).
  assert (h2 := l51 h0).
  apply t63. exact h1. exact h2.
 Qed.
-Lemma t64 : p84 -> p83.
+Lemma t64 : p85 -> p84.
 Proof.
  intros h0.
- refine (float_absolute_wide_ne _ _ _gp_ideal i52 i51 h0 _) ; finalize.
+ refine (float_absolute_wide_ne _ _ _gp_ideal i50 i49 h0 _) ; finalize.
 Qed.
-Lemma l80 : s1 -> p83 (* BND(gp - gp_ideal, [-2.77556e-17, 2.77556e-17]) *).
+Lemma l80 : s1 -> p84 (* BND(gp - gp_ideal, [-5.55112e-17, 5.55112e-17]) *).
 Proof.
  intros h0.
  assert (h1 := l81 h0).
  apply t64. exact h1.
 Qed.
-Notation p87 := (BND r75 i49). (* BND(dq - dq_ideal, [-1.11022e-16, 1.11022e-16]) *)
-Notation p88 := (ABS _dq_ideal i36). (* ABS(dq_ideal, [0, 2]) *)
-Lemma t65 : p49 -> p57 -> p88.
+Definition f73 := Float2 (1) (-53).
+Definition i52 := makepairF f52 f73.
+Notation p88 := (BND r75 i52). (* BND(dq - dq_ideal, [-1.11022e-16, 1.11022e-16]) *)
+Notation p89 := (ABS _dq_ideal i33). (* ABS(dq_ideal, [0, 2]) *)
+Lemma t65 : p49 -> p57 -> p89.
 Proof.
  intros h0 h1.
- refine (mul_aa _delta _q i30 i36 i36 h0 h1 _) ; finalize.
+ refine (mul_aa _delta _q i28 i33 i33 h0 h1 _) ; finalize.
 Qed.
-Lemma l84 : s1 -> p88 (* ABS(dq_ideal, [0, 2]) *).
+Lemma l84 : s1 -> p89 (* ABS(dq_ideal, [0, 2]) *).
 Proof.
  intros h0.
  assert (h1 := l50 h0).
  assert (h2 := l55 h0).
  apply t65. exact h1. exact h2.
 Qed.
-Lemma t66 : p88 -> p87.
+Lemma t66 : p89 -> p88.
 Proof.
  intros h0.
- refine (float_absolute_wide_ne _ _ _dq_ideal i36 i49 h0 _) ; finalize.
+ refine (float_absolute_wide_ne _ _ _dq_ideal i33 i52 h0 _) ; finalize.
 Qed.
-Lemma l83 : s1 -> p87 (* BND(dq - dq_ideal, [-1.11022e-16, 1.11022e-16]) *).
+Lemma l83 : s1 -> p88 (* BND(dq - dq_ideal, [-1.11022e-16, 1.11022e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l84 h0).
  apply t66. exact h1.
 Qed.
-Lemma t67 : p83 -> p87 -> p82.
+Lemma t67 : p84 -> p88 -> p83.
 Proof.
  intros h0 h1.
- refine (add r74 r75 i51 i49 i50 h0 h1 _) ; finalize.
+ refine (add r74 r75 i49 i52 i48 h0 h1 _) ; finalize.
 Qed.
-Lemma l79 : s1 -> p82 (* BND(gp - gp_ideal + (dq - dq_ideal), [-1.38778e-16, 1.38778e-16]) *).
+Lemma l79 : s1 -> p83 (* BND(gp - gp_ideal + (dq - dq_ideal), [-1.66533e-16, 1.66533e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l80 h0).
  assert (h2 := l83 h0).
  apply t67. exact h1. exact h2.
 Qed.
-Lemma t68 : p82 -> p81.
+Lemma t68 : p83 -> p82.
 Proof.
  intros h0.
- refine (add_mibs _ _ _ _ i50 h0) ; finalize.
+ refine (add_mibs _ _ _ _ i48 h0) ; finalize.
 Qed.
-Lemma l78 : s1 -> p81 (* BND(gp + dq - q1_ideal, [-1.38778e-16, 1.38778e-16]) *).
+Lemma l78 : s1 -> p82 (* BND(gp + dq - q1_ideal, [-1.66533e-16, 1.66533e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l79 h0).
  apply t68. exact h1.
 Qed.
-Lemma t69 : p78 -> p81 -> p77.
+Lemma t69 : p79 -> p82 -> p78.
 Proof.
  intros h0 h1.
- refine (add r71 r72 i49 i50 i48 h0 h1 _) ; finalize.
+ refine (add r71 r72 i29 i48 i46 h0 h1 _) ; finalize.
 Qed.
-Lemma l75 : s1 -> p77 (* BND(q1 - (gp + dq) + (gp + dq - q1_ideal), [-2.498e-16, 2.498e-16]) *).
+Lemma l75 : s1 -> p78 (* BND(q1 - (gp + dq) + (gp + dq - q1_ideal), [-3.88578e-16, 3.88578e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l76 h0).
  assert (h2 := l78 h0).
  apply t69. exact h1. exact h2.
 Qed.
-Lemma t70 : p77 -> p76.
+Lemma t70 : p78 -> p77.
 Proof.
  intros h0.
- refine (sub_xals _ _ _ i48 h0) ; finalize.
+ refine (sub_xals _ _ _ i46 h0) ; finalize.
 Qed.
-Lemma l74 : s1 -> p76 (* BND(q1 - q1_ideal, [-2.498e-16, 2.498e-16]) *).
+Lemma l74 : s1 -> p77 (* BND(q1 - q1_ideal, [-3.88578e-16, 3.88578e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l75 h0).
  apply t70. exact h1.
 Qed.
-Definition f76 := Float2 (-244077795997312085) (-110).
-Definition f77 := Float2 (244077795997312085) (-110).
+Definition f74 := Float2 (-402088739940410689) (-110).
+Definition f75 := Float2 (402088739940410689) (-110).
+Definition i53 := makepairF f74 f75.
+Notation p90 := (BND r44 i53). (* BND(q1_ideal - q_exact, [-3.09758e-16, 3.09758e-16]) *)
+Notation p91 := (BND r52 i53). (* BND(-36845085767445699368127421840329 / 5503169332165886540104386747797882289057924382720 * p + -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * q, [-3.09758e-16, 3.09758e-16]) *)
+Definition f76 := Float2 (-96686588824171077) (-110).
+Definition f77 := Float2 (96686588824171077) (-110).
 Definition i54 := makepairF f76 f77.
-Notation p89 := (BND r44 i54). (* BND(q1_ideal - q_exact, [-1.88031e-16, 1.88031e-16]) *)
-Notation p90 := (BND r52 i54). (* BND(-36845085767445699368127421840329 / 5503169332165886540104386747797882289057924382720 * p + -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * q, [-1.88031e-16, 1.88031e-16]) *)
-Definition f78 := Float2 (-30418252663784159) (-109).
-Definition f79 := Float2 (30418252663784159) (-109).
+Notation p92 := (BND r53 i54). (* BND(-36845085767445699368127421840329 / 5503169332165886540104386747797882289057924382720 * p, [-7.44846e-17, 7.44846e-17]) *)
+Definition f78 := Float2 (-278109738640312311) (-115).
+Definition f79 := Float2 (-1) (-58).
 Definition i55 := makepairF f78 f79.
-Notation p91 := (BND r53 i55). (* BND(-36845085767445699368127421840329 / 5503169332165886540104386747797882289057924382720 * p, [-4.68667e-17, 4.68667e-17]) *)
-Definition f80 := Float2 (-1112438954561249243) (-117).
-Definition f81 := Float2 (-1) (-58).
+Notation p93 := (BND r54 i55). (* BND(-36845085767445699368127421840329 / 5503169332165886540104386747797882289057924382720, [-6.69525e-18, -3.46945e-18]) *)
+Definition f80 := Float2 (-523600160810327955) (46).
+Definition f81 := Float2 (-1) (104).
 Definition i56 := makepairF f80 f81.
-Notation p92 := (BND r54 i56). (* BND(-36845085767445699368127421840329 / 5503169332165886540104386747797882289057924382720, [-6.69525e-18, -3.46945e-18]) *)
-Definition f82 := Float2 (-523600160810327955) (46).
-Definition f83 := Float2 (-1) (104).
-Definition i57 := makepairF f82 f83.
-Notation p93 := (BND r55 i57). (* BND(-36845085767445699368127421840329, [-3.68451e+31, -2.02824e+31]) *)
-Lemma t71 : p93.
+Notation p94 := (BND r55 i56). (* BND(-36845085767445699368127421840329, [-3.68451e+31, -2.02824e+31]) *)
+Lemma t71 : p94.
 Proof.
- refine (constant1 _ i57 _) ; finalize.
+ refine (constant1 _ i56 _) ; finalize.
 Qed.
-Lemma l89 : s1 -> p93 (* BND(-36845085767445699368127421840329, [-3.68451e+31, -2.02824e+31]) *).
+Lemma l89 : s1 -> p94 (* BND(-36845085767445699368127421840329, [-3.68451e+31, -2.02824e+31]) *).
 Proof.
  intros h0.
  apply t71.
 Qed.
-Definition f84 := Float2 (1085308785239223063) (102).
-Definition f85 := Float2 (1) (162).
-Definition i58 := makepairF f84 f85.
-Notation p94 := (BND r56 i58). (* BND(5503169332165886540104386747797882289057924382720, [5.50317e+48, 5.84601e+48]) *)
-Lemma t72 : p94.
+Definition f82 := Float2 (542654392619611531) (103).
+Definition f83 := Float2 (1) (162).
+Definition i57 := makepairF f82 f83.
+Notation p95 := (BND r56 i57). (* BND(5503169332165886540104386747797882289057924382720, [5.50317e+48, 5.84601e+48]) *)
+Lemma t72 : p95.
 Proof.
- refine (constant1 _ i58 _) ; finalize.
+ refine (constant1 _ i57 _) ; finalize.
 Qed.
-Lemma l90 : s1 -> p94 (* BND(5503169332165886540104386747797882289057924382720, [5.50317e+48, 5.84601e+48]) *).
+Lemma l90 : s1 -> p95 (* BND(5503169332165886540104386747797882289057924382720, [5.50317e+48, 5.84601e+48]) *).
 Proof.
  intros h0.
  apply t72.
 Qed.
-Lemma t73 : p93 -> p94 -> p92.
+Lemma t73 : p94 -> p95 -> p93.
 Proof.
  intros h0 h1.
- refine (div_np r55 r56 i57 i58 i56 h0 h1 _) ; finalize.
+ refine (div_np r55 r56 i56 i57 i55 h0 h1 _) ; finalize.
 Qed.
-Lemma l88 : s1 -> p92 (* BND(-36845085767445699368127421840329 / 5503169332165886540104386747797882289057924382720, [-6.69525e-18, -3.46945e-18]) *).
+Lemma l88 : s1 -> p93 (* BND(-36845085767445699368127421840329 / 5503169332165886540104386747797882289057924382720, [-6.69525e-18, -3.46945e-18]) *).
 Proof.
  intros h0.
  assert (h1 := l89 h0).
  assert (h2 := l90 h0).
  apply t73. exact h1. exact h2.
 Qed.
-Lemma t74 : p92 -> p1 -> p91.
+Lemma t74 : p93 -> p1 -> p92.
 Proof.
  intros h0 h1.
- refine (mul_no r54 _p i56 i1 i55 h0 h1 _) ; finalize.
+ refine (mul_no r54 _p i55 i1 i54 h0 h1 _) ; finalize.
 Qed.
-Lemma l87 : s1 -> p91 (* BND(-36845085767445699368127421840329 / 5503169332165886540104386747797882289057924382720 * p, [-4.68667e-17, 4.68667e-17]) *).
+Lemma l87 : s1 -> p92 (* BND(-36845085767445699368127421840329 / 5503169332165886540104386747797882289057924382720 * p, [-7.44846e-17, 7.44846e-17]) *).
 Proof.
  intros h0.
  assert (h1 := l88 h0).
  assert (h2 := l15 h0).
  apply t74. exact h1. exact h2.
 Qed.
-Definition f86 := Float2 (-183241290669743767) (-110).
-Definition f87 := Float2 (183241290669743767) (-110).
-Definition i59 := makepairF f86 f87.
-Notation p95 := (BND r57 i59). (* BND(-607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * q, [-1.41164e-16, 1.41164e-16]) *)
-Lemma t75 : p62 -> p2 -> p95.
+Definition f84 := Float2 (-76350537779059903) (-108).
+Definition f85 := Float2 (76350537779059903) (-108).
+Definition i58 := makepairF f84 f85.
+Notation p96 := (BND r57 i58). (* BND(-607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * q, [-2.35273e-16, 2.35273e-16]) *)
+Lemma t75 : p62 -> p2 -> p96.
 Proof.
  intros h0 h1.
- refine (mul_no r47 _q i40 i2 i59 h0 h1 _) ; finalize.
+ refine (mul_no r47 _q i37 i2 i58 h0 h1 _) ; finalize.
 Qed.
-Lemma l91 : s1 -> p95 (* BND(-607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * q, [-1.41164e-16, 1.41164e-16]) *).
+Lemma l91 : s1 -> p96 (* BND(-607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * q, [-2.35273e-16, 2.35273e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l59 h0).
  assert (h2 := l21 h0).
  apply t75. exact h1. exact h2.
 Qed.
-Lemma t76 : p91 -> p95 -> p90.
+Lemma t76 : p92 -> p96 -> p91.
 Proof.
  intros h0 h1.
- refine (add r53 r57 i55 i59 i54 h0 h1 _) ; finalize.
+ refine (add r53 r57 i54 i58 i53 h0 h1 _) ; finalize.
 Qed.
-Lemma l86 : s1 -> p90 (* BND(-36845085767445699368127421840329 / 5503169332165886540104386747797882289057924382720 * p + -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * q, [-1.88031e-16, 1.88031e-16]) *).
+Lemma l86 : s1 -> p91 (* BND(-36845085767445699368127421840329 / 5503169332165886540104386747797882289057924382720 * p + -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * q, [-3.09758e-16, 3.09758e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l87 h0).
  assert (h2 := l91 h0).
  apply t76. exact h1. exact h2.
 Qed.
-Notation p96 := (REL r44 r52 i47). (* REL(q1_ideal - q_exact, -36845085767445699368127421840329 / 5503169332165886540104386747797882289057924382720 * p + -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * q, [0, 0]) *)
-Notation p97 := (r44 = r52). (* EQL(q1_ideal - q_exact, -36845085767445699368127421840329 / 5503169332165886540104386747797882289057924382720 * p + -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * q) *)
-Lemma t77 : p97.
+Notation p97 := (REL r44 r52 i45). (* REL(q1_ideal - q_exact, -36845085767445699368127421840329 / 5503169332165886540104386747797882289057924382720 * p + -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * q, [0, 0]) *)
+Notation p98 := (r44 = r52). (* EQL(q1_ideal - q_exact, -36845085767445699368127421840329 / 5503169332165886540104386747797882289057924382720 * p + -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * q) *)
+Lemma t77 : p98.
 Proof.
  refine (b4) ; finalize.
 Qed.
-Lemma l93 : s1 -> p97 (* EQL(q1_ideal - q_exact, -36845085767445699368127421840329 / 5503169332165886540104386747797882289057924382720 * p + -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * q) *).
+Lemma l93 : s1 -> p98 (* EQL(q1_ideal - q_exact, -36845085767445699368127421840329 / 5503169332165886540104386747797882289057924382720 * p + -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * q) *).
 Proof.
  intros h0.
  apply t77.
 Qed.
-Notation p98 := (REL r52 r52 i47). (* REL(-36845085767445699368127421840329 / 5503169332165886540104386747797882289057924382720 * p + -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * q, -36845085767445699368127421840329 / 5503169332165886540104386747797882289057924382720 * p + -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * q, [0, 0]) *)
-Lemma t78 : p98.
+Notation p99 := (REL r52 r52 i45). (* REL(-36845085767445699368127421840329 / 5503169332165886540104386747797882289057924382720 * p + -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * q, -36845085767445699368127421840329 / 5503169332165886540104386747797882289057924382720 * p + -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * q, [0, 0]) *)
+Lemma t78 : p99.
 Proof.
- refine (rel_refl r52 i47 _) ; finalize.
+ refine (rel_refl r52 i45 _) ; finalize.
 Qed.
-Lemma l94 : s1 -> p98 (* REL(-36845085767445699368127421840329 / 5503169332165886540104386747797882289057924382720 * p + -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * q, -36845085767445699368127421840329 / 5503169332165886540104386747797882289057924382720 * p + -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * q, [0, 0]) *).
+Lemma l94 : s1 -> p99 (* REL(-36845085767445699368127421840329 / 5503169332165886540104386747797882289057924382720 * p + -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * q, -36845085767445699368127421840329 / 5503169332165886540104386747797882289057924382720 * p + -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * q, [0, 0]) *).
 Proof.
  intros h0.
  apply t78.
 Qed.
-Lemma t79 : p97 -> p98 -> p96.
+Lemma t79 : p98 -> p99 -> p97.
 Proof.
  intros h0 h1.
- refine (rel_rewrite_1 r44 r52 r52 i47 h0 h1) ; finalize.
+ refine (rel_rewrite_1 r44 r52 r52 i45 h0 h1) ; finalize.
 Qed.
-Lemma l92 : s1 -> p96 (* REL(q1_ideal - q_exact, -36845085767445699368127421840329 / 5503169332165886540104386747797882289057924382720 * p + -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * q, [0, 0]) *).
+Lemma l92 : s1 -> p97 (* REL(q1_ideal - q_exact, -36845085767445699368127421840329 / 5503169332165886540104386747797882289057924382720 * p + -607398879457070813777175880614497980136962913 / 4840638936269341396294642382423593871270175513277109765144576 * q, [0, 0]) *).
 Proof.
  intros h0.
  assert (h1 := l93 h0).
  assert (h2 := l94 h0).
  apply t79. exact h1. exact h2.
 Qed.
-Lemma t80 : p90 -> p96 -> p89.
+Lemma t80 : p91 -> p97 -> p90.
 Proof.
  intros h0 h1.
- refine (bnd_of_bnd_rel_o r44 r52 i54 i47 i54 h0 h1 _) ; finalize.
+ refine (bnd_of_bnd_rel_o r44 r52 i53 i45 i53 h0 h1 _) ; finalize.
 Qed.
-Lemma l85 : s1 -> p89 (* BND(q1_ideal - q_exact, [-1.88031e-16, 1.88031e-16]) *).
+Lemma l85 : s1 -> p90 (* BND(q1_ideal - q_exact, [-3.09758e-16, 3.09758e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l86 h0).
  assert (h2 := l92 h0).
  apply t80. exact h1. exact h2.
 Qed.
-Lemma t81 : p76 -> p89 -> p75.
+Lemma t81 : p77 -> p90 -> p76.
 Proof.
  intros h0 h1.
- refine (add r42 r44 i48 i54 i4 h0 h1 _) ; finalize.
+ refine (add r42 r44 i46 i53 i4 h0 h1 _) ; finalize.
 Qed.
-Lemma l73 : s1 -> p75 (* BND(q1 - q1_ideal + (q1_ideal - q_exact), [-4.37831e-16, 4.37831e-16]) *).
+Lemma l73 : s1 -> p76 (* BND(q1 - q1_ideal + (q1_ideal - q_exact), [-6.98336e-16, 6.98336e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l74 h0).
  assert (h2 := l85 h0).
  apply t81. exact h1. exact h2.
 Qed.
-Notation p99 := (REL r27 r41 i47). (* REL(q1 - q_exact, q1 - q1_ideal + (q1_ideal - q_exact), [0, 0]) *)
-Notation p100 := (r27 = r41). (* EQL(q1 - q_exact, q1 - q1_ideal + (q1_ideal - q_exact)) *)
-Lemma t82 : p100.
+Notation p100 := (REL r27 r41 i45). (* REL(q1 - q_exact, q1 - q1_ideal + (q1_ideal - q_exact), [0, 0]) *)
+Notation p101 := (r27 = r41). (* EQL(q1 - q_exact, q1 - q1_ideal + (q1_ideal - q_exact)) *)
+Lemma t82 : p101.
 Proof.
  refine (b2) ; finalize.
 Qed.
-Lemma l96 : s1 -> p100 (* EQL(q1 - q_exact, q1 - q1_ideal + (q1_ideal - q_exact)) *).
+Lemma l96 : s1 -> p101 (* EQL(q1 - q_exact, q1 - q1_ideal + (q1_ideal - q_exact)) *).
 Proof.
  intros h0.
  apply t82.
 Qed.
-Notation p101 := (REL r41 r41 i47). (* REL(q1 - q1_ideal + (q1_ideal - q_exact), q1 - q1_ideal + (q1_ideal - q_exact), [0, 0]) *)
-Lemma t83 : p101.
+Notation p102 := (REL r41 r41 i45). (* REL(q1 - q1_ideal + (q1_ideal - q_exact), q1 - q1_ideal + (q1_ideal - q_exact), [0, 0]) *)
+Lemma t83 : p102.
 Proof.
- refine (rel_refl r41 i47 _) ; finalize.
+ refine (rel_refl r41 i45 _) ; finalize.
 Qed.
-Lemma l97 : s1 -> p101 (* REL(q1 - q1_ideal + (q1_ideal - q_exact), q1 - q1_ideal + (q1_ideal - q_exact), [0, 0]) *).
+Lemma l97 : s1 -> p102 (* REL(q1 - q1_ideal + (q1_ideal - q_exact), q1 - q1_ideal + (q1_ideal - q_exact), [0, 0]) *).
 Proof.
  intros h0.
  apply t83.
 Qed.
-Lemma t84 : p100 -> p101 -> p99.
+Lemma t84 : p101 -> p102 -> p100.
 Proof.
  intros h0 h1.
- refine (rel_rewrite_1 r27 r41 r41 i47 h0 h1) ; finalize.
+ refine (rel_rewrite_1 r27 r41 r41 i45 h0 h1) ; finalize.
 Qed.
-Lemma l95 : s1 -> p99 (* REL(q1 - q_exact, q1 - q1_ideal + (q1_ideal - q_exact), [0, 0]) *).
+Lemma l95 : s1 -> p100 (* REL(q1 - q_exact, q1 - q1_ideal + (q1_ideal - q_exact), [0, 0]) *).
 Proof.
  intros h0.
  assert (h1 := l96 h0).
  assert (h2 := l97 h0).
  apply t84. exact h1. exact h2.
 Qed.
-Lemma t85 : p75 -> p99 -> p4.
+Lemma t85 : p76 -> p100 -> p4.
 Proof.
  intros h0 h1.
- refine (bnd_of_bnd_rel_o r27 r41 i4 i47 i4 h0 h1 _) ; finalize.
+ refine (bnd_of_bnd_rel_o r27 r41 i4 i45 i4 h0 h1 _) ; finalize.
 Qed.
-Lemma l72 : s1 -> p4 (* BND(q1 - q_exact, [-4.37831e-16, 4.37831e-16]) *).
+Lemma l72 : s1 -> p4 (* BND(q1 - q_exact, [-6.98336e-16, 6.98336e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l73 h0).
@@ -2860,9 +2860,9 @@ Definition c := (7512069526796455666203966915693 / 15274363252454033313144606675
 Definition d := (4603719609199889721500218209637141174193549725516937316940641 / 4840638936269341396294642382423593871270175513277109765144576).
 Definition wp := (1 / 1).
 Definition wq := (22339560322361053271360081151711218058768231407869168069418927551429944664089299711040963625 / 565848295955993203641464547239755794525421885770007114686624489826935414477582009039323136).
-Definition Bp := (439973060305787769 / 162259276829213363391578010288128).
-Definition Bq := (568336969167987797 / 1298074214633706907132624082305024).
-Definition eps := (612071809086311 / 158456325028528675187087900672).
+Definition Bp := (626183230779878159 / 162259276829213363391578010288128).
+Definition Bq := (906491898205906241 / 1298074214633706907132624082305024).
+Definition eps := (1851873232088765 / 316912650057057350374175801344).
 
 Definition Q (x y : R) := wp * x * x + wq * y * y.
 
@@ -2997,24 +2997,24 @@ Proof. first [ring | unfold float2R, Float1, Defs.F2R; simpl; unfold Z.pow_pos; 
 Lemma b4 : r44 = r52.
  apply a4.
 Qed.
-Definition f1 := Float2 (-7) (0).
-Definition f2 := Float2 (7) (0).
+Definition f1 := Float2 (-89) (-3).
+Definition f2 := Float2 (89) (-3).
 Definition i1 := makepairF f1 f2.
-Notation p1 := (BND _p i1). (* BND(p, [-7, 7]) *)
-Definition f3 := Float2 (-9) (-3).
-Definition f4 := Float2 (9) (-3).
+Notation p1 := (BND _p i1). (* BND(p, [-11.125, 11.125]) *)
+Definition f3 := Float2 (-15) (-3).
+Definition f4 := Float2 (15) (-3).
 Definition i2 := makepairF f3 f4.
-Notation p2 := (BND _q i2). (* BND(q, [-1.125, 1.125]) *)
+Notation p2 := (BND _q i2). (* BND(q, [-1.875, 1.875]) *)
 Definition s2 := (p1 /\ p2).
-Definition f5 := Float2 (-594808073676915345) (-108).
-Definition f6 := Float2 (594808073676915345) (-108).
+Definition f5 := Float2 (-813702877652374769) (-108).
+Definition f6 := Float2 (813702877652374769) (-108).
 Definition i3 := makepairF f5 f6.
-Notation p3 := (BND r1 i3). (* BND(p1 - p_exact, [-1.83289e-15, 1.83289e-15]) *)
+Notation p3 := (BND r1 i3). (* BND(p1 - p_exact, [-2.50742e-15, 2.50742e-15]) *)
 Definition s10 := (not p3).
-Definition f7 := Float2 (-753711346901474655) (-111).
-Definition f8 := Float2 (753711346901474655) (-111).
+Definition f7 := Float2 (-585952308504433553) (-110).
+Definition f8 := Float2 (585952308504433553) (-110).
 Definition i4 := makepairF f7 f8.
-Notation p4 := (BND r27 i4). (* BND(q1 - q_exact, [-2.90319e-16, 2.90319e-16]) *)
+Notation p4 := (BND r27 i4). (* BND(q1 - q_exact, [-4.51401e-16, 4.51401e-16]) *)
 Definition s11 := (not p4).
 Definition s9 := (s10 \/ s11).
 Notation r58 := ((Rabs _ap)%R).
@@ -3062,17 +3062,17 @@ Proof.
  assert (h1 := h0).
  exact (proj2 h1).
 Qed.
-Definition f11 := Float2 (3892133716845055) (-49).
+Definition f11 := Float2 (6185712514271605) (-49).
 Definition i6 := makepairF f9 f11.
-Notation p11 := (BND r58 i6). (* BND(|ap|, [0, 6.91382]) *)
-Notation p12 := (ABS _ap i6). (* ABS(ap, [0, 6.91382]) *)
-Definition f12 := Float2 (-3892133716845055) (-49).
+Notation p11 := (BND r58 i6). (* BND(|ap|, [0, 10.988]) *)
+Notation p12 := (ABS _ap i6). (* ABS(ap, [0, 10.988]) *)
+Definition f12 := Float2 (-6185712514271605) (-49).
 Definition i7 := makepairF f12 f11.
-Notation p13 := (BND _ap i7). (* BND(ap, [-6.91382, 6.91382]) *)
-Definition f13 := Float2 (-15568534867380221) (-51).
-Definition f14 := Float2 (15568534867380221) (-51).
+Notation p13 := (BND _ap i7). (* BND(ap, [-10.988, 10.988]) *)
+Definition f13 := Float2 (-49485700114172843) (-52).
+Definition f14 := Float2 (49485700114172843) (-52).
 Definition i8 := makepairF f13 f14.
-Notation p14 := (BND _ap_ideal i8). (* BND(ap_ideal, [-6.91382, 6.91382]) *)
+Notation p14 := (BND _ap_ideal i8). (* BND(ap_ideal, [-10.988, 10.988]) *)
 Definition f15 := Float2 (1) (-1).
 Definition f16 := Float2 (8896305638502983) (-53).
 Definition i9 := makepairF f15 f16.
@@ -3092,7 +3092,7 @@ Proof.
  assert (h1 := h0).
  exact (proj1 h1).
 Qed.
-Lemma l15 : s1 -> p1 (* BND(p, [-7, 7]) *).
+Lemma l15 : s1 -> p1 (* BND(p, [-11.125, 11.125]) *).
 Proof.
  intros h0.
  assert (h1 := l16 h0).
@@ -3103,7 +3103,7 @@ Proof.
  intros h0 h1.
  refine (mul_po _delta _p i9 i1 i8 h0 h1 _) ; finalize.
 Qed.
-Lemma l13 : s1 -> p14 (* BND(ap_ideal, [-6.91382, 6.91382]) *).
+Lemma l13 : s1 -> p14 (* BND(ap_ideal, [-10.988, 10.988]) *).
 Proof.
  intros h0.
  assert (h1 := l14 h0).
@@ -3115,7 +3115,7 @@ Proof.
  intros h0.
  refine (float_round_ne _ _ _ap_ideal i8 i7 h0 _) ; finalize.
 Qed.
-Lemma l12 : s1 -> p13 (* BND(ap, [-6.91382, 6.91382]) *).
+Lemma l12 : s1 -> p13 (* BND(ap, [-10.988, 10.988]) *).
 Proof.
  intros h0.
  assert (h1 := l13 h0).
@@ -3126,7 +3126,7 @@ Proof.
  intros h0.
  refine (abs_of_bnd_o _ap i7 i6 h0 _) ; finalize.
 Qed.
-Lemma l11 : s1 -> p12 (* ABS(ap, [0, 6.91382]) *).
+Lemma l11 : s1 -> p12 (* ABS(ap, [0, 10.988]) *).
 Proof.
  intros h0.
  assert (h1 := l12 h0).
@@ -3137,7 +3137,7 @@ Proof.
  intros h0.
  refine (uabs_of_abs _ap i6 h0) ; finalize.
 Qed.
-Lemma l10 : s1 -> p11 (* BND(|ap|, [0, 6.91382]) *).
+Lemma l10 : s1 -> p11 (* BND(|ap|, [0, 10.988]) *).
 Proof.
  intros h0.
  assert (h1 := l11 h0).
@@ -3150,15 +3150,15 @@ Proof.
  assert (h2 := l10 h0).
  refine (simplify (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Tatom false (Abnd 3%nat i5))) (Tatom false (Abnd 4%nat i5))) (Tatom false (Abnd 5%nat i5))) (Tatom false (Abnd 6%nat i5))) (Tatom false (Abnd 7%nat i5))) (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 3%nat i5))) (Tatom false (Abnd 4%nat i5))) (Tatom false (Abnd 5%nat i5))) (Tatom false (Abnd 6%nat i5))) (Tatom false (Abnd 7%nat i5))) (Abnd 2%nat i6) (List.cons r1 (List.cons r27 (List.cons r58 (List.cons r59 (List.cons r60 (List.cons r61 (List.cons r62 (List.cons r63 List.nil)))))))) h2 h1 _) ; finalize.
 Qed.
-Definition f17 := Float2 (625521490207241) (-49).
+Definition f17 := Float2 (8340286536096547) (-52).
 Definition i10 := makepairF f9 f17.
-Notation p16 := (BND r62 i10). (* BND(|dq|, [0, 1.11115]) *)
-Notation p17 := (ABS _dq i10). (* ABS(dq, [0, 1.11115]) *)
-Definition f18 := Float2 (-625521490207241) (-49).
+Notation p16 := (BND r62 i10). (* BND(|dq|, [0, 1.85192]) *)
+Notation p17 := (ABS _dq i10). (* ABS(dq, [0, 1.85192]) *)
+Definition f18 := Float2 (-8340286536096547) (-52).
 Definition i11 := makepairF f18 f17.
-Notation p18 := (BND _dq i11). (* BND(dq, [-1.11115, 1.11115]) *)
-Notation p19 := (BND _dq_ideal i11). (* BND(dq_ideal, [-1.11115, 1.11115]) *)
-Lemma l21 : s1 -> p2 (* BND(q, [-1.125, 1.125]) *).
+Notation p18 := (BND _dq i11). (* BND(dq, [-1.85192, 1.85192]) *)
+Notation p19 := (BND _dq_ideal i11). (* BND(dq_ideal, [-1.85192, 1.85192]) *)
+Lemma l21 : s1 -> p2 (* BND(q, [-1.875, 1.875]) *).
 Proof.
  intros h0.
  assert (h1 := l16 h0).
@@ -3169,7 +3169,7 @@ Proof.
  intros h0 h1.
  refine (mul_po _delta _q i9 i2 i11 h0 h1 _) ; finalize.
 Qed.
-Lemma l20 : s1 -> p19 (* BND(dq_ideal, [-1.11115, 1.11115]) *).
+Lemma l20 : s1 -> p19 (* BND(dq_ideal, [-1.85192, 1.85192]) *).
 Proof.
  intros h0.
  assert (h1 := l14 h0).
@@ -3181,7 +3181,7 @@ Proof.
  intros h0.
  refine (float_round_ne _ _ _dq_ideal i11 i11 h0 _) ; finalize.
 Qed.
-Lemma l19 : s1 -> p18 (* BND(dq, [-1.11115, 1.11115]) *).
+Lemma l19 : s1 -> p18 (* BND(dq, [-1.85192, 1.85192]) *).
 Proof.
  intros h0.
  assert (h1 := l20 h0).
@@ -3192,7 +3192,7 @@ Proof.
  intros h0.
  refine (abs_of_bnd_o _dq i11 i10 h0 _) ; finalize.
 Qed.
-Lemma l18 : s1 -> p17 (* ABS(dq, [0, 1.11115]) *).
+Lemma l18 : s1 -> p17 (* ABS(dq, [0, 1.85192]) *).
 Proof.
  intros h0.
  assert (h1 := l19 h0).
@@ -3203,7 +3203,7 @@ Proof.
  intros h0.
  refine (uabs_of_abs _dq i10 h0) ; finalize.
 Qed.
-Lemma l17 : s1 -> p16 (* BND(|dq|, [0, 1.11115]) *).
+Lemma l17 : s1 -> p16 (* BND(|dq|, [0, 1.85192]) *).
 Proof.
  intros h0.
  assert (h1 := l18 h0).
@@ -3216,14 +3216,14 @@ Proof.
  assert (h2 := l17 h0).
  refine (simplify (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Tatom false (Abnd 3%nat i5))) (Tatom false (Abnd 4%nat i5))) (Tatom false (Abnd 5%nat i5))) (Tatom false (Abnd 6%nat i5))) (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Tatom false (Abnd 3%nat i5))) (Tatom false (Abnd 4%nat i5))) (Tatom false (Abnd 6%nat i5))) (Abnd 5%nat i10) (List.cons r1 (List.cons r27 (List.cons r59 (List.cons r60 (List.cons r61 (List.cons r62 (List.cons r63 List.nil))))))) h2 h1 _) ; finalize.
 Qed.
-Definition f19 := Float2 (4979952017058429) (-52).
+Definition f19 := Float2 (8299920028430715) (-52).
 Definition i12 := makepairF f9 f19.
-Notation p20 := (BND r59 i12). (* BND(|bq|, [0, 1.10577]) *)
-Notation p21 := (ABS _bq i12). (* ABS(bq, [0, 1.10577]) *)
-Definition f20 := Float2 (-4979952017058429) (-52).
+Notation p20 := (BND r59 i12). (* BND(|bq|, [0, 1.84295]) *)
+Notation p21 := (ABS _bq i12). (* ABS(bq, [0, 1.84295]) *)
+Definition f20 := Float2 (-8299920028430715) (-52).
 Definition i13 := makepairF f20 f19.
-Notation p22 := (BND _bq i13). (* BND(bq, [-1.10577, 1.10577]) *)
-Notation p23 := (BND _bq_ideal i13). (* BND(bq_ideal, [-1.10577, 1.10577]) *)
+Notation p22 := (BND _bq i13). (* BND(bq, [-1.84295, 1.84295]) *)
+Notation p23 := (BND _bq_ideal i13). (* BND(bq_ideal, [-1.84295, 1.84295]) *)
 Definition f21 := Float2 (-553328001895381) (-49).
 Definition f22 := Float2 (-1) (-1).
 Definition i14 := makepairF f21 f22.
@@ -3242,7 +3242,7 @@ Proof.
  intros h0 h1.
  refine (mul_no _beta _q i14 i2 i13 h0 h1 _) ; finalize.
 Qed.
-Lemma l25 : s1 -> p23 (* BND(bq_ideal, [-1.10577, 1.10577]) *).
+Lemma l25 : s1 -> p23 (* BND(bq_ideal, [-1.84295, 1.84295]) *).
 Proof.
  intros h0.
  assert (h1 := l26 h0).
@@ -3254,7 +3254,7 @@ Proof.
  intros h0.
  refine (float_round_ne _ _ _bq_ideal i13 i13 h0 _) ; finalize.
 Qed.
-Lemma l24 : s1 -> p22 (* BND(bq, [-1.10577, 1.10577]) *).
+Lemma l24 : s1 -> p22 (* BND(bq, [-1.84295, 1.84295]) *).
 Proof.
  intros h0.
  assert (h1 := l25 h0).
@@ -3265,7 +3265,7 @@ Proof.
  intros h0.
  refine (abs_of_bnd_o _bq i13 i12 h0 _) ; finalize.
 Qed.
-Lemma l23 : s1 -> p21 (* ABS(bq, [0, 1.10577]) *).
+Lemma l23 : s1 -> p21 (* ABS(bq, [0, 1.84295]) *).
 Proof.
  intros h0.
  assert (h1 := l24 h0).
@@ -3276,7 +3276,7 @@ Proof.
  intros h0.
  refine (uabs_of_abs _bq i12 h0) ; finalize.
 Qed.
-Lemma l22 : s1 -> p20 (* BND(|bq|, [0, 1.10577]) *).
+Lemma l22 : s1 -> p20 (* BND(|bq|, [0, 1.84295]) *).
 Proof.
  intros h0.
  assert (h1 := l23 h0).
@@ -3289,14 +3289,14 @@ Proof.
  assert (h2 := l22 h0).
  refine (simplify (Ttree false (Ttree false (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Tatom false (Abnd 3%nat i5))) (Tatom false (Abnd 4%nat i5))) (Tatom false (Abnd 5%nat i5))) (Ttree false (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 3%nat i5))) (Tatom false (Abnd 4%nat i5))) (Tatom false (Abnd 5%nat i5))) (Abnd 2%nat i12) (List.cons r1 (List.cons r27 (List.cons r59 (List.cons r60 (List.cons r61 (List.cons r63 List.nil)))))) h2 h1 _) ; finalize.
 Qed.
-Definition f23 := Float2 (6279137671969207) (-55).
+Definition f23 := Float2 (4989671900046959) (-54).
 Definition i15 := makepairF f9 f23.
-Notation p25 := (BND r61 i15). (* BND(|gp|, [0, 0.174281]) *)
-Notation p26 := (ABS _gp i15). (* ABS(gp, [0, 0.174281]) *)
-Definition f24 := Float2 (-6279137671969207) (-55).
+Notation p25 := (BND r61 i15). (* BND(|gp|, [0, 0.276982]) *)
+Notation p26 := (ABS _gp i15). (* ABS(gp, [0, 0.276982]) *)
+Definition f24 := Float2 (-4989671900046959) (-54).
 Definition i16 := makepairF f24 f23.
-Notation p27 := (BND _gp i16). (* BND(gp, [-0.174281, 0.174281]) *)
-Notation p28 := (BND _gp_ideal i16). (* BND(gp_ideal, [-0.174281, 0.174281]) *)
+Notation p27 := (BND _gp i16). (* BND(gp, [-0.276982, 0.276982]) *)
+Notation p28 := (BND _gp_ideal i16). (* BND(gp_ideal, [-0.276982, 0.276982]) *)
 Definition f25 := Float2 (1) (-6).
 Definition f26 := Float2 (7176157339393379) (-58).
 Definition i17 := makepairF f25 f26.
@@ -3315,7 +3315,7 @@ Proof.
  intros h0 h1.
  refine (mul_po _gamma _p i17 i1 i16 h0 h1 _) ; finalize.
 Qed.
-Lemma l30 : s1 -> p28 (* BND(gp_ideal, [-0.174281, 0.174281]) *).
+Lemma l30 : s1 -> p28 (* BND(gp_ideal, [-0.276982, 0.276982]) *).
 Proof.
  intros h0.
  assert (h1 := l31 h0).
@@ -3327,7 +3327,7 @@ Proof.
  intros h0.
  refine (float_round_ne _ _ _gp_ideal i16 i16 h0 _) ; finalize.
 Qed.
-Lemma l29 : s1 -> p27 (* BND(gp, [-0.174281, 0.174281]) *).
+Lemma l29 : s1 -> p27 (* BND(gp, [-0.276982, 0.276982]) *).
 Proof.
  intros h0.
  assert (h1 := l30 h0).
@@ -3338,7 +3338,7 @@ Proof.
  intros h0.
  refine (abs_of_bnd_o _gp i16 i15 h0 _) ; finalize.
 Qed.
-Lemma l28 : s1 -> p26 (* ABS(gp, [0, 0.174281]) *).
+Lemma l28 : s1 -> p26 (* ABS(gp, [0, 0.276982]) *).
 Proof.
  intros h0.
  assert (h1 := l29 h0).
@@ -3349,7 +3349,7 @@ Proof.
  intros h0.
  refine (uabs_of_abs _gp i15 h0) ; finalize.
 Qed.
-Lemma l27 : s1 -> p25 (* BND(|gp|, [0, 0.174281]) *).
+Lemma l27 : s1 -> p25 (* BND(|gp|, [0, 0.276982]) *).
 Proof.
  intros h0.
  assert (h1 := l28 h0).
@@ -3362,47 +3362,50 @@ Proof.
  assert (h2 := l27 h0).
  refine (simplify (Ttree false (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Tatom false (Abnd 3%nat i5))) (Tatom false (Abnd 4%nat i5))) (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Tatom false (Abnd 4%nat i5))) (Abnd 3%nat i15) (List.cons r1 (List.cons r27 (List.cons r60 (List.cons r61 (List.cons r63 List.nil))))) h2 h1 _) ; finalize.
 Qed.
-Definition f27 := Float2 (4514627718977359) (-49).
+Definition f27 := Float2 (1805800629456361) (-47).
 Definition i18 := makepairF f9 f27.
-Notation p30 := (BND r60 i18). (* BND(|p1|, [0, 8.01959]) *)
-Notation p31 := (ABS _p1 i18). (* ABS(p1, [0, 8.01959]) *)
-Definition f28 := Float2 (-4514627718977359) (-49).
+Notation p30 := (BND r60 i18). (* BND(|p1|, [0, 12.831]) *)
+Notation p31 := (ABS _p1 i18). (* ABS(p1, [0, 12.831]) *)
+Definition f28 := Float2 (-1805800629456361) (-47).
 Definition i19 := makepairF f28 f27.
-Notation p32 := (BND _p1 i19). (* BND(p1, [-8.01959, 8.01959]) *)
-Definition f29 := Float2 (-36117021751818869) (-52).
-Definition f30 := Float2 (36117021751818869) (-52).
+Notation p32 := (BND _p1 i19). (* BND(p1, [-12.831, 12.831]) *)
+Definition f29 := Float2 (-14446405035650889) (-50).
+Definition f30 := Float2 (14446405035650889) (-50).
 Definition i20 := makepairF f29 f30.
-Notation p33 := (BND r3 i20). (* BND(ap + bq, [-8.01959, 8.01959]) *)
-Lemma t20 : p13 -> p22 -> p33.
+Notation p33 := (BND r3 i20). (* BND(ap + bq, [-12.831, 12.831]) *)
+Definition f31 := Float2 (-2074980007107679) (-50).
+Definition f32 := Float2 (2074980007107679) (-50).
+Definition i21 := makepairF f31 f32.
+Notation p34 := (BND _bq i21). (* BND(bq, [-1.84295, 1.84295]) *)
+Lemma t20 : p13 -> p34 -> p33.
 Proof.
  intros h0 h1.
- refine (add _ap _bq i7 i13 i20 h0 h1 _) ; finalize.
+ refine (add _ap _bq i7 i21 i20 h0 h1 _) ; finalize.
 Qed.
-Lemma l35 : s1 -> p33 (* BND(ap + bq, [-8.01959, 8.01959]) *).
+Lemma l35 : s1 -> p33 (* BND(ap + bq, [-12.831, 12.831]) *).
 Proof.
  intros h0.
  assert (h1 := l12 h0).
  assert (h2 := l24 h0).
- apply t20. exact h1. exact h2.
+ apply t20. exact h1. refine (subset _bq i13 i21 h2 _) ; finalize.
 Qed.
-Notation p34 := (BND r3 i19). (* BND(ap + bq, [-8.01959, 8.01959]) *)
-Lemma t21 : p34 -> p32.
+Lemma t21 : p33 -> p32.
 Proof.
  intros h0.
- refine (float_round_ne _ _ r3 i19 i19 h0 _) ; finalize.
+ refine (float_round_ne _ _ r3 i20 i19 h0 _) ; finalize.
 Qed.
-Lemma l34 : s1 -> p32 (* BND(p1, [-8.01959, 8.01959]) *).
+Lemma l34 : s1 -> p32 (* BND(p1, [-12.831, 12.831]) *).
 Proof.
  intros h0.
  assert (h1 := l35 h0).
- apply t21. refine (subset r3 i20 i19 h1 _) ; finalize.
+ apply t21. exact h1.
 Qed.
 Lemma t22 : p32 -> p31.
 Proof.
  intros h0.
  refine (abs_of_bnd_o _p1 i19 i18 h0 _) ; finalize.
 Qed.
-Lemma l33 : s1 -> p31 (* ABS(p1, [0, 8.01959]) *).
+Lemma l33 : s1 -> p31 (* ABS(p1, [0, 12.831]) *).
 Proof.
  intros h0.
  assert (h1 := l34 h0).
@@ -3413,7 +3416,7 @@ Proof.
  intros h0.
  refine (uabs_of_abs _p1 i18 h0) ; finalize.
 Qed.
-Lemma l32 : s1 -> p30 (* BND(|p1|, [0, 8.01959]) *).
+Lemma l32 : s1 -> p30 (* BND(|p1|, [0, 12.831]) *).
 Proof.
  intros h0.
  assert (h1 := l33 h0).
@@ -3426,36 +3429,35 @@ Proof.
  assert (h2 := l32 h0).
  refine (simplify (Ttree false (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Tatom false (Abnd 3%nat i5))) (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 3%nat i5))) (Abnd 2%nat i18) (List.cons r1 (List.cons r27 (List.cons r60 (List.cons r63 List.nil)))) h2 h1 _) ; finalize.
 Qed.
-Definition f31 := Float2 (5789064130654079) (-52).
-Definition i21 := makepairF f9 f31.
-Notation p35 := (BND r63 i21). (* BND(|q1|, [0, 1.28543]) *)
-Notation p36 := (ABS _q1 i21). (* ABS(q1, [0, 1.28543]) *)
-Definition f32 := Float2 (-5789064130654079) (-52).
-Definition i22 := makepairF f32 f31.
-Notation p37 := (BND _q1 i22). (* BND(q1, [-1.28543, 1.28543]) *)
-Notation p38 := (BND r29 i22). (* BND(gp + dq, [-1.28543, 1.28543]) *)
-Definition f33 := Float2 (-784892208996151) (-52).
-Definition f34 := Float2 (784892208996151) (-52).
-Definition i23 := makepairF f33 f34.
-Notation p39 := (BND _gp i23). (* BND(gp, [-0.174281, 0.174281]) *)
-Lemma t24 : p39 -> p18 -> p38.
+Definition f33 := Float2 (4793852255554143) (-51).
+Definition i22 := makepairF f9 f33.
+Notation p35 := (BND r63 i22). (* BND(|q1|, [0, 2.1289]) *)
+Notation p36 := (ABS _q1 i22). (* ABS(q1, [0, 2.1289]) *)
+Definition f34 := Float2 (-4793852255554143) (-51).
+Definition i23 := makepairF f34 f33.
+Notation p37 := (BND _q1 i23). (* BND(q1, [-2.1289, 2.1289]) *)
+Definition f35 := Float2 (-38350818044433147) (-54).
+Definition f36 := Float2 (38350818044433147) (-54).
+Definition i24 := makepairF f35 f36.
+Notation p38 := (BND r29 i24). (* BND(gp + dq, [-2.1289, 2.1289]) *)
+Lemma t24 : p27 -> p18 -> p38.
 Proof.
  intros h0 h1.
- refine (add _gp _dq i23 i11 i22 h0 h1 _) ; finalize.
+ refine (add _gp _dq i16 i11 i24 h0 h1 _) ; finalize.
 Qed.
-Lemma l39 : s1 -> p38 (* BND(gp + dq, [-1.28543, 1.28543]) *).
+Lemma l39 : s1 -> p38 (* BND(gp + dq, [-2.1289, 2.1289]) *).
 Proof.
  intros h0.
  assert (h1 := l29 h0).
  assert (h2 := l19 h0).
- apply t24. refine (subset _gp i16 i23 h1 _) ; finalize. exact h2.
+ apply t24. exact h1. exact h2.
 Qed.
 Lemma t25 : p38 -> p37.
 Proof.
  intros h0.
- refine (float_round_ne _ _ r29 i22 i22 h0 _) ; finalize.
+ refine (float_round_ne _ _ r29 i24 i23 h0 _) ; finalize.
 Qed.
-Lemma l38 : s1 -> p37 (* BND(q1, [-1.28543, 1.28543]) *).
+Lemma l38 : s1 -> p37 (* BND(q1, [-2.1289, 2.1289]) *).
 Proof.
  intros h0.
  assert (h1 := l39 h0).
@@ -3464,9 +3466,9 @@ Qed.
 Lemma t26 : p37 -> p36.
 Proof.
  intros h0.
- refine (abs_of_bnd_o _q1 i22 i21 h0 _) ; finalize.
+ refine (abs_of_bnd_o _q1 i23 i22 h0 _) ; finalize.
 Qed.
-Lemma l37 : s1 -> p36 (* ABS(q1, [0, 1.28543]) *).
+Lemma l37 : s1 -> p36 (* ABS(q1, [0, 2.1289]) *).
 Proof.
  intros h0.
  assert (h1 := l38 h0).
@@ -3475,9 +3477,9 @@ Qed.
 Lemma t27 : p36 -> p35.
 Proof.
  intros h0.
- refine (uabs_of_abs _q1 i21 h0) ; finalize.
+ refine (uabs_of_abs _q1 i22 h0) ; finalize.
 Qed.
-Lemma l36 : s1 -> p35 (* BND(|q1|, [0, 1.28543]) *).
+Lemma l36 : s1 -> p35 (* BND(|q1|, [0, 2.1289]) *).
 Proof.
  intros h0.
  assert (h1 := l37 h0).
@@ -3488,490 +3490,451 @@ Proof.
  intros h0.
  assert (h1 := l4 h0).
  assert (h2 := l36 h0).
- refine (simplify (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Abnd 2%nat i21) (List.cons r1 (List.cons r27 (List.cons r63 List.nil))) h2 h1 _) ; finalize.
+ refine (simplify (Ttree false (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 2%nat i5))) (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Abnd 2%nat i22) (List.cons r1 (List.cons r27 (List.cons r63 List.nil))) h2 h1 _) ; finalize.
 Qed.
-Notation p40 := (BND r23 i3). (* BND(p1 - p1_ideal + (p1_ideal - p_exact), [-1.83289e-15, 1.83289e-15]) *)
-Definition f35 := Float2 (-58635019888671349) (-105).
-Definition f36 := Float2 (58635019888671349) (-105).
-Definition i24 := makepairF f35 f36.
-Notation p41 := (BND r24 i24). (* BND(p1 - p1_ideal, [-1.44546e-15, 1.44546e-15]) *)
+Notation p39 := (BND r23 i3). (* BND(p1 - p1_ideal + (p1_ideal - p_exact), [-2.50742e-15, 2.50742e-15]) *)
+Definition f37 := Float2 (-17) (-53).
+Definition f38 := Float2 (17) (-53).
+Definition i25 := makepairF f37 f38.
+Notation p40 := (BND r24 i25). (* BND(p1 - p1_ideal, [-1.88738e-15, 1.88738e-15]) *)
 Notation r65 := ((_p1 - r3)%R).
 Notation r66 := ((r3 - _p1_ideal)%R).
 Notation r64 := ((r65 + r66)%R).
-Notation p42 := (BND r64 i24). (* BND(p1 - (ap + bq) + (ap + bq - p1_ideal), [-1.44546e-15, 1.44546e-15]) *)
-Definition f37 := Float2 (-36117021751818869) (-105).
-Definition f38 := Float2 (36117021751818869) (-105).
-Definition i25 := makepairF f37 f38.
-Notation p43 := (BND r65 i25). (* BND(p1 - (ap + bq), [-8.90353e-16, 8.90353e-16]) *)
-Definition f39 := Float2 (-1) (-53).
-Definition f40 := Float2 (1) (-53).
+Notation p41 := (BND r64 i25). (* BND(p1 - (ap + bq) + (ap + bq - p1_ideal), [-1.88738e-15, 1.88738e-15]) *)
+Definition f39 := Float2 (-1) (-50).
+Definition f40 := Float2 (1) (-50).
 Definition i26 := makepairF f39 f40.
-Notation p44 := (REL _p1 r3 i26). (* REL(p1, ap + bq, [-1.11022e-16, 1.11022e-16]) *)
-Notation p45 := (FIX r3 (-1074)). (* FIX(ap + bq, -1074) *)
-Notation p46 := (FIX _ap (-1074)). (* FIX(ap, -1074) *)
-Lemma t28 : p46.
-Proof.
- refine (fix_of_float _ _ _ _ (-1074) _) ; finalize.
-Qed.
-Lemma l47 : s1 -> p46 (* FIX(ap, -1074) *).
-Proof.
- intros h0.
- apply t28.
-Qed.
-Notation p47 := (FIX _bq (-1074)). (* FIX(bq, -1074) *)
-Lemma t29 : p47.
-Proof.
- refine (fix_of_float _ _ _ _ (-1074) _) ; finalize.
-Qed.
-Lemma l48 : s1 -> p47 (* FIX(bq, -1074) *).
+Notation p42 := (BND r65 i26). (* BND(p1 - (ap + bq), [-8.88178e-16, 8.88178e-16]) *)
+Definition f41 := Float2 (1) (4).
+Definition i27 := makepairF f9 f41.
+Notation p43 := (ABS r3 i27). (* ABS(ap + bq, [0, 16]) *)
+Definition f42 := Float2 (-1) (4).
+Definition i28 := makepairF f42 f41.
+Notation p44 := (BND r3 i28). (* BND(ap + bq, [-16, 16]) *)
+Lemma t28 : p44 -> p43.
 Proof.
  intros h0.
- apply t29.
+ refine (abs_of_bnd_o r3 i28 i27 h0 _) ; finalize.
 Qed.
-Lemma t30 : p46 -> p47 -> p45.
-Proof.
- intros h0 h1.
- refine (add_fix _ap _bq (-1074) (-1074) (-1074) h0 h1 _) ; finalize.
-Qed.
-Lemma l46 : s1 -> p45 (* FIX(ap + bq, -1074) *).
+Lemma l45 : s1 -> p43 (* ABS(ap + bq, [0, 16]) *).
 Proof.
  intros h0.
- assert (h1 := l47 h0).
- assert (h2 := l48 h0).
- apply t30. exact h1. exact h2.
+ assert (h1 := l35 h0).
+ apply t28. refine (subset r3 i20 i28 h1 _) ; finalize.
 Qed.
-Lemma t31 : p45 -> p44.
+Lemma t29 : p43 -> p42.
 Proof.
  intros h0.
- refine (rel_of_fix_float_ne _ _ (-1074) r3 i26 h0 _) ; finalize.
+ refine (float_absolute_wide_ne _ _ r3 i27 i26 h0 _) ; finalize.
 Qed.
-Lemma l45 : s1 -> p44 (* REL(p1, ap + bq, [-1.11022e-16, 1.11022e-16]) *).
-Proof.
- intros h0.
- assert (h1 := l46 h0).
- apply t31. exact h1.
-Qed.
-Lemma t32 : p44 -> p33 -> p43.
-Proof.
- intros h0 h1.
- refine (error_of_rel_oo _p1 r3 i26 i20 i25 h0 h1 _) ; finalize.
-Qed.
-Lemma l44 : s1 -> p43 (* BND(p1 - (ap + bq), [-8.90353e-16, 8.90353e-16]) *).
+Lemma l44 : s1 -> p42 (* BND(p1 - (ap + bq), [-8.88178e-16, 8.88178e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l45 h0).
- assert (h2 := l35 h0).
- apply t32. exact h1. exact h2.
+ apply t29. exact h1.
 Qed.
-Definition f41 := Float2 (-5) (-53).
-Definition f42 := Float2 (5) (-53).
-Definition i27 := makepairF f41 f42.
-Notation p48 := (BND r66 i27). (* BND(ap + bq - p1_ideal, [-5.55112e-16, 5.55112e-16]) *)
+Definition f43 := Float2 (-9) (-53).
+Definition f44 := Float2 (9) (-53).
+Definition i29 := makepairF f43 f44.
+Notation p45 := (BND r66 i29). (* BND(ap + bq - p1_ideal, [-9.99201e-16, 9.99201e-16]) *)
 Notation r68 := ((_ap - _ap_ideal)%R).
 Notation r69 := ((_bq - _bq_ideal)%R).
 Notation r67 := ((r68 + r69)%R).
-Notation p49 := (BND r67 i27). (* BND(ap - ap_ideal + (bq - bq_ideal), [-5.55112e-16, 5.55112e-16]) *)
-Definition f43 := Float2 (-1) (-51).
-Definition f44 := Float2 (1) (-51).
-Definition i28 := makepairF f43 f44.
-Notation p50 := (BND r68 i28). (* BND(ap - ap_ideal, [-4.44089e-16, 4.44089e-16]) *)
-Definition f45 := Float2 (1) (3).
-Definition i29 := makepairF f9 f45.
-Notation p51 := (ABS _ap_ideal i29). (* ABS(ap_ideal, [0, 8]) *)
-Definition f46 := Float2 (1) (0).
-Definition i30 := makepairF f15 f46.
-Notation p52 := (ABS _delta i30). (* ABS(delta, [0.5, 1]) *)
-Notation p53 := (BND _delta i30). (* BND(delta, [0.5, 1]) *)
-Lemma t33 : p53 -> p52.
+Notation p46 := (BND r67 i29). (* BND(ap - ap_ideal + (bq - bq_ideal), [-9.99201e-16, 9.99201e-16]) *)
+Notation p47 := (BND r68 i26). (* BND(ap - ap_ideal, [-8.88178e-16, 8.88178e-16]) *)
+Notation p48 := (ABS _ap_ideal i27). (* ABS(ap_ideal, [0, 16]) *)
+Definition f45 := Float2 (1) (0).
+Definition i30 := makepairF f15 f45.
+Notation p49 := (ABS _delta i30). (* ABS(delta, [0.5, 1]) *)
+Notation p50 := (BND _delta i30). (* BND(delta, [0.5, 1]) *)
+Lemma t30 : p50 -> p49.
 Proof.
  intros h0.
  refine (abs_of_bnd_p _delta i30 i30 h0 _) ; finalize.
 Qed.
-Lemma l53 : s1 -> p52 (* ABS(delta, [0.5, 1]) *).
+Lemma l50 : s1 -> p49 (* ABS(delta, [0.5, 1]) *).
 Proof.
  intros h0.
  assert (h1 := l14 h0).
- apply t33. refine (subset _delta i9 i30 h1 _) ; finalize.
+ apply t30. refine (subset _delta i9 i30 h1 _) ; finalize.
 Qed.
-Notation p54 := (ABS _p i29). (* ABS(p, [0, 8]) *)
-Definition f47 := Float2 (-1) (3).
-Definition i31 := makepairF f47 f45.
-Notation p55 := (BND _p i31). (* BND(p, [-8, 8]) *)
-Lemma t34 : p55 -> p54.
+Notation p51 := (ABS _p i27). (* ABS(p, [0, 16]) *)
+Notation p52 := (BND _p i28). (* BND(p, [-16, 16]) *)
+Lemma t31 : p52 -> p51.
 Proof.
  intros h0.
- refine (abs_of_bnd_o _p i31 i29 h0 _) ; finalize.
+ refine (abs_of_bnd_o _p i28 i27 h0 _) ; finalize.
 Qed.
-Lemma l54 : s1 -> p54 (* ABS(p, [0, 8]) *).
+Lemma l51 : s1 -> p51 (* ABS(p, [0, 16]) *).
 Proof.
  intros h0.
  assert (h1 := l15 h0).
- apply t34. refine (subset _p i1 i31 h1 _) ; finalize.
+ apply t31. refine (subset _p i1 i28 h1 _) ; finalize.
 Qed.
-Lemma t35 : p52 -> p54 -> p51.
+Lemma t32 : p49 -> p51 -> p48.
 Proof.
  intros h0 h1.
- refine (mul_aa _delta _p i30 i29 i29 h0 h1 _) ; finalize.
+ refine (mul_aa _delta _p i30 i27 i27 h0 h1 _) ; finalize.
 Qed.
-Lemma l52 : s1 -> p51 (* ABS(ap_ideal, [0, 8]) *).
+Lemma l49 : s1 -> p48 (* ABS(ap_ideal, [0, 16]) *).
 Proof.
  intros h0.
- assert (h1 := l53 h0).
- assert (h2 := l54 h0).
- apply t35. exact h1. exact h2.
+ assert (h1 := l50 h0).
+ assert (h2 := l51 h0).
+ apply t32. exact h1. exact h2.
 Qed.
-Lemma t36 : p51 -> p50.
+Lemma t33 : p48 -> p47.
 Proof.
  intros h0.
- refine (float_absolute_wide_ne _ _ _ap_ideal i29 i28 h0 _) ; finalize.
+ refine (float_absolute_wide_ne _ _ _ap_ideal i27 i26 h0 _) ; finalize.
 Qed.
-Lemma l51 : s1 -> p50 (* BND(ap - ap_ideal, [-4.44089e-16, 4.44089e-16]) *).
+Lemma l48 : s1 -> p47 (* BND(ap - ap_ideal, [-8.88178e-16, 8.88178e-16]) *).
 Proof.
  intros h0.
- assert (h1 := l52 h0).
- apply t36. exact h1.
+ assert (h1 := l49 h0).
+ apply t33. exact h1.
 Qed.
-Notation p56 := (BND r69 i26). (* BND(bq - bq_ideal, [-1.11022e-16, 1.11022e-16]) *)
+Definition f46 := Float2 (-1) (-53).
+Definition f47 := Float2 (1) (-53).
+Definition i31 := makepairF f46 f47.
+Notation p53 := (BND r69 i31). (* BND(bq - bq_ideal, [-1.11022e-16, 1.11022e-16]) *)
 Definition f48 := Float2 (1) (1).
 Definition i32 := makepairF f9 f48.
-Notation p57 := (ABS _bq_ideal i32). (* ABS(bq_ideal, [0, 2]) *)
-Notation p58 := (ABS _beta i30). (* ABS(beta, [0.5, 1]) *)
+Notation p54 := (ABS _bq_ideal i32). (* ABS(bq_ideal, [0, 2]) *)
+Notation p55 := (ABS _beta i30). (* ABS(beta, [0.5, 1]) *)
 Definition f49 := Float2 (-1) (0).
 Definition i33 := makepairF f49 f22.
-Notation p59 := (BND _beta i33). (* BND(beta, [-1, -0.5]) *)
-Lemma t37 : p59 -> p58.
+Notation p56 := (BND _beta i33). (* BND(beta, [-1, -0.5]) *)
+Lemma t34 : p56 -> p55.
 Proof.
  intros h0.
  refine (abs_of_bnd_n _beta i33 i30 h0 _) ; finalize.
 Qed.
-Lemma l57 : s1 -> p58 (* ABS(beta, [0.5, 1]) *).
+Lemma l54 : s1 -> p55 (* ABS(beta, [0.5, 1]) *).
 Proof.
  intros h0.
  assert (h1 := l26 h0).
- apply t37. refine (subset _beta i14 i33 h1 _) ; finalize.
+ apply t34. refine (subset _beta i14 i33 h1 _) ; finalize.
 Qed.
-Notation p60 := (ABS _q i32). (* ABS(q, [0, 2]) *)
+Notation p57 := (ABS _q i32). (* ABS(q, [0, 2]) *)
 Definition f50 := Float2 (-1) (1).
 Definition i34 := makepairF f50 f48.
-Notation p61 := (BND _q i34). (* BND(q, [-2, 2]) *)
-Lemma t38 : p61 -> p60.
+Notation p58 := (BND _q i34). (* BND(q, [-2, 2]) *)
+Lemma t35 : p58 -> p57.
 Proof.
  intros h0.
  refine (abs_of_bnd_o _q i34 i32 h0 _) ; finalize.
 Qed.
-Lemma l58 : s1 -> p60 (* ABS(q, [0, 2]) *).
+Lemma l55 : s1 -> p57 (* ABS(q, [0, 2]) *).
 Proof.
  intros h0.
  assert (h1 := l21 h0).
- apply t38. refine (subset _q i2 i34 h1 _) ; finalize.
+ apply t35. refine (subset _q i2 i34 h1 _) ; finalize.
 Qed.
-Lemma t39 : p58 -> p60 -> p57.
+Lemma t36 : p55 -> p57 -> p54.
 Proof.
  intros h0 h1.
  refine (mul_aa _beta _q i30 i32 i32 h0 h1 _) ; finalize.
 Qed.
-Lemma l56 : s1 -> p57 (* ABS(bq_ideal, [0, 2]) *).
+Lemma l53 : s1 -> p54 (* ABS(bq_ideal, [0, 2]) *).
 Proof.
  intros h0.
- assert (h1 := l57 h0).
- assert (h2 := l58 h0).
- apply t39. exact h1. exact h2.
-Qed.
-Lemma t40 : p57 -> p56.
-Proof.
- intros h0.
- refine (float_absolute_wide_ne _ _ _bq_ideal i32 i26 h0 _) ; finalize.
-Qed.
-Lemma l55 : s1 -> p56 (* BND(bq - bq_ideal, [-1.11022e-16, 1.11022e-16]) *).
-Proof.
- intros h0.
- assert (h1 := l56 h0).
- apply t40. exact h1.
-Qed.
-Lemma t41 : p50 -> p56 -> p49.
-Proof.
- intros h0 h1.
- refine (add r68 r69 i28 i26 i27 h0 h1 _) ; finalize.
-Qed.
-Lemma l50 : s1 -> p49 (* BND(ap - ap_ideal + (bq - bq_ideal), [-5.55112e-16, 5.55112e-16]) *).
-Proof.
- intros h0.
- assert (h1 := l51 h0).
+ assert (h1 := l54 h0).
  assert (h2 := l55 h0).
- apply t41. exact h1. exact h2.
+ apply t36. exact h1. exact h2.
 Qed.
-Lemma t42 : p49 -> p48.
+Lemma t37 : p54 -> p53.
 Proof.
  intros h0.
- refine (add_mibs _ _ _ _ i27 h0) ; finalize.
+ refine (float_absolute_wide_ne _ _ _bq_ideal i32 i31 h0 _) ; finalize.
 Qed.
-Lemma l49 : s1 -> p48 (* BND(ap + bq - p1_ideal, [-5.55112e-16, 5.55112e-16]) *).
+Lemma l52 : s1 -> p53 (* BND(bq - bq_ideal, [-1.11022e-16, 1.11022e-16]) *).
 Proof.
  intros h0.
- assert (h1 := l50 h0).
- apply t42. exact h1.
+ assert (h1 := l53 h0).
+ apply t37. exact h1.
 Qed.
-Lemma t43 : p43 -> p48 -> p42.
+Lemma t38 : p47 -> p53 -> p46.
 Proof.
  intros h0 h1.
- refine (add r65 r66 i25 i27 i24 h0 h1 _) ; finalize.
+ refine (add r68 r69 i26 i31 i29 h0 h1 _) ; finalize.
 Qed.
-Lemma l43 : s1 -> p42 (* BND(p1 - (ap + bq) + (ap + bq - p1_ideal), [-1.44546e-15, 1.44546e-15]) *).
+Lemma l47 : s1 -> p46 (* BND(ap - ap_ideal + (bq - bq_ideal), [-9.99201e-16, 9.99201e-16]) *).
+Proof.
+ intros h0.
+ assert (h1 := l48 h0).
+ assert (h2 := l52 h0).
+ apply t38. exact h1. exact h2.
+Qed.
+Lemma t39 : p46 -> p45.
+Proof.
+ intros h0.
+ refine (add_mibs _ _ _ _ i29 h0) ; finalize.
+Qed.
+Lemma l46 : s1 -> p45 (* BND(ap + bq - p1_ideal, [-9.99201e-16, 9.99201e-16]) *).
+Proof.
+ intros h0.
+ assert (h1 := l47 h0).
+ apply t39. exact h1.
+Qed.
+Lemma t40 : p42 -> p45 -> p41.
+Proof.
+ intros h0 h1.
+ refine (add r65 r66 i26 i29 i25 h0 h1 _) ; finalize.
+Qed.
+Lemma l43 : s1 -> p41 (* BND(p1 - (ap + bq) + (ap + bq - p1_ideal), [-1.88738e-15, 1.88738e-15]) *).
 Proof.
  intros h0.
  assert (h1 := l44 h0).
- assert (h2 := l49 h0).
- apply t43. exact h1. exact h2.
+ assert (h2 := l46 h0).
+ apply t40. exact h1. exact h2.
 Qed.
-Lemma t44 : p42 -> p41.
+Lemma t41 : p41 -> p40.
 Proof.
  intros h0.
- refine (sub_xals _ _ _ i24 h0) ; finalize.
+ refine (sub_xals _ _ _ i25 h0) ; finalize.
 Qed.
-Lemma l42 : s1 -> p41 (* BND(p1 - p1_ideal, [-1.44546e-15, 1.44546e-15]) *).
+Lemma l42 : s1 -> p40 (* BND(p1 - p1_ideal, [-1.88738e-15, 1.88738e-15]) *).
 Proof.
  intros h0.
  assert (h1 := l43 h0).
- apply t44. exact h1.
+ apply t41. exact h1.
 Qed.
-Definition f51 := Float2 (-125727914567544553) (-108).
-Definition f52 := Float2 (125727914567544553) (-108).
+Definition f51 := Float2 (-201213328329987313) (-108).
+Definition f52 := Float2 (201213328329987313) (-108).
 Definition i35 := makepairF f51 f52.
-Notation p62 := (BND r26 i35). (* BND(p1_ideal - p_exact, [-3.87429e-16, 3.87429e-16]) *)
-Notation p63 := (BND r45 i35). (* BND(-3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * p + 725368870011116500311633037363284098815934157950200991855380254176979494545 / 14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176 * q, [-3.87429e-16, 3.87429e-16]) *)
-Definition f53 := Float2 (-215381064534554795) (-109).
-Definition f54 := Float2 (215381064534554795) (-109).
+Notation p59 := (BND r26 i35). (* BND(p1_ideal - p_exact, [-6.20036e-16, 6.20036e-16]) *)
+Notation p60 := (BND r45 i35). (* BND(-3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * p + 725368870011116500311633037363284098815934157950200991855380254176979494545 / 14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176 * q, [-6.20036e-16, 6.20036e-16]) *)
+Definition f53 := Float2 (-342302048992417441) (-109).
+Definition f54 := Float2 (342302048992417441) (-109).
 Definition i36 := makepairF f53 f54.
-Notation p64 := (BND r46 i36). (* BND(-3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * p, [-3.31847e-16, 3.31847e-16]) *)
+Notation p61 := (BND r46 i36). (* BND(-3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * p, [-5.274e-16, 5.274e-16]) *)
 Definition f55 := Float2 (-492299576078982387) (-113).
 Definition f56 := Float2 (-1) (-55).
 Definition i37 := makepairF f55 f56.
-Notation p65 := (BND r47 i37). (* BND(-3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840, [-4.74067e-17, -2.77556e-17]) *)
+Notation p62 := (BND r47 i37). (* BND(-3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840, [-4.74067e-17, -2.77556e-17]) *)
 Definition f57 := Float2 (-369604275970387067) (93).
 Definition f58 := Float2 (-1) (151).
 Definition i38 := makepairF f57 f58.
-Notation p66 := (BND r48 i38). (* BND(-3660383455318603984232747923630239280051403617, [-3.66038e+45, -2.8545e+45]) *)
-Lemma t45 : p66.
+Notation p63 := (BND r48 i38). (* BND(-3660383455318603984232747923630239280051403617, [-3.66038e+45, -2.8545e+45]) *)
+Lemma t42 : p63.
 Proof.
  refine (constant1 _ i38 _) ; finalize.
 Qed.
-Lemma l63 : s1 -> p66 (* BND(-3660383455318603984232747923630239280051403617, [-3.66038e+45, -2.8545e+45]) *).
+Lemma l60 : s1 -> p63 (* BND(-3660383455318603984232747923630239280051403617, [-3.66038e+45, -2.8545e+45]) *).
 Proof.
  intros h0.
- apply t45.
+ apply t42.
 Qed.
 Definition f59 := Float2 (216395025847299009) (148).
 Definition f60 := Float2 (1) (206).
 Definition i39 := makepairF f59 f60.
-Notation p67 := (BND r18 i39). (* BND(77212325338401015504689204853976229175880009829288981131427840, [7.72123e+61, 1.02844e+62]) *)
-Lemma t46 : p67.
+Notation p64 := (BND r18 i39). (* BND(77212325338401015504689204853976229175880009829288981131427840, [7.72123e+61, 1.02844e+62]) *)
+Lemma t43 : p64.
 Proof.
  refine (constant1 _ i39 _) ; finalize.
 Qed.
-Lemma l64 : s1 -> p67 (* BND(77212325338401015504689204853976229175880009829288981131427840, [7.72123e+61, 1.02844e+62]) *).
+Lemma l61 : s1 -> p64 (* BND(77212325338401015504689204853976229175880009829288981131427840, [7.72123e+61, 1.02844e+62]) *).
 Proof.
  intros h0.
- apply t46.
+ apply t43.
 Qed.
-Lemma t47 : p66 -> p67 -> p65.
+Lemma t44 : p63 -> p64 -> p62.
 Proof.
  intros h0 h1.
  refine (div_np r48 r18 i38 i39 i37 h0 h1 _) ; finalize.
 Qed.
-Lemma l62 : s1 -> p65 (* BND(-3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840, [-4.74067e-17, -2.77556e-17]) *).
+Lemma l59 : s1 -> p62 (* BND(-3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840, [-4.74067e-17, -2.77556e-17]) *).
 Proof.
  intros h0.
- assert (h1 := l63 h0).
- assert (h2 := l64 h0).
- apply t47. exact h1. exact h2.
+ assert (h1 := l60 h0).
+ assert (h2 := l61 h0).
+ apply t44. exact h1. exact h2.
 Qed.
-Definition f61 := Float2 (-123074894019745597) (-111).
-Definition i40 := makepairF f61 f56.
-Notation p68 := (BND r47 i40). (* BND(-3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840, [-4.74067e-17, -2.77556e-17]) *)
-Lemma t48 : p68 -> p1 -> p64.
+Lemma t45 : p62 -> p1 -> p61.
 Proof.
  intros h0 h1.
- refine (mul_no r47 _p i40 i1 i36 h0 h1 _) ; finalize.
+ refine (mul_no r47 _p i37 i1 i36 h0 h1 _) ; finalize.
 Qed.
-Lemma l61 : s1 -> p64 (* BND(-3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * p, [-3.31847e-16, 3.31847e-16]) *).
+Lemma l58 : s1 -> p61 (* BND(-3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * p, [-5.274e-16, 5.274e-16]) *).
 Proof.
  intros h0.
- assert (h1 := l62 h0).
+ assert (h1 := l59 h0).
  assert (h2 := l15 h0).
- apply t48. refine (subset r47 i37 i40 h1 _) ; finalize. exact h2.
+ apply t45. exact h1. exact h2.
 Qed.
-Definition f62 := Float2 (-36074764600534311) (-109).
-Definition f63 := Float2 (36074764600534311) (-109).
-Definition i41 := makepairF f62 f63.
-Notation p69 := (BND r49 i41). (* BND(725368870011116500311633037363284098815934157950200991855380254176979494545 / 14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176 * q, [-5.5582e-17, 5.5582e-17]) *)
-Definition f64 := Float2 (1) (-55).
-Definition f65 := Float2 (513063318763154645) (-113).
-Definition i42 := makepairF f64 f65.
-Notation p70 := (BND r50 i42). (* BND(725368870011116500311633037363284098815934157950200991855380254176979494545 / 14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176, [2.77556e-17, 4.94062e-17]) *)
-Definition f66 := Float2 (1) (248).
-Definition f67 := Float2 (462231711760798775) (190).
-Definition i43 := makepairF f66 f67.
-Notation p71 := (BND r51 i43). (* BND(725368870011116500311633037363284098815934157950200991855380254176979494545, [4.52313e+74, 7.25369e+74]) *)
-Lemma t49 : p71.
+Definition f61 := Float2 (-60124607667557185) (-109).
+Definition f62 := Float2 (60124607667557185) (-109).
+Definition i40 := makepairF f61 f62.
+Notation p65 := (BND r49 i40). (* BND(725368870011116500311633037363284098815934157950200991855380254176979494545 / 14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176 * q, [-9.26366e-17, 9.26366e-17]) *)
+Definition f63 := Float2 (1) (-55).
+Definition f64 := Float2 (513063318763154645) (-113).
+Definition i41 := makepairF f63 f64.
+Notation p66 := (BND r50 i41). (* BND(725368870011116500311633037363284098815934157950200991855380254176979494545 / 14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176, [2.77556e-17, 4.94062e-17]) *)
+Definition f65 := Float2 (1) (248).
+Definition f66 := Float2 (462231711760798775) (190).
+Definition i42 := makepairF f65 f66.
+Notation p67 := (BND r51 i42). (* BND(725368870011116500311633037363284098815934157950200991855380254176979494545, [4.52313e+74, 7.25369e+74]) *)
+Lemma t46 : p67.
+Proof.
+ refine (constant1 _ i42 _) ; finalize.
+Qed.
+Lemma l64 : s1 -> p67 (* BND(725368870011116500311633037363284098815934157950200991855380254176979494545, [4.52313e+74, 7.25369e+74]) *).
+Proof.
+ intros h0.
+ apply t46.
+Qed.
+Definition f67 := Float2 (259674031016758811) (245).
+Definition f68 := Float2 (1) (303).
+Definition i43 := makepairF f67 f68.
+Notation p68 := (BND r22 i43). (* BND(14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176, [1.46817e+91, 1.62963e+91]) *)
+Lemma t47 : p68.
 Proof.
  refine (constant1 _ i43 _) ; finalize.
 Qed.
-Lemma l67 : s1 -> p71 (* BND(725368870011116500311633037363284098815934157950200991855380254176979494545, [4.52313e+74, 7.25369e+74]) *).
+Lemma l65 : s1 -> p68 (* BND(14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176, [1.46817e+91, 1.62963e+91]) *).
 Proof.
  intros h0.
- apply t49.
+ apply t47.
 Qed.
-Definition f68 := Float2 (259674031016758811) (245).
-Definition f69 := Float2 (1) (303).
-Definition i44 := makepairF f68 f69.
-Notation p72 := (BND r22 i44). (* BND(14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176, [1.46817e+91, 1.62963e+91]) *)
-Lemma t50 : p72.
-Proof.
- refine (constant1 _ i44 _) ; finalize.
-Qed.
-Lemma l68 : s1 -> p72 (* BND(14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176, [1.46817e+91, 1.62963e+91]) *).
-Proof.
- intros h0.
- apply t50.
-Qed.
-Lemma t51 : p71 -> p72 -> p70.
+Lemma t48 : p67 -> p68 -> p66.
 Proof.
  intros h0 h1.
- refine (div_pp r51 r22 i43 i44 i42 h0 h1 _) ; finalize.
+ refine (div_pp r51 r22 i42 i43 i41 h0 h1 _) ; finalize.
 Qed.
-Lemma l66 : s1 -> p70 (* BND(725368870011116500311633037363284098815934157950200991855380254176979494545 / 14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176, [2.77556e-17, 4.94062e-17]) *).
+Lemma l63 : s1 -> p66 (* BND(725368870011116500311633037363284098815934157950200991855380254176979494545 / 14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176, [2.77556e-17, 4.94062e-17]) *).
+Proof.
+ intros h0.
+ assert (h1 := l64 h0).
+ assert (h2 := l65 h0).
+ apply t48. exact h1. exact h2.
+Qed.
+Lemma t49 : p66 -> p2 -> p65.
+Proof.
+ intros h0 h1.
+ refine (mul_po r50 _q i41 i2 i40 h0 h1 _) ; finalize.
+Qed.
+Lemma l62 : s1 -> p65 (* BND(725368870011116500311633037363284098815934157950200991855380254176979494545 / 14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176 * q, [-9.26366e-17, 9.26366e-17]) *).
+Proof.
+ intros h0.
+ assert (h1 := l63 h0).
+ assert (h2 := l21 h0).
+ apply t49. exact h1. exact h2.
+Qed.
+Lemma t50 : p61 -> p65 -> p60.
+Proof.
+ intros h0 h1.
+ refine (add r46 r49 i36 i40 i35 h0 h1 _) ; finalize.
+Qed.
+Lemma l57 : s1 -> p60 (* BND(-3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * p + 725368870011116500311633037363284098815934157950200991855380254176979494545 / 14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176 * q, [-6.20036e-16, 6.20036e-16]) *).
+Proof.
+ intros h0.
+ assert (h1 := l58 h0).
+ assert (h2 := l62 h0).
+ apply t50. exact h1. exact h2.
+Qed.
+Definition i44 := makepairF f9 f9.
+Notation p69 := (REL r26 r45 i44). (* REL(p1_ideal - p_exact, -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * p + 725368870011116500311633037363284098815934157950200991855380254176979494545 / 14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176 * q, [0, 0]) *)
+Notation p70 := (r26 = r45). (* EQL(p1_ideal - p_exact, -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * p + 725368870011116500311633037363284098815934157950200991855380254176979494545 / 14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176 * q) *)
+Lemma t51 : p70.
+Proof.
+ refine (b3) ; finalize.
+Qed.
+Lemma l67 : s1 -> p70 (* EQL(p1_ideal - p_exact, -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * p + 725368870011116500311633037363284098815934157950200991855380254176979494545 / 14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176 * q) *).
+Proof.
+ intros h0.
+ apply t51.
+Qed.
+Notation p71 := (REL r45 r45 i44). (* REL(-3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * p + 725368870011116500311633037363284098815934157950200991855380254176979494545 / 14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176 * q, -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * p + 725368870011116500311633037363284098815934157950200991855380254176979494545 / 14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176 * q, [0, 0]) *)
+Lemma t52 : p71.
+Proof.
+ refine (rel_refl r45 i44 _) ; finalize.
+Qed.
+Lemma l68 : s1 -> p71 (* REL(-3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * p + 725368870011116500311633037363284098815934157950200991855380254176979494545 / 14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176 * q, -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * p + 725368870011116500311633037363284098815934157950200991855380254176979494545 / 14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176 * q, [0, 0]) *).
+Proof.
+ intros h0.
+ apply t52.
+Qed.
+Lemma t53 : p70 -> p71 -> p69.
+Proof.
+ intros h0 h1.
+ refine (rel_rewrite_1 r26 r45 r45 i44 h0 h1) ; finalize.
+Qed.
+Lemma l66 : s1 -> p69 (* REL(p1_ideal - p_exact, -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * p + 725368870011116500311633037363284098815934157950200991855380254176979494545 / 14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176 * q, [0, 0]) *).
 Proof.
  intros h0.
  assert (h1 := l67 h0).
  assert (h2 := l68 h0).
- apply t51. exact h1. exact h2.
-Qed.
-Lemma t52 : p70 -> p2 -> p69.
-Proof.
- intros h0 h1.
- refine (mul_po r50 _q i42 i2 i41 h0 h1 _) ; finalize.
-Qed.
-Lemma l65 : s1 -> p69 (* BND(725368870011116500311633037363284098815934157950200991855380254176979494545 / 14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176 * q, [-5.5582e-17, 5.5582e-17]) *).
-Proof.
- intros h0.
- assert (h1 := l66 h0).
- assert (h2 := l21 h0).
- apply t52. exact h1. exact h2.
-Qed.
-Lemma t53 : p64 -> p69 -> p63.
-Proof.
- intros h0 h1.
- refine (add r46 r49 i36 i41 i35 h0 h1 _) ; finalize.
-Qed.
-Lemma l60 : s1 -> p63 (* BND(-3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * p + 725368870011116500311633037363284098815934157950200991855380254176979494545 / 14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176 * q, [-3.87429e-16, 3.87429e-16]) *).
-Proof.
- intros h0.
- assert (h1 := l61 h0).
- assert (h2 := l65 h0).
  apply t53. exact h1. exact h2.
 Qed.
-Definition i45 := makepairF f9 f9.
-Notation p73 := (REL r26 r45 i45). (* REL(p1_ideal - p_exact, -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * p + 725368870011116500311633037363284098815934157950200991855380254176979494545 / 14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176 * q, [0, 0]) *)
-Notation p74 := (r26 = r45). (* EQL(p1_ideal - p_exact, -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * p + 725368870011116500311633037363284098815934157950200991855380254176979494545 / 14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176 * q) *)
-Lemma t54 : p74.
-Proof.
- refine (b3) ; finalize.
-Qed.
-Lemma l70 : s1 -> p74 (* EQL(p1_ideal - p_exact, -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * p + 725368870011116500311633037363284098815934157950200991855380254176979494545 / 14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176 * q) *).
-Proof.
- intros h0.
- apply t54.
-Qed.
-Notation p75 := (REL r45 r45 i45). (* REL(-3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * p + 725368870011116500311633037363284098815934157950200991855380254176979494545 / 14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176 * q, -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * p + 725368870011116500311633037363284098815934157950200991855380254176979494545 / 14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176 * q, [0, 0]) *)
-Lemma t55 : p75.
-Proof.
- refine (rel_refl r45 i45 _) ; finalize.
-Qed.
-Lemma l71 : s1 -> p75 (* REL(-3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * p + 725368870011116500311633037363284098815934157950200991855380254176979494545 / 14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176 * q, -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * p + 725368870011116500311633037363284098815934157950200991855380254176979494545 / 14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176 * q, [0, 0]) *).
-Proof.
- intros h0.
- apply t55.
-Qed.
-Lemma t56 : p74 -> p75 -> p73.
+Lemma t54 : p60 -> p69 -> p59.
 Proof.
  intros h0 h1.
- refine (rel_rewrite_1 r26 r45 r45 i45 h0 h1) ; finalize.
+ refine (bnd_of_bnd_rel_o r26 r45 i35 i44 i35 h0 h1 _) ; finalize.
 Qed.
-Lemma l69 : s1 -> p73 (* REL(p1_ideal - p_exact, -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * p + 725368870011116500311633037363284098815934157950200991855380254176979494545 / 14681737584036205971792085335481670627880553447618287576963763260000045253935184688946610176 * q, [0, 0]) *).
+Lemma l56 : s1 -> p59 (* BND(p1_ideal - p_exact, [-6.20036e-16, 6.20036e-16]) *).
+Proof.
+ intros h0.
+ assert (h1 := l57 h0).
+ assert (h2 := l66 h0).
+ apply t54. exact h1. exact h2.
+Qed.
+Lemma t55 : p40 -> p59 -> p39.
+Proof.
+ intros h0 h1.
+ refine (add r24 r26 i25 i35 i3 h0 h1 _) ; finalize.
+Qed.
+Lemma l41 : s1 -> p39 (* BND(p1 - p1_ideal + (p1_ideal - p_exact), [-2.50742e-15, 2.50742e-15]) *).
+Proof.
+ intros h0.
+ assert (h1 := l42 h0).
+ assert (h2 := l56 h0).
+ apply t55. exact h1. exact h2.
+Qed.
+Notation p72 := (REL r1 r23 i44). (* REL(p1 - p_exact, p1 - p1_ideal + (p1_ideal - p_exact), [0, 0]) *)
+Notation p73 := (r1 = r23). (* EQL(p1 - p_exact, p1 - p1_ideal + (p1_ideal - p_exact)) *)
+Lemma t56 : p73.
+Proof.
+ refine (b1) ; finalize.
+Qed.
+Lemma l70 : s1 -> p73 (* EQL(p1 - p_exact, p1 - p1_ideal + (p1_ideal - p_exact)) *).
+Proof.
+ intros h0.
+ apply t56.
+Qed.
+Notation p74 := (REL r23 r23 i44). (* REL(p1 - p1_ideal + (p1_ideal - p_exact), p1 - p1_ideal + (p1_ideal - p_exact), [0, 0]) *)
+Lemma t57 : p74.
+Proof.
+ refine (rel_refl r23 i44 _) ; finalize.
+Qed.
+Lemma l71 : s1 -> p74 (* REL(p1 - p1_ideal + (p1_ideal - p_exact), p1 - p1_ideal + (p1_ideal - p_exact), [0, 0]) *).
+Proof.
+ intros h0.
+ apply t57.
+Qed.
+Lemma t58 : p73 -> p74 -> p72.
+Proof.
+ intros h0 h1.
+ refine (rel_rewrite_1 r1 r23 r23 i44 h0 h1) ; finalize.
+Qed.
+Lemma l69 : s1 -> p72 (* REL(p1 - p_exact, p1 - p1_ideal + (p1_ideal - p_exact), [0, 0]) *).
 Proof.
  intros h0.
  assert (h1 := l70 h0).
  assert (h2 := l71 h0).
- apply t56. exact h1. exact h2.
-Qed.
-Lemma t57 : p63 -> p73 -> p62.
-Proof.
- intros h0 h1.
- refine (bnd_of_bnd_rel_o r26 r45 i35 i45 i35 h0 h1 _) ; finalize.
-Qed.
-Lemma l59 : s1 -> p62 (* BND(p1_ideal - p_exact, [-3.87429e-16, 3.87429e-16]) *).
-Proof.
- intros h0.
- assert (h1 := l60 h0).
- assert (h2 := l69 h0).
- apply t57. exact h1. exact h2.
-Qed.
-Lemma t58 : p41 -> p62 -> p40.
-Proof.
- intros h0 h1.
- refine (add r24 r26 i24 i35 i3 h0 h1 _) ; finalize.
-Qed.
-Lemma l41 : s1 -> p40 (* BND(p1 - p1_ideal + (p1_ideal - p_exact), [-1.83289e-15, 1.83289e-15]) *).
-Proof.
- intros h0.
- assert (h1 := l42 h0).
- assert (h2 := l59 h0).
  apply t58. exact h1. exact h2.
 Qed.
-Notation p76 := (REL r1 r23 i45). (* REL(p1 - p_exact, p1 - p1_ideal + (p1_ideal - p_exact), [0, 0]) *)
-Notation p77 := (r1 = r23). (* EQL(p1 - p_exact, p1 - p1_ideal + (p1_ideal - p_exact)) *)
-Lemma t59 : p77.
-Proof.
- refine (b1) ; finalize.
-Qed.
-Lemma l73 : s1 -> p77 (* EQL(p1 - p_exact, p1 - p1_ideal + (p1_ideal - p_exact)) *).
-Proof.
- intros h0.
- apply t59.
-Qed.
-Notation p78 := (REL r23 r23 i45). (* REL(p1 - p1_ideal + (p1_ideal - p_exact), p1 - p1_ideal + (p1_ideal - p_exact), [0, 0]) *)
-Lemma t60 : p78.
-Proof.
- refine (rel_refl r23 i45 _) ; finalize.
-Qed.
-Lemma l74 : s1 -> p78 (* REL(p1 - p1_ideal + (p1_ideal - p_exact), p1 - p1_ideal + (p1_ideal - p_exact), [0, 0]) *).
-Proof.
- intros h0.
- apply t60.
-Qed.
-Lemma t61 : p77 -> p78 -> p76.
+Lemma t59 : p39 -> p72 -> p3.
 Proof.
  intros h0 h1.
- refine (rel_rewrite_1 r1 r23 r23 i45 h0 h1) ; finalize.
+ refine (bnd_of_bnd_rel_o r1 r23 i3 i44 i3 h0 h1 _) ; finalize.
 Qed.
-Lemma l72 : s1 -> p76 (* REL(p1 - p_exact, p1 - p1_ideal + (p1_ideal - p_exact), [0, 0]) *).
-Proof.
- intros h0.
- assert (h1 := l73 h0).
- assert (h2 := l74 h0).
- apply t61. exact h1. exact h2.
-Qed.
-Lemma t62 : p40 -> p76 -> p3.
-Proof.
- intros h0 h1.
- refine (bnd_of_bnd_rel_o r1 r23 i3 i45 i3 h0 h1 _) ; finalize.
-Qed.
-Lemma l40 : s1 -> p3 (* BND(p1 - p_exact, [-1.83289e-15, 1.83289e-15]) *).
+Lemma l40 : s1 -> p3 (* BND(p1 - p_exact, [-2.50742e-15, 2.50742e-15]) *).
 Proof.
  intros h0.
  assert (h1 := l41 h0).
- assert (h2 := l72 h0).
- apply t62. exact h1. exact h2.
+ assert (h2 := l69 h0).
+ apply t59. exact h1. exact h2.
 Qed.
 Lemma l2 : s1 -> s11.
 Proof.
@@ -3980,362 +3943,366 @@ Proof.
  assert (h2 := l40 h0).
  refine (simplify (Ttree false (Tatom false (Abnd 0%nat i3)) (Tatom false (Abnd 1%nat i4))) (Tatom false (Abnd 1%nat i4)) (Abnd 0%nat i3) (List.cons r1 (List.cons r27 List.nil)) h2 h1 _) ; finalize.
 Qed.
-Notation p79 := (BND r41 i4). (* BND(q1 - q1_ideal + (q1_ideal - q_exact), [-2.90319e-16, 2.90319e-16]) *)
-Definition f70 := Float2 (-17) (-56).
-Definition f71 := Float2 (17) (-56).
-Definition i46 := makepairF f70 f71.
-Notation p80 := (BND r42 i46). (* BND(q1 - q1_ideal, [-2.35922e-16, 2.35922e-16]) *)
+Notation p75 := (BND r41 i4). (* BND(q1 - q1_ideal + (q1_ideal - q_exact), [-4.51401e-16, 4.51401e-16]) *)
+Definition f69 := Float2 (-13) (-55).
+Definition f70 := Float2 (13) (-55).
+Definition i45 := makepairF f69 f70.
+Notation p76 := (BND r42 i45). (* BND(q1 - q1_ideal, [-3.60822e-16, 3.60822e-16]) *)
 Notation r71 := ((_q1 - r29)%R).
 Notation r72 := ((r29 - _q1_ideal)%R).
 Notation r70 := ((r71 + r72)%R).
-Notation p81 := (BND r70 i46). (* BND(q1 - (gp + dq) + (gp + dq - q1_ideal), [-2.35922e-16, 2.35922e-16]) *)
-Notation p82 := (BND r71 i26). (* BND(q1 - (gp + dq), [-1.11022e-16, 1.11022e-16]) *)
-Notation p83 := (ABS r29 i32). (* ABS(gp + dq, [0, 2]) *)
-Notation p84 := (BND r29 i34). (* BND(gp + dq, [-2, 2]) *)
-Lemma t63 : p84 -> p83.
+Notation p77 := (BND r70 i45). (* BND(q1 - (gp + dq) + (gp + dq - q1_ideal), [-3.60822e-16, 3.60822e-16]) *)
+Definition f71 := Float2 (-1) (-52).
+Definition f72 := Float2 (1) (-52).
+Definition i46 := makepairF f71 f72.
+Notation p78 := (BND r71 i46). (* BND(q1 - (gp + dq), [-2.22045e-16, 2.22045e-16]) *)
+Definition f73 := Float2 (1) (2).
+Definition i47 := makepairF f9 f73.
+Notation p79 := (ABS r29 i47). (* ABS(gp + dq, [0, 4]) *)
+Definition f74 := Float2 (-1) (2).
+Definition i48 := makepairF f74 f73.
+Notation p80 := (BND r29 i48). (* BND(gp + dq, [-4, 4]) *)
+Lemma t60 : p80 -> p79.
 Proof.
  intros h0.
- refine (abs_of_bnd_o r29 i34 i32 h0 _) ; finalize.
+ refine (abs_of_bnd_o r29 i48 i47 h0 _) ; finalize.
 Qed.
-Lemma l80 : s1 -> p83 (* ABS(gp + dq, [0, 2]) *).
+Lemma l77 : s1 -> p79 (* ABS(gp + dq, [0, 4]) *).
 Proof.
  intros h0.
  assert (h1 := l39 h0).
- apply t63. refine (subset r29 i22 i34 h1 _) ; finalize.
+ apply t60. refine (subset r29 i24 i48 h1 _) ; finalize.
 Qed.
-Lemma t64 : p83 -> p82.
+Lemma t61 : p79 -> p78.
 Proof.
  intros h0.
- refine (float_absolute_wide_ne _ _ r29 i32 i26 h0 _) ; finalize.
+ refine (float_absolute_wide_ne _ _ r29 i47 i46 h0 _) ; finalize.
 Qed.
-Lemma l79 : s1 -> p82 (* BND(q1 - (gp + dq), [-1.11022e-16, 1.11022e-16]) *).
+Lemma l76 : s1 -> p78 (* BND(q1 - (gp + dq), [-2.22045e-16, 2.22045e-16]) *).
 Proof.
  intros h0.
- assert (h1 := l80 h0).
- apply t64. exact h1.
+ assert (h1 := l77 h0).
+ apply t61. exact h1.
 Qed.
-Definition f72 := Float2 (-9) (-56).
-Definition f73 := Float2 (9) (-56).
-Definition i47 := makepairF f72 f73.
-Notation p85 := (BND r72 i47). (* BND(gp + dq - q1_ideal, [-1.249e-16, 1.249e-16]) *)
+Definition f75 := Float2 (-5) (-55).
+Definition f76 := Float2 (5) (-55).
+Definition i49 := makepairF f75 f76.
+Notation p81 := (BND r72 i49). (* BND(gp + dq - q1_ideal, [-1.38778e-16, 1.38778e-16]) *)
 Notation r74 := ((_gp - _gp_ideal)%R).
 Notation r75 := ((_dq - _dq_ideal)%R).
 Notation r73 := ((r74 + r75)%R).
-Notation p86 := (BND r73 i47). (* BND(gp - gp_ideal + (dq - dq_ideal), [-1.249e-16, 1.249e-16]) *)
-Definition f74 := Float2 (-1) (-56).
-Definition f75 := Float2 (1) (-56).
-Definition i48 := makepairF f74 f75.
-Notation p87 := (BND r74 i48). (* BND(gp - gp_ideal, [-1.38778e-17, 1.38778e-17]) *)
-Definition f76 := Float2 (1) (-2).
-Definition i49 := makepairF f9 f76.
-Notation p88 := (ABS _gp_ideal i49). (* ABS(gp_ideal, [0, 0.25]) *)
+Notation p82 := (BND r73 i49). (* BND(gp - gp_ideal + (dq - dq_ideal), [-1.38778e-16, 1.38778e-16]) *)
+Definition i50 := makepairF f56 f63.
+Notation p83 := (BND r74 i50). (* BND(gp - gp_ideal, [-2.77556e-17, 2.77556e-17]) *)
+Definition i51 := makepairF f9 f15.
+Notation p84 := (ABS _gp_ideal i51). (* ABS(gp_ideal, [0, 0.5]) *)
 Definition f77 := Float2 (1) (-5).
-Definition i50 := makepairF f25 f77.
-Notation p89 := (ABS _gamma i50). (* ABS(gamma, [0.015625, 0.03125]) *)
-Notation p90 := (BND _gamma i50). (* BND(gamma, [0.015625, 0.03125]) *)
-Lemma t65 : p90 -> p89.
+Definition i52 := makepairF f25 f77.
+Notation p85 := (ABS _gamma i52). (* ABS(gamma, [0.015625, 0.03125]) *)
+Notation p86 := (BND _gamma i52). (* BND(gamma, [0.015625, 0.03125]) *)
+Lemma t62 : p86 -> p85.
 Proof.
  intros h0.
- refine (abs_of_bnd_p _gamma i50 i50 h0 _) ; finalize.
+ refine (abs_of_bnd_p _gamma i52 i52 h0 _) ; finalize.
 Qed.
-Lemma l85 : s1 -> p89 (* ABS(gamma, [0.015625, 0.03125]) *).
+Lemma l82 : s1 -> p85 (* ABS(gamma, [0.015625, 0.03125]) *).
 Proof.
  intros h0.
  assert (h1 := l31 h0).
- apply t65. refine (subset _gamma i17 i50 h1 _) ; finalize.
+ apply t62. refine (subset _gamma i17 i52 h1 _) ; finalize.
 Qed.
-Lemma t66 : p89 -> p54 -> p88.
+Lemma t63 : p85 -> p51 -> p84.
 Proof.
  intros h0 h1.
- refine (mul_aa _gamma _p i50 i29 i49 h0 h1 _) ; finalize.
+ refine (mul_aa _gamma _p i52 i27 i51 h0 h1 _) ; finalize.
 Qed.
-Lemma l84 : s1 -> p88 (* ABS(gp_ideal, [0, 0.25]) *).
+Lemma l81 : s1 -> p84 (* ABS(gp_ideal, [0, 0.5]) *).
 Proof.
  intros h0.
- assert (h1 := l85 h0).
- assert (h2 := l54 h0).
- apply t66. exact h1. exact h2.
+ assert (h1 := l82 h0).
+ assert (h2 := l51 h0).
+ apply t63. exact h1. exact h2.
 Qed.
-Lemma t67 : p88 -> p87.
+Lemma t64 : p84 -> p83.
 Proof.
  intros h0.
- refine (float_absolute_wide_ne _ _ _gp_ideal i49 i48 h0 _) ; finalize.
+ refine (float_absolute_wide_ne _ _ _gp_ideal i51 i50 h0 _) ; finalize.
 Qed.
-Lemma l83 : s1 -> p87 (* BND(gp - gp_ideal, [-1.38778e-17, 1.38778e-17]) *).
+Lemma l80 : s1 -> p83 (* BND(gp - gp_ideal, [-2.77556e-17, 2.77556e-17]) *).
 Proof.
  intros h0.
- assert (h1 := l84 h0).
- apply t67. exact h1.
+ assert (h1 := l81 h0).
+ apply t64. exact h1.
 Qed.
-Notation p91 := (BND r75 i26). (* BND(dq - dq_ideal, [-1.11022e-16, 1.11022e-16]) *)
-Notation p92 := (ABS _dq_ideal i32). (* ABS(dq_ideal, [0, 2]) *)
-Lemma t68 : p52 -> p60 -> p92.
+Notation p87 := (BND r75 i31). (* BND(dq - dq_ideal, [-1.11022e-16, 1.11022e-16]) *)
+Notation p88 := (ABS _dq_ideal i32). (* ABS(dq_ideal, [0, 2]) *)
+Lemma t65 : p49 -> p57 -> p88.
 Proof.
  intros h0 h1.
  refine (mul_aa _delta _q i30 i32 i32 h0 h1 _) ; finalize.
 Qed.
-Lemma l87 : s1 -> p92 (* ABS(dq_ideal, [0, 2]) *).
+Lemma l84 : s1 -> p88 (* ABS(dq_ideal, [0, 2]) *).
 Proof.
  intros h0.
- assert (h1 := l53 h0).
- assert (h2 := l58 h0).
- apply t68. exact h1. exact h2.
+ assert (h1 := l50 h0).
+ assert (h2 := l55 h0).
+ apply t65. exact h1. exact h2.
 Qed.
-Lemma t69 : p92 -> p91.
+Lemma t66 : p88 -> p87.
 Proof.
  intros h0.
- refine (float_absolute_wide_ne _ _ _dq_ideal i32 i26 h0 _) ; finalize.
+ refine (float_absolute_wide_ne _ _ _dq_ideal i32 i31 h0 _) ; finalize.
 Qed.
-Lemma l86 : s1 -> p91 (* BND(dq - dq_ideal, [-1.11022e-16, 1.11022e-16]) *).
+Lemma l83 : s1 -> p87 (* BND(dq - dq_ideal, [-1.11022e-16, 1.11022e-16]) *).
 Proof.
  intros h0.
- assert (h1 := l87 h0).
- apply t69. exact h1.
+ assert (h1 := l84 h0).
+ apply t66. exact h1.
 Qed.
-Lemma t70 : p87 -> p91 -> p86.
+Lemma t67 : p83 -> p87 -> p82.
 Proof.
  intros h0 h1.
- refine (add r74 r75 i48 i26 i47 h0 h1 _) ; finalize.
+ refine (add r74 r75 i50 i31 i49 h0 h1 _) ; finalize.
 Qed.
-Lemma l82 : s1 -> p86 (* BND(gp - gp_ideal + (dq - dq_ideal), [-1.249e-16, 1.249e-16]) *).
+Lemma l79 : s1 -> p82 (* BND(gp - gp_ideal + (dq - dq_ideal), [-1.38778e-16, 1.38778e-16]) *).
 Proof.
  intros h0.
- assert (h1 := l83 h0).
- assert (h2 := l86 h0).
- apply t70. exact h1. exact h2.
+ assert (h1 := l80 h0).
+ assert (h2 := l83 h0).
+ apply t67. exact h1. exact h2.
 Qed.
-Lemma t71 : p86 -> p85.
+Lemma t68 : p82 -> p81.
 Proof.
  intros h0.
- refine (add_mibs _ _ _ _ i47 h0) ; finalize.
+ refine (add_mibs _ _ _ _ i49 h0) ; finalize.
 Qed.
-Lemma l81 : s1 -> p85 (* BND(gp + dq - q1_ideal, [-1.249e-16, 1.249e-16]) *).
-Proof.
- intros h0.
- assert (h1 := l82 h0).
- apply t71. exact h1.
-Qed.
-Lemma t72 : p82 -> p85 -> p81.
-Proof.
- intros h0 h1.
- refine (add r71 r72 i26 i47 i46 h0 h1 _) ; finalize.
-Qed.
-Lemma l78 : s1 -> p81 (* BND(q1 - (gp + dq) + (gp + dq - q1_ideal), [-2.35922e-16, 2.35922e-16]) *).
+Lemma l78 : s1 -> p81 (* BND(gp + dq - q1_ideal, [-1.38778e-16, 1.38778e-16]) *).
 Proof.
  intros h0.
  assert (h1 := l79 h0).
- assert (h2 := l81 h0).
- apply t72. exact h1. exact h2.
+ apply t68. exact h1.
 Qed.
-Lemma t73 : p81 -> p80.
-Proof.
- intros h0.
- refine (sub_xals _ _ _ i46 h0) ; finalize.
-Qed.
-Lemma l77 : s1 -> p80 (* BND(q1 - q1_ideal, [-2.35922e-16, 2.35922e-16]) *).
-Proof.
- intros h0.
- assert (h1 := l78 h0).
- apply t73. exact h1.
-Qed.
-Definition f78 := Float2 (-141221797579087199) (-111).
-Definition f79 := Float2 (141221797579087199) (-111).
-Definition i51 := makepairF f78 f79.
-Notation p93 := (BND r44 i51). (* BND(q1_ideal - q_exact, [-5.43967e-17, 5.43967e-17]) *)
-Notation p94 := (BND r52 i51). (* BND(-6671878411859531223066906417473 / 43890125504277088739791682231712132520374330982400 * p + -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * q, [-5.43967e-17, 5.43967e-17]) *)
-Definition f80 := Float2 (-5525083613746805) (-112).
-Definition f81 := Float2 (5525083613746805) (-112).
-Definition i52 := makepairF f80 f81.
-Notation p95 := (BND r53 i52). (* BND(-6671878411859531223066906417473 / 43890125504277088739791682231712132520374330982400 * p, [-1.06409e-18, 1.06409e-18]) *)
-Definition f82 := Float2 (-6314381272853491) (-115).
-Definition f83 := Float2 (-1) (-63).
-Definition i53 := makepairF f82 f83.
-Notation p96 := (BND r54 i53). (* BND(-6671878411859531223066906417473 / 43890125504277088739791682231712132520374330982400, [-1.52013e-19, -1.0842e-19]) *)
-Definition f84 := Float2 (-189626189576856951) (45).
-Definition f85 := Float2 (-1) (102).
-Definition i54 := makepairF f84 f85.
-Notation p97 := (BND r55 i54). (* BND(-6671878411859531223066906417473, [-6.67188e+30, -5.0706e+30]) *)
-Lemma t74 : p97.
-Proof.
- refine (constant1 _ i54 _) ; finalize.
-Qed.
-Lemma l92 : s1 -> p97 (* BND(-6671878411859531223066906417473, [-6.67188e+30, -5.0706e+30]) *).
-Proof.
- intros h0.
- apply t74.
-Qed.
-Definition f86 := Float2 (270493782309123761) (107).
-Definition f87 := Float2 (1) (165).
-Definition i55 := makepairF f86 f87.
-Notation p98 := (BND r56 i55). (* BND(43890125504277088739791682231712132520374330982400, [4.38901e+49, 4.67681e+49]) *)
-Lemma t75 : p98.
-Proof.
- refine (constant1 _ i55 _) ; finalize.
-Qed.
-Lemma l93 : s1 -> p98 (* BND(43890125504277088739791682231712132520374330982400, [4.38901e+49, 4.67681e+49]) *).
-Proof.
- intros h0.
- apply t75.
-Qed.
-Lemma t76 : p97 -> p98 -> p96.
+Lemma t69 : p78 -> p81 -> p77.
 Proof.
  intros h0 h1.
- refine (div_np r55 r56 i54 i55 i53 h0 h1 _) ; finalize.
+ refine (add r71 r72 i46 i49 i45 h0 h1 _) ; finalize.
 Qed.
-Lemma l91 : s1 -> p96 (* BND(-6671878411859531223066906417473 / 43890125504277088739791682231712132520374330982400, [-1.52013e-19, -1.0842e-19]) *).
+Lemma l75 : s1 -> p77 (* BND(q1 - (gp + dq) + (gp + dq - q1_ideal), [-3.60822e-16, 3.60822e-16]) *).
 Proof.
  intros h0.
- assert (h1 := l92 h0).
- assert (h2 := l93 h0).
+ assert (h1 := l76 h0).
+ assert (h2 := l78 h0).
+ apply t69. exact h1. exact h2.
+Qed.
+Lemma t70 : p77 -> p76.
+Proof.
+ intros h0.
+ refine (sub_xals _ _ _ i45 h0) ; finalize.
+Qed.
+Lemma l74 : s1 -> p76 (* BND(q1 - q1_ideal, [-3.60822e-16, 3.60822e-16]) *).
+Proof.
+ intros h0.
+ assert (h1 := l75 h0).
+ apply t70. exact h1.
+Qed.
+Definition f78 := Float2 (-117577947257901969) (-110).
+Definition f79 := Float2 (117577947257901969) (-110).
+Definition i53 := makepairF f78 f79.
+Notation p89 := (BND r44 i53). (* BND(q1_ideal - q_exact, [-9.05788e-17, 9.05788e-17]) *)
+Notation p90 := (BND r52 i53). (* BND(-6671878411859531223066906417473 / 43890125504277088739791682231712132520374330982400 * p + -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * q, [-9.05788e-17, 9.05788e-17]) *)
+Definition f80 := Float2 (-274404264298809) (-107).
+Definition f81 := Float2 (274404264298809) (-107).
+Definition i54 := makepairF f80 f81.
+Notation p91 := (BND r53 i54). (* BND(-6671878411859531223066906417473 / 43890125504277088739791682231712132520374330982400 * p, [-1.69115e-18, 1.69115e-18]) *)
+Definition f82 := Float2 (-1578595318213373) (-113).
+Definition f83 := Float2 (-1) (-63).
+Definition i55 := makepairF f82 f83.
+Notation p92 := (BND r54 i55). (* BND(-6671878411859531223066906417473 / 43890125504277088739791682231712132520374330982400, [-1.52013e-19, -1.0842e-19]) *)
+Definition f84 := Float2 (-1481454606069195) (52).
+Definition f85 := Float2 (-1) (102).
+Definition i56 := makepairF f84 f85.
+Notation p93 := (BND r55 i56). (* BND(-6671878411859531223066906417473, [-6.67188e+30, -5.0706e+30]) *)
+Lemma t71 : p93.
+Proof.
+ refine (constant1 _ i56 _) ; finalize.
+Qed.
+Lemma l89 : s1 -> p93 (* BND(-6671878411859531223066906417473, [-6.67188e+30, -5.0706e+30]) *).
+Proof.
+ intros h0.
+ apply t71.
+Qed.
+Definition f86 := Float2 (8452930697160117) (112).
+Definition f87 := Float2 (1) (165).
+Definition i57 := makepairF f86 f87.
+Notation p94 := (BND r56 i57). (* BND(43890125504277088739791682231712132520374330982400, [4.38901e+49, 4.67681e+49]) *)
+Lemma t72 : p94.
+Proof.
+ refine (constant1 _ i57 _) ; finalize.
+Qed.
+Lemma l90 : s1 -> p94 (* BND(43890125504277088739791682231712132520374330982400, [4.38901e+49, 4.67681e+49]) *).
+Proof.
+ intros h0.
+ apply t72.
+Qed.
+Lemma t73 : p93 -> p94 -> p92.
+Proof.
+ intros h0 h1.
+ refine (div_np r55 r56 i56 i57 i55 h0 h1 _) ; finalize.
+Qed.
+Lemma l88 : s1 -> p92 (* BND(-6671878411859531223066906417473 / 43890125504277088739791682231712132520374330982400, [-1.52013e-19, -1.0842e-19]) *).
+Proof.
+ intros h0.
+ assert (h1 := l89 h0).
+ assert (h2 := l90 h0).
+ apply t73. exact h1. exact h2.
+Qed.
+Lemma t74 : p92 -> p1 -> p91.
+Proof.
+ intros h0 h1.
+ refine (mul_no r54 _p i55 i1 i54 h0 h1 _) ; finalize.
+Qed.
+Lemma l87 : s1 -> p91 (* BND(-6671878411859531223066906417473 / 43890125504277088739791682231712132520374330982400 * p, [-1.69115e-18, 1.69115e-18]) *).
+Proof.
+ intros h0.
+ assert (h1 := l88 h0).
+ assert (h2 := l15 h0).
+ apply t74. exact h1. exact h2.
+Qed.
+Definition f88 := Float2 (-115382713143511497) (-110).
+Definition f89 := Float2 (115382713143511497) (-110).
+Definition i58 := makepairF f88 f89.
+Notation p95 := (BND r57 i58). (* BND(-3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * q, [-8.88876e-17, 8.88876e-17]) *)
+Lemma t75 : p62 -> p2 -> p95.
+Proof.
+ intros h0 h1.
+ refine (mul_no r47 _q i37 i2 i58 h0 h1 _) ; finalize.
+Qed.
+Lemma l91 : s1 -> p95 (* BND(-3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * q, [-8.88876e-17, 8.88876e-17]) *).
+Proof.
+ intros h0.
+ assert (h1 := l59 h0).
+ assert (h2 := l21 h0).
+ apply t75. exact h1. exact h2.
+Qed.
+Lemma t76 : p91 -> p95 -> p90.
+Proof.
+ intros h0 h1.
+ refine (add r53 r57 i54 i58 i53 h0 h1 _) ; finalize.
+Qed.
+Lemma l86 : s1 -> p90 (* BND(-6671878411859531223066906417473 / 43890125504277088739791682231712132520374330982400 * p + -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * q, [-9.05788e-17, 9.05788e-17]) *).
+Proof.
+ intros h0.
+ assert (h1 := l87 h0).
+ assert (h2 := l91 h0).
  apply t76. exact h1. exact h2.
 Qed.
-Lemma t77 : p96 -> p1 -> p95.
-Proof.
- intros h0 h1.
- refine (mul_no r54 _p i53 i1 i52 h0 h1 _) ; finalize.
-Qed.
-Lemma l90 : s1 -> p95 (* BND(-6671878411859531223066906417473 / 43890125504277088739791682231712132520374330982400 * p, [-1.06409e-18, 1.06409e-18]) *).
-Proof.
- intros h0.
- assert (h1 := l91 h0).
- assert (h2 := l15 h0).
- apply t77. exact h1. exact h2.
-Qed.
-Definition f88 := Float2 (-276918511544427593) (-112).
-Definition f89 := Float2 (276918511544427593) (-112).
-Definition i56 := makepairF f88 f89.
-Notation p99 := (BND r57 i56). (* BND(-3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * q, [-5.33326e-17, 5.33326e-17]) *)
-Lemma t78 : p65 -> p2 -> p99.
-Proof.
- intros h0 h1.
- refine (mul_no r47 _q i37 i2 i56 h0 h1 _) ; finalize.
-Qed.
-Lemma l94 : s1 -> p99 (* BND(-3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * q, [-5.33326e-17, 5.33326e-17]) *).
-Proof.
- intros h0.
- assert (h1 := l62 h0).
- assert (h2 := l21 h0).
- apply t78. exact h1. exact h2.
-Qed.
-Lemma t79 : p95 -> p99 -> p94.
-Proof.
- intros h0 h1.
- refine (add r53 r57 i52 i56 i51 h0 h1 _) ; finalize.
-Qed.
-Lemma l89 : s1 -> p94 (* BND(-6671878411859531223066906417473 / 43890125504277088739791682231712132520374330982400 * p + -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * q, [-5.43967e-17, 5.43967e-17]) *).
-Proof.
- intros h0.
- assert (h1 := l90 h0).
- assert (h2 := l94 h0).
- apply t79. exact h1. exact h2.
-Qed.
-Notation p100 := (REL r44 r52 i45). (* REL(q1_ideal - q_exact, -6671878411859531223066906417473 / 43890125504277088739791682231712132520374330982400 * p + -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * q, [0, 0]) *)
-Notation p101 := (r44 = r52). (* EQL(q1_ideal - q_exact, -6671878411859531223066906417473 / 43890125504277088739791682231712132520374330982400 * p + -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * q) *)
-Lemma t80 : p101.
+Notation p96 := (REL r44 r52 i44). (* REL(q1_ideal - q_exact, -6671878411859531223066906417473 / 43890125504277088739791682231712132520374330982400 * p + -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * q, [0, 0]) *)
+Notation p97 := (r44 = r52). (* EQL(q1_ideal - q_exact, -6671878411859531223066906417473 / 43890125504277088739791682231712132520374330982400 * p + -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * q) *)
+Lemma t77 : p97.
 Proof.
  refine (b4) ; finalize.
 Qed.
-Lemma l96 : s1 -> p101 (* EQL(q1_ideal - q_exact, -6671878411859531223066906417473 / 43890125504277088739791682231712132520374330982400 * p + -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * q) *).
+Lemma l93 : s1 -> p97 (* EQL(q1_ideal - q_exact, -6671878411859531223066906417473 / 43890125504277088739791682231712132520374330982400 * p + -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * q) *).
 Proof.
  intros h0.
- apply t80.
+ apply t77.
 Qed.
-Notation p102 := (REL r52 r52 i45). (* REL(-6671878411859531223066906417473 / 43890125504277088739791682231712132520374330982400 * p + -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * q, -6671878411859531223066906417473 / 43890125504277088739791682231712132520374330982400 * p + -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * q, [0, 0]) *)
-Lemma t81 : p102.
+Notation p98 := (REL r52 r52 i44). (* REL(-6671878411859531223066906417473 / 43890125504277088739791682231712132520374330982400 * p + -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * q, -6671878411859531223066906417473 / 43890125504277088739791682231712132520374330982400 * p + -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * q, [0, 0]) *)
+Lemma t78 : p98.
 Proof.
- refine (rel_refl r52 i45 _) ; finalize.
+ refine (rel_refl r52 i44 _) ; finalize.
 Qed.
-Lemma l97 : s1 -> p102 (* REL(-6671878411859531223066906417473 / 43890125504277088739791682231712132520374330982400 * p + -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * q, -6671878411859531223066906417473 / 43890125504277088739791682231712132520374330982400 * p + -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * q, [0, 0]) *).
+Lemma l94 : s1 -> p98 (* REL(-6671878411859531223066906417473 / 43890125504277088739791682231712132520374330982400 * p + -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * q, -6671878411859531223066906417473 / 43890125504277088739791682231712132520374330982400 * p + -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * q, [0, 0]) *).
 Proof.
  intros h0.
- apply t81.
+ apply t78.
 Qed.
-Lemma t82 : p101 -> p102 -> p100.
+Lemma t79 : p97 -> p98 -> p96.
 Proof.
  intros h0 h1.
- refine (rel_rewrite_1 r44 r52 r52 i45 h0 h1) ; finalize.
+ refine (rel_rewrite_1 r44 r52 r52 i44 h0 h1) ; finalize.
 Qed.
-Lemma l95 : s1 -> p100 (* REL(q1_ideal - q_exact, -6671878411859531223066906417473 / 43890125504277088739791682231712132520374330982400 * p + -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * q, [0, 0]) *).
+Lemma l92 : s1 -> p96 (* REL(q1_ideal - q_exact, -6671878411859531223066906417473 / 43890125504277088739791682231712132520374330982400 * p + -3660383455318603984232747923630239280051403617 / 77212325338401015504689204853976229175880009829288981131427840 * q, [0, 0]) *).
+Proof.
+ intros h0.
+ assert (h1 := l93 h0).
+ assert (h2 := l94 h0).
+ apply t79. exact h1. exact h2.
+Qed.
+Lemma t80 : p90 -> p96 -> p89.
+Proof.
+ intros h0 h1.
+ refine (bnd_of_bnd_rel_o r44 r52 i53 i44 i53 h0 h1 _) ; finalize.
+Qed.
+Lemma l85 : s1 -> p89 (* BND(q1_ideal - q_exact, [-9.05788e-17, 9.05788e-17]) *).
+Proof.
+ intros h0.
+ assert (h1 := l86 h0).
+ assert (h2 := l92 h0).
+ apply t80. exact h1. exact h2.
+Qed.
+Lemma t81 : p76 -> p89 -> p75.
+Proof.
+ intros h0 h1.
+ refine (add r42 r44 i45 i53 i4 h0 h1 _) ; finalize.
+Qed.
+Lemma l73 : s1 -> p75 (* BND(q1 - q1_ideal + (q1_ideal - q_exact), [-4.51401e-16, 4.51401e-16]) *).
+Proof.
+ intros h0.
+ assert (h1 := l74 h0).
+ assert (h2 := l85 h0).
+ apply t81. exact h1. exact h2.
+Qed.
+Notation p99 := (REL r27 r41 i44). (* REL(q1 - q_exact, q1 - q1_ideal + (q1_ideal - q_exact), [0, 0]) *)
+Notation p100 := (r27 = r41). (* EQL(q1 - q_exact, q1 - q1_ideal + (q1_ideal - q_exact)) *)
+Lemma t82 : p100.
+Proof.
+ refine (b2) ; finalize.
+Qed.
+Lemma l96 : s1 -> p100 (* EQL(q1 - q_exact, q1 - q1_ideal + (q1_ideal - q_exact)) *).
+Proof.
+ intros h0.
+ apply t82.
+Qed.
+Notation p101 := (REL r41 r41 i44). (* REL(q1 - q1_ideal + (q1_ideal - q_exact), q1 - q1_ideal + (q1_ideal - q_exact), [0, 0]) *)
+Lemma t83 : p101.
+Proof.
+ refine (rel_refl r41 i44 _) ; finalize.
+Qed.
+Lemma l97 : s1 -> p101 (* REL(q1 - q1_ideal + (q1_ideal - q_exact), q1 - q1_ideal + (q1_ideal - q_exact), [0, 0]) *).
+Proof.
+ intros h0.
+ apply t83.
+Qed.
+Lemma t84 : p100 -> p101 -> p99.
+Proof.
+ intros h0 h1.
+ refine (rel_rewrite_1 r27 r41 r41 i44 h0 h1) ; finalize.
+Qed.
+Lemma l95 : s1 -> p99 (* REL(q1 - q_exact, q1 - q1_ideal + (q1_ideal - q_exact), [0, 0]) *).
 Proof.
  intros h0.
  assert (h1 := l96 h0).
  assert (h2 := l97 h0).
- apply t82. exact h1. exact h2.
-Qed.
-Lemma t83 : p94 -> p100 -> p93.
-Proof.
- intros h0 h1.
- refine (bnd_of_bnd_rel_o r44 r52 i51 i45 i51 h0 h1 _) ; finalize.
-Qed.
-Lemma l88 : s1 -> p93 (* BND(q1_ideal - q_exact, [-5.43967e-17, 5.43967e-17]) *).
-Proof.
- intros h0.
- assert (h1 := l89 h0).
- assert (h2 := l95 h0).
- apply t83. exact h1. exact h2.
-Qed.
-Lemma t84 : p80 -> p93 -> p79.
-Proof.
- intros h0 h1.
- refine (add r42 r44 i46 i51 i4 h0 h1 _) ; finalize.
-Qed.
-Lemma l76 : s1 -> p79 (* BND(q1 - q1_ideal + (q1_ideal - q_exact), [-2.90319e-16, 2.90319e-16]) *).
-Proof.
- intros h0.
- assert (h1 := l77 h0).
- assert (h2 := l88 h0).
  apply t84. exact h1. exact h2.
 Qed.
-Notation p103 := (REL r27 r41 i45). (* REL(q1 - q_exact, q1 - q1_ideal + (q1_ideal - q_exact), [0, 0]) *)
-Notation p104 := (r27 = r41). (* EQL(q1 - q_exact, q1 - q1_ideal + (q1_ideal - q_exact)) *)
-Lemma t85 : p104.
-Proof.
- refine (b2) ; finalize.
-Qed.
-Lemma l99 : s1 -> p104 (* EQL(q1 - q_exact, q1 - q1_ideal + (q1_ideal - q_exact)) *).
-Proof.
- intros h0.
- apply t85.
-Qed.
-Notation p105 := (REL r41 r41 i45). (* REL(q1 - q1_ideal + (q1_ideal - q_exact), q1 - q1_ideal + (q1_ideal - q_exact), [0, 0]) *)
-Lemma t86 : p105.
-Proof.
- refine (rel_refl r41 i45 _) ; finalize.
-Qed.
-Lemma l100 : s1 -> p105 (* REL(q1 - q1_ideal + (q1_ideal - q_exact), q1 - q1_ideal + (q1_ideal - q_exact), [0, 0]) *).
-Proof.
- intros h0.
- apply t86.
-Qed.
-Lemma t87 : p104 -> p105 -> p103.
+Lemma t85 : p75 -> p99 -> p4.
 Proof.
  intros h0 h1.
- refine (rel_rewrite_1 r27 r41 r41 i45 h0 h1) ; finalize.
+ refine (bnd_of_bnd_rel_o r27 r41 i4 i44 i4 h0 h1 _) ; finalize.
 Qed.
-Lemma l98 : s1 -> p103 (* REL(q1 - q_exact, q1 - q1_ideal + (q1_ideal - q_exact), [0, 0]) *).
+Lemma l72 : s1 -> p4 (* BND(q1 - q_exact, [-4.51401e-16, 4.51401e-16]) *).
 Proof.
  intros h0.
- assert (h1 := l99 h0).
- assert (h2 := l100 h0).
- apply t87. exact h1. exact h2.
-Qed.
-Lemma t88 : p79 -> p103 -> p4.
-Proof.
- intros h0 h1.
- refine (bnd_of_bnd_rel_o r27 r41 i4 i45 i4 h0 h1 _) ; finalize.
-Qed.
-Lemma l75 : s1 -> p4 (* BND(q1 - q_exact, [-2.90319e-16, 2.90319e-16]) *).
-Proof.
- intros h0.
- assert (h1 := l76 h0).
- assert (h2 := l98 h0).
- apply t88. exact h1. exact h2.
+ assert (h1 := l73 h0).
+ assert (h2 := l95 h0).
+ apply t85. exact h1. exact h2.
 Qed.
 Lemma l1 : s1 -> False.
 Proof.
  intros h0.
  assert (h1 := l2 h0).
- assert (h2 := l75 h0).
+ assert (h2 := l72 h0).
  refine (simplify (Tatom false (Abnd 0%nat i4)) Tfalse (Abnd 0%nat i4) (List.cons r27 List.nil) h2 h1 _) ; finalize.
 Qed.
 End Generated_by_Gappa.
@@ -4354,9 +4321,9 @@ Definition c := (30329780330904584893144624612461 / 1218195697213405835340518441
 Definition d := (76261713085606223321819560886785958185474988892094483350567777 / 77212325338401015504689204853976229175880009829288981131427840).
 Definition wp := (1 / 1).
 Definition wq := (360769926010065973279695525535633439352003202254398348277135381347481780506319762375921910825 / 9138389603952863355721862387340674471650393371702563304643471975878778544611589419526258688).
-Definition Bp := (594808073676915345 / 324518553658426726783156020576256).
-Definition Bq := (753711346901474655 / 2596148429267413814265248164610048).
-Definition eps := (819508873170179 / 316912650057057350374175801344).
+Definition Bp := (813702877652374769 / 324518553658426726783156020576256).
+Definition Bq := (585952308504433553 / 1298074214633706907132624082305024).
+Definition eps := (2399461502472653 / 633825300114114700748351602688).
 
 Definition Q (x y : R) := wp * x * x + wq * y * y.
 
