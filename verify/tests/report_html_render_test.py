@@ -9,12 +9,17 @@ With --binary, a fresh report of the quick scene is checked too. For each report
     and GiNaC forms of the formulas read from the paper) appears verbatim in the rendered text: a
     '*' read as emphasis or a D[0](V) read as a link breaks it;
   - no <em> or <a> inside a <code> element or inside those expressions;
-  - the verdicts are coloured (a class per verdict).
+  - the verdicts are coloured (a class per verdict);
+  - a table of contents links every <h2>;
+  - the TeX is rendered by KaTeX (katex/ beside the page): every TeX code span is rendered, but a
+    quote cut short (ending in "…"), and the TeX shown stays in the page (KaTeX's annotation);
+  - at 1400 px the page does not overflow horizontally (a probe script measures it in a copy).
 Exit 0 when all hold, 1 otherwise (each failure named)."""
 import html.parser
 import json
 import os
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -46,6 +51,8 @@ class Dom(html.parser.HTMLParser):
         self.ids, self.links, self.sources, self.classes = set(), [], [], set()
         self.text, self.code_text, self.stack = [], [], []
         self.inline_in_code = 0
+        self.h2, self.contents_links, self.tex_left, self.rendered = 0, [], [], 0
+        self.in_contents = self.in_tex = self.in_annotation = False
 
     def handle_starttag(self, tag, attrs):
         a = dict(attrs)
@@ -59,18 +66,40 @@ class Dom(html.parser.HTMLParser):
             self.sources.append(a["src"])
         if tag in ("em", "a", "strong") and "code" in self.stack:
             self.inline_in_code += 1
+        classes = a.get("class", "").split()
+        if tag == "h2":
+            self.h2 += 1
+        if tag == "nav" and "contents" in classes:
+            self.in_contents = True
+        if tag == "a" and self.in_contents:
+            self.contents_links.append(a.get("href", ""))
+        if tag == "code" and "tex" in classes:
+            self.in_tex = True
+            self.tex_left.append("")
+        if tag == "span" and "katex" in classes:
+            self.rendered += 1
+        if tag == "annotation":
+            self.in_annotation = True
         if tag not in ("br", "img", "hr", "meta", "input"):
             self.stack.append(tag)
 
     def handle_endtag(self, tag):
+        if tag == "nav":
+            self.in_contents = False
+        if tag == "code":
+            self.in_tex = False
+        if tag == "annotation":
+            self.in_annotation = False
         if tag in self.stack:
             while self.stack and self.stack.pop() != tag:
                 pass
 
     def handle_data(self, data):
         self.text.append(data)
-        if "code" in self.stack:
+        if "code" in self.stack or self.in_annotation:
             self.code_text.append(data)
+        if self.in_tex:
+            self.tex_left[-1] += data
 
 
 def normalized(text):
@@ -81,6 +110,7 @@ def dump_dom(page):
     with tempfile.TemporaryDirectory() as profile:
         done = subprocess.run([chromium, "--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
                                "--disable-component-update", "--disable-sync", "--no-first-run", "--disable-quic",
+                               "--window-size=1400,3000", "--virtual-time-budget=5000",
                                f"--user-data-dir={profile}", "--dump-dom", "file://" + os.path.abspath(page)],
                               capture_output=True, text=True, timeout=120)
     if done.returncode != 0 or "<body" not in done.stdout:
@@ -118,7 +148,30 @@ for directory in directories:
     for v in verdicts:
         if f"verdict-{v}" not in dom.classes:
             fail(f"{where}: verdict {v} is not coloured (no class verdict-{v})")
-    print(f"checked {where}: {len(dom.links)} links, {len(dom.ids)} ids, {len(report['claims'])} claims")
+    if dom.h2 and len(dom.contents_links) != dom.h2:
+        fail(f"{where}: the table of contents links {len(dom.contents_links)} of the {dom.h2} sections")
+    has_katex = os.path.isfile(os.path.join(directory, "katex", "katex.min.js"))
+    if has_katex:
+        if dom.rendered == 0:
+            fail(f"{where}: katex/ is beside the page, and no TeX was rendered")
+        for left in dom.tex_left:
+            if not left.rstrip().endswith("…"):
+                fail(f"{where}: TeX left unrendered, not a quote cut short: {left[:100]}")
+    # The page's width at 1400 px, measured by a probe script in a copy of the directory.
+    with tempfile.TemporaryDirectory() as copy:
+        target = os.path.join(copy, "report")
+        shutil.copytree(directory, target)
+        page = open(os.path.join(target, "report.html"), encoding="utf-8").read()
+        probe = ("<script>window.addEventListener('load',function(){document.body.setAttribute('data-width',"
+                 "document.documentElement.clientWidth+' '+document.documentElement.scrollWidth);});</script>")
+        open(os.path.join(target, "probe.html"), "w", encoding="utf-8").write(page.replace("</body>", probe + "</body>"))
+        measured = re.search(r'data-width="(\d+) (\d+)"', dump_dom(os.path.join(target, "probe.html")))
+        if not measured:
+            fail(f"{where}: the width probe did not run")
+        elif int(measured.group(2)) > int(measured.group(1)):
+            fail(f"{where}: the page overflows at 1400 px: {measured.group(2)} px wide in a {measured.group(1)} px window")
+    print(f"checked {where}: {len(dom.links)} links, {len(dom.ids)} ids, {len(report['claims'])} claims, "
+          f"{dom.rendered} TeX rendered, {len(dom.tex_left)} left as code")
 
 print(f"{len(directories)} reports checked, {failures} failures")
 sys.exit(1 if failures else 0)

@@ -131,6 +131,23 @@ std::string draw(const std::filesystem::path& dir, const plot_spec& plot) {
   return {};
 }
 
+/// Debian's KaTeX (libjs-katex) beside report.html, so that the page renders its TeX with no network:
+/// the script, its stylesheet and the woff2 fonts the stylesheet names first. Where the package is
+/// missing the page shows the TeX as code.
+void copy_katex(const std::filesystem::path& to) {
+  const std::filesystem::path from = "/usr/share/javascript/katex";
+  if (!std::filesystem::exists(from / "katex.min.js")) return;
+  std::filesystem::create_directories(to / "fonts");
+  for (const char* name : {"katex.min.js", "katex.min.css"}) {
+    std::filesystem::copy_file(from / name, to / name, std::filesystem::copy_options::overwrite_existing);
+  }
+  for (const auto& font : std::filesystem::directory_iterator(from / "fonts")) {
+    if (font.path().extension() == ".woff2") {
+      std::filesystem::copy_file(font.path(), to / "fonts" / font.path().filename(), std::filesystem::copy_options::overwrite_existing);
+    }
+  }
+}
+
 }  // namespace
 
 std::string cmark_gfm_version() { return cmark_version_string(); }
@@ -166,6 +183,7 @@ plot_outcome write_report_directory(const std::filesystem::path& dir, const std:
     write_file(staging / "report.json", docs.report.dump(2) + "\n");
     write_file(staging / "report.md", docs.markdown);
     write_file(staging / "report.html", render_report_html(docs.markdown, docs.title));
+    copy_katex(staging / "katex");
     if (!docs.junit.empty()) write_file(staging / "report.junit.xml", docs.junit);
     for (const auto& [name, content] : docs.extra_files) {
       std::filesystem::create_directories((staging / name).parent_path());
@@ -236,6 +254,15 @@ bool holds_only_a_report(const std::filesystem::path& dir) {
   }
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
     const std::string name = entry.path().filename().string();
+    // katex/: Debian's KaTeX as copy_katex writes it beside report.html (its files and fonts/ only).
+    if (entry.is_directory() && name == "katex" && in) {
+      for (const auto& inner : std::filesystem::recursive_directory_iterator(entry.path())) {
+        const std::string file = inner.path().filename().string();
+        const bool asset = inner.is_directory() ? file == "fonts" : file.rfind("katex", 0) == 0 || file.rfind("KaTeX_", 0) == 0;
+        if (!asset) return false;
+      }
+      continue;
+    }
     if (entry.is_directory() && has_list) {
       // A directory of the report (certificates/): every file in it listed, nothing deeper.
       for (const auto& inner : std::filesystem::directory_iterator(entry.path())) {

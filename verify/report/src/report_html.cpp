@@ -72,6 +72,47 @@ std::string with_heading_ids(const std::string& html) {
   return out + html.substr(at);
 }
 
+/// The page's table of contents: a link to each <h2>, after the first <h1> (or at the top).
+std::string with_contents(const std::string& html) {
+  std::string items;
+  for (std::size_t at = html.find("<h2 id=\""); at != std::string::npos; at = html.find("<h2 id=\"", at + 1)) {
+    const std::size_t id_end = html.find('"', at + 8), end = html.find("</h2>", at);
+    if (id_end == std::string::npos || end == std::string::npos) break;
+    const std::string id = html.substr(at + 8, id_end - at - 8), text = text_of(html.substr(id_end + 2, end - id_end - 2));
+    items += fmt::format("<li><a href=\"#{}\">{}</a></li>", id, markup_escaped(text));
+  }
+  if (items.empty()) return html;
+  const std::string nav = "<nav class=\"contents\"><strong>Contents</strong><ul>" + items + "</ul></nav>\n";
+  const std::size_t h1 = html.find("</h1>");
+  return h1 == std::string::npos ? nav + html : html.substr(0, h1 + 5) + "\n" + nav + html.substr(h1 + 5);
+}
+
+/// Inline code that is TeX (a backslash before a letter) gets class "tex": the page renders it with
+/// KaTeX when katex/ is beside it (report_directory.cpp copies Debian's), and shows the TeX as code
+/// where KaTeX is missing or does not read it (a quote cut short).
+std::string with_tex_marked(const std::string& html) {
+  std::string out;
+  std::size_t at = 0;
+  for (std::size_t found; (found = html.find("<code>", at)) != std::string::npos;) {
+    const std::size_t end = html.find("</code>", found);
+    if (end == std::string::npos) break;
+    bool tex = false;
+    for (std::size_t k = found + 6; k + 1 < end && !tex; ++k) tex = html[k] == '\\' && std::isalpha(static_cast<unsigned char>(html[k + 1]));
+    const bool in_pre = found >= 5 && html.compare(found - 5, 5, "<pre>") == 0;
+    out += html.substr(at, found - at) + (tex && !in_pre ? "<code class=\"tex\">" : "<code>");
+    at = found + 6;
+  }
+  return out + html.substr(at);
+}
+
+/// KaTeX from katex/ beside the page, no network: each code.tex replaced by its rendering (the TeX
+/// kept as the rendering's title), left as code when KaTeX throws.
+constexpr const char* katex_script =
+    "<script src=\"katex/katex.min.js\"></script>\n"
+    "<script>if(window.katex){document.querySelectorAll('code.tex').forEach(function(c){"
+    "var s=document.createElement('span');s.className='tex-rendered';s.title=c.textContent;"
+    "try{katex.render(c.textContent,s,{throwOnError:true});c.replaceWith(s);}catch(e){}});}</script>\n";
+
 /// Tables of more than folded_table_rows rows inside <details>, closed, with their row count.
 std::string with_long_tables_folded(const std::string& html) {
   std::string out;
@@ -83,8 +124,10 @@ std::string with_long_tables_folded(const std::string& html) {
     for (std::size_t tr = table.find("<tr>"); tr != std::string::npos; tr = table.find("<tr>", tr + 4)) ++rows;
     rows = rows > 0 ? rows - 1 : 0;  // the header row
     out += html.substr(at, found - at);
-    out += rows > folded_table_rows ? fmt::format("<details><summary>table of {} rows (unfold)</summary>\n{}\n</details>", rows, table)
-                                    : table;
+    // Each table scrolls inside the page's width: a wide one never widens the page.
+    const std::string wrapped = "<div class=\"table-wrap\">" + table + "</div>";
+    out += rows > folded_table_rows ? fmt::format("<details><summary>table of {} rows (unfold)</summary>\n{}\n</details>", rows, wrapped)
+                                    : wrapped;
     at = end;
   }
   return out + html.substr(at);
@@ -95,6 +138,9 @@ constexpr const char* style =
     "table{border-collapse:collapse;font-size:90%}td,th{border:1px solid #ccc;padding:2px 6px}"
     "pre{background:#f6f6f6;padding:8px;overflow-x:auto;font-size:85%}img{max-width:100%}"
     "summary{cursor:pointer;color:#555}"
+    "td,li,p{overflow-wrap:break-word}code{overflow-wrap:anywhere}.table-wrap{overflow-x:auto;max-width:100%}"
+    ".tex-rendered{display:inline-block;position:relative;max-width:100%;overflow-x:auto;overflow-y:hidden;vertical-align:middle}"
+    ".contents{background:#f6f6f6;padding:6px 12px;margin:1em 0}.contents ul{columns:2;margin:4px 0}"
     ".verdict{padding:0 4px;border-radius:3px}"
     ".verdict-holds{background:#dff0d8;color:#1e5e1e}.verdict-erratum{background:#fcf3cf;color:#7a5a00}"
     ".verdict-fails{background:#f8d7da;color:#842029}.verdict-kernels-disagree{background:#842029;color:#fff}"
@@ -131,7 +177,7 @@ std::string heading_slug(std::string_view heading_text) {
 }
 
 std::string render_report_html(const std::string& markdown, const std::string& title) {
-  std::string body = with_long_tables_folded(with_heading_ids(cmark_html(markdown)));
+  std::string body = with_tex_marked(with_contents(with_long_tables_folded(with_heading_ids(cmark_html(markdown)))));
   // Verdicts: report.md writes them in bold; each gets its colour.
   for (const char* v : {"holds", "erratum", "fails", "kernels-disagree", "text-changed", "undecided", "unproved", "skipped", "unverifiable"}) {
     replace_all(body, fmt::format("<strong>{}</strong>", v), fmt::format("<strong class=\"verdict verdict-{}\">{}</strong>", v, v));
@@ -151,7 +197,8 @@ std::string render_report_html(const std::string& markdown, const std::string& t
   replace_all(body, "href=\"timing.md\"", "href=\"timing.html\"");
   replace_all(body, "href=\"report.md\"", "href=\"report.html\"");
   return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + markup_escaped(title) +
-         "</title>\n<style>" + style + "</style>\n</head>\n<body>\n" + body + "</body>\n</html>\n";
+         "</title>\n<link rel=\"stylesheet\" href=\"katex/katex.min.css\">\n<style>" + style + "</style>\n</head>\n<body>\n" + body +
+         katex_script + "</body>\n</html>\n";
 }
 
 }  // namespace simpson::verify
