@@ -1,4 +1,5 @@
 #include <simpson/verify/report.hpp>
+#include <simpson/verify/report_directory.hpp>
 
 #include <simpson/verify/certify.hpp>
 #include <simpson/verify/junit.hpp>
@@ -854,6 +855,7 @@ std::vector<std::string> report_file_names(const run_record& r, const plot_outco
   for (const claim_outcome& o : r.outcomes) {
     for (const certificate_document& d : certificate_documents(o)) names.push_back(d.file);
   }
+  for (std::string& name : katex_file_names()) names.push_back(std::move(name));
   return names;
 }
 

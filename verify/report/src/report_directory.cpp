@@ -131,26 +131,33 @@ std::string draw(const std::filesystem::path& dir, const plot_spec& plot) {
   return {};
 }
 
-/// Debian's KaTeX (libjs-katex) beside report.html, so that the page renders its TeX with no network:
-/// the script, its stylesheet and the woff2 fonts the stylesheet names first. Where the package is
-/// missing the page shows the TeX as code.
-void copy_katex(const std::filesystem::path& to) {
-  const std::filesystem::path from = "/usr/share/javascript/katex";
-  if (!std::filesystem::exists(from / "katex.min.js")) return;
-  std::filesystem::create_directories(to / "fonts");
-  for (const char* name : {"katex.min.js", "katex.min.css"}) {
-    std::filesystem::copy_file(from / name, to / name, std::filesystem::copy_options::overwrite_existing);
-  }
-  for (const auto& font : std::filesystem::directory_iterator(from / "fonts")) {
-    if (font.path().extension() == ".woff2") {
-      std::filesystem::copy_file(font.path(), to / "fonts" / font.path().filename(), std::filesystem::copy_options::overwrite_existing);
-    }
+const std::filesystem::path katex_source = "/usr/share/javascript/katex";
+
+/// katex_file_names() copied from Debian's package into the report directory `dir`.
+void copy_katex(const std::filesystem::path& dir) {
+  for (const std::string& name : katex_file_names()) {
+    const std::filesystem::path to = dir / name;
+    std::filesystem::create_directories(to.parent_path());
+    std::filesystem::copy_file(katex_source / std::filesystem::path(name).lexically_relative("katex"), to,
+                               std::filesystem::copy_options::overwrite_existing);
   }
 }
 
 }  // namespace
 
 std::string cmark_gfm_version() { return cmark_version_string(); }
+
+std::vector<std::string> katex_file_names() {
+  std::vector<std::string> names;
+  if (!std::filesystem::exists(katex_source / "katex.min.js") || !std::filesystem::exists(katex_source / "katex.min.css")) return names;
+  names = {"katex/katex.min.css", "katex/katex.min.js"};
+  std::error_code ignored;
+  for (const auto& font : std::filesystem::directory_iterator(katex_source / "fonts", ignored)) {
+    if (font.path().extension() == ".woff2") names.push_back("katex/fonts/" + font.path().filename().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
 
 plot_outcome write_report_directory(const std::filesystem::path& dir, const std::vector<section_result>& sections,
                                     const std::function<report_documents(const plot_outcome&)>& documents) {
@@ -183,7 +190,7 @@ plot_outcome write_report_directory(const std::filesystem::path& dir, const std:
     write_file(staging / "report.json", docs.report.dump(2) + "\n");
     write_file(staging / "report.md", docs.markdown);
     write_file(staging / "report.html", render_report_html(docs.markdown, docs.title));
-    copy_katex(staging / "katex");
+    copy_katex(staging);
     if (!docs.junit.empty()) write_file(staging / "report.junit.xml", docs.junit);
     for (const auto& [name, content] : docs.extra_files) {
       std::filesystem::create_directories((staging / name).parent_path());

@@ -44,6 +44,11 @@ void prepare_output_directory(const std::filesystem::path& dir);
 /// (.csv, .dat, .gp, .svg, .png).
 bool holds_only_a_report(const std::filesystem::path& dir);
 
+/// The files of Debian's KaTeX that write_report_directory copies beside report.html (katex/: the
+/// script, its stylesheet, its woff2 fonts), relative to the report directory, sorted; none where
+/// libjs-katex is not installed (the page then shows its TeX as code).
+std::vector<std::string> katex_file_names();
+
 /// The version of the cmark-gfm library that renders report.html ("0.29.0.gfm.6").
 std::string cmark_gfm_version();
 
