@@ -231,6 +231,28 @@ TEST(ChangedSentence, AWordDecidedVerdictSaysItIsLexical) {
   }
 }
 
+// The rewordings a referee asked for: qm-not-affine says what the sentence can mean (q_m is not the
+// midpoint (q_l + q_r)/2 for h > 0); phi3-explicit names Phi3's one denominator once (m h^2 omega^2 +
+// 24 m is the same one) and no longer says an equation is solved at each step.
+TEST(ChangedSentence, TheWordingFindingsSayWhatHolds) {
+  const run_context ctx{{precision::parse("double")}, 20230830, 2, nullptr};
+  const claim_result affine = check_claim(paper_book().find("qm-not-affine"), ctx);
+  EXPECT_EQ(affine.outcome, verdict::erratum);
+  EXPECT_NE(affine.correction.find("for h > 0 it is not its value at h = 0, (q_l+q_r)/(2), but (-8)/(h^2*omega^2-8) times it"), std::string::npos)
+      << affine.correction;
+  const claim_result explicit_map = check_claim(paper_book().find("phi3-explicit"), ctx);
+  EXPECT_EQ(explicit_map.outcome, verdict::erratum);
+  EXPECT_NE(explicit_map.correction.find("the denominator h^2*omega^2+24 (up to factors free of h)"), std::string::npos) << explicit_map.correction;
+  EXPECT_EQ(explicit_map.correction.find("at each step (an"), std::string::npos) << explicit_map.correction;
+  EXPECT_NE(explicit_map.correction.find("not at each step"), std::string::npos) << explicit_map.correction;
+  const claim_result modulus = check_claim(paper_book().find("root-modulus-criterion"), ctx);
+  EXPECT_NE(modulus.note.find("for h*omega in (0, 2 sqrt(2)) the roots are conjugate, simple, of modulus 1: stable by the root condition, unstable by "
+                              "'smaller than 1'"),
+            std::string::npos)
+      << modulus.note;
+  EXPECT_NE(modulus.note.find("read literally, 'smaller than 1' calls the scheme stable for no h*omega > 0"), std::string::npos) << modulus.note;
+}
+
 TEST(ChangedSentence, ExplicitForNonlinearProblemsIsStillAnErratum) {
   // "nonlinear" is not a restriction to linear problems: the words are wrong in substance, not wording.
   const paper_reading reading = altered_reading("explicit, and  symplectic", "explicit for nonlinear problems too, and symplectic");

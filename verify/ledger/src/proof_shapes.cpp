@@ -109,7 +109,11 @@ const std::map<std::string, proof_shape>& proof_shapes() {
     add({"linear", "the sentence's {linearity} (linear, or not linear) is what the expression is in the variables: e = sum of v_i e(unit v_i)", "expression",
          with_where({{"expression", argument_kind::formula, true, "the printed expression"},
                      {"variables", argument_kind::symbols, true, "the variables it is linear in, or not"},
-                     pattern_with_hole("sentence", "the sentence's pattern: the hole {linearity}, 'linear' or 'not linear'", "linearity")}),
+                     pattern_with_hole("sentence", "the sentence's pattern: the hole {linearity}, 'linear' or 'not linear'", "linearity"),
+                     {"positive", argument_kind::symbols, false,
+                      "the symbol the sentence's condition makes positive ('if h > 0'): a wording erratum then says what holds, that "
+                      "for it > 0 the expression is not its value at 0",
+                      1}}),
          linear_shape});
     add({"conserved", "function(map y) = function(y), y the state", "function",
          with_where({{"map", argument_kind::matrix, true, "a one-step map"},

@@ -289,7 +289,15 @@ claim_result identity_verdict(const shape_call& call, shape_reader& read, const 
   } else {
     result.outcome = when_false;
     result.correction = correction;
-    result.note = "As printed: " + what + " is false; " + text_of(lhs) + " − (" + text_of(rhs) + ") = " + text_of(difference) + " ≠ 0.";
+    // The difference in the note when a reader can take it in; a long one (a 600-character
+    // polynomial) goes to the evidence, and the note says where.
+    const std::string shown = text_of(lhs) + " − (" + text_of(rhs) + ") = " + text_of(difference) + " ≠ 0";
+    if (shown.size() <= 240) {
+      result.note = "As printed: " + what + " is false; " + shown + ".";
+    } else {
+      result.note = "As printed: " + what + " is false: the two sides differ (lhs − rhs in the evidence, exact.difference).";
+      result.evidence["exact"]["difference"] = shown;
+    }
     if (!own_decided) result.note += " Our kernel could not decide it (" + own.evidence + "): GiNaC's proof alone.";
   }
   result.printed = read.printed();

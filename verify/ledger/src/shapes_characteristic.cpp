@@ -440,11 +440,18 @@ claim_result root_criterion_shape(const shape_call& call, const run_context& ctx
   json regions = json::array();
   std::vector<std::string> stable_bands;
   std::vector<proof_goal> goals{decided("reversible", premise->terms.next, premise->terms.previous)};
-  bool agrees = true;
+  bool agrees = true, said_any_stable = false;
+  std::vector<std::string> disagreements;  // where the stated criterion and the root condition differ, in words
+  const auto differ = [&](const std::string& where, const std::string& roots, bool stable) {
+    disagreements.push_back(fmt::format("for {} {} the roots are {}: {} by the root condition, {} by '{}'", var, where, roots, stable ? "stable" : "unstable",
+                                        stable ? "unstable" : "stable", said.words("modulus")));
+  };
   for (const discriminant_region& region : regions_of(*g)) {
     const bool stable = region.negative;
     const bool said_stable = stable ? says_unit_pair : says_real_pair;
     agrees = agrees && said_stable == stable;
+    said_any_stable = said_any_stable || said_stable;
+    if (said_stable != stable) differ("in " + region.text(), stable ? "conjugate, simple, of modulus 1" : "real, rho and 1/rho with rho > 1", stable);
     regions.push_back({{var, region.text()},
                        {"roots", stable ? "conjugate, simple, modulus 1" : "real, rho and 1/rho, rho > 1"},
                        {"root_condition", stable ? "stable" : "unstable"},
@@ -459,6 +466,8 @@ claim_result root_criterion_shape(const shape_call& call, const run_context& ctx
                                     : (g->numerator.evaluate(end.low) < 0) != (g->numerator.evaluate(end.high) < 0);
       if (root) {
         agrees = agrees && !says_double;
+        said_any_stable = said_any_stable || says_double;
+        if (says_double) differ("= " + region.to_text, "a double root of modulus 1", false);
         regions.push_back({{var, region.to_text}, {"roots", "double, modulus 1"}, {"root_condition", "unstable (linear growth)"},
                            {"stated_criterion", says_double ? "stable" : "unstable"}});
       }
@@ -480,7 +489,8 @@ claim_result root_criterion_shape(const shape_call& call, const run_context& ctx
   result.outcome = verdict::erratum;
   result.correction = fmt::format("The scheme is stable when the roots have modulus <= 1 and the roots of modulus 1 are simple (root condition); here they "
                                   "are simple, conjugate and of modulus 1 for {} in {}.", var, fmt::join(stable_bands, " and "));
-  result.note = "As printed, '" + said.words("modulus") + "' and the root condition disagree on a region above.";
+  result.note = fmt::format("As printed, '{}' and the root condition disagree: {}{}.", said.words("modulus"), fmt::join(disagreements, "; "),
+                            said_any_stable ? "" : fmt::format("; read literally, '{}' calls the scheme stable for no {} > 0", said.words("modulus"), var));
   return result;
 }
 

@@ -124,8 +124,9 @@ claim_result explicit_map_shape(const shape_call& call, const run_context& ctx) 
                                          : own.outcome == kernel_decision::result::nonzero ? "is not zero (" + own.evidence + ")"
                                                                                            : "not decided (" + own.evidence + ")"));
       if (GiNaC::is_a<GiNaC::numeric>(den)) continue;
-      // Each denominator once, without its integer content: 2 h² ω² + 48 and 12 h² ω² + 288 are one.
-      const ex primitive = GiNaC::factor(GiNaC::expand(den / GiNaC::expand(den).integer_content()));
+      // Each denominator once, without its content as a polynomial in the step (the factors free of
+      // it): 2 h² ω² + 48, 12 h² ω² + 288 and m h² ω² + 24 m are one.
+      const ex primitive = GiNaC::factor(GiNaC::expand(den).primpart(step));
       const std::string text = text_of(primitive);
       if (std::find(denominators.begin(), denominators.end(), text) != denominators.end()) continue;
       denominators.push_back(text);
@@ -156,9 +157,12 @@ claim_result explicit_map_shape(const shape_call& call, const run_context& ctx) 
     return result;
   }
   const std::string computed = polynomial ? fmt::format("The scheme is explicit: every entry of ({}) is a polynomial in {}", map_ref, step.get_name())
-                                          : fmt::format("The scheme is implicit: the entries of ({}) have the denominator(s) {}, which depend on {}: "
-                                                        "the inverse of an equation solved at each step (an explicit scheme's map is a polynomial in {})",
-                                                        map_ref, fmt::join(denominators, ", "), step.get_name(), step.get_name());
+                                          : fmt::format("The scheme is implicit as a method: the entries of ({}) have the denominator{} {} (up to "
+                                                        "factors free of {}), which depend{} on {}, and an explicit scheme's map on a linear problem is a "
+                                                        "polynomial in {}. A denominator in {} is what solving the step's equation leaves; on this linear "
+                                                        "problem that equation is linear and solved once, in closed form, not at each step",
+                                                        map_ref, denominators.size() == 1 ? "" : "s", fmt::join(denominators, ", "), step.get_name(),
+                                                        denominators.size() == 1 ? "s" : "", step.get_name(), step.get_name(), step.get_name());
   if ((stated == "explicit") == polynomial) {
     result.outcome = verdict::holds;
     result.note = computed + ".";

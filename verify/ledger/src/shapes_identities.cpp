@@ -381,6 +381,19 @@ claim_result linear_shape(const shape_call& call, const run_context& ctx) {
     result.outcome = verdict::erratum;
     result.correction = computed;
     result.note = fmt::format("Wording: the sentence says '{}'.", said.words("linearity"));
+    // What the words can mean under their condition ("if h > 0"): the expression is not its value at
+    // h = 0 (GiNaC: the ratio of the two, in normal form).
+    if (linear && stated != "linear" && read.has("positive")) {
+      const GiNaC::symbol s = read.symbols("positive").front();
+      const ex at_zero = GiNaC::normal(GiNaC::normal(e).subs(s == 0));
+      if (!at_zero.is_zero() && !normal_difference(e, at_zero).is_zero()) {
+        result.note += fmt::format(" What holds for {} > 0: ({}) is not its value at {} = 0, {}, but {} times it", s.get_name(), expression_ref,
+                                   s.get_name(), text_of(at_zero), text_of(GiNaC::factor(GiNaC::normal(e / at_zero))));
+        result.correction += fmt::format("; for {} > 0 it is not its value at {} = 0, {}, but {} times it", s.get_name(), s.get_name(),
+                                         text_of(at_zero), text_of(GiNaC::factor(GiNaC::normal(e / at_zero))));
+        result.evidence["positive"] = {{"at_zero", text_of(at_zero)}, {"ratio", text_of(GiNaC::factor(GiNaC::normal(e / at_zero)))}};
+      }
+    }
   }
   return result;
 }
