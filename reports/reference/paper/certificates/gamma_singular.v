@@ -1,4 +1,4 @@
-(* Certificate of claim gamma-singular: det Gamma vanishes when alpha delta - beta gamma = 1.
+(* Certificate of claim gamma-singular: Read as the derivation needs it: the printed system Gamma is singular when alpha delta - beta gamma = 1. (The sentence says that "this expression", the printed product, vanishes there: literally true, its first factor being alpha delta - beta gamma - 1; what the derivation uses is that Gamma itself is singular, a consequence of gamma-system.)
    Written by simpson-verify from the expressions its GiNaC kernel proved; check with coqc. *)
 Require Import Reals Field Lra Psatz.
 Open Scope R_scope.

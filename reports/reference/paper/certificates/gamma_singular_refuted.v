@@ -1,4 +1,4 @@
-(* Refutation of claim gamma-singular as printed: det Gamma vanishes when alpha delta - beta gamma = 1.
+(* Refutation of claim gamma-singular as printed: Read as the derivation needs it: the printed system Gamma is singular when alpha delta - beta gamma = 1. (The sentence says that "this expression", the printed product, vanishes there: literally true, its first factor being alpha delta - beta gamma - 1; what the derivation uses is that Gamma itself is singular, a consequence of gamma-system.)
    The printed identity, for all values under its hypotheses, is false: each lemma is its negation,
    shown at one point where the two sides differ. Written by simpson-verify from the expressions
    its GiNaC kernel compared; check with coqc. *)

@@ -27,20 +27,3 @@ Proof.
   assert (0 < (((h ^ 2) * (omega ^ 2)) + 24)) by nra.
   nra.
 Qed.
-
-Lemma phi3_explicit_denominator_2 :
-  forall h m omega : R,
-  0 < m ->
-  0 < h ->
-  0 < h ->
-  0 < m ->
-  0 < omega ->
-  0 < ((-1) * (((-1) * (h ^ 2) * (omega ^ 2)) + (-24)) * m).
-Proof.
-  intros.
-  assert (0 <= (h * omega) ^ 2) by apply pow2_ge_0.
-  assert (0 < (((h ^ 2) * (omega ^ 2)) + 24)) by nra.
-  assert (0 < m) by nra.
-  assert (0 < ((((h ^ 2) * (omega ^ 2)) + 24) * m)) by (apply Rmult_lt_0_compat; assumption).
-  nra.
-Qed.
