@@ -154,7 +154,7 @@ TEST(PaperReading, TheStabilityBandIsReadFromTheDisplay) {
   EXPECT_EQ(verdict_of("roots-product-one", paper), verdict::holds);
   const run_context ctx{{precision::parse("double")}, 20230830, 2, &paper};
   const claim_result r = check_claim(paper_book().find("discriminant-negative"), ctx);
-  EXPECT_EQ(r.evidence.at("exact").at("statement"), "the factors of (after:can be factorized) on 0 < h*omega < 2") << r.evidence.at("exact").dump();
+  EXPECT_EQ(r.evidence.at("exact").at("statement"), "the factors of (the display after 'can be factorized') on 0 < h*omega < 2") << r.evidence.at("exact").dump();
   // Printed as 0 < omega h < pi: no rational band, so the signs on it are not decided (our kernel
   // compares ends exactly).
   const paper_reading irrational = read_paper(altered("\\label{stabilite}", "2 \\, \\sqrt{2}", "\\pi"));

@@ -491,7 +491,7 @@ TEST_F(ShapesOnADocument, Proportional) {
   EXPECT_EQ(wrong.outcome, verdict::erratum) << wrong.note;
   EXPECT_NE(wrong.evidence.at("exact").at("own").get<std::string>().find("fails: the coefficients of p^2 and q^2"), std::string::npos)
       << wrong.evidence.dump();
-  EXPECT_EQ(wrong.correction.rfind("the multiple of (inline:and not) with the coefficient of p^2 that (energy) prints: ", 0), 0u) << wrong.correction;
+  EXPECT_EQ(wrong.correction.rfind("the multiple of (the formula at 'and not') with the coefficient of p^2 that (energy) prints: ", 0), 0u) << wrong.correction;
   const GiNaC::ex m = paper_symbols()["m"], w = paper_symbols()["omega"], q = paper_symbols()["q"], p = paper_symbols()["p"];
   const GiNaC::ex z = 1 - w * w * h * h / 2, c = 1 / (2 * m) / (-z / 2);
   EXPECT_EQ(wrong.evidence.at("corrected").at("multiple").get<std::string>(),
@@ -1020,7 +1020,7 @@ TEST_F(ShapesOnADocument, Solves) {
   EXPECT_EQ(run("solves", R"({ equation = "balance:lhs", unknown = ['q'], solution = '$\frac{2}{k}$' })").outcome, verdict::holds);
   const claim_result wrong = run("solves", R"({ equation = "balance:lhs", unknown = ['q'], solution = '$\frac{1}{k}$' })");
   EXPECT_EQ(wrong.outcome, verdict::erratum);
-  EXPECT_EQ(wrong.correction, "as derived from (balance:lhs): q = (2)/(k)");
+  EXPECT_EQ(wrong.correction, "as derived from (balance, left side): q = (2)/(k)");
   // Not linear in the unknown: no solution to correct it with, so a wrong one fails.
   EXPECT_EQ(run("solves", R"({ equation = "square:lhs", unknown = ['q'], solution = '$2$' })").outcome, verdict::holds);
   EXPECT_EQ(run("solves", R"({ equation = "square:lhs", unknown = ['q'], solution = '$3$' })").outcome, verdict::fails);
@@ -1029,7 +1029,7 @@ TEST_F(ShapesOnADocument, Solves) {
   // would pass it.
   const claim_result removable = run("solves", R"({ equation = "removable:lhs", unknown = ['x'], solution = '$1$' })");
   EXPECT_EQ(removable.outcome, verdict::fails) << removable.evidence.dump();
-  EXPECT_EQ(removable.note, "As printed: (removable:lhs) at x = ($1$) is undefined: the denominator x-1 is 0 there.");
+  EXPECT_EQ(removable.note, "As printed: (removable, left side) at x = ($1$) is undefined: the denominator x-1 is 0 there.");
   EXPECT_EQ(run("solves", R"({ equation = "removable:lhs", unknown = ['x'], solution = '$2$' })").outcome, verdict::fails);  // 1, not 0
   EXPECT_EQ(run("solves", R"({ equation = "pole:lhs", unknown = ['x'], solution = '$1$' })").outcome, verdict::fails);
 }
@@ -1102,7 +1102,7 @@ TEST_F(ShapesOnADocument, Characteristic) {
   EXPECT_FALSE(holds.certificate.empty());
   const claim_result misprinted = run("characteristic", "{ " + scheme + R"(, printed = "inline:Misprinted:lhs", unprinted = ['c'] })");
   EXPECT_EQ(misprinted.outcome, verdict::erratum);
-  EXPECT_EQ(misprinted.correction, "as derived from (sv:lhs), scaled to the printed r^2 coefficient: (1) r^2 + (h^2*omega^2-2) r + (1)");
+  EXPECT_EQ(misprinted.correction, "as derived from (sv, left side), scaled to the printed r^2 coefficient: (1) r^2 + (h^2*omega^2-2) r + (1)");
   EXPECT_EQ(run("characteristic", "{ " + scheme + R"(, printed = "inline:With the constant:lhs" })").outcome, verdict::erratum);
   // c named unprinted but printed as a number: not one whole coefficient of the polynomial.
   const claim_result no_hole = run("characteristic", "{ " + scheme + R"(, printed = "inline:With the constant:lhs", unprinted = ['c'] })");
@@ -1130,11 +1130,11 @@ TEST_F(ShapesOnADocument, Discriminant) {
   const claim_result wrong = run("discriminant", R"({ printed = 'inline:not $\Delta', definition = "inline:its discriminant", )" + common + " }");
   EXPECT_EQ(wrong.outcome, verdict::erratum) << wrong.note;
   EXPECT_NE(wrong.evidence.at("exact").at("own").get<std::string>().find("fails"), std::string::npos) << wrong.evidence.dump();
-  EXPECT_EQ(wrong.correction, "as derived: (inline:its discriminant) = 1");
+  EXPECT_EQ(wrong.correction, "as derived: (the formula at 'its discriminant') = 1");
   // The printed definition is read: b^2 - 2ac is not the polynomial's discriminant, whatever value follows.
   const claim_result misdefined = run("discriminant", R"({ printed = 'inline:is $\Delta = 1', definition = "inline:misdefined", )" + common + " }");
   EXPECT_EQ(misdefined.outcome, verdict::erratum) << misdefined.note;
-  EXPECT_EQ(misdefined.correction.rfind("the discriminant of (inline:Written:lhs) is ", 0), 0u) << misdefined.correction;
+  EXPECT_EQ(misdefined.correction.rfind("the discriminant of (the formula at 'Written', left side) is ", 0), 0u) << misdefined.correction;
   // Without a printed definition: b^2 - 4ac of the printed polynomial.
   EXPECT_EQ(run("discriminant", R"({ printed = 'inline:is $\Delta = 1', )" + common + " }").outcome, verdict::holds);
 }

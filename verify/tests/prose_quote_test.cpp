@@ -253,6 +253,17 @@ TEST(ChangedSentence, TheWordingFindingsSayWhatHolds) {
   EXPECT_NE(modulus.note.find("read literally, 'smaller than 1' calls the scheme stable for no h*omega > 0"), std::string::npos) << modulus.note;
 }
 
+// The abstract's "approximate energy": H_d = H + m omega^6 h^4 q^2/(72 (8 - omega^2 h^2)) holds as
+// printed; with H_d's 1/24 printed 1/25 it does not (an erratum, the derived right side its correction).
+TEST(ChangedFormula, TheApproximateEnergyIsTheEnergyPlusAnOrderFourTerm) {
+  const run_context printed_ctx{{precision::parse("double")}, 20230830, 2, nullptr};
+  EXPECT_EQ(check_claim(paper_book().find("approximate-energy"), printed_ctx).outcome, verdict::holds);
+  EXPECT_EQ(check_claim(paper_book().find("approximate-energy-sign"), printed_ctx).outcome, verdict::holds);
+  const paper_reading reading = altered_reading("\\Big(1 - {{\\omega^2 \\, h^2}\\over24} \\Big) \\, q^2", "\\Big(1 - {{\\omega^2 \\, h^2}\\over25} \\Big) \\, q^2");
+  const claim_result r = check_claim(paper_book().find("approximate-energy"), run_context{{precision::parse("double")}, 20230830, 2, &reading});
+  EXPECT_EQ(r.outcome, verdict::erratum) << r.note;
+}
+
 TEST(ChangedSentence, ExplicitForNonlinearProblemsIsStillAnErratum) {
   // "nonlinear" is not a restriction to linear problems: the words are wrong in substance, not wording.
   const paper_reading reading = altered_reading("explicit, and  symplectic", "explicit for nonlinear problems too, and symplectic");

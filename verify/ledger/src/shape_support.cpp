@@ -2,6 +2,8 @@
 
 #include "shape_support.hpp"
 
+#include <simpson/verify/formula_reference.hpp>
+
 #include "coq_export.hpp"
 #include "kernel_zero.hpp"
 #include "printed_check_support.hpp"
@@ -357,6 +359,27 @@ std::optional<GiNaC::numeric> index_offset(const std::string& name, const std::s
   return rest[0] == '-' ? -k : k;
 }
 
-std::string reference_of(const shape_call& call, const std::string& parameter) { return call.with.at(parameter).values.front(); }
+std::string reference_of(const shape_call& call, const std::string& parameter) {
+  // A reference as a reader names it, not in the claims file's syntax: "Phi3", "Phi3, equation 2,
+  // left side", "the formula at 'The discriminant'", "the display after 'with a matrix'".
+  const std::string& text = call.with.at(parameter).values.front();
+  formula_reference r;
+  try {
+    r = parse_reference(text);
+  } catch (const std::invalid_argument&) {
+    return text;
+  }
+  std::string out;
+  switch (r.where) {
+    case formula_reference::kind::labelled: out = r.key; break;
+    case formula_reference::kind::inline_formula: out = "the formula at '" + r.key + "'"; break;
+    case formula_reference::kind::display_after: out = "the display after '" + r.key + "'"; break;
+    case formula_reference::kind::literal: return text;
+  }
+  if (r.equation > 1) out += ", equation " + std::to_string(r.equation);
+  if (r.side == 1) out += ", left side";
+  else if (r.side > 1) out += ", side " + std::to_string(r.side);
+  return out;
+}
 
 }  // namespace simpson::verify::detail

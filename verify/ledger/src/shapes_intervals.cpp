@@ -254,7 +254,11 @@ claim_result sign_on_interval_shape(const shape_call& call, const run_context& c
          for (const positive_root& e : g->ends) all.push_back(g->text(e));
          return all;
        }()},
-      {"interval_end", fmt::format("{} = {} (exact)", g->in_square ? "c^2" : "c", c->str())}};
+      {"interval_end", fmt::format("{} = {} (exact)", g->in_square ? "c^2" : "c", c->str())},
+      {"own", std::string(!inside && sign == want ? "holds" : "fails") + ": our kernel's Sturm sequences, no root or pole of the function of " + var +
+                  " inside, and its sign at a point inside"},
+      {"ginac", "holds: the expression reduced to a function of " + var + " alone, " + text_of(g->of_t.subs(g->t == v)) +
+                    " (normal form); the sign is our kernel's"}};
   // Coq: the sign on the printed interval (holds), or the correction's: the sign found on (0, c),
   // or on (0, r) up to the first root or pole r when it is rational.
   if (!inside && sign == want) {
@@ -433,7 +437,10 @@ claim_result sign_iff_shape(const shape_call& call, const run_context& ctx) {
          return all;
        }()},
       {"interval_end", fmt::format("{} = {} (exact)", g->in_square ? "c^2" : "c", c->str())},
-      {"own", "our kernel's Sturm sequences: every positive root and pole, the sign probed between them"}};
+      {"own", std::string(holds ? "holds" : "fails") + ": our kernel's Sturm sequences, every positive root and pole of the function of " + var +
+                  ", the sign probed between them"},
+      {"ginac", "holds: the expression reduced to a function of " + var + " alone, " + text_of(g->of_t.subs(g->t == v)) +
+                    " (normal form); the bands are our kernel's"}};
   std::vector<proof_goal> goals;
   if (first_is_printed) goals.push_back(g->sign_goal_on("sign_before", want, *c));
   for (std::size_t k = 1; k < bands.size(); ++k) {
