@@ -1,5 +1,7 @@
 #include <simpson/partitioned_runge_kutta.hpp>
 
+#include <simpson/explicit_runge_kutta.hpp>
+
 #include <simpson/newmark_map.hpp>
 #include <simpson/runge_kutta_tableaux.hpp>
 #include <simpson/stormer_verlet.hpp>
@@ -54,6 +56,38 @@ TYPED_TEST(PartitionedRungeKutta, ClassicRk4IsTheTaylorPolynomialOfTheFlow) {
                                          Real(par.h() / par.m() * (1 - x / 6)), Real(1 - x / 2 + x * x / 24)};
     EXPECT_TRUE(same_map(partitioned_runge_kutta_map(par, classic_rk4_tableau<Real>(), classic_rk4_tableau<Real>()), expected, 64));
   }
+}
+
+// The forms the work-precision comparison runs: RK4 by its explicit stages, and the implicit
+// peers with their stage matrix factored once, are the same maps as the stage system solved at
+// every step (exactly, for exact scalars; to a few ulps in floating point). A weaker check (the
+// step applied once to one state) would miss a swapped u and v: both unit states are stepped.
+TYPED_TEST(PartitionedRungeKutta, ExplicitStagesAndFactoredStagesAreTheSameMaps) {
+  using Real = TypeParam;
+  const auto from_steps = [](const auto& step) {
+    const phase_point<Real> a = step(phase_point<Real>{Real(1), Real(0)}), b = step(phase_point<Real>{Real(0), Real(1)});
+    return one_step_matrix<Real>{a.p, b.p, a.q, b.q};
+  };
+  for (const auto& par : test::parameter_cases<Real>()) {
+    const butcher_tableau<Real> rk4 = classic_rk4_tableau<Real>();
+    EXPECT_TRUE(is_explicit(rk4));
+    EXPECT_TRUE(same_map(from_steps([&](const phase_point<Real>& y) { return explicit_runge_kutta_step(par, rk4, y); }),
+                         partitioned_runge_kutta_map(par, rk4, rk4), 64));
+    const std::vector<std::pair<butcher_tableau<Real>, butcher_tableau<Real>>> implicit{
+        {implicit_midpoint_tableau<Real>(), implicit_midpoint_tableau<Real>()},
+        // Gauss–Legendre's shape with 17/10 for √3: the two algorithms agree for any tableau, and
+        // the exact scalars have no √3.
+        {gauss_legendre2_tableau<Real>(Real(17) / 10), gauss_legendre2_tableau<Real>(Real(17) / 10)},
+        {lobatto_iiia3_tableau<Real>(), lobatto_iiib3_tableau<Real>()}};
+    for (const auto& [for_q, for_p] : implicit) {
+      EXPECT_FALSE(is_explicit(for_q));
+      const factored_linear_stages<Real> f = factor_linear_stages(par, for_q, for_p);
+      EXPECT_TRUE(same_map(from_steps([&](const phase_point<Real>& y) { return factored_prk_step(par, for_q, for_p, f, y); }),
+                           partitioned_runge_kutta_map(par, for_q, for_p), 64));
+    }
+  }
+  EXPECT_THROW(explicit_runge_kutta_step(test::parameter_cases<Real>().front(), implicit_midpoint_tableau<Real>(), phase_point<Real>{}),
+               std::invalid_argument);
 }
 
 TEST(PartitionedRungeKutta, SolveLinearPivotsAndRefusesSingularSystems) {

@@ -129,6 +129,54 @@ phase_point<Real> partitioned_runge_kutta_step(const oscillator_parameters<Real>
   return detail::prk_linear_step(par, for_q, for_p, y, M, rhs, Q);
 }
 
+/// The stage system of a linear force, (I + ω²h² A Â) Q = q_j 1 + (h/m) p_j A 1, solved once for
+/// q_j = 1, p_j = 0 (u) and for q_j = 0, p_j = 1 (v): at every step Q = q_j u + p_j v, and no system is
+/// solved. What a user writes for a linear force (its stage matrix is constant: factor it once);
+/// factored_prk_step is then the same map as partitioned_runge_kutta_step.
+template <class Real>
+struct factored_linear_stages {
+  std::vector<Real> u, v;
+};
+
+template <class Real>
+factored_linear_stages<Real> factor_linear_stages(const oscillator_parameters<Real>& par, const butcher_tableau<Real>& for_q,
+                                                  const butcher_tableau<Real>& for_p) {
+  const std::size_t s = for_q.stages();
+  if (s == 0 || for_p.stages() != s) throw std::invalid_argument("simpson::factor_linear_stages: the tableaux must have the same number of stages");
+  const Real x = par.omega2_h2();
+  std::vector<std::vector<Real>> M(s, std::vector<Real>(s, Real(0)));
+  std::vector<Real> ones(s, Real(1)), a_ones(s, Real(0));
+  for (std::size_t i = 0; i < s; ++i) {
+    for (std::size_t k = 0; k < s; ++k) {
+      a_ones[i] += for_q.a[i][k];
+      Real product(0);
+      for (std::size_t l = 0; l < s; ++l) product += for_q.a[i][l] * for_p.a[l][k];
+      M[i][k] = (i == k ? Real(1) : Real(0)) + x * product;
+    }
+    a_ones[i] *= par.h() / par.m();
+  }
+  return {solve_linear(M, ones), solve_linear(M, a_ones)};
+}
+
+/// One step with the stages of factor_linear_stages: Q_k = q_j u_k + p_j v_k, then as
+/// partitioned_runge_kutta_step.
+template <class Real>
+phase_point<Real> factored_prk_step(const oscillator_parameters<Real>& par, const butcher_tableau<Real>& for_q, const butcher_tableau<Real>& for_p,
+                                    const factored_linear_stages<Real>& f, const phase_point<Real>& y) {
+  const std::size_t s = for_q.stages();
+  const Real& m = par.m();
+  const Real& h = par.h();
+  const Real stiffness = m * par.omega() * par.omega();
+  phase_point<Real> next = y;
+  for (std::size_t i = 0; i < s; ++i) {
+    Real P_i = y.p;
+    for (std::size_t k = 0; k < s; ++k) P_i -= h * for_p.a[i][k] * stiffness * (y.q * f.u[k] + y.p * f.v[k]);
+    next.q += h * for_q.b[i] * P_i / m;
+    next.p -= h * for_p.b[i] * stiffness * (y.q * f.u[i] + y.p * f.v[i]);
+  }
+  return next;
+}
+
 /// The one-step matrix of the method: its step applied to (1, 0) and (0, 1) (exact for a linear map).
 template <class Real>
 one_step_matrix<Real> partitioned_runge_kutta_map(const oscillator_parameters<Real>& par, const butcher_tableau<Real>& for_q,

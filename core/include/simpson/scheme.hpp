@@ -5,6 +5,7 @@
 // come from it. A `stepper` advances by the scheme's own algorithm (what a general implementation
 // runs) and gives its one-step matrix on the oscillator.
 
+#include <simpson/explicit_runge_kutta.hpp>
 #include <simpson/newmark_map.hpp>
 #include <simpson/runge_kutta_tableaux.hpp>
 #include <simpson/simpson_elimination.hpp>
@@ -84,26 +85,32 @@ class stepper {
       case scheme_id::simpson_elimination:
       case scheme_id::stormer_verlet: break;
     }
+    // The implicit peers' stage matrix is constant for the linear force: factored once here.
+    if (id == scheme_id::newmark || id == scheme_id::gauss_legendre_2 || id == scheme_id::lobatto_iiia_iiib_3) {
+      stages_ = factor_linear_stages(par_, for_q_, for_p_);
+    }
   }
 
   const scheme_traits& traits() const { return traits_of(id_); }
 
-  /// One step by the scheme's algorithm: Simpson by its explicit one-step map (Phi3), as the paper
-  /// offers it for the oscillator; simpson-elimination by Section 6's elimination of the internal
-  /// node at every step; Newmark as the implicit midpoint rule, Störmer–Verlet and Yoshida by their
-  /// kicks and drifts, the Runge–Kutta peers by their stage equations.
+  /// One step by the scheme's algorithm, as its users write it for this linear force: Simpson by its
+  /// explicit one-step map (Phi3), as the paper offers it for the oscillator; simpson-elimination by
+  /// Section 6's elimination of the internal node at every step; Newmark as the implicit midpoint
+  /// rule, Gauss–Legendre and Lobatto IIIA–IIIB by their stage equations, the constant stage matrix
+  /// factored once (factor_linear_stages); Störmer–Verlet and Yoshida by their kicks and drifts; RK4
+  /// by its four explicit stages.
   phase_point<Real> step(const phase_point<Real>& y) const {
     switch (id_) {
       case scheme_id::simpson: return phi3_ * y;
       case scheme_id::simpson_elimination: return simpson_step_by_elimination(par_, y);
       case scheme_id::stormer_verlet: return stormer_verlet_step(par_, y, par_.h());
       case scheme_id::yoshida: return yoshida_step(par_, weights_, y);
+      case scheme_id::rk4: return explicit_runge_kutta_step(par_, for_q_, y);
       case scheme_id::newmark:
       case scheme_id::gauss_legendre_2:
-      case scheme_id::lobatto_iiia_iiib_3:
-      case scheme_id::rk4: break;
+      case scheme_id::lobatto_iiia_iiib_3: break;
     }
-    return partitioned_runge_kutta_step(par_, for_q_, for_p_, y);
+    return factored_prk_step(par_, for_q_, for_p_, stages_, y);
   }
 
   /// The one-step matrix: (Phi3) and (matrice-symplectique-ordre-2) for the paper's schemes, the
@@ -128,6 +135,7 @@ class stepper {
   butcher_tableau<Real> for_q_, for_p_;
   std::array<Real, 3> weights_{};
   one_step_matrix<Real> phi3_{};
+  factored_linear_stages<Real> stages_{};
 };
 
 }  // namespace simpson
