@@ -206,7 +206,7 @@ section_result run_work_precision(const work_precision_settings& s) {
                  "by their stage equations, whose matrix, constant for this linear force, is factored once; Störmer–Verlet "
                  "and Yoshida their kicks and drifts, RK4 its four explicit stages: each peer as its users write it); "
                  "`matrix` is its own exact 2 × 2 one-step matrix, one product a step, the form the paper gives Φ₃ in. In "
-                 "the matrix form every scheme costs the same per step, so run time against error compares the methods; in "
+                 "the matrix form every scheme costs the same per step, so that panel is error against N, not against cost; in "
                  "the step form it compares the general algorithms. Errors: maxima over all t_j of |q_j − q(t_j)| and "
                  "|p_j − p(t_j)|/(mω), computed in the run's precision; the relative error of H (and of H_d for Simpson) at "
                  "the end, and its largest over the run (at the end of whole periods the state is back near y₀). Above double the error and energy figures are enclosures (MPFI): each iterate, an exact binary "
