@@ -58,6 +58,15 @@ TEST(ReferenceReport, PaperSceneReproducesTheCommittedReport) {
     for (const json& file : plot["files"]) EXPECT_TRUE(std::filesystem::exists(dir / file.get<std::string>())) << file;
   }
   EXPECT_TRUE(std::filesystem::exists(dir / "report.html"));
+  // The referee's summary orders the findings by consequence: the Gamma typo, which breaks two
+  // derivations (gamma-singular, conserved-form follow from it), before any wording finding, and a
+  // typographical slip that breaks nothing last.
+  const std::string md = read(dir / "report.md");
+  const std::size_t summary = md.find("## Referee's summary"), gamma = md.find("- **`gamma-system`**", summary),
+                    wording = md.find("(§abstract, wording)", summary), taylor = md.find("- **`taylor-display`**", summary);
+  ASSERT_NE(summary, std::string::npos);
+  EXPECT_LT(gamma, wording);
+  EXPECT_LT(wording, taylor);
   // The page shows the plots beside it (not embedded: it stays small), and its JUnit is green.
   EXPECT_NE(read(dir / "report.html").find("<img src=\"figure1.svg\""), std::string::npos);
   // Embedded, the plots made the page over 800 KB; the text of every claim's evidence (quoted sentences,

@@ -561,8 +561,8 @@ std::string first_sentence(const std::string& text) {
   return end == std::string::npos ? text : text.substr(0, end + 1);
 }
 
-/// What a referee reads first: the distinct findings about the paper, substantive before
-/// typographical, each in one line, with the consequences counted under their cause.
+/// What a referee reads first: the distinct findings about the paper, ordered by consequence, each
+/// in one line, with the consequences counted under their cause.
 std::string referee_summary_markdown(const run_record& r) {
   const verdict_counts c = count_verdicts(r);
   if (r.outcomes.empty()) return {};
@@ -579,14 +579,37 @@ std::string referee_summary_markdown(const run_record& r) {
                     "their cause. Classes (docs/findings.md): erratum, wording, derivation gap, naming, unverifiable.\n\n",
                     c.distinct, c.distinct == 1 ? "" : "s", the, c.distinct - c.typographical, c.typographical, c.consequences,
                     c.consequences == 1 ? "" : "s");
-  for (const bool typographical : {false, true}) {
+  // Ordered by consequence: a finding that breaks a derivation (other claims follow from it) first,
+  // then wrong results, derivation gaps, wording and naming, what cannot be verified, and last the
+  // typographical slips that break nothing; the ledger's order within each.
+  const auto consequences_of = [&](const claim& k) {
+    std::vector<std::string> out;
+    for (const claim_outcome& other : r.outcomes) {
+      if (cause_of(other) == k.id && is_finding(other.result.outcome)) out.push_back("`" + other.checked->id + "`");
+    }
+    return out;
+  };
+  const auto rank = [&](const claim_outcome& o) {
+    if (!consequences_of(*o.checked).empty()) return 0;
+    if (o.checked->typographical) return 5;
+    switch (finding_of(o)) {
+      case finding::erratum: return 1;
+      case finding::derivation_gap: return 2;
+      case finding::wording:
+      case finding::naming: return 3;
+      case finding::unverifiable: return 4;
+      case finding::none: break;
+    }
+    return 5;
+  };
+  md += "Ordered by consequence: what breaks a derivation first, then wrong results, derivation gaps, wording and naming, what "
+        "cannot be verified, and typographical slips.\n\n";
+  for (int level = 0; level <= 5; ++level) {
     for (const claim_outcome& o : r.outcomes) {
       const claim& k = *o.checked;
-      if (k.origin != claim_origin::paper || !is_finding(o.result.outcome) || !cause_of(o).empty() || k.typographical != typographical) continue;
-      std::vector<std::string> consequences;
-      for (const claim_outcome& other : r.outcomes) {
-        if (cause_of(other) == k.id && is_finding(other.result.outcome)) consequences.push_back("`" + other.checked->id + "`");
-      }
+      const bool typographical = k.typographical;
+      if (k.origin != claim_origin::paper || !is_finding(o.result.outcome) || !cause_of(o).empty() || rank(o) != level) continue;
+      const std::vector<std::string> consequences = consequences_of(k);
       const std::string what = !o.result.correction.empty() ? o.result.correction : first_sentence(o.result.note);
       const bool stops = !what.empty() && what.back() == '.';
       md += fmt::format("- **`{}`** (§{}, {}{}): {}{}{}\n", k.id, markdown_escaped(k.section), to_string(finding_of(o)),
