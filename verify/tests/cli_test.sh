@@ -421,6 +421,11 @@ grep -q '^0 claims' "$work/out" || fail "sections only: claims ran"
 check "unknown section" 2 --sections bogus --out "$work/none-section"
 check "quiet" 0 --claims phi3-det --precisions double --quiet --out "$work/quiet"
 [ "$(wc -l <"$work/out")" = 1 ] && [ ! -s "$work/err" ] || fail "quiet: more than the summary line: $(cat "$work/out" "$work/err")"
+# A selection's report says what was selected, and speaks only for it.
+grep -q '^\*\*A selection\*\*: claims phi3-det only; no sections\. This report judges only what was selected' "$work/quiet/report.md" ||
+  fail "quiet: the selection's report does not say it is one"
+grep -q '^No finding among the 1 claim of this selection; the paper.s other claims were not run\.' "$work/quiet/report.md" ||
+  fail "quiet: the selection's referee summary speaks for the whole paper"
 # An internal error (a check that throws) is exit 3, named, with the report still written.
 SIMPSON_VERIFY_INJECT_FAULT=phi3-det check "internal error" 3 --claims phi3-det,hd-invariance --precisions double --out "$work/fault"
 grep -q 'internal error (a bug in the harness) in phi3-det: injected fault' "$work/err" || fail "internal error: not named: $(cat "$work/err")"

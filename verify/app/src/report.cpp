@@ -574,7 +574,12 @@ std::string referee_summary_markdown(const run_record& r) {
                       : c.harness == 0 ? fmt::format("{} beyond the {}", c.beyond, the)
                                        : fmt::format("{} beyond the {} and {} the harness's own statements", c.beyond, the, c.harness));
   }
-  if (c.distinct + c.consequences == 0) return md + fmt::format("No finding: every claim of the {} checked holds as printed.\n\n", the);
+  if (c.distinct + c.consequences == 0) {
+    return md + (r.run_scene.selection.empty()
+                     ? fmt::format("No finding: every claim of the {} checked holds as printed.\n\n", the)
+                     : fmt::format("No finding among the {} claim{} of this selection; the {}'s other claims were not run.\n\n", r.outcomes.size(),
+                                   r.outcomes.size() == 1 ? "" : "s", the));
+  }
   md += fmt::format("**{} distinct finding{}** about the {} ({} substantive, {} typographical), and {} consequence{} counted under "
                     "their cause. Classes (docs/findings.md): erratum, wording, derivation gap, naming, unverifiable.\n\n",
                     c.distinct, c.distinct == 1 ? "" : "s", the, c.distinct - c.typographical, c.typographical, c.consequences,
@@ -670,6 +675,11 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
   md += fmt::format("# simpson-verify report: scene `{}`{}\n\n", r.run_scene.name,
                     r.run_scene.selection.empty() ? "" : ": " + r.run_scene.selection);
   if (!r.run_scene.description.empty()) md += markdown_escaped(r.run_scene.description) + "\n\n";
+  if (!r.run_scene.selection.empty()) {
+    md += fmt::format("**A selection**: {}. This report judges only what was selected; the scene's other claims and sections were "
+                      "not run, and nothing here speaks for them.\n\n",
+                      markdown_escaped(r.run_scene.selection));
+  }
   md += fmt::format("**{}**\n\n{}\n\n", markdown_escaped(summary_line(r)), markdown_escaped(expectation_line(r)));
   md += referee_summary_markdown(r);
   {
