@@ -67,6 +67,11 @@ TEST(ReferenceReport, PaperSceneReproducesTheCommittedReport) {
   ASSERT_NE(summary, std::string::npos);
   EXPECT_LT(gamma, wording);
   EXPECT_LT(wording, taylor);
+  // The claims table quotes the display a record names: reduced-lagrangian compares (LLhh) with
+  // (Lagrangien-reduit) and is about the latter.
+  const std::size_t row = md.find("| [reduced-lagrangian](#reduced-lagrangian) |");
+  ASSERT_NE(row, std::string::npos);
+  EXPECT_NE(md.substr(row, md.find('\n', row) - row).find("`L_h^r (q_\\ell"), std::string::npos) << md.substr(row, 300);
   // The page shows the plots beside it (not embedded: it stays small), and its JUnit is green.
   EXPECT_NE(read(dir / "report.html").find("<img src=\"figure1.svg\""), std::string::npos);
   // Embedded, the plots made the page over 800 KB; the text of every claim's evidence (quoted sentences,

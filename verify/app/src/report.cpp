@@ -69,14 +69,25 @@ struct verdict_counts {
 constexpr std::size_t said_cut = 140;
 
 /// The paper's own words for a claim, for the claims table: the first sentence it quoted, or the
-/// first display it read (its TeX, cut), with the line; a typed claim's record statement.
+/// display its record names (else the first it read; its TeX, cut), with the line; a typed claim's
+/// record statement.
 std::string what_the_paper_says(const claim_outcome& o) {
   if (!o.result.quoted.empty() && o.result.quoted.front().value("found", false)) {
     const json& q = o.result.quoted.front();
     return "“" + markdown_cell(q.value("text", "")) + "” (line " + std::to_string(q.value("line", 0)) + ")";
   }
   if (o.result.printed.is_object() && o.result.printed.contains("formulas") && !o.result.printed["formulas"].empty()) {
-    const json& f = o.result.printed["formulas"].front();
+    // The display the record names (its `equation`) when the claim read it, else the first read: a
+    // claim that compares two displays is about the one its record names.
+    const json& formulas = o.result.printed["formulas"];
+    const json* named = &formulas.front();
+    for (const json& candidate : formulas) {
+      if (candidate.value("label", "") == "label " + o.checked->equation) {
+        named = &candidate;
+        break;
+      }
+    }
+    const json& f = *named;
     std::string tex = f.value("tex", "");
     if (tex.size() > said_cut) {
       std::size_t cut = said_cut;
