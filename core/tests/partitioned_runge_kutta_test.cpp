@@ -79,7 +79,9 @@ TYPED_TEST(PartitionedRungeKutta, ExplicitStagesAndFactoredStagesAreTheSameMaps)
         // the exact scalars have no √3.
         {gauss_legendre2_tableau<Real>(Real(17) / 10), gauss_legendre2_tableau<Real>(Real(17) / 10)},
         {lobatto_iiia3_tableau<Real>(), lobatto_iiib3_tableau<Real>()}};
-    for (const auto& [for_q, for_p] : implicit) {
+    for (const auto& pair : implicit) {
+      const butcher_tableau<Real>& for_q = pair.first;  // named, not a structured binding: C++17 lambdas cannot capture one
+      const butcher_tableau<Real>& for_p = pair.second;
       EXPECT_FALSE(is_explicit(for_q));
       const factored_linear_stages<Real> f = factor_linear_stages(par, for_q, for_p);
       EXPECT_TRUE(same_map(from_steps([&](const phase_point<Real>& y) { return factored_prk_step(par, for_q, for_p, f, y); }),
