@@ -11,6 +11,7 @@
 #include <array>
 #include <cstddef>
 #include <stdexcept>
+#include <utility>
 
 namespace simpson {
 
@@ -25,16 +26,31 @@ bool is_explicit(const butcher_tableau<Real>& t) {
   return true;
 }
 
-/// One step of the explicit method `t` (at most 4 stages) on q' = p/m, p' = −m ω² q:
+/// An explicit tableau of at most 4 stages, checked once when made (not at every step): what
+/// explicit_runge_kutta_step runs. Throws std::invalid_argument for an implicit tableau or more than
+/// 4 stages.
+template <class Real>
+class explicit_tableau {
+ public:
+  explicit_tableau() = default;  // no stages: a step leaves the state as it is
+  explicit explicit_tableau(butcher_tableau<Real> t) : t_(std::move(t)) {
+    if (t_.stages() == 0 || t_.stages() > 4) throw std::invalid_argument("simpson::explicit_tableau: 1 to 4 stages");
+    if (!is_explicit(t_)) throw std::invalid_argument("simpson::explicit_tableau: an implicit tableau");
+  }
+  const butcher_tableau<Real>& tableau() const noexcept { return t_; }
+
+ private:
+  butcher_tableau<Real> t_;
+};
+
+/// One step of the explicit method `e` on q' = p/m, p' = −m ω² q:
 ///   Y_i = y_j + h Σ_{k<i} a_ik K_k,  K_i = f(Y_i) = (−m ω² Y_i.q, Y_i.p / m),  y_{j+1} = y_j + h Σ_i b_i K_i.
 /// The same map as partitioned_runge_kutta_step with the same tableau for q and p (whose system is
-/// then triangular), by the stages instead of a solve. Throws std::invalid_argument for an implicit
-/// tableau or more than 4 stages.
+/// then triangular), by the stages instead of a solve.
 template <class Real>
-phase_point<Real> explicit_runge_kutta_step(const oscillator_parameters<Real>& par, const butcher_tableau<Real>& t, const phase_point<Real>& y) {
+phase_point<Real> explicit_runge_kutta_step(const oscillator_parameters<Real>& par, const explicit_tableau<Real>& e, const phase_point<Real>& y) {
+  const butcher_tableau<Real>& t = e.tableau();
   const std::size_t s = t.stages();
-  if (s == 0 || s > 4) throw std::invalid_argument("simpson::explicit_runge_kutta_step: 1 to 4 stages");
-  if (!is_explicit(t)) throw std::invalid_argument("simpson::explicit_runge_kutta_step: an implicit tableau");
   const Real stiffness = par.m() * par.omega() * par.omega();
   const Real& h = par.h();
   std::array<phase_point<Real>, 4> K{};

@@ -158,21 +158,24 @@ factored_linear_stages<Real> factor_linear_stages(const oscillator_parameters<Re
   return {solve_linear(M, ones), solve_linear(M, a_ones)};
 }
 
-/// One step with the stages of factor_linear_stages: Q_k = q_j u_k + p_j v_k, then as
+/// One step with the stages of factor_linear_stages (at most 4): Q_k = q_j u_k + p_j v_k, then as
 /// partitioned_runge_kutta_step.
 template <class Real>
 phase_point<Real> factored_prk_step(const oscillator_parameters<Real>& par, const butcher_tableau<Real>& for_q, const butcher_tableau<Real>& for_p,
                                     const factored_linear_stages<Real>& f, const phase_point<Real>& y) {
   const std::size_t s = for_q.stages();
+  if (s > 4) throw std::invalid_argument("simpson::factored_prk_step: at most 4 stages");
   const Real& m = par.m();
   const Real& h = par.h();
   const Real stiffness = m * par.omega() * par.omega();
+  std::array<Real, 4> Q{};  // the stages, once per step (no allocation)
+  for (std::size_t k = 0; k < s; ++k) Q[k] = y.q * f.u[k] + y.p * f.v[k];
   phase_point<Real> next = y;
   for (std::size_t i = 0; i < s; ++i) {
     Real P_i = y.p;
-    for (std::size_t k = 0; k < s; ++k) P_i -= h * for_p.a[i][k] * stiffness * (y.q * f.u[k] + y.p * f.v[k]);
+    for (std::size_t k = 0; k < s; ++k) P_i -= h * for_p.a[i][k] * stiffness * Q[k];
     next.q += h * for_q.b[i] * P_i / m;
-    next.p -= h * for_p.b[i] * stiffness * (y.q * f.u[i] + y.p * f.v[i]);
+    next.p -= h * for_p.b[i] * stiffness * Q[i];
   }
   return next;
 }

@@ -79,7 +79,10 @@ class stepper {
         for_q_ = lobatto_iiia3_tableau<Real>();
         for_p_ = lobatto_iiib3_tableau<Real>();
         break;
-      case scheme_id::rk4: for_q_ = for_p_ = classic_rk4_tableau<Real>(); break;
+      case scheme_id::rk4:
+        for_q_ = for_p_ = classic_rk4_tableau<Real>();
+        explicit_ = explicit_tableau<Real>(for_q_);
+        break;
       case scheme_id::yoshida: weights_ = yoshida_weights<Real>(); break;
       case scheme_id::simpson: phi3_ = simpson_map(par); break;
       case scheme_id::simpson_elimination:
@@ -105,7 +108,7 @@ class stepper {
       case scheme_id::simpson_elimination: return simpson_step_by_elimination(par_, y);
       case scheme_id::stormer_verlet: return stormer_verlet_step(par_, y, par_.h());
       case scheme_id::yoshida: return yoshida_step(par_, weights_, y);
-      case scheme_id::rk4: return explicit_runge_kutta_step(par_, for_q_, y);
+      case scheme_id::rk4: return explicit_runge_kutta_step(par_, explicit_, y);
       case scheme_id::newmark:
       case scheme_id::gauss_legendre_2:
       case scheme_id::lobatto_iiia_iiib_3: break;
@@ -136,6 +139,7 @@ class stepper {
   std::array<Real, 3> weights_{};
   one_step_matrix<Real> phi3_{};
   factored_linear_stages<Real> stages_{};
+  explicit_tableau<Real> explicit_{};
 };
 
 }  // namespace simpson

@@ -214,14 +214,27 @@ std::optional<exact_start> table1_exact_start(const convention_candidate& c) {
   return exact_start{m->num, m->den, A->num, A->den, A->pi_power, phase->second == "π/2"};
 }
 
+std::optional<exact_start> table1_reproducing_start(const convention_search_result& r) {
+  return r.simplest() != nullptr ? table1_exact_start(*r.simplest()) : std::nullopt;
+}
+
+std::vector<std::string> table1_departures(const convention_candidate& c) {
+  std::vector<std::string> departures;
+  for (const discrete_convention& d : table1_discrete_conventions()) {
+    if (c.choice.at(d.name) != d.stated) departures.push_back(d.name + ": " + c.choice.at(d.name));
+  }
+  return departures;
+}
+
 std::string table1_start(const convention_candidate& c) {
   const auto name = [&](const std::string& p) {
     const auto it = c.value_names.find(p);
     return it != c.value_names.end() ? it->second : fmt::format("{:.6g}", c.values.at(p));
   };
   const std::string A = name("amplitude"), m = name("m");
-  const double phase = c.values.at("phase"), pi = boost::math::constants::pi<double>();
-  if (std::abs(phase - pi / 2) < 1e-15) return fmt::format("released from rest at q₀ = {}, p₀ = 0, m = {} (q(t) = {} cos ωt)", A, m, A);
+  // The two simple phases are exactly 0 and half_pi<double>() (table1_simple_values): compared exactly.
+  const double phase = c.values.at("phase");
+  if (phase == boost::math::constants::half_pi<double>()) return fmt::format("released from rest at q₀ = {}, p₀ = 0, m = {} (q(t) = {} cos ωt)", A, m, A);
   if (phase == 0) {
     const std::string velocity = A == "1/(2π)" ? "1" : A == "1" ? "2π" : "2π·" + A;
     return fmt::format("started at q₀ = 0 with dq/dt(0) = {}, m = {} (q(t) = {} sin ωt)", velocity, m, A == "1" ? "" : A);
@@ -232,10 +245,7 @@ std::string table1_start(const convention_candidate& c) {
 std::string table1_explanation(const convention_search_result& r, const std::vector<printed_entry>& printed) {
   const convention_candidate* s = r.simplest();
   if (s == nullptr) return "";
-  std::vector<std::string> departures;
-  for (const discrete_convention& d : table1_discrete_conventions()) {
-    if (s->choice.at(d.name) != d.stated) departures.push_back(d.name + ": " + s->choice.at(d.name));
-  }
+  const std::vector<std::string> departures = table1_departures(*s);
   std::string text = fmt::format("the oscillator {}, {}, reproduces {} of the {} entries within their printed digits", table1_start(*s),
                                  departures.empty() ? "under the stated discrete conventions"
                                                     : fmt::format("with {} (the other discrete conventions as stated)", fmt::join(departures, ", ")),

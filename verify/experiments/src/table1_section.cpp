@@ -99,10 +99,7 @@ void add_convention_search(section_result& out, const printed_table_values& valu
                                                {"reproduced", "entries reproduced"}, {"worst", "worst residual", "half-units of the last digit"}}};
     for (std::size_t k = 0; k < search.simple.size() && k < 5; ++k) {
       const convention_candidate& c = search.simple[k];
-      std::vector<std::string> departures;
-      for (const discrete_convention& d : table1_discrete_conventions()) {
-        if (c.choice.at(d.name) != d.stated) departures.push_back(d.name + ": " + c.choice.at(d.name));
-      }
+      const std::vector<std::string> departures = table1_departures(c);
       simple.add({figure::integer(static_cast<long long>(k + 1)), figure::text(table1_start(c)),
                   figure::text(departures.empty() ? "as stated" : fmt::format("{}", fmt::join(departures, "; "))),
                   figure::integer(static_cast<long long>(c.reproduced)), figure::text(fmt::format("{:.7g}", c.worst))});

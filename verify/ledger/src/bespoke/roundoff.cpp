@@ -67,11 +67,10 @@ claim_result check_table_roundoff(const run_context& ctx) {
   // Its start in double, m exactly, and a box 9/8 of its amplitudes (in eighths, rounded up).
   const std::vector<printed_entry> entries = table1_printed(values, printed.orders, &digits);
   const convention_search_result search = search_table1(entries);
-  const std::optional<exact_start> start = search.simplest() != nullptr ? table1_exact_start(*search.simplest()) : std::nullopt;
+  const std::optional<exact_start> start = table1_reproducing_start(search);
   const exact_start orbit = start.value_or(exact_start{});
   const rational m(orbit.m_num, orbit.m_den);
-  const double omega_double = boost::math::constants::two_pi<double>(), m_double = double(orbit.m_num) / double(orbit.m_den);
-  const double amplitude = std::sqrt(orbit.energy_factor() / m_double);  // A: H_0 over the stated one is m A²
+  const double omega_double = boost::math::constants::two_pi<double>(), m_double = orbit.mass(), amplitude = orbit.amplitude();
   const auto eighths_up = [](double x) { return rational(static_cast<long long>(std::ceil(x * 9 / 8 * 8)), 8); };
   const rational box_p = eighths_up(m_double * omega_double * amplitude), box_q = eighths_up(amplitude);
   const phase_point<rational> y0 = orbit.at_rest ? phase_point<rational>{rational(0), exact_binary_value(amplitude)}

@@ -153,11 +153,9 @@ json table_evidence(bool& orders_match, bool& conservation_match,
   double printed_H0 = H0;
   std::string printed_orbit = "the stated orbit (no simple hypothesis under the stated discrete conventions explains the table)";
   const convention_search_result search = search_table1(table1_printed(printed.values, printed.orders, &printed.digits));
-  if (search.simplest() != nullptr) {
-    if (const std::optional<exact_start> start = table1_exact_start(*search.simplest())) {
-      printed_H0 = H0 * start->energy_factor();
-      printed_orbit = "the orbit that reproduces the table (table-values): " + table1_start(*search.simplest());
-    }
+  if (const std::optional<exact_start> start = table1_reproducing_start(search)) {
+    printed_H0 = H0 * start->energy_factor();
+    printed_orbit = "the orbit that reproduces the table (table-values): " + table1_start(*search.simplest());
   }
   // The orders are decided by the exact schemes' enclosed errors; the double run is the paper's own.
   const std::array<enclosed_table_row, 8> enclosed = enclosed_table1(table_enclosure_digits);
@@ -308,7 +306,7 @@ claim_result check_table_values(const run_context& ctx) {
   if (simplest != nullptr) {
     evidence["simplest"] = candidate_json(*simplest, entries);
     evidence["simplest"]["in_words"] = table1_explanation(search, entries);
-    if (const std::optional<exact_start> start = table1_exact_start(*simplest)) {
+    if (const std::optional<exact_start> start = table1_reproducing_start(search)) {
       const std::vector<entry_decision> decided = enclosed_entries(printed_values, *start, table_enclosure_digits);
       std::size_t reproduced = 0;
       std::string differ;

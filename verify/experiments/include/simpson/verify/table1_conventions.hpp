@@ -43,6 +43,13 @@ simple_values table1_simple_values();
 /// none for a fitted candidate or other conventions.
 std::optional<exact_start> table1_exact_start(const convention_candidate& c);
 
+/// The start of the experiment that reproduces the table: the search's simplest hypothesis as an
+/// exact start, when it keeps the stated discrete conventions; none otherwise.
+std::optional<exact_start> table1_reproducing_start(const convention_search_result& r);
+
+/// The discrete conventions of `c` that depart from the stated ones ("energy: relative, ..."), in order.
+std::vector<std::string> table1_departures(const convention_candidate& c);
+
 /// A candidate's exact solution in words: "released from rest at q₀ = π/2, p₀ = 0, m = 1 (...)".
 std::string table1_start(const convention_candidate& c);
 

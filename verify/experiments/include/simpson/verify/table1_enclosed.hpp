@@ -6,7 +6,10 @@
 // every error's enclosure holds 0 (the quantity is conserved by the exact scheme), else undecided.
 // Header free of MPFI: enclosures leave as text (enclosure_text: only guaranteed digits).
 
+#include <boost/math/constants/constants.hpp>
+
 #include <array>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <utility>
@@ -58,13 +61,13 @@ struct exact_start {
   long amplitude_num = 1, amplitude_den = 1;
   int amplitude_pi_power = 0;
   bool at_rest = false;
-  /// H_0 over the stated one's (m A² in both starts, ω fixed), in double: for the round-off floor.
-  double energy_factor() const {
-    double A = double(amplitude_num) / double(amplitude_den);
-    for (int k = 0; k < amplitude_pi_power; ++k) A *= 3.141592653589793;
-    for (int k = 0; k > amplitude_pi_power; --k) A /= 3.141592653589793;
-    return double(m_num) / double(m_den) * A * A;
+  /// m and A in double (the start a double program holds).
+  double mass() const { return double(m_num) / double(m_den); }
+  double amplitude() const {
+    return double(amplitude_num) / double(amplitude_den) * std::pow(boost::math::constants::pi<double>(), amplitude_pi_power);
   }
+  /// H_0 over the stated one's (m A² in both starts, ω fixed), in double: for the round-off floor.
+  double energy_factor() const { return mass() * amplitude() * amplitude(); }
 };
 /// The same judgment (enclosed_stated_entries) under the stated discrete conventions from `start`.
 std::vector<entry_decision> enclosed_entries(const std::vector<printed_value>& printed, const exact_start& start, unsigned digits = 40);
