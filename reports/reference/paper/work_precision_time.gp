@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.2047e-07:0.000235195]
+set xrange [1.20519e-07:0.000233192]
 set xtics autofreq
 set mxtics default
 set yrange [2.94139e-15:0.34373]
@@ -37,7 +37,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.3186e-08:2.24085e-05]
+set xrange [5.32097e-08:2.21999e-05]
 set xtics autofreq
 set mxtics default
 set yrange [3.26923e-14:0.306488]
@@ -61,7 +61,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [6.34377e-06:0.0411389]
+set xrange [6.52714e-06:0.0411686]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -111,7 +111,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.2047e-07:0.000235195]
+set xrange [1.20519e-07:0.000233192]
 set xtics autofreq
 set mxtics default
 set yrange [2.94139e-15:0.34373]
@@ -135,7 +135,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.3186e-08:2.24085e-05]
+set xrange [5.32097e-08:2.21999e-05]
 set xtics autofreq
 set mxtics default
 set yrange [3.26923e-14:0.306488]
@@ -159,7 +159,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [6.34377e-06:0.0411389]
+set xrange [6.52714e-06:0.0411686]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
