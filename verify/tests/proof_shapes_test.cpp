@@ -304,6 +304,8 @@ Leapfrog, with a small step, is conditionally stable. Averaging, loosely, is con
 Antidamping, with a small step, is conditionally stable. Antidamping is unstable.
 \begin{equation}\label{taylorup} q_{j+1} = q_j + h {{\dd q}\over{\dd t}} + \frac{h^2}{2} {{\dd^2 q}\over{\dd t^2}} + {\rm O}(h^3) \end{equation}
 \begin{equation}\label{taylorwrong} q_{j-1} = q_j - h {{\dd q}\over{\dd t}} - \frac{h^2}{2} {{\dd^2 q}\over{\dd t^2}} + {\rm O}(h^3) \end{equation}
+\begin{equation}\label{taylorup3} q_{j+1} = q_j + h {{\dd q}\over{\dd t}} + \frac{h^2}{2} {{\dd^2 q}\over{\dd t^2}} + \frac{h^3}{6} {{\dd^3 q}\over{\dd t^2}} + {\rm O}(h^4) \end{equation}
+\begin{equation}\label{taylordown3} q_{j-1} = q_j - h {{\dd q}\over{\dd t}} + \frac{h^2}{2} {{\dd^2 q}\over{\dd t^2}} - \frac{h^3}{6} {{\dd^3 q}\over{\dd t^2}} + {\rm O}(h^4) \end{equation}
 Leapfrog discretizes the equation to second order. Leapfrog, loosely, discretizes it to fourth order.
 A generic map $\Psi = \begin{pmatrix} u & v \\ w & z \end{pmatrix}$. It conserves $K = \frac{1}{2} w q^2 - \frac{1}{2} v p^2$, and not $K = \frac{1}{2} w q^2 - \frac{1}{2} z p^2$.
 A map of one entry, $\Psi = \begin{pmatrix} u \end{pmatrix}$; a map with a number, $\Psi = \begin{pmatrix} u & 2 \\ w & z \end{pmatrix}$.
@@ -521,6 +523,8 @@ TEST_F(ShapesOnADocument, InvarianceSystem) {
                                    0),
             0u)
       << wrong.correction;
+  // In one line: the entry, printed and as it should be.
+  EXPECT_EQ(wrong.amendments, (std::vector<amendment>{{"entry (3, 3) of the system's matrix", "\\frac{w^{2}-1}{2}", "\\frac{s^{2}-1}{2}"}}));
   EXPECT_FALSE(wrong.refutation.empty()) << "the printed rows refuted in Coq";
   EXPECT_NE(wrong.certificate.find("under_test_derived"), std::string::npos) << "the derived rows certified: " << wrong.certificate;
   // The last side, 0, is not the system.
@@ -542,6 +546,8 @@ TEST_F(ShapesOnADocument, InvarianceDeterminant) {
   EXPECT_NE(wrong.evidence.at("exact").at("own").get<std::string>().find("fails"), std::string::npos) << wrong.evidence.dump();
   EXPECT_EQ(wrong.correction, "as derived: det = " + detail::text_of(GiNaC::numeric(1, 4)) +
                                   " × $(u s - v w - 1) (1 - u - s + u s - v w) (1 + u + s + u s - v w)$ (as printed)");
+  EXPECT_EQ(wrong.amendments, (std::vector<amendment>{{"the printed determinant", "(u s - v w - 1) (1 - u - s + u s - v w) (1 + u + s + u s - v w)",
+                                                       "\\frac{1}{4} \\times \\text{the printed}"}}));
   EXPECT_FALSE(wrong.refutation.empty());
   EXPECT_NE(wrong.certificate.find("under_test_derived"), std::string::npos) << wrong.certificate;
   // A form with two coefficients for three monomials: no square system, no determinant.
@@ -811,6 +817,9 @@ TEST_F(ShapesOnADocument, SumRange) {
   const claim_result shorter = over("actionshort");
   EXPECT_EQ(shorter.outcome, verdict::erratum);
   EXPECT_EQ(shorter.correction, "S = \\sum_{j=0}^{N-1} L_d(q_j, q_{j+1}): the elements of [0, T] are j = 0, ..., N-1: N terms");
+  // In one line: the printed range and the derived one, nothing else.
+  EXPECT_EQ(shorter.amendments, (std::vector<amendment>{{"the sum's range", "\\sum_{j=1}^{N-1}", "\\sum_{j=0}^{N-1}"}}));
+  EXPECT_TRUE(holds.amendments.empty());
   // The upper bound too: a check of the first element alone would pass it.
   EXPECT_EQ(over("actionlong").outcome, verdict::erratum);
 }
@@ -856,6 +865,23 @@ TEST_F(ShapesOnADocument, TaylorExpansion) {
   EXPECT_EQ(wrong.outcome, verdict::erratum);
   // The correction names the wrong term, printed and as it should be: the one term that is wrong.
   EXPECT_EQ(wrong.correction, "in q_{j-1} = ... + O(h^3): its h^2 term is printed (-d^2q/dt^2*h^2)/(2), should be (d^2q/dt^2*h^2)/(2)");
+  // In one line, in TeX: the term whole (a sign is not one symbol for another).
+  EXPECT_EQ(wrong.amendments, (std::vector<amendment>{{"the $h^2$ term of $q_{j-1}$", "\\frac{-\\frac{d^{2}q}{dt^{2}} h^{2}}{2}",
+                                                       "\\frac{\\frac{d^{2}q}{dt^{2}} h^{2}}{2}"}}));
+  EXPECT_TRUE(holds.amendments.empty());
+}
+
+// The one line of a misprinted derivative's order (Section 5's d^6q/dt^5 for d^6q/dt^6): the one
+// symbol, in the two expansions it is misprinted in; the two amendments are equal, so the report
+// says it once, "twice".
+TEST_F(ShapesOnADocument, TaylorExpansionMisprintedOrderInOneLine) {
+  const claim_result wrong = run("taylor-expansion", R"({ expansions = ["taylorup3", "taylordown3"], step = ['h'], index = "j" })");
+  ASSERT_EQ(wrong.outcome, verdict::erratum) << wrong.note << wrong.evidence.dump();
+  ASSERT_EQ(wrong.amendments.size(), 2u);
+  EXPECT_EQ(wrong.amendments[0].printed, "\\frac{d^{3}q}{dt^{2}}");
+  EXPECT_EQ(wrong.amendments[0].should_be, "\\frac{d^{3}q}{dt^{3}}");
+  EXPECT_EQ(wrong.amendments[1].printed, wrong.amendments[0].printed);
+  EXPECT_EQ(wrong.amendments[1].where, "the $h^3$ term of $q_{j-1}$");
 }
 
 TEST_F(ShapesOnADocument, IdentityWithAFunctionDefined) {

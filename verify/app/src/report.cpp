@@ -365,6 +365,60 @@ plot_outcome all_plots_drawn(const run_record& r) {
 
 json report_json(const run_record& r) { return report_json(r, all_plots_drawn(r)); }
 
+namespace {
+
+/// Words with $…$ spans of TeX, in Markdown.
+std::string words_with_math(const std::string& text) {
+  std::string out;
+  std::size_t at = 0;
+  bool math = false;
+  for (std::size_t dollar; (dollar = text.find('$', at)) != std::string::npos; at = dollar + 1, math = !math) {
+    const std::string piece = text.substr(at, dollar - at);
+    out += math ? markdown_code(piece) : markdown_escaped(piece);
+  }
+  return out + (math ? markdown_code(text.substr(at)) : markdown_escaped(text.substr(at)));
+}
+
+/// One side of an amendment in Markdown: TeX as code (report.html renders it), words as a quote with
+/// their $…$ spans as TeX.
+std::string amendment_side(const std::string& text, bool tex) {
+  return tex ? markdown_code(text) : "“" + words_with_math(text) + "”";
+}
+
+/// A finding's one line: "where: printed X, should be Y", the same change at several places said once
+/// with its count ("twice: in ...; in ...").
+std::string amendments_markdown(const std::vector<amendment>& amendments) {
+  std::vector<std::string> lines;
+  std::vector<bool> said(amendments.size(), false);
+  for (std::size_t k = 0; k < amendments.size(); ++k) {
+    if (said[k]) continue;
+    const amendment& a = amendments[k];
+    std::vector<std::string> places{words_with_math(a.where)};
+    for (std::size_t l = k + 1; l < amendments.size(); ++l) {
+      const amendment& b = amendments[l];
+      if (!said[l] && b.printed == a.printed && b.should_be == a.should_be && b.tex == a.tex) {
+        said[l] = true;
+        places.push_back(words_with_math(b.where));
+      }
+    }
+    std::string where = places.front();
+    for (std::size_t l = 1; l < places.size(); ++l) where += (l + 1 == places.size() ? " and " : ", ") + places[l];
+    if (places.size() > 1) where += places.size() == 2 ? " (twice)" : fmt::format(" ({} times)", places.size());
+    lines.push_back(fmt::format("{}: printed {}, should be {}", where, amendment_side(a.printed, a.tex), amendment_side(a.should_be, a.tex)));
+  }
+  return join(lines, "; ");
+}
+
+json amendments_json(const std::vector<amendment>& amendments) {
+  json out = json::array();
+  for (const amendment& a : amendments) {
+    out.push_back({{"where", a.where}, {"printed", a.printed}, {"should_be", a.should_be}, {"notation", a.tex ? "tex" : "words"}});
+  }
+  return out;
+}
+
+}  // namespace
+
 json report_json(const run_record& r, const plot_outcome& plots) {
   json claims = json::array();
   for (const claim_outcome& o : r.outcomes) {
@@ -384,6 +438,7 @@ json report_json(const run_record& r, const plot_outcome& plots) {
     if (o.fixed) entry["fixed"] = true;
     if (c.typographical) entry["typographical"] = true;
     if (!o.result.correction.empty()) entry["correction"] = o.result.correction;
+    if (!o.result.amendments.empty()) entry["amendments"] = amendments_json(o.result.amendments);
     if (!o.result.note.empty()) entry["note"] = o.result.note;
     if (!o.result.printed.is_null()) entry["printed"] = o.result.printed;
     if (!o.result.quoted.empty()) entry["quoted"] = o.result.quoted;
@@ -561,6 +616,7 @@ std::string finding_markdown(const claim_outcome& o, const std::string& verdict_
   if (!verdict_line.empty()) md += "- Verdict: " + verdict_line + "\n";
   md += fmt::format("- Printed ({}): {}\n", markdown_escaped(printed.source),
                     printed.read ? markdown_code(printed.text) : printed.quoted ? "“" + markdown_escaped(printed.text) + "”" : markdown_escaped(printed.text));
+  if (!o.result.amendments.empty()) md += "- In one line: " + amendments_markdown(o.result.amendments) + "\n";
   if (!o.result.correction.empty()) md += "- Corrected: " + markdown_escaped(o.result.correction) + "\n";
   if (!o.result.note.empty()) md += "- Note: " + markdown_escaped(o.result.note) + "\n";
   return md + fmt::format("- Evidence: [{}](#{})\n\n", c.id, heading_slug(c.id));
@@ -626,10 +682,12 @@ std::string referee_summary_markdown(const run_record& r) {
       const bool typographical = k.typographical;
       if (k.origin != claim_origin::paper || !is_finding(o.result.outcome) || !cause_of(o).empty() || rank(o) != level) continue;
       const std::vector<std::string> consequences = consequences_of(k);
-      const std::string what = !o.result.correction.empty() ? o.result.correction : first_sentence(o.result.note);
+      const std::string what = !o.result.amendments.empty()   ? amendments_markdown(o.result.amendments)
+                               : !o.result.correction.empty() ? markdown_escaped(o.result.correction)
+                                                              : markdown_escaped(first_sentence(o.result.note));
       const bool stops = !what.empty() && what.back() == '.';
       md += fmt::format("- **`{}`** (§{}, {}{}): {}{}{}\n", k.id, markdown_escaped(k.section), to_string(finding_of(o)),
-                        typographical ? ", typographical" : "", markdown_escaped(what), stops || consequences.empty() ? "" : ".",
+                        typographical ? ", typographical" : "", what, stops || consequences.empty() ? "" : ".",
                         consequences.empty() ? "" : fmt::format(" Consequences (counted under it): {}.", join(consequences, ", ")));
     }
   }

@@ -186,6 +186,12 @@ inline claim_result words_erratum(json evidence, std::string correction, std::st
   return r;
 }
 
+/// A finding with its one line, "printed X, should be Y" (words): kept only when it is a finding.
+inline claim_result amended(claim_result r, const std::string& where, const std::string& printed, const std::string& should_be) {
+  if (r.outcome == verdict::erratum) r.amendments.push_back(amendment{where, printed, should_be, false});
+  return r;
+}
+
 /// A verdict that a word of the quoted sentence decides (the computation beside it cannot move it):
 /// said as such in the evidence ("lexical") and at the head of the note, so that it is not read as a
 /// computed finding.

@@ -14,6 +14,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <iterator>
+#include <set>
+
 namespace simpson::verify::detail {
 
 using GiNaC::ex;
@@ -315,6 +319,110 @@ void settle(claim_result& result, bool disagree, bool holds, const std::string& 
   }
   result.outcome = holds ? verdict::holds : verdict::erratum;
   if (!holds) result.correction = correction;
+}
+
+namespace {
+
+std::set<std::string> symbol_names(const ex& e) {
+  std::set<std::string> names;
+  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (GiNaC::is_a<GiNaC::symbol>(*it)) names.insert(GiNaC::ex_to<GiNaC::symbol>(*it).get_name());
+  }
+  return names;
+}
+
+std::optional<GiNaC::symbol> symbol_named(const ex& e, const std::string& name) {
+  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (GiNaC::is_a<GiNaC::symbol>(*it) && GiNaC::ex_to<GiNaC::symbol>(*it).get_name() == name) return GiNaC::ex_to<GiNaC::symbol>(*it);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<amendment> amendment_between(const std::string& where, const ex& printed, const ex& derived) {
+  if (GiNaC::normal(printed - derived).is_zero()) return std::nullopt;
+  const std::set<std::string> in_printed = symbol_names(printed), in_derived = symbol_names(derived);
+  std::vector<std::string> only_printed, only_derived;
+  std::set_difference(in_printed.begin(), in_printed.end(), in_derived.begin(), in_derived.end(), std::back_inserter(only_printed));
+  std::set_difference(in_derived.begin(), in_derived.end(), in_printed.begin(), in_printed.end(), std::back_inserter(only_derived));
+  // One symbol for another in a term of several (d^6q/dt^5 h^6/720): the symbol; in an expression
+  // of that one symbol ((gamma^2 - 1)/2), the whole expression, which is as short.
+  const std::string printed_tex = canonical_tex(printed), derived_tex = canonical_tex(derived);
+  if (only_printed.size() == 1 && only_derived.size() == 1 && in_printed.size() > 1) {
+    const GiNaC::symbol a = *symbol_named(printed, only_printed.front()), b = *symbol_named(derived, only_derived.front());
+    if (GiNaC::normal(printed.subs(a == b, GiNaC::subs_options::no_pattern) - derived).is_zero()) {
+      return amendment{where, canonical_tex(a), canonical_tex(b)};
+    }
+  }
+  if (!printed.is_zero() && printed_tex.size() > 40) {  // a long expression off by a factor: the factor (a short one is shown whole)
+    const ex ratio = GiNaC::normal(derived / printed);
+    if (GiNaC::is_a<GiNaC::numeric>(ratio)) return amendment{where, printed_tex, canonical_tex(ratio) + " \\times \\text{the printed}"};
+  }
+  return amendment{where, printed_tex, derived_tex};
+}
+
+std::string readable_math(const std::string& text) {
+  static const std::vector<std::pair<std::string, std::string>> greek{
+      {"alpha", "α"}, {"beta", "β"}, {"gamma", "γ"}, {"delta", "δ"}, {"epsilon", "ε"}, {"theta", "θ"}, {"lambda", "λ"}, {"mu", "μ"},
+      {"xi", "ξ"},    {"pi", "π"},   {"rho", "ρ"},   {"sigma", "σ"}, {"tau", "τ"},      {"phi", "φ"},   {"psi", "ψ"},    {"omega", "ω"}};
+  static const char* const superscript[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
+  std::string out;
+  bool math = false;  // inside $…$: TeX, left as it is
+  for (std::size_t at = 0; at < text.size();) {
+    const char c = text[at];
+    if (c == '$') {
+      math = !math;
+      out += c;
+      ++at;
+      continue;
+    }
+    if (math) {
+      out += c;
+      ++at;
+      continue;
+    }
+    const bool word_start = at == 0 || std::isalnum(static_cast<unsigned char>(text[at - 1])) == 0;
+    bool replaced = false;
+    for (const auto& [name, letter] : greek) {
+      const std::size_t end = at + name.size();
+      if (word_start && text.compare(at, name.size(), name) == 0 && (end == text.size() || std::isalpha(static_cast<unsigned char>(text[end])) == 0)) {
+        out += letter;
+        at = end;
+        replaced = true;
+        break;
+      }
+    }
+    if (replaced) continue;
+    if (word_start && text.compare(at, 5, "sqrt(") == 0) {
+      const std::size_t close = text.find(')', at);
+      const std::string inner = close == std::string::npos ? "" : text.substr(at + 5, close - at - 5);
+      if (!inner.empty() && std::all_of(inner.begin(), inner.end(), [](char d) { return std::isdigit(static_cast<unsigned char>(d)) != 0; })) {
+        if (!out.empty() && out.back() == ' ' && out.size() >= 2 && std::isdigit(static_cast<unsigned char>(out[out.size() - 2])) != 0) out.pop_back();
+        out += "√" + inner;
+        at = close + 1;
+        continue;
+      }
+    }
+    if (c == '^' && at + 1 < text.size() && std::isdigit(static_cast<unsigned char>(text[at + 1])) != 0) {
+      for (++at; at < text.size() && std::isdigit(static_cast<unsigned char>(text[at])) != 0; ++at) out += superscript[text[at] - '0'];
+      continue;
+    }
+    if (c == '*') {  // a product: juxtaposed, but between two digits
+      const bool digits = at > 0 && at + 1 < text.size() && std::isdigit(static_cast<unsigned char>(text[at - 1])) != 0 &&
+                          std::isdigit(static_cast<unsigned char>(text[at + 1])) != 0;
+      out += digits ? "·" : "";
+      ++at;
+      continue;
+    }
+    out += c;
+    ++at;
+  }
+  return out;
+}
+
+amendment amendment_in_words(const std::string& where, const std::string& printed, const std::string& should_be) {
+  return amendment{where, printed, readable_math(should_be), false};
 }
 
 GiNaC::matrix as_square_matrix(const ex& e, const std::string& what) {

@@ -127,6 +127,19 @@ claim_result equal_sides_verdict(const shape_call& call, shape_reader& read, con
 /// differ (the note naming `what`), else holds, or an erratum corrected by `correction`.
 void settle(claim_result& result, bool disagree, bool holds, const std::string& what, const std::string& correction);
 
+/// "Printed X, should be Y" at `where`, at its simplest: one symbol for another when that is all
+/// that differs in a term of several symbols (d^6q/dt^5 for d^6q/dt^6), a constant factor when a
+/// long expression (over 40 characters of TeX) is off by one (1/4 × the printed), else the two
+/// expressions; none when they are equal.
+std::optional<amendment> amendment_between(const std::string& where, const GiNaC::ex& printed, const GiNaC::ex& derived);
+
+/// The canonical text's operators as a reader writes them, outside $…$: Greek names as letters,
+/// powers as superscripts, sqrt(2) as √2, a product by juxtaposition ("h^2*omega^2-8" as "h²ω²-8").
+std::string readable_math(const std::string& text);
+
+/// A finding in words: the words printed, those that should stand (its math readable_math's).
+amendment amendment_in_words(const std::string& where, const std::string& printed, const std::string& should_be);
+
 /// e as a square matrix; throws std::invalid_argument naming `what` when it is not one.
 GiNaC::matrix as_square_matrix(const GiNaC::ex& e, const std::string& what);
 

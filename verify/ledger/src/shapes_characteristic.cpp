@@ -489,6 +489,9 @@ claim_result root_criterion_shape(const shape_call& call, const run_context& ctx
   result.outcome = verdict::erratum;
   result.correction = fmt::format("The scheme is stable when the roots have modulus <= 1 and the roots of modulus 1 are simple (root condition); here they "
                                   "are simple, conjugate and of modulus 1 for {} in {}.", var, fmt::join(stable_bands, " and "));
+  result.amendments.push_back(amendment_in_words("the stability criterion", said.words("modulus"),
+                                                 fmt::format("modulus at most 1, those of modulus 1 simple (the root condition): stable for {} in {}", var,
+                                                             fmt::join(stable_bands, " and "))));
   result.note = fmt::format("As printed, '{}' and the root condition disagree: {}{}.", said.words("modulus"), fmt::join(disagreements, "; "),
                             said_any_stable ? "" : fmt::format("; read literally, '{}' calls the scheme stable for no {} > 0", said.words("modulus"), var));
   return result;
@@ -577,6 +580,13 @@ claim_result unconditional_stability_shape(const shape_call& call, const run_con
                                                          scheme_ref, var, var, where))
                           : fmt::format("The scheme ({}) is not stable for every {} > 0 but conditionally: its discriminant changes sign at {} = {}, and it is stable exactly for {}",
                                         scheme_ref, var, var, where, bands_text);
+  const std::string printed_words = stated_words == "unconditionally stable" || stated_words == "conditionally stable" || !call.with.count("qualifier")
+                                        ? stated_words
+                                        : qualifier + " … " + stated_words;
+  result.amendments.push_back(amendment_in_words("the stated stability", printed_words,
+                                                 unconditional ? "stable for every step (unconditionally)"
+                                                 : stable_bands.empty() ? "stable for no step"
+                                                                        : "conditionally stable: for " + bands_text + " only"));
   return result;
 }
 

@@ -169,6 +169,11 @@ claim_result explicit_map_shape(const shape_call& call, const run_context& ctx) 
   } else {
     result.outcome = verdict::erratum;
     result.correction = computed + ".";
+    result.amendments.push_back(amendment_in_words(
+        "the scheme's kind", said.words("kind"),
+        polynomial ? "explicit: every entry of the map is a polynomial in " + step.get_name()
+                   : fmt::format("implicit as a method (the map's denominator{} {} depend{} on {}); on this linear problem, in closed form",
+                                 denominators.size() == 1 ? "" : "s", fmt::join(denominators, ", "), denominators.size() == 1 ? "s" : "", step.get_name())));
     if (stated == "explicit" && regular) {
       result.note = fmt::format("Wording: the map is in closed form and regular for every {} > 0 (its denominators are positive), which is what the "
                                 "words can mean; every linear one-step scheme is explicit in that sense.",

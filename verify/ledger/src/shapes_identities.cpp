@@ -381,6 +381,9 @@ claim_result linear_shape(const shape_call& call, const run_context& ctx) {
     result.outcome = verdict::erratum;
     result.correction = computed;
     result.note = fmt::format("Wording: the sentence says '{}'.", said.words("linearity"));
+    if (!linear || stated == "linear" || !read.has("positive")) {
+      result.amendments.push_back(amendment_in_words("the sentence's words", said.words("linearity"), linear ? "linear" : "not linear"));
+    }
     // What the words can mean under their condition ("if h > 0"): the expression is not its value at
     // h = 0 (GiNaC: the ratio of the two, in normal form).
     if (linear && stated != "linear" && read.has("positive")) {
@@ -392,6 +395,10 @@ claim_result linear_shape(const shape_call& call, const run_context& ctx) {
         result.correction += fmt::format("; for {} > 0 it is not its value at {} = 0, {}, but {} times it", s.get_name(), s.get_name(),
                                          text_of(at_zero), text_of(GiNaC::factor(GiNaC::normal(e / at_zero))));
         result.evidence["positive"] = {{"at_zero", text_of(at_zero)}, {"ratio", text_of(GiNaC::factor(GiNaC::normal(e / at_zero)))}};
+        result.amendments.push_back(amendment_in_words(
+            "the sentence's words", said.words("linearity"),
+            fmt::format("linear in {}, but for {} > 0 not its value at {} = 0: ${}$ times ${}$", fmt::join(names, ", "), s.get_name(), s.get_name(),
+                        canonical_tex(GiNaC::factor(GiNaC::normal(e / at_zero))), canonical_tex(at_zero))));
       }
     }
   }

@@ -371,6 +371,11 @@ claim_result factor_signs_shape(const shape_call& call, const run_context& ctx) 
                     ? fmt::format("Wording: 'all the factors' are said to be {}, which the prefactor {} is not; the factors that are sums are {}, and "
                                   "the product's sign is as stated.", said.words("sign"), fmt::join(unlike, ", "), said.words("sign"))
                     : "As printed, the factors' signs are not the sentence's: " + fmt::format("{}", fmt::join(unlike, ", ")) + ".";
+  result.amendments.push_back(amendment_in_words(
+      "the sign said of all the factors", said.words("sign"),
+      relation_as_stated && sums_as_stated
+          ? fmt::format("{} for the factors that are sums; {} for the prefactor {}", said.words("sign"), stated < 0 ? "positive" : "negative", fmt::join(unlike, ", "))
+          : fmt::format("on 0 < {} < {}: {}; the product {}", var, text_of(high), fmt::join(proved, ", "), sign_word(product_sign))));
   return result;
 }
 

@@ -107,11 +107,15 @@ claim_result invariance_system_shape(const shape_call& call, const run_context& 
   for (std::size_t k = 0; k < monomials.size(); ++k) printed_sum += monomials[k] * rows(static_cast<unsigned>(k), 0);
   // The entries that differ, first: what a reader corrects in the printed matrix.
   std::vector<std::string> differing;
+  std::vector<amendment> amendments;
   for (unsigned k = 0; k < derived.rows(); ++k) {
     for (unsigned u = 0; u < derived.cols(); ++u) {
       const ex printed_entry = GiNaC::normal(GiNaC::expand(rows(k, 0)).coeff(unknowns[u], 1));
       if (!GiNaC::normal(printed_entry - derived(k, u)).is_zero()) {
         differing.push_back(fmt::format("entry ({}, {}) is {}, not {}", k + 1, u + 1, text_of(derived(k, u)), text_of(printed_entry)));
+        if (auto a = amendment_between(fmt::format("entry ({}, {}) of the system's matrix", k + 1, u + 1), printed_entry, derived(k, u))) {
+          amendments.push_back(*a);
+        }
       }
     }
   }
@@ -120,6 +124,7 @@ claim_result invariance_system_shape(const shape_call& call, const run_context& 
                             fmt::format("{}{}as derived from ({})(({}) y) − ({})(y), the coefficients of {} in the unknowns: {}", fmt::join(differing, "; "),
                                         differing.empty() ? "" : "; ", form_ref, map_ref, form_ref, fmt::join(named, ", "), text_of(derived)));
   result.evidence["exact"]["derived_rows"] = d.rows_text;
+  if (result.outcome == verdict::erratum) result.amendments = amendments;
   if (result.outcome == verdict::erratum) {  // the correction certified beside the refutation
     ex derived_sum = 0;
     for (std::size_t k = 0; k < monomials.size(); ++k) {
@@ -175,6 +180,9 @@ claim_result invariance_determinant_shape(const shape_call& call, const run_cont
   result.evidence["exact"]["derived_rows"] = d.rows_text;
   if (result.outcome == verdict::erratum) {  // the correction certified beside the refutation
     record_certificate(result, coq_certificate(call.claim_id, call.statement, {decided("determinant", det, printed), decided("derived", det, corrected)}));
+    result.amendments.push_back(multiple ? amendment{"the printed determinant", folded_space(read.raw("printed").sides.back()),
+                                                     canonical_tex(ratio) + " \\times \\text{the printed}"}
+                                         : *amendment_between("the printed determinant", printed, corrected));
     // What should stand where the determinant is printed: the claims that read it are judged again with it.
     result.corrected_formulas.push_back(read.correction_of("printed", corrected));
   }

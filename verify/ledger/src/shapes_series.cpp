@@ -331,6 +331,12 @@ claim_result taylor_expansion_shape(const shape_call& call, const run_context& c
                                     text_of(p * GiNaC::pow(h, k)), text_of(t * GiNaC::pow(h, k))));
       }
       corrections.push_back(fmt::format("in {} = ... + {}: {}", folded_space(expansion.sides.front()), big_o, fmt::join(wrong, "; ")));
+      for (int k = 0; k < order; ++k) {
+        const std::optional<amendment> a =
+            amendment_between(fmt::format("the {} term of ${}$", k == 0 ? std::string("constant") : fmt::format("${}^{}$", canonical_tex(h), k), folded_space(expansion.sides.front())),
+                              printed_terms.coeff(h, k) * GiNaC::pow(h, k), taylor.coeff(h, k) * GiNaC::pow(h, k));
+        if (a) result.amendments.push_back(*a);
+      }
     }
     rows.push_back({{"expansion", folded_space(expansion.sides.front()) + " (" + expansion.place + ")"},
                     {"series", text_of(series) + " + " + big_o},

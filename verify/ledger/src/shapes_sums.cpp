@@ -115,6 +115,12 @@ claim_result sum_range_shape(const shape_call& call, const run_context& ctx) {
          fmt::format("{}: the elements of [{}, {}] are {}", corrected, text_of(range.front()), text_of(range.back()), derived));
   if (result.outcome == verdict::erratum) {
     result.note = fmt::format("As printed: {} = {}, ..., {}, {} terms.", j_name, text_of(lower), text_of(upper), text_of(GiNaC::normal(upper - lower + 1)));
+    const auto range_tex = [&](const ex& a, const ex& b) {
+      return fmt::format("\\sum_{{{}={}}}^{{{}}}", canonical_tex(j), canonical_tex(a), canonical_tex(b));
+    };
+    result.amendments.push_back(in_words ? amendment_in_words("the range the sentence states", fmt::format("{} = {}, ..., {}", j_name, text_of(lower), text_of(upper)),
+                                                              fmt::format("{} = {}, ..., {}", j_name, text_of(first), text_of(last)))
+                                         : amendment{"the sum's range", range_tex(lower, upper), range_tex(first, last)});
   }
   return result;
 }

@@ -3,6 +3,8 @@
 #include <simpson/verify/tex_math.hpp>
 
 #include <algorithm>
+#include <regex>
+#include <set>
 #include <sstream>
 
 namespace simpson::verify {
@@ -15,9 +17,41 @@ std::string numeric_text(const GiNaC::numeric& n) {
   return out.str();
 }
 
+/// How a text is spelled: the canonical plain text ("h^2*omega^2"), or TeX ("h^{2} \\omega^{2}").
+enum class spelling { plain, tex };
+
+/// A symbol's name in TeX: a Greek letter's macro, a subscript in braces, a derivative's name
+/// (d^6q/dt^5) as the fraction it was read from; other names as they are.
+std::string tex_name(const std::string& name) {
+  static const std::set<std::string> greek{"alpha", "beta",    "gamma", "delta", "epsilon", "zeta",  "eta",   "theta", "iota",  "kappa",
+                                           "lambda", "mu",     "nu",    "xi",    "pi",      "rho",   "sigma", "tau",   "upsilon", "phi",
+                                           "chi",   "psi",     "omega", "Gamma", "Delta",   "Theta", "Lambda", "Xi",   "Pi",    "Sigma",
+                                           "Phi",   "Psi",     "Omega"};
+  std::smatch m;
+  static const std::regex derivative(R"(d(\^(\d+))?(\w+)/d(\w+)(\^(\d+))?)");
+  if (std::regex_match(name, m, derivative)) {
+    const auto power = [](const std::string& e) { return e.empty() ? std::string() : "^{" + e + "}"; };
+    return "\\frac{d" + power(m[2]) + tex_name(m[3]) + "}{d" + tex_name(m[4]) + power(m[6]) + "}";
+  }
+  const std::size_t under = name.find('_');
+  if (under != std::string::npos && under > 0) {
+    std::string sub = name.substr(under + 1);
+    if (sub.size() > 1 && sub.front() == '{' && sub.back() == '}') sub = sub.substr(1, sub.size() - 2);
+    return tex_name(name.substr(0, under)) + "_{" + sub + "}";
+  }
+  return greek.count(name) ? "\\" + name : name;
+}
+
+/// A coefficient: an integer as it is, a fraction as \frac in TeX.
+std::string coefficient_text(const GiNaC::numeric& n, spelling how) {
+  if (how == spelling::plain || n.is_integer()) return numeric_text(n);
+  const GiNaC::numeric a = GiNaC::abs(n);
+  return (n < 0 ? "-" : "") + std::string("\\frac{") + numeric_text(a.numer()) + "}{" + numeric_text(a.denom()) + "}";
+}
+
 /// A polynomial (expanded) as a sum of monomials: coefficients exact, symbols in name order,
 /// terms by decreasing total degree, then by text.
-std::string polynomial_text(const GiNaC::ex& poly, const std::vector<GiNaC::symbol>& symbols) {
+std::string polynomial_text(const GiNaC::ex& poly, const std::vector<GiNaC::symbol>& symbols, spelling how = spelling::plain) {
   const GiNaC::ex expanded = GiNaC::expand(poly);
   std::vector<GiNaC::ex> terms;
   if (GiNaC::is_a<GiNaC::add>(expanded)) {
@@ -35,13 +69,17 @@ std::string polynomial_text(const GiNaC::ex& poly, const std::vector<GiNaC::symb
       if (d == 0) continue;
       rest = rest / GiNaC::pow(x, d);
       total += d;
-      monomial += "*" + x.get_name() + (d == 1 ? "" : "^" + std::to_string(d));
+      if (how == spelling::plain) {
+        monomial += "*" + x.get_name() + (d == 1 ? "" : "^" + std::to_string(d));
+      } else {
+        monomial += " " + tex_name(x.get_name()) + (d == 1 ? "" : "^{" + std::to_string(d) + "}");
+      }
     }
     rest = GiNaC::normal(rest);
     // A numeric coefficient, or a function of one symbol such as Order(h^6), whose printing is fixed.
     std::ostringstream other;
     other << rest;
-    std::string coefficient = GiNaC::is_a<GiNaC::numeric>(rest) ? numeric_text(GiNaC::ex_to<GiNaC::numeric>(rest)) : other.str();
+    std::string coefficient = GiNaC::is_a<GiNaC::numeric>(rest) ? coefficient_text(GiNaC::ex_to<GiNaC::numeric>(rest), how) : other.str();
     std::string text;
     if (monomial.empty()) {
       text = coefficient;
@@ -58,6 +96,18 @@ std::string polynomial_text(const GiNaC::ex& poly, const std::vector<GiNaC::symb
   std::string out;
   for (const auto& t : texts) out += (out.empty() || t.second[0] == '-' ? "" : "+") + t.second;
   return out.empty() ? "0" : out;
+}
+
+std::vector<GiNaC::symbol> symbols_by_name(const GiNaC::ex& e) {
+  std::vector<GiNaC::symbol> symbols;
+  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (GiNaC::is_a<GiNaC::symbol>(*it)) symbols.push_back(GiNaC::ex_to<GiNaC::symbol>(*it));
+  }
+  std::sort(symbols.begin(), symbols.end(), [](const GiNaC::symbol& a, const GiNaC::symbol& b) { return a.get_name() < b.get_name(); });
+  symbols.erase(std::unique(symbols.begin(), symbols.end(),
+                            [](const GiNaC::symbol& a, const GiNaC::symbol& b) { return a.get_name() == b.get_name(); }),
+                symbols.end());
+  return symbols;
 }
 
 /// Every function application (V(x), D[0](V)(x), Order(h^6), sum(...)) replaced by a symbol named
@@ -115,14 +165,7 @@ std::string canonical_text(const GiNaC::ex& given) {
     }
     return out + "]";
   }
-  std::vector<GiNaC::symbol> symbols;
-  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
-    if (GiNaC::is_a<GiNaC::symbol>(*it)) symbols.push_back(GiNaC::ex_to<GiNaC::symbol>(*it));
-  }
-  std::sort(symbols.begin(), symbols.end(), [](const GiNaC::symbol& a, const GiNaC::symbol& b) { return a.get_name() < b.get_name(); });
-  symbols.erase(std::unique(symbols.begin(), symbols.end(),
-                            [](const GiNaC::symbol& a, const GiNaC::symbol& b) { return a.get_name() == b.get_name(); }),
-                symbols.end());
+  const std::vector<GiNaC::symbol> symbols = symbols_by_name(e);
   const GiNaC::ex n = GiNaC::normal(e);
   GiNaC::ex num = GiNaC::numer(n), den = GiNaC::denom(n);
   if (den.is_equal(GiNaC::ex(1))) return polynomial_text(num, symbols);
@@ -136,6 +179,30 @@ std::string canonical_text(const GiNaC::ex& given) {
     denominator = polynomial_text(den, symbols);
   }
   return "(" + polynomial_text(num, symbols) + ")/(" + denominator + ")";
+}
+
+std::string canonical_tex(const GiNaC::ex& given) {
+  functions_as_symbols rename;
+  const GiNaC::ex e = rename(given);
+  if (GiNaC::is_a<GiNaC::matrix>(e)) {
+    const GiNaC::matrix& m = GiNaC::ex_to<GiNaC::matrix>(e);
+    std::string out = "\\begin{pmatrix}";
+    for (unsigned r = 0; r < m.rows(); ++r) {
+      for (unsigned c = 0; c < m.cols(); ++c) out += (c ? " & " : "") + canonical_tex(m(r, c));
+      out += r + 1 < m.rows() ? " \\\\ " : "";
+    }
+    return out + "\\end{pmatrix}";
+  }
+  const std::vector<GiNaC::symbol> symbols = symbols_by_name(e);
+  const GiNaC::ex n = GiNaC::normal(e);
+  GiNaC::ex num = GiNaC::numer(n), den = GiNaC::denom(n);
+  const auto trimmed = [](std::string t) { return t.empty() || t.front() != ' ' ? t : t.substr(1); };
+  if (den.is_equal(GiNaC::ex(1))) return trimmed(polynomial_text(num, symbols, spelling::tex));
+  if (polynomial_text(den, symbols).front() == '-') {  // as canonical_text: the denominator starts with a positive term
+    num = -num;
+    den = -den;
+  }
+  return "\\frac{" + trimmed(polynomial_text(num, symbols, spelling::tex)) + "}{" + trimmed(polynomial_text(den, symbols, spelling::tex)) + "}";
 }
 
 }  // namespace simpson::verify

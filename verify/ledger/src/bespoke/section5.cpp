@@ -57,12 +57,13 @@ claim_result check_maupertuis_naming(const run_context& ctx) {
                                                 "m (dq/dt)^2/2 - V(q), proved; not Simpson's rule on p dq/dt."),
                    said.words("principle"), computed);
   }
-  return lexical(erratum(printed, corrected,
+  return lexical(amended(erratum(printed, corrected,
                  "delta Sigma_d = 0 (variations of the nodes, times fixed) is the discrete form of Hamilton's stationary-action "
                  "principle: Sigma_d approximates the integral of L dt",
                  "A naming finding, not a formula: Maupertuis's principle makes the abbreviated action (the integral of p dq) "
                  "stationary among motions of fixed energy; the equations derived from delta Sigma_d = 0 (internal-equation, "
                  "scheme-order-3) are unaffected."),
+                         "the principle named", said.words("principle"), "Hamilton's stationary-action"),
                  said.words("principle"), computed);
 }
 

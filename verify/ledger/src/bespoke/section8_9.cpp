@@ -488,9 +488,11 @@ claim_result check_nonlinear_internal_node(const run_context& ctx) {
   if (!proved) return confirmed_if(false, evidence);
   const std::string fixed = "the computation (the printed equation as a contraction) is the same whatever the word";
   if (stated == "possible") return lexical(confirmed_if(true, evidence, eliminated + "."), said.words("possibility"), fixed);
-  return lexical(words_erratum(evidence, eliminated + "; what does not exist in general is a closed form for q_m",
+  return lexical(amended(words_erratum(evidence, eliminated + "; what does not exist in general is a closed form for q_m",
                                "Wording: 'not possible' is false of the elimination itself, which the contraction gives; the intended "
                                "content, no elimination in closed form for a general V, holds."),
+                         "the elimination of q_m", said.words("possibility"),
+                         fmt::format("possible, implicitly: a contraction when sup|V''| < |A|, A = ${}$; not in closed form for a general V", canonical_tex(A))),
                  said.words("possibility"), fixed);
 }
 

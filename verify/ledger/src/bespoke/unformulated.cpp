@@ -82,18 +82,20 @@ claim_result check_abstract_explicit(const run_context& ctx) {
   // Read in context the word is Section 6's "explicit scheme" (phi3-explicit): the step in closed
   // form for the harmonic oscillator, not an explicit method. A wording consequence of that finding.
   if (qualified || every_case_linear) {
-    return lexical(words_erratum(evidence,
+    return lexical(amended(words_erratum(evidence,
                          "The scheme is implicit as a method: each step solves the internal node's equation (phi3-explicit). For "
                          "the harmonic oscillator (any quadratic V) that equation is linear in q_m and solved in closed form, and "
                          "Phi_3 follows; for a nonlinear V (V = q^3, q^4 here) it is nonlinear in q_m and solved at every step",
                          "Wording, as in Section 6 (phi3-explicit): read in context, 'explicit' is said of the scheme made explicit "
                          "for the harmonic oscillator, whose step equation is linear and solved in closed form."),
+                           "the scheme's kind", stated, "implicit as a method; its step in closed form for the harmonic oscillator"),
                    stated, fixed);
   }
-  return lexical(words_erratum(evidence, "The scheme is " + computed,
+  return lexical(amended(words_erratum(evidence, "The scheme is " + computed,
                        "The abstract proposes the method for dynamical systems issued from the least action principle and calls it explicit "
            "without qualification; the sentence before says it is made explicit for the harmonic oscillator, and Section 9 says "
            "the internal node cannot be eliminated in the nonlinear case."),
+                         "the scheme's kind", stated, "implicit as a method; its step in closed form for the harmonic oscillator"),
                  stated, fixed);
 }
 
@@ -151,12 +153,14 @@ claim_result check_experiment_conventions(const run_context& ctx) {
   const std::string stated_count = fmt::format("q(t) = sin ωt with m = 1 reproduces {} of the {}", search.stated.reproduced, entries.size());
   if (simplest != nullptr && (simplest->reproduced == entries.size() || search.reproducing() != nullptr)) {
     evidence["table1"]["simplest"] = table1_explanation(search, entries);
-    return words_erratum(evidence,
+    return amended(words_erratum(evidence,
                          "Table 1 is the experiment of another exact solution: " + table1_explanation(search, entries) +
                              (simplest->reproduced == entries.size() ? "" : "; a fit of m, the amplitude and the phase reproduces every entry (table-values)") +
                              "; " + stated_count,
                          "The stated pair is one exact solution with T = 1 one period, but not the one Table 1 was computed with "
-                         "(table-values, convention search). " + unstated);
+                         "(table-values, convention search). " + unstated),
+                   "Table 1's exact solution", fmt::format("$q(t) = {}$, $p(t) = {}$", said.words("q_exact"), said.words("p_exact")),
+                   fmt::format("{}: {} of the {} entries", table1_start(*simplest), simplest->reproduced, entries.size()));
   }
   return confirmed_if(false, evidence, "The stated pair does not reproduce Table 1, and no convention of the searched family does "
                                        "(table-values). " + unstated);

@@ -90,12 +90,25 @@ struct run_context {
   const claim_book* book = nullptr;
 };
 
+/// A finding in one line, "printed X, should be Y": what the paper prints and what should stand
+/// there, in the paper's notation (TeX when `tex`, else words), and where (an entry, a term, a
+/// sentence's words); the derivation behind it stays in the correction and the evidence.
+struct amendment {
+  std::string where;
+  std::string printed;
+  std::string should_be;
+  bool tex = true;
+  bool operator==(const amendment& o) const { return where == o.where && printed == o.printed && should_be == o.should_be && tex == o.tex; }
+};
+
 /// What a check found. `evidence` has one member per method ("exact", "numeric", ...).
 struct claim_result {
   verdict outcome = verdict::fails;
   json evidence = json::object();
   std::string correction;  // the corrected statement, for errata
   std::string note;        // conditions not stated in the paper, sufficiency, caveats
+  /// For a finding (erratum, wording, naming): "printed X, should be Y", one per place.
+  std::vector<amendment> amendments;
   /// For a claim whose formula is read from the paper: where ({label, line, tex, parsed}) and
   /// what GiNaC proved of it; null for a claim typed from prose.
   json printed;

@@ -88,4 +88,9 @@ GiNaC::ex read_tex(const std::string& tex, const tex_declarations& declared, tex
 /// depend on what a process created first; reports must not.
 std::string canonical_text(const GiNaC::ex& e);
 
+/// The same expression in TeX, for a reader (a report's "printed X, should be Y"): the same normal
+/// form and order, a quotient as \frac, Greek names as their macros, a derivative's name
+/// (d^6q/dt^5) as its fraction.
+std::string canonical_tex(const GiNaC::ex& e);
+
 }  // namespace simpson::verify
