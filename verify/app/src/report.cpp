@@ -57,6 +57,8 @@ struct verdict_counts {
   std::size_t faults = 0;  // checks that threw: a bug in the harness, no verdict (exit 3)
   std::size_t paper = 0, beyond = 0, harness = 0;            // whose statements
   std::size_t distinct = 0, typographical = 0, consequences = 0;  // the paper's findings, each cause once
+  std::size_t whole_text = 0;                                    // claims that read the text as a whole (spelling, citations)
+  std::size_t prose_claims = 0, prose_slips = 0;                 // its spelling, counted apart: the claims, and the words they found
   std::size_t unverifiable = 0;
   std::size_t held = 0, errata = 0, failed = 0, disagreed = 0, text_changed = 0, undecided = 0, unproved = 0, skipped = 0, machine_read = 0,
               quoted = 0, typed = 0, read_and_quoted = 0, coq_exported = 0,
@@ -120,7 +122,10 @@ verdict_counts count_verdicts(const run_record& r) {
       continue;
     }
     (o.checked->origin == claim_origin::paper ? c.paper : o.checked->origin == claim_origin::beyond ? c.beyond : c.harness) += 1;
-    if (o.checked->origin == claim_origin::paper && is_finding(o.result.outcome)) {
+    if (o.checked->origin == claim_origin::paper && is_finding(o.result.outcome) && finding_of(o) == finding::prose) {
+      ++c.prose_claims;
+      c.prose_slips += std::max<std::size_t>(1, o.result.amendments.size());
+    } else if (o.checked->origin == claim_origin::paper && is_finding(o.result.outcome)) {
       if (cause_of(o).empty()) {
         ++c.distinct;
         c.typographical += o.checked->typographical;
@@ -139,7 +144,8 @@ verdict_counts count_verdicts(const run_record& r) {
     c.unverifiable += o.result.outcome == verdict::unverifiable;
     c.machine_read += !o.result.printed.is_null();
     c.quoted += !o.result.quoted.empty();  // a claim may read a formula and quote its sentence: counted in both
-    c.typed += o.result.printed.is_null() && o.result.quoted.empty();
+    c.whole_text += o.result.reads_whole_text;
+    c.typed += o.result.printed.is_null() && o.result.quoted.empty() && !o.result.reads_whole_text;
     c.read_and_quoted += !o.result.printed.is_null() && !o.result.quoted.empty();
     c.coq_exported += !certificate_documents(o).empty();
     c.coq_checked += o.result.evidence.contains("coq") && o.result.evidence["coq"].value("status", "") == "checked";
@@ -317,8 +323,9 @@ json summary_json(const run_record& r) {
           {"failed", c.failed},          {"harness_faults", c.faults}, {"kernels_disagree", c.disagreed},
           {"paper_claims", c.paper},     {"beyond_claims", c.beyond},   {"harness_claims", c.harness},
           {"distinct_findings", c.distinct}, {"typographical_findings", c.typographical}, {"consequences", c.consequences},
+          {"spelling_slips", c.prose_slips},
           {"text_changed", c.text_changed}, {"undecided", c.undecided}, {"unproved", c.unproved}, {"skipped", c.skipped},
-          {"machine_read", c.machine_read}, {"quoted", c.quoted}, {"typed", c.typed},
+          {"machine_read", c.machine_read}, {"quoted", c.quoted}, {"whole_text", c.whole_text}, {"typed", c.typed},
           {"coq_exported", c.coq_exported}, {"coq_checked", c.coq_checked},
           {"unexpected", c.unexpected}, {"failed_expectations", failed_expectations(r)},
           {"expectations", count_expectations(r).total},
@@ -641,16 +648,23 @@ std::string referee_summary_markdown(const run_record& r) {
                       : c.harness == 0 ? fmt::format("{} beyond the {}", c.beyond, the)
                                        : fmt::format("{} beyond the {} and {} the harness's own statements", c.beyond, the, c.harness));
   }
-  if (c.distinct + c.consequences == 0) {
+  const std::string prose = c.prose_slips == 0 ? std::string()
+                            : fmt::format(" Apart from them, the prose has {} spelling slip{} (class prose, last below).", c.prose_slips,
+                                          c.prose_slips == 1 ? "" : "s");
+  if (c.distinct + c.consequences == 0 && c.prose_slips > 0) {
+    md += fmt::format("No finding about the mathematics of the {}.{}\n\n", the, prose);
+  } else if (c.distinct + c.consequences == 0) {
     return md + (r.run_scene.selection.empty()
                      ? fmt::format("No finding: every claim of the {} checked holds as printed.\n\n", the)
                      : fmt::format("No finding among the {} claim{} of this selection; the {}'s other claims were not run.\n\n", r.outcomes.size(),
                                    r.outcomes.size() == 1 ? "" : "s", the));
   }
-  md += fmt::format("**{} distinct finding{}** about the {} ({} substantive, {} typographical), and {} consequence{} counted under "
-                    "their cause. Classes (docs/findings.md): erratum, wording, derivation gap, naming, unverifiable.\n\n",
-                    c.distinct, c.distinct == 1 ? "" : "s", the, c.distinct - c.typographical, c.typographical, c.consequences,
-                    c.consequences == 1 ? "" : "s");
+  if (c.distinct + c.consequences > 0) {
+    md += fmt::format("**{} distinct finding{}** about the {} ({} substantive, {} typographical), and {} consequence{} counted under "
+                      "their cause. Classes (docs/findings.md): erratum, wording, derivation gap, naming, unverifiable; and prose.{}\n\n",
+                      c.distinct, c.distinct == 1 ? "" : "s", the, c.distinct - c.typographical, c.typographical, c.consequences,
+                      c.consequences == 1 ? "" : "s", prose);
+  }
   // Ordered by consequence: a finding that breaks a derivation (other claims follow from it) first,
   // then wrong results, derivation gaps, wording and naming, what cannot be verified, and last the
   // typographical slips that break nothing; the ledger's order within each.
@@ -670,13 +684,14 @@ std::string referee_summary_markdown(const run_record& r) {
       case finding::wording:
       case finding::naming: return 3;
       case finding::unverifiable: return 4;
+      case finding::prose: return 6;
       case finding::none: break;
     }
     return 5;
   };
   md += "Ordered by consequence: what breaks a derivation first, then wrong results, derivation gaps, wording and naming, what "
-        "cannot be verified, and typographical slips.\n\n";
-  for (int level = 0; level <= 5; ++level) {
+        "cannot be verified, typographical slips, and the prose's spelling.\n\n";
+  for (int level = 0; level <= 6; ++level) {
     for (const claim_outcome& o : r.outcomes) {
       const claim& k = *o.checked;
       const bool typographical = k.typographical;
@@ -757,9 +772,13 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
     md += fmt::format("{} of {} claims read their formula from {}'s LaTeX source ({}) and prove it in GiNaC against "
                       "the derived one, beside our own kernel; {} quote the prose sentence they judge from that source{} and parse "
                       "the words that carry the claim from it (a sentence gone, or words that no longer parse, give "
-                      "**text-changed**); {} {} no words of {} ({}).\n\n",
+                      "**text-changed**);{} {} {} no words of {} ({}).\n\n",
                       c.machine_read, r.outcomes.size(), source, markdown_escaped(r.paper_origin), c.quoted,
-                      c.read_and_quoted ? fmt::format(" ({} of them also read a formula)", c.read_and_quoted) : "", c.typed,
+                      c.read_and_quoted ? fmt::format(" ({} of them also read a formula)", c.read_and_quoted) : "",
+                      c.whole_text == 0 ? std::string()
+                                        : fmt::format(" {} read{} the source's text as a whole (its spelling, its citations);", c.whole_text,
+                                                      c.whole_text == 1 ? "s" : ""),
+                      c.typed,
                       c.typed == 1 ? "quotes" : "quote", source,
                       r.of_the_paper ? "the harness's own lemmas and findings" : "statements typed in the claims file");
   }

@@ -20,11 +20,11 @@ verdict verdict_named(const std::string& text, const std::string& file, int line
 }
 
 finding finding_named(const std::string& text, const std::string& file, int line) {
-  for (const finding f : {finding::erratum, finding::wording, finding::derivation_gap, finding::naming, finding::unverifiable}) {
+  for (const finding f : {finding::erratum, finding::wording, finding::derivation_gap, finding::naming, finding::unverifiable, finding::prose}) {
     if (to_string(f) == text) return f;
   }
   throw claims_file_error(file, line, "finding",
-                          "'" + text + "' is not a class of finding (erratum, wording, derivation gap, naming, unverifiable)");
+                          "'" + text + "' is not a class of finding (erratum, wording, derivation gap, naming, unverifiable, prose)");
 }
 
 /// The fields of one record, each read once and checked for its type.

@@ -57,7 +57,10 @@ std::vector<std::string> labels_read(const claim_record& r) {
   if (r.shape.empty()) return labels;
   for (const detail::shape_parameter& p : detail::proof_shapes().at(r.shape).parameters) {
     const auto it = r.with.find(p.name);
-    if (it == r.with.end() || p.kind == detail::argument_kind::word || p.kind == detail::argument_kind::symbols) continue;
+    if (it == r.with.end() || p.kind == detail::argument_kind::word || p.kind == detail::argument_kind::symbols ||
+        p.kind == detail::argument_kind::words) {
+      continue;
+    }
     for (const std::string& value : it->second.values) {
       const formula_reference reference = parse_reference(value);
       if (reference.where == formula_reference::kind::labelled) labels.push_back(reference.key);

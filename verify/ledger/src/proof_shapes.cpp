@@ -250,6 +250,39 @@ const std::map<std::string, proof_shape>& proof_shapes() {
                      {"node", argument_kind::formula, true, "the printed time of node j, t_j = j h"},
                      {"range", argument_kind::condition, true, "the printed interval a <= t <= b"}}),
          sum_range_shape});
+    add({"emerging-condition",
+         "the printed condition 0 < variable < c follows from the printed formula as the text says (c its first pole): only when the scheme's stable set "
+         "for variable > 0 is (0, c)",
+         "condition",
+         with_where({{"condition", argument_kind::condition, true, "the printed condition 0 < variable < c"},
+                     {"formula", argument_kind::formula, true, "the formula it is said to emerge from (its denominator's first positive root)"},
+                     {"variable", argument_kind::formula, true, "the condition's variable, a product of positive symbols", 0, "", true},
+                     {"scheme", argument_kind::formula, true, "the linear three-term scheme (= 0) whose stability the condition states"},
+                     {"sequence", argument_kind::symbols, true, "its three states q_{j-1}, q_j, q_{j+1}", 3},
+                     pattern_with_hole("sentence", "the sentence that says the condition emerges, with the hole {emerges}", "emerges")}),
+         emerging_condition_shape});
+    add({"known-method",
+         "the printed one-step map is a named partitioned Runge-Kutta method's on q'' = -omega^2 q, and the text, presenting the method as its own, names it",
+         "map",
+         with_where({{"map", argument_kind::matrix, true, "the printed 2 x 2 one-step map", 2},
+                     {"state", argument_kind::symbols, true, "the map's state, in its order ('p', 'q')", 2},
+                     {"position", argument_kind::symbols, true, "which of the state is the position q", 1, "", false, {}, "state"},
+                     {"step", argument_kind::symbols, true, "the step h", 1},
+                     {"frequency", argument_kind::formula, true, "omega"},
+                     {"mass", argument_kind::formula, true, "the mass m"},
+                     {"tableau_position", argument_kind::matrix, true, "the method's s x s tableau for the position (Lobatto IIIA)"},
+                     {"tableau_momentum", argument_kind::matrix, true, "its s x s tableau for the momentum (Lobatto IIIB)"},
+                     {"weights", argument_kind::formula, true, "its weights, a 1 x s row"},
+                     {"method", argument_kind::word, true, "the method's name, in words ('the 3-stage Lobatto IIIA-IIIB pair')"},
+                     {"names", argument_kind::words, true, "words whose presence in the prose names it ('Lobatto')"},
+                     pattern_with_hole("sentence", "the sentence presenting the method as the text's own, with the hole {novelty}", "novelty")}),
+         known_method_shape});
+    add({"spelling", "every word of the document's prose is in Hunspell's en_US dictionary or the record's vocabulary (its names and terms of art)", "",
+         {{"vocabulary", argument_kind::words, false, "words the dictionary lacks that the document spells right: names, terms of art ('symplectic')"},
+          {"from", argument_kind::word, false, "where the prose checked starts: words the source prints ('Abstract'); the body's start without it"}},
+         spelling_shape});
+    add({"citations", "every \\cite key of the document has its entry in the document's bibliography; unverifiable when one has none", "", {},
+         citations_shape});
     add({"sign-on-interval", "expression has the stated sign on the printed interval 0 < variable < c", "expression",
          with_where({{"expression", argument_kind::formula, true, "a function of the variable alone once scaled"},
                      {"variable", argument_kind::formula, true, "the variable of the condition, a product of positive symbols", 0, "", true},
@@ -330,12 +363,13 @@ void check_shape_arguments(const claim_record& record, const std::string& file) 
       for (const shape_parameter& p : shape.parameters) names += (names.empty() ? "" : ", ") + p.name;
       throw claims_file_error(file, argument.line, "with." + name, "not an argument of the shape '" + shape.name + "' (" + names + ")");
     }
-    const bool list = it->kind == argument_kind::definitions || it->kind == argument_kind::symbols || it->kind == argument_kind::equations;
+    const bool list = it->kind == argument_kind::definitions || it->kind == argument_kind::symbols || it->kind == argument_kind::equations ||
+                      it->kind == argument_kind::words;
     if (argument.list != list) {
       throw claims_file_error(file, argument.line, "with." + name, list ? "must be an array of strings" : "must be one string (a formula reference)");
     }
     if (list && argument.values.empty()) throw claims_file_error(file, argument.line, "with." + name, "must not be empty");
-    if (it->kind == argument_kind::word || it->kind == argument_kind::symbols) continue;
+    if (it->kind == argument_kind::word || it->kind == argument_kind::symbols || it->kind == argument_kind::words) continue;
     for (const std::string& value : argument.values) {  // each a reference that reads ('label#0' does not)
       try {
         parse_reference(value);
@@ -455,7 +489,8 @@ std::string check_shape_formulas(const claim_record& record, const std::string& 
           }
           break;
         }
-        case argument_kind::definitions: break;
+        case argument_kind::definitions:
+        case argument_kind::words: break;
         case argument_kind::equations: {
           std::string shown;
           for (const referenced_formula& f : read->equations(p.name)) {

@@ -23,8 +23,9 @@ namespace simpson::verify::detail {
 /// be a square matrix once the definitions are put in; a printed condition "a < x < b" (three
 /// sides); a word of the record's own, one of a few (a sign: "positive"); a list of definitions
 /// (references to displays "x = ..."); a list of symbol names in TeX ('q_0', '\omega'); or a list of
-/// equations, each read whole, every side ("a = b = c").
-enum class argument_kind { formula, matrix, condition, word, definitions, symbols, equations };
+/// equations, each read whole, every side ("a = b = c"); or a list of the record's own words (a
+/// vocabulary).
+enum class argument_kind { formula, matrix, condition, word, definitions, symbols, equations, words };
 
 struct shape_parameter {
   std::string name;

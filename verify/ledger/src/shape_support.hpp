@@ -4,7 +4,8 @@
 // verdict on an identity in both kernels with its Coq certificate, and each shape's function, by
 // family: identities (shapes_identities.cpp), a form's invariance (shapes_invariance.cpp), derivations (shapes_derivation.cpp), series
 // (shapes_series.cpp), a map's explicitness (shapes_explicit.cpp), intervals (shapes_intervals.cpp), characteristic polynomials
-// (shapes_characteristic.cpp), quadrature (shapes_quadrature.cpp), sums (shapes_sums.cpp).
+// (shapes_characteristic.cpp), quadrature (shapes_quadrature.cpp), sums (shapes_sums.cpp), the prose
+// itself (shapes_prose.cpp).
 
 #include "kernel_zero.hpp"
 #include "proof_shapes.hpp"
@@ -204,5 +205,9 @@ claim_result consistency_shape(const shape_call& call, const run_context& ctx);
 claim_result taylor_expansion_shape(const shape_call& call, const run_context& ctx);
 claim_result sum_range_shape(const shape_call& call, const run_context& ctx);
 claim_result unconditional_stability_shape(const shape_call& call, const run_context& ctx);
+claim_result spelling_shape(const shape_call& call, const run_context& ctx);
+claim_result emerging_condition_shape(const shape_call& call, const run_context& ctx);
+claim_result known_method_shape(const shape_call& call, const run_context& ctx);
+claim_result citations_shape(const shape_call& call, const run_context& ctx);
 
 }  // namespace simpson::verify::detail

@@ -8,6 +8,7 @@
 
 #include "one_variable.hpp"
 #include "printed_check_support.hpp"
+#include "stability_regions.hpp"
 
 #include <simpson/verify/sentence_holes.hpp>
 #include <simpson/verify/quoted_words.hpp>
@@ -339,72 +340,6 @@ claim_result characteristic_roots_shape(const shape_call& call, const run_contex
   return result;
 }
 
-namespace {
-
-/// A reversible linear three-term scheme's monic discriminant as a function of the variable alone
-/// (what root-criterion and unconditional-stability judge): none, with `result` made `fails` and its
-/// note saying why, when the scheme is not one or the discriminant is not such a function.
-struct reversible_scheme {
-  three_term_coefficients terms;
-  kernel_decision reversible_own;
-  ex delta;
-  std::optional<one_variable> g;
-};
-std::optional<reversible_scheme> reversible_premise(const ex& scheme, const std::vector<GiNaC::symbol>& q, const ex& v, const std::string& scheme_ref,
-                                                   claim_result& result) {
-  reversible_scheme out;
-  const std::optional<three_term_coefficients> terms = linear_three_term(scheme, q);
-  if (!terms || !reversible(*terms, out.reversible_own)) {
-    result.outcome = verdict::undecided;
-    result.note = "The shape judges linear three-term schemes whose first and last coefficients are equal; (" + scheme_ref + ") is not one.";
-    return std::nullopt;
-  }
-  out.terms = *terms;
-  out.delta = monic_discriminant(*terms);
-  out.g = in_variable(out.delta, v);
-  if (!out.g) {
-    result.outcome = verdict::undecided;
-    result.note = "The discriminant " + text_of(out.delta) + " is not a function of " + text_of(v) + " alone.";
-    return std::nullopt;
-  }
-  return out;
-}
-
-/// A region of v > 0 between consecutive positive roots or poles of the discriminant g (0 first, the
-/// last reaching infinity), with g's sign at an inner point: negative is a stable band.
-struct discriminant_region {
-  std::size_t index;  // the region ends at g.ends[index]; index == g.ends.size() for the last
-  bool last;
-  rational from;
-  std::string from_text, to_text;
-  bool negative;
-  std::string text() const { return "(" + from_text + ", " + to_text + ")"; }
-};
-std::vector<discriminant_region> regions_of(const one_variable& g) {
-  std::vector<discriminant_region> out;
-  rational from = 0;
-  std::string from_text = "0";
-  for (std::size_t k = 0; k <= g.ends.size(); ++k) {
-    const bool last = k == g.ends.size();
-    const rational inner = last ? rational(from + 1) : rational((from + g.ends[k].low) / 2);
-    const std::string to_text = last ? "infinity" : g.text(g.ends[k]);
-    out.push_back({k, last, from, from_text, to_text, g.sign_at(inner) < 0});
-    if (!last) {
-      from = g.ends[k].high;
-      from_text = to_text;
-    }
-  }
-  return out;
-}
-/// Coq's goal that g is negative on a stable band, the `number`-th: none when the band reaches
-/// infinity or an end is only enclosed (Coq gets rational ends).
-std::optional<proof_goal> stable_band_goal(const one_variable& g, const discriminant_region& band, std::size_t number) {
-  const std::size_t k = band.index;
-  if (band.last || !g.ends[k].exact() || (k > 0 && !g.ends[k - 1].exact())) return std::nullopt;
-  return g.sign_goal_between("stable_band_" + std::to_string(number), -1, band.from, g.ends[k].low);
-}
-
-}  // namespace
 
 /// "The scheme is stable when the roots of the corresponding equation are of modulus {modulus}": the
 /// stated criterion against the root condition (every root of modulus at most 1, those of modulus 1

@@ -115,6 +115,9 @@ struct claim_result {
   /// For a claim typed from the prose: the sentences it judges, as quoted from the paper
   /// ({source, line, text, pattern, words, parsed}); empty for a claim that quotes none.
   json quoted = json::array();
+  /// For a claim that reads the document's text as a whole (its prose's spelling, its citations)
+  /// rather than one formula or one sentence.
+  bool reads_whole_text = false;
   /// Seconds the GiNaC proof of the printed formula took (reported under "timing", never in evidence).
   double printed_seconds = 0;
   /// The Coq certificate (certificates/<id>.v), printed from the identities GiNaC proved; empty when
@@ -138,8 +141,9 @@ struct claim_result {
 ///                   (the note says which);
 ///   derivation_gap  the conclusion holds, but the printed argument does not reach it;
 ///   naming          a result attributed to the wrong principle or person;
-///   unverifiable    material the claim needs is absent from the source (a figure, a reference).
-enum class finding { none, erratum, wording, derivation_gap, naming, unverifiable };
+///   unverifiable    material the claim needs is absent from the source (a figure, a reference);
+///   prose           slips of spelling in the prose, counted apart from the findings about the mathematics.
+enum class finding { none, erratum, wording, derivation_gap, naming, unverifiable, prose };
 
 inline std::string to_string(finding f) {
   switch (f) {
@@ -149,6 +153,7 @@ inline std::string to_string(finding f) {
     case finding::derivation_gap: return "derivation gap";
     case finding::naming: return "naming";
     case finding::unverifiable: return "unverifiable";
+    case finding::prose: return "prose";
   }
   return "?";
 }

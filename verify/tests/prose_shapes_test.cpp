@@ -1,0 +1,152 @@
+// The shapes that judge what a text says about itself and its place: its spelling, its citations,
+// a condition it says emerges from a formula, and a method it presents as its own that is a known
+// one; and the prose's words they read (prose_words.hpp). Each on a small document where it holds
+// and on one where a weaker check would pass.
+
+#include "shape_fixture.hpp"
+
+#include <simpson/verify/prose_words.hpp>
+#include <simpson/verify/tex_document.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+namespace simpson::verify {
+namespace {
+
+using test::document;
+using test::ShapesOnADocument;
+using test::shape_document;
+
+std::vector<std::string> words_of(const std::string& text, const std::string& from = {}) {
+  const paper_source source = document(text);
+  std::vector<std::string> out;
+  for (const prose_word& w : prose_words(source, tex_document(source), from)) out.push_back(w.word);
+  return out;
+}
+
+TEST(ProseWords, AreWhatAReaderReadsBetweenTheFormulas) {
+  // Math, a label, a citation and a comment are not prose; an accent is its letter; an ending glued
+  // to a number is not a word; an emphasis's argument is prose.
+  const std::vector<std::string> words =
+      words_of("\\begin{document}\nThe step $h_{teh}$ is \\emph{smal} \\cite{Ar74} in Math\\'ematiques\\label{recieve} since the 1950's % misspeled\n"
+               "and the 6th time, \\[ x = \\mathrm{wrng} \\] Fran\\c{c}ois's.\n\\end{document}\nafter");
+  EXPECT_EQ(words, (std::vector<std::string>{"The", "step", "is", "smal", "in", "Mathématiques", "since", "the", "and", "the", "time", "François's"}));
+  // From where the record says the prose starts; a start the source does not print is bad input.
+  EXPECT_EQ(words_of("Title words. Abstract Here it starts.", "Abstract"), (std::vector<std::string>{"Abstract", "Here", "it", "starts"}));
+  EXPECT_THROW(words_of("No such start.", "Abstract"), std::invalid_argument);
+}
+
+const std::string prose_declarations = R"(
+[document]
+title = "Prose under test"
+[symbols]
+real = ['x']
+)";
+
+class ProseOfADocument : public ::testing::Test {
+ protected:
+  claim_result run(const std::string& shape, const std::string& with, const std::string& text) {
+    book_ = read_claim_book(prose_declarations + test::record("under-test", shape, with), "test.toml");
+    reading_ = read_note(document(text));
+    check_claims_file_formulas(book_, reading_.source);
+    run_context ctx;
+    ctx.paper = &reading_;
+    ctx.book = &book_;
+    return check_claim(book_.find("under-test"), ctx);
+  }
+  claim_book book_;
+  paper_reading reading_;
+};
+
+TEST_F(ProseOfADocument, SpellingFindsEachSlipOnceWithTheDictionarysSuggestion) {
+  const std::string text = "\\title{Prose under test}\nThe scheme is symplectic and inconditionally stable; the scheme is mutiple times "
+                           "inconditionally stable, as $x_{mutiple}$ says \\cite{Smth99}.\n";
+  const claim_result slips = run("spelling", "{ vocabulary = ['symplectic'] }", text);
+  ASSERT_EQ(slips.outcome, verdict::erratum) << slips.note << slips.evidence.dump();
+  ASSERT_EQ(slips.amendments.size(), 2u) << slips.evidence.dump();
+  EXPECT_EQ(slips.amendments[0].printed, "inconditionally");
+  EXPECT_EQ(slips.amendments[0].should_be, "unconditionally");
+  EXPECT_EQ(slips.amendments[1].printed, "mutiple");
+  EXPECT_EQ(slips.amendments[1].should_be, "multiple");
+  // The word of art, without the vocabulary, is a slip too: the vocabulary is what keeps it out.
+  EXPECT_EQ(run("spelling", "{ from = 'Prose' }", text).amendments.size(), 3u);
+  const claim_result clean = run("spelling", "{ vocabulary = ['symplectic'] }", "\\title{Prose under test}\nThe scheme is symplectic and stable.\n");
+  EXPECT_EQ(clean.outcome, verdict::holds) << clean.evidence.dump();
+}
+
+TEST_F(ProseOfADocument, CitationsWithoutTheirEntriesAreUnverifiableOnce) {
+  const std::string cited = "\\title{Prose under test}\nAs shown \\cite{Ar74,Ne59} and again \\cite{Ar74}.\n";
+  const claim_result missing = run("citations", "{}", cited);
+  EXPECT_EQ(missing.outcome, verdict::unverifiable) << missing.note;
+  EXPECT_EQ(missing.evidence.at("citations").at("unresolved"), (json{"Ar74", "Ne59"}));
+  // One entry missing is enough; both there, the citations resolve.
+  EXPECT_EQ(run("citations", "{}", cited + "\\begin{thebibliography}{9}\\bibitem{Ar74} Arnold.\\end{thebibliography}\n").outcome, verdict::unverifiable);
+  EXPECT_EQ(run("citations", "{}", cited + "\\begin{thebibliography}{9}\\bibitem{Ar74} Arnold. \\bibitem{Ne59} Newmark.\\end{thebibliography}\n").outcome,
+            verdict::holds);
+}
+
+// "A stability condition is naturally emerging" after a formula with a pole: the pole bounds
+// stability only when the scheme's stable set is the band it ends. Leapfrog (sv) is stable on
+// (0, 2) alone: a pole at 2 ends it; the node's pole at 2 sqrt(2) does not, though the condition
+// 0 < omega h < 2 sqrt(2) is that pole (a check of the pole alone would pass it); a bound that is
+// not the pole is an erratum.
+TEST_F(ShapesOnADocument, EmergingCondition) {
+  const std::string text = shape_document + "\\begin{equation}\\label{poletwo} y = \\frac{1}{1 - \\frac{\\om^2 h^2}{4}} \\end{equation}\n"
+                                            "A stability condition is naturally emerging: see.\n";
+  const auto judge = [&](const std::string& formula, const std::string& condition, const std::string& scheme) {
+    return run("emerging-condition", "{ formula = \"" + formula + "\", condition = '" + condition + "', scheme = \"" + scheme +
+                                         R"(:lhs", sequence = ['q_{j-1}', 'q_j', 'q_{j+1}'], variable = '$\omega h$', sentence = 'A stability condition is {emerges}:' })",
+               text);
+  };
+  const claim_result holds = judge("poletwo", "inline:Stable for", "sv");
+  EXPECT_EQ(holds.outcome, verdict::holds) << holds.note << holds.evidence.dump();
+  const claim_result gap = judge("midnode", "inline:Also stable for", "sv");
+  EXPECT_EQ(gap.outcome, verdict::erratum) << gap.note;
+  EXPECT_NE(gap.note.find("not the end of the stable band"), std::string::npos) << gap.note;
+  ASSERT_EQ(gap.amendments.size(), 1u);
+  EXPECT_EQ(gap.amendments[0].printed, "naturally emerging (from the pole of midnode)");
+  // Stable for every step (average): a pole bounds nothing.
+  EXPECT_EQ(judge("poletwo", "inline:Stable for", "average").outcome, verdict::erratum);
+  const claim_result not_the_pole = judge("midnode", "inline:Stable for", "sv");
+  EXPECT_EQ(not_the_pole.outcome, verdict::erratum);
+  EXPECT_NE(not_the_pole.note.find("is not where (midnode) has its first pole"), std::string::npos) << not_the_pole.note;
+  // A scheme read as 0 (its last side, not its left one) is no three-term scheme: undecided, not a fault.
+  EXPECT_EQ(run("emerging-condition", R"({ formula = "poletwo", condition = 'inline:Stable for', scheme = "sv", sequence = ['q_{j-1}', 'q_j', 'q_{j+1}'], )"
+                                      R"(variable = '$\omega h$', sentence = 'A stability condition is {emerges}:' })",
+                text)
+                .outcome,
+            verdict::undecided);
+}
+
+// Leapfrog's map (map, in (q, p)) is the 2-stage Lobatto IIIA-IIIB pair's on the oscillator: a text
+// that presents it as new without naming it has a naming finding; naming it, none; another map (or
+// another tableau) is not that method, whatever the words.
+TEST_F(ShapesOnADocument, KnownMethod) {
+  const std::string presented = shape_document + "We propose a new integrator for the time integration of oscillators.\n";
+  const auto judge = [&](const std::string& map, const std::string& tableau_position, const std::string& text) {
+    return run("known-method", "{ map = \"" + map + "\", state = ['q', 'p'], position = ['q'], step = ['h'], frequency = '$\\omega$', mass = '$m$', "
+                                                    "tableau_position = '" + tableau_position + R"(', )" +
+                                   R"(tableau_momentum = '$\begin{pmatrix} \frac{1}{2} & 0 \\ \frac{1}{2} & 0 \end{pmatrix}$', )"
+                                   R"(weights = '$\begin{pmatrix} \frac{1}{2} & \frac{1}{2} \end{pmatrix}$', method = "the 2-stage Lobatto IIIA-IIIB pair", )"
+                                   R"(names = ["Lobatto", "Verlet"], sentence = 'We propose a {novelty} for the time integration of' })",
+               text);
+  };
+  const std::string lobatto_a = R"($\begin{pmatrix} 0 & 0 \\ \frac{1}{2} & \frac{1}{2} \end{pmatrix}$)";
+  const claim_result unnamed = judge("map", lobatto_a, presented);
+  EXPECT_EQ(unnamed.outcome, verdict::erratum) << unnamed.note << unnamed.evidence.dump();
+  ASSERT_EQ(unnamed.amendments.size(), 1u);
+  EXPECT_EQ(unnamed.amendments[0].printed, "new integrator");
+  EXPECT_FALSE(unnamed.certificate.empty()) << "the maps' equality certified entry by entry";
+  EXPECT_EQ(judge("map", lobatto_a, presented + "It is the Verlet scheme.\n").outcome, verdict::holds);
+  // Psi's (2,1) entry lacks its factor: not the pair's map, so the words present something else.
+  EXPECT_EQ(judge("mapwrong", lobatto_a, presented).outcome, verdict::holds);
+  // Lobatto IIIB's tableau for q too: another method, another map.
+  EXPECT_EQ(judge("map", R"($\begin{pmatrix} \frac{1}{2} & 0 \\ \frac{1}{2} & 0 \end{pmatrix}$)", presented).outcome, verdict::holds);
+}
+
+}  // namespace
+}  // namespace simpson::verify
