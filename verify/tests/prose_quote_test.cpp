@@ -317,18 +317,12 @@ TEST(ChangedTable, TheStatedConventionsAreJudgedByWhetherTheyReproduceTheTable) 
   EXPECT_EQ(changed.outcome, verdict::fails) << changed.note;
 }
 
-// A copy whose Table 1 was computed from rest at q₀ = π/4 with m = 2 (the stated discrete
-// conventions), each entry printed with three digits in the paper's own format: table-values names
-// exactly that start, every entry reproduced, and decides it by enclosures too.
-TEST(ChangedTable, ATableComputedWithSimpleValuesIsExplainedByThem) {
-  const double pi = boost::math::constants::pi<double>();
-  const std::vector<computed_entry> computed = table1_under(table1_stated_conventions(), {{"m", 2}, {"amplitude", pi / 4}, {"phase", pi / 2}});
-  paper_source paper = embedded_paper();
+/// The embedded paper with Table 1 as `computed` gives it, each entry printed with three digits in the
+/// paper's own format ("$ d.dd \,\, 10^{e} $"); an "exact" row keeps its round-off values.
+paper_source with_table(const std::vector<computed_entry>& computed, paper_source paper = embedded_paper()) {
   std::size_t at = paper.text.find("Newmark & momentum &");
-  ASSERT_NE(at, std::string::npos);
   const printed_table1 printed = read_table1(embedded_paper());
   for (std::size_t k = 0; k < computed.size(); ++k) {
-    // The cells of the rows, in order: "$ d.dd \,\, 10^{e} $"; an "exact" row keeps its round-off values.
     at = paper.text.find('$', at);
     const std::size_t end = paper.text.find('$', at + 1) + 1;
     if (printed.orders[k / 3] != "exact") {
@@ -339,7 +333,52 @@ TEST(ChangedTable, ATableComputedWithSimpleValuesIsExplainedByThem) {
     at = paper.text.find('$', at + 1) + 1;
   }
   paper.origin = "altered copy";
-  const paper_reading reading = read_paper(paper);
+  return paper;
+}
+
+/// The embedded paper stating q(t) = cos ωt and p(t) = -m ω sin ωt: another consistent solution.
+paper_source stating_a_cosine(paper_source paper = embedded_paper()) {
+  const std::string printed = "q(t) = \\sin \\, \\omega \\, t \\, $ and $ \\, p(t) = m \\, \\omega \\, \\cos \\, \\omega \\, t $";
+  const std::size_t at = paper.text.find(printed);
+  if (at == std::string::npos) throw std::logic_error("the stated solution's sentence is not in the embedded paper");
+  replace_text(paper, at, printed.size(), "q(t) = \\cos \\, \\omega \\, t \\, $ and $ \\, p(t) = - m \\, \\omega \\, \\sin \\, \\omega \\, t $");
+  paper.origin = "altered copy";
+  return paper;
+}
+
+// The stated solution is read, not typed: a copy stating another consistent solution, q = cos ωt
+// with p = -m ω sin ωt, is searched from it (a check that expects the printed sin fails it without
+// a search). On the printed table it does not reproduce the entries (an erratum naming the simplest
+// start, as for the sin); on a table computed from it (m = 1, released from rest at q₀ = 1) it holds.
+TEST(ChangedTable, AnotherConsistentStatedSolutionIsSearchedNotFailed) {
+  const paper_reading cosine = read_paper(stating_a_cosine());
+  const claim_result on_printed = check_claim(paper_book().find("experiment-conventions"), run_context{{precision::parse("double")}, 20230830, 2, &cosine});
+  EXPECT_EQ(on_printed.outcome, verdict::erratum) << on_printed.note;
+  EXPECT_NE(on_printed.correction.find("q(t) = cos(ωt) with m = 1 reproduces"), std::string::npos) << on_printed.correction;
+  const double half_pi = boost::math::constants::half_pi<double>();
+  const paper_reading computed_from_it =
+      read_paper(stating_a_cosine(with_table(table1_under(table1_stated_conventions(), {{"m", 1}, {"amplitude", 1}, {"phase", half_pi}}))));
+  const claim_result holds = check_claim(paper_book().find("experiment-conventions"), run_context{{precision::parse("double")}, 20230830, 2, &computed_from_it});
+  EXPECT_EQ(holds.outcome, verdict::holds) << holds.note << holds.evidence.dump();
+  // The sin the paper prints, on that table: not reproduced.
+  const paper_reading sine = read_paper(with_table(table1_under(table1_stated_conventions(), {{"m", 1}, {"amplitude", 1}, {"phase", half_pi}})));
+  EXPECT_NE(check_claim(paper_book().find("experiment-conventions"), run_context{{precision::parse("double")}, 20230830, 2, &sine}).outcome,
+            verdict::holds);
+  // A pair that is no one solution is what fails: p printed +m ω sin ωt for q = cos ωt.
+  paper_source wrong = stating_a_cosine();
+  const std::size_t minus = wrong.text.find("p(t) = - m");
+  replace_text(wrong, minus, 10, "p(t) = m");
+  const paper_reading inconsistent = read_paper(wrong);
+  EXPECT_EQ(check_claim(paper_book().find("experiment-conventions"), run_context{{precision::parse("double")}, 20230830, 2, &inconsistent}).outcome,
+            verdict::fails);
+}
+
+// A copy whose Table 1 was computed from rest at q₀ = π/4 with m = 2 (the stated discrete
+// conventions), each entry printed with three digits in the paper's own format: table-values names
+// exactly that start, every entry reproduced, and decides it by enclosures too.
+TEST(ChangedTable, ATableComputedWithSimpleValuesIsExplainedByThem) {
+  const double pi = boost::math::constants::pi<double>();
+  const paper_reading reading = read_paper(with_table(table1_under(table1_stated_conventions(), {{"m", 2}, {"amplitude", pi / 4}, {"phase", pi / 2}})));
   const claim_result r = check_claim(paper_book().find("table-values"), run_context{{precision::parse("double")}, 20230830, 2, &reading});
   EXPECT_EQ(r.outcome, verdict::erratum) << r.note;
   EXPECT_NE(r.correction.find("Table 1 is reproduced, every entry within its printed digits: The oscillator released from rest at q₀ = π/4, "

@@ -89,6 +89,23 @@ TEST(TexReader, ApplicationOrProductIsTheDeclarationsChoice) {
   EXPECT_TRUE(equal_values(reading_of("q"), symbol_of("q")));
 }
 
+// A function's argument without parentheses is the product written after it, as mathematics reads
+// it: \sin \omega t is sin(ωt), not sin(ω) t (which a reader taking one factor gets, and which
+// makes q = \sin \omega t no solution of q'' = -ω² q).
+TEST(TexReader, AFunctionsArgumentIsTheProductAfterIt) {
+  const ex x = symbol_of("x"), t = symbol_of("t"), omega = symbol_of("omega"), m = symbol_of("m"), h = symbol_of("h");
+  EXPECT_TRUE(equal_values(reading_of("\\sin \\omega t"), GiNaC::sin(omega * t)));
+  EXPECT_TRUE(equal_values(reading_of("\\sin \\, \\omega \\, t"), GiNaC::sin(omega * t)));
+  EXPECT_TRUE(equal_values(reading_of("m \\omega \\cos \\omega t"), m * omega * GiNaC::cos(omega * t)));
+  EXPECT_TRUE(equal_values(reading_of("\\sin x \\cos h"), GiNaC::sin(x) * GiNaC::cos(h)));
+  EXPECT_TRUE(equal_values(reading_of("\\sin(x) h"), GiNaC::sin(x) * h));
+  EXPECT_TRUE(equal_values(reading_of("\\sin 2 x + 1"), GiNaC::sin(2 * x) + 1));
+  EXPECT_TRUE(equal_values(reading_of("\\sin x \\cdot h"), GiNaC::sin(x) * h));
+  EXPECT_TRUE(equal_values(reading_of("\\sin^2 \\omega t"), GiNaC::pow(GiNaC::sin(omega * t), 2)));
+  EXPECT_TRUE(equal_values(reading_of("\\exp \\frac{x}{2} h"), GiNaC::exp(x * h / 2)));
+  EXPECT_NE(why_refused("\\sin x (1 + h)").find("whether it belongs to the argument is not written"), std::string::npos) << why_refused("\\sin x (1 + h)");
+}
+
 TEST(TexReader, DerivativesAsPeopleWriteThem) {
   const ex x = symbol_of("x");
   const GiNaC::symbol y("y");

@@ -176,6 +176,11 @@ run_record run(const scene& s, std::shared_ptr<const claim_book> book, const pap
         settings.printed_orders = printed.orders;
       } catch (const text_changed&) {
       }
+      try {  // the solution it states, where the convention search starts (its claim says when it is gone)
+        const stated_solution stated = read_stated_solution(paper.source);
+        settings.stated = {stated.amplitude, stated.phase, stated.period};
+      } catch (const text_changed&) {
+      }
       return run_table1(settings);
     });
   }

@@ -274,6 +274,59 @@ std::vector<double> polished_units(const std::vector<printed_entry>& printed, co
   return data.best;
 }
 
+/// How far one parameter reaches, jointly with the others, over the values that reproduce every entry:
+/// NLopt's COBYLA maximises `direction` times its unit coordinate subject to every residual <= 1, all
+/// parameters free, from `start` (which reproduces the table). Returns the farthest value at which a
+/// full run reproduced every entry: each end of the extent is attained, so the joint region is at
+/// least this wide (an inner bound: a region of several pieces may reach farther).
+double joint_end(const std::vector<printed_entry>& printed, const convention_choice& choice, const std::vector<continuous_parameter>& continuous,
+                 const parametrised_experiment& experiment, const parameter_values& start, std::size_t which, int direction,
+                 std::size_t& evaluations) {
+  struct reach {
+    const std::vector<printed_entry>& printed;
+    const convention_choice& choice;
+    const std::vector<continuous_parameter>& continuous;
+    const parametrised_experiment& experiment;
+    std::size_t& evaluations;
+    std::size_t which;
+    int direction;
+    double farthest;  // the unit coordinate of the farthest point that reproduced every entry
+  } data{printed, choice, continuous, experiment, evaluations, which, direction, to_unit(continuous[which], start.at(continuous[which].name))};
+  const std::size_t n = continuous.size();
+  std::vector<double> x;
+  for (const continuous_parameter& p : continuous) x.push_back(to_unit(p, start.at(p.name)));
+  nlopt::opt opt(nlopt::LN_COBYLA, static_cast<unsigned>(n));
+  opt.set_lower_bounds(std::vector<double>(n, 0.0));
+  opt.set_upper_bounds(std::vector<double>(n, 1.0));
+  opt.set_max_objective([](unsigned, const double* w, double* grad, void* raw) {
+    const reach& r = *static_cast<const reach*>(raw);
+    if (grad != nullptr) std::fill(grad, grad + r.continuous.size(), 0.0);
+    return r.direction * w[r.which];
+  }, &data);
+  opt.add_inequality_mconstraint(
+      [](unsigned count, double* result, unsigned m, const double* w, double*, void* raw) {
+        reach& r = *static_cast<reach*>(raw);
+        parameter_values v;
+        for (unsigned k = 0; k < m; ++k) v[r.continuous[k].name] = from_unit(r.continuous[k], w[k]);
+        ++r.evaluations;
+        const std::vector<entry_score> scores = score_entries(r.printed, r.experiment(r.choice, v));
+        for (unsigned e = 0; e < count; ++e) result[e] = std::min(scores[e].residual, 1e6) - 1;
+        bool all = true;
+        for (const entry_score& s : scores) all = all && s.reproduced;
+        if (all && r.direction * w[r.which] > r.direction * r.farthest) r.farthest = w[r.which];
+      },
+      &data, std::vector<double>(printed.size(), 0.0));
+  opt.set_maxeval(300);
+  opt.set_initial_step(std::vector<double>(n, 1e-4));
+  double f = 0;
+  try {
+    opt.optimize(x, f);
+  } catch (const nlopt::roundoff_limited&) {
+  } catch (const std::invalid_argument&) {
+  }
+  return from_unit(continuous[which], data.farthest);
+}
+
 /// One discrete choice's global fit (see search_conventions), judged by a full run.
 convention_candidate global_fit(const std::vector<printed_entry>& printed, const convention_choice& choice,
                                 const std::vector<continuous_parameter>& continuous, const parametrised_experiment& experiment,
@@ -521,28 +574,16 @@ convention_search_result search_conventions(const std::vector<printed_entry>& pr
     if (k == discrete.size()) break;
   }
   std::stable_sort(result.tried.begin(), result.tried.end(), better);
-  // How sharply the table pins each fitted parameter of a reproducing candidate.
+  // How far the table lets each fitted parameter of a reproducing candidate move, jointly with the
+  // others (a slice through the optimum, the others fixed, would exclude values a joint move keeps).
   if (!result.tried.empty() && result.tried.front().reproduced == printed.size()) {
     convention_candidate& best = result.tried.front();
-    for (const continuous_parameter& p : continuous) {
-      std::pair<double, double> interval{best.values[p.name], best.values[p.name]};
-      for (const int direction : {-1, 1}) {
-        double inside = to_unit(p, best.values[p.name]), step = 1e-6;
-        while (step < 1) {
-          parameter_values trial = best.values;
-          const double u = inside + direction * step;
-          if (u < 0 || u > 1) break;
-          trial[p.name] = from_unit(p, u);
-          if (judged(printed, best.choice, trial, experiment, result.evaluations).reproduced != printed.size()) break;
-          inside = u;
-          step *= 1.5;
-        }
-        // The endpoint, never past the value itself (the unit map's round trip is not exact).
-        const double end = from_unit(p, inside);
-        if (direction < 0) interval.first = std::min(end, best.values[p.name]);
-        else interval.second = std::max(end, best.values[p.name]);
-      }
-      best.pinned[p.name] = interval;
+    for (std::size_t k = 0; k < continuous.size(); ++k) {
+      const double at = best.values[continuous[k].name];
+      // Each end never inside the value itself (the unit map's round trip is not exact).
+      best.joint_extent[continuous[k].name] = {
+          std::min(at, joint_end(printed, best.choice, continuous, experiment, best.values, k, -1, result.evaluations)),
+          std::max(at, joint_end(printed, best.choice, continuous, experiment, best.values, k, 1, result.evaluations))};
     }
   }
   for (std::size_t k = 0; k < result.tried.size() && k < 12; ++k) name_fitted_values(result.tried[k], printed, experiment, result.evaluations);

@@ -32,9 +32,9 @@ struct basis_key {
   bool simpson_scheme = false;
   long long N = 0, n = 0;
   bool internal_nodes = false;
-  double h = 0;
+  double h = 0, omega = 0;
   bool operator==(const basis_key& o) const {
-    return simpson_scheme == o.simpson_scheme && N == o.N && n == o.n && internal_nodes == o.internal_nodes && h == o.h;
+    return simpson_scheme == o.simpson_scheme && N == o.N && n == o.n && internal_nodes == o.internal_nodes && h == o.h && omega == o.omega;
   }
 };
 
@@ -53,7 +53,7 @@ const std::vector<basis_point>& basis_run(const basis_key& key) {
     if (k == key) return points;
   }
   if (cache.size() >= 64) cache.erase(cache.begin());
-  const double omega = boost::math::constants::two_pi<double>(), m = 1;
+  const double omega = key.omega, m = 1;
   const oscillator_parameters<double> par{m, omega, key.h};
   const phase_point<double> u{m * omega, 0}, v{0, 1};
   const one_step_matrix<double> phi = key.simpson_scheme ? simpson_map(par) : newmark_map(par);
@@ -90,7 +90,9 @@ const std::vector<basis_point>& basis_run(const basis_key& key) {
 
 table1_run_errors table1_run(bool simpson_scheme, long long N, const convention_choice& c, const parameter_values& v) {
   // The conventions, decoded once (this runs some 10^5 times per search).
-  const double omega = boost::math::constants::two_pi<double>(), m = v.at("m"), A = v.at("amplitude"), phase = v.at("phase");
+  // The period T the text states (1 unless given): ω = 2π/T, h = T/N.
+  const double T = v.count("period") ? v.at("period") : 1.0;
+  const double omega = boost::math::constants::two_pi<double>() / T, m = v.at("m"), A = v.at("amplitude"), phase = v.at("phase");
   const std::string& steps = c.at("steps");
   const bool fewer = steps == "N - 1 steps of h = T/(N - 1)", more = steps == "N + 1 steps of h = T/N";
   const std::string& over = c.at("maximum over");
@@ -99,7 +101,7 @@ table1_run_errors table1_run(bool simpson_scheme, long long N, const convention_
   const bool relative_energy = c.at("energy") == "relative, |H_j - H_0|/H_0", energy_at_end = c.at("energy") == "|H_N - H_0|, at the end";
 
   const long long n = fewer ? N - 1 : more ? N + 1 : N;
-  const double h = 1.0 / static_cast<double>(fewer ? N - 1 : N);
+  const double h = T / static_cast<double>(fewer ? N - 1 : N);
   const oscillator_parameters<double> par{m, omega, h};
   const double cu = A * std::cos(phase), cv = A * std::sin(phase);
   const phase_point<double> y0{m * omega * cu, cv};  // H_0 of the run, for relative energies and the round-off bound
@@ -112,7 +114,7 @@ table1_run_errors table1_run(bool simpson_scheme, long long N, const convention_
   const double q_scale = relative ? A : 1.0;
   const double energy_scale = relative_energy ? H0 : 1.0;
   const auto combined = [&](const form_pair& f) { return cu * cu * f.xx + 2 * cu * cv * f.xy + cv * cv * f.yy; };
-  for (const basis_point& b : basis_run({simpson_scheme, N, n, internal_nodes, h})) {
+  for (const basis_point& b : basis_run({simpson_scheme, N, n, internal_nodes, h, omega})) {
     const bool last = b.node && b.j == n;
     if (b.node && ((skip_start && b.j == 0) || (end_only && !last))) continue;
     const double p = m * (cu * b.yu.p + cv * b.yv.p), q = cu * b.yu.q + cv * b.yv.q;
@@ -215,6 +217,9 @@ std::optional<exact_start> table1_exact_start(const convention_candidate& c) {
 }
 
 std::optional<exact_start> table1_reproducing_start(const convention_search_result& r) {
+  // The enclosures run one period of ω = 2π: a table stated with another period is not enclosed.
+  const auto period = r.fixed.find("period");
+  if (period != r.fixed.end() && period->second != 1) return std::nullopt;
   return r.simplest() != nullptr ? table1_exact_start(*r.simplest()) : std::nullopt;
 }
 
@@ -286,16 +291,31 @@ std::vector<computed_entry> table1_under(const convention_choice& choice, const 
   return entries;
 }
 
-convention_search_result search_table1(const std::vector<printed_entry>& printed) {
+convention_search_result search_table1(const std::vector<printed_entry>& printed, const table1_stated& stated) {
   // The ledger's table-values and the table1 section search the same table in one run: once.
   static std::vector<std::pair<std::vector<double>, convention_search_result>> searched;
-  std::vector<double> key;
+  std::vector<double> key{stated.amplitude, stated.phase, stated.period};
   for (const printed_entry& e : printed) key.push_back(e.round_off ? -e.value : e.value);
   for (const auto& [values, result] : searched) {
     if (values == key) return result;
   }
-  searched.emplace_back(key, search_conventions(printed, table1_discrete_conventions(), table1_continuous_parameters(), table1_under,
-                                                      table1_simple_values()));
+  // The stated solution is the text's: its amplitude and phase where the search starts (and what it
+  // calls stated), its period fixed in every run.
+  std::vector<continuous_parameter> continuous = table1_continuous_parameters();
+  for (continuous_parameter& p : continuous) {
+    if (p.name == "amplitude") p.stated = stated.amplitude;
+    if (p.name == "phase") p.stated = stated.phase;
+  }
+  const double period = stated.period;
+  const parametrised_experiment experiment = [period](const convention_choice& choice, const parameter_values& values) {
+    if (period == 1) return table1_under(choice, values);
+    parameter_values with_period = values;
+    with_period["period"] = period;
+    return table1_under(choice, with_period);
+  };
+  convention_search_result result = search_conventions(printed, table1_discrete_conventions(), continuous, experiment, table1_simple_values());
+  result.fixed["period"] = period;
+  searched.emplace_back(key, std::move(result));
   return searched.back().second;
 }
 

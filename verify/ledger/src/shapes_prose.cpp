@@ -81,7 +81,9 @@ claim_result spelling_shape(const shape_call& call, const run_context& ctx) {
     found.push_back({{"word", word}, {"lines", lines}, {"suggestions", suggested}});
     const std::string where = slips[word].size() == 1 ? fmt::format("line {}", slips[word].front()) : fmt::format("lines {}", fmt::join(slips[word], ", "));
     result.amendments.push_back(amendment_in_words(where, word, best.empty() ? "(no suggestion)" : best));
-    corrections.push_back(fmt::format("{} ({}): {}", word, where, best.empty() ? "no suggestion" : best));
+    // No line in the correction: the recorded correction guards the words, and an edit elsewhere moves the lines.
+    const std::size_t times = slips[word].size();
+    corrections.push_back(fmt::format("{}{}: {}", word, times == 1 ? std::string() : fmt::format(" ({} times)", times), best.empty() ? "no suggestion" : best));
   }
   result.evidence["prose"] = {{"statement", "every word of the prose is in Hunspell's en_US dictionary or the record's vocabulary"},
                               {"from", from.empty() ? "the body's start" : from},

@@ -3,6 +3,11 @@
 #include <simpson/verify/printed_table1.hpp>
 
 #include <simpson/verify/quoted_sentence.hpp>
+#include <simpson/verify/tex_math.hpp>
+
+#include <ginac/ginac.h>
+
+#include <cmath>
 
 #include <algorithm>
 #include <optional>
@@ -62,6 +67,46 @@ printed_table1 read_table1(const paper_source& paper, json* quotes) {
     }
   }
   return table;
+}
+
+stated_solution read_stated_solution(const paper_source& paper, json* quotes) {
+  const quoted_sentence said = quote_sentence(paper, stated_solution_pattern, quotes);
+  stated_solution s;
+  s.q_tex = said.words("q_exact");
+  s.p_tex = said.words("p_exact");
+  s.line = said.span().line;
+  s.period = said.number("period");
+  if (s.period <= 0) said.unparsed("period", "a positive period");
+  // Read apart from the paper's own symbol table: names here are this sentence's.
+  tex_symbols symbols;
+  const GiNaC::symbol &t = symbols["t"], &omega = symbols["omega"], &m = symbols["m"];
+  GiNaC::ex q, p;
+  try {
+    q = read_tex(s.q_tex, tex_declarations{}, symbols);
+  } catch (const std::exception&) {
+    said.unparsed("q_exact", "a function of t in TeX");
+  }
+  try {
+    p = read_tex(s.p_tex, tex_declarations{}, symbols);
+  } catch (const std::exception&) {
+    said.unparsed("p_exact", "a function of t in TeX");
+  }
+  const GiNaC::ex dq = GiNaC::diff(q, t);
+  s.solves = GiNaC::normal(GiNaC::diff(dq, t) + omega * omega * q).is_zero();
+  s.momentum = GiNaC::normal(p - m * dq).is_zero();
+  s.q_text = canonical_text(q);
+  s.p_text = canonical_text(p);
+  s.m_dq_dt = canonical_text(m * dq);
+  // q = A sin(ω t + φ): q(0) = A sin φ, q'(0)/ω = A cos φ, both numbers (ω a positive symbol).
+  const GiNaC::ex q0 = GiNaC::normal(q.subs(t == 0)), v0 = GiNaC::normal(dq.subs(t == 0) / omega);
+  const GiNaC::ex q0n = GiNaC::evalf(q0), v0n = GiNaC::evalf(v0);
+  if (!GiNaC::is_a<GiNaC::numeric>(q0n) || !GiNaC::is_a<GiNaC::numeric>(v0n)) said.unparsed("q_exact", "a number times sin(omega t + phase)");
+  const double a = GiNaC::ex_to<GiNaC::numeric>(q0n).to_double(), b = GiNaC::ex_to<GiNaC::numeric>(v0n).to_double();
+  s.amplitude = std::hypot(a, b);
+  s.phase = std::atan2(a, b);
+  if (s.phase < 0) s.phase += 2 * std::acos(-1.0);
+  if (!(s.amplitude > 0)) said.unparsed("q_exact", "a solution of nonzero amplitude");
+  return s;
 }
 
 }  // namespace simpson::verify

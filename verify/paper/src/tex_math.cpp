@@ -816,7 +816,27 @@ class reader {
     if (n.kind == tex_node_kind::scripts) power = whole_node(n.sup.front());  // \sin^2 x
     ++c.k;
     if (c.done()) refuse(name + " of nothing", n);
-    const GiNaC::ex x = factor(c, {});
+    // Its argument: a parenthesised group alone (\sin(x) y is sin(x) y); else the product written
+    // after it, as mathematics reads it (ISO 80000-2: \sin \omega t is sin(ωt)), up to +, -, a
+    // relation, an explicit operation (\cdot, \times, /) or the next operator (\sin x \cos y). A
+    // parenthesis inside that product leaves open whether it belongs to the argument: refused.
+    const auto opens = [](const tex_node& node) {
+      const tex_node& core = node.kind == tex_node_kind::scripts ? node.children.front() : node;
+      return core.kind == tex_node_kind::delimited || (core.kind == tex_node_kind::atom && core.atom_class == tex_class::open);
+    };
+    const bool parenthesised = opens(c.node());
+    GiNaC::ex x = factor(c, {});
+    while (!parenthesised && !ends_term(c, closers)) {
+      const tex_node& next = c.node();
+      const tex_node& core = next.kind == tex_node_kind::scripts ? unwrapped(next.children.front()) : next;
+      if (core.kind == tex_node_kind::op) break;
+      if (core.kind == tex_node_kind::atom && (core.atom_class == tex_class::bin || core.text == "/" || core.text == "*")) break;
+      if (opens(next)) {
+        refuse("a parenthesis after " + name + "'s unparenthesised argument: whether it belongs to the argument is not written", next,
+               name + "(x (1 + y)) or (" + name + " x)(1 + y)");
+      }
+      x *= factor(c, {});
+    }
     GiNaC::ex value;
     if (name == "\\sin") value = GiNaC::sin(x);
     if (name == "\\cos") value = GiNaC::cos(x);

@@ -8,7 +8,14 @@
 
 #include "check_registry.hpp"
 
+#include <simpson/verify/table1_conventions.hpp>
+
 namespace simpson::verify::detail {
+
+/// The solution the run's text states for Table 1 (read_stated_solution), where its convention
+/// search starts; the search's defaults (q = sin ωt, T = 1) when the text states none, its own
+/// claim (experiment-conventions) then text-changed. unformulated.cpp.
+table1_stated stated_table1_solution(const run_context& ctx);
 
 // Each file's checks, added to the registry (ledger.cpp calls each once).
 void add_scaling_lemma_check(check_registry& checks);  // section8_9.cpp: the reduction the exact proofs rest on

@@ -3,6 +3,7 @@
 #include "claim_support.hpp"
 #include "bespoke_checks.hpp"
 #include "printed_check_support.hpp"
+#include "shape_support.hpp"
 
 #include <simpson/verify/enclosure_undecided.hpp>
 #include <simpson/verify/paper_reading.hpp>
@@ -141,7 +142,7 @@ std::string estimated_order(const std::array<double, 3>& errors, double H0) {
 }
 
 json table_evidence(bool& orders_match, bool& conservation_match,
-                    const printed_table1& printed) {
+                    const printed_table1& printed, const table1_stated& stated) {
   orders_match = conservation_match = true;
   std::array<std::array<table_errors, 3>, 2> runs{};
   for (int s = 0; s < 2; ++s) {
@@ -152,7 +153,7 @@ json table_evidence(bool& orders_match, bool& conservation_match,
   // hypothesis of its convention search (table-values), when it keeps the stated discrete conventions.
   double printed_H0 = H0;
   std::string printed_orbit = "the stated orbit (no simple hypothesis under the stated discrete conventions explains the table)";
-  const convention_search_result search = search_table1(table1_printed(printed.values, printed.orders, &printed.digits));
+  const convention_search_result search = search_table1(table1_printed(printed.values, printed.orders, &printed.digits), stated);
   if (const std::optional<exact_start> start = table1_reproducing_start(search)) {
     printed_H0 = H0 * start->energy_factor();
     printed_orbit = "the orbit that reproduces the table (table-values): " + table1_start(*search.simplest());
@@ -215,14 +216,14 @@ json table_evidence(bool& orders_match, bool& conservation_match,
 claim_result check_table_orders(const run_context& ctx) {
   bool orders = false, conservation = false;
   json evidence;
-  evidence["numeric"] = table_evidence(orders, conservation, read_table1(paper_of(ctx).source, ctx.quotes));
+  evidence["numeric"] = table_evidence(orders, conservation, read_table1(paper_of(ctx).source, ctx.quotes), stated_table1_solution(ctx));
   return confirmed_if(orders, evidence);
 }
 
 claim_result check_table_conservation(const run_context& ctx) {
   bool orders = false, conservation = false;
   json evidence;
-  evidence["numeric"] = table_evidence(orders, conservation, read_table1(paper_of(ctx).source, ctx.quotes));
+  evidence["numeric"] = table_evidence(orders, conservation, read_table1(paper_of(ctx).source, ctx.quotes), stated_table1_solution(ctx));
   return confirmed_if(conservation, evidence,
                       "'exact' means conserved to round-off: the errors grow with N only through rounding.");
 }
@@ -237,14 +238,14 @@ json candidate_json(const convention_candidate& c, const std::vector<printed_ent
                        {"residual", simpson::to_string(c.entries[k].residual, 3)},
                        {"reproduced", c.entries[k].reproduced}});
   }
-  json pinned = json::object();
-  for (const auto& [name, interval] : c.pinned) {
-    pinned[name] = {simpson::to_string(interval.first, 5), simpson::to_string(interval.second, 5)};
+  json joint = json::object();
+  for (const auto& [name, interval] : c.joint_extent) {
+    joint[name] = {simpson::to_string(interval.first, 6), simpson::to_string(interval.second, 6)};
   }
   json values = json::object();
   for (const auto& [name, value] : c.values) values[name] = simpson::to_string(value, 5);
   return {{"conventions", c.choice}, {"values", values}, {"reproduced", std::to_string(c.reproduced) + " of " + std::to_string(printed.size())},
-          {"worst_residual", simpson::to_string(c.worst, 3)}, {"pinned", pinned}, {"entries", entries}};
+          {"worst_residual", simpson::to_string(c.worst, 3)}, {"joint_extent", joint}, {"entries", entries}};
 }
 
 claim_result check_table_values(const run_context& ctx) {
@@ -255,11 +256,11 @@ claim_result check_table_values(const run_context& ctx) {
   // The values are decided by the search below (printed digits), not by a ratio tolerance.
   bool orders_match = false, conservation = false;
   json evidence;
-  evidence["numeric"] = table_evidence(orders_match, conservation, printed);
+  evidence["numeric"] = table_evidence(orders_match, conservation, printed, stated_table1_solution(ctx));
   evidence["numeric"]["also_tried"] = table_also_tried(published);
   // The convention search: every convention Section 8 states or leaves implicit, enumerated and fitted.
   const std::vector<printed_entry> entries = table1_printed(published, orders, &digits);
-  const convention_search_result search = search_table1(entries);
+  const convention_search_result search = search_table1(entries, stated_table1_solution(ctx));
   json tried = json::array();
   for (std::size_t k = 0; k < search.tried.size() && k < 12; ++k) {
     tried.push_back({{"conventions", describe(search.tried[k])},
@@ -328,16 +329,28 @@ claim_result check_table_values(const run_context& ctx) {
     explanation = table1_explanation(search, entries);
     explanation[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(explanation[0])));
   }
-  const std::string stated_count = "Not under the stated conventions, q(t) = sin ωt with m = 1 (" + std::to_string(search.stated.reproduced) +
+  std::string stated_q;
+  try {
+    stated_q = "q(t) = " + readable_math(read_stated_solution(paper_of(ctx).source).q_text);
+  } catch (const text_changed&) {
+    stated_q = "the search's default q(t) = sin(ωt) (the text states none)";
+  }
+  const std::string stated_count = "Not under the stated conventions, " + stated_q + " with m = 1 (" + std::to_string(search.stated.reproduced) +
                                    " of " + std::to_string(entries.size()) + " entries).";
   if (simplest != nullptr && simplest->reproduced == entries.size()) {
     return words_erratum(evidence, "Table 1 is reproduced, every entry within its printed digits: " + explanation,
                          stated_count + " " + table_not_reproduced(published, orders));
   }
   if (const convention_candidate* found = search.reproducing()) {
+    std::vector<std::string> reach;
+    for (const auto& [name, extent] : found->joint_extent) reach.push_back(fmt::format("{} from {:.6g} to {:.6g}", name, extent.first, extent.second));
     return words_erratum(evidence,
                          (simplest != nullptr ? explanation + ". " : "") + "A fit of m, the amplitude and the phase reproduces every entry: " +
-                             describe(*found) + " (the values printed with the digits that reproduce them)",
+                             describe(*found) + " (the values printed with the digits that reproduce them)" +
+                             (reach.empty() ? std::string()
+                                            : fmt::format("; moved jointly, the others free, the values that reproduce every entry reach {} "
+                                                          "(each end attained by a run; the region is at least this wide)",
+                                                          fmt::join(reach, ", "))),
                          stated_count + " " + table_not_reproduced(published, orders));
   }
   return confirmed_if(false, evidence,

@@ -3,6 +3,7 @@
 
 #include "claim_support.hpp"
 #include "bespoke_checks.hpp"
+#include "shape_support.hpp"
 
 #include <simpson/verify/paper_reading.hpp>
 #include <simpson/verify/printed_table1.hpp>
@@ -100,66 +101,65 @@ claim_result check_abstract_explicit(const run_context& ctx) {
 }
 
 /// Section 8's stated conventions: "We have chosen q(t) = sin ωt and p(t) = m ω cos ωt, with a
-/// period T = 1." Checked: p = m dq/dt of the printed q (the two are one exact solution), and T is
-/// one period of it (ω = 2π/T). Listed: what the section leaves unstated.
+/// period T = 1." Read, not typed (read_stated_solution): q and p as TeX, checked in GiNaC that q
+/// solves the oscillator (q'' = -ω² q) and p = m dq/dt of it, and q's amplitude and phase taken from
+/// q(0) and q'(0)/ω, ω = 2π/T. Whether they are the experiment's is the convention search's, from
+/// them. Listed: what the section leaves unstated.
 claim_result check_experiment_conventions(const run_context& ctx) {
-  const quoted_sentence said = quote(ctx, "We have chosen $ \\, q(t) = {q_exact} $ and $ \\, p(t) = {p_exact} $, with a period "
-                                          "$ \\, T = {period} $.");
-  // The printed solutions, in the words the paper may use; each with m dq/dt of it.
-  const std::string q = said.choice("q_exact", {{"\\sin \\omega t", "sin(omega t)"}, {"\\cos \\omega t", "cos(omega t)"}});
-  const std::string p = said.choice("p_exact", {{"m \\omega \\cos \\omega t", "m omega cos(omega t)"},
-                                                {"\\omega \\cos \\omega t", "omega cos(omega t)"},
-                                                {"m \\cos \\omega t", "m cos(omega t)"},
-                                                {"-m \\omega \\sin \\omega t", "-m omega sin(omega t)"},
-                                                {"- m \\omega \\sin \\omega t", "-m omega sin(omega t)"},
-                                                {"m \\omega \\sin \\omega t", "m omega sin(omega t)"}});
-  const int period = said.number("period");
-  static const std::map<std::string, std::string> m_derivative = {{"sin(omega t)", "m omega cos(omega t)"},
-                                                                  {"cos(omega t)", "-m omega sin(omega t)"}};
-  const std::string expected_p = m_derivative.at(q);
-  const bool consistent = p == expected_p;
+  const stated_solution stated = read_stated_solution(paper_of(ctx).source, ctx.quotes);
+  const std::string q = stated.q_text, expected_p = stated.m_dq_dt;
+  const int period = static_cast<int>(stated.period);
+  const bool consistent = stated.solves && stated.momentum;
   json evidence;
-  evidence["exact"] = {{"method", "exact (the derivative of the printed q)"},
+  evidence["exact"] = {{"method", "exact (GiNaC: q'' + omega^2 q and p - m dq/dt of the printed q and p)"},
                        {"q", q},
-                       {"p_printed", p},
+                       {"p_printed", stated.p_text},
                        {"m_dq_dt", expected_p},
+                       {"solves", stated.solves},
                        {"period", period},
+                       {"amplitude", stated.amplitude},
+                       {"phase", stated.phase},
                        {"omega", period == 1 ? "2 pi" : "2 pi/" + std::to_string(period)}};
   evidence["unstated"] = json::array({"the mass m (the harness takes m = 1)",
                                       "the energy errors' definitions (the harness takes max_j |H(y_j) - H(y_0)|)",
                                       "the points the maximum runs over (the harness takes t_j, j = 0..N)",
                                       "how the momentum is rescaled in Figure 1 (the harness plots p/(m omega))"});
-  evidence["harness"] = "table1: m = 1, omega = 2 pi, T = 1, y_0 = (m omega, 0)";
+  evidence["harness"] = fmt::format("table1 searched from the stated solution: m = 1, T = {}, q(t) = {:.6g} sin(omega t + {:.6g})", period,
+                                    stated.amplitude, stated.phase);
+  if (!stated.solves) {
+    return confirmed_if(false, evidence, "The printed q(t) = " + q + " does not solve q'' = -omega^2 q: it is no solution of the oscillator.");
+  }
   if (!consistent) {
-    return confirmed_if(false, evidence, "The printed p(t) = " + p + " is not m dq/dt = " + expected_p +
+    return confirmed_if(false, evidence, "The printed p(t) = " + stated.p_text + " is not m dq/dt = " + expected_p +
                                              " of the printed q(t): the pair is not one solution of the oscillator.");
   }
-  if (!(period == 1 && q == "sin(omega t)")) return confirmed_if(false, evidence);
   // Whether these are the conventions of the experiment the section reports: do they reproduce Table 1
   // as printed? The convention search (shared with table-values, run once per table) decides.
   const printed_table1 printed = read_table1(paper_of(ctx).source);
-  const convention_search_result search = search_table1(table1_printed(printed.values, printed.orders, &printed.digits));
+  const convention_search_result search =
+      search_table1(table1_printed(printed.values, printed.orders, &printed.digits), stated_table1_solution(ctx));
   evidence["table1"] = {{"stated_reproduce", std::to_string(search.stated.reproduced) + " of " + std::to_string(search.stated.entries.size()) +
                                                  " entries of Table 1 within their printed digits"},
                         {"reproducing_convention", search.reproducing() != nullptr ? describe(*search.reproducing()) : "none found"}};
   const std::string unstated = "Section 8 leaves unstated the mass m, the energy errors' definitions, the points the maximum runs "
                                "over, and how the momentum data of Figure 1 are rescaled (evidence 'unstated': what the harness takes).";
   if (search.stated_reproduces()) {
-    return confirmed_if(true, evidence, "The stated pair is one exact solution (p = m dq/dt) with T = 1 one period, omega = 2 pi, "
-                                        "and it reproduces Table 1. " + unstated);
+    return confirmed_if(true, evidence, fmt::format("The stated pair is one exact solution (p = m dq/dt) with T = {} one period, and it "
+                                                    "reproduces Table 1. ", period) + unstated);
   }
   const std::vector<printed_entry> entries = table1_printed(printed.values, printed.orders, &printed.digits);
   const convention_candidate* simplest = search.simplest();
-  const std::string stated_count = fmt::format("q(t) = sin ωt with m = 1 reproduces {} of the {}", search.stated.reproduced, entries.size());
+  const std::string stated_count =
+      fmt::format("q(t) = {} with m = 1 reproduces {} of the {}", readable_math(stated.q_text), search.stated.reproduced, entries.size());
   if (simplest != nullptr && (simplest->reproduced == entries.size() || search.reproducing() != nullptr)) {
     evidence["table1"]["simplest"] = table1_explanation(search, entries);
     return amended(words_erratum(evidence,
                          "Table 1 is the experiment of another exact solution: " + table1_explanation(search, entries) +
                              (simplest->reproduced == entries.size() ? "" : "; a fit of m, the amplitude and the phase reproduces every entry (table-values)") +
                              "; " + stated_count,
-                         "The stated pair is one exact solution with T = 1 one period, but not the one Table 1 was computed with "
-                         "(table-values, convention search). " + unstated),
-                   "Table 1's exact solution", fmt::format("$q(t) = {}$, $p(t) = {}$", said.words("q_exact"), said.words("p_exact")),
+                         fmt::format("The stated pair is one exact solution with T = {} one period, but not the one Table 1 was computed "
+                                     "with (table-values, convention search). ", period) + unstated),
+                   "Table 1's exact solution", fmt::format("$q(t) = {}$, $p(t) = {}$", stated.q_tex, stated.p_tex),
                    fmt::format("{}: {} of the {} entries", table1_start(*simplest), simplest->reproduced, entries.size()));
   }
   return confirmed_if(false, evidence, "The stated pair does not reproduce Table 1, and no convention of the searched family does "
@@ -167,6 +167,15 @@ claim_result check_experiment_conventions(const run_context& ctx) {
 }
 
 }  // namespace
+
+table1_stated stated_table1_solution(const run_context& ctx) {
+  try {
+    const stated_solution s = read_stated_solution(paper_of(ctx).source);
+    return {s.amplitude, s.phase, s.period};
+  } catch (const text_changed&) {
+    return {};
+  }
+}
 
 void add_abstract_checks(check_registry& checks) {
   checks.add("abstract-explicit", check_abstract_explicit);

@@ -70,9 +70,10 @@ struct convention_candidate {
   std::vector<entry_score> entries;
   std::size_t reproduced = 0;  // entries reproduced
   double worst = 0;            // the largest residual
-  /// For a candidate that reproduces every entry: for each fitted parameter, the interval of values
-  /// (the others fixed) that still reproduce the table.
-  std::map<std::string, std::pair<double, double>> pinned;
+  /// For the best candidate when it reproduces every entry: for each fitted parameter, how far it
+  /// reaches with the others free (NLopt on the constraints "every entry reproduced"), each end
+  /// attained by values a full run reproduces the table with: the joint region is at least this wide.
+  std::map<std::string, std::pair<double, double>> joint_extent;
 };
 
 /// A simple value a parameter is tried at before any fit: the value and its name in words ("pi/2").
@@ -90,6 +91,7 @@ struct convention_search_result {
   std::vector<convention_candidate> simple;
   std::vector<convention_candidate> tried;  // every discrete combination, fitted, best first
   std::size_t evaluations = 0;           // experiment runs
+  parameter_values fixed;                // values every run was made with and none searched (Table 1's period)
   double seconds = 0;
   bool stated_reproduces() const;
   /// The best candidate, when it reproduces every entry.

@@ -61,7 +61,14 @@ std::string table1_explanation(const convention_search_result& r, const std::vec
 /// Table 1's entries computed under `choice` and `values`.
 std::vector<computed_entry> table1_under(const convention_choice& choice, const parameter_values& values);
 
-/// The search on Table 1 as printed (a table searched before in this process is not searched again).
-convention_search_result search_table1(const std::vector<printed_entry>& printed);
+/// The exact solution the text states for the experiment, q(t) = amplitude sin(ω t + phase) with
+/// ω = 2π/period (read from the text: printed_table1.hpp, read_stated_solution); m is unstated (1).
+struct table1_stated {
+  double amplitude = 1, phase = 0, period = 1;
+};
+
+/// The search on Table 1 as printed, from the stated solution (a table searched before in this
+/// process, from the same stated solution, is not searched again).
+convention_search_result search_table1(const std::vector<printed_entry>& printed, const table1_stated& stated = {});
 
 }  // namespace simpson::verify

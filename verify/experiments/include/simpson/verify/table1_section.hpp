@@ -2,6 +2,7 @@
 // The table1 section: the paper's experiment (Section 8) for any list of N, beside Table 1's
 // published values, with estimated orders and Figure 1 redrawn.
 
+#include <simpson/verify/table1_conventions.hpp>
 #include <simpson/verify/result_model.hpp>
 
 #include <array>
@@ -21,6 +22,8 @@ struct table1_settings {
   std::optional<std::array<std::array<double, 3>, 8>> printed_values;
   std::optional<std::array<std::string, 8>> printed_orders;
   std::optional<std::array<std::array<int, 3>, 8>> printed_digits;
+  /// The solution the paper states for the experiment, where the convention search starts.
+  table1_stated stated;
 };
 
 section_result run_table1(const table1_settings& s);

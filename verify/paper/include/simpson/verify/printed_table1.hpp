@@ -23,4 +23,24 @@ struct printed_table1 {
 /// gone or its cells do not parse.
 printed_table1 read_table1(const paper_source& paper, json* quotes = nullptr);
 
+/// The exact solution the text states for Table 1's experiment, "We have chosen $q(t) = {q}$ and
+/// $p(t) = {p}$, with a period $T = {T}$.", its q and p read as TeX (GiNaC): q is taken as
+/// amplitude · sin(ω t + phase), from q(0) and q'(0)/ω, with ω = 2π/T.
+struct stated_solution {
+  std::string q_tex, p_tex;   // as printed
+  int line = 0;
+  double amplitude = 1, phase = 0, period = 1;
+  bool solves = false;        // q'' + ω² q = 0 (GiNaC)
+  bool momentum = false;      // p = m dq/dt (GiNaC)
+  std::string q_text, p_text, m_dq_dt;  // GiNaC's reading, for the evidence
+};
+
+/// The stated solution's sentence the pattern of read_stated_solution finds.
+inline constexpr const char* stated_solution_pattern =
+    "We have chosen $ \\, q(t) = {q_exact} $ and $ \\, p(t) = {p_exact} $, with a period $ \\, T = {period} $.";
+
+/// The solution `paper` states (recorded in `quotes` when given). Throws text_changed when the
+/// sentence is gone, or when q or p does not read, or q's amplitude and phase are not numbers.
+stated_solution read_stated_solution(const paper_source& paper, json* quotes = nullptr);
+
 }  // namespace simpson::verify
