@@ -134,7 +134,7 @@ INSTANTIATE_TEST_SUITE_P(
         bad_file{"finding_for_holds", replaced(good_record, "expected = \"holds\"", "expected = \"holds\"\nfinding = \"wording\""),
                  "claims file 'test.toml', line 10, field 'finding': given for a claim expected to holds"},
         bad_file{"bad_finding", replaced(good_record, "expected = \"holds\"", "expected = \"erratum\"\nfinding = \"typo\""),
-                 "claims file 'test.toml', line 10, field 'finding': 'typo' is not a class of finding (erratum, wording, derivation gap, naming, unverifiable)"},
+                 "claims file 'test.toml', line 10, field 'finding': 'typo' is not a class of finding (erratum, wording, derivation gap, naming, unverifiable, prose)"},
         bad_file{"unknown_cause", replaced(good_record, "expected = \"holds\"", "expected = \"holds\"\nfollows_from = \"zeroth\""),
                  "claims file 'test.toml', line 2, field 'follows_from': no record has the id 'zeroth'"},
         // Found by the fuzzer: a cause reached first through another record's chain was taken for a record.

@@ -5,6 +5,7 @@
 #include "coq_export.hpp"
 #include "check_registry.hpp"
 #include "printed_check_support.hpp"
+#include "proof_shapes.hpp"
 
 #include <simpson/verify/paper_reading.hpp>
 #include <simpson/verify/quoted_words.hpp>
@@ -237,8 +238,13 @@ void decide(claim_result& result, const printed_outcome& g, const std::string& c
 
 namespace {
 
-/// A claim a proof shape decides: it reads every formula from the run's document.
-bool decided_by_shape(const claim& c) { return c.check_name.rfind("shape ", 0) == 0; }
+/// A claim a proof shape decides: it reads every formula from the run's document, when its shape
+/// judges a formula (a principal argument; the prose's shapes, spelling and citations, read none).
+bool decided_by_shape(const claim& c) {
+  if (c.check_name.rfind("shape ", 0) != 0) return false;
+  const auto shape = detail::proof_shapes().find(c.check_name.substr(6));
+  return shape == detail::proof_shapes().end() || !shape->second.principal.empty();
+}
 
 bool reads_printed(const claim& c) { return printed_facet(c) != nullptr || decided_by_shape(c); }
 

@@ -21,6 +21,8 @@ const std::vector<sentence_hole>& sentence_holes() {
       {"from", hole_reading::tex, {}, "the first value of the sum's index, in TeX ('$1$', '$0$')"},
       {"to", hole_reading::tex, {}, "its last value, in TeX ('$N$', '$N-1$')"},
       {"property", hole_reading::property, {}, "the record's `property` word, said or denied"},
+      {"emerges", hole_reading::quoted, {}, "how the text says the condition follows from the formula ('naturally emerging')"},
+      {"novelty", hole_reading::quoted, {}, "what the text presents as its own ('a variational symplectic numerical method')"},
       {"linearity", hole_reading::phrases,
        {{"linear", "linear"}, {"not linear", "not linear"}, {"nonlinear", "not linear"}, {"non-linear", "not linear"}, {"non linear", "not linear"}},
        "whether the expression is linear in the variables"},
@@ -87,6 +89,8 @@ std::string words_of(const sentence_hole& h) {
       return "a relation and a number, or else a number (below)";
     case hole_reading::tex:
       return "a formula in TeX, read as the document's formulas are (its symbols declared)";
+    case hole_reading::quoted:
+      return "any words: quoted as printed in the finding's one line, not parsed";
     case hole_reading::property: {
       std::string words;
       for (const auto& [phrase, value] : affirmed_or_denied("P")) words += (words.empty() ? "" : ", ") + fmt::format("“{}” ({})", phrase, value);

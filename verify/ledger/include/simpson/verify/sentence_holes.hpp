@@ -18,6 +18,7 @@ enum class hole_reading {
   phrases,   // exactly one of the phrases (case and white space aside)
   tex,       // a formula in TeX: "$N - 1$"
   property,  // the record's `property` word, or its denial: not P, inP, unP, non-P
+  quoted,    // any words: quoted as printed in the finding, never parsed (the verdict does not turn on them)
 };
 
 struct sentence_hole {
