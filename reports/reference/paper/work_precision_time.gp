@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.20541e-07:0.000232287]
+set xrange [1.20421e-07:0.0002372]
 set xtics autofreq
 set mxtics default
 set yrange [2.94139e-15:0.34373]
@@ -37,7 +37,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.3194e-08:2.23381e-05]
+set xrange [5.31766e-08:2.24915e-05]
 set xtics autofreq
 set mxtics default
 set yrange [3.26923e-14:0.306488]
@@ -61,7 +61,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [6.48885e-06:0.0415838]
+set xrange [6.52852e-06:0.0409861]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -111,7 +111,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.20541e-07:0.000232287]
+set xrange [1.20421e-07:0.0002372]
 set xtics autofreq
 set mxtics default
 set yrange [2.94139e-15:0.34373]
@@ -135,7 +135,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.3194e-08:2.23381e-05]
+set xrange [5.31766e-08:2.24915e-05]
 set xtics autofreq
 set mxtics default
 set yrange [3.26923e-14:0.306488]
@@ -159,7 +159,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [6.48885e-06:0.0415838]
+set xrange [6.52852e-06:0.0409861]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
