@@ -1,0 +1,251 @@
+// The verdicts of a run counted once, and the summary lines and JSON made of them: see report.hpp
+// and report_parts.hpp.
+
+#include "report_parts.hpp"
+
+#include <simpson/verify/ledger.hpp>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace simpson::verify {
+
+namespace report_parts {
+
+std::string join(const std::vector<std::string>& parts, const std::string& separator) {
+  std::string out;
+  for (const std::string& p : parts) out += (out.empty() ? "" : separator) + p;
+  return out;
+}
+
+std::vector<std::string> precision_names(const std::vector<precision>& precisions) {
+  std::vector<std::string> names;
+  for (const precision& p : precisions) names.push_back(p.name());
+  return names;
+}
+
+bool is_finding(verdict v) { return v == verdict::erratum || v == verdict::fails || v == verdict::unverifiable; }
+
+finding finding_of(const claim_outcome& o) {
+  if (!is_finding(o.result.outcome)) return finding::none;
+  if (o.result.outcome == o.expected && o.checked->kind != finding::none) return o.checked->kind;
+  return o.result.outcome == verdict::unverifiable ? finding::unverifiable : finding::erratum;
+}
+
+verdict_counts count_verdicts(const run_record& r) {
+  verdict_counts c;
+  for (const claim_outcome& o : r.outcomes) {
+    if (o.result.evidence.contains("error")) {  // a harness fault is never counted as a verdict
+      ++c.faults;
+      continue;
+    }
+    (o.checked->origin == claim_origin::paper ? c.paper : o.checked->origin == claim_origin::beyond ? c.beyond : c.harness) += 1;
+    if (o.checked->origin == claim_origin::paper && is_finding(o.result.outcome) && finding_of(o) == finding::prose) {
+      ++c.prose_claims;
+      c.prose_slips += std::max<std::size_t>(1, o.result.amendments.size());
+    } else if (o.checked->origin == claim_origin::paper && is_finding(o.result.outcome)) {
+      if (cause_of(o).empty()) {
+        ++c.distinct;
+        c.typographical += o.checked->typographical;
+      } else {
+        ++c.consequences;
+      }
+    }
+    c.held += o.result.outcome == verdict::holds;
+    c.errata += o.result.outcome == verdict::erratum;
+    c.failed += o.result.outcome == verdict::fails;
+    c.disagreed += o.result.outcome == verdict::kernels_disagree;
+    c.text_changed += o.result.outcome == verdict::text_changed;
+    c.undecided += o.result.outcome == verdict::undecided;
+    c.unproved += o.result.outcome == verdict::unproved;
+    c.skipped += o.result.outcome == verdict::skipped;
+    c.unverifiable += o.result.outcome == verdict::unverifiable;
+    c.machine_read += !o.result.printed.is_null();
+    c.quoted += !o.result.quoted.empty();  // a claim may read a formula and quote its sentence: counted in both
+    c.whole_text += o.result.reads_whole_text;
+    c.typed += o.result.printed.is_null() && o.result.quoted.empty() && !o.result.reads_whole_text;
+    c.read_and_quoted += !o.result.printed.is_null() && !o.result.quoted.empty();
+    c.coq_exported += !certificate_documents(o).empty();
+    c.coq_checked += o.result.evidence.contains("coq") && o.result.evidence["coq"].value("status", "") == "checked";
+    if (o.fixed) c.fixed.push_back(o.checked->id);
+    if (o.fixed && !outcome_as_expected(o)) {
+      c.fixes_not_accepted.push_back(o.checked->id);
+    } else if (!outcome_as_expected(o)) {
+      c.unexpected.push_back(o.checked->id);
+    }
+  }
+  return c;
+}
+
+expectation_counts count_expectations(const run_record& r) {
+  expectation_counts e;
+  for (const section_result& section : r.sections) e.total += section.expectations.size();
+  e.failed = failed_expectations(r);
+  return e;
+}
+
+}  // namespace report_parts
+
+using namespace report_parts;
+
+std::string summary_line(const run_record& r) {
+  const verdict_counts c = count_verdicts(r);
+  const expectation_counts e = count_expectations(r);
+  const std::vector<std::string> rejected = rejected_certificates(r);
+  // What makes the exit code 1, each named: the line says "as expected" only when it is 0.
+  std::vector<std::string> problems;
+  if (!c.unexpected.empty()) {
+    problems.push_back(r.validation ? fmt::format("{} not holding ({})", c.unexpected.size(), join(c.unexpected, ", "))
+                                    : fmt::format("{} not as expected ({})", c.unexpected.size(), join(c.unexpected, ", ")));
+  }
+  if (!c.fixes_not_accepted.empty()) {
+    problems.push_back(fmt::format("{} fixed ({}: recorded as a finding, now holds; --accept-fixes accepts a fix)", c.fixes_not_accepted.size(),
+                                   join(c.fixes_not_accepted, ", ")));
+  }
+  if (!e.failed.empty()) {
+    problems.push_back(fmt::format("{} expectation{} failed ({})", e.failed.size(), e.failed.size() == 1 ? "" : "s", join(e.failed, ", ")));
+  }
+  if (!rejected.empty()) {
+    problems.push_back(fmt::format("coqc rejected {} certificate{} ({})", rejected.size(), rejected.size() == 1 ? "" : "s", join(rejected, ", ")));
+  }
+  const std::string expectations =
+      e.total == 0 ? std::string()
+                   : fmt::format("; {} expectation{} of the experiments: {} hold{}", e.total, e.total == 1 ? "" : "s", e.total - e.failed.size(),
+                                 e.failed.empty() ? "" : fmt::format(", {} failed", e.failed.size()));
+  const std::string ending = c.faults           ? std::string("no verdict on the run: a harness fault")
+                             : !problems.empty() ? join(problems, "; ")
+                             : r.validation      ? std::string(e.total == 0 ? "every claim holds" : "every claim and expectation holds")
+                             : !c.fixed.empty()  ? fmt::format("all verdicts as expected, {} fixed, fixes accepted ({})", c.fixed.size(), join(c.fixed, ", "))
+                                                 : std::string("all verdicts as expected");
+  return fmt::format("{} {}: {} held, {} errata, {} failed{}{}{}{}{}{}{}{}; {}", r.outcomes.size(), r.outcomes.size() == 1 ? "claim" : "claims",
+                     c.held, c.errata, c.failed,
+                     c.unverifiable ? fmt::format(", {} unverifiable (material absent from the source)", c.unverifiable) : "",
+                     c.faults ? fmt::format(", {} without a verdict (a harness fault: the check threw)", c.faults) : "",
+                     c.disagreed ? fmt::format(", {} with the kernels in disagreement", c.disagreed) : "",
+                     c.text_changed ? fmt::format(", {} whose quoted words changed (text-changed)", c.text_changed) : "",
+                     c.undecided ? fmt::format(", {} undecided within the enclosure budget", c.undecided) : "",
+                     c.unproved ? fmt::format(", {} unproved (Gappa could not bound the round-off)", c.unproved) : "",
+                     c.skipped ? fmt::format(", {} skipped (gappa not installed)", c.skipped) : "", expectations, ending);
+}
+
+namespace {
+
+/// A validation's exit line: what holds in the document, with no talk of expected verdicts. A claim
+/// that holds once another's correction is put in is counted with its cause, never twice.
+std::string validation_line(const run_record& r, const verdict_counts& c) {
+  std::vector<std::string> causes, consequences, undecided, other;
+  for (const claim_outcome& o : r.outcomes) {
+    if (outcome_as_expected(o)) continue;
+    const std::string& id = o.checked->id;
+    if (o.result.outcome == verdict::undecided || o.result.outcome == verdict::unproved || o.result.outcome == verdict::kernels_disagree) {
+      undecided.push_back(id);
+    } else if (is_finding(o.result.outcome) && !cause_of(o).empty()) {
+      consequences.push_back(id + " (from " + cause_of(o) + ")");
+    } else if (is_finding(o.result.outcome)) {
+      causes.push_back(id);
+    } else {
+      other.push_back(id + " (" + to_string(o.result.outcome) + ")");
+    }
+  }
+  std::vector<std::string> parts;
+  if (!causes.empty()) {
+    parts.push_back(fmt::format("{} claim{} {} not hold as written ({})", causes.size(), causes.size() == 1 ? "" : "s",
+                                causes.size() == 1 ? "does" : "do", join(causes, ", ")));
+  }
+  if (!consequences.empty()) {
+    parts.push_back(fmt::format("{} follow{} from another's correction ({})", consequences.size(), consequences.size() == 1 ? "s" : "",
+                                join(consequences, ", ")));
+  }
+  if (!undecided.empty()) {
+    parts.push_back(fmt::format("{} could not be decided ({}: the tool's limits, not findings)", undecided.size(), join(undecided, ", ")));
+  }
+  if (!other.empty()) parts.push_back(fmt::format("{} changed ({})", other.size(), join(other, ", ")));
+  (void)c;
+  return join(parts, "; ");
+}
+
+}  // namespace
+
+std::string expectation_line(const run_record& r) {
+  const std::vector<std::string> failed = failed_expectations(r);
+  if (r.outcomes.empty() && failed.empty()) return "No claim in this run.";
+  const verdict_counts c = count_verdicts(r);
+  std::vector<std::string> expected_failures;
+  for (const claim_outcome& o : r.outcomes) {
+    if (o.result.outcome == o.expected && (o.expected == verdict::fails || o.expected == verdict::kernels_disagree)) {
+      expected_failures.push_back(o.checked->id);
+    }
+  }
+  const int code = run_exit_code(r);
+  if (code == 3) return "Exit code 3: a check threw (a bug in the harness); see Failures.";
+  // What the expected verdicts are: the paper's, as the ledger judges it, or a claims file's for its document.
+  const bool document = !r.of_the_paper;
+  const std::string judgment = document ? "the claims file's expected verdicts for its document" : "the ledger's recorded judgment of the printed paper";
+  const std::string changed = document ? "the document" : "the paper";
+  const bool rejected = !rejected_certificates(r).empty();
+  if (r.validation) {  // no expected verdicts: the document's claims are to hold
+    if (code == 0) return fmt::format("Exit code 0: every claim of the {} holds.", r.of_the_paper ? "paper" : "document");
+    std::string why = validation_line(r, c);
+    if (rejected) why += (why.empty() ? "" : "; ") + std::string("coqc rejected a certificate");
+    if (!failed.empty()) {
+      why += (why.empty() ? "" : "; ") + fmt::format("{} expectation{} of the experiments failed ({})", failed.size(), failed.size() == 1 ? "" : "s",
+                                                     join(failed, ", "));
+    }
+    return "Exit code 1: " + why + "; see Failures.";
+  }
+  if (code != 0) {
+    std::string why;
+    if (!c.unexpected.empty()) {
+      why = fmt::format("{} verdict{} differ{} from the expected one ({}): either {} or the harness changed", c.unexpected.size(),
+                        c.unexpected.size() == 1 ? "" : "s", c.unexpected.size() == 1 ? "s" : "", judgment, changed);
+    }
+    if (!c.fixes_not_accepted.empty()) {
+      why += (why.empty() ? "" : "; ") + fmt::format("{} finding{} of the record now hold{} ({}): a fix of {}, which a guard reports as a "
+                                                     "change (--accept-fixes accepts fixes); see Fixed",
+                                                     c.fixes_not_accepted.size(), c.fixes_not_accepted.size() == 1 ? "" : "s",
+                                                     c.fixes_not_accepted.size() == 1 ? "s" : "", join(c.fixes_not_accepted, ", "), changed);
+    }
+    if (rejected) why += (why.empty() ? "" : "; ") + std::string("coqc rejected a certificate");
+    if (!failed.empty()) {
+      why += (why.empty() ? "" : "; ") + fmt::format("{} expectation{} of the experiments failed ({})", failed.size(), failed.size() == 1 ? "" : "s",
+                                                     join(failed, ", "));
+    }
+    return "Exit code 1: " + why + "; see Failures.";
+  }
+  std::string line = fmt::format("Exit code 0: every verdict is the expected one, {} (a regression check: a difference would "
+                                 "mean that {} or the harness changed), not a validation",
+                                 judgment, changed);
+  std::vector<std::string> findings;
+  if (c.errata > 0) findings.push_back(fmt::format("{} {} (false as printed, a correction proved)", c.errata, c.errata == 1 ? "erratum" : "errata"));
+  if (!expected_failures.empty()) {
+    findings.push_back(fmt::format("{} expected failure{} ({}: not reproduced, no correction found)", expected_failures.size(),
+                                   expected_failures.size() == 1 ? "" : "s", join(expected_failures, ", ")));
+  }
+  if (findings.empty()) return line + ".";
+  const std::size_t expected_findings = c.errata + expected_failures.size();
+  return line + ": " + join(findings, " and ") + (expected_findings == 1 ? " is an expected verdict." : " are expected verdicts.");
+}
+
+json summary_json(const run_record& r) {
+  const verdict_counts c = count_verdicts(r);
+  return {{"line", summary_line(r)},     {"expectation", expectation_line(r)}, {"claims", r.outcomes.size()},
+          {"held", c.held},              {"errata", c.errata},
+          {"failed", c.failed},          {"harness_faults", c.faults}, {"kernels_disagree", c.disagreed},
+          {"paper_claims", c.paper},     {"beyond_claims", c.beyond},   {"harness_claims", c.harness},
+          {"distinct_findings", c.distinct}, {"typographical_findings", c.typographical}, {"consequences", c.consequences},
+          {"spelling_slips", c.prose_slips},
+          {"text_changed", c.text_changed}, {"undecided", c.undecided}, {"unproved", c.unproved}, {"skipped", c.skipped},
+          {"machine_read", c.machine_read}, {"quoted", c.quoted}, {"whole_text", c.whole_text}, {"typed", c.typed},
+          {"coq_exported", c.coq_exported}, {"coq_checked", c.coq_checked},
+          {"unexpected", c.unexpected}, {"failed_expectations", failed_expectations(r)},
+          {"expectations", count_expectations(r).total},
+          {"fixed", c.fixed},
+          {"fixes_accepted", r.run_scene.accept_fixes},
+          {"exit_code", run_exit_code(r)},
+          {"mode", r.validation ? "validation" : "regression"}};
+}
+
+std::size_t machine_read(const run_record& r) { return count_verdicts(r).machine_read; }
+
+}  // namespace simpson::verify

@@ -1,0 +1,49 @@
+#pragma once
+// What the report's files share (report_counts.cpp, report_summary.cpp, report_json.cpp, report.cpp):
+// the verdicts counted once, the class of a finding, and small text helpers.
+
+#include <simpson/verify/report.hpp>
+#include <simpson/verify/run.hpp>
+
+#include <string>
+#include <vector>
+
+namespace simpson::verify::report_parts {
+
+std::string join(const std::vector<std::string>& parts, const std::string& separator);
+std::vector<std::string> precision_names(const std::vector<precision>& precisions);
+
+struct verdict_counts {
+  std::size_t faults = 0;  // checks that threw: a bug in the harness, no verdict (exit 3)
+  std::size_t paper = 0, beyond = 0, harness = 0;            // whose statements
+  std::size_t distinct = 0, typographical = 0, consequences = 0;  // the paper's findings, each cause once
+  std::size_t whole_text = 0;                                    // claims that read the text as a whole (spelling, citations)
+  std::size_t prose_claims = 0, prose_slips = 0;                 // its spelling, counted apart: the claims, and the words they found
+  std::size_t unverifiable = 0;
+  std::size_t held = 0, errata = 0, failed = 0, disagreed = 0, text_changed = 0, undecided = 0, unproved = 0, skipped = 0, machine_read = 0,
+              quoted = 0, typed = 0, read_and_quoted = 0, coq_exported = 0,
+              coq_checked = 0;
+  std::vector<std::string> unexpected;  // not as expected, fixes not accepted apart
+  std::vector<std::string> fixed, fixes_not_accepted;
+};
+
+/// A verdict that is a finding about the paper: false or unsupported as printed.
+bool is_finding(verdict v);
+
+/// The class of a claim's finding: the ledger's when the verdict is the expected one; an unexpected
+/// finding is an erratum (or unverifiable) until the ledger classifies it; none when it holds.
+finding finding_of(const claim_outcome& o);
+
+verdict_counts count_verdicts(const run_record& r);
+
+/// The experiments' expectations of a run: how many, and the keys of those that failed.
+struct expectation_counts {
+  std::size_t total = 0;
+  std::vector<std::string> failed;
+};
+expectation_counts count_expectations(const run_record& r);
+
+/// Every plot of the run's sections, as drawn (report_json.cpp).
+plot_outcome all_plots_drawn(const run_record& r);
+
+}  // namespace simpson::verify::report_parts
