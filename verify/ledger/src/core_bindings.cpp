@@ -154,10 +154,8 @@ claim_result bound_to_core(claim_result result, const std::vector<core_binding>&
               {"line", pair.read.line},
               {"ginac", ginac_zero ? "core − formula = 0 in normal form" : "core − formula ≠ 0 in normal form"},
               {"own_kernel", own.evidence}};
-    if (own.outcome != kernel_decision::result::not_applicable && ginac_zero != (own.outcome == kernel_decision::result::zero)) {
-      result.outcome = verdict::kernels_disagree;
-      result.note = fmt::format("GiNaC and our kernel reached different conclusions on the core's {} against {}: a bug in one of them.", b.function,
-                                pair.read.locator);
+    if (kernels_disagree_if(result, own.outcome != kernel_decision::result::not_applicable && ginac_zero != (own.outcome == kernel_decision::result::zero),
+                            kernels_differ_on(fmt::format("the core's {} against {}", b.function, pair.read.locator)))) {
       e["agrees"] = false;
       evidence.push_back(e);
       result.evidence["core_bound"] = evidence;

@@ -77,6 +77,17 @@ bool is_zero_expression(const ex& e) {
 
 const ex& printed_side(const paper_reading& r, const std::string& name, std::size_t side) { return r.at(name).sides.at(side); }
 
+bool kernels_disagree_if(claim_result& result, bool disagree, const std::string& why) {
+  if (!disagree) return false;
+  result.outcome = verdict::kernels_disagree;
+  result.note = why;
+  return true;
+}
+
+std::string kernels_differ_on(const std::string& what) {
+  return "GiNaC and our kernel reached different conclusions on " + what + ": a bug in one of them.";
+}
+
 proof_goal decided(const std::string& name, const ex& lhs, const ex& rhs) {
   return {name, lhs, rhs, is_zero_expression(normal_difference(lhs, rhs))};
 }
@@ -202,11 +213,10 @@ void decide(claim_result& result, const printed_outcome& g, const std::string& c
   // An erratum of the quoted words (a claim that reads a formula and also judges prose about it)
   // stands whatever the printed formula: the words, not the transcription, were refuted.
   const bool words_refuted = own == verdict::erratum && !result.quoted.empty();
-  if (own_derived != g.derived_holds) {
-    result.outcome = verdict::kernels_disagree;
-    result.note = "The two kernels disagree on '" + claim_id + "': ours " + (own_derived ? "proved" : "did not prove") +
-                  " the derived statement, GiNaC " + (g.derived_holds ? "proved" : "did not prove") + " it (" + g.derived + ")." +
-                  (result.note.empty() ? "" : " " + result.note);
+  if (detail::kernels_disagree_if(result, own_derived != g.derived_holds,
+                          "The two kernels disagree on '" + claim_id + "': ours " + (own_derived ? "proved" : "did not prove") +
+                              " the derived statement, GiNaC " + (g.derived_holds ? "proved" : "did not prove") + " it (" + g.derived + ")." +
+                              (result.note.empty() ? "" : " " + result.note))) {
     return;
   }
   if (!g.derived_holds) {

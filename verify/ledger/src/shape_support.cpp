@@ -286,9 +286,7 @@ claim_result identity_verdict(const shape_call& call, shape_reader& read, const 
                   own.evidence}};
   const bool own_decided = own.outcome != kernel_decision::result::not_applicable;
   const bool own_zero = own.outcome == kernel_decision::result::zero;
-  if (own_decided && own_zero != ginac_zero) {
-    result.outcome = verdict::kernels_disagree;
-    result.note = "GiNaC and our kernel reached different conclusions on " + what + ": a bug in one of them.";
+  if (kernels_disagree_if(result, own_decided && own_zero != ginac_zero, kernels_differ_on(what))) {
   } else if (ginac_zero) {
     result.outcome = verdict::holds;
     if (!own_decided) result.note = "Our kernel could not decide it (" + own.evidence + "): GiNaC's proof alone.";
@@ -312,11 +310,7 @@ claim_result identity_verdict(const shape_call& call, shape_reader& read, const 
 }
 
 void settle(claim_result& result, bool disagree, bool holds, const std::string& what, const std::string& correction) {
-  if (disagree) {
-    result.outcome = verdict::kernels_disagree;
-    result.note = "GiNaC and our kernel reached different conclusions on " + what + ": a bug in one of them.";
-    return;
-  }
+  if (kernels_disagree_if(result, disagree, kernels_differ_on(what))) return;
   result.outcome = holds ? verdict::holds : verdict::erratum;
   if (!holds) result.correction = correction;
 }

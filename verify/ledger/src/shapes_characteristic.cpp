@@ -299,8 +299,9 @@ claim_result characteristic_roots_shape(const shape_call& call, const run_contex
   const int sign = found.first ? 0 : g->sign_at(*c / 2);
   std::string ginac_proof;
   const int ginac_sign = ginac_sign_on(*g, v, high, ginac_proof);
-  if ((ginac_sign != 0 && ginac_sign != sign) || product_own.outcome == kernel_decision::result::nonzero) {
-    return cannot(verdict::kernels_disagree, "GiNaC and our kernel differ on the discriminant's sign or the roots' product: a bug in one of them.");
+  if (kernels_disagree_if(result, (ginac_sign != 0 && ginac_sign != sign) || product_own.outcome == kernel_decision::result::nonzero,
+                          kernels_differ_on("the discriminant's sign or the roots' product"))) {
+    return result;
   }
   const GiNaC::numeric p = GiNaC::ex_to<GiNaC::numeric>(product);
   const std::string nature = sign < 0 ? "complex conjugate" : sign > 0 ? "real" : "complex conjugate on part of the interval, real on the rest";

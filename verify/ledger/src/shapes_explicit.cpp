@@ -151,9 +151,7 @@ claim_result explicit_map_shape(const shape_call& call, const run_context& ctx) 
       {"regular", regular ? fmt::format("every denominator is positive for {} > 0 (its terms)", fmt::join(positive, ", "))
                           : "not shown: a denominator's terms are not all positive"}};
   result.evidence["stated"] = stated;
-  if (own_decided && own_polynomial != polynomial) {
-    result.outcome = verdict::kernels_disagree;
-    result.note = "GiNaC and our kernel reached different conclusions on whether the map is a polynomial in the step: a bug in one of them.";
+  if (kernels_disagree_if(result, own_decided && own_polynomial != polynomial, kernels_differ_on("whether the map is a polynomial in the step"))) {
     return result;
   }
   const std::string computed = polynomial ? fmt::format("The scheme is explicit: every entry of ({}) is a polynomial in {}", map_ref, step.get_name())
@@ -252,8 +250,7 @@ claim_result explicit_scheme_shape(const shape_call& call, const run_context& ct
                                                                      : "not applicable: " + own.evidence;
     if (own.outcome == kernel_decision::result::nonzero) {
       result.evidence["exact"] = exact;
-      result.outcome = verdict::kernels_disagree;
-      result.note = "GiNaC and our kernel reached different conclusions on the step's solution: a bug in one of them.";
+      kernels_disagree_if(result, true, kernels_differ_on("the step's solution"));
       return result;
     }
     record_certificate(result, coq_certificate(call.claim_id, call.statement,

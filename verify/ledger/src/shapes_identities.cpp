@@ -520,11 +520,7 @@ claim_result proportional_shape(const shape_call& call, const run_context& ctx) 
                                        : own.outcome == kernel_decision::result::nonzero ? "fails: "
                                                                                          : "not applicable: ") +
                                           own.evidence}};
-  if (own.outcome == kernel_decision::result::zero) {
-    result.outcome = verdict::kernels_disagree;
-    result.note = "GiNaC and our kernel reached different conclusions on " + what + ": a bug in one of them.";
-    return result;
-  }
+  if (kernels_disagree_if(result, own.outcome == kernel_decision::result::zero, kernels_differ_on(what))) return result;
   result.note = "As printed: " + what + " is false; " + ginac.substr(7) + ".";
   if (own.outcome == kernel_decision::result::not_applicable) result.note += " Our kernel could not decide it (" + own.evidence + "): GiNaC's proof alone.";
   if (first.empty() || other.empty()) {

@@ -352,9 +352,7 @@ claim_result factor_signs_shape(const shape_call& call, const run_context& ctx) 
       {"ginac", std::string(ginac_decided ? "holds: every factor's sign decided" : "not decided for every factor") +
                     " (the coefficients of its numerator and denominator after u = E s/(1 + s))"}};
   record_certificate(result, coq_certificate(call.claim_id, call.statement, goals));
-  if (!kernels_agree) {
-    result.outcome = verdict::kernels_disagree;
-    result.note = "Our kernel's (Sturm) and GiNaC's (coefficients) signs of a factor differ: a bug in one of them.";
+  if (kernels_disagree_if(result, !kernels_agree, "Our kernel's (Sturm) and GiNaC's (coefficients) signs of a factor differ: a bug in one of them.")) {
     return result;
   }
   const std::string facts = fmt::format("on 0 < {} < {}: {}; the product is {}", var, text_of(high), fmt::join(proved, ", "), sign_word(product_sign));

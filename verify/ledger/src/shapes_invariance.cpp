@@ -524,9 +524,9 @@ claim_result invariance_kernel_shape(const shape_call& call, const run_context& 
     result.note = !printed_rank.ginac ? fmt::format("As printed: ({}) is in the kernel, but the kernel has dimension {}: not every solution is a multiple of it.",
                                                     printed_ref, printed_there.rows() - normalised(printed_there).rank())
                                       : fmt::format("As printed: {} does not hold for the coefficients of ({}).", fmt::join(v_failing, ", "), printed_ref);
-  } else if (result.outcome == verdict::holds && !own_rank && printed_rank.own.outcome != kernel_decision::result::not_applicable) {
-    result.outcome = verdict::kernels_disagree;
-    result.note = "GiNaC finds rank n - 1 and our kernel finds the chosen (n - 1)-minor zero: a bug in one of them.";
+  } else {
+    kernels_disagree_if(result, result.outcome == verdict::holds && !own_rank && printed_rank.own.outcome != kernel_decision::result::not_applicable,
+                        "GiNaC finds rank n - 1 and our kernel finds the chosen (n - 1)-minor zero: a bug in one of them.");
   }
   if (result.outcome == verdict::fails && result.note.find("As printed") != std::string::npos && !derived_spans) {
     result.note += " The system as derived has no one-dimensional kernel there either.";

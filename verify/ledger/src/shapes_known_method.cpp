@@ -128,11 +128,7 @@ claim_result known_method_shape(const shape_call& call, const run_context& ctx) 
                                                       : "not applicable for an entry: GiNaC's proof alone"}};
   result.evidence["stated"] = said.words("novelty");
   result.evidence["names"] = {{"looked_for", names}, {"found", named}};
-  if (own_contradicts) {
-    result.outcome = verdict::kernels_disagree;
-    result.note = "GiNaC and our kernel reached different conclusions on an entry of the map: a bug in one of them.";
-    return result;
-  }
+  if (kernels_disagree_if(result, own_contradicts, kernels_differ_on("an entry of the map"))) return result;
   if (!ginac_same) {
     result.outcome = verdict::holds;
     result.note = fmt::format("The printed map is not {}'s on this problem: that method is not what the text presents.", method);

@@ -121,11 +121,7 @@ std::string own_text(const kernel_decision& own, const std::string& verdict, con
 /// orders agree, else an erratum with `correction`, the note saying `as_printed`.
 claim_result settled_order(claim_result result, const kernel_decision& own, int stated, int order, const std::string& on, const std::string& correction,
                            const std::string& as_printed) {
-  if (own.outcome == kernel_decision::result::nonzero) {
-    result.outcome = verdict::kernels_disagree;
-    result.note = "GiNaC and our kernel reached different conclusions on " + on + ": a bug in one of them.";
-    return result;
-  }
+  if (kernels_disagree_if(result, own.outcome == kernel_decision::result::nonzero, kernels_differ_on(on))) return result;
   if (own.outcome == kernel_decision::result::not_applicable) result.note = "Our kernel could not decide it (" + own.evidence + "): GiNaC's series alone. ";
   if (order == stated) {
     result.outcome = verdict::holds;
@@ -414,11 +410,7 @@ claim_result truncation_shape(const shape_call& call, const run_context& ctx) {
                                         (ginac_holds ? terms : series) + GiNaC::pow(h, order) * remainder)};
   if (!ginac_holds) goals.push_back(decided("printed", series, terms));
   record_certificate(result, coq_certificate(call.claim_id, call.statement, goals));
-  if (own.outcome == kernel_decision::result::nonzero) {
-    result.outcome = verdict::kernels_disagree;
-    result.note = "GiNaC and our kernel reached different conclusions on " + what + ": a bug in one of them.";
-    return result;
-  }
+  if (kernels_disagree_if(result, own.outcome == kernel_decision::result::nonzero, kernels_differ_on(what))) return result;
   if (own.outcome == kernel_decision::result::not_applicable) result.note = "Our kernel could not decide it (" + own.evidence + "): GiNaC's series alone. ";
   if (ginac_holds) {
     result.outcome = verdict::holds;
