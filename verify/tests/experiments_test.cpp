@@ -463,7 +463,20 @@ TEST(Experiments, WorkPrecisionRecordsEveryRunWithItsStatus) {
     EXPECT_EQ(cell(rows, r, "status").value(), "ok");
     EXPECT_LE(std::stoi(cell(times, r, "runs").value()), 2);
     EXPECT_GT(number(cell(times, r, "min_seconds")), 0);
+    // The spread of the timed runs: minimum ≤ median ≤ maximum.
+    EXPECT_LE(number(cell(times, r, "min_seconds")), number(cell(times, r, "median_seconds")));
+    EXPECT_LE(number(cell(times, r, "median_seconds")), number(cell(times, r, "max_seconds")));
   }
+  // Against run time the general step only: the matrix form costs the same per step for every
+  // scheme, and drawn against time it would be error against N relabelled.
+  bool drawn = false;
+  for (const section_block& block : out.blocks) {
+    const plot_description* plot = std::get_if<plot_description>(&block);
+    if (plot == nullptr || plot->name != "work_precision_time") continue;
+    drawn = !plot->panels.empty();
+    for (const panel& p : plot->panels) EXPECT_EQ(p.title.find("matrix"), std::string::npos) << p.title;
+  }
+  EXPECT_TRUE(drawn) << "the time plot";
   // Untimed (--no-timing): the same errors, and no timing table or time plot.
   work_precision_settings untimed = w;
   untimed.timing.max_runs = 0;

@@ -89,7 +89,8 @@ void add_endpoint_growth(const stability_report& report, long long last_power, s
            {"jordan_block", "Jordan block (Φ₃ − λI ≠ 0)"},
            {"beat_period", "period of |y| (steps)"}}};
   for (const long long n : shown) t.columns.push_back({fmt::format("max_amplitude_to_{}", n), fmt::format("max |y|/A, n ≤ {}", count_text(n))});
-  t.columns.push_back(column::fixed_point("growth_exponent", fmt::format("log-log exponent, n = {}..{}", count_text(fit_from), count_text(last_power)), 4));
+  // Three significant digits (every digit in the JSON): an exponential rise's exponent is large.
+  t.columns.push_back(column("growth_exponent", fmt::format("log-log exponent, n = {}..{}", count_text(fit_from), count_text(last_power))));
   t.columns.push_back({"growth_rate", "fitted rate ln M / n", "", 6});
   t.columns.push_back({"log_growth_factor", "ln |λ| max", "", 6});
   t.columns.push_back({"fitted", "growth fitted"});

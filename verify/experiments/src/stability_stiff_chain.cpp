@@ -153,7 +153,8 @@ void add_stiff_chain(const stability_report& region, const std::vector<double>& 
            {"predicted", "growth predicted"},
            {fmt::format("log10_max_amplitude_2_{}", fit_from), fmt::format("log10 max |y|/|y₀|, n ≤ 2^{}", fit_from), "", 4},
            {fmt::format("log10_max_amplitude_2_{}", doublings), fmt::format("log10 max |y|/|y₀|, n ≤ 2^{}", doublings), "", 4},
-           column::fixed_point("growth_exponent", fmt::format("log-log exponent, n = 2^{}..2^{}", fit_from, doublings), 4),
+           // Three significant digits (the enclosure, every digit, in the JSON): an exponential rise's exponent is large.
+           column("growth_exponent", fmt::format("log-log exponent, n = 2^{}..2^{}", fit_from, doublings)),
            {"fitted", "growth fitted"}}};
   for (const double r : ratios) {
     // k = r²/4: the slow modes move the stiff pairs as rigid bodies of mass 2 on soft springs
@@ -202,8 +203,7 @@ void add_stiff_chain(const stability_report& region, const std::vector<double>& 
                   fmt::format("The stiff chain (r = {}) with its fast modes at ω²h² ≈ {} grows as its modes predict.", simpson::to_string(ratio, 4),
                               simpson::to_string(aim)),
                   fmt::format("{}: the modes' x = ω_k²h² of the h that runs, {} (Sturm, exact)", predicted.growth, predicted.modes),
-                  fmt::format("{}: log-log exponent {} ± {} (enclosed) over n = 2^{}..2^{}", fitted,
-                              display_value(exponent_figure, 4),
+                  fmt::format("{}: log-log exponent {} (enclosed, ± {}) over n = 2^{}..2^{}", fitted, display_value(exponent_figure, 3),
                               exponent_figure.radius(), fit_from, doublings),
                   fitted == predicted.growth});
     }

@@ -13,7 +13,7 @@ namespace simpson::verify::detail {
 
 struct run_times {
   long long runs = 0;
-  double minimum = 0, median = 0;  // seconds
+  double minimum = 0, median = 0, maximum = 0;  // seconds: the spread is [minimum, maximum]
 };
 
 /// Times `one_run`, which returns a double derived from its result (kept, so that the run is not
@@ -33,7 +33,7 @@ run_times time_runs(const timing_policy& timing, Run&& one_run) {
   }
   std::sort(seconds.begin(), seconds.end());
   const std::size_t n = seconds.size();
-  return {static_cast<long long>(n), seconds.front(), n % 2 ? seconds[n / 2] : (seconds[n / 2 - 1] + seconds[n / 2]) / 2};
+  return {static_cast<long long>(n), seconds.front(), n % 2 ? seconds[n / 2] : (seconds[n / 2 - 1] + seconds[n / 2]) / 2, seconds.back()};
 }
 
 }  // namespace simpson::verify::detail

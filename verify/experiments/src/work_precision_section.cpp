@@ -31,7 +31,7 @@ namespace {
 
 struct measured_run {
   table_row row;         // the figures of the error run
-  table_row timing_row;  // runs, minimum and median time (empty when nothing is timed)
+  table_row timing_row;  // runs, minimum, median and maximum time (empty when nothing is timed)
   figure error;          // max of the q error and the scaled p error (a fault when the run has one)
   figure seconds;        // minimum run time
 };
@@ -143,7 +143,7 @@ measured_run measure(scheme_id scheme, const std::string& form, const precision&
   out.row.push_back(status);
   if (status.is_fault()) {
     for (int k = 0; k < 7; ++k) out.row.push_back(figure{});
-    if (timing.max_runs > 0) out.timing_row = {key[0], key[1], key[2], key[3], figure{}, figure{}, figure{}};
+    if (timing.max_runs > 0) out.timing_row = {key[0], key[1], key[2], key[3], figure{}, figure{}, figure{}, figure{}};
     if (timing.max_runs > 0 && benchmark) out.timing_row.push_back(figure{});
     return out;
   }
@@ -182,9 +182,16 @@ measured_run measure(scheme_id scheme, const std::string& form, const precision&
     for (long long j = 0; j < steps; ++j) z = advance(z);
     return static_cast<double>(z.q);
   });
-  out.timing_row = {key[0], key[1], key[2], key[3], figure::integer(times.runs), figure::of(times.minimum), figure::of(times.median)};
-  if (benchmark) out.timing_row.push_back(figure::of(static_cast<double>(steps) / times.minimum));
-  out.seconds = figure::of(times.minimum);
+  out.timing_row = {key[0],
+                    key[1],
+                    key[2],
+                    key[3],
+                    figure::integer(times.runs),
+                    figure::of(times.minimum),
+                    figure::of(times.median),
+                    figure::of(times.maximum)};
+  if (benchmark) out.timing_row.push_back(figure::of(static_cast<double>(steps) / times.median));
+  out.seconds = figure::of(times.median);
   return out;
 }
 
@@ -206,8 +213,9 @@ section_result run_work_precision(const work_precision_settings& s) {
                  "by their stage equations, whose matrix, constant for this linear force, is factored once; Störmer–Verlet "
                  "and Yoshida their kicks and drifts, RK4 its four explicit stages: each peer as its users write it); "
                  "`matrix` is its own exact 2 × 2 one-step matrix, one product a step, the form the paper gives Φ₃ in. In "
-                 "the matrix form every scheme costs the same per step, so that panel is error against N, not against cost; in "
-                 "the step form it compares the general algorithms. Errors: maxima over all t_j of |q_j − q(t_j)| and "
+                 "the matrix form every scheme costs the same per step, so it is drawn against N only; against run time the "
+                 "general steps are compared ([work_precision_time.png](work_precision_time.png), in timing.md: the median of the "
+                 "timed runs, with their minimum and maximum). Errors: maxima over all t_j of |q_j − q(t_j)| and "
                  "|p_j − p(t_j)|/(mω), computed in the run's precision; the relative error of H (and of H_d for Simpson) at "
                  "the end, and its largest over the run (at the end of whole periods the state is back near y₀). Above double the error and energy figures are enclosures (MPFI): each iterate, an exact binary "
                  "value, against the exact solution at t_j = j/N with 2π enclosed, and the energies at the run's own "
@@ -215,7 +223,7 @@ section_result run_work_precision(const work_precision_settings& s) {
                  "A run whose state is not finite, grows past 10⁶ times the amplitude (unstable, with the step), or throws "
                  "is recorded with its status. At the round-off floor: error ≤ 100 N eps.",
                  s.periods, fmt::format("{}", fmt::join(s.forms, " and ")),
-                 timed ? "Run times, and how they are measured, are in timing.md." : "Not timed (--no-timing)."),
+                 timed ? "Run times, and how they are measured, are in [timing.md](timing.md)." : "Not timed (--no-timing)."),
              {{"scheme", "scheme"},
               {"form", "form"},
               {"precision", "precision"},
@@ -235,7 +243,7 @@ section_result run_work_precision(const work_precision_settings& s) {
                           "of the error run, without the error computation.",
                           s.timing.max_runs, simpson::to_string(s.timing.max_seconds, 3)),
               {{"scheme", "scheme"}, {"form", "form"}, {"precision", "precision"}, {"N_per_period", "N"}, {"runs", "runs"},
-               {"min_seconds", "min time", "s"}, {"median_seconds", "median time", "s"}}};
+               {"min_seconds", "min time", "s"}, {"median_seconds", "median time", "s"}, {"max_seconds", "max time", "s"}}};
   if (s.benchmark) times.columns.push_back({"steps_per_second", "steps/s"});
   times.csv_file = "work_precision_time.csv";
   times.timing = true;
@@ -249,10 +257,12 @@ section_result run_work_precision(const work_precision_settings& s) {
     const precision& prec = s.precisions[pk];
     const bool first = pk == 0, last = pk + 1 == s.precisions.size();
     const std::string error_label = "max error of q and p/(mω)";  // error_max: the larger of the two
+    // Against run time, the general step only: as its own 2 × 2 matrix every scheme costs the same per
+    // step, so that error against time would be error against N (work_precision_n) relabelled.
     std::map<std::string, panel> time_panels;
     for (const std::string& form : s.forms) {
-      time_panels.emplace(form, panel{fmt::format("{}, each scheme {}", prec.name(), form == "matrix" ? "as its own 2 × 2 matrix" : "by its general step"),
-                                      {"run time (s, minimum of repeats)", true}, {error_label, true}, {}, "bottom left"});
+      time_panels.emplace(form, panel{fmt::format("{}, each scheme by its general step", prec.name()),
+                                      {"run time (s, median of repeats)", true}, {error_label, true}, {}, "bottom left"});
     }
     panel n_panel{fmt::format("{}, {} form", prec.name(), shown_form), {"N (steps per period)", true}, {error_label, true}, {}, "bottom left"};
     visit_floating(prec, [&](auto precision_tag) {
@@ -317,7 +327,7 @@ section_result run_work_precision(const work_precision_settings& s) {
       n_panel.curves.push_back(floor_line);
     });
     for (const std::string& form : s.forms) {
-      if (first || (last && form == shown_form)) by_time.push_back(time_panels.at(form));
+      if (form != "matrix" && (first || (last && form == shown_form))) by_time.push_back(time_panels.at(form));
     }
     if (first || last) by_n.push_back(n_panel);
   }
@@ -325,12 +335,13 @@ section_result run_work_precision(const work_precision_settings& s) {
   if (timed) out.add(std::move(times));
   if (timed) {
     plot_description time_plot{"work_precision_time",
-                               fmt::format("Maximum error of q and p/(mω) against run time (log-log). As its own 2 × 2 matrix every scheme "
-                                           "costs the same per step: that panel compares the methods. By its general step each runs "
-                                           "what it runs for any force: that panel compares the algorithms (Simpson's nonlinear step, "
-                                           "with its Newton solve, against the peers' stage equations). The {} panel{} the step form "
-                                           "in the highest precision of the run",
-                                           by_time.size() > s.forms.size() ? "last" : "", by_time.size() > s.forms.size() ? " shows" : "s show"),
+                               fmt::format("Maximum error of q and p/(mω) against run time (log-log; the median of the timed runs, their "
+                                           "minimum and maximum in timing.md), each scheme by its general step, what it runs for any "
+                                           "force: Simpson's nonlinear step with its Newton solve, the implicit peers' stage equations "
+                                           "(their matrix factored once for this linear force), the explicit peers' stages. As its own "
+                                           "2 × 2 matrix every scheme costs the same per step, so that form is drawn against N only "
+                                           "(work_precision_n). {}",
+                                           by_time.size() > 1 ? "The last panel is the highest precision of the run." : ""),
                                by_time, 2, 1000, 440 * static_cast<int>((by_time.size() + 1) / 2)};
     time_plot.timing = true;
     out.add(std::move(time_plot));
