@@ -187,6 +187,39 @@ ndof_state<Real> yoshida_ndof_step(const separable_system<Real, Potential>& s, c
   return y;
 }
 
+/// The force a kick–drift–kick step ends with, kept for the step that starts there (first same as
+/// last): a run of Störmer–Verlet steps, or of Yoshida's substeps, then evaluates ∇V once a
+/// substep, as its users write it. Valid for the q it was evaluated at only.
+template <class Real>
+struct last_force {
+  dense_vector<Real> q, gradient;
+  bool valid = false;
+};
+
+/// Störmer–Verlet's step as stormer_verlet_ndof_step, the force at y.q taken from `kept` when it was
+/// evaluated there, and the force at the new q kept.
+template <class Real, class Potential>
+ndof_state<Real> stormer_verlet_ndof_step(const separable_system<Real, Potential>& s, const Real& tau, const ndof_state<Real>& y,
+                                          last_force<Real>& kept) {
+  const bool same = kept.valid && kept.q.size() == y.q.size() && (kept.q.array() == y.q.array()).all();
+  const dense_vector<Real> force = same ? kept.gradient : dense_vector<Real>(s.potential().gradient(y.q));
+  const dense_vector<Real> p_half = y.p - scaled(force, Real(tau / 2));
+  ndof_state<Real> out{p_half, y.q + scaled(s.mass_solve(p_half), tau)};
+  kept.q = out.q;
+  kept.gradient = s.potential().gradient(out.q);
+  kept.valid = true;
+  out.p -= scaled(kept.gradient, Real(tau / 2));
+  return out;
+}
+
+/// Yoshida's composition with its substeps' forces kept across them and across steps.
+template <class Real, class Potential>
+ndof_state<Real> yoshida_ndof_step(const separable_system<Real, Potential>& s, const std::array<Real, 3>& weights, const Real& h,
+                                   ndof_state<Real> y, last_force<Real>& kept) {
+  for (const Real& w : weights) y = stormer_verlet_ndof_step(s, Real(w * h), y, kept);
+  return y;
+}
+
 /// The classic RK4 step on q̇ = M⁻¹ p, ṗ = −∇V(q) (explicit: its stages are evaluated in turn).
 template <class Real, class Potential>
 ndof_state<Real> rk4_ndof_step(const separable_system<Real, Potential>& s, const Real& h, const ndof_state<Real>& y) {
