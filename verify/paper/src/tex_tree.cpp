@@ -1,7 +1,9 @@
-// TeX math as TeX groups it: see tex_tree.hpp. The tables below are the whole vocabulary; a control
-// sequence in none of them is refused, named.
+// TeX math as TeX groups it: see tex_tree.hpp. The tables of tex_commands.cpp are the whole vocabulary;
+// a control sequence in none of them is refused, named. The normal form: tex_normal_form.cpp.
 
 #include <simpson/verify/tex_tree.hpp>
+
+#include "tex_commands.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -12,140 +14,9 @@
 namespace simpson::verify {
 namespace {
 
+using namespace tex_commands;
+
 using tokens_t = std::vector<tex_token>;
-
-/// Symbol commands and their class.
-const std::map<std::string, tex_class>& symbol_commands() {
-  static const std::map<std::string, tex_class> table = [] {
-    std::map<std::string, tex_class> t;
-    for (const char* g : {"alpha", "beta", "gamma", "delta", "epsilon", "varepsilon", "zeta", "eta", "theta", "vartheta", "iota", "kappa",
-                          "lambda", "mu", "nu", "xi", "pi", "varpi", "rho", "varrho", "sigma", "varsigma", "tau", "upsilon", "phi", "varphi",
-                          "chi", "psi", "omega", "Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Upsilon", "Phi", "Psi", "Omega",
-                          "ell", "hbar", "infty", "partial", "nabla", "prime", "imath", "jmath", "emptyset", "aleph", "forall", "exists",
-                          "neg", "top", "bot", "ldots", "cdots", "dots", "vdots", "ddots", "%", "$", "#", "&", "_", "|", "Vert", "vert"}) {
-      t[std::string("\\") + g] = tex_class::ord;
-    }
-    for (const char* b : {"cdot", "times", "pm", "mp", "ast", "star", "circ", "bullet", "div", "wedge", "vee", "cap", "cup", "setminus",
-                          "otimes", "oplus"}) {
-      t[std::string("\\") + b] = tex_class::bin;
-    }
-    for (const char* r : {"leq", "le", "geq", "ge", "neq", "ne", "equiv", "simeq", "approx", "sim", "cong", "propto", "to", "mapsto",
-                          "longmapsto", "rightarrow", "leftarrow", "Rightarrow", "Leftarrow", "Leftrightarrow", "iff", "implies", "impliedby",
-                          "longrightarrow", "Longrightarrow", "in", "notin", "subset", "subseteq", "ll", "gg", "coloneqq", "doteq", "perp",
-                          "parallel", "mid"}) {
-      t[std::string("\\") + r] = tex_class::rel;
-    }
-    for (const char* o : {"{", "lbrace", "langle", "lfloor", "lceil", "lvert", "lVert"}) t[std::string("\\") + o] = tex_class::open;
-    for (const char* c : {"}", "rbrace", "rangle", "rfloor", "rceil", "rvert", "rVert"}) t[std::string("\\") + c] = tex_class::close;
-    t["\\colon"] = tex_class::punct;
-    return t;
-  }();
-  return table;
-}
-
-const std::set<std::string>& operator_commands() {
-  static const std::set<std::string> names{"\\sum",  "\\prod", "\\int",  "\\oint", "\\iint", "\\iiint", "\\lim",  "\\det",  "\\sin",  "\\cos",
-                                           "\\tan",  "\\cot",  "\\sec",  "\\csc",  "\\exp",  "\\log",   "\\ln",   "\\max",  "\\min",  "\\sup",
-                                           "\\inf",  "\\arg",  "\\dim",  "\\ker",  "\\deg",  "\\gcd",   "\\Pr",   "\\sinh", "\\cosh", "\\tanh",
-                                           "\\arcsin", "\\arccos", "\\arctan", "\\liminf", "\\limsup", "\\coprod", "\\bigcup", "\\bigcap"};
-  return names;
-}
-
-/// Commands that take no argument and leave nothing in the tree: spacing, style, numbering.
-const std::set<std::string>& ignored_commands() {
-  static const std::set<std::string> names{"\\,",          "\\:",          "\\;",           "\\!",          "\\>",        "\\ ",
-                                           "\\quad",       "\\qquad",      "\\enspace",     "\\thinspace",  "\\medspace", "\\thickspace",
-                                           "\\negthinspace", "\\negmedspace", "\\negthickspace", "\\nobreak", "\\allowbreak", "\\relax",
-                                           "\\displaystyle", "\\textstyle", "\\scriptstyle", "\\scriptscriptstyle", "\\nonumber", "\\notag",
-                                           "\\limits",     "\\nolimits",   "\\/",           "\\hfill",      "\\hline",    "\\strut",
-                                           "\\mathstrut",  "\\smallskip",  "\\medskip",     "\\bigskip",    "\\noindent", "\\nonumber"};
-  return names;
-}
-
-const std::map<std::string, std::string>& font_commands() {  // a font command and KaTeX's name for its font
-  static const std::map<std::string, std::string> fonts{
-      {"\\mathrm", "mathrm"},     {"\\mathit", "mathit"},       {"\\mathbf", "mathbf"},     {"\\mathsf", "mathsf"},     {"\\mathtt", "mathtt"},
-      {"\\mathcal", "mathcal"},   {"\\mathbb", "mathbb"},       {"\\mathfrak", "mathfrak"}, {"\\mathscr", "mathscr"},   {"\\boldsymbol", "boldsymbol"},
-      {"\\bm", "boldsymbol"},     {"\\mathnormal", "mathnormal"}, {"\\pmb", "boldsymbol"}};
-  return fonts;
-}
-
-const std::map<std::string, std::string>& font_switches() {  // {\rm d}: the rest of the group
-  static const std::map<std::string, std::string> fonts{{"\\rm", "mathrm"}, {"\\it", "mathit"}, {"\\bf", "mathbf"},
-                                                        {"\\sf", "mathsf"}, {"\\tt", "mathtt"}, {"\\cal", "mathcal"}};
-  return fonts;
-}
-
-const std::set<std::string>& text_commands() {
-  static const std::set<std::string> names{"\\text", "\\textrm", "\\textit", "\\textbf", "\\textnormal", "\\mbox", "\\hbox", "\\textsf", "\\texttt"};
-  return names;
-}
-
-const std::set<std::string>& accent_commands() {
-  static const std::set<std::string> names{"\\dot", "\\ddot", "\\dddot", "\\hat", "\\widehat", "\\bar", "\\overline", "\\tilde", "\\widetilde",
-                                           "\\vec", "\\acute", "\\grave", "\\breve", "\\check", "\\mathring", "\\underline"};
-  return names;
-}
-
-const std::set<std::string>& fraction_commands() {
-  static const std::set<std::string> names{"\\frac", "\\dfrac", "\\tfrac", "\\cfrac", "\\binom", "\\dbinom", "\\tbinom"};
-  return names;
-}
-
-const std::set<std::string>& sizing_commands() {
-  static const std::set<std::string> names{"\\big",  "\\Big",  "\\bigg",  "\\Bigg",  "\\bigl", "\\Bigl", "\\biggl", "\\Biggl",
-                                           "\\bigr", "\\Bigr", "\\biggr", "\\Biggr", "\\bigm", "\\Bigm", "\\biggm", "\\Biggm"};
-  return names;
-}
-
-/// The class of a character in math.
-std::optional<tex_class> character_class(const std::string& c) {
-  static const std::map<std::string, tex_class> table{{"+", tex_class::bin},  {"-", tex_class::bin},   {"*", tex_class::bin},
-                                                      {"=", tex_class::rel},  {"<", tex_class::rel},   {">", tex_class::rel},
-                                                      {":", tex_class::rel},  {"(", tex_class::open},  {"[", tex_class::open},
-                                                      {")", tex_class::close}, {"]", tex_class::close}, {"!", tex_class::close},
-                                                      {"?", tex_class::close}, {",", tex_class::punct}, {";", tex_class::punct},
-                                                      {".", tex_class::ord},  {"/", tex_class::ord},   {"|", tex_class::ord}};
-  const auto it = table.find(c);
-  if (it != table.end()) return it->second;
-  if (c.size() == 1 && std::isdigit(static_cast<unsigned char>(c[0]))) return tex_class::ord;
-  return std::nullopt;
-}
-
-bool is_delimiter(const tex_token& t) {
-  if (t.category == tex_category::control) {
-    static const std::set<std::string> names{"\\{",     "\\}",     "\\lbrace", "\\rbrace", "\\langle", "\\rangle", "\\vert",  "\\Vert", "\\|",
-                                             "\\lvert", "\\rvert", "\\lVert",  "\\rVert",  "\\lfloor", "\\rfloor", "\\lceil", "\\rceil", "\\backslash"};
-    return names.count(t.text) > 0;
-  }
-  static const std::set<std::string> chars{"(", ")", "[", "]", "|", "/", ".", "<", ">"};
-  return chars.count(t.text) > 0;
-}
-
-tex_class delimiter_class(const std::string& d) {
-  static const std::set<std::string> open{"(", "[", "\\{", "\\lbrace", "\\langle", "\\lfloor", "\\lceil", "\\lvert", "\\lVert"};
-  static const std::set<std::string> close{")", "]", "\\}", "\\rbrace", "\\rangle", "\\rfloor", "\\rceil", "\\rvert", "\\rVert"};
-  if (open.count(d)) return tex_class::open;
-  if (close.count(d)) return tex_class::close;
-  return tex_class::ord;
-}
-
-/// An environment's delimiters, as KaTeX wraps it: pmatrix in ( ), cases in \{ and nothing.
-std::pair<std::string, std::string> environment_delimiters(const std::string& name) {
-  if (name == "pmatrix") return {"(", ")"};
-  if (name == "bmatrix") return {"[", "]"};
-  if (name == "Bmatrix") return {"\\{", "\\}"};
-  if (name == "vmatrix") return {"|", "|"};
-  if (name == "Vmatrix") return {"\\Vert", "\\Vert"};
-  if (name == "cases" || name == "dcases") return {"\\{", "."};
-  return {"", ""};
-}
-
-bool known_environment(const std::string& name) {
-  static const std::set<std::string> names{"matrix", "pmatrix", "bmatrix", "Bmatrix",  "vmatrix",  "Vmatrix",    "smallmatrix",
-                                           "array",  "cases",   "dcases",  "aligned",  "gathered", "alignedat",  "split"};
-  return names.count(name) > 0;
-}
 
 class tree_parser {
  public:
@@ -654,120 +525,9 @@ class tree_parser {
   int depth_ = 0;
 };
 
-// --- the normal form
-
-std::string joined(const std::vector<std::string>& items) {
-  if (items.size() == 1) return items.front();
-  std::string out = "[";
-  for (std::size_t k = 0; k < items.size(); ++k) out += (k ? " " : "") + items[k];
-  return out + "]";
-}
-
-void items_into(const tex_list& list, std::vector<std::string>& items);
-
-std::string form_of_list(const tex_list& list) {
-  std::vector<std::string> items;
-  items_into(list, items);
-  return joined(items);
-}
-
-std::string form_of_group_or_node(const tex_node& n) {  // a script, an argument: its list, unwrapped
-  if (n.kind == tex_node_kind::group) return form_of_list(n.children);
-  std::vector<std::string> items;
-  items_into({n}, items);
-  return joined(items);
-}
-
-std::string canonical_atom(const std::string& text) {
-  static const std::map<std::string, std::string> same{{"\\le", "\\leq"},       {"\\ge", "\\geq"},     {"\\ne", "\\neq"},
-                                                       {"\\dots", "\\ldots"},   {"\\lbrace", "\\{"},   {"\\rbrace", "\\}"},
-                                                       {"\\to", "\\rightarrow"}, {"\\vert", "|"},      {"\\|", "\\Vert"},
-                                                       {"\\implies", "\\Longrightarrow"}};
-  const auto it = same.find(text);
-  return it == same.end() ? text : it->second;
-}
-
-void items_into(const tex_list& list, std::vector<std::string>& items) {
-  for (const tex_node& n : list) {
-    switch (n.kind) {
-      case tex_node_kind::atom: items.push_back(canonical_atom(n.text)); break;
-      case tex_node_kind::group:
-        if (!n.children.empty()) items.push_back(form_of_list(n.children));
-        break;
-      case tex_node_kind::fraction: {
-        const std::string kind = n.text == "\\binom" ? "binom" : n.text == "\\atop" ? "atop" : "frac";
-        items.push_back("(" + kind + " " + form_of_group_or_node(n.children[0]) + " " + form_of_group_or_node(n.children[1]) + ")");
-        break;
-      }
-      case tex_node_kind::root:
-        items.push_back("(sqrt " + form_of_group_or_node(n.children[0]) + (n.children.size() > 1 ? " " + form_of_group_or_node(n.children[1]) : "") + ")");
-        break;
-      case tex_node_kind::scripts: {
-        std::string base = n.children.front().kind == tex_node_kind::group ? form_of_list(n.children.front().children) : form_of_group_or_node(n.children.front());
-        if (!n.sup.empty() && !n.sub.empty()) {
-          items.push_back("(supsub " + base + " " + form_of_group_or_node(n.sup.front()) + " " + form_of_group_or_node(n.sub.front()) + ")");
-        } else if (!n.sup.empty()) {
-          items.push_back("(sup " + base + " " + form_of_group_or_node(n.sup.front()) + ")");
-        } else {
-          items.push_back("(sub " + base + " " + form_of_group_or_node(n.sub.front()) + ")");
-        }
-        break;
-      }
-      case tex_node_kind::delimited:
-        items.push_back("(left " + canonical_atom(n.text) + " " + canonical_atom(n.close) + " " + form_of_list(n.children) + ")");
-        break;
-      case tex_node_kind::environment: {
-        std::string rows;
-        for (const auto& row : n.rows) {
-          std::string cells;
-          for (const tex_node& cell : row) cells += " " + form_of_list(cell.children);
-          rows += " (row" + cells + ")";
-        }
-        const std::string array = "(array" + rows + ")";
-        const auto [l, r] = environment_delimiters(n.text);
-        items.push_back(l.empty() ? array : "(left " + canonical_atom(l) + " " + canonical_atom(r) + " " + array + ")");
-        break;
-      }
-      case tex_node_kind::font:
-        items.push_back(n.text == "operatorname" ? "(operatorname " + form_of_list(n.children) + ")"
-                                                 : "(font " + n.text + " " + form_of_list(n.children) + ")");
-        break;
-      case tex_node_kind::op: items.push_back(n.text); break;
-      case tex_node_kind::accent: items.push_back("(accent " + n.text + " " + form_of_group_or_node(n.children.front()) + ")"); break;
-      case tex_node_kind::text: {
-        std::string t;
-        for (const char c : n.text) {
-          if (c != ' ') t += c;
-        }
-        items.push_back("(text " + t + ")");
-        break;
-      }
-      case tex_node_kind::label: break;
-    }
-  }
-}
-
-void labels_into(const tex_list& list, std::vector<std::string>& out) {
-  for (const tex_node& n : list) {
-    if (n.kind == tex_node_kind::label) out.push_back(n.text);
-    labels_into(n.children, out);
-    labels_into(n.sup, out);
-    labels_into(n.sub, out);
-    for (const auto& row : n.rows) labels_into(row, out);
-  }
-}
-
 }  // namespace
 
 tex_list parse_tex_tree(const tokens_t& tokens, tex_list_rules rules) { return tree_parser(tokens).top(rules); }
 
-std::string normal_form(const tex_list& list) { return form_of_list(list); }
-std::string normal_form(const tex_node& node) { return form_of_list({node}); }
-
-std::vector<std::string> labels_of(const tex_list& list) {
-  std::vector<std::string> out;
-  labels_into(list, out);
-  return out;
-}
 
 }  // namespace simpson::verify
