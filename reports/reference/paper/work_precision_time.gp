@@ -1,19 +1,19 @@
-# Maximum error of q and p/(mω) against run time (log-log). As its own 2 × 2 matrix every scheme costs the same per step: that panel compares the methods. By its general step each runs what it runs for any force: that panel compares the algorithms (Simpson's nonlinear step, with its Newton solve, against the peers' stage equations). The last panel shows the step form in the highest precision of the run
+# Maximum error of q and p/(mω) against run time (log-log; the median of the timed runs, their minimum and maximum in timing.md), each scheme by its general step, what it runs for any force: Simpson's nonlinear step with its Newton solve, the implicit peers' stage equations (their matrix factored once for this linear force), the explicit peers' stages. As its own 2 × 2 matrix every scheme costs the same per step, so that form is drawn against N only (work_precision_n). The last panel is the highest precision of the run.
 # Redraw with: gnuplot work_precision_time.gp (in this directory)
-set terminal svg size 1380,880 dynamic enhanced font 'Sans,13' background rgb 'white'
+set terminal svg size 1380,440 dynamic enhanced font 'Sans,13' background rgb 'white'
 set output 'work_precision_time.svg'
 set multiplot
-set origin 0.0000,0.5000
-set size 0.3623,0.5000
+set origin 0.0000,0.0000
+set size 0.3623,1.0000
 set title 'double, each scheme by its general step'
-set xlabel 'run time (s, minimum of repeats)'
+set xlabel 'run time (s, median of repeats)'
 set ylabel 'max error of q and p/(mω)'
 set logscale x
 set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.20421e-07:0.0002372]
+set xrange [1.2053e-07:0.000232733]
 set xtics autofreq
 set mxtics default
 set yrange [2.94139e-15:0.34373]
@@ -27,21 +27,21 @@ plot 'work_precision_time.dat' index 0 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb
      'work_precision_time.dat' index 5 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
      'work_precision_time.dat' index 6 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
      'work_precision_time.dat' index 7 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
-set origin 0.3623,0.5000
-set size 0.3623,0.5000
-set title 'double, each scheme as its own 2 × 2 matrix'
-set xlabel 'run time (s, minimum of repeats)'
+set origin 0.3623,0.0000
+set size 0.3623,1.0000
+set title 'mpfr:100, each scheme by its general step'
+set xlabel 'run time (s, median of repeats)'
 set ylabel 'max error of q and p/(mω)'
 set logscale x
 set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.31766e-08:2.24915e-05]
+set xrange [6.51072e-06:0.0405027]
 set xtics autofreq
 set mxtics default
-set yrange [3.26923e-14:0.306488]
-set ytics 1e2
+set yrange [3.33375e-15:0.341687]
+set ytics 1e3
 set mytics 1
 plot 'work_precision_time.dat' index 8 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
      'work_precision_time.dat' index 9 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
@@ -51,30 +51,6 @@ plot 'work_precision_time.dat' index 8 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb
      'work_precision_time.dat' index 13 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
      'work_precision_time.dat' index 14 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
      'work_precision_time.dat' index 15 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
-set origin 0.0000,0.0000
-set size 0.3623,0.5000
-set title 'mpfr:100, each scheme by its general step'
-set xlabel 'run time (s, minimum of repeats)'
-set ylabel 'max error of q and p/(mω)'
-set logscale x
-set format x '10^{%L}'
-set logscale y
-set format y '10^{%L}'
-unset key
-set xrange [6.52852e-06:0.0409861]
-set xtics autofreq
-set mxtics default
-set yrange [3.33375e-15:0.341687]
-set ytics 1e3
-set mytics 1
-plot 'work_precision_time.dat' index 16 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
-     'work_precision_time.dat' index 17 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
-     'work_precision_time.dat' index 18 u 1:2 w lp pt 9 ps 0.8 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
-     'work_precision_time.dat' index 19 u 1:2 w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
-     'work_precision_time.dat' index 20 u 1:2 w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
-     'work_precision_time.dat' index 21 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
-     'work_precision_time.dat' index 22 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
-     'work_precision_time.dat' index 23 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
 set origin 0.7246,0
 set size 0.2754,1
 unset title
@@ -98,20 +74,20 @@ unset multiplot
 
 unset output
 reset
-set terminal pngcairo size 1380,880 enhanced font 'Sans,13' background rgb 'white'
+set terminal pngcairo size 1380,440 enhanced font 'Sans,13' background rgb 'white'
 set output 'work_precision_time.png'
 set multiplot
-set origin 0.0000,0.5000
-set size 0.3623,0.5000
+set origin 0.0000,0.0000
+set size 0.3623,1.0000
 set title 'double, each scheme by its general step'
-set xlabel 'run time (s, minimum of repeats)'
+set xlabel 'run time (s, median of repeats)'
 set ylabel 'max error of q and p/(mω)'
 set logscale x
 set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.20421e-07:0.0002372]
+set xrange [1.2053e-07:0.000232733]
 set xtics autofreq
 set mxtics default
 set yrange [2.94139e-15:0.34373]
@@ -125,21 +101,21 @@ plot 'work_precision_time.dat' index 0 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb
      'work_precision_time.dat' index 5 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
      'work_precision_time.dat' index 6 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
      'work_precision_time.dat' index 7 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
-set origin 0.3623,0.5000
-set size 0.3623,0.5000
-set title 'double, each scheme as its own 2 × 2 matrix'
-set xlabel 'run time (s, minimum of repeats)'
+set origin 0.3623,0.0000
+set size 0.3623,1.0000
+set title 'mpfr:100, each scheme by its general step'
+set xlabel 'run time (s, median of repeats)'
 set ylabel 'max error of q and p/(mω)'
 set logscale x
 set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.31766e-08:2.24915e-05]
+set xrange [6.51072e-06:0.0405027]
 set xtics autofreq
 set mxtics default
-set yrange [3.26923e-14:0.306488]
-set ytics 1e2
+set yrange [3.33375e-15:0.341687]
+set ytics 1e3
 set mytics 1
 plot 'work_precision_time.dat' index 8 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
      'work_precision_time.dat' index 9 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
@@ -149,30 +125,6 @@ plot 'work_precision_time.dat' index 8 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb
      'work_precision_time.dat' index 13 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
      'work_precision_time.dat' index 14 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
      'work_precision_time.dat' index 15 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
-set origin 0.0000,0.0000
-set size 0.3623,0.5000
-set title 'mpfr:100, each scheme by its general step'
-set xlabel 'run time (s, minimum of repeats)'
-set ylabel 'max error of q and p/(mω)'
-set logscale x
-set format x '10^{%L}'
-set logscale y
-set format y '10^{%L}'
-unset key
-set xrange [6.52852e-06:0.0409861]
-set xtics autofreq
-set mxtics default
-set yrange [3.33375e-15:0.341687]
-set ytics 1e3
-set mytics 1
-plot 'work_precision_time.dat' index 16 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
-     'work_precision_time.dat' index 17 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
-     'work_precision_time.dat' index 18 u 1:2 w lp pt 9 ps 0.8 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
-     'work_precision_time.dat' index 19 u 1:2 w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
-     'work_precision_time.dat' index 20 u 1:2 w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
-     'work_precision_time.dat' index 21 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
-     'work_precision_time.dat' index 22 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
-     'work_precision_time.dat' index 23 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
 set origin 0.7246,0
 set size 0.2754,1
 unset title
