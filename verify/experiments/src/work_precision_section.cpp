@@ -214,7 +214,7 @@ section_result run_work_precision(const work_precision_settings& s) {
                  "and Yoshida their kicks and drifts, RK4 its four explicit stages: each peer as its users write it); "
                  "`matrix` is its own exact 2 × 2 one-step matrix, one product a step, the form the paper gives Φ₃ in. In "
                  "the matrix form every scheme costs the same per step, so it is drawn against N only; against run time the "
-                 "general steps are compared ([work_precision_time.png](work_precision_time.png), in timing.md: the median of the "
+                 "general steps are compared (the plot work_precision_time, in timing.md with the run times: the median of the "
                  "timed runs, with their minimum and maximum). Errors: maxima over all t_j of |q_j − q(t_j)| and "
                  "|p_j − p(t_j)|/(mω), computed in the run's precision; the relative error of H (and of H_d for Simpson) at "
                  "the end, and its largest over the run (at the end of whole periods the state is back near y₀). Above double the error and energy figures are enclosures (MPFI): each iterate, an exact binary "
