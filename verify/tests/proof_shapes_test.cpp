@@ -28,11 +28,7 @@
 namespace simpson::verify {
 namespace {
 
-using test::document;
-using test::record;
-using test::ShapesOnADocument;
-using test::shape_document;
-using test::declarations;
+using namespace test;  // the shapes' document, its declarations and the fixture (shape_fixture.hpp)
 
 // ---- macros ----
 

@@ -47,19 +47,12 @@ title = "Prose under test"
 real = ['x']
 )";
 
-class ProseOfADocument : public ::testing::Test {
+/// The verdict of a record on a document that declares only x: the prose's shapes read no formula.
+class ProseOfADocument : public test::RecordOnADocument {
  protected:
   claim_result run(const std::string& shape, const std::string& with, const std::string& text) {
-    book_ = read_claim_book(prose_declarations + test::record("under-test", shape, with), "test.toml");
-    reading_ = read_note(document(text));
-    check_claims_file_formulas(book_, reading_.source);
-    run_context ctx;
-    ctx.paper = &reading_;
-    ctx.book = &book_;
-    return check_claim(book_.find("under-test"), ctx);
+    return run_declared(prose_declarations, shape, with, text);
   }
-  claim_book book_;
-  paper_reading reading_;
 };
 
 TEST_F(ProseOfADocument, SpellingFindsEachSlipOnceWithTheDictionarysSuggestion) {

@@ -145,11 +145,11 @@ inline std::string record(const std::string& id, const std::string& shape, const
          "\"\nwith = " + with + "\n";
 }
 
-/// The verdict of each record run on shape_document.
-class ShapesOnADocument : public ::testing::Test {
+/// The verdict of one record, its file's declarations `declared`, run on a document.
+class RecordOnADocument : public ::testing::Test {
  protected:
-  claim_result run(const std::string& shape, const std::string& with, const std::string& text = shape_document) {
-    book_ = read_claim_book(declarations + record("under-test", shape, with), "test.toml");
+  claim_result run_declared(const std::string& declared, const std::string& shape, const std::string& with, const std::string& text) {
+    book_ = read_claim_book(declared + record("under-test", shape, with), "test.toml");
     reading_ = read_note(document(text));
     check_claims_file_formulas(book_, reading_.source);
     run_context ctx;
@@ -160,6 +160,14 @@ class ShapesOnADocument : public ::testing::Test {
 
   claim_book book_;
   paper_reading reading_;
+};
+
+/// The verdict of each record run on shape_document.
+class ShapesOnADocument : public RecordOnADocument {
+ protected:
+  claim_result run(const std::string& shape, const std::string& with, const std::string& text = shape_document) {
+    return run_declared(declarations, shape, with, text);
+  }
 };
 
 }  // namespace simpson::verify::test

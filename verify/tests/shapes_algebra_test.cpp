@@ -27,11 +27,7 @@
 namespace simpson::verify {
 namespace {
 
-using test::document;
-using test::record;
-using test::ShapesOnADocument;
-using test::shape_document;
-using test::declarations;
+using namespace test;  // the shapes' document, its declarations and the fixture (shape_fixture.hpp)
 
 // Consequences traced: an erratum's corrected formula put in where another claim reads it. The
 // claim that then holds follows from it; a typed link the derivation contradicts is a harness fault.

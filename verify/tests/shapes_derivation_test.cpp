@@ -27,11 +27,7 @@
 namespace simpson::verify {
 namespace {
 
-using test::document;
-using test::record;
-using test::ShapesOnADocument;
-using test::shape_document;
-using test::declarations;
+using namespace test;  // the shapes' document, its declarations and the fixture (shape_fixture.hpp)
 
 TEST_F(ShapesOnADocument, EqualSides) {
   const std::string where = R"(where = ["phis#1", "phis#2", "linear", 'inline:t = h \, \theta'])";
