@@ -4,6 +4,7 @@
 // and on one where a weaker check would pass.
 
 #include "shape_fixture.hpp"
+#include "shape_support.hpp"
 
 #include <simpson/verify/prose_words.hpp>
 #include <simpson/verify/tex_document.hpp>
@@ -38,6 +39,16 @@ TEST(ProseWords, AreWhatAReaderReadsBetweenTheFormulas) {
   // From where the record says the prose starts; a start the source does not print is bad input.
   EXPECT_EQ(words_of("Title words. Abstract Here it starts.", "Abstract"), (std::vector<std::string>{"Abstract", "Here", "it", "starts"}));
   EXPECT_THROW(words_of("No such start.", "Abstract"), std::invalid_argument);
+}
+
+// A finding's words show the math as a reader writes it: Greek names as letters, powers as
+// superscripts, square roots as √, products by juxtaposition; a word that only starts with a Greek
+// name, and TeX between $...$, are left as they are.
+TEST(ReadableMath, TheCanonicalTextsOperatorsAsAReaderWritesThem) {
+  EXPECT_EQ(detail::readable_math("h^2*omega^2-8"), "h²ω²-8");
+  EXPECT_EQ(detail::readable_math("h*omega in (0, 2 sqrt(2)) and (2 sqrt(3), 2 sqrt(6))"), "hω in (0, 2√2) and (2√3, 2√6)");
+  EXPECT_EQ(detail::readable_math("12*3 between the betas"), "12·3 between the betas");
+  EXPECT_EQ(detail::readable_math("at $\\omega^{2} h$ the omega"), "at $\\omega^{2} h$ the ω");
 }
 
 const std::string prose_declarations = R"(
