@@ -75,6 +75,17 @@ TEST(Figures, RoundDecimalRoundsTheDigitsThemselves) {
   EXPECT_EQ(round_decimal("-0.0000e+00", 3), "0.00e+00");
   EXPECT_EQ(round_decimal("1e+300", 1), "1e+300");
   EXPECT_THROW(round_decimal("nan", 3), std::invalid_argument);
+  // Fixed decimals: a rounding that carries into a new leading digit keeps the decimals asked
+  // (0.9975 to two decimals is 1.00, not 0.10; a one-digit probe of its exponent took it for 1's).
+  EXPECT_EQ(fixed_decimal("0.9975", 2), "1.00");
+  EXPECT_EQ(fixed_decimal("-0.9975", 2), "-1.00");
+  EXPECT_EQ(fixed_decimal("9.96", 1), "10.0");
+  EXPECT_EQ(fixed_decimal("142.0117", 1), "142.0");
+  EXPECT_EQ(fixed_decimal("0.006", 2), "0.01");
+  EXPECT_EQ(fixed_decimal("0.004", 2), "0.00");
+  EXPECT_EQ(fixed_decimal("0.0001", 2), "0.00");
+  EXPECT_EQ(fixed_decimal("1.5", 0), "2");
+  EXPECT_EQ(fixed_decimal("0", 3), "0.000");
 }
 
 TEST(Figures, AnEnclosedNumberShowsItsRadiusWhenItHasFewerGuaranteedDigitsThanAsked) {

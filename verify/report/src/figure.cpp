@@ -61,29 +61,35 @@ std::string round_decimal(const std::string& text, int digits) {
 }
 
 std::string fixed_decimal(const std::string& text, int decimals) {
-  // The decimal exponent of the leading digit, then that many digits before the point.
-  const std::string probe = round_decimal(text, 1);
-  if (probe.find_first_not_of("-0.e+") == std::string::npos) return decimals > 0 ? "0." + std::string(static_cast<std::size_t>(decimals), '0') : "0";
-  long long exponent = std::stoll(probe.substr(probe.find('e') + 1));
-  long long significant = exponent + 1 + decimals;
-  if (significant < 1) return decimals > 0 ? "0." + std::string(static_cast<std::size_t>(decimals), '0') : "0";
-  std::string rounded = round_decimal(text, static_cast<int>(significant));
-  const long long new_exponent = std::stoll(rounded.substr(rounded.find('e') + 1));
-  if (new_exponent != exponent) {  // rounding carried into a new leading digit (9.96 → 10.0)
-    exponent = new_exponent;
-    significant = exponent + 1 + decimals;
-    rounded = round_decimal(text, static_cast<int>(significant));
-  }
-  const bool negative = rounded[0] == '-';
+  const std::string zero = decimals > 0 ? "0." + std::string(static_cast<std::size_t>(decimals), '0') : "0";
+  // The decimal exponent of the leading digit, from the value itself (a one-digit probe would take
+  // 0.9975's for 1's), then that many digits before the point and `decimals` after it.
+  const std::string exact = round_decimal(text, 40);
+  if (exact.find_first_not_of("-0.e+") == std::string::npos) return zero;
+  const long long exponent = std::stoll(exact.substr(exact.find('e') + 1));
+  const long long keep = exponent + 1 + decimals;  // digits from the leading one to the last decimal
+  if (keep < 0) return zero;
+  bool negative = exact[0] == '-';
+  long long leading = exponent;
   std::string digits;
-  for (const char c : rounded.substr(0, rounded.find('e'))) {
-    if (c >= '0' && c <= '9') digits += c;
+  if (keep == 0) {  // below one unit of the last decimal: 0, or that unit (0.006 to two decimals is 0.01)
+    if (exact[negative ? 1 : 0] < '5') return zero;
+    digits = "1";
+    leading = exponent + 1;
+  } else {
+    const std::string rounded = round_decimal(text, static_cast<int>(keep));
+    negative = rounded[0] == '-';
+    leading = std::stoll(rounded.substr(rounded.find('e') + 1));
+    for (const char c : rounded.substr(0, rounded.find('e'))) {
+      if (c >= '0' && c <= '9') digits += c;
+    }
+    if (leading != exponent) digits += '0';  // carried into a new leading digit (9.96 → 10.0): one digit more
   }
   std::string out;
-  if (exponent < 0) {
-    out = "0." + std::string(static_cast<std::size_t>(-exponent - 1), '0') + digits;
+  if (leading < 0) {
+    out = "0." + std::string(static_cast<std::size_t>(-leading - 1), '0') + digits;
   } else {
-    const std::size_t whole = static_cast<std::size_t>(exponent + 1);
+    const std::size_t whole = static_cast<std::size_t>(leading + 1);
     out = digits.substr(0, whole) + (decimals > 0 ? "." + digits.substr(whole) : "");
   }
   return (negative ? "-" : "") + out;

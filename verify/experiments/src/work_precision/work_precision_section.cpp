@@ -33,8 +33,27 @@ struct measured_run {
   table_row row;         // the figures of the error run
   table_row timing_row;  // runs, minimum, median and maximum time (empty when nothing is timed)
   figure error;          // max of the q error and the scaled p error (a fault when the run has one)
-  figure seconds;        // minimum run time
+  figure seconds;        // median run time
 };
+
+/// One scheme's measured points in the first precision's general step, N increasing: what the cost
+/// to reach a given error is read from.
+struct measured_point {
+  double N = 0, error = 0, seconds = 0;
+};
+
+/// Where a log-log line through the measured points reaches `target` (the first pair of neighbours
+/// that brackets it, interpolated in log N and log seconds): none when no pair does.
+std::optional<measured_point> reaching(const std::vector<measured_point>& points, double target) {
+  for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+    const measured_point &a = points[k], &b = points[k + 1];
+    if (!(a.error > target && b.error <= target && a.error > 0 && b.error > 0)) continue;
+    const double f = std::log(a.error / target) / std::log(a.error / b.error);  // 0 at a, 1 at b
+    const auto between = [f](double x, double y) { return std::exp(std::log(x) + f * (std::log(y) - std::log(x))); };
+    return measured_point{between(a.N, b.N), target, between(a.seconds, b.seconds)};
+  }
+  return std::nullopt;
+}
 
 /// The exact solution at t_j = j/N (ω = 2π, y₀ = (mω, 0) exactly): q(t_j) = sin(2π t_j) and
 /// p(t_j)/(mω) = cos(2π t_j), enclosed (p holds p/(mω)). Empty in double.
@@ -252,6 +271,7 @@ section_result run_work_precision(const work_precision_settings& s) {
   // precision's figures are in the tables and work_precision.csv (above double they match double's
   // to its round-off, and a panel each would show the same curves again).
   const std::string shown_form = s.forms.front() == "matrix" && s.forms.size() > 1 ? s.forms[1] : s.forms.front();
+  std::map<scheme_id, std::vector<measured_point>> general_steps;  // the first precision's step form, for the cost to an error
   std::vector<panel> by_time, by_n;
   for (std::size_t pk = 0; pk < s.precisions.size(); ++pk) {
     const precision& prec = s.precisions[pk];
@@ -297,6 +317,8 @@ section_result run_work_precision(const work_precision_settings& s) {
             measured_run m = measure<Real>(scheme, form, prec, N, s.periods, s.timing, s.benchmark, exact_by_N[N], enclosed_by_N[N]);
             progress_step("work_precision", fmt::format("{} ({}) {} N = {}", traits_of(scheme).name, form, prec.name(), N));
             if (timed) by_seconds.add(m.seconds, m.error);
+            const auto e = m.error.plottable(), t = m.seconds.plottable();
+            if (timed && first && form != "matrix" && e && t) general_steps[scheme].push_back({static_cast<double>(N), *e, *t});
             by_mesh.add(figure::integer(N), m.error);
             rows.add(std::move(m.row));
             if (timed) times.add(std::move(m.timing_row));
@@ -333,6 +355,31 @@ section_result run_work_precision(const work_precision_settings& s) {
   }
   out.add(std::move(rows));
   if (timed) out.add(std::move(times));
+  if (timed && !general_steps.empty()) {
+    // The measured ratios: to reach one error, the steps and the seconds each general step needs,
+    // against Simpson's (log-log interpolation between the two measured N that bracket it).
+    const double target = 1e-8;
+    const auto simpson = general_steps.count(scheme_id::simpson) ? reaching(general_steps[scheme_id::simpson], target) : std::nullopt;
+    table cost{"cost_to_error", fmt::format("The cost of an error of {:.0e}", target),
+               fmt::format("In {}, each scheme by its general step: the steps per period and the run time at which its max error of q and "
+                           "p/(mω) reaches {:.0e}, interpolated log-log between the two measured N that bracket it (none: not reached "
+                           "within the measured N), and both against Simpson's.",
+                           s.precisions.front().name(), target),
+               {{"scheme", "scheme"}, column::fixed_point("N_at_error", "N", 1), {"seconds_at_error", "time", "s"},
+                column::fixed_point("N_over_simpson", "N / Simpson's", 2), column::fixed_point("seconds_over_simpson", "time / Simpson's", 2)}};
+    cost.timing = true;
+    for (const scheme_id scheme : s.schemes) {
+      if (!general_steps.count(scheme)) continue;
+      const std::optional<measured_point> at = reaching(general_steps[scheme], target);
+      if (!at) {
+        cost.add({figure::text(std::string(traits_of(scheme).name)), figure::text("not reached"), figure{}, figure{}, figure{}});
+        continue;
+      }
+      cost.add({figure::text(std::string(traits_of(scheme).name)), figure::of(at->N), figure::of(at->seconds),
+                simpson ? figure::of(at->N / simpson->N) : figure{}, simpson ? figure::of(at->seconds / simpson->seconds) : figure{}});
+    }
+    out.add(std::move(cost));
+  }
   if (timed) {
     plot_description time_plot{"work_precision_time",
                                fmt::format("Maximum error of q and p/(mω) against run time (log-log; the median of the timed runs, their "
