@@ -4,7 +4,7 @@
 // and on one where a weaker check would pass.
 
 #include "shape_fixture.hpp"
-#include "shape_support.hpp"
+#include <simpson/verify/readable_math.hpp>
 
 #include <simpson/verify/prose_words.hpp>
 #include <simpson/verify/tex_document.hpp>
@@ -45,10 +45,10 @@ TEST(ProseWords, AreWhatAReaderReadsBetweenTheFormulas) {
 // superscripts, square roots as √, products by juxtaposition; a word that only starts with a Greek
 // name, and TeX between $...$, are left as they are.
 TEST(ReadableMath, TheCanonicalTextsOperatorsAsAReaderWritesThem) {
-  EXPECT_EQ(detail::readable_math("h^2*omega^2-8"), "h²ω²-8");
-  EXPECT_EQ(detail::readable_math("h*omega in (0, 2 sqrt(2)) and (2 sqrt(3), 2 sqrt(6))"), "hω in (0, 2√2) and (2√3, 2√6)");
-  EXPECT_EQ(detail::readable_math("12*3 between the betas"), "12·3 between the betas");
-  EXPECT_EQ(detail::readable_math("at $\\omega^{2} h$ the omega"), "at $\\omega^{2} h$ the ω");
+  EXPECT_EQ(readable_math("h^2*omega^2-8"), "h²ω²-8");
+  EXPECT_EQ(readable_math("h*omega in (0, 2 sqrt(2)) and (2 sqrt(3), 2 sqrt(6))"), "hω in (0, 2√2) and (2√3, 2√6)");
+  EXPECT_EQ(readable_math("12*3 between the betas"), "12·3 between the betas");
+  EXPECT_EQ(readable_math("at $\\omega^{2} h$ the omega"), "at $\\omega^{2} h$ the ω");
 }
 
 const std::string prose_declarations = R"(

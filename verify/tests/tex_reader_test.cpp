@@ -104,6 +104,10 @@ TEST(TexReader, AFunctionsArgumentIsTheProductAfterIt) {
   EXPECT_TRUE(equal_values(reading_of("\\sin^2 \\omega t"), GiNaC::pow(GiNaC::sin(omega * t), 2)));
   EXPECT_TRUE(equal_values(reading_of("\\exp \\frac{x}{2} h"), GiNaC::exp(x * h / 2)));
   EXPECT_NE(why_refused("\\sin x (1 + h)").find("whether it belongs to the argument is not written"), std::string::npos) << why_refused("\\sin x (1 + h)");
+  // sin x/2: sin(x/2) to some, (sin x)/2 to others; written out, either reads.
+  EXPECT_NE(why_refused("\\sin x / 2").find("whether it divides the argument is not written"), std::string::npos) << why_refused("\\sin x / 2");
+  EXPECT_TRUE(equal_values(reading_of("\\sin(x) / 2"), GiNaC::sin(x) / 2));
+  EXPECT_TRUE(equal_values(reading_of("\\frac{\\sin x}{2}"), GiNaC::sin(x) / 2));
 }
 
 TEST(TexReader, DerivativesAsPeopleWriteThem) {

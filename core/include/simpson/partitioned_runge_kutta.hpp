@@ -71,6 +71,25 @@ std::vector<Real> solve_linear(std::vector<std::vector<Real>> M, std::vector<Rea
 }
 
 namespace detail {
+/// The step from its stages Q_k (P_i = p_j − h Σ_k â_ik m ω² Q_k; then the weights' sums), shared by
+/// the step that solves for the stages and the one that has them factored.
+template <class Real, class Stages>
+phase_point<Real> step_from_stages(const oscillator_parameters<Real>& par, const butcher_tableau<Real>& for_q, const butcher_tableau<Real>& for_p,
+                                   const phase_point<Real>& y, const Stages& Q) {
+  const std::size_t s = for_q.stages();
+  const Real& m = par.m();
+  const Real& h = par.h();
+  const Real stiffness = m * par.omega() * par.omega();
+  phase_point<Real> next = y;
+  for (std::size_t i = 0; i < s; ++i) {
+    Real P_i = y.p;
+    for (std::size_t k = 0; k < s; ++k) P_i -= h * for_p.a[i][k] * stiffness * Q[k];
+    next.q += h * for_q.b[i] * P_i / m;
+    next.p -= h * for_p.b[i] * stiffness * Q[i];
+  }
+  return next;
+}
+
 /// The step below with its system in the given storage (at least s × s).
 template <class Real, class Matrix, class Vector>
 phase_point<Real> prk_linear_step(const oscillator_parameters<Real>& par, const butcher_tableau<Real>& for_q,
@@ -79,7 +98,6 @@ phase_point<Real> prk_linear_step(const oscillator_parameters<Real>& par, const 
   const Real& m = par.m();
   const Real& h = par.h();
   const Real x = par.omega2_h2();
-  const Real stiffness = m * par.omega() * par.omega();
   for (std::size_t i = 0; i < s; ++i) {
     Real row_sum(0);
     for (std::size_t k = 0; k < s; ++k) {
@@ -92,14 +110,7 @@ phase_point<Real> prk_linear_step(const oscillator_parameters<Real>& par, const 
     rhs[i] += h / m * y.p * row_sum;
   }
   eliminate<Real>(M, rhs, Q, s);
-  phase_point<Real> next = y;
-  for (std::size_t i = 0; i < s; ++i) {
-    Real P_i = y.p;
-    for (std::size_t k = 0; k < s; ++k) P_i -= h * for_p.a[i][k] * stiffness * Q[k];
-    next.q += h * for_q.b[i] * P_i / m;
-    next.p -= h * for_p.b[i] * stiffness * Q[i];
-  }
-  return next;
+  return step_from_stages(par, for_q, for_p, y, Q);
 }
 }  // namespace detail
 
@@ -165,19 +176,9 @@ phase_point<Real> factored_prk_step(const oscillator_parameters<Real>& par, cons
                                     const factored_linear_stages<Real>& f, const phase_point<Real>& y) {
   const std::size_t s = for_q.stages();
   if (s > 4) throw std::invalid_argument("simpson::factored_prk_step: at most 4 stages");
-  const Real& m = par.m();
-  const Real& h = par.h();
-  const Real stiffness = m * par.omega() * par.omega();
   std::array<Real, 4> Q{};  // the stages, once per step (no allocation)
   for (std::size_t k = 0; k < s; ++k) Q[k] = y.q * f.u[k] + y.p * f.v[k];
-  phase_point<Real> next = y;
-  for (std::size_t i = 0; i < s; ++i) {
-    Real P_i = y.p;
-    for (std::size_t k = 0; k < s; ++k) P_i -= h * for_p.a[i][k] * stiffness * Q[k];
-    next.q += h * for_q.b[i] * P_i / m;
-    next.p -= h * for_p.b[i] * stiffness * Q[i];
-  }
-  return next;
+  return detail::step_from_stages(par, for_q, for_p, y, Q);
 }
 
 /// The one-step matrix of the method: its step applied to (1, 0) and (0, 1) (exact for a linear map).

@@ -134,11 +134,8 @@ void settle(claim_result& result, bool disagree, bool holds, const std::string& 
 /// expressions; none when they are equal.
 std::optional<amendment> amendment_between(const std::string& where, const GiNaC::ex& printed, const GiNaC::ex& derived);
 
-/// The canonical text's operators as a reader writes them, outside $…$: Greek names as letters,
-/// powers as superscripts, sqrt(2) as √2, a product by juxtaposition ("h^2*omega^2-8" as "h²ω²-8").
-std::string readable_math(const std::string& text);
-
-/// A finding in words: the words printed, those that should stand (its math readable_math's).
+/// A finding in words: the words printed, those that should stand (its math readable_math's,
+/// readable_math.hpp).
 amendment amendment_in_words(const std::string& where, const std::string& printed, const std::string& should_be);
 
 /// e as a square matrix; throws std::invalid_argument naming `what` when it is not one.

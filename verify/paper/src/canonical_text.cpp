@@ -150,59 +150,45 @@ struct functions_as_symbols : GiNaC::map_function {
   }
 };
 
-}  // namespace
-
-std::string canonical_text(const GiNaC::ex& given) {
+/// The one canonical form, spelled plain or in TeX: a matrix entry by entry; otherwise numerator over
+/// denominator, each a polynomial in the symbols' name order.
+std::string canonical(const GiNaC::ex& given, spelling how) {
   functions_as_symbols rename;
   const GiNaC::ex e = rename(given);
+  const bool tex = how == spelling::tex;
   if (GiNaC::is_a<GiNaC::matrix>(e)) {
     const GiNaC::matrix& m = GiNaC::ex_to<GiNaC::matrix>(e);
-    std::string out = "[";
+    std::string out = tex ? "\\begin{pmatrix}" : "[";
     for (unsigned r = 0; r < m.rows(); ++r) {
-      out += r ? ", [" : "[";
-      for (unsigned c = 0; c < m.cols(); ++c) out += (c ? ", " : "") + canonical_text(m(r, c));
-      out += "]";
+      out += tex ? (r ? " \\\\ " : "") : (r ? ", [" : "[");
+      for (unsigned c = 0; c < m.cols(); ++c) out += (c ? (tex ? " & " : ", ") : "") + canonical(m(r, c), how);
+      out += tex ? "" : "]";
     }
-    return out + "]";
+    return out + (tex ? "\\end{pmatrix}" : "]");
   }
   const std::vector<GiNaC::symbol> symbols = symbols_by_name(e);
   const GiNaC::ex n = GiNaC::normal(e);
   GiNaC::ex num = GiNaC::numer(n), den = GiNaC::denom(n);
-  if (den.is_equal(GiNaC::ex(1))) return polynomial_text(num, symbols);
+  // A TeX monomial starts with the space that separates it from its coefficient: none at the front.
+  const auto spelled = [&](const GiNaC::ex& p) {
+    const std::string t = polynomial_text(p, symbols, how);
+    return !t.empty() && t.front() == ' ' ? t.substr(1) : t;
+  };
+  if (den.is_equal(GiNaC::ex(1))) return spelled(num);
   // GiNaC makes the denominator's leading coefficient positive in its own order of the symbols, which
   // depends on the order they were made in: a quotient may come out as (-a)/(-b) in one run and a/b
-  // in another. The text's denominator starts with a positive term, in the text's order.
-  std::string denominator = polynomial_text(den, symbols);
-  if (!denominator.empty() && denominator.front() == '-') {
+  // in another. The denominator starts with a positive term, in the canonical order.
+  if (polynomial_text(den, symbols).front() == '-') {
     num = -num;
     den = -den;
-    denominator = polynomial_text(den, symbols);
   }
-  return "(" + polynomial_text(num, symbols) + ")/(" + denominator + ")";
+  return tex ? "\\frac{" + spelled(num) + "}{" + spelled(den) + "}" : "(" + spelled(num) + ")/(" + spelled(den) + ")";
 }
 
-std::string canonical_tex(const GiNaC::ex& given) {
-  functions_as_symbols rename;
-  const GiNaC::ex e = rename(given);
-  if (GiNaC::is_a<GiNaC::matrix>(e)) {
-    const GiNaC::matrix& m = GiNaC::ex_to<GiNaC::matrix>(e);
-    std::string out = "\\begin{pmatrix}";
-    for (unsigned r = 0; r < m.rows(); ++r) {
-      for (unsigned c = 0; c < m.cols(); ++c) out += (c ? " & " : "") + canonical_tex(m(r, c));
-      out += r + 1 < m.rows() ? " \\\\ " : "";
-    }
-    return out + "\\end{pmatrix}";
-  }
-  const std::vector<GiNaC::symbol> symbols = symbols_by_name(e);
-  const GiNaC::ex n = GiNaC::normal(e);
-  GiNaC::ex num = GiNaC::numer(n), den = GiNaC::denom(n);
-  const auto trimmed = [](std::string t) { return t.empty() || t.front() != ' ' ? t : t.substr(1); };
-  if (den.is_equal(GiNaC::ex(1))) return trimmed(polynomial_text(num, symbols, spelling::tex));
-  if (polynomial_text(den, symbols).front() == '-') {  // as canonical_text: the denominator starts with a positive term
-    num = -num;
-    den = -den;
-  }
-  return "\\frac{" + trimmed(polynomial_text(num, symbols, spelling::tex)) + "}{" + trimmed(polynomial_text(den, symbols, spelling::tex)) + "}";
-}
+}  // namespace
+
+std::string canonical_text(const GiNaC::ex& e) { return canonical(e, spelling::plain); }
+
+std::string canonical_tex(const GiNaC::ex& e) { return canonical(e, spelling::tex); }
 
 }  // namespace simpson::verify

@@ -207,8 +207,8 @@ GiNaC::ex reader::op(cursor& c, const std::vector<std::string>& closers) {
   if (c.done()) refuse(name + " of nothing", n);
   // Its argument: a parenthesised group alone (\sin(x) y is sin(x) y); else the product written
   // after it, as mathematics reads it (ISO 80000-2: \sin \omega t is sin(ωt)), up to +, -, a
-  // relation, an explicit operation (\cdot, \times, /) or the next operator (\sin x \cos y). A
-  // parenthesis inside that product leaves open whether it belongs to the argument: refused.
+  // relation, an explicit product (\cdot, \times) or the next operator (\sin x \cos y). A
+  // parenthesis inside that product, or a '/' after it, leaves open what the argument is: refused.
   const auto opens = [](const tex_node& node) {
     const tex_node& core = node.kind == tex_node_kind::scripts ? node.children.front() : node;
     return core.kind == tex_node_kind::delimited || (core.kind == tex_node_kind::atom && core.atom_class == tex_class::open);
@@ -219,7 +219,11 @@ GiNaC::ex reader::op(cursor& c, const std::vector<std::string>& closers) {
     const tex_node& next = c.node();
     const tex_node& core = next.kind == tex_node_kind::scripts ? unwrapped(next.children.front()) : next;
     if (core.kind == tex_node_kind::op) break;
-    if (core.kind == tex_node_kind::atom && (core.atom_class == tex_class::bin || core.text == "/" || core.text == "*")) break;
+    if (core.kind == tex_node_kind::atom && core.text == "/") {  // sin x/2: sin(x/2) to some, (sin x)/2 to others
+      refuse("a '/' after " + name + "'s unparenthesised argument: whether it divides the argument is not written", next,
+             name + "(x/2) or \\frac{" + name + " x}{2}");
+    }
+    if (core.kind == tex_node_kind::atom && (core.atom_class == tex_class::bin || core.text == "*")) break;
     if (opens(next)) {
       refuse("a parenthesis after " + name + "'s unparenthesised argument: whether it belongs to the argument is not written", next,
              name + "(x (1 + y)) or (" + name + " x)(1 + y)");

@@ -3,6 +3,7 @@
 
 #include "stability_parts.hpp"
 
+#include <simpson/verify/readable_math.hpp>
 #include <simpson/verify/scheme_style.hpp>
 
 #include <simpson/scheme.hpp>
@@ -31,11 +32,7 @@ std::vector<std::pair<double, std::string>> band_end_tics(const stability_report
     const double at = std::sqrt(root.low.convert_to<double>());
     if (at >= last) continue;
     ends.push_back(at);
-    std::string label = omega_h_text(root);  // "2 sqrt(2)" as "2√2", narrow enough for neighbouring tics
-    if (const auto open = label.find(" sqrt("); open != std::string::npos && label.back() == ')') {
-      label = label.substr(0, open) + "√" + label.substr(open + 6, label.size() - open - 7);
-    }
-    tics.emplace_back(at, label);
+    tics.emplace_back(at, readable_math(omega_h_text(root)));  // "2 sqrt(2)" as "2√2", narrow enough for neighbouring tics
   }
   for (int k = 0; k <= static_cast<int>(last); ++k) {
     if (std::none_of(ends.begin(), ends.end(), [&](double at) { return std::abs(at - k) < 0.6; })) tics.emplace_back(k, std::to_string(k));

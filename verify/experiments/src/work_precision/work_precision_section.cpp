@@ -271,7 +271,7 @@ section_result run_work_precision(const work_precision_settings& s) {
   // precision's figures are in the tables and work_precision.csv (above double they match double's
   // to its round-off, and a panel each would show the same curves again).
   const std::string shown_form = s.forms.front() == "matrix" && s.forms.size() > 1 ? s.forms[1] : s.forms.front();
-  std::map<scheme_id, std::vector<measured_point>> general_steps;  // the first precision's step form, for the cost to an error
+  std::map<scheme_id, std::vector<measured_point>> general_steps;  // double's step form (when it is the first precision), for the cost to an error
   std::vector<panel> by_time, by_n;
   for (std::size_t pk = 0; pk < s.precisions.size(); ++pk) {
     const precision& prec = s.precisions[pk];
@@ -318,7 +318,10 @@ section_result run_work_precision(const work_precision_settings& s) {
             progress_step("work_precision", fmt::format("{} ({}) {} N = {}", traits_of(scheme).name, form, prec.name(), N));
             if (timed) by_seconds.add(m.seconds, m.error);
             const auto e = m.error.plottable(), t = m.seconds.plottable();
-            if (timed && first && form != "matrix" && e && t) general_steps[scheme].push_back({static_cast<double>(N), *e, *t});
+            // In double only: its errors are doubles, so the interpolation passes no enclosure through double.
+            if (timed && first && prec.kind() == precision_kind::float64 && form != "matrix" && e && t) {
+              general_steps[scheme].push_back({static_cast<double>(N), *e, *t});
+            }
             by_mesh.add(figure::integer(N), m.error);
             rows.add(std::move(m.row));
             if (timed) times.add(std::move(m.timing_row));

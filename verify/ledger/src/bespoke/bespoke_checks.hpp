@@ -8,13 +8,22 @@
 
 #include "check_registry.hpp"
 
+#include <simpson/verify/printed_table1.hpp>
 #include <simpson/verify/table1_conventions.hpp>
+
+#include <optional>
 
 namespace simpson::verify::detail {
 
-/// The solution the run's text states for Table 1 (read_stated_solution), where its convention
-/// search starts; the search's defaults (q = sin ωt, T = 1) when the text states none, its own
-/// claim (experiment-conventions) then text-changed. unformulated.cpp.
+/// The solution the run's text states for Table 1 (read_stated_solution); none when it states none
+/// (its own claim, experiment-conventions, is then text-changed). unformulated.cpp.
+std::optional<stated_solution> stated_table1_words(const run_context& ctx);
+
+/// Where the convention search starts: the stated solution, or the search's defaults (q = sin ωt,
+/// T = 1) when there is none.
+table1_stated search_start(const std::optional<stated_solution>& s);
+
+/// search_start(stated_table1_words(ctx)), for a check that needs only the start.
 table1_stated stated_table1_solution(const run_context& ctx);
 
 // Each file's checks, added to the registry (ledger.cpp calls each once).

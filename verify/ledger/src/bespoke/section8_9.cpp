@@ -3,7 +3,7 @@
 #include "claim_support.hpp"
 #include "bespoke_checks.hpp"
 #include "printed_check_support.hpp"
-#include "shape_support.hpp"
+#include <simpson/verify/readable_math.hpp>
 
 #include <simpson/verify/enclosure_undecided.hpp>
 #include <simpson/verify/paper_reading.hpp>
@@ -255,12 +255,14 @@ claim_result check_table_values(const run_context& ctx) {
   const std::array<std::string, 8>& orders = printed.orders;
   // The values are decided by the search below (printed digits), not by a ratio tolerance.
   bool orders_match = false, conservation = false;
+  // The solution the text states, read once: where the search starts, and its words below.
+  const std::optional<stated_solution> stated = stated_table1_words(ctx);
   json evidence;
-  evidence["numeric"] = table_evidence(orders_match, conservation, printed, stated_table1_solution(ctx));
+  evidence["numeric"] = table_evidence(orders_match, conservation, printed, search_start(stated));
   evidence["numeric"]["also_tried"] = table_also_tried(published);
   // The convention search: every convention Section 8 states or leaves implicit, enumerated and fitted.
   const std::vector<printed_entry> entries = table1_printed(published, orders, &digits);
-  const convention_search_result search = search_table1(entries, stated_table1_solution(ctx));
+  const convention_search_result search = search_table1(entries, search_start(stated));
   json tried = json::array();
   for (std::size_t k = 0; k < search.tried.size() && k < 12; ++k) {
     tried.push_back({{"conventions", describe(search.tried[k])},
@@ -329,12 +331,7 @@ claim_result check_table_values(const run_context& ctx) {
     explanation = table1_explanation(search, entries);
     explanation[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(explanation[0])));
   }
-  std::string stated_q;
-  try {
-    stated_q = "q(t) = " + readable_math(read_stated_solution(paper_of(ctx).source).q_text);
-  } catch (const text_changed&) {
-    stated_q = "the search's default q(t) = sin(ωt) (the text states none)";
-  }
+  const std::string stated_q = stated ? "q(t) = " + readable_math(stated->q_text) : "the search's default q(t) = sin(ωt) (the text states none)";
   const std::string stated_count = "Not under the stated conventions, " + stated_q + " with m = 1 (" + std::to_string(search.stated.reproduced) +
                                    " of " + std::to_string(entries.size()) + " entries).";
   if (simplest != nullptr && simplest->reproduced == entries.size()) {

@@ -3,7 +3,7 @@
 
 #include "claim_support.hpp"
 #include "bespoke_checks.hpp"
-#include "shape_support.hpp"
+#include <simpson/verify/readable_math.hpp>
 
 #include <simpson/verify/paper_reading.hpp>
 #include <simpson/verify/printed_table1.hpp>
@@ -137,7 +137,7 @@ claim_result check_experiment_conventions(const run_context& ctx) {
   // as printed? The convention search (shared with table-values, run once per table) decides.
   const printed_table1 printed = read_table1(paper_of(ctx).source);
   const convention_search_result search =
-      search_table1(table1_printed(printed.values, printed.orders, &printed.digits), stated_table1_solution(ctx));
+      search_table1(table1_printed(printed.values, printed.orders, &printed.digits), search_start(stated));
   evidence["table1"] = {{"stated_reproduce", std::to_string(search.stated.reproduced) + " of " + std::to_string(search.stated.entries.size()) +
                                                  " entries of Table 1 within their printed digits"},
                         {"reproducing_convention", search.reproducing() != nullptr ? describe(*search.reproducing()) : "none found"}};
@@ -168,14 +168,19 @@ claim_result check_experiment_conventions(const run_context& ctx) {
 
 }  // namespace
 
-table1_stated stated_table1_solution(const run_context& ctx) {
+std::optional<stated_solution> stated_table1_words(const run_context& ctx) {
   try {
-    const stated_solution s = read_stated_solution(paper_of(ctx).source);
-    return {s.amplitude, s.phase, s.period};
+    return read_stated_solution(paper_of(ctx).source);
   } catch (const text_changed&) {
-    return {};
+    return std::nullopt;
   }
 }
+
+table1_stated search_start(const std::optional<stated_solution>& s) {
+  return s ? table1_stated{s->amplitude, s->phase, s->period} : table1_stated{};
+}
+
+table1_stated stated_table1_solution(const run_context& ctx) { return search_start(stated_table1_words(ctx)); }
 
 void add_abstract_checks(check_registry& checks) {
   checks.add("abstract-explicit", check_abstract_explicit);
