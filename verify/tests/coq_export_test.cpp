@@ -1,8 +1,8 @@
-// The Coq exporter's names (verify/ledger/src/coq_export.hpp): a lemma quantifies over one variable
+// The Coq exporter's names (verify/prove/include/simpson/prove/coq_export.hpp): a lemma quantifies over one variable
 // per symbol of the statement. q_{j+1} and q_{j-1} once both printed as q_j_1, so the certificates of
 // the three-term schemes proved the case q_{j-1} = q_{j+1} only, and coqc accepted it.
 
-#include "coq_export.hpp"
+#include <simpson/prove/coq_export.hpp>
 
 #include <gtest/gtest.h>
 

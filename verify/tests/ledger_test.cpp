@@ -1,4 +1,5 @@
 #include <simpson/verify/ledger.hpp>
+#include "embedded_reading.hpp"
 
 #include <gtest/gtest.h>
 
@@ -46,7 +47,7 @@ class ClaimVerdict : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(ClaimVerdict, IsAsExpected) {
   const claim& c = paper_book().find(GetParam());
-  const run_context ctx{{precision::parse("double"), precision::parse("mpfr:40"), precision::parse("rational")}, 7, 3};
+  const run_context ctx{{precision::parse("double"), precision::parse("mpfr:40"), precision::parse("rational")}, 7, 3, &embedded_reading()};
   const claim_result r = c.check(ctx);
   EXPECT_EQ(to_string(r.outcome), to_string(c.expected)) << r.evidence.dump(2);
   EXPECT_FALSE(r.evidence.empty());

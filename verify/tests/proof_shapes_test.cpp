@@ -3,9 +3,9 @@
 // Each shape is run on a small document where it holds and on one where a weaker check would
 // pass a wrong statement; a bad record is named with its line and argument.
 
-#include "kernel_zero.hpp"
-#include "printed_check_support.hpp"
-#include "proof_shapes.hpp"
+#include <simpson/prove/kernel_zero.hpp>
+#include <simpson/prove/printed_check_support.hpp>
+#include <simpson/shapes/proof_shapes.hpp>
 
 #include <simpson/verify/claims_file.hpp>
 #include <simpson/verify/consequences.hpp>

@@ -3,6 +3,7 @@
 // judged) or flags it (text-changed: the sentence is gone, or its words no longer parse).
 
 #include <simpson/verify/ledger.hpp>
+#include "embedded_reading.hpp"
 #include <simpson/verify/paper_reading.hpp>
 #include <simpson/verify/printed_checks.hpp>
 #include <simpson/verify/printed_table1.hpp>
@@ -177,7 +178,7 @@ INSTANTIATE_TEST_SUITE_P(
 // the binomial factors are negative and Delta < 0, proved). Printed "positive", or with a factor
 // (8 - omega^2 h^2), the substance is false too: still an erratum, no longer a matter of wording.
 TEST(ChangedSentence, TheDiscriminantsFactorsAreWordingAsPrintedAndSubstanceWhenChanged) {
-  const run_context printed{{precision::parse("double")}, 20230830, 2, nullptr};
+  const run_context printed{{precision::parse("double")}, 20230830, 2, &embedded_reading()};
   const claim_result as_printed = check_claim(paper_book().find("discriminant-negative"), printed);
   EXPECT_EQ(as_printed.outcome, verdict::erratum);
   EXPECT_EQ(as_printed.note.rfind("Wording:", 0), 0u) << as_printed.note;
@@ -221,7 +222,7 @@ TEST(ChangedSentence, AWordDecidedVerdictSaysItIsLexical) {
       {"nonlinear-internal-node", {"is not possible in that case", "is possible in that case"}},
       {"maupertuis-naming", {"the Maupertuis's stationary-action principle", "the Hamilton's stationary-action principle"}}};
   for (const auto& [id, change] : claims) {
-    const claim_result printed = check_claim(paper_book().find(id), run_context{{precision::parse("double")}, 20230830, 2, nullptr});
+    const claim_result printed = check_claim(paper_book().find(id), run_context{{precision::parse("double")}, 20230830, 2, &embedded_reading()});
     EXPECT_EQ(printed.note.rfind("Lexical: decided by the word", 0), 0u) << id << ": " << printed.note;
     EXPECT_TRUE(printed.evidence.contains("lexical")) << id;
     const paper_reading reading = altered_reading(change.first, change.second);
@@ -235,7 +236,7 @@ TEST(ChangedSentence, AWordDecidedVerdictSaysItIsLexical) {
 // midpoint (q_l + q_r)/2 for h > 0); phi3-explicit names Phi3's one denominator once (m h^2 omega^2 +
 // 24 m is the same one) and no longer says an equation is solved at each step.
 TEST(ChangedSentence, TheWordingFindingsSayWhatHolds) {
-  const run_context ctx{{precision::parse("double")}, 20230830, 2, nullptr};
+  const run_context ctx{{precision::parse("double")}, 20230830, 2, &embedded_reading()};
   const claim_result affine = check_claim(paper_book().find("qm-not-affine"), ctx);
   EXPECT_EQ(affine.outcome, verdict::erratum);
   EXPECT_NE(affine.correction.find("for h > 0 it is not its value at h = 0, (q_l+q_r)/(2), but (-8)/(h^2*omega^2-8) times it"), std::string::npos)
@@ -256,7 +257,7 @@ TEST(ChangedSentence, TheWordingFindingsSayWhatHolds) {
 // The abstract's "approximate energy": H_d = H + m omega^6 h^4 q^2/(72 (8 - omega^2 h^2)) holds as
 // printed; with H_d's 1/24 printed 1/25 it does not (an erratum, the derived right side its correction).
 TEST(ChangedFormula, TheApproximateEnergyIsTheEnergyPlusAnOrderFourTerm) {
-  const run_context printed_ctx{{precision::parse("double")}, 20230830, 2, nullptr};
+  const run_context printed_ctx{{precision::parse("double")}, 20230830, 2, &embedded_reading()};
   EXPECT_EQ(check_claim(paper_book().find("approximate-energy"), printed_ctx).outcome, verdict::holds);
   EXPECT_EQ(check_claim(paper_book().find("approximate-energy-sign"), printed_ctx).outcome, verdict::holds);
   const paper_reading reading = altered_reading("\\Big(1 - {{\\omega^2 \\, h^2}\\over24} \\Big) \\, q^2", "\\Big(1 - {{\\omega^2 \\, h^2}\\over25} \\Big) \\, q^2");
@@ -272,7 +273,7 @@ TEST(ChangedSentence, ExplicitForNonlinearProblemsIsStillAnErratum) {
   EXPECT_EQ(r.evidence.at("stated").at("qualified"), false);
   EXPECT_EQ(r.note.find("Wording"), std::string::npos) << r.note;
   // As printed (explicit for the harmonic oscillator, read in context): Section 6's wording finding.
-  const claim_result printed = check_claim(paper_book().find("abstract-explicit"), run_context{{precision::parse("double")}, 20230830, 2, nullptr});
+  const claim_result printed = check_claim(paper_book().find("abstract-explicit"), run_context{{precision::parse("double")}, 20230830, 2, &embedded_reading()});
   EXPECT_EQ(printed.outcome, verdict::erratum);
   EXPECT_NE(printed.note.find("Wording, as in Section 6"), std::string::npos) << printed.note;
   EXPECT_EQ(paper_book().find("abstract-explicit").follows_from, "phi3-explicit");
@@ -289,7 +290,7 @@ TEST(ChangedSentence, ExplicitForNonlinearProblemsIsStillAnErratum) {
 // without a real root) held, and called Newmark's implicit midpoint explicit too: the shape's own
 // test (ShapesOnADocument.ExplicitMap) shows the criterion separates the two.
 TEST(ChangedSentence, ExplicitIsJudgedAsTheFieldDefinesIt) {
-  const claim_result printed = check_claim(paper_book().find("phi3-explicit"), run_context{{precision::parse("double")}, 20230830, 2, nullptr});
+  const claim_result printed = check_claim(paper_book().find("phi3-explicit"), run_context{{precision::parse("double")}, 20230830, 2, &embedded_reading()});
   EXPECT_EQ(printed.outcome, verdict::erratum);
   EXPECT_EQ(printed.note.rfind("Wording:", 0), 0u) << printed.note;
   const GiNaC::ex w = paper_symbols()["omega"], h = paper_symbols()["h"];
@@ -309,7 +310,7 @@ TEST(ChangedTable, TableOneIsJudgedAsPrinted) {
 // reproduce Table 1 and another exact solution does (an erratum, naming the simplest); with a table no convention
 // reproduces, the stated pair is not supported either (fails). The same sentence in both copies.
 TEST(ChangedTable, TheStatedConventionsAreJudgedByWhetherTheyReproduceTheTable) {
-  const claim_result printed = check_claim(paper_book().find("experiment-conventions"), run_context{{precision::parse("double")}, 20230830, 2, nullptr});
+  const claim_result printed = check_claim(paper_book().find("experiment-conventions"), run_context{{precision::parse("double")}, 20230830, 2, &embedded_reading()});
   EXPECT_EQ(printed.outcome, verdict::erratum);
   EXPECT_NE(printed.correction.find("released from rest at q₀ = π/2, p₀ = 0, m = 1"), std::string::npos) << printed.correction;
   const paper_reading reading = altered_reading("$ 4.11  \\,\\, 10^{-4} $", "$ 4.11  \\,\\, 10^{-3} $");
@@ -411,7 +412,7 @@ TEST(ChangedTable, AnEntryIsJudgedToTheDigitsItIsPrintedWith) {
 // newmark_map: a copy with Φ's (1,2) entry printed −mω²h/2 is not Newmark's β = 1/4, γ = 1/2 map
 // (fails), while our core still is (which the claim used to compare alone).
 TEST(ChangedFormula, NewmarksIdentificationJudgesThePrintedMatrix) {
-  const claim_result printed = check_claim(paper_book().find("newmark-identification"), run_context{{precision::parse("double")}, 20230830, 2, nullptr});
+  const claim_result printed = check_claim(paper_book().find("newmark-identification"), run_context{{precision::parse("double")}, 20230830, 2, &embedded_reading()});
   EXPECT_EQ(printed.outcome, verdict::holds) << printed.note;
   const paper_reading reading = altered_reading("& - m \\, \\omega^2 \\, h \\\\", "& - m \\, \\omega^2 \\, {h \\over 2} \\\\");
   const claim_result r = check_claim(paper_book().find("newmark-identification"), run_context{{precision::parse("double")}, 20230830, 2, &reading});
@@ -427,7 +428,7 @@ TEST(ChangedFormula, TheContractionConstantFollowsThePrintedInternalEquation) {
   const claim_result r = check_claim(paper_book().find("nonlinear-internal-node"), ctx);
   EXPECT_EQ(r.evidence.at("exact").at("pendulum_contraction_constant"), "(h^2*omega^2)/(4)");
   EXPECT_EQ(r.evidence.at("exact").at("same_bound"), false);
-  const claim_result printed = check_claim(paper_book().find("nonlinear-internal-node"), run_context{{precision::parse("double")}, 20230830, 2, nullptr});
+  const claim_result printed = check_claim(paper_book().find("nonlinear-internal-node"), run_context{{precision::parse("double")}, 20230830, 2, &embedded_reading()});
   EXPECT_EQ(printed.evidence.at("exact").at("same_bound"), true);
 }
 

@@ -2,9 +2,9 @@
 // series (proof_shapes.hpp), each run on the shapes' test document (shape_fixture.hpp) where it holds
 // and where a weaker check would pass a wrong statement; consequences traced through them.
 
-#include "kernel_zero.hpp"
-#include "printed_check_support.hpp"
-#include "proof_shapes.hpp"
+#include <simpson/prove/kernel_zero.hpp>
+#include <simpson/prove/printed_check_support.hpp>
+#include <simpson/shapes/proof_shapes.hpp>
 
 #include <simpson/verify/claims_file.hpp>
 #include <simpson/verify/consequences.hpp>

@@ -79,8 +79,10 @@ run_record run(const scene& s, std::shared_ptr<const claim_book> book, const pap
   r.validation = s.overrides.value("validate", false) || !book->guards;
   r.of_the_paper = book->checked_document() == nullptr;
   r.paper_origin = paper.origin;
+  run_memo memo;  // what the run's claims and sections compute once (Table 1's search), gone with the run
   run_context ctx{s.precisions, s.seed, s.samples, &paper};
   ctx.book = book.get();
+  ctx.memo = &memo;
   ctx.enclosure_budget_digits = s.enclosure_budget_digits;
   for (std::size_t k = 0; k < s.claims.size(); ++k) {
     throw_if_interrupted();
@@ -169,6 +171,7 @@ run_record run(const scene& s, std::shared_ptr<const claim_book> book, const pap
       // Table 1 as the run's paper prints it (a changed copy is judged as printed); no printed value
       // when the table can no longer be read (table-values then says text-changed).
       table1_settings settings = *e.table1;
+      settings.memo = &memo;
       try {
         const printed_table1 printed = read_table1(paper.source);
         settings.printed_values = printed.values;

@@ -119,7 +119,7 @@ std::vector<quadrature_rule> family_rules(int s) {
 
 std::string member_name(const galerkin_member& m) { return "s = " + std::to_string(m.degree) + ", " + rule_name(m.rule); }
 
-member_analysis analyse_member(const galerkin_member& member, long budget_degree) {
+member_analysis analyse_member(const galerkin_member& member, long budget_degree, run_memo* memo) {
   const auto start = std::chrono::steady_clock::now();
   member_analysis out;
   out.member = member;
@@ -332,11 +332,12 @@ member_analysis analyse_member(const galerkin_member& member, long budget_degree
   }
   std::vector<std::pair<std::string, one_step_matrix<symbolic>>> by_degree{gauss_legendre_entry(s)};
   // Lobatto IIIA–IIIB with 4 … s + 2 stages (irrational tableaux), exactly through the nodal
-  // quotient ring (partitioned_pair.hpp); 2 and 3 stages are the core's own, above.
-  static std::map<int, one_step_matrix<symbolic>> lobatto_pairs;
+  // quotient ring (partitioned_pair.hpp); 2 and 3 stages are the core's own, above. Each is made
+  // once per run (the run's memo), not once per member.
   for (int k = 4; k <= s + 2; ++k) {
-    if (!lobatto_pairs.count(k)) lobatto_pairs.emplace(k, family_detail::partitioned_pair_map({quadrature_family::lobatto, k}));
-    by_degree.emplace_back("Lobatto IIIA–IIIB, " + std::to_string(k) + " stages", lobatto_pairs.at(k));
+    by_degree.emplace_back("Lobatto IIIA–IIIB, " + std::to_string(k) + " stages",
+                           remembered<one_step_matrix<symbolic>>(memo, "Lobatto IIIA-IIIB map, stages " + std::to_string(k),
+                                                                 [&] { return family_detail::partitioned_pair_map({quadrature_family::lobatto, k}); }));
   }
   for (const auto& [name, known] : by_degree) {
     if (same_map(map, known)) out.equals.push_back(name);

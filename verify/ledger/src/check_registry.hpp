@@ -5,7 +5,7 @@
 // names the check (`check = "derivation-phi3"`), nothing else: the ledger finds every facet through
 // that one name.
 
-#include "printed_check_support.hpp"
+#include "derivation_support.hpp"
 
 #include <simpson/verify/claim.hpp>
 

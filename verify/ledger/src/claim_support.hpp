@@ -5,13 +5,14 @@
 #include <simpson/verify/claim.hpp>
 #include <simpson/verify/exact_proof.hpp>
 #include <simpson/verify/numeric_recheck.hpp>
+#include <simpson/verify/run_memo.hpp>
 
 #include "grid_lemma.hpp"
 
 #include <simpson/one_step_map.hpp>
 
 #include <map>
-#include <mutex>
+#include <tuple>
 #include <string>
 #include <typeinfo>
 #include <utility>
@@ -47,7 +48,7 @@ inline proof prove_zero(const std::string& reduction, const symbolic& difference
 /// GiNaC, holds: each is a polynomial of degree ≤ bound in each variable.
 template <class F>
 proof prove_zero_on_grid(const std::string& reduction, const std::vector<std::string>& variables,
-                         const std::vector<int>& bounds, F&& f) {
+                         const std::vector<int>& bounds, F&& f, run_memo* memo = nullptr) {
   std::size_t points = 0;
   symbolic witness;
   const auto first = first_nonzero_on_grid(bounds, [&](const std::vector<int>& point) {
@@ -74,25 +75,18 @@ proof prove_zero_on_grid(const std::string& reduction, const std::vector<std::st
   p.evidence["grid"] = grid;
   p.evidence["points_evaluated"] = points;
   // The premise depends on the code of `f` alone (our kernel's transcription, never the paper's
-  // text): computed once per process for each proof site, by the lambda's type and its reduction.
-  static std::mutex premise_mutex;
-  static std::map<std::string, std::pair<bool, json>> premises;
-  std::string key = std::string(typeid(F).name()) + '\x1f' + reduction;
+  // text): computed once per run for each proof site (a claim judged again for a consequence or the
+  // paper's earlier text reuses it), by the lambda's type and its reduction.
+  std::string key = std::string("grid premise ") + typeid(F).name() + '\x1f' + reduction;
   for (std::size_t k = 0; k < variables.size(); ++k) key += '\x1f' + variables[k] + ' ' + std::to_string(bounds[k]);
   json premise = "not needed: the difference is not zero at a grid point";
   bool premise_holds = false;
   if (!first.has_value()) {
-    std::unique_lock<std::mutex> lock(premise_mutex);
-    const auto cached = premises.find(key);
-    if (cached != premises.end()) {
-      premise_holds = cached->second.first;
-      premise = cached->second.second;
-    } else {
-      lock.unlock();
-      premise_holds = grid_premise_holds(variables, bounds, f, premise);
-      lock.lock();
-      premises.emplace(key, std::make_pair(premise_holds, premise));
-    }
+    std::tie(premise_holds, premise) = remembered<std::pair<bool, json>>(memo, key, [&] {
+      json computed;
+      const bool holds = grid_premise_holds(variables, bounds, f, computed);
+      return std::make_pair(holds, computed);
+    });
   }
   p.evidence["premise"] = premise;
   p.proved = !first.has_value() && premise_holds;
@@ -135,8 +129,8 @@ proof prove_zero_at_each(const std::string& reduction, const std::string& variab
 
 /// The same bound for every variable.
 template <class F>
-proof prove_zero_on_grid(const std::string& reduction, const std::vector<std::string>& variables, int bound, F&& f) {
-  return prove_zero_on_grid(reduction, variables, std::vector<int>(variables.size(), bound), std::forward<F>(f));
+proof prove_zero_on_grid(const std::string& reduction, const std::vector<std::string>& variables, int bound, F&& f, run_memo* memo = nullptr) {
+  return prove_zero_on_grid(reduction, variables, std::vector<int>(variables.size(), bound), std::forward<F>(f), memo);
 }
 
 /// holds when every method confirms; otherwise fails (errata are built explicitly).

@@ -7,9 +7,9 @@
 #include <simpson/verify/ledger.hpp>
 #include <simpson/verify/tex_math.hpp>
 
-#include "kernel_zero.hpp"
-#include "printed_check_support.hpp"
-#include "shape_support.hpp"
+#include <simpson/prove/kernel_zero.hpp>
+#include "derivation_support.hpp"
+#include <simpson/shapes/shape_support.hpp>
 
 #include <fmt/format.h>
 

@@ -8,7 +8,7 @@
 #include <simpson/verify/claim.hpp>
 
 #include "core_formulas.hpp"
-#include "proof_shapes.hpp"
+#include <simpson/shapes/proof_shapes.hpp>
 
 #include <vector>
 

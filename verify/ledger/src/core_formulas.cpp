@@ -16,7 +16,7 @@
 #include <simpson/simpson_momentum.hpp>
 #include <simpson/three_term_scheme.hpp>
 
-#include "printed_check_support.hpp"
+#include "derivation_support.hpp"
 
 namespace simpson::verify::detail {
 

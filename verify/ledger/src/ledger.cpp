@@ -10,9 +10,10 @@
 #include "check_registry.hpp"
 #include "core_bindings.hpp"
 #include "claim_support.hpp"
-#include "proof_shapes.hpp"
-#include "printed_check_support.hpp"
+#include <simpson/shapes/proof_shapes.hpp>
+#include "derivation_support.hpp"
 #include "bespoke/bespoke_checks.hpp"
+#include "embedded_claims.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -21,6 +22,8 @@
 #include <stdexcept>
 
 namespace simpson::verify {
+
+std::string embedded_claims_text() { return detail::embedded_claims_bytes(); }
 
 namespace detail {
 

@@ -2,7 +2,7 @@
 // series (derivation-phi3), and a printed series split into its terms and its O(h^k) (the series
 // shapes).
 
-#include "printed_check_support.hpp"
+#include "derivation_support.hpp"
 
 
 namespace simpson::verify::detail {
@@ -35,22 +35,6 @@ ex exact_solution_series(const symbolic_derivation& d, const ex& scheme, int ord
 }
 
 }  // namespace
-
-/// The polynomial part of e (its Order terms dropped) and the order k of its O(h^k), 0 when none.
-std::pair<GiNaC::ex, int> split_order(const GiNaC::ex& e, const GiNaC::ex& h) {
-  const ex expanded = GiNaC::expand(e);
-  ex terms = 0;
-  int order = 0;
-  for (std::size_t k = 0; k < (GiNaC::is_a<GiNaC::add>(expanded) ? expanded.nops() : 1); ++k) {
-    const ex term = GiNaC::is_a<GiNaC::add>(expanded) ? expanded.op(k) : expanded;
-    if (GiNaC::is_a<GiNaC::function>(term) && GiNaC::ex_to<GiNaC::function>(term).get_name() == "Order") {
-      order = term.op(0).degree(h);
-    } else {
-      terms += term;
-    }
-  }
-  return {terms, order};
-}
 
 GiNaC::ex normalised_scheme(const symbolic_derivation& d, const GiNaC::ex& normalised_like) {
   const ex derived = d.scheme(d.q_prev, d.q_j, d.q_next);

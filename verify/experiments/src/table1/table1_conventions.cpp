@@ -291,32 +291,30 @@ std::vector<computed_entry> table1_under(const convention_choice& choice, const 
   return entries;
 }
 
-convention_search_result search_table1(const std::vector<printed_entry>& printed, const table1_stated& stated) {
-  // The ledger's table-values and the table1 section search the same table in one run: once.
-  static std::vector<std::pair<std::vector<double>, convention_search_result>> searched;
-  std::vector<double> key{stated.amplitude, stated.phase, stated.period};
-  for (const printed_entry& e : printed) key.push_back(e.round_off ? -e.value : e.value);
-  for (const auto& [values, result] : searched) {
-    if (values == key) return result;
-  }
-  // The stated solution is the text's: its amplitude and phase where the search starts (and what it
-  // calls stated), its period fixed in every run.
-  std::vector<continuous_parameter> continuous = table1_continuous_parameters();
-  for (continuous_parameter& p : continuous) {
-    if (p.name == "amplitude") p.stated = stated.amplitude;
-    if (p.name == "phase") p.stated = stated.phase;
-  }
-  const double period = stated.period;
-  const parametrised_experiment experiment = [period](const convention_choice& choice, const parameter_values& values) {
-    if (period == 1) return table1_under(choice, values);
-    parameter_values with_period = values;
-    with_period["period"] = period;
-    return table1_under(choice, with_period);
-  };
-  convention_search_result result = search_conventions(printed, table1_discrete_conventions(), continuous, experiment, table1_simple_values());
-  result.fixed["period"] = period;
-  searched.emplace_back(key, std::move(result));
-  return searched.back().second;
+convention_search_result search_table1(const std::vector<printed_entry>& printed, const table1_stated& stated, run_memo* memo) {
+  // The ledger's claims and the table1 section search the same table in one run: once per run. The
+  // key is every number the search depends on, exactly (hexadecimal floating point).
+  std::string key = fmt::format("table1 search {:a} {:a} {:a}", stated.amplitude, stated.phase, stated.period);
+  for (const printed_entry& e : printed) key += fmt::format(" {:a}{}", e.value, e.round_off ? "r" : "");
+  return remembered<convention_search_result>(memo, key, [&] {
+    // The stated solution is the text's: its amplitude and phase where the search starts (and what it
+    // calls stated), its period fixed in every run.
+    std::vector<continuous_parameter> continuous = table1_continuous_parameters();
+    for (continuous_parameter& p : continuous) {
+      if (p.name == "amplitude") p.stated = stated.amplitude;
+      if (p.name == "phase") p.stated = stated.phase;
+    }
+    const double period = stated.period;
+    const parametrised_experiment experiment = [period](const convention_choice& choice, const parameter_values& values) {
+      if (period == 1) return table1_under(choice, values);
+      parameter_values with_period = values;
+      with_period["period"] = period;
+      return table1_under(choice, with_period);
+    };
+    convention_search_result result = search_conventions(printed, table1_discrete_conventions(), continuous, experiment, table1_simple_values());
+    result.fixed["period"] = period;
+    return result;
+  });
 }
 
 }  // namespace simpson::verify

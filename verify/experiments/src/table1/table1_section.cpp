@@ -69,9 +69,9 @@ plot_description figure1_plot(double m, long long N) {
 /// The convention search on Table 1 (table1_conventions.hpp): the conventions tried, best first,
 /// and a plot of printed against reproduced values under the stated conventions and the best found.
 void add_convention_search(section_result& out, const printed_table_values& values, const printed_table_orders& orders,
-                           const std::optional<std::array<std::array<int, 3>, 8>>& digits, const table1_stated& stated_solution) {
+                           const std::optional<std::array<std::array<int, 3>, 8>>& digits, const table1_stated& stated_solution, run_memo* memo) {
   const std::vector<printed_entry> printed = table1_printed(values, orders, digits ? &*digits : nullptr);
-  const convention_search_result search = search_table1(printed, stated_solution);
+  const convention_search_result search = search_table1(printed, stated_solution, memo);
   const convention_candidate* found = search.reproducing();
   out.text(fmt::format(
       "### Convention search\n\nEvery convention Section 8 states or leaves implicit is a parameter: the steps (N of h = T/N, N − 1 of "
@@ -306,7 +306,7 @@ section_result run_table1(const table1_settings& s) {
   if (s.m == 1) add_order_expectations(out, add_enclosed_table(out), least_squares, s.meshes);
   out.add(figure1_plot(s.m, s.figure_meshes));
   if (s.printed_values && s.printed_orders) {
-    add_convention_search(out, *s.printed_values, *s.printed_orders, s.printed_digits, s.stated);
+    add_convention_search(out, *s.printed_values, *s.printed_orders, s.printed_digits, s.stated, s.memo);
   } else {
     out.text("### Convention search\n\nTable 1 could not be read from the paper: no printed value to search conventions for "
              "(the claim table-values says where the reading failed).");

@@ -3,7 +3,7 @@
 // symbolic, and certified in Coq member by member.
 
 #include "bespoke_checks.hpp"
-#include "printed_check_support.hpp"
+#include "derivation_support.hpp"
 
 #include "symbolic_derivation.hpp"
 
@@ -21,14 +21,17 @@ constexpr int family_claim_degree = 6;
 /// Our kernel's derivation and GiNaC's (m, ω, h symbolic) of every member up to the claim's
 /// degree: holds when each member with a one-step map has det Φ = 1 and ΦᵀWΦ = W in both, GiNaC's
 /// Φ(1, 1, θ) is ours and obeys the scaling law, and the two kernels agree on which members have a map.
-claim_result check_family_symplectic(const run_context&) {
+claim_result check_family_symplectic(const run_context& ctx) {
+  // The Lobatto pairs every member is compared with, made once: the run's memo, or this check's own.
+  run_memo own;
+  run_memo* memo = ctx.memo != nullptr ? ctx.memo : &own;
   claim_result out;
   json members = json::array();
   bool all = true;
   int derived = 0, without_map = 0;
   for (int s = 1; s <= family_claim_degree; ++s) {
     for (const quadrature_rule& rule : family_rules(s)) {
-      const member_analysis ours = analyse_member({s, rule});
+      const member_analysis ours = analyse_member({s, rule}, 400, memo);
       json row = {{"member", member_name(ours.member)}, {"derived", ours.derived}};
       if (!ours.derived) {
         ++without_map;

@@ -143,7 +143,7 @@ claim_result check_peer_schemes(const run_context& ctx) {
         const one_step_matrix<S> b = simpson_map(par);
         return std::vector<S>{clear * (a.alpha - b.alpha), clear * (a.beta - b.beta), clear * (a.gamma - b.gamma),
                               clear * (a.delta - b.delta)};
-      });
+      }, ctx.memo);
 
   // Numeric: the Lobatto stage algorithm against Φ₃ y at random (m, ω, h, p, q). Both sum terms of
   // size (|q| + h|p|/m)(1 + x/|1 − x/8|) (the stage system is singular at x = ω²h² = 8, where Φ₃'s

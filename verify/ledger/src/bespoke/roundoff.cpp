@@ -66,7 +66,7 @@ claim_result check_table_roundoff(const run_context& ctx) {
   // search (table-values), when it keeps the stated discrete conventions; else the stated y₀ = (mω, 0).
   // Its start in double, m exactly, and a box 9/8 of its amplitudes (in eighths, rounded up).
   const std::vector<printed_entry> entries = table1_printed(values, printed.orders, &digits);
-  const convention_search_result search = search_table1(entries, stated_table1_solution(ctx));
+  const convention_search_result search = search_table1(entries, stated_table1_solution(ctx), ctx.memo);
   const std::optional<exact_start> start = table1_reproducing_start(search);
   const exact_start orbit = start.value_or(exact_start{});
   const rational m(orbit.m_num, orbit.m_den);

@@ -3,7 +3,7 @@
 
 #include "claim_support.hpp"
 #include "bespoke_checks.hpp"
-#include "printed_check_support.hpp"
+#include "derivation_support.hpp"
 
 #include <simpson/verify/quoted_words.hpp>
 

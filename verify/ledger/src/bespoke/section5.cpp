@@ -44,10 +44,10 @@ claim_result check_maupertuis_naming(const run_context& ctx) {
   };
   const proof printed = prove_zero_on_grid(std::string(unit_reduction) +
                                                "; L_h (LLhh) minus Simpson's rule on the abbreviated action's integrand p dq/dt = m (dq/dt)^2",
-                                           {"q_l", "q_m", "q_r"}, 2, [&](const auto& v) { return along(v, true); });
+                                           {"q_l", "q_m", "q_r"}, 2, [&](const auto& v) { return along(v, true); }, ctx.memo);
   const proof corrected = prove_zero_on_grid(std::string(unit_reduction) +
                                                  "; L_h (LLhh) minus Simpson's rule on Hamilton's integrand L = m (dq/dt)^2/2 - V(q)",
-                                             {"q_l", "q_m", "q_r"}, 2, [&](const auto& v) { return along(v, false); });
+                                             {"q_l", "q_m", "q_r"}, 2, [&](const auto& v) { return along(v, false); }, ctx.memo);
   const std::string computed = "the computation (L_h is Simpson's rule on L, not on p dq/dt) is the same whatever the name";
   if (named != "abbreviated action (Maupertuis)" && corrected.proved && !printed.proved) {
     json evidence;

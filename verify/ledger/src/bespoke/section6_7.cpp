@@ -3,7 +3,7 @@
 
 #include "claim_support.hpp"
 #include "bespoke_checks.hpp"
-#include "printed_check_support.hpp"
+#include "derivation_support.hpp"
 
 #include <simpson/internal_node.hpp>
 #include <simpson/reduced_lagrangian.hpp>
@@ -18,7 +18,7 @@ namespace {
 /// Our kernel's route through the same derivation, in θ: L_h (simpson_lagrangian, Simpson's rule on
 /// the quadratic interpolant) at the harmonic q_m is L_hʳ; q_m makes ∂L_h/∂q_m vanish; eliminating
 /// q_{j-1} with p_r and the scheme gives Φ₃.
-claim_result check_derivation_phi3(const run_context&) {
+claim_result check_derivation_phi3(const run_context& ctx) {
   const proof steps = prove_zero_on_grid(
       std::string(unit_reduction) +
           "; dL_h/dq_m at q_m of (qm-oscillateur-harmonique), L_h^r - L_h at that q_m, and (Phi3) y - the state by "
@@ -35,7 +35,7 @@ claim_result check_derivation_phi3(const run_context&) {
         return std::vector<S>{simpson_lagrangian_dq_mid(par.m(), par.h(), force, ql, qm, qr),
                                      reduced_lagrangian(par, ql, qr) - simpson_lagrangian(par.m(), par.h(), V, ql, qm, qr),
                                      by_formula.p - by_elimination.p, by_formula.q - by_elimination.q};
-      });
+      }, ctx.memo);
   return identity(steps, "Our kernel checks the chain through the core's formulas; GiNaC performs each step itself (below).");
 }
 

@@ -2,7 +2,7 @@
 
 #include "claim_support.hpp"
 #include "bespoke_checks.hpp"
-#include "printed_check_support.hpp"
+#include "derivation_support.hpp"
 #include <simpson/verify/readable_math.hpp>
 
 #include <simpson/verify/enclosure_undecided.hpp>
@@ -42,7 +42,7 @@
 namespace simpson::verify::detail {
 namespace {
 
-claim_result check_scaling(const run_context&) {
+claim_result check_scaling(const run_context& ctx) {
   // h = θ/ω with θ symbolic and m, ω, p, q on a grid. Each quantity is m^a ω^b h^c F(ω²h²) with
   // |a|, |b|, |c| <= 2, so (mω)² × gap is a polynomial of degree <= 4 in m and in ω, and of degree
   // <= 2 in p and q.
@@ -71,7 +71,7 @@ claim_result check_scaling(const run_context&) {
         gaps.push_back(clear * (energy(par, y) - m * w * w * energy(unit, scaled)));
         gaps.push_back(clear * (three_term_residual(par, p, q, p + q) - w * w * three_term_residual(unit, p, q, p + q)));
         return gaps;
-      });
+      }, ctx.memo);
   // The formulas the other proofs evaluate at m = omega = 1 as well, with (q_l, q_r) = (p, q): q_m is
   // invariant, p_r and the Lagrangians scale by m omega. The elimination route of Section 6 solves
   // p_j = p_r(q_{j-1}, q_j) and (schema-ordre-3) and evaluates p_r: built from p_r and the scheme
@@ -118,7 +118,7 @@ claim_result check_scaling(const run_context&) {
                                      mw * (simpson_lagrangian(m, par.h(), V, p, S(p + q), q) - mw * u[3]),
                                      mw * (classical_lagrangian(m, par.h(), V, p, q) - mw * u[4]),
                                      mw * (classical_momentum(m, par.h(), force, p, q) - mw * u[5])};
-      });
+      }, ctx.memo);
   json evidence = json::object();
   evidence["exact"] = json::array({p.evidence, extended.evidence});
   return confirmed_if(p.proved && extended.proved, evidence,
@@ -142,7 +142,7 @@ std::string estimated_order(const std::array<double, 3>& errors, double H0) {
 }
 
 json table_evidence(bool& orders_match, bool& conservation_match,
-                    const printed_table1& printed, const table1_stated& stated) {
+                    const printed_table1& printed, const table1_stated& stated, run_memo* memo) {
   orders_match = conservation_match = true;
   std::array<std::array<table_errors, 3>, 2> runs{};
   for (int s = 0; s < 2; ++s) {
@@ -153,7 +153,7 @@ json table_evidence(bool& orders_match, bool& conservation_match,
   // hypothesis of its convention search (table-values), when it keeps the stated discrete conventions.
   double printed_H0 = H0;
   std::string printed_orbit = "the stated orbit (no simple hypothesis under the stated discrete conventions explains the table)";
-  const convention_search_result search = search_table1(table1_printed(printed.values, printed.orders, &printed.digits), stated);
+  const convention_search_result search = search_table1(table1_printed(printed.values, printed.orders, &printed.digits), stated, memo);
   if (const std::optional<exact_start> start = table1_reproducing_start(search)) {
     printed_H0 = H0 * start->energy_factor();
     printed_orbit = "the orbit that reproduces the table (table-values): " + table1_start(*search.simplest());
@@ -216,14 +216,14 @@ json table_evidence(bool& orders_match, bool& conservation_match,
 claim_result check_table_orders(const run_context& ctx) {
   bool orders = false, conservation = false;
   json evidence;
-  evidence["numeric"] = table_evidence(orders, conservation, read_table1(paper_of(ctx).source, ctx.quotes), stated_table1_solution(ctx));
+  evidence["numeric"] = table_evidence(orders, conservation, read_table1(paper_of(ctx).source, ctx.quotes), stated_table1_solution(ctx), ctx.memo);
   return confirmed_if(orders, evidence);
 }
 
 claim_result check_table_conservation(const run_context& ctx) {
   bool orders = false, conservation = false;
   json evidence;
-  evidence["numeric"] = table_evidence(orders, conservation, read_table1(paper_of(ctx).source, ctx.quotes), stated_table1_solution(ctx));
+  evidence["numeric"] = table_evidence(orders, conservation, read_table1(paper_of(ctx).source, ctx.quotes), stated_table1_solution(ctx), ctx.memo);
   return confirmed_if(conservation, evidence,
                       "'exact' means conserved to round-off: the errors grow with N only through rounding.");
 }
@@ -258,11 +258,11 @@ claim_result check_table_values(const run_context& ctx) {
   // The solution the text states, read once: where the search starts, and its words below.
   const std::optional<stated_solution> stated = stated_table1_words(ctx);
   json evidence;
-  evidence["numeric"] = table_evidence(orders_match, conservation, printed, search_start(stated));
+  evidence["numeric"] = table_evidence(orders_match, conservation, printed, search_start(stated), ctx.memo);
   evidence["numeric"]["also_tried"] = table_also_tried(published);
   // The convention search: every convention Section 8 states or leaves implicit, enumerated and fitted.
   const std::vector<printed_entry> entries = table1_printed(published, orders, &digits);
-  const convention_search_result search = search_table1(entries, search_start(stated));
+  const convention_search_result search = search_table1(entries, search_start(stated), ctx.memo);
   json tried = json::array();
   for (std::size_t k = 0; k < search.tried.size() && k < 12; ++k) {
     tried.push_back({{"conventions", describe(search.tried[k])},

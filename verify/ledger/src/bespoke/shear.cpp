@@ -4,7 +4,7 @@
 
 #include "claim_support.hpp"
 #include "bespoke_checks.hpp"
-#include "printed_check_support.hpp"
+#include "derivation_support.hpp"
 
 #include <simpson/verify/tex_math.hpp>  // canonical_text
 

@@ -137,7 +137,7 @@ claim_result check_experiment_conventions(const run_context& ctx) {
   // as printed? The convention search (shared with table-values, run once per table) decides.
   const printed_table1 printed = read_table1(paper_of(ctx).source);
   const convention_search_result search =
-      search_table1(table1_printed(printed.values, printed.orders, &printed.digits), search_start(stated));
+      search_table1(table1_printed(printed.values, printed.orders, &printed.digits), search_start(stated), ctx.memo);
   evidence["table1"] = {{"stated_reproduce", std::to_string(search.stated.reproduced) + " of " + std::to_string(search.stated.entries.size()) +
                                                  " entries of Table 1 within their printed digits"},
                         {"reproducing_convention", search.reproducing() != nullptr ? describe(*search.reproducing()) : "none found"}};

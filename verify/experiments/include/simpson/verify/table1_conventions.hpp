@@ -7,6 +7,7 @@
 #include <simpson/verify/convention_search.hpp>
 #include <simpson/verify/paper_table.hpp>
 #include <simpson/verify/table1_enclosed.hpp>
+#include <simpson/verify/run_memo.hpp>
 
 #include <array>
 #include <optional>
@@ -67,8 +68,8 @@ struct table1_stated {
   double amplitude = 1, phase = 0, period = 1;
 };
 
-/// The search on Table 1 as printed, from the stated solution (a table searched before in this
-/// process, from the same stated solution, is not searched again).
-convention_search_result search_table1(const std::vector<printed_entry>& printed, const table1_stated& stated = {});
+/// The search on Table 1 as printed, from the stated solution; with a run's memo, a table searched
+/// before in that run from the same stated solution is not searched again.
+convention_search_result search_table1(const std::vector<printed_entry>& printed, const table1_stated& stated = {}, run_memo* memo = nullptr);
 
 }  // namespace simpson::verify

@@ -24,6 +24,8 @@ struct table1_settings {
   std::optional<std::array<std::array<int, 3>, 8>> printed_digits;
   /// The solution the paper states for the experiment, where the convention search starts.
   table1_stated stated;
+  /// The run's memo: the convention search is made once per run, here or by a claim (run_memo.hpp).
+  run_memo* memo = nullptr;
 };
 
 section_result run_table1(const table1_settings& s);

@@ -15,6 +15,7 @@
 // polynomials with the end values fixed is the same (the basis only reparametrises it).
 
 #include <simpson/verify/json.hpp>
+#include <simpson/verify/run_memo.hpp>
 #include <simpson/verify/quadrature_rule.hpp>
 
 #include <array>
@@ -71,6 +72,6 @@ struct member_analysis {
 
 /// Derives and analyses one member; a derivation that would pass `budget_degree` in θ stops
 /// with a clear failure instead of running on.
-member_analysis analyse_member(const galerkin_member& member, long budget_degree = 400);
+member_analysis analyse_member(const galerkin_member& member, long budget_degree = 400, run_memo* memo = nullptr);
 
 }  // namespace simpson::verify

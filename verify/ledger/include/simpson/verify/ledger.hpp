@@ -41,6 +41,9 @@ struct claim_book {
 /// claims_file_error.
 claim_book read_claim_book(const std::string& text, const std::string& file);
 
+/// The text of claims/paper.toml, compiled in.
+std::string embedded_claims_text();
+
 /// The paper's book (the embedded claims/paper.toml), read once.
 const claim_book& paper_book();
 

@@ -1,0 +1,202 @@
+#pragma once
+// One checkable statement of the paper, how it is checked, and what the check found.
+
+#include <simpson/precision.hpp>
+
+#include <simpson/verify/json.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace simpson::verify {
+
+/// holds: true as printed; erratum: false as printed, with a proved correction; fails: false,
+/// no correction found; kernels-disagree: the two exact kernels reached different conclusions on
+/// the derived statement (a bug in one of them, never expected); text-changed: the sentence a
+/// prose claim quotes is no longer in the paper, or its words no longer parse (never expected:
+/// the paper changed under the ledger); undecided: an enclosure could neither prove the statement
+/// nor its negation within the run's precision budget (never expected: raise the budget);
+/// unproved: a floating-point claim whose round-off Gappa could not bound (its reason in the
+/// evidence: an intermediate that may overflow, a step outside the stable range); skipped: a
+/// floating-point claim whose prover (gappa) is not installed, decided neither way and never
+/// counted against the run.
+enum class verdict { holds, erratum, fails, kernels_disagree, text_changed, undecided, unproved, skipped, unverifiable };
+
+inline std::string to_string(verdict v) {
+  switch (v) {
+    case verdict::holds: return "holds";
+    case verdict::erratum: return "erratum";
+    case verdict::fails: return "fails";
+    case verdict::kernels_disagree: return "kernels-disagree";
+    case verdict::text_changed: return "text-changed";
+    case verdict::undecided: return "undecided";
+    case verdict::unproved: return "unproved";
+    case verdict::skipped: return "skipped";
+    case verdict::unverifiable: return "unverifiable";
+  }
+  return "?";
+}
+
+/// The verdict a report or a claims file spells `text` (to_string's spelling), or none.
+inline std::optional<verdict> verdict_of_name(const std::string& text) {
+  for (const verdict v : {verdict::holds, verdict::erratum, verdict::fails, verdict::kernels_disagree, verdict::text_changed,
+                          verdict::undecided, verdict::unproved, verdict::skipped, verdict::unverifiable}) {
+    if (to_string(v) == text) return v;
+  }
+  return std::nullopt;
+}
+
+/// Whether a verdict is the expected one for the run's exit code: equal, or skipped (a prover not
+/// installed decides nothing, and says so).
+inline bool as_expected(verdict got, verdict expected) { return got == expected || got == verdict::skipped; }
+
+/// What a check is given: the precisions of the numeric rechecks, the seed and how many random
+/// samples each recheck draws per precision.
+struct paper_reading;
+class run_memo;             // run_memo.hpp: what a run computes once
+struct corrected_formula;  // formula_reference.hpp: a printed formula's proved correction
+
+/// Corrections of printed formulas a claim is judged again with (its consequences traced): each put
+/// in where the claim reads its formula; `used` says whether any was.
+struct formula_corrections {
+  std::vector<std::shared_ptr<const corrected_formula>> corrected;
+  mutable bool used = false;
+};
+
+struct claim_book;  // ledger.hpp
+
+struct run_context {
+  std::vector<precision> precisions;
+  std::uint64_t seed = 0;
+  unsigned samples = 0;
+  /// The formulas read from the paper's source; without it, formula claims check our
+  /// transcription only.
+  const paper_reading* paper = nullptr;
+  /// Where a prose claim's check records the sentences it quotes (quoted_words.hpp); null when the
+  /// check is run on its own.
+  json* quotes = nullptr;
+  /// Decimal digits of the first interval evaluation of a numeric claim, and the most digits it
+  /// may rise to (doubling) before the claim is undecided.
+  unsigned enclosure_digits = 40;
+  unsigned enclosure_budget_digits = 640;
+  /// Corrected formulas to read instead of the printed ones (a consequence's second judgment); null
+  /// for a judgment of the document as printed.
+  const formula_corrections* corrections = nullptr;
+  /// The book the claim belongs to (ledger.hpp): the claims its run may judge again (the paper's
+  /// earlier text) and the declarations its document is read with; null for a check run on its own.
+  const claim_book* book = nullptr;
+  /// What the run computes once for several of its claims and sections (run_memo.hpp); null for a
+  /// check run on its own, which then computes everything itself.
+  run_memo* memo = nullptr;
+};
+
+/// A finding in one line, "printed X, should be Y": what the paper prints and what should stand
+/// there, in the paper's notation (TeX when `tex`, else words), and where (an entry, a term, a
+/// sentence's words); the derivation behind it stays in the correction and the evidence.
+struct amendment {
+  std::string where;
+  std::string printed;
+  std::string should_be;
+  bool tex = true;
+  bool operator==(const amendment& o) const { return where == o.where && printed == o.printed && should_be == o.should_be && tex == o.tex; }
+};
+
+/// What a check found. `evidence` has one member per method ("exact", "numeric", ...).
+struct claim_result {
+  verdict outcome = verdict::fails;
+  json evidence = json::object();
+  std::string correction;  // the corrected statement, for errata
+  std::string note;        // conditions not stated in the paper, sufficiency, caveats
+  /// For a finding (erratum, wording, naming): "printed X, should be Y", one per place.
+  std::vector<amendment> amendments;
+  /// For a claim whose formula is read from the paper: where ({label, line, tex, parsed}) and
+  /// what GiNaC proved of it; null for a claim typed from prose.
+  json printed;
+  /// For a claim typed from the prose: the sentences it judges, as quoted from the paper
+  /// ({source, line, text, pattern, words, parsed}); empty for a claim that quotes none.
+  json quoted = json::array();
+  /// For a claim that reads the document's text as a whole (its prose's spelling, its citations)
+  /// rather than one formula or one sentence.
+  bool reads_whole_text = false;
+  /// Seconds the GiNaC proof of the printed formula took (reported under "timing", never in evidence).
+  double printed_seconds = 0;
+  /// The Coq certificate (certificates/<id>.v), printed from the identities GiNaC proved; empty when
+  /// none is exported, `certificate_missing` then saying why.
+  std::string certificate;
+  std::vector<std::string> certificate_lemmas;
+  std::string certificate_missing;
+  /// The negation of each identity GiNaC refuted (an erratum's printed statement, a wrong formula of
+  /// an altered paper), shown at a counterexample point (certificates/<id>_refuted.v); may be present
+  /// without `certificate`.
+  std::string refutation;
+  std::vector<std::string> refutation_lemmas;
+  /// The printed formulas this erratum's correction replaces, with what should stand there: the
+  /// claims that read them are judged again with them (ledger.hpp, trace_consequences).
+  std::vector<std::shared_ptr<const corrected_formula>> corrected_formulas;
+};
+
+/// The class of a finding, one policy for all (docs/findings.md, "How findings are classified"):
+///   erratum         a formula or statement false as printed; its correction proved;
+///   wording         the words are literally false, but the intended mathematical content holds
+///                   (the note says which);
+///   derivation_gap  the conclusion holds, but the printed argument does not reach it;
+///   naming          a result attributed to the wrong principle or person;
+///   unverifiable    material the claim needs is absent from the source (a figure, a reference);
+///   prose           slips of spelling in the prose, counted apart from the findings about the mathematics.
+enum class finding { none, erratum, wording, derivation_gap, naming, unverifiable, prose };
+
+inline std::string to_string(finding f) {
+  switch (f) {
+    case finding::none: return "none";
+    case finding::erratum: return "erratum";
+    case finding::wording: return "wording";
+    case finding::derivation_gap: return "derivation gap";
+    case finding::naming: return "naming";
+    case finding::unverifiable: return "unverifiable";
+    case finding::prose: return "prose";
+  }
+  return "?";
+}
+
+/// Whose statement a claim is: the paper's, or the harness's own (a lemma the proofs use, a
+/// finding beyond the paper), counted apart.
+/// Where a claim comes from: the paper (or the document a claims file checks), beyond it (a claim of
+/// the harness about the scheme that the paper does not make), or the harness's own statement about
+/// itself (a lemma, a finding of the experiments). Only the paper's are findings about the paper.
+enum class claim_origin { paper, beyond, harness };
+
+inline std::string to_string(claim_origin o) { return o == claim_origin::paper ? "paper" : o == claim_origin::beyond ? "beyond" : "harness"; }
+
+struct claim {
+  std::string id;         // stable kebab-case
+  std::string section;    // section of the paper
+  std::string equation;   // the paper's equation label, or "prose"
+  std::string statement;  // as printed
+  std::vector<std::string> methods;
+  verdict expected;
+  std::function<claim_result(const run_context&)> check;
+  /// The class of the finding when the expected verdict is not `holds`; and, for a finding that is
+  /// a consequence of another (it inherits a typo), the id of its cause: the summary counts it once.
+  finding kind = finding::none;
+  std::string follows_from = {};
+  bool typographical = false;  // a slip of the pen (a wrong index, a letter for another), not of the mathematics
+  claim_origin origin = claim_origin::paper;
+  /// From the claim's record (claims_file.hpp): the name of its check, whether it is a headline
+  /// claim (the report's speed line), and why no Coq statement is exported when none is.
+  std::string check_name = {};
+  /// For a claim a proof shape decides: the labels of the displays it reads (provenance finds the
+  /// claims that read a display through them).
+  std::vector<std::string> labels_read = {};
+  bool headline = false;
+  std::string coq_none = {};
+  /// For an expected erratum: the proved correction its record recorded (`correction`), the
+  /// erratum's content. The same verdict with another correction (a second error in a formula
+  /// already known to be wrong) is a changed verdict. Empty: not recorded.
+  std::string expected_correction = {};
+};
+
+}  // namespace simpson::verify

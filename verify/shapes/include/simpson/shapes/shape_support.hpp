@@ -1,0 +1,210 @@
+#pragma once
+// What the proof shapes share (proof_shapes.hpp): reading a call's formulas from the run's
+// document with its definitions put in and its symbols checked against the declared ones, the
+// verdict on an identity in both kernels with its Coq certificate, and each shape's function, by
+// family: identities (shapes_identities.cpp), a form's invariance (shapes_invariance.cpp), derivations (shapes_derivation.cpp), series
+// (shapes_series.cpp), a map's explicitness (shapes_explicit.cpp), intervals (shapes_intervals.cpp), characteristic polynomials
+// (shapes_characteristic.cpp), quadrature (shapes_quadrature.cpp), sums (shapes_sums.cpp), the prose
+// itself (shapes_prose.cpp).
+
+#include <simpson/prove/kernel_zero.hpp>
+#include <simpson/shapes/proof_shapes.hpp>
+
+#include <simpson/verify/formula_reference.hpp>
+
+#include <ginac/ginac.h>
+
+#include <map>
+#include <optional>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace simpson::verify::detail {
+
+/// The symbol a TeX name reads as ('q_0', '\omega', 'q_{j+1}'); throws std::invalid_argument.
+GiNaC::symbol symbol_named(const std::string& tex);
+
+/// The GiNaC names of the symbols (and functions) a file declares.
+std::set<std::string> declared_names(const claim_declarations& d);
+
+/// What is wrong with one argument of a call, found while reading it (its `entries`): the record's
+/// check names that argument's field.
+struct argument_error : std::invalid_argument {
+  argument_error(std::string name, const std::string& what) : std::invalid_argument(what), argument(std::move(name)) {}
+  std::string argument;
+};
+
+/// Reads the formulas of one call from the run's document, with the call's definitions put in, and
+/// keeps what it read for the report.
+class shape_reader {
+ public:
+  shape_reader(const shape_call& call, const tex_document& document);
+
+  /// What the call's file declares, for the reader.
+  const tex_declarations& reading() const { return call_.declared->reading; }
+
+  bool has(const std::string& parameter) const { return call_.with.count(parameter) > 0; }
+
+  /// The formula the argument names, definitions put in.
+  GiNaC::ex formula(const std::string& parameter);
+
+  /// The formula as read, no definition put in.
+  referenced_formula raw(const std::string& parameter);
+
+  std::vector<GiNaC::symbol> symbols(const std::string& parameter) const;
+
+  /// The equations the argument names, as read (every side's TeX), each once recorded.
+  std::vector<referenced_formula> equations(const std::string& parameter);
+
+  /// Every side of one equation read, parsed, the definitions put in.
+  std::vector<GiNaC::ex> sides(const referenced_formula& equation) const;
+
+  /// `e` with the call's definitions put in.
+  GiNaC::ex defined(const GiNaC::ex& e) const { return with_definitions(e, definitions_); }
+
+  /// Whether a definition gives `name` a value.
+  bool defines(const GiNaC::symbol& name) const;
+
+  /// What was read, the principal formula first (each shape reads it first), the definitions last.
+  json printed() const;
+
+  /// The identity of the formula the argument names (referenced_formula::identity), once read.
+  const std::string& identity_of(const std::string& parameter) const;
+
+  /// A proved correction of the formula the argument names, `value` standing where it is printed:
+  /// what the claims that read it are judged again with.
+  std::shared_ptr<const corrected_formula> correction_of(const std::string& parameter, const GiNaC::ex& value) const;
+
+ private:
+  void read_entries(const std::vector<std::string>& references);
+  void declared_only(const GiNaC::ex& e, const std::string& where) const;
+  GiNaC::ex parsed_side(const referenced_formula& equation, std::size_t k) const;
+  void record(const std::string& reference, const std::string& locator, int line, const std::string& tex, const std::optional<GiNaC::ex>& value);
+  /// `f` with its value corrected when the call is judged again with a correction of it.
+  referenced_formula corrected(referenced_formula f) const;
+
+  const shape_call& call_;
+  const tex_document& document_;
+  std::set<std::string> declared_;
+  std::vector<definition> definitions_;
+  json read_ = json::array();
+  json definitions_read_ = json::array();
+  std::map<std::string, std::string> identities_;  // parameter: the identity of its formula
+};
+
+/// The run's document: its paper, or the embedded one when it has none.
+const tex_document& document_of(const run_context& ctx);
+
+/// Where e, as written, divides by zero once `values` are put in: the first denominator (a power
+/// with a negative exponent, innermost first) whose base is 0 there, as text; none when e is defined
+/// there. A record's values are put into a formula only after this says none: GiNaC's evaluation
+/// throws on a division by zero (a harness fault, exit 3, where the statement is only undefined),
+/// and leaks what it was building.
+std::optional<std::string> vanishing_denominator(const GiNaC::ex& e, const GiNaC::exmap& values);
+
+/// The verdict on a statement undefined at a record's values (`pole`, from vanishing_denominator):
+/// it fails, the note saying where.
+claim_result undefined_there(shape_reader& read, const std::string& what, const std::string& pole);
+
+/// The verdict on an identity lhs = rhs, decided by GiNaC's normal form and by our kernel's grid:
+/// holds when both find it zero, `when_false` (erratum, with `correction`) when both find it not,
+/// kernels-disagree otherwise; our kernel not applicable leaves GiNaC's verdict, and says so. `own`,
+/// when given, is our kernel's decision of an equivalent statement (the shape says which) instead of
+/// its decision of lhs − rhs. `goal` names the Coq lemma (<claim>_<goal>).
+claim_result identity_verdict(const shape_call& call, shape_reader& read, const std::string& goal, const std::string& what, const GiNaC::ex& lhs,
+                              const GiNaC::ex& rhs, const std::string& correction, verdict when_false = verdict::erratum,
+                              const std::optional<kernel_decision>& own = std::nullopt);
+
+/// The verdict of equal-sides on `equations`: every side equals its equation's first, the call's
+/// definitions and then `given` put in (`given_text` says what it puts in: ", with p_j = ..."), in
+/// both kernels, one Coq lemma per side; an erratum's correction gives each side as derived.
+claim_result equal_sides_verdict(const shape_call& call, shape_reader& read, const std::vector<referenced_formula>& equations, const GiNaC::exmap& given,
+                                 const std::string& given_text);
+
+/// The verdict of a shape whose two kernels each decided its statement: kernels-disagree when they
+/// differ (the note naming `what`), else holds, or an erratum corrected by `correction`.
+void settle(claim_result& result, bool disagree, bool holds, const std::string& what, const std::string& correction);
+
+/// "Printed X, should be Y" at `where`, at its simplest: one symbol for another when that is all
+/// that differs in a term of several symbols (d^6q/dt^5 for d^6q/dt^6), a constant factor when a
+/// long expression (over 40 characters of TeX) is off by one (1/4 × the printed), else the two
+/// expressions; none when they are equal.
+std::optional<amendment> amendment_between(const std::string& where, const GiNaC::ex& printed, const GiNaC::ex& derived);
+
+/// A finding in words: the words printed, those that should stand (its math readable_math's,
+/// readable_math.hpp).
+amendment amendment_in_words(const std::string& where, const std::string& printed, const std::string& should_be);
+
+/// e as a square matrix; throws std::invalid_argument naming `what` when it is not one.
+GiNaC::matrix as_square_matrix(const GiNaC::ex& e, const std::string& what);
+
+/// A linear three-term scheme's coefficients: scheme = previous q_{j-1} + current q_j + next q_{j+1}
+/// (`sequence` = q_{j-1}, q_j, q_{j+1}), each free of the states (GiNaC's derivatives of the tree
+/// as read, not normalised); none when the scheme is not one.
+struct three_term_coefficients {
+  GiNaC::ex previous, current, next;
+};
+std::optional<three_term_coefficients> linear_three_term(const GiNaC::ex& scheme, const std::vector<GiNaC::symbol>& sequence);
+
+/// Whether the scheme is reversible, its q_{j+1} and q_{j-1} coefficients equal (the characteristic
+/// roots' product is 1): in GiNaC's normal form, and not refuted by our kernel, whose decision is `own`.
+bool reversible(const three_term_coefficients& terms, kernel_decision& own);
+
+/// The discriminant of the characteristic polynomial divided by its leading coefficient squared,
+/// (P₁² − 4P₀P₂)/P₂², in normal form: the sign of the discriminant, and a function of ωh alone for a
+/// scheme in ω and h (the unscaled one carries powers of h).
+GiNaC::ex monic_discriminant(const three_term_coefficients& terms);
+
+/// The offset k of a state named <base>_<index>±k from the index ("q_j+1": 1, "q_j": 0,
+/// "q_j-1/2": −1/2); none when the name is not one.
+std::optional<GiNaC::numeric> index_offset(const std::string& name, const std::string& index);
+
+/// The reference an argument gives.
+std::string reference_of(const shape_call& call, const std::string& parameter);
+
+// The shapes.
+claim_result identity_shape(const shape_call& call, const run_context& ctx);
+claim_result equal_sides_shape(const shape_call& call, const run_context& ctx);
+claim_result derivative_shape(const shape_call& call, const run_context& ctx);
+claim_result solves_shape(const shape_call& call, const run_context& ctx);
+claim_result determinant_shape(const shape_call& call, const run_context& ctx);
+claim_result symplectic_shape(const shape_call& call, const run_context& ctx);
+claim_result linear_shape(const shape_call& call, const run_context& ctx);
+claim_result conserved_shape(const shape_call& call, const run_context& ctx);
+claim_result proportional_shape(const shape_call& call, const run_context& ctx);
+claim_result invariance_system_shape(const shape_call& call, const run_context& ctx);
+claim_result invariance_determinant_shape(const shape_call& call, const run_context& ctx);
+claim_result invariance_singular_shape(const shape_call& call, const run_context& ctx);
+claim_result invariance_kernel_shape(const shape_call& call, const run_context& ctx);
+claim_result euler_lagrange_shape(const shape_call& call, const run_context& ctx);
+claim_result stationary_shape(const shape_call& call, const run_context& ctx);
+claim_result discrete_momenta_shape(const shape_call& call, const run_context& ctx);
+claim_result explicit_map_shape(const shape_call& call, const run_context& ctx);
+claim_result explicit_scheme_shape(const shape_call& call, const run_context& ctx);
+claim_result sign_iff_shape(const shape_call& call, const run_context& ctx);
+claim_result discrete_map_shape(const shape_call& call, const run_context& ctx);
+claim_result truncation_shape(const shape_call& call, const run_context& ctx);
+claim_result stated_order_shape(const shape_call& call, const run_context& ctx);
+claim_result map_order_shape(const shape_call& call, const run_context& ctx);
+claim_result stability_interval_shape(const shape_call& call, const run_context& ctx);
+claim_result sign_on_interval_shape(const shape_call& call, const run_context& ctx);
+claim_result factor_signs_shape(const shape_call& call, const run_context& ctx);
+claim_result characteristic_shape(const shape_call& call, const run_context& ctx);
+claim_result discriminant_shape(const shape_call& call, const run_context& ctx);
+claim_result characteristic_roots_shape(const shape_call& call, const run_context& ctx);
+claim_result root_criterion_shape(const shape_call& call, const run_context& ctx);
+claim_result quadrature_exactness_shape(const shape_call& call, const run_context& ctx);
+claim_result discrete_lagrangian_shape(const shape_call& call, const run_context& ctx);
+claim_result consistency_shape(const shape_call& call, const run_context& ctx);
+claim_result taylor_expansion_shape(const shape_call& call, const run_context& ctx);
+claim_result sum_range_shape(const shape_call& call, const run_context& ctx);
+claim_result unconditional_stability_shape(const shape_call& call, const run_context& ctx);
+claim_result spelling_shape(const shape_call& call, const run_context& ctx);
+claim_result emerging_condition_shape(const shape_call& call, const run_context& ctx);
+claim_result known_method_shape(const shape_call& call, const run_context& ctx);
+claim_result citations_shape(const shape_call& call, const run_context& ctx);
+
+}  // namespace simpson::verify::detail

@@ -1,0 +1,429 @@
+// What the proof shapes share: see shape_support.hpp.
+
+#include <simpson/shapes/shape_support.hpp>
+
+#include <simpson/verify/formula_reference.hpp>
+
+#include <simpson/prove/coq_export.hpp>
+#include <simpson/prove/kernel_zero.hpp>
+#include <simpson/prove/printed_check_support.hpp>
+
+#include <simpson/verify/paper_reading.hpp>
+#include <simpson/verify/quoted_words.hpp>
+#include <simpson/verify/readable_math.hpp>
+#include <simpson/verify/tex_math.hpp>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <iterator>
+#include <set>
+
+namespace simpson::verify::detail {
+
+using GiNaC::ex;
+
+/// The symbol a TeX name reads as ('q_0', '\omega', 'q_{j+1}'); throws std::invalid_argument.
+GiNaC::symbol symbol_named(const std::string& tex) { return paper_symbols()[reader_name(tex)]; }
+
+/// The GiNaC names of the symbols a file declares.
+std::set<std::string> declared_names(const claim_declarations& d) {
+  std::set<std::string> names = d.reading.symbols;
+  names.insert(d.reading.functions.begin(), d.reading.functions.end());
+  return names;
+}
+
+shape_reader::shape_reader(const shape_call& call, const tex_document& document) : call_(call), document_(document) {
+  if (call.declared->complete) declared_ = declared_names(*call.declared);
+  const auto where = call.with.find("where");
+  if (where != call.with.end()) {
+    for (const std::string& reference : where->second.values) {
+      definitions_.push_back(read_definition(document_, reading(), reference));
+      if (call.corrections) {  // a definition whose display a proved correction replaces: its value corrected
+        const std::string identity = read_reference(document_, reading(), reference).identity;
+        for (const auto& c : call.corrections->corrected) {
+          if (c->identity != identity) continue;
+          definitions_.back().value = c->value;
+          call.corrections->used = true;
+        }
+      }
+      const definition& d = definitions_.back();
+      definitions_read_.push_back({{"reference", reference},
+                                   {"label", d.locator + ", put in"},
+                                   {"line", d.line},
+                                   {"tex", folded_space(d.tex)},
+                                   {"parsed", json::array({text_of(d.name) + " = " + text_of(d.value)})}});
+    }
+  }
+  const auto entries = call.with.find("entries");
+  if (entries != call.with.end()) read_entries(entries->second.values);
+  // A symbol a definition defines is declared by it (Phi = (map)); what it is defined as must be declared.
+  for (const definition& d : definitions_) {
+    declared_.insert(d.name.get_name());
+    for (int k = 1; d.parameter && k <= 4; ++k) declared_.insert(derivative_name(d.function, d.parameter->get_name(), k, k));  // dq/dt, q(t) defined
+  }
+  for (const definition& d : definitions_) declared_only(d.value, d.locator);
+}
+
+/// A generic matrix printed with a symbol for each entry (Φ = (α β; γ δ)) named for the entries of
+/// another printed matrix: each symbol is defined as its entry there, the `where` definitions put in.
+void shape_reader::read_entries(const std::vector<std::string>& references) {
+  const auto fail = [](const std::string& what) { throw argument_error("entries", what); };
+  if (references.size() != 2) {
+    fail(fmt::format("{} references, not 2: a printed matrix of symbols, then the matrix whose entries they name", references.size()));
+  }
+  referenced_formula names_read, values_read;
+  ex names, values;
+  try {
+    names_read = read_reference(document_, reading(), references[0]);
+    values_read = read_reference(document_, reading(), references[1]);
+    names = names_read.value.evalm();
+    values = with_definitions(values_read.value, definitions_).evalm();
+  } catch (const document_error&) {
+    throw;
+  } catch (const std::invalid_argument& e) {
+    fail(e.what());
+  }
+  if (!GiNaC::is_a<GiNaC::matrix>(names)) fail(names_read.locator + " is not a matrix");
+  if (!GiNaC::is_a<GiNaC::matrix>(values)) fail(values_read.locator + " is not a matrix");
+  const GiNaC::matrix& n = GiNaC::ex_to<GiNaC::matrix>(names);
+  const GiNaC::matrix& v = GiNaC::ex_to<GiNaC::matrix>(values);
+  if (n.rows() != v.rows() || n.cols() != v.cols()) {
+    fail(fmt::format("{} is {} x {} and {} is {} x {}", names_read.locator, n.rows(), n.cols(), values_read.locator, v.rows(), v.cols()));
+  }
+  json parsed = json::array();
+  std::set<std::string> named;
+  for (unsigned r = 0; r < n.rows(); ++r) {
+    for (unsigned c = 0; c < n.cols(); ++c) {
+      if (!GiNaC::is_a<GiNaC::symbol>(n(r, c))) {
+        fail(fmt::format("{}: the entry ({}, {}), {}, is not one symbol", names_read.locator, r + 1, c + 1, text_of(n(r, c))));
+      }
+      const GiNaC::symbol& name = GiNaC::ex_to<GiNaC::symbol>(n(r, c));
+      if (!named.insert(name.get_name()).second) fail(fmt::format("{}: the symbol {} names two entries", names_read.locator, name.get_name()));
+      definitions_.push_back({name, v(r, c), fmt::format("{}, entry ({}, {}) of {}", names_read.locator, r + 1, c + 1, values_read.place),
+                              names_read.line, names_read.tex});
+      parsed.push_back(text_of(name) + " = " + text_of(v(r, c)));
+    }
+  }
+  definitions_read_.push_back({{"reference", references[0] + " entries of " + references[1]},
+                               {"label", names_read.place + ", its entries those of " + values_read.locator + ", put in"},
+                               {"line", names_read.line},
+                               {"tex", folded_space(names_read.tex)},
+                               {"parsed", parsed}});
+}
+
+ex shape_reader::formula(const std::string& parameter) {
+  const referenced_formula f = raw(parameter);
+  return with_definitions(f.value, definitions_);
+}
+
+referenced_formula shape_reader::corrected(referenced_formula f) const {
+  if (!call_.corrections) return f;
+  for (const auto& c : call_.corrections->corrected) {
+    if (c->identity != f.identity) continue;
+    f.value = c->value;
+    call_.corrections->used = true;
+  }
+  return f;
+}
+
+const std::string& shape_reader::identity_of(const std::string& parameter) const {
+  const auto it = identities_.find(parameter);
+  if (it == identities_.end()) throw std::logic_error("identity_of: the argument '" + parameter + "' was never read");
+  return it->second;
+}
+
+std::shared_ptr<const corrected_formula> shape_reader::correction_of(const std::string& parameter, const GiNaC::ex& value) const {
+  // Named as a reader of the document names it: (label), or the display or formula at its phrase.
+  const std::string& identity = identity_of(parameter);
+  const std::string place = identity.substr(0, identity.rfind('#'));
+  std::string shown = place;
+  if (place.rfind("label ", 0) == 0) shown = "(" + place.substr(6) + ")";
+  if (place.rfind("anchor ", 0) == 0) shown = "the display after " + place.substr(7);
+  if (place.rfind("inline formula at ", 0) == 0) shown = "the formula at " + place.substr(18);
+  return std::make_shared<const corrected_formula>(corrected_formula{identity, shown, value});
+}
+
+referenced_formula shape_reader::raw(const std::string& parameter) {
+  const std::string& reference = call_.with.at(parameter).values.front();
+  referenced_formula f = corrected(read_reference(document_, reading(), reference));
+  identities_[parameter] = f.identity;
+  declared_only(f.value, f.locator);
+  // Shown with its matrix products multiplied out (1/(1 + x) times a matrix, as printed), unless a
+  // definition is still to make one of its symbols a matrix.
+  GiNaC::ex shown = f.value;
+  const bool defines_a_matrix =
+      std::any_of(definitions_.begin(), definitions_.end(), [](const definition& d) { return GiNaC::is_a<GiNaC::matrix>(d.value.evalm()); });
+  if (!defines_a_matrix) {
+    try {
+      shown = with_definitions(f.value, {});
+    } catch (const std::exception&) {
+    }
+  }
+  record(reference, f.place, f.line, f.tex, shown);
+  return f;
+}
+
+std::vector<GiNaC::symbol> shape_reader::symbols(const std::string& parameter) const {
+  std::vector<GiNaC::symbol> out;
+  for (const std::string& tex : call_.with.at(parameter).values) {
+    out.push_back(symbol_named(tex));
+    declared_only(out.back(), "'" + tex + "'");
+  }
+  return out;
+}
+
+std::vector<referenced_formula> shape_reader::equations(const std::string& parameter) {
+  std::vector<referenced_formula> out;
+  for (const std::string& reference : call_.with.at(parameter).values) {
+    out.push_back(read_reference(document_, reading(), reference));
+    const referenced_formula& f = out.back();
+    json parsed = json::array();
+    for (std::size_t k = 0; k < f.sides.size(); ++k) parsed.push_back(text_of(parsed_side(f, k)));
+    json entry = {{"reference", reference}, {"label", f.place}, {"line", f.line}, {"tex", folded_space(f.tex)}, {"parsed", parsed}};
+    if (f.line >= 1 && std::find(read_.begin(), read_.end(), entry) == read_.end()) read_.push_back(entry);
+  }
+  return out;
+}
+
+ex shape_reader::parsed_side(const referenced_formula& equation, std::size_t k) const {
+  const ex side = read_side(equation, k, reading());
+  // A chain's first side, one symbol, may be the name the chain defines (g = dq/dt(0) = ...).
+  const bool named = equation.sides.size() > 2 && k == 0 && GiNaC::is_a<GiNaC::symbol>(side);
+  if (!named) declared_only(side, equation.locator);
+  return side;
+}
+
+std::vector<ex> shape_reader::sides(const referenced_formula& equation) const {
+  std::vector<ex> out;
+  for (std::size_t k = 0; k < equation.sides.size(); ++k) out.push_back(with_definitions(parsed_side(equation, k), definitions_));
+  return out;
+}
+
+bool shape_reader::defines(const GiNaC::symbol& name) const {
+  return std::any_of(definitions_.begin(), definitions_.end(), [&](const definition& d) { return d.name.get_name() == name.get_name(); });
+}
+
+json shape_reader::printed() const {
+  json all = read_;
+  for (const json& d : definitions_read_) all.push_back(d);
+  return {{"source", document_.origin()}, {"formulas", all}};
+}
+
+void shape_reader::declared_only(const ex& e, const std::string& where) const {
+  if (!call_.declared->complete) return;
+  std::set<std::string> bound;  // an integral's variable and a sum's index: bound in it, not symbols of the document
+  for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (GiNaC::is_a<GiNaC::integral>(*it)) bound.insert(GiNaC::ex_to<GiNaC::symbol>(it->op(0)).get_name());
+    if (is_sum(*it) && GiNaC::is_a<GiNaC::symbol>(it->op(1))) bound.insert(GiNaC::ex_to<GiNaC::symbol>(it->op(1)).get_name());
+  }
+  // A derivative of a declared symbol, d^kx/dt^k (the state's, in a differential equation), is declared.
+  const auto derivative_of_declared = [&](const std::string& name) {
+    const std::size_t slash = name.find("/d");
+    if (name.size() < 4 || name[0] != 'd' || slash == std::string::npos) return false;
+    std::size_t from = 1;
+    if (name[1] == '^') from = name.find_first_not_of("0123456789", 2);
+    return from != std::string::npos && from < slash && declared_.count(name.substr(from, slash - from)) > 0;
+  };
+  for (const std::string& name : symbol_names(e)) {
+    if (!declared_.count(name) && !bound.count(name) && !derivative_of_declared(name)) {
+      throw std::invalid_argument(where + ": the symbol '" + name + "' is not declared in [symbols] (declare it under positive or real; "
+                                  "or under functions if the document applies it, " + name + "(x))");
+    }
+  }
+}
+
+void shape_reader::record(const std::string& reference, const std::string& locator, int line, const std::string& tex,
+                          const std::optional<ex>& value) {
+  if (line < 1) return;  // the record's own TeX ('$\omega h$'): not read from the document
+  json entry = {{"reference", reference}, {"label", locator}, {"line", line}};
+  if (!tex.empty()) entry["tex"] = folded_space(tex);
+  if (value) entry["parsed"] = json::array({text_of(*value)});
+  for (const json& seen : read_) {
+    if (seen == entry) return;
+  }
+  read_.push_back(entry);
+}
+
+const tex_document& document_of(const run_context& ctx) {
+  // The run's paper, or the embedded one when the run has none (a note's run always has one: its
+  // claims file's [document] requires --paper).
+  const paper_reading& reading = paper_of(ctx);
+  if (!reading.document) throw std::logic_error("the run's paper (" + reading.origin + ") was never read as TeX");  // a harness fault
+  return *reading.document;
+}
+
+std::optional<std::string> vanishing_denominator(const ex& e, const GiNaC::exmap& values) {
+  for (auto it = e.postorder_begin(); it != e.postorder_end(); ++it) {
+    if (!GiNaC::is_a<GiNaC::power>(*it) || !it->op(1).info(GiNaC::info_flags::negative)) continue;
+    // The inner denominators of the base are not 0 (postorder: checked before it), so this cannot throw.
+    if (GiNaC::normal(it->op(0).subs(values, GiNaC::subs_options::no_pattern)).is_zero()) return text_of(it->op(0));
+  }
+  return std::nullopt;
+}
+
+claim_result undefined_there(shape_reader& read, const std::string& what, const std::string& pole) {
+  claim_result result;
+  result.outcome = verdict::fails;
+  result.printed = read.printed();
+  result.note = fmt::format("As printed: {} is undefined: the denominator {} is 0 there.", what, pole);
+  result.evidence["exact"] = {{"statement", what}, {"ginac", "fails: the denominator " + pole + " is 0 there"}, {"own", "not applicable: undefined"}};
+  result.certificate_missing = "undefined there: no identity to state";
+  return result;
+}
+
+claim_result identity_verdict(const shape_call& call, shape_reader& read, const std::string& goal, const std::string& what, const ex& lhs, const ex& rhs,
+                              const std::string& correction, verdict when_false, const std::optional<kernel_decision>& given) {
+  claim_result result;
+  const ex difference = normal_difference(lhs, rhs);
+  const bool ginac_zero = is_zero_expression(difference);
+  const kernel_decision own = given ? *given : kernel_decides_zero((lhs - rhs).evalm());
+  result.evidence["exact"] = {
+      {"statement", what},
+      {"ginac", ginac_zero ? "holds: lhs − rhs = 0 (normal form, every symbol free)" : "fails: lhs − rhs = " + text_of(difference) + " ≠ 0"},
+      {"own", (own.outcome == kernel_decision::result::zero      ? "holds: "
+               : own.outcome == kernel_decision::result::nonzero ? "fails: "
+                                                                 : "not applicable: ") +
+                  own.evidence}};
+  const bool own_decided = own.outcome != kernel_decision::result::not_applicable;
+  const bool own_zero = own.outcome == kernel_decision::result::zero;
+  if (kernels_disagree_if(result, own_decided && own_zero != ginac_zero, kernels_differ_on(what))) {
+  } else if (ginac_zero) {
+    result.outcome = verdict::holds;
+    if (!own_decided) result.note = "Our kernel could not decide it (" + own.evidence + "): GiNaC's proof alone.";
+  } else {
+    result.outcome = when_false;
+    result.correction = correction;
+    // The difference in the note when a reader can take it in; a long one (a 600-character
+    // polynomial) goes to the evidence, and the note says where.
+    const std::string shown = text_of(lhs) + " − (" + text_of(rhs) + ") = " + text_of(difference) + " ≠ 0";
+    if (shown.size() <= 240) {
+      result.note = "As printed: " + what + " is false; " + shown + ".";
+    } else {
+      result.note = "As printed: " + what + " is false: the two sides differ (lhs − rhs in the evidence, exact.difference).";
+      result.evidence["exact"]["difference"] = shown;
+    }
+    if (!own_decided) result.note += " Our kernel could not decide it (" + own.evidence + "): GiNaC's proof alone.";
+  }
+  result.printed = read.printed();
+  record_certificate(result, coq_certificate(call.claim_id, call.statement, {decided(goal, lhs, rhs)}));
+  return result;
+}
+
+void settle(claim_result& result, bool disagree, bool holds, const std::string& what, const std::string& correction) {
+  if (kernels_disagree_if(result, disagree, kernels_differ_on(what))) return;
+  result.outcome = holds ? verdict::holds : verdict::erratum;
+  if (!holds) result.correction = correction;
+}
+
+namespace {
+
+std::set<std::string> symbol_names(const ex& e) {
+  std::set<std::string> names;
+  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (GiNaC::is_a<GiNaC::symbol>(*it)) names.insert(GiNaC::ex_to<GiNaC::symbol>(*it).get_name());
+  }
+  return names;
+}
+
+std::optional<GiNaC::symbol> symbol_named(const ex& e, const std::string& name) {
+  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (GiNaC::is_a<GiNaC::symbol>(*it) && GiNaC::ex_to<GiNaC::symbol>(*it).get_name() == name) return GiNaC::ex_to<GiNaC::symbol>(*it);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<amendment> amendment_between(const std::string& where, const ex& printed, const ex& derived) {
+  if (GiNaC::normal(printed - derived).is_zero()) return std::nullopt;
+  const std::set<std::string> in_printed = symbol_names(printed), in_derived = symbol_names(derived);
+  std::vector<std::string> only_printed, only_derived;
+  std::set_difference(in_printed.begin(), in_printed.end(), in_derived.begin(), in_derived.end(), std::back_inserter(only_printed));
+  std::set_difference(in_derived.begin(), in_derived.end(), in_printed.begin(), in_printed.end(), std::back_inserter(only_derived));
+  // One symbol for another in a term of several (d^6q/dt^5 h^6/720): the symbol; in an expression
+  // of that one symbol ((gamma^2 - 1)/2), the whole expression, which is as short.
+  const std::string printed_tex = canonical_tex(printed), derived_tex = canonical_tex(derived);
+  if (only_printed.size() == 1 && only_derived.size() == 1 && in_printed.size() > 1) {
+    const GiNaC::symbol a = *symbol_named(printed, only_printed.front()), b = *symbol_named(derived, only_derived.front());
+    if (GiNaC::normal(printed.subs(a == b, GiNaC::subs_options::no_pattern) - derived).is_zero()) {
+      return amendment{where, canonical_tex(a), canonical_tex(b)};
+    }
+  }
+  if (!printed.is_zero() && printed_tex.size() > 40) {  // a long expression off by a factor: the factor (a short one is shown whole)
+    const ex ratio = GiNaC::normal(derived / printed);
+    if (GiNaC::is_a<GiNaC::numeric>(ratio)) return amendment{where, printed_tex, canonical_tex(ratio) + " \\times \\text{the printed}"};
+  }
+  return amendment{where, printed_tex, derived_tex};
+}
+
+amendment amendment_in_words(const std::string& where, const std::string& printed, const std::string& should_be) {
+  return amendment{where, printed, readable_math(should_be), false};
+}
+
+GiNaC::matrix as_square_matrix(const ex& e, const std::string& what) {
+  const ex m = e.evalm();
+  if (!GiNaC::is_a<GiNaC::matrix>(m)) throw std::invalid_argument(what + " is not a matrix");
+  const GiNaC::matrix& out = GiNaC::ex_to<GiNaC::matrix>(m);
+  if (out.rows() != out.cols()) throw std::invalid_argument(what + " is not square");
+  return out;
+}
+
+std::optional<three_term_coefficients> linear_three_term(const ex& scheme, const std::vector<GiNaC::symbol>& q) {
+  const three_term_coefficients c{GiNaC::diff(scheme, q[0]), GiNaC::diff(scheme, q[1]), GiNaC::diff(scheme, q[2])};
+  if (!GiNaC::normal(scheme - (c.previous * q[0] + c.current * q[1] + c.next * q[2])).is_zero()) return std::nullopt;
+  for (const GiNaC::symbol& state : q) {
+    for (const ex& coefficient : {c.previous, c.current, c.next}) {
+      if (GiNaC::normal(coefficient).has(state)) return std::nullopt;
+    }
+  }
+  return c;
+}
+
+bool reversible(const three_term_coefficients& terms, kernel_decision& own) {
+  own = kernel_decides_zero(terms.next - terms.previous);
+  return GiNaC::normal(terms.next - terms.previous).is_zero() && own.outcome != kernel_decision::result::nonzero;
+}
+
+ex monic_discriminant(const three_term_coefficients& terms) {
+  return GiNaC::normal((terms.current * terms.current - 4 * terms.previous * terms.next) / (terms.next * terms.next));
+}
+
+std::optional<GiNaC::numeric> index_offset(const std::string& name, const std::string& index) {
+  const std::size_t bar = name.find('_');
+  if (bar == std::string::npos || bar == 0 || name.compare(bar + 1, index.size(), index) != 0) return std::nullopt;
+  const std::string rest = name.substr(bar + 1 + index.size());
+  if (rest.empty()) return GiNaC::numeric(0);
+  const std::string digits = rest.substr(1);
+  if ((rest[0] != '+' && rest[0] != '-') || digits.empty() || digits.find_first_not_of("0123456789/") != std::string::npos ||
+      digits.front() == '/' || digits.back() == '/') {
+    return std::nullopt;
+  }
+  const GiNaC::numeric k(digits.c_str());
+  return rest[0] == '-' ? -k : k;
+}
+
+std::string reference_of(const shape_call& call, const std::string& parameter) {
+  // A reference as a reader names it, not in the claims file's syntax: "Phi3", "Phi3, equation 2,
+  // left side", "the formula at 'The discriminant'", "the display after 'with a matrix'".
+  const std::string& text = call.with.at(parameter).values.front();
+  formula_reference r;
+  try {
+    r = parse_reference(text);
+  } catch (const std::invalid_argument&) {
+    return text;
+  }
+  std::string out;
+  switch (r.where) {
+    case formula_reference::kind::labelled: out = r.key; break;
+    case formula_reference::kind::inline_formula: out = "the formula at '" + r.key + "'"; break;
+    case formula_reference::kind::display_after: out = "the display after '" + r.key + "'"; break;
+    case formula_reference::kind::literal: return text;
+  }
+  if (r.equation > 1) out += ", equation " + std::to_string(r.equation);
+  if (r.side == 1) out += ", left side";
+  else if (r.side > 1) out += ", side " + std::to_string(r.side);
+  return out;
+}
+
+}  // namespace simpson::verify::detail

@@ -1,0 +1,177 @@
+// The derivation shapes (shape_support.hpp): the discrete Euler-Lagrange equation, and the one-step map of a
+// discrete Lagrangian with its internal nodes eliminated.
+
+#include <simpson/shapes/shape_support.hpp>
+
+#include <simpson/prove/coq_export.hpp>
+
+#include <simpson/prove/printed_check_support.hpp>
+
+#include <fmt/format.h>
+
+#include <set>
+
+namespace simpson::verify::detail {
+
+using GiNaC::ex;
+
+namespace {
+
+/// The printed equation (= 0) against the derived one (= 0): the same when the printed one times a
+/// factor free of the unknowns (GiNaC finds it) is the derived one, an identity both kernels decide.
+claim_result same_equation_verdict(const shape_call& call, shape_reader& read, const std::string& goal, const std::string& what, const ex& printed,
+                                   const ex& derived, const std::vector<GiNaC::symbol>& unknowns) {
+  const auto factor = equation_factor(printed, derived, std::vector<ex>(unknowns.begin(), unknowns.end()));
+  if (factor) {
+    claim_result result = identity_verdict(call, read, goal, what, *factor * printed, derived, "");
+    result.evidence["exact"]["factor"] = text_of(*factor);
+    return result;
+  }
+  claim_result result;
+  result.outcome = verdict::erratum;
+  result.correction = "as derived: " + text_of(GiNaC::normal(derived)) + " = 0";
+  result.note = "As printed: no factor free of the unknowns makes the printed equation the derived one (GiNaC: the ratio depends on them); our kernel decides identities only, not this refutation.";
+  result.evidence["exact"] = {{"statement", what}, {"ginac", "fails: derived / printed depends on the unknowns"},
+                              {"own", "not applicable: a refutation of proportionality"}};
+  result.printed = read.printed();
+  result.certificate_missing = "a refuted proportionality: no identity to state";
+  return result;
+}
+
+}  // namespace
+
+claim_result euler_lagrange_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const ex printed = read.formula("printed"), lagrangian = read.formula("lagrangian");
+  const std::vector<GiNaC::symbol> nodes = read.symbols("nodes"), sequence = read.symbols("sequence");
+  if (nodes.size() != 2) throw std::invalid_argument("'nodes' names the Lagrangian's two arguments (q_0, q_1)");
+  if (sequence.size() != 3) throw std::invalid_argument("'sequence' names three consecutive states (q_{j-1}, q_j, q_{j+1})");
+  const auto at = [&](const ex& e, const ex& a, const ex& b) { return e.subs(GiNaC::lst{nodes[0] == a, nodes[1] == b}); };
+  // D_2 L(q_{j-1}, q_j) + D_1 L(q_j, q_{j+1}) = 0.
+  const ex derived = at(lagrangian.diff(nodes[1]), sequence[0], sequence[1]) + at(lagrangian.diff(nodes[0]), sequence[1], sequence[2]);
+  const std::string what = fmt::format("({}) = 0 is the discrete Euler-Lagrange equation of ({})", reference_of(call, "printed"),
+                                       reference_of(call, "lagrangian"));
+  return same_equation_verdict(call, read, "euler_lagrange", what, printed, derived, sequence);
+}
+
+/// The printed equation (= 0) is the stationarity condition d function / d variable = 0 (an internal
+/// node's equation), up to a factor free of the unknowns.
+claim_result stationary_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const ex printed = read.formula("printed"), function = read.formula("function");
+  const GiNaC::symbol variable = read.symbols("variable").front();
+  const std::string what = fmt::format("({}) = 0 is d({})/d{} = 0", reference_of(call, "printed"), reference_of(call, "function"), variable.get_name());
+  return same_equation_verdict(call, read, "stationary", what, printed, GiNaC::diff(function, variable), read.symbols("unknowns"));
+}
+
+/// A printed system in the states and momenta of one step, each equation's sides equal once the
+/// momenta are the discrete Legendre transforms of the Lagrangian on that step, p_j = −D_1 L(q_j,
+/// q_{j+1}) and p_{j+1} = D_2 L(q_j, q_{j+1}) (the paper prints p_{j+1} and says "an analogous
+/// relation for p_j"): equal-sides with them put in.
+claim_result discrete_momenta_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const std::vector<referenced_formula> equations = read.equations("equations");
+  const ex lagrangian = read.formula("lagrangian");
+  const std::vector<GiNaC::symbol> nodes = read.symbols("nodes"), at = read.symbols("at"), momenta = read.symbols("momenta");
+  const GiNaC::exmap on_step{{nodes[0], at[0]}, {nodes[1], at[1]}};
+  // In normal form: the derivatives as written would cancel against the printed sides term by term
+  // (GiNaC's evaluation), leaving our kernel and Coq a 0 to check.
+  const ex left = GiNaC::normal(-lagrangian.diff(nodes[0]).subs(on_step, GiNaC::subs_options::no_pattern));
+  const ex right = GiNaC::normal(lagrangian.diff(nodes[1]).subs(on_step, GiNaC::subs_options::no_pattern));
+  const GiNaC::exmap given{{momenta[0], left}, {momenta[1], right}};
+  return equal_sides_verdict(call, read, equations, given,
+                             fmt::format(", with {} = -D_1 L({}, {}) = {} and {} = D_2 L({}, {}) = {}", momenta[0].get_name(), at[0].get_name(), at[1].get_name(),
+                                         text_of(left), momenta[1].get_name(), at[0].get_name(), at[1].get_name(), text_of(right)));
+}
+
+/// The one-step map of a discrete Lagrangian L(q_0, q_1) of a linear system, derived: each internal
+/// node eliminated by its equation D_{q_m} L = 0, then p_0 = −D_1 L solved for q_1 and p_1 = D_2 L,
+/// as a matrix in (q_0, p_0), or in (p_0, q_0) when the record's `order` says "p q"; compared with
+/// the printed map in both kernels.
+claim_result discrete_map_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const GiNaC::matrix printed = as_square_matrix(read.formula("map"), reference_of(call, "map"));
+  const ex lagrangian = read.formula("lagrangian");
+  const std::vector<GiNaC::symbol> nodes = read.symbols("nodes"), momenta = read.symbols("momenta");
+  const std::vector<GiNaC::symbol> internal = read.has("internal") ? read.symbols("internal") : std::vector<GiNaC::symbol>{};
+  const auto no_map = [&](const std::string& why) {
+    claim_result result;
+    result.outcome = verdict::undecided;  // no map derived: the shape's limit
+    result.note = why;
+    result.printed = read.printed();
+    result.certificate_missing = "no map derived";
+    return result;
+  };
+  const auto not_linear = [&](const std::string& step) {
+    return no_map("The shape derives the map of a linear system: " + step + " is not linear in its unknowns.");
+  };
+  ex reduced = lagrangian;
+  if (!internal.empty()) {
+    GiNaC::lst equations, unknowns;
+    for (const GiNaC::symbol& q : internal) {
+      equations.append(lagrangian.diff(q) == 0);
+      unknowns.append(q);
+    }
+    ex solution;
+    try {
+      solution = GiNaC::lsolve(equations, unknowns);
+    } catch (const std::exception&) {
+      return not_linear("the internal nodes' equations");
+    }
+    if (solution.nops() != internal.size()) return not_linear("the internal nodes' equations");
+    reduced = lagrangian.subs(solution);
+  }
+  // p_0 = −D_1 L(q_0, q_1), solved for q_1; then p_1 = D_2 L.
+  ex q1;
+  try {
+    // GiNaC's lsolve of one equation in one symbol returns the value itself; of lists, a list of
+    // relations, empty when there is no unique solution.
+    const ex solved = GiNaC::lsolve(GiNaC::lst{momenta[0] == -reduced.diff(nodes[0])}, GiNaC::lst{nodes[1]});
+    if (solved.nops() != 1 || !GiNaC::is_a<GiNaC::relational>(solved.op(0))) return not_linear("p_0 = -D_1 L");
+    q1 = GiNaC::normal(solved.op(0).rhs());
+  } catch (const std::exception& e) {
+    return not_linear(std::string("p_0 = -D_1 L (") + e.what() + ")");
+  }
+  const ex p1 = GiNaC::normal(reduced.diff(nodes[1]).subs(nodes[1] == q1));
+  GiNaC::matrix derived(2, 2);
+  const ex state[2] = {nodes[0], momenta[0]};
+  for (unsigned c = 0; c < 2; ++c) {
+    derived(0, c) = GiNaC::normal(q1.diff(GiNaC::ex_to<GiNaC::symbol>(state[c])));
+    derived(1, c) = GiNaC::normal(p1.diff(GiNaC::ex_to<GiNaC::symbol>(state[c])));
+  }
+  // Linear: nothing of the state is left in the matrix; and no other symbol the document declares
+  // real (a node left free: an internal node not named in `internal`).
+  std::set<std::string> real;
+  if (call.declared->complete) real = call.declared->real;
+  for (unsigned r = 0; r < 2; ++r) {
+    for (unsigned c = 0; c < 2; ++c) {
+      if (derived(r, c).has(nodes[0]) || derived(r, c).has(momenta[0])) return not_linear("the map");
+      for (const std::string& name : symbol_names(derived(r, c))) {
+        if (real.count(name)) {
+          return no_map("The derived map depends on " + name +
+                        ", which the document declares real (a state, not a parameter): an internal node left free? Name it in 'internal'.");
+        }
+      }
+    }
+  }
+  // The printed map's state order: (q, p) as derived, or (p, q) (rows and columns swapped).
+  const bool momentum_first = read.has("order") && call.with.at("order").values.front() == "p q";
+  if (momentum_first) derived = GiNaC::matrix{{derived(1, 1), derived(1, 0)}, {derived(0, 1), derived(0, 0)}};
+  const std::string what = fmt::format("({}) is the one-step map of ({}), in ({})", reference_of(call, "map"), reference_of(call, "lagrangian"),
+                                       momentum_first ? "p, q" : "q, p");
+  claim_result result = identity_verdict(call, read, "printed", what, ex(printed), ex(derived),
+                                         fmt::format("as derived from ({}): ({}) = {}", reference_of(call, "lagrangian"), reference_of(call, "map"),
+                                                     text_of(ex(derived))));
+  if (result.outcome == verdict::erratum) result.corrected_formulas.push_back(read.correction_of("map", ex(derived)));
+  result.evidence["exact"]["derivation"] = {{"q_1", text_of(q1)}, {"p_1", text_of(p1)},
+                                            {"internal_nodes", internal.empty() ? std::string("none") : std::to_string(internal.size()) + " eliminated"}};
+  // Coq is also told the derived map's defining property, which "printed = derived" leaves to GiNaC's
+  // normal form: with q_1 from it, the momenta of the (reduced) Lagrangian are p_0 and its p_1.
+  record_certificate(result, coq_certificate(call.claim_id, call.statement,
+                                             {decided("printed", ex(printed), ex(derived)),
+                                              decided("derived_momentum_left", -reduced.diff(nodes[0]).subs(nodes[1] == q1), momenta[0]),
+                                              decided("derived_momentum_right", reduced.diff(nodes[1]).subs(nodes[1] == q1), p1)}));
+  return result;
+}
+
+}  // namespace simpson::verify::detail

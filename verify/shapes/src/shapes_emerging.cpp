@@ -1,0 +1,120 @@
+// A condition a text says "emerges" from a formula (the stability condition from the pole of q_m):
+// whether that argument reaches it. See shape_support.hpp.
+
+#include <simpson/shapes/shape_support.hpp>
+
+#include <simpson/shapes/one_variable.hpp>
+#include <simpson/prove/printed_check_support.hpp>
+#include <simpson/shapes/stability_regions.hpp>
+
+#include <simpson/verify/quoted_words.hpp>
+
+#include <fmt/format.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace simpson::verify::detail {
+
+using GiNaC::ex;
+
+namespace {
+
+/// A positive root of g, exact, as a value of v (v = √x when g is in x = v²); none when it is only enclosed.
+std::optional<ex> value_of(const one_variable& g, const positive_root& r) {
+  if (!r.exact()) return std::nullopt;
+  const ex x = as_numeric(r.low);
+  return g.in_square ? ex(GiNaC::sqrt(x)) : x;
+}
+
+/// Two positive values equal: compared by their squares (GiNaC leaves √8 and 2√2 apart).
+bool same_value(const std::optional<ex>& a, const std::optional<ex>& b) {
+  return a && b && GiNaC::normal(GiNaC::expand(*a * *a - *b * *b)).is_zero();
+}
+
+}  // namespace
+
+/// "A stability condition is naturally emerging: 0 < v < c", after a formula: the argument the text
+/// gives is the formula's first pole in v. It reaches the condition only when the scheme's stable
+/// set for v > 0 (root condition, stability_regions.hpp) is exactly (0, c) and c is that pole: then
+/// it holds. When c is the pole but the scheme is stable elsewhere too (a band beyond the pole), the
+/// pole does not bound stability: the condition is right (c ends the first stable band) but its
+/// argument does not reach it, a derivation gap (the record's class), corrected by the stable set.
+claim_result emerging_condition_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const referenced_formula condition = read.raw("condition");
+  const ex formula = read.formula("formula");
+  const ex v = read.formula("variable");
+  const ex scheme = read.formula("scheme");
+  const std::vector<GiNaC::symbol> q = read.symbols("sequence");
+  const quoted_sentence said = quote(ctx, call.with.at("sentence").values.front());
+  const ex high = interval_end(condition, v, read.reading());
+  const std::string formula_ref = reference_of(call, "formula"), scheme_ref = reference_of(call, "scheme"), var = text_of(v);
+  claim_result result;
+  result.printed = read.printed();
+  result.certificate_missing = "an argument's reach (where a pole lies against the stable set): the stable bands' signs are certified by the stability claims";
+  const ex denominator = GiNaC::denom(GiNaC::normal(formula));
+  const std::optional<one_variable> poles = in_variable(denominator, v);
+  if (!poles) {
+    result.outcome = verdict::undecided;
+    result.note = fmt::format("The denominator {} of ({}) is not a function of {} alone.", text_of(denominator), formula_ref, var);
+    return result;
+  }
+  const std::optional<reversible_scheme> premise = reversible_premise(scheme, q, v, scheme_ref, result);
+  if (!premise) return result;
+  const one_variable& g = *premise->g;
+  std::vector<std::string> bands;
+  std::optional<ex> first_band_end;
+  bool stable_beyond = false;
+  for (const discriminant_region& region : regions_of(g)) {
+    if (!region.negative) continue;
+    bands.push_back(region.text());
+    if (bands.size() == 1 && region.from == 0 && !region.last) first_band_end = value_of(g, g.ends[region.index]);
+    if (bands.size() > 1 || region.from != 0) stable_beyond = true;
+  }
+  const std::optional<ex> pole = poles->ends.empty() ? std::nullopt : value_of(*poles, poles->ends.front());
+  const bool end_is_pole = same_value(pole, GiNaC::normal(high));
+  const bool end_is_band = same_value(first_band_end, GiNaC::normal(high));
+  const std::string stable_set = bands.empty() ? "no v > 0" : fmt::format("{} in {}", var, fmt::join(bands, " and "));
+  result.evidence["exact"] = {
+      {"statement", fmt::format("the condition 0 < {} < {} follows from the pole of ({})", var, text_of(high), formula_ref)},
+      {"stated", said.words("emerges")},
+      {"poles", [&] {
+         json all = json::array();
+         for (const positive_root& e : poles->ends) all.push_back(poles->text(e));
+         return all;
+       }()},
+      {"denominator", text_of(denominator)},
+      {"stable", stable_set + " (the root condition on (" + scheme_ref + "): its discriminant " + text_of(premise->delta) + " negative)"},
+      {"own", "holds: the poles and the discriminant's roots by Sturm sequences, compared exactly"},
+      {"ginac", "holds: the denominator in normal form and the discriminant as functions of " + var + " alone"}};
+  if (!end_is_pole) {
+    result.outcome = verdict::erratum;
+    result.correction = fmt::format("the first pole of ({}) is {}; the scheme ({}) is stable for {}", formula_ref,
+                                    pole ? poles->text(poles->ends.front()) : std::string("none"), scheme_ref, stable_set);
+    result.note = fmt::format("As printed: the bound {} is not where ({}) has its first pole.", text_of(high), formula_ref);
+    result.amendments.push_back(amendment_in_words("the bound's origin", "the pole of (" + formula_ref + ")", "the stable set: " + stable_set));
+    return result;
+  }
+  if (end_is_band && !stable_beyond) {
+    result.outcome = verdict::holds;
+    result.note = fmt::format("The pole of ({}) at {} = {} ends the one stable band: the scheme is stable for {}.", formula_ref, var, text_of(high), stable_set);
+    return result;
+  }
+  result.outcome = verdict::erratum;
+  result.correction = fmt::format("The condition is the first stable band's, from the root condition on ({}), stable for {}; the pole of ({}) at {} = {} "
+                                  "only makes q_m undefined there{}",
+                                  scheme_ref, stable_set, formula_ref, var, text_of(high),
+                                  stable_beyond ? ", and the scheme is stable again beyond it" : "");
+  result.note = fmt::format("As printed, the condition '{}' from the pole of ({}): a pole says where the formula is undefined, not where the scheme "
+                            "is stable. {}",
+                            said.words("emerges"), formula_ref,
+                            stable_beyond ? fmt::format("Beyond the pole the scheme is stable again ({}): the pole does not bound stability.", stable_set)
+                                          : "The pole is not the end of the stable band.");
+  result.amendments.push_back(amendment_in_words("the condition's derivation", said.words("emerges") + " (from the pole of " + formula_ref + ")",
+                                                 "from the root condition (the discriminant): stable for " + stable_set));
+  return result;
+}
+
+}  // namespace simpson::verify::detail

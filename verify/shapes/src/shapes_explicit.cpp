@@ -1,0 +1,274 @@
+// The explicit-map shape (shape_support.hpp): whether a printed one-step map is explicit, read as the
+// field defines it, against the word a sentence uses.
+
+#include <simpson/shapes/shape_support.hpp>
+
+#include <simpson/prove/coq_export.hpp>
+#include <simpson/prove/printed_check_support.hpp>
+
+#include <simpson/verify/sentence_holes.hpp>
+#include <simpson/verify/quoted_words.hpp>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace simpson::verify::detail {
+
+using GiNaC::ex;
+
+namespace {
+
+/// Δ_δ^k e at the step: Σ_i (−1)^(k−i) C(k, i) e(step + i δ), δ a fresh symbol. Zero exactly when e
+/// is a polynomial of degree < k in the step.
+ex finite_difference(const ex& e, const GiNaC::symbol& step, const GiNaC::symbol& delta, unsigned k) {
+  ex sum = 0;
+  for (unsigned i = 0; i <= k; ++i) {
+    const ex shifted = e.subs(GiNaC::exmap{{step, step + i * delta}}, GiNaC::subs_options::no_pattern);
+    sum += ((k - i) % 2 ? -1 : 1) * GiNaC::binomial(GiNaC::numeric(k), GiNaC::numeric(i)) * shifted;
+  }
+  return sum;
+}
+
+std::vector<GiNaC::symbol> symbols_of(const ex& e) {
+  std::vector<GiNaC::symbol> out;
+  std::set<std::string> seen;
+  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (GiNaC::is_a<GiNaC::symbol>(*it) && seen.insert(GiNaC::ex_to<GiNaC::symbol>(*it).get_name()).second) out.push_back(GiNaC::ex_to<GiNaC::symbol>(*it));
+  }
+  return out;
+}
+
+std::vector<ex> terms_of(const ex& polynomial) {
+  const ex expanded = GiNaC::expand(polynomial);
+  if (!GiNaC::is_a<GiNaC::add>(expanded)) return {expanded};
+  return std::vector<ex>(expanded.begin(), expanded.end());
+}
+
+/// Whether a polynomial is positive wherever the `positive` symbols are: every coefficient positive,
+/// and each symbol of odd degree in a term among the positive ones (a term is then positive, or a
+/// square times a positive number). A sufficient criterion; false says only that it does not apply.
+bool positive_by_its_terms(const ex& polynomial, const std::set<std::string>& positive) {
+  for (const ex& term : terms_of(polynomial)) {
+    ex coefficient = term;
+    for (const GiNaC::symbol& s : symbols_of(term)) {
+      const int power = term.degree(s);
+      if (power % 2 != 0 && !positive.count(s.get_name())) return false;
+      coefficient = coefficient.coeff(s, power);
+    }
+    if (!GiNaC::is_a<GiNaC::numeric>(coefficient) || !GiNaC::ex_to<GiNaC::numeric>(coefficient).is_positive()) return false;
+  }
+  return true;
+}
+
+/// The square roots of each term's even part (h ω for 2 h² ω²): nra is told 0 <= each squared.
+std::vector<ex> square_hints(const ex& polynomial) {
+  std::vector<ex> hints;
+  for (const ex& term : terms_of(polynomial)) {
+    ex root = 1;
+    for (const GiNaC::symbol& s : symbols_of(term)) root *= GiNaC::pow(s, term.degree(s) / 2);
+    if (GiNaC::is_a<GiNaC::numeric>(root)) continue;
+    if (std::none_of(hints.begin(), hints.end(), [&](const ex& h) { return (h - root).is_zero(); })) hints.push_back(root);
+  }
+  return hints;
+}
+
+}  // namespace
+
+/// "is an explicit scheme", as the field defines it: y_{j+1} follows from y_j with no equation to
+/// solve (Hairer, Nørsett and Wanner, I, II.1). On a linear problem the one-step map of such a
+/// scheme is a polynomial in the step (a finite chain of force evaluations and additions); a
+/// denominator that depends on the step is the inverse of a step equation that was solved. Decided
+/// entry by entry: GiNaC's normal form (its denominator free of the step), and our kernel's finite
+/// difference Δ^k in the step, zero exactly for a polynomial of degree < k (k one more than the
+/// numerator's degree). The sentence's hole {kind} says "explicit" or "implicit". The denominators'
+/// positivity (every step, the `positive` symbols positive) is what the words can mean instead: the
+/// map in closed form and regular; Coq checks each denominator's sign.
+claim_result explicit_map_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const GiNaC::matrix map = as_square_matrix(read.formula("map"), reference_of(call, "map"));
+  const GiNaC::symbol step = read.symbols("step").front();
+  std::set<std::string> positive{step.get_name()};
+  std::vector<ex> positive_symbols{step};
+  if (read.has("positive")) {
+    for (const GiNaC::symbol& s : read.symbols("positive")) {
+      if (positive.insert(s.get_name()).second) positive_symbols.push_back(s);
+    }
+  }
+  const quoted_sentence said = quote(ctx, call.with.at("sentence").values.front());
+  const std::string stated = said.choice("kind", hole_named("kind").phrases);
+  const GiNaC::symbol delta("delta_step");
+  bool polynomial = true, own_polynomial = true, own_decided = true, regular = true;
+  std::vector<std::string> denominators, own_evidence;
+  std::vector<proof_goal> goals;
+  GiNaC::exmap inside;
+  for (const ex& s : positive_symbols) inside[s] = 1;
+  for (unsigned r = 0; r < map.rows(); ++r) {
+    for (unsigned c = 0; c < map.cols(); ++c) {
+      const ex entry = map(r, c);
+      const ex normal = GiNaC::normal(entry);
+      const ex den = GiNaC::denom(normal);
+      const bool entry_polynomial = !den.has(step);
+      polynomial = polynomial && entry_polynomial;
+      const unsigned k = static_cast<unsigned>(GiNaC::numer(normal).degree(step)) + 1;
+      const kernel_decision own = kernel_decides_zero(finite_difference(entry, step, delta, k));
+      own_decided = own_decided && own.outcome != kernel_decision::result::not_applicable;
+      own_polynomial = own_polynomial && own.outcome == kernel_decision::result::zero;
+      own_evidence.push_back(fmt::format("entry ({}, {}): Δ^{} in {} {}", r + 1, c + 1, k, step.get_name(),
+                                         own.outcome == kernel_decision::result::zero      ? "is zero (" + own.evidence + ")"
+                                         : own.outcome == kernel_decision::result::nonzero ? "is not zero (" + own.evidence + ")"
+                                                                                           : "not decided (" + own.evidence + ")"));
+      if (GiNaC::is_a<GiNaC::numeric>(den)) continue;
+      // Each denominator once, without its content as a polynomial in the step (the factors free of
+      // it): 2 h² ω² + 48, 12 h² ω² + 288 and m h² ω² + 24 m are one.
+      const ex primitive = GiNaC::factor(GiNaC::expand(den).primpart(step));
+      const std::string text = text_of(primitive);
+      if (std::find(denominators.begin(), denominators.end(), text) != denominators.end()) continue;
+      denominators.push_back(text);
+      const bool positive_denominator = positive_by_its_terms(primitive, positive);
+      regular = regular && positive_denominator;
+      if (positive_denominator) {
+        goals.push_back(sign_goal(fmt::format("denominator_{}", denominators.size()), primitive, 1, positive_symbols, inside));
+        goals.back().squares = square_hints(primitive);
+      }
+    }
+  }
+  claim_result result;
+  result.printed = read.printed();
+  const std::string map_ref = reference_of(call, "map");
+  result.evidence["exact"] = {
+      {"statement", fmt::format("every entry of ({}) is a polynomial in {} (explicit: no step equation solved)", map_ref, step.get_name())},
+      {"ginac", polynomial ? "holds: no denominator depends on " + step.get_name()
+                           : fmt::format("fails: the denominators {} depend on {}", fmt::join(denominators, ", "), step.get_name())},
+      {"own", own_decided ? fmt::format("{}: {}", own_polynomial ? "holds" : "fails", fmt::join(own_evidence, "; "))
+                          : fmt::format("not applicable: {}", fmt::join(own_evidence, "; "))},
+      {"denominators", denominators},
+      {"regular", regular ? fmt::format("every denominator is positive for {} > 0 (its terms)", fmt::join(positive, ", "))
+                          : "not shown: a denominator's terms are not all positive"}};
+  result.evidence["stated"] = stated;
+  if (kernels_disagree_if(result, own_decided && own_polynomial != polynomial, kernels_differ_on("whether the map is a polynomial in the step"))) {
+    return result;
+  }
+  const std::string computed = polynomial ? fmt::format("The scheme is explicit: every entry of ({}) is a polynomial in {}", map_ref, step.get_name())
+                                          : fmt::format("The scheme is implicit as a method: the entries of ({}) have the denominator{} {} (up to "
+                                                        "factors free of {}), which depend{} on {}, and an explicit scheme's map on a linear problem is a "
+                                                        "polynomial in {}. A denominator in {} is what solving the step's equation leaves; on this linear "
+                                                        "problem that equation is linear and solved once, in closed form, not at each step",
+                                                        map_ref, denominators.size() == 1 ? "" : "s", fmt::join(denominators, ", "), step.get_name(),
+                                                        denominators.size() == 1 ? "s" : "", step.get_name(), step.get_name(), step.get_name());
+  if ((stated == "explicit") == polynomial) {
+    result.outcome = verdict::holds;
+    result.note = computed + ".";
+  } else {
+    result.outcome = verdict::erratum;
+    result.correction = computed + ".";
+    result.amendments.push_back(amendment_in_words(
+        "the scheme's kind", said.words("kind"),
+        polynomial ? "explicit: every entry of the map is a polynomial in " + step.get_name()
+                   : fmt::format("implicit as a method (the map's denominator{} {} depend{} on {}); on this linear problem, in closed form",
+                                 denominators.size() == 1 ? "" : "s", fmt::join(denominators, ", "), denominators.size() == 1 ? "s" : "", step.get_name())));
+    if (stated == "explicit" && regular) {
+      result.note = fmt::format("Wording: the map is in closed form and regular for every {} > 0 (its denominators are positive), which is what the "
+                                "words can mean; every linear one-step scheme is explicit in that sense.",
+                                step.get_name());
+    }
+  }
+  if (goals.empty()) {
+    result.certificate_missing = polynomial ? "no denominator depends on the step: nothing to certify" : "no denominator shown positive";
+  } else {
+    record_certificate(result, coq_certificate(call.claim_id, call.statement, goals));
+  }
+  return result;
+}
+
+}  // namespace simpson::verify::detail
+
+namespace simpson::verify::detail {
+
+/// "is explicit (implicit) for a general potential": what the scheme is with the document's
+/// functions left uninterpreted. A step computes the last state of the sequence; it does so in
+/// closed form when the scheme is linear in it, with a coefficient that does not vanish
+/// identically, and the state is never inside the argument of an uninterpreted function (q_{j+1}
+/// in V'((q_j + q_{j+1})/2) makes the step a nonlinear equation for a general V, whatever the
+/// harmonic case allows). GiNaC reads the structure and solves; our kernel decides that the
+/// solution satisfies the scheme (that identity is the Coq certificate). The sentence's hole {kind}
+/// says "explicit" or "implicit".
+claim_result explicit_scheme_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const ex scheme = read.formula("scheme");
+  const std::vector<GiNaC::symbol> sequence = read.symbols("sequence");
+  const GiNaC::symbol& next = sequence.back();
+  const quoted_sentence said = quote(ctx, call.with.at("sentence").values.front());
+  const std::string stated = said.choice("kind", hole_named("kind").phrases);
+  claim_result result;
+  result.printed = read.printed();
+  result.evidence["stated"] = stated;
+  const std::string scheme_ref = reference_of(call, "scheme"), state = next.get_name();
+  // Where the next state is an argument of an uninterpreted function.
+  std::vector<std::string> arguments_of;
+  for (auto it = scheme.preorder_begin(); it != scheme.preorder_end(); ++it) {
+    if (!is_reader_function(*it) || !it->has(next)) continue;
+    const std::string text = text_of(*it);
+    if (std::find(arguments_of.begin(), arguments_of.end(), text) == arguments_of.end()) arguments_of.push_back(text);
+  }
+  std::string computed, why;
+  std::optional<ex> solution;
+  if (!arguments_of.empty()) {
+    computed = "implicit";
+    why = fmt::format("{} is in the argument of {}: for a general function the step solves a nonlinear equation in it", state, fmt::join(arguments_of, ", "));
+  } else {
+    const ex normal = GiNaC::normal(scheme);
+    const ex numerator = GiNaC::numer(normal);
+    if (GiNaC::denom(normal).has(next)) {
+      computed = "implicit";
+      why = fmt::format("{} is in a denominator of the scheme: the step solves a nonlinear equation in it", state);
+    } else if (numerator.degree(next) == 0) {
+      result.outcome = verdict::undecided;
+      result.note = fmt::format("({}) does not involve {}: it computes no step.", scheme_ref, state);
+      result.certificate_missing = "no step to certify";
+      return result;
+    } else if (numerator.degree(next) > 1) {
+      computed = "implicit";
+      why = fmt::format("the scheme is of degree {} in {}: the step solves a polynomial equation", numerator.degree(next), state);
+    } else {
+      computed = "explicit";
+      solution = GiNaC::normal(-numerator.coeff(next, 0) / numerator.coeff(next, 1));
+      why = fmt::format("the scheme is linear in {}, never inside a function's argument: {} = {}", state, state, text_of(*solution));
+    }
+  }
+  json exact = {{"statement", fmt::format("({}) gives {} in closed form, its functions left general", scheme_ref, state)},
+                {"ginac", (computed == "explicit" ? "holds: " : "fails: ") + why}};
+  if (solution) {
+    const kernel_decision own = kernel_decides_zero(scheme.subs(GiNaC::exmap{{next, *solution}}, GiNaC::subs_options::no_pattern));
+    exact["own"] = own.outcome == kernel_decision::result::zero      ? fmt::format("holds: ({}) at {} = the solution is 0 ({})", scheme_ref, state, own.evidence)
+                   : own.outcome == kernel_decision::result::nonzero ? "contradicts GiNaC: " + own.evidence
+                                                                     : "not applicable: " + own.evidence;
+    if (own.outcome == kernel_decision::result::nonzero) {
+      result.evidence["exact"] = exact;
+      kernels_disagree_if(result, true, kernels_differ_on("the step's solution"));
+      return result;
+    }
+    record_certificate(result, coq_certificate(call.claim_id, call.statement,
+                                               {decided("solution", scheme.subs(GiNaC::exmap{{next, *solution}}, GiNaC::subs_options::no_pattern), 0)}));
+  } else {
+    exact["own"] = "not applicable: where the next state stands (a function's argument, a denominator, a power) is read from the formula's structure";
+    result.certificate_missing = "a structural fact (where the next state stands), no identity to certify";
+  }
+  result.evidence["exact"] = exact;
+  const std::string fact = fmt::format("The scheme is {}: {}", computed, why);
+  if (stated == computed) {
+    result.outcome = verdict::holds;
+    result.note = fact + ".";
+  } else {
+    result.outcome = verdict::erratum;
+    result.correction = fact + ".";
+  }
+  return result;
+}
+
+}  // namespace simpson::verify::detail

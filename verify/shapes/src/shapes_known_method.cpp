@@ -1,0 +1,154 @@
+// Whether a method a text presents as its own is a known one on its test problem, and whether the
+// text says so. See shape_support.hpp.
+
+#include <simpson/shapes/shape_support.hpp>
+
+#include <simpson/prove/coq_export.hpp>
+#include <simpson/prove/printed_check_support.hpp>
+
+#include <simpson/verify/paper_reading.hpp>
+#include <simpson/verify/prose_words.hpp>
+#include <simpson/verify/quoted_words.hpp>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+namespace simpson::verify::detail {
+
+using GiNaC::ex;
+
+namespace {
+
+/// A tableau argument as an s x s matrix of numbers, or a weights argument as a 1 x s row.
+GiNaC::matrix numeric_matrix(shape_reader& read, const std::string& parameter, unsigned rows, unsigned cols) {
+  const ex m = read.formula(parameter).evalm();
+  if (!GiNaC::is_a<GiNaC::matrix>(m)) throw std::invalid_argument("'" + parameter + "' is not a matrix");
+  const GiNaC::matrix& out = GiNaC::ex_to<GiNaC::matrix>(m);
+  if ((rows != 0 && out.rows() != rows) || (cols != 0 && out.cols() != cols)) {
+    throw std::invalid_argument(fmt::format("'{}' is {} x {}, not {} x {}", parameter, out.rows(), out.cols(), rows, cols));
+  }
+  for (unsigned r = 0; r < out.rows(); ++r) {
+    for (unsigned c = 0; c < out.cols(); ++c) {
+      if (!GiNaC::is_a<GiNaC::numeric>(out(r, c))) throw std::invalid_argument(fmt::format("'{}' has an entry that is not a number", parameter));
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+/// The one-step map of a partitioned Runge-Kutta method (tableau_position for q, tableau_momentum
+/// for p, common weights) on H = p^2/(2m) + m omega^2 q^2/2, its stage equations solved in GiNaC,
+/// against the printed map (in the state's order): the same map, entry by entry in both kernels (a
+/// Coq lemma each), makes the printed scheme that method on this problem. The text is then judged on
+/// whether its prose names the method (`names`, any of them): presented as its own without the
+/// name, a finding (the record's class: naming). Not the same map: the method is not that one here.
+claim_result known_method_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const GiNaC::matrix printed = as_square_matrix(read.formula("map"), reference_of(call, "map"));
+  const std::vector<GiNaC::symbol> state = read.symbols("state");
+  const GiNaC::symbol q = read.symbols("position").front();
+  const GiNaC::symbol h = read.symbols("step").front();
+  const ex omega = read.formula("frequency"), m = read.formula("mass");
+  const GiNaC::matrix a = numeric_matrix(read, "tableau_position", 0, 0);
+  const unsigned s = a.rows();
+  const GiNaC::matrix a_hat = numeric_matrix(read, "tableau_momentum", s, s), b = numeric_matrix(read, "weights", 1, s);
+  const quoted_sentence said = quote(ctx, call.with.at("sentence").values.front());
+  const std::string method = call.with.at("method").values.front();
+  if (printed.rows() != 2 || state.size() != 2) throw std::invalid_argument(reference_of(call, "map") + " is not the 2 x 2 map of one degree of freedom");
+  const bool q_first = state[0].get_name() == q.get_name();
+  // The stages Q_i = q0 + h sum_j a_ij P_j/m, P_i = p0 - h sum_j â_ij m omega^2 Q_j, solved for (q0, p0) symbols.
+  const GiNaC::symbol q0("known_q0"), p0("known_p0");
+  std::vector<GiNaC::symbol> Q, P;
+  GiNaC::lst equations, unknowns;
+  for (unsigned i = 0; i < s; ++i) {
+    Q.emplace_back("known_Q" + std::to_string(i));
+    P.emplace_back("known_P" + std::to_string(i));
+  }
+  for (unsigned i = 0; i < s; ++i) {
+    ex sum_q = 0, sum_p = 0;
+    for (unsigned j = 0; j < s; ++j) {
+      sum_q += a(i, j) * P[j] / m;
+      sum_p += a_hat(i, j) * m * omega * omega * Q[j];
+    }
+    equations.append(Q[i] == q0 + h * sum_q);
+    equations.append(P[i] == p0 - h * sum_p);
+    unknowns.append(Q[i]);
+    unknowns.append(P[i]);
+  }
+  const ex solved = GiNaC::lsolve(equations, unknowns);
+  ex q1 = q0, p1 = p0;
+  for (unsigned i = 0; i < s; ++i) {
+    const ex q_stage = ex(Q[i]).subs(solved), p_stage = ex(P[i]).subs(solved);
+    q1 += h * b(0, i) * p_stage / m;
+    p1 -= h * b(0, i) * m * omega * omega * q_stage;
+  }
+  const ex q1n = GiNaC::normal(q1), p1n = GiNaC::normal(p1);
+  // The method's map in the state's order.
+  GiNaC::matrix known(2, 2);
+  const ex first = q_first ? q1n : p1n, second = q_first ? p1n : q1n;
+  const GiNaC::symbol& x0 = q_first ? q0 : p0;
+  const GiNaC::symbol& y0 = q_first ? p0 : q0;
+  known(0, 0) = GiNaC::normal(first.coeff(x0, 1).subs(y0 == 0));
+  known(0, 1) = GiNaC::normal(first.coeff(y0, 1).subs(x0 == 0));
+  known(1, 0) = GiNaC::normal(second.coeff(x0, 1).subs(y0 == 0));
+  known(1, 1) = GiNaC::normal(second.coeff(y0, 1).subs(x0 == 0));
+  bool ginac_same = true, own_contradicts = false, own_decided = true;
+  std::vector<proof_goal> goals;
+  json entries = json::array();
+  for (unsigned r = 0; r < 2; ++r) {
+    for (unsigned c = 0; c < 2; ++c) {
+      const bool same = GiNaC::normal(printed(r, c) - known(r, c)).is_zero();
+      const kernel_decision own = kernel_decides_zero(printed(r, c) - known(r, c));
+      ginac_same = ginac_same && same;
+      own_decided = own_decided && own.outcome != kernel_decision::result::not_applicable;
+      own_contradicts = own_contradicts || (own.outcome != kernel_decision::result::not_applicable && (own.outcome == kernel_decision::result::zero) != same);
+      entries.push_back({{"entry", fmt::format("({}, {})", r + 1, c + 1)}, {"printed", text_of(printed(r, c))}, {"method", text_of(known(r, c))},
+                         {"same", same}, {"own", own.evidence}});
+      goals.push_back(decided(fmt::format("entry_{}{}", r + 1, c + 1), printed(r, c), known(r, c)));
+    }
+  }
+  // The names the prose carries (a citation's key is no name: without a bibliography it says nothing).
+  std::vector<std::string> named;
+  const std::vector<std::string> names = call.with.at("names").values;
+  for (const prose_word& w : prose_words(paper_of(ctx).source, document_of(ctx))) {
+    if (std::find(names.begin(), names.end(), w.word) != names.end() && std::find(named.begin(), named.end(), w.word) == named.end()) named.push_back(w.word);
+  }
+  claim_result result;
+  result.printed = read.printed();
+  result.evidence["exact"] = {{"statement", fmt::format("({}) is {}'s map on q'' = -omega^2 q", reference_of(call, "map"), method)},
+                              {"entries", entries},
+                              {"ginac", ginac_same ? "holds: every entry equal in normal form (the stage equations solved by lsolve)"
+                                                   : "fails: an entry differs in normal form"},
+                              {"own", own_contradicts ? "contradicts GiNaC on an entry"
+                                      : own_decided   ? std::string(ginac_same ? "holds" : "fails") + ": each entry's difference decided on a grid"
+                                                      : "not applicable for an entry: GiNaC's proof alone"}};
+  result.evidence["stated"] = said.words("novelty");
+  result.evidence["names"] = {{"looked_for", names}, {"found", named}};
+  if (kernels_disagree_if(result, own_contradicts, kernels_differ_on("an entry of the map"))) return result;
+  if (!ginac_same) {
+    result.outcome = verdict::holds;
+    result.note = fmt::format("The printed map is not {}'s on this problem: that method is not what the text presents.", method);
+    result.certificate_missing = "a difference of maps: nothing to certify";
+    return result;
+  }
+  record_certificate(result, coq_certificate(call.claim_id, call.statement, goals));
+  if (!named.empty()) {
+    result.outcome = verdict::holds;
+    result.note = fmt::format("The printed map is {}'s on this problem, and the text names it ({}).", method, fmt::format("{}", fmt::join(named, ", ")));
+    return result;
+  }
+  result.outcome = verdict::erratum;
+  result.correction = fmt::format("On this problem the printed map ({}) is {}'s, proved entry by entry: the text should name it and cite its prior work",
+                                  reference_of(call, "map"), method);
+  result.note = fmt::format("The text presents '{}' as its own and never names {} ({} looked for in its prose; its citations cannot be resolved "
+                            "without a bibliography, so whether one of them covers it is not known).",
+                            said.words("novelty"), method, fmt::format("{}", fmt::join(names, ", ")));
+  result.amendments.push_back(amendment_in_words("what the method is", said.words("novelty"), method + ", on this problem: known prior work, to be named and cited"));
+  return result;
+}
+
+}  // namespace simpson::verify::detail
