@@ -118,6 +118,22 @@ TEST(ReferenceReport, IsOneRunFromACleanTree) {
   EXPECT_NE(md.find("**" + report["summary"]["line"].get<std::string>() + "**"), std::string::npos) << "report.md is of another run";
 }
 
+// The stiff scene's committed report (reports/reference/stiff), from which README.md's and
+// docs/findings.md's sentence on the FPU chain is generated (scripts/readme-counts): made by the same
+// `make reference` as the paper's, from the same clean commit, and what this build computes.
+TEST(ReferenceReport, StiffSceneIsOfThePapersCommitAndReproduced) {
+  const std::filesystem::path root = std::filesystem::path(SIMPSON_SOURCE_DIR) / "reports" / "reference";
+  const json stiff = load_report(root / "stiff"), paper = load_report(root / "paper");
+  EXPECT_FALSE(stiff["environment"]["git_dirty"].get<bool>()) << "regenerate it with make reference, from a clean tree";
+  EXPECT_EQ(stiff["environment"]["git_commit"], paper["environment"]["git_commit"]) << "make reference writes both: one was not regenerated";
+#ifndef SIMPSON_SANITIZED  // about 20 s in Release; the sanitizer build runs the fpu section at the quick size (Experiments.Fpu*)
+  const run_record r = run(load_scene("stiff"));
+  const json expected = test::without_volatile(json::parse(read(root / "stiff" / "report.json")));
+  const json actual = test::without_volatile(report_json(r));
+  EXPECT_EQ(expected["experiments"].dump(2), actual["experiments"].dump(2));
+#endif
+}
+
 /// Whether `text` is valid UTF-8 (a CI log that is not is shown as binary by grep).
 bool valid_utf8(const std::string& text) {
   for (std::size_t k = 0; k < text.size();) {

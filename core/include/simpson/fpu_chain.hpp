@@ -48,6 +48,29 @@ struct fpu_potential {
     }
     return g;
   }
+  // The split a trigonometric integrator takes (trigonometric_step.hpp): V = ½ ω² qᵀPq + U(q), the
+  // stiff springs' part with P the projector on their elongations, P = Σ_i ½ (e_{2i} − e_{2i−1})(e_{2i} − e_{2i−1})ᵀ,
+  // and U the soft cubic springs'.
+  const Real& stiff_frequency() const { return omega; }
+  dense_vector<Real> stiff_projection(const dense_vector<Real>& v) const {
+    dense_vector<Real> out = dense_vector<Real>::Zero(v.size());
+    for (int i = 1; i <= m; ++i) {
+      const Real half_difference = (v(2 * i - 1) - v(2 * i - 2)) / 2;
+      out(2 * i - 1) = half_difference;
+      out(2 * i - 2) = -half_difference;
+    }
+    return out;
+  }
+  /// ∇U, the soft springs' part of ∇V.
+  dense_vector<Real> slow_gradient(const dense_vector<Real>& q) const {
+    dense_vector<Real> g = dense_vector<Real>::Zero(2 * m);
+    for (int i = 0; i <= m; ++i) {
+      const Real d = at(q, 2 * i + 1) - at(q, 2 * i), f = 4 * d * d * d;
+      if (2 * i + 1 <= 2 * m) g(2 * i) += f;  // q_{2i+1}
+      if (2 * i >= 1) g(2 * i - 1) -= f;      // q_{2i}
+    }
+    return g;
+  }
   dense_matrix<Real> hessian(const dense_vector<Real>& q) const {
     dense_matrix<Real> H = dense_matrix<Real>::Zero(2 * m, 2 * m);
     const auto couple = [&H](int a, int b, const Real& k) {  // k (e_a − e_b)(e_a − e_b)ᵀ, 1-based, 0 = wall

@@ -234,7 +234,7 @@ experiment_settings parse_experiments(const nlohmann::json& doc, const std::stri
   if (doc.contains("fpu")) {
     const section_reader r(origin, "fpu", doc["fpu"],
                            {"m", "omega", "omega_h", "end_time", "scan_from", "scan_to", "scan_step", "scan_end_time", "samples",
-                            "exchange_time", "reference_omega_h", "resonances"});
+                            "exchange_time", "reference_omega_h", "resonances", "equal_cost_omega_h"});
     fpu_settings f;
     if (r.has("m")) f.m = static_cast<int>(r.integer("m", 1, 20));
     if (r.has("omega")) f.omega = r.number("omega", 1, 1e4);
@@ -247,6 +247,7 @@ experiment_settings parse_experiments(const nlohmann::json& doc, const std::stri
     if (r.has("samples")) f.samples = static_cast<int>(r.integer("samples", 10, 100000));
     if (r.has("exchange_time")) f.exchange_time = r.number("exchange_time", 0, 1e6);
     if (r.has("reference_omega_h")) f.reference_omega_h = r.number("reference_omega_h", 0.001, 10);
+    if (r.has("equal_cost_omega_h")) f.equal_cost_omega_h = r.numbers("equal_cost_omega_h", 0.001, 10);
     if (r.has("resonances")) {  // θ = 2π/k: k = 2 is θ = π, a band end, where every run is at the edge of stability
       const std::vector<long long> k = r.integers("resonances", 3, 12);
       f.resonances.assign(k.begin(), k.end());

@@ -1,11 +1,14 @@
 // The fpu section: the Fermi–Pasta–Ulam–Tsingou chain (fpu_chain.hpp) in double, for Simpson's
-// scheme (the implicit step for a general potential), Störmer–Verlet, the implicit midpoint rule and
-// Gauss–Legendre 2. Every implicit step is solved by the same Newton rule (16 eps of the terms).
+// scheme (the implicit step for a general potential), Störmer–Verlet, the implicit midpoint rule,
+// Gauss–Legendre 2 and a trigonometric integrator (trigonometric_step.hpp, the peer at large ωh).
+// Every implicit step is solved by the same Newton rule (16 eps of the terms); the explicit ones keep
+// the force a step ends with for the next (first same as last). Force evaluations are counted.
 
 #include <simpson/verify/fpu_section.hpp>
 #include <simpson/verify/stability_section.hpp>
 
 #include "stability_parts.hpp"
+#include "../nonlinear/counting_potential.hpp"
 
 #include <simpson/verify/interruption.hpp>
 #include <simpson/verify/progress.hpp>
@@ -15,6 +18,7 @@
 #include <simpson/fpu_chain.hpp>
 #include <simpson/nonlinear_ndof_step.hpp>
 #include <simpson/runge_kutta_tableaux.hpp>
+#include <simpson/trigonometric_step.hpp>
 
 #include <simpson/scheme.hpp>
 
@@ -24,6 +28,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <numeric>
 #include <optional>
@@ -34,9 +39,9 @@ namespace {
 
 using system_type = separable_system<double, fpu_potential<double>>;
 
-enum class fpu_method { simpson, stormer_verlet, implicit_midpoint, gauss_legendre_2 };
-constexpr std::array<fpu_method, 4> fpu_methods{fpu_method::simpson, fpu_method::stormer_verlet, fpu_method::implicit_midpoint,
-                                                fpu_method::gauss_legendre_2};
+enum class fpu_method { simpson, stormer_verlet, implicit_midpoint, gauss_legendre_2, trigonometric };
+constexpr std::array<fpu_method, 5> fpu_methods{fpu_method::simpson, fpu_method::stormer_verlet, fpu_method::implicit_midpoint,
+                                                fpu_method::gauss_legendre_2, fpu_method::trigonometric};
 
 std::string name_of(fpu_method m) {
   switch (m) {
@@ -44,6 +49,7 @@ std::string name_of(fpu_method m) {
     case fpu_method::stormer_verlet: return "stormer-verlet";
     case fpu_method::implicit_midpoint: return "implicit-midpoint";
     case fpu_method::gauss_legendre_2: return "gauss-legendre-2";
+    case fpu_method::trigonometric: return "trigonometric";
   }
   return "";
 }
@@ -56,6 +62,7 @@ scheme_style style_for(fpu_method m) {
     case fpu_method::stormer_verlet: return style_of(scheme_id::stormer_verlet);
     case fpu_method::implicit_midpoint: return style_of(scheme_id::newmark);
     case fpu_method::gauss_legendre_2: return style_of(scheme_id::gauss_legendre_2);
+    case fpu_method::trigonometric: return {9, 12, line_style::lines_points, 1};  // black, open diamonds: no oscillator scheme of ours
   }
   return style_of(scheme_id::simpson);
 }
@@ -68,6 +75,7 @@ scheme_id linear_scheme(fpu_method m) {
     case fpu_method::stormer_verlet: return scheme_id::stormer_verlet;
     case fpu_method::implicit_midpoint: return scheme_id::newmark;
     case fpu_method::gauss_legendre_2: return scheme_id::gauss_legendre_2;
+    case fpu_method::trigonometric: break;  // the stiff springs' exact flow: resonant_steps takes cos θ = cos ωh
   }
   return scheme_id::simpson;
 }
@@ -85,6 +93,7 @@ struct resonance {
 /// double; a sign change across a pole of tr Φ (not a root) is recognised and left out.
 std::vector<resonance> resonant_steps(fpu_method m, const std::vector<int>& orders, double last) {
   const auto cos_theta = [m](double omega_h) {
+    if (m == fpu_method::trigonometric) return std::cos(omega_h);  // exact on the stiff springs: θ = ωh
     const one_step_matrix<double> phi = stepper<double>(linear_scheme(m), oscillator_parameters<double>{1, 1, omega_h}).matrix();
     return (phi.alpha + phi.delta) / 2;
   };
@@ -112,20 +121,49 @@ std::vector<resonance> resonant_steps(fpu_method m, const std::vector<int>& orde
 /// θ = 2π/k in lowest terms: π/2 for k = 4, 2π/3 for k = 3.
 std::string resonance_text(int k) { return k % 2 == 0 ? fmt::format("θ = π/{}", k / 2) : fmt::format("θ = 2π/{}", k); }
 
-/// A method's step on the chain; adds its Newton iterations.
+/// The chain's potential with its force evaluations counted (counting_potential.hpp's rule: every
+/// call, as the step makes it): ∇V and, for the trigonometric step, ∇U, the soft springs' part, each one
+/// force evaluation; ∇²V apart.
+class counted_chain {
+ public:
+  counted_chain(const fpu_potential<double>& inner, detail::evaluation_count& count) : inner_(inner), count_(&count) {}
+  double value(const dense_vector<double>& q) const { return inner_.value(q); }
+  dense_vector<double> gradient(const dense_vector<double>& q) const {
+    ++count_->gradients;
+    return inner_.gradient(q);
+  }
+  dense_matrix<double> hessian(const dense_vector<double>& q) const {
+    ++count_->hessians;
+    return inner_.hessian(q);
+  }
+  const double& stiff_frequency() const { return inner_.stiff_frequency(); }
+  dense_vector<double> stiff_projection(const dense_vector<double>& v) const { return inner_.stiff_projection(v); }
+  dense_vector<double> slow_gradient(const dense_vector<double>& q) const {
+    ++count_->gradients;
+    return inner_.slow_gradient(q);
+  }
+
+ private:
+  fpu_potential<double> inner_;
+  detail::evaluation_count* count_;
+};
+
+/// A method's step on the chain; adds its Newton iterations, and counts its force evaluations.
 class stepper_on_chain {
  public:
-  stepper_on_chain(fpu_method m, const system_type& s) : method_(m), system_(s) {
+  stepper_on_chain(fpu_method m, const system_type& s, detail::evaluation_count& count)
+      : method_(m), system_(s.mass(), counted_chain(s.potential(), count)) {
     const butcher_tableau<double> t = m == fpu_method::implicit_midpoint ? implicit_midpoint_tableau<double>() : gauss_legendre2_tableau<double>();
     tableau_ = t;
     coupling_ = couple(tableau_, tableau_);
   }
-  ndof_state<double> step(double h, const ndof_state<double>& y, long long& iterations) const {
+  ndof_state<double> step(double h, const ndof_state<double>& y, long long& iterations) {
     switch (method_) {
       case fpu_method::simpson: return counted(simpson_ndof_step(system_, h, y), iterations);
-      case fpu_method::stormer_verlet: return stormer_verlet_ndof_step(system_, h, y);
+      case fpu_method::stormer_verlet: return stormer_verlet_ndof_step(system_, h, y, kept_);
       case fpu_method::implicit_midpoint:
       case fpu_method::gauss_legendre_2: return counted(prk_ndof_step(tableau_, tableau_, coupling_, system_, h, y), iterations);
+      case fpu_method::trigonometric: return trigonometric_step(system_.potential(), h, y, kept_);
     }
     return y;
   }
@@ -136,9 +174,10 @@ class stepper_on_chain {
     return r.state;
   }
   fpu_method method_;
-  const system_type& system_;
+  separable_system<double, counted_chain> system_;
   butcher_tableau<double> tableau_;
   stage_coupling<double> coupling_;
+  last_force<double> kept_;  // the explicit steps' force at the step's end
 };
 
 /// One run: H and the I_j sampled over time, the largest relative errors, and how it ended.
@@ -146,9 +185,13 @@ struct chain_run {
   std::vector<double> t, energy_error, I1, I2, I3, I;
   double max_energy_error = 0, max_invariant_error = 0, invariant_drift = 0;
   double max_discrete_invariant_error = 0, discrete_invariant_drift = 0;  // of I_d, the stiff springs' part of Simpson's H_d
-  long long steps = 0, newton_iterations = 0;
+  long long steps = 0, newton_iterations = 0, gradients = 0, hessians = 0;
+  double seconds = 0;  // the steps' wall time (the sampling's bookkeeping included)
+  long long start_gradients = 0;  // an explicit method's force at the start, evaluated once for the run
   figure status = figure::text("ok");
   bool ok() const { return !status.is_fault(); }
+  /// Force evaluations a step, the start's one-off evaluation left out.
+  double gradients_per_step() const { return static_cast<double>(gradients - start_gradients) / static_cast<double>(std::max(1LL, steps)); }
 };
 
 /// Runs to `end_time` with ωh = omega_h, sampling `samples` times; stops at a state beyond 10³ (the
@@ -157,7 +200,9 @@ chain_run run_chain(fpu_method m, const system_type& s, const fpu_settings& sett
   const double h = omega_h / settings.omega;
   const long long steps = std::max(1LL, std::llround(end_time / h));
   const long long every = std::max(1LL, steps / samples);
-  const stepper_on_chain method(m, s);
+  detail::evaluation_count count;
+  stepper_on_chain method(m, s, count);
+  const auto start = std::chrono::steady_clock::now();
   ndof_state<double> y = fpu_start(settings.m, settings.omega);
   const double H0 = s.energy(y), I0 = 1;  // I(0) = I₁(0) = 1 (fpu_start)
   // I_d: each stiff spring's (hamiltonien-discret), the core's discrete_energy, of a unit-mass
@@ -219,6 +264,10 @@ chain_run run_chain(fpu_method m, const system_type& s, const fpu_settings& sett
     }
     if (j % every == 0 || j == steps) record(j);
   }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.gradients = count.gradients;
+  out.hessians = count.hessians;
+  out.start_gradients = m == fpu_method::stormer_verlet || m == fpu_method::trigonometric ? 1 : 0;
   if (out.ok()) {
     out.invariant_drift = (last_sum - first_sum) / static_cast<double>(tenth) / I0;
     out.discrete_invariant_drift = (last_discrete - first_discrete) / static_cast<double>(tenth) / std::abs(Id0);
@@ -234,7 +283,8 @@ chain_run run_chain(fpu_method m, const system_type& s, const fpu_settings& sett
 std::optional<bool> predicted_stable(fpu_method m, const stability_report& region, double omega_h) {
   switch (m) {
     case fpu_method::implicit_midpoint:
-    case fpu_method::gauss_legendre_2: return true;
+    case fpu_method::gauss_legendre_2:
+    case fpu_method::trigonometric: return true;
     case fpu_method::stormer_verlet:
       if (std::abs(omega_h - 2) < 0.05) return std::nullopt;
       return omega_h < 2;
@@ -279,6 +329,24 @@ panel exchange_panel(const std::string& title, const chain_run& r) {
     exchange.curves.push_back(std::move(c));
   }
   return exchange;
+}
+
+/// A method's force evaluations per step at one scanned ωh (a stable run).
+struct scanned_cost {
+  double omega_h, per_step;
+};
+
+/// The ωh at which a method spends as many force evaluations per unit time as Störmer–Verlet at ωh =
+/// `at` (one a step: ωh = at × per_step), from its scan: the first root of at × per_step(ωh) − ωh
+/// between two scanned points, per_step interpolated linearly (so a method of one evaluation a step
+/// runs at ωh = at exactly); nothing when no scanned stable step is that cheap.
+std::optional<double> equal_cost_step(const std::vector<scanned_cost>& scanned, double at) {
+  for (std::size_t i = 0; i + 1 < scanned.size(); ++i) {
+    const double a = at * scanned[i].per_step - scanned[i].omega_h, b = at * scanned[i + 1].per_step - scanned[i + 1].omega_h;
+    if (a == 0) return scanned[i].omega_h;
+    if (a > 0 && b <= 0) return scanned[i].omega_h + (scanned[i + 1].omega_h - scanned[i].omega_h) * a / (a - b);
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -335,12 +403,15 @@ section_result run_fpu(const fpu_settings& s) {
   // The reference for the exchange: Gauss–Legendre 2 (order 4) at ωh = reference_omega_h.
   const double exchange_time = std::min(s.exchange_time, s.end_time);
   const chain_run reference = run_chain(fpu_method::gauss_legendre_2, chain, s, s.reference_omega_h, exchange_time, s.samples);
+  // The reference's own error, estimated as its gap to the same method at half its step.
+  const double reference_error = exchange_gap(reference, run_chain(fpu_method::gauss_legendre_2, chain, s, s.reference_omega_h / 2, exchange_time, s.samples));
   exchange_panels.push_back(exchange_panel(fmt::format("reference: gauss-legendre-2, ωh = {}", s.reference_omega_h), reference));
   progress_step("fpu", "reference for the exchange");
   table exchange{"exchange", fmt::format("The exchange against the reference, t ≤ {}", exchange_time),
                  fmt::format("max over j and t of |I_j − I_j of the reference| (Gauss–Legendre 2 at ωh = {}, interpolated at each "
-                             "method's samples): 0 is the reference's exchange, about 1 an exchange out of phase.",
-                             s.reference_omega_h),
+                             "method's samples): 0 is the reference's exchange, about 1 an exchange out of phase. The reference's own "
+                             "error, its gap to Gauss–Legendre 2 at half its step: {:.2g}.",
+                             s.reference_omega_h, reference_error),
                  {{"method", "method"}, {"omega_h", "ωh", "", 0}, {"exchange_gap", "max |I_j − I_j ref|"}, {"status", "status"}}};
   std::vector<chain_run> simpson_runs;
   for (const fpu_method m : fpu_methods) {
@@ -421,6 +492,7 @@ section_result run_fpu(const fpu_settings& s) {
   series resonant_points("resonance θ = 2π/k", line_style::points, 8, 6, 1);
   series resonant_invariant = resonant_points;
   std::vector<std::string> at_resonances;  // each method's error in I at its resonances beside its scanned neighbours'
+  std::vector<std::vector<scanned_cost>> scanned_costs(fpu_methods.size());  // each method's stable grid points
   for (const fpu_method m : fpu_methods) {
     const scheme_style style = style_for(m);
     // A curve per run of stable points: a line never bridges a stretch of unstable runs (Simpson's gap).
@@ -456,6 +528,10 @@ section_result run_fpu(const fpu_settings& s) {
                 figure::text(stable ? (*stable ? "stable" : "unstable") : "endpoint: not predicted"),
                 order ? figure::text(resonance_text(order)) : figure::text(""), r.status});
       grid_invariant.push_back(r.ok() ? r.max_invariant_error : NAN);
+      if (r.ok() && r.steps > 0) {
+        const std::size_t index = static_cast<std::size_t>(std::find(fpu_methods.begin(), fpu_methods.end(), m) - fpu_methods.begin());
+        scanned_costs[index].push_back({omega_h, r.gradients_per_step()});
+      }
       if (r.ok()) {
         energy.add(figure::of(omega_h), figure::of(r.max_energy_error));
         invariant.add(figure::of(omega_h), figure::of(r.max_invariant_error));
@@ -493,9 +569,10 @@ section_result run_fpu(const fpu_settings& s) {
                 fmt::format("On the FPU chain, {} is stable at each scanned ωh where the linear theory of its stiff springs says so, "
                             "and unstable where it says not.",
                             name_of(m)),
-                m == fpu_method::simpson ? "Φ₃'s exact region on the stiff springs' ωh (the stability section)"
+                m == fpu_method::simpson          ? "Φ₃'s exact region on the stiff springs' ωh (the stability section)"
                 : m == fpu_method::stormer_verlet ? "ωh < 2 (Störmer–Verlet's linear stability)"
-                                                   : "stable at every ωh (A-stable)",
+                : m == fpu_method::trigonometric  ? "stable at every ωh (the stiff springs' flow is exact)"
+                                                  : "stable at every ωh (A-stable)",
                 fmt::format("{} of {} scanned ωh off the endpoints as predicted{}", agree, predicted_count,
                             disagree.empty() ? std::string() : "; not: " + fmt::format("{}", fmt::join(disagree, ", "))),
                 agree == predicted_count});
@@ -518,6 +595,74 @@ section_result run_fpu(const fpu_settings& s) {
                                        s.scan_end_time),
                            {scan_energy, scan_invariant}, 2, 1000, 420});
 
+  // Every method at equal cost: the force evaluations per unit time of Störmer–Verlet at each ωh of
+  // equal_cost_omega_h, spent by each method on its own step.
+  table costs{"equal_cost", fmt::format("At equal cost, t ≤ {}", exchange_time),
+              fmt::format("Each method's step set so that it spends as many force evaluations per unit time as Störmer–Verlet at the "
+                          "ωh of the first column (one a step: ω/ωh per unit time); an implicit method's evaluations per step (its Newton "
+                          "iterations' ∇V, counted as its step makes them) from the scan below, interpolated in ωh between two scanned stable steps. The trigonometric method's evaluation is of the "
+                          "soft springs' ∇U alone; its stiff springs are integrated exactly, by cos and sin of ωh. ∇²V: the Newton steps' "
+                          "Hessians, apart. The exchange is against the reference above, whose own error (its gap to a run at half its "
+                          "step) is {:.2g}. The runs' seconds are in timing.md (\"At equal cost: run times\").",
+                          reference_error),
+              {{"budget", "cost of Störmer–Verlet at ωh", "", 0},
+               {"method", "method"},
+               {"omega_h", "ωh", "", 3},
+               column::fixed_point("gradients_per_step", "∇V / step", 2),
+               column::fixed_point("hessians_per_step", "∇²V / step", 2),
+               {"max_energy_error", "max |ΔH|/H₀"},
+               {"exchange_gap", "max |I_j − I_j ref|"},
+               {"status", "status"}}};
+  table cost_times{"equal_cost_seconds", "At equal cost: run times",
+                   "Each run of the table \"At equal cost\" (t up to the exchange's end), its wall time on this machine, once.",
+                   {{"budget", "cost of Störmer–Verlet at ωh", "", 0}, {"method", "method"}, {"seconds", "seconds", "s"}}};
+  cost_times.timing = true;
+  std::vector<std::string> cheapest;  // at each budget, the method nearest the reference's exchange
+  for (const double at : s.equal_cost_omega_h) {
+    std::string best;
+    double best_gap = INFINITY, best_energy = INFINITY;
+    std::string best_energy_method;
+    for (std::size_t k = 0; k < fpu_methods.size(); ++k) {
+      const fpu_method m = fpu_methods[k];
+      const std::optional<double> omega_h = equal_cost_step(scanned_costs[k], at);
+      if (!omega_h) {
+        const auto cheapest_step = std::min_element(scanned_costs[k].begin(), scanned_costs[k].end(), [](const scanned_cost& x, const scanned_cost& y) {
+          return x.per_step / x.omega_h < y.per_step / y.omega_h;
+        });
+        const bool below = !scanned_costs[k].empty() && at * scanned_costs[k].front().per_step < scanned_costs[k].front().omega_h;
+        costs.add({figure::of(at), figure::text(name_of(m)), figure{}, figure{}, figure{}, figure{}, figure{},
+                   figure::text(cheapest_step == scanned_costs[k].end() ? std::string("no stable step scanned")
+                                : below ? fmt::format("its step at this cost is below the scan's first stable ωh ({})", scanned_costs[k].front().omega_h)
+                                        : fmt::format("no scanned stable step this cheap: its cheapest, ωh = {}, costs {:.3g} times as much",
+                                                      cheapest_step->omega_h, cheapest_step->per_step / cheapest_step->omega_h * at))});
+        continue;
+      }
+      const chain_run r = run_chain(m, chain, s, *omega_h, exchange_time, s.samples);
+      progress_step("fpu", fmt::format("{} at the cost of Störmer–Verlet at ωh = {}", name_of(m), at));
+      const double per_step = r.gradients_per_step();
+      const double gap = r.ok() ? exchange_gap(r, reference) : INFINITY;
+      costs.add({figure::of(at), figure::text(name_of(m)), figure::of(*omega_h), figure::of(per_step),
+                 figure::of(static_cast<double>(r.hessians) / static_cast<double>(std::max(1LL, r.steps))),
+                 r.ok() ? figure::of(r.max_energy_error) : figure{}, r.ok() ? figure::of(gap) : figure{}, r.status});
+      cost_times.add({figure::of(at), figure::text(name_of(m)), figure::of(r.seconds)});
+      if (gap < best_gap) {
+        best_gap = gap;
+        best = name_of(m);
+      }
+      if (r.ok() && r.max_energy_error < best_energy) {
+        best_energy = r.max_energy_error;
+        best_energy_method = name_of(m);
+      }
+    }
+    if (!best.empty()) {
+      cheapest.push_back(fmt::format("at the cost of Störmer–Verlet at ωh = {}, the exchange nearest the reference's is {}'s ({:.2g}) and "
+                                     "the smallest energy error {}'s ({:.2g})",
+                                     at, best, best_gap, best_energy_method, best_energy));
+    }
+  }
+  out.add(std::move(costs));
+  out.add(std::move(cost_times));
+  if (!cheapest.empty()) out.text(fmt::format("At equal cost: {}.", fmt::join(cheapest, "; ")));
   // Simpson in its second band: does it keep the adiabatic invariant? Decided by the runs above.
   std::vector<std::string> second_band;
   for (std::size_t k = 0; k < s.omega_h.size() && k < simpson_runs.size(); ++k) {

@@ -2,9 +2,10 @@
 // The fpu section: a stiff problem as the field poses it, the Fermi–Pasta–Ulam–Tsingou chain of
 // Hairer, Lubich and Wanner (fpu_chain.hpp): stiff springs of frequency ω between soft cubic ones,
 // the step set by the slow motion. Simpson's scheme for a general potential (implicit, the Lobatto
-// IIIA–IIIB pair's step), Störmer–Verlet, the implicit midpoint rule and Gauss–Legendre 2, at
+// IIIA–IIIB pair's step), Störmer–Verlet, the implicit midpoint rule, Gauss–Legendre 2 and a
+// trigonometric integrator (Hairer, Lubich and Wanner's method (C), the field's peer at large ωh), at
 // several ωh across Φ₃'s bands, over long times: the energy error, the oscillatory energy I (an
-// adiabatic invariant) and the exchange between its parts I₁, I₂, I₃.
+// adiabatic invariant) and the exchange between its parts I₁, I₂, I₃; and each at equal cost.
 
 #include <simpson/verify/result_model.hpp>
 
@@ -24,6 +25,9 @@ struct fpu_settings {
   double exchange_time = 200;         // the exchange of I₁, I₂, I₃ is drawn over t up to this
   double reference_omega_h = 0.1;     // the exchange's reference run (Gauss–Legendre 2)
   std::vector<int> resonances{3, 4, 6};  // the scan adds each method's ωh where its rotation angle θ is 2π/k
+  /// The costs compared: Störmer–Verlet's force evaluations per unit time at these ωh (ω/ωh), each
+  /// method spending as many on its own step.
+  std::vector<double> equal_cost_omega_h{0.5, 1.5};
 };
 
 section_result run_fpu(const fpu_settings& s);
@@ -36,7 +40,7 @@ struct fpu_run_summary {
   std::string status;  // "ok", "unstable (step j)" or "failed: ..."
 };
 
-/// `method`: simpson, stormer-verlet, implicit-midpoint or gauss-legendre-2 (std::invalid_argument otherwise).
+/// `method`: simpson, stormer-verlet, implicit-midpoint, gauss-legendre-2 or trigonometric (std::invalid_argument otherwise).
 fpu_run_summary run_fpu_chain(const fpu_settings& s, const std::string& method, double omega_h, double end_time);
 
 }  // namespace simpson::verify
