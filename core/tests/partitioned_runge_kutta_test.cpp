@@ -4,11 +4,14 @@
 
 #include <simpson/newmark_map.hpp>
 #include <simpson/runge_kutta_tableaux.hpp>
+#include <simpson/scheme.hpp>
 #include <simpson/stormer_verlet.hpp>
 
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
+
+#include <random>
 
 namespace simpson {
 namespace {
@@ -90,6 +93,26 @@ TYPED_TEST(PartitionedRungeKutta, ExplicitStagesAndFactoredStagesAreTheSameMaps)
     }
   }
   EXPECT_THROW(explicit_tableau<Real>(implicit_midpoint_tableau<Real>()), std::invalid_argument);
+}
+
+TEST(PartitionedRungeKutta, TheComparisonsRk4StepSolvesNoLinearSystem) {
+  // What the work-precision comparison times as RK4 (stepper, scheme.hpp) is its explicit stages, bit
+  // for bit, on random states and parameters; the stage system solved by Gaussian elimination rounds
+  // otherwise on some of them (the control), so a stepper that solved it would fail the first check.
+  std::mt19937_64 rng(20230830);
+  std::uniform_real_distribution<double> unit(-1, 1), positive(0.1, 2);
+  const explicit_tableau<double> stages(classic_rk4_tableau<double>());
+  int solved_differs = 0;
+  for (int k = 0; k < 1000; ++k) {
+    const oscillator_parameters<double> par{positive(rng), positive(rng), positive(rng) / 4};
+    const phase_point<double> y{unit(rng), unit(rng)};
+    const phase_point<double> timed = stepper<double>(scheme_id::rk4, par).step(y), by_stages = explicit_runge_kutta_step(par, stages, y);
+    ASSERT_EQ(timed.p, by_stages.p);
+    ASSERT_EQ(timed.q, by_stages.q);
+    const phase_point<double> solved = partitioned_runge_kutta_step(par, classic_rk4_tableau<double>(), classic_rk4_tableau<double>(), y);
+    solved_differs += solved.p != by_stages.p || solved.q != by_stages.q;
+  }
+  EXPECT_GT(solved_differs, 0);
 }
 
 TEST(PartitionedRungeKutta, SolveLinearPivotsAndRefusesSingularSystems) {

@@ -128,13 +128,10 @@ TEST(Experiments, NonlinearBrouwerFormsMatchAReferenceInMpfr) {
   EXPECT_LT(reference_gap, running[2] / 16);
 }
 
-/// The nonlinear section with its other parts at their smallest and nothing timed: the problems'
-/// runs alone, at the meshes N.
+/// The nonlinear section's problems part alone, nothing timed, at the meshes N.
 nonlinear_settings problems_only(const std::string& problem, std::vector<long long> N) {
   nonlinear_settings s;
-  s.pendulum_N = {10};
-  s.energy_steps = 10;
-  s.brouwer_steps = 10;
+  s.parts = {"problems"};
   s.problems = {problem};
   s.N = std::move(N);
   s.double_pendulum_N = {10};
@@ -143,7 +140,10 @@ nonlinear_settings problems_only(const std::string& problem, std::vector<long lo
 }
 
 TEST(Experiments, NonlinearProblemsRecordAFailedNewtonSolveAndGoOn) {
-  const section_result out = run_nonlinear(problems_only("kepler", {8, 256, 512}));
+  nonlinear_settings s = problems_only("kepler", {8, 256, 512});
+  s.eccentricity = 0.6;  // one period of the moderate orbit: the failure at N = 8 and the order at 256, 512 below
+  s.kepler_periods = 1;
+  const section_result out = run_nonlinear(s);
   const table& t = get(out, "problems");
   ASSERT_EQ(t.rows.size(), 6u * 3u);
   std::map<std::string, std::vector<std::size_t>> by_method;
@@ -160,6 +160,37 @@ TEST(Experiments, NonlinearProblemsRecordAFailedNewtonSolveAndGoOn) {
   EXPECT_NEAR(number(cell(t, simpson, "error_q")), number(cell(t, lobatto, "error_q")), 1e-12);
   EXPECT_NEAR(std::log2(number(cell(t, simpson, "error_q")) / number(cell(t, by_method["simpson"][2], "error_q"))), 4, 0.1);
   EXPECT_EQ(cell(t, by_method["rk4"][0], "newton_iterations_mean").what(), figure::kind::empty);  // explicit
+}
+
+TEST(Experiments, NonlinearSectionRunsOnlyThePartsItIsGiven) {
+  // The paper scene's nonlinear section is its problems part alone: no pendulum table, no Brouwer
+  // runs, no double pendulum, and a title that says what it is.
+  const section_result out = run_nonlinear(problems_only("pendulum", {16, 32}));
+  EXPECT_NE(out.find_table("problems"), nullptr);
+  for (const char* absent : {"pendulum", "pendulum_brouwer", "double_pendulum"}) EXPECT_EQ(out.find_table(absent), nullptr) << absent;
+  EXPECT_EQ(out.title.rfind("Error against work on nonlinear problems", 0), 0u) << out.title;
+  // The cost of an error, against Simpson's: Simpson's own ratio is 1, and every method that reaches
+  // the target does so between the work of its two runs (16 and 32 steps here), never beyond them.
+  const table& costs = get(out, "problems_cost");
+  ASSERT_EQ(costs.rows.size(), 6u);
+  EXPECT_EQ(cell(costs, 0, "method").value(), "simpson");
+  EXPECT_EQ(number(cell(costs, 0, "ratio")), 1.0);
+  const table& runs = get(out, "problems");
+  for (std::size_t r = 0; r < costs.rows.size(); ++r) {
+    if (cell(costs, r, "status").value() != "ok") continue;
+    const double work = number(cell(costs, r, "work"));
+    const double coarse = 16 * number(cell(runs, 2 * r, "gradients_per_step")), fine = 32 * number(cell(runs, 2 * r + 1, "gradients_per_step"));
+    EXPECT_GE(work, coarse * (1 - 1e-12)) << cell(costs, r, "method").value();
+    EXPECT_LE(work, fine * (1 + 1e-12)) << cell(costs, r, "method").value();
+  }
+  nonlinear_settings all = problems_only("pendulum", {16});
+  all.parts = nonlinear_part_names();
+  all.pendulum_N = {10};
+  all.energy_steps = 10;
+  all.brouwer_steps = 10;
+  all.double_pendulum_N = {10};
+  const section_result whole = run_nonlinear(all);
+  for (const char* present : {"problems", "pendulum", "pendulum_brouwer", "double_pendulum"}) EXPECT_NE(whole.find_table(present), nullptr) << present;
 }
 
 TEST(Experiments, NonlinearProblemsCountTheForceEvaluationsTheStepsMake) {

@@ -35,6 +35,7 @@ TEST(ReferenceReport, PaperSceneReproducesTheCommittedReport) {
   ASSERT_TRUE(std::filesystem::exists(dir / "report.json")) << dir;
   scene s = load_scene("paper");
   s.experiments.work_precision->timing = timing_policy{1, 0.01};
+  s.experiments.nonlinear->timing = timing_policy{1, 0.01};
   run_record r = run(s);
   // The committed report was made with --certify: its Coq counts are checked counts.
   ASSERT_FALSE(coqc_version().empty()) << "coqc is needed (scripts/install-deps installs Debian's coq)";

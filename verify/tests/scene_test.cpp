@@ -99,7 +99,9 @@ TEST(Scene, ExperimentSectionsParseWithDefaultsAndOnlyWhenAsked) {
   EXPECT_TRUE(paper.experiments.table1 && paper.experiments.work_precision && paper.experiments.stability &&
               paper.experiments.long_time);
   EXPECT_EQ(paper.experiments.work_precision->schemes, all_schemes());
-  EXPECT_FALSE(paper.experiments.nonlinear);  // the paper scene is the paper's
+  // The paper scene's nonlinear section is its problems' error against work alone, beside the oscillator's.
+  ASSERT_TRUE(paper.experiments.nonlinear);
+  EXPECT_EQ(paper.experiments.nonlinear->parts, std::vector<std::string>{"problems"});
   const scene beyond = load_scene("beyond");
   ASSERT_TRUE(beyond.experiments.nonlinear);
   EXPECT_EQ(beyond.experiments.nonlinear->problems, nonlinear_problem_names());

@@ -176,6 +176,7 @@ std::optional<int> prepare_run(cli_options& o, const CLI::App& app, int argc, ch
       s.timing = false;
       if (s.experiments.work_precision) s.experiments.work_precision->timing.max_runs = 0;
       if (s.experiments.nonlinear) s.experiments.nonlinear->timing.max_runs = 0;
+      if (s.experiments.fpu) s.experiments.fpu->timed = false;
       s.overrides["timing"] = false;
     }
     s.command_line.assign(argv, argv + argc);

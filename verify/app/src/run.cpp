@@ -188,9 +188,10 @@ run_record run(const scene& s, std::shared_ptr<const claim_book> book, const pap
     });
   }
   if (e.work_precision) section([&] { return run_work_precision(*e.work_precision); });
+  // Error against work on the nonlinear problems beside the oscillator's (the paper scene's parts).
+  if (e.nonlinear) section([&] { return run_nonlinear(*e.nonlinear); });
   if (e.stability) section([&] { return run_stability(*e.stability); });
   if (e.long_time) section([&] { return run_long_time(*e.long_time); });
-  if (e.nonlinear) section([&] { return run_nonlinear(*e.nonlinear); });
   if (e.floating) section([&] { return run_floating(*e.floating); });
   if (e.family) section([&] { return run_family(*e.family); });
   if (e.fpu) section([&] { return run_fpu(*e.fpu); });

@@ -258,8 +258,8 @@ experiment_settings parse_experiments(const nlohmann::json& doc, const std::stri
   }
   if (doc.contains("nonlinear")) {
     const section_reader r(origin, "nonlinear", doc["nonlinear"],
-                           {"pendulum_q0", "pendulum_T", "pendulum_N", "mpfr_digits", "energy_steps", "brouwer_h", "brouwer_steps", "problems", "N",
-                            "eccentricity", "reference_digits", "fpu_T", "max_runs", "max_seconds", "double_pendulum_N"});
+                           {"parts", "pendulum_q0", "pendulum_T", "pendulum_N", "mpfr_digits", "energy_steps", "brouwer_h", "brouwer_steps", "problems", "N",
+                            "eccentricity", "kepler_periods", "reference_digits", "fpu_T", "max_runs", "max_seconds", "double_pendulum_N"});
     nonlinear_settings n;
     // q0 = π is the unstable equilibrium, where the exact solution (k = 1) has no period.
     if (r.has("pendulum_q0")) n.pendulum_q0 = r.number("pendulum_q0", 0, 3.14159);
@@ -272,7 +272,9 @@ experiment_settings parse_experiments(const nlohmann::json& doc, const std::stri
     // Up to h = 1 the Newton start q + hp/2 converges for the pendulum's |p| ≤ 2.
     if (r.has("brouwer_h")) n.brouwer_h = r.number("brouwer_h", 0, 1);
     if (r.has("brouwer_steps")) n.brouwer_steps = r.integer("brouwer_steps", 1, max_steps);
+    if (r.has("parts")) n.parts = r.names("parts", nonlinear_part_names());
     if (r.has("problems")) n.problems = r.names("problems", nonlinear_problem_names());
+    if (r.has("kepler_periods")) n.kepler_periods = static_cast<int>(r.integer("kepler_periods", 1, 1000));
     if (r.has("N")) n.N = r.integers("N", 1, 100'000'000);
     if (r.has("eccentricity")) {
       // 0 <= e < 1 is an ellipse; e near 1 needs steps far below the perihelion distance 1 − e.

@@ -603,8 +603,8 @@ section_result run_fpu(const fpu_settings& s) {
                           "iterations' ∇V, counted as its step makes them) from the scan below, interpolated in ωh between two scanned stable steps. The trigonometric method's evaluation is of the "
                           "soft springs' ∇U alone; its stiff springs are integrated exactly, by cos and sin of ωh. ∇²V: the Newton steps' "
                           "Hessians, apart. The exchange is against the reference above, whose own error (its gap to a run at half its "
-                          "step) is {:.2g}. The runs' seconds are in timing.md (\"At equal cost: run times\").",
-                          reference_error),
+                          "step) is {:.2g}.{}",
+                          reference_error, s.timed ? " The runs' seconds are in the run-time report's table \"At equal cost: run times\"." : ""),
               {{"budget", "cost of Störmer–Verlet at ωh", "", 0},
                {"method", "method"},
                {"omega_h", "ωh", "", 3},
@@ -661,7 +661,7 @@ section_result run_fpu(const fpu_settings& s) {
     }
   }
   out.add(std::move(costs));
-  out.add(std::move(cost_times));
+  if (s.timed) out.add(std::move(cost_times));
   if (!cheapest.empty()) out.text(fmt::format("At equal cost: {}.", fmt::join(cheapest, "; ")));
   // Simpson in its second band: does it keep the adiabatic invariant? Decided by the runs above.
   std::vector<std::string> second_band;

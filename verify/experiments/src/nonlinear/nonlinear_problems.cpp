@@ -29,6 +29,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <optional>
 
 namespace simpson::verify::detail {
 namespace {
@@ -89,6 +91,7 @@ struct problem {
   double T;
   ndof_state<double> at_T;
   std::string reference;
+  long long steps_per_N = 1;  // the runs take N times this many steps (Kepler: N a period, over its periods)
 };
 
 template <class Real>
@@ -127,14 +130,15 @@ problem<pendulum_1d> pendulum_problem(const nonlinear_settings& s) {
 }
 
 problem<kepler_potential<double>> kepler_problem(const nonlinear_settings& s) {
-  const double T = 2 * boost::math::constants::pi<double>();
+  const double T = 2 * boost::math::constants::pi<double>() * s.kepler_periods;
   const scoped_mpfr_digits digits(s.reference_digits);
   const kepler_orbit<mpfr> orbit{mpfr(s.eccentricity)};
   return {"kepler", {dense_matrix<double>::Identity(2, 2), kepler_potential<double>{1}}, rounded(orbit.initial()), T,
           rounded(orbit.at(mpfr(T))),
-          fmt::format("e = {}, q(0) = (1 − e, 0), p(0) = (0, √((1 + e)/(1 − e))), H = −1/2, T = 2π (one period, T rounded "
-                      "to double); exact solution from Kepler's equation in mpfr:{}",
-                      fmt::format("{:g}", s.eccentricity), s.reference_digits)};
+          fmt::format("e = {}, q(0) = (1 − e, 0), p(0) = (0, √((1 + e)/(1 − e))), H = −1/2, T = {} periods of 2π (GeometricProblems.jl's "
+                      "set-up; T rounded to double; N is the scene's N times the periods, so that each period has as many steps as "
+                      "the other problems' runs); exact solution from Kepler's equation in mpfr:{}",
+                      fmt::format("{:g}", s.eccentricity), s.kepler_periods, s.reference_digits), s.kepler_periods};
 }
 
 problem<henon_heiles_potential<double>> henon_heiles_problem(const nonlinear_settings& s, long long finest) {
@@ -269,7 +273,23 @@ problem_run run_one(const problem<Potential>& p, scheme_id id, long long N, cons
 
 struct problem_panels {
   panel state, energy, work, time;
+  std::vector<std::pair<scheme_id, std::vector<std::pair<double, double>>>> work_error;  // each method's (∇V, ‖q_N − q(T)‖), runs ok
 };
+
+/// The ∇V evaluations at which a method's error reaches `target`: log-log interpolation between the
+/// two runs around it (the first crossing, in the order of work); nothing when its runs do not cross it.
+std::optional<double> work_for(std::vector<std::pair<double, double>> points, double target) {
+  std::sort(points.begin(), points.end());
+  for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+    const auto [w0, e0] = points[i];
+    const auto [w1, e1] = points[i + 1];
+    if (e0 >= target && e1 <= target && e0 > 0 && e1 > 0 && e0 != e1) {
+      const double t = (std::log(e0) - std::log(target)) / (std::log(e0) - std::log(e1));
+      return std::exp(std::log(w0) + t * (std::log(w1) - std::log(w0)));
+    }
+  }
+  return std::nullopt;
+}
 
 template <class Potential>
 problem_panels run_problem(const problem<Potential>& p, const nonlinear_settings& s, table& rows, table& summary, table& times,
@@ -278,20 +298,24 @@ problem_panels run_problem(const problem<Potential>& p, const nonlinear_settings
   problem_panels out{{p.name + ": state error", {"N", true}, {"|q_N - q(T)|", true}, {}, "bottom left"},
                      {p.name + ": energy error", {"N", true}, {"max |H - H_0|/|H_0|", true}, {}, "bottom left"},
                      {p.name, {"∇V evaluations in the run", true}, {"|q_N - q(T)|", true}, {}, "bottom left"},
-                     {p.name, {"run time (s, median of repeats)", true}, {"|q_N - q(T)|", true}, {}, "bottom left"}};
+                     {p.name, {"run time (s, median of repeats)", true}, {"|q_N - q(T)|", true}, {}, "bottom left"},
+                     {}};
   for (const scheme_id id : methods) {
     const scheme_style style = style_of(id);
     series by_n(std::string(traits_of(id).name), style.line, style.color, style.point, style.dash);
     series energy = by_n, by_work = by_n, by_time = by_n;
     std::vector<double> ok_N, ok_errors;
+    std::vector<std::pair<double, double>> work_error;
     std::vector<bool> use;
     problem_run finest;
     long long finest_N = 0, failed = 0;
-    for (const long long N : s.N) {
+    for (const long long per : s.N) {
+      const long long N = per * p.steps_per_N;
       problem_run r = run_one(p, id, N, s.timing);
       if (r.ok) {
         ok_N.push_back(static_cast<double>(N));
         ok_errors.push_back(r.error_q);
+        work_error.emplace_back(r.gradients_per_step * static_cast<double>(N), r.error_q);
         use.push_back(true);
         if (N > finest_N) {
           finest_N = N;
@@ -320,6 +344,7 @@ problem_panels run_problem(const problem<Potential>& p, const nonlinear_settings
     out.energy.curves.push_back(energy);
     out.work.curves.push_back(by_work);
     out.time.curves.push_back(by_time);
+    out.work_error.emplace_back(id, std::move(work_error));
   }
   return out;
 }
@@ -329,7 +354,7 @@ problem_panels run_problem(const problem<Potential>& p, const nonlinear_settings
 void add_nonlinear_problems(const nonlinear_settings& s, section_result& out) {
   if (s.problems.empty()) return;
   const bool timed = s.timing.max_runs > 0;
-  table summary{"problems_summary", "Error against N: pendulum, Kepler, Hénon–Heiles (double)", "",
+  table summary{"problems_summary", "Error against N: the nonlinear problems (double)", "",
                 {{"problem", "problem"},
                  {"method", "method"},
                  {"runs_ok", "runs ok"},
@@ -363,7 +388,35 @@ void add_nonlinear_problems(const nonlinear_settings& s, section_result& out) {
   times.timing = true;
   std::vector<std::string> references;
   std::vector<panel> state_panels, energy_panels, work_panels, time_panels;
+  table costs{"problems_cost", "The cost of an error: ∇V evaluations against Simpson's",
+              "For each problem, the ∇V evaluations at which ‖q_N − q(T)‖ reaches the target, interpolated log-log between the two "
+              "runs around it, and their ratio to Simpson's. The target is 1e-8, or, where Simpson's runs do not reach it, the decade "
+              "above Simpson's smallest error. Counts, not seconds: they are the same on every machine (the run times, which also "
+              "pay for the implicit methods' ∇²V and LU solves, are in the run-time report). Lobatto IIIA–IIIB is Simpson's map "
+              "by another implementation (its 3 stages solved for), so its ratio is of the two implementations, not of two methods.",
+              {{"problem", "problem"}, {"target", "target ‖q_N − q(T)‖"}, {"method", "method"}, {"work", "∇V evaluations"},
+               {"ratio", "against Simpson's"}, {"status", "status"}}};
+  const auto add_costs = [&](const std::string& name, const problem_panels& p) {
+    const auto simpson = std::find_if(p.work_error.begin(), p.work_error.end(), [](const auto& m) { return m.first == scheme_id::simpson; });
+    if (simpson == p.work_error.end() || simpson->second.empty()) return;
+    double best = INFINITY;
+    for (const auto& [work, error] : simpson->second) best = std::min(best, error);
+    const double target = best <= 1e-8 ? 1e-8 : std::pow(10.0, std::ceil(std::log10(best)));
+    const std::optional<double> own = work_for(simpson->second, target);
+    for (const auto& [id, points] : p.work_error) {
+      const std::optional<double> work = work_for(points, target);
+      double smallest = INFINITY;
+      for (const auto& [w, e] : points) smallest = std::min(smallest, e);
+      costs.add({figure::text(name), figure::of(target), figure::text(std::string(traits_of(id).name)), work ? figure::of(*work) : figure{},
+                 work && own ? figure::of(*work / *own) : figure{},
+                 work ? figure::text("ok")
+                      : figure::text(points.empty() ? std::string("no run ok")
+                                     : smallest > target ? fmt::format("not reached: its smallest error {:.3g}", smallest)
+                                                         : std::string("below the target at its coarsest run"))});
+    }
+  };
   const auto collect = [&](const problem_panels& p) {
+    add_costs(p.work.title, p);
     state_panels.push_back(p.state);
     energy_panels.push_back(p.energy);
     work_panels.push_back(p.work);
@@ -383,17 +436,18 @@ void add_nonlinear_problems(const nonlinear_settings& s, section_result& out) {
       "16 eps of the sum of its terms' magnitudes, from each stage at q + c_i h M⁻¹p, the Jacobian solved by Eigen's "
       "partial-pivoting LU (Simpson has n unknowns, Gauss–Legendre 2n, Lobatto 3n). Störmer–Verlet, Yoshida and RK4 are "
       "explicit. Work: every call of ∇V and of ∇²V that the steps make as they are written, counted in the error run: "
-      "Störmer–Verlet 2 ∇V a step, Yoshida 6, RK4 4; Simpson 3 + its Newton iterations, Gauss–Legendre 2 two and Lobatto "
+      "Störmer–Verlet 1 ∇V a step and Yoshida 3 (each keeps the force a kick ends with for the next, first same as last, "
+      "and evaluates one more at the run's start), RK4 4; Simpson 3 + its Newton iterations, Gauss–Legendre 2 two and Lobatto "
       "IIIA–IIIB three per Newton pass, with one ∇²V per stage and Newton iteration (Simpson: one; the LU solves are not counted: "
-      "they are in the run time). Simpson, Störmer–Verlet and Yoshida evaluate ∇V at the step's end and again at the next "
-      "step's start; keeping it (first same as last) would save one a step (Yoshida: three, its inner substeps share "
-      "their ends too). Order: least-squares slope "
+      "they are in the run time). Simpson evaluates ∇V at the step's end and again at the next step's start; keeping it "
+      "(first same as last) would save one a step. Order: least-squares slope "
       "of log ‖q_N − q(T)‖ against log N over the runs that are ok (round-off flattens it where the errors reach it). "
       "Every run is in nonlinear_problems.csv and report.json (`problems`).";
   for (const std::string& r : references) intro += "\n\n- " + r;
   intro += timed ? "\n\nRun times are in timing.md." : "\n\nNot timed (--no-timing).";
   summary.intro = intro;
   out.add(std::move(summary));
+  out.add(std::move(costs));
   out.add(std::move(rows));
   if (timed) out.add(std::move(times));
   const int columns = static_cast<int>(state_panels.size());

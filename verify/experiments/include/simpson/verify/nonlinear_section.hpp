@@ -13,6 +13,13 @@
 
 namespace simpson::verify {
 
+/// The section's parts, by scene name: the pendulum's convergence table, Brouwer's law, the problems'
+/// error against N, force evaluations and run time, the linearized double pendulum.
+inline const std::vector<std::string>& nonlinear_part_names() {
+  static const std::vector<std::string> names{"pendulum", "brouwer", "problems", "double-pendulum"};
+  return names;
+}
+
 /// The problems of the error-against-run-time part, by scene name.
 inline const std::vector<std::string>& nonlinear_problem_names() {
   static const std::vector<std::string> names{"pendulum", "kepler", "henon-heiles", "fpu"};
@@ -20,6 +27,7 @@ inline const std::vector<std::string>& nonlinear_problem_names() {
 }
 
 struct nonlinear_settings {
+  std::vector<std::string> parts = nonlinear_part_names();  // the parts run (the paper scene: "problems" alone)
   // The pendulum V = m ω² (1 − cos q), m = ω = 1, released from rest at q0 (0 < q0 < π).
   double pendulum_q0 = 1;
   double pendulum_T = 10;
@@ -32,7 +40,8 @@ struct nonlinear_settings {
   // Error against N and run time, in double.
   std::vector<std::string> problems = nonlinear_problem_names();
   std::vector<long long> N{64, 128, 256, 512, 1024, 2048, 4096};
-  double eccentricity = 0.6;      // Kepler
+  double eccentricity = 0.9;      // Kepler: GeometricProblems.jl's set-up, e = 0.9 over 10 periods
+  int kepler_periods = 10;
   unsigned reference_digits = 32;  // the exact solutions and Hénon–Heiles' reference run
   double fpu_T = 2;                // the FPU chain (the fpu section's m, ω and start) up to T
   timing_policy timing{20, 0.25};
