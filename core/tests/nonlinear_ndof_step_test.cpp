@@ -164,10 +164,21 @@ TYPED_TEST(NonlinearNdof, KeepingTheLastForceChangesNoStateOfAKickDriftKickRun) 
     }
     EXPECT_EQ(gap(plain, kept_run), Real(0)) << (composed ? "yoshida" : "stormer-verlet");
   }
+  // Simpson's step ends its impulse with the force at q_{j+1}, the next step's start: kept, the same
+  // states bit for bit.
+  ndof_state<Real> plain = orbit.initial(), kept_run = orbit.initial();
+  last_force<Real> kept;
+  for (int j = 0; j < 40; ++j) {
+    plain = simpson_ndof_step(s, h, plain).state;
+    kept_run = simpson_ndof_step(s, h, kept_run, kept).state;
+  }
+  EXPECT_EQ(gap(plain, kept_run), Real(0)) << "simpson";
   // A force kept for another q: recomputed, not reused.
   last_force<Real> stale{vec<Real>({Real(9), Real(9)}), vec<Real>({Real(100), Real(100)}), true};
   const ndof_state<Real> start = orbit.initial();
   EXPECT_EQ(gap(stormer_verlet_ndof_step(s, h, start, stale), stormer_verlet_ndof_step(s, h, start)), Real(0));
+  last_force<Real> stale_for_simpson = stale;
+  EXPECT_EQ(gap(simpson_ndof_step(s, h, start, stale_for_simpson).state, simpson_ndof_step(s, h, start).state), Real(0));
 }
 
 TYPED_TEST(NonlinearNdof, ABadMassOrAFailedSolveIsAnError) {

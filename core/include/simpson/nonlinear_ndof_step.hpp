@@ -57,16 +57,28 @@ bool finite_vector(const dense_vector<Real>& v) {
 }
 }  // namespace detail
 
+/// The force a step ends with, kept for the step that starts there (first same as last): a run of
+/// Störmer–Verlet steps, of Yoshida's substeps or of Simpson steps then evaluates that ∇V once, as
+/// their users write them. Valid for the q it was evaluated at only.
+template <class Real>
+struct last_force {
+  dense_vector<Real> q, gradient;
+  bool valid = false;
+};
+
 /// One Simpson step for n degrees of freedom: Newton's method on F from x₀ = q + (h/2) M⁻¹ p (the
 /// scalar step's rule), until max_i |F_i| ≤ 16 eps max_i Σ|terms of F_i|. Throws std::domain_error like
-/// simpson_nonlinear_step: never a silent result.
+/// simpson_nonlinear_step: never a silent result. The force at y.q is taken from `kept` when it was
+/// evaluated there, and the force at the new q kept (the end of the impulse is the next step's start).
 template <class Real, class Potential>
-ndof_step_result<Real> simpson_ndof_step(const separable_system<Real, Potential>& s, const Real& h, const ndof_state<Real>& y) {
+ndof_step_result<Real> simpson_ndof_step(const separable_system<Real, Potential>& s, const Real& h, const ndof_state<Real>& y,
+                                         last_force<Real>& kept) {
   const Potential& V = s.potential();
   const dense_matrix<Real>& M = s.mass();
   const dense_matrix<Real> M_abs = M.cwiseAbs();
   const Real h2 = h * h;
-  const dense_vector<Real> force_q = V.gradient(y.q);
+  const bool same = kept.valid && kept.q.size() == y.q.size() && (kept.q.array() == y.q.array()).all();
+  const dense_vector<Real> force_q = same ? kept.gradient : dense_vector<Real>(V.gradient(y.q));
   const dense_vector<Real> fixed = scaled(y.p, Real(-h / 2)) + scaled(force_q, Real(h2 / 12));
   const dense_vector<Real> fixed_terms = scaled(dense_vector<Real>(y.p.cwiseAbs()), Real(h / 2)) +
                                          scaled(dense_vector<Real>(force_q.cwiseAbs()), Real(h2 / 12)) + M_abs * y.q.cwiseAbs();
@@ -82,7 +94,10 @@ ndof_step_result<Real> simpson_ndof_step(const separable_system<Real, Potential>
     if (within) {
       const dense_vector<Real> impulse_half = y.p - scaled(dense_vector<Real>(force_q + 2 * force_x), Real(h / 6));
       out.state.q = y.q + scaled(s.mass_solve(impulse_half), h);
-      out.state.p = y.p - scaled(dense_vector<Real>(force_q + 4 * force_x + V.gradient(out.state.q)), Real(h / 6));
+      kept.q = out.state.q;
+      kept.gradient = V.gradient(out.state.q);
+      kept.valid = true;
+      out.state.p = y.p - scaled(dense_vector<Real>(force_q + 4 * force_x + kept.gradient), Real(h / 6));
       return out;
     }
     if (out.newton_iterations == max_newton_iterations) break;
@@ -93,6 +108,13 @@ ndof_step_result<Real> simpson_ndof_step(const separable_system<Real, Potential>
     ++out.newton_iterations;
   }
   detail::throw_newton_failure("simpson::simpson_ndof_step", out.newton_iterations, out.residual, out.residual_bound);
+}
+
+/// The same step evaluating both ends' forces (nothing kept).
+template <class Real, class Potential>
+ndof_step_result<Real> simpson_ndof_step(const separable_system<Real, Potential>& s, const Real& h, const ndof_state<Real>& y) {
+  last_force<Real> none;
+  return simpson_ndof_step(s, h, y, none);
 }
 
 /// One step of a partitioned Runge–Kutta pair for n degrees of freedom, its stage equations
@@ -186,15 +208,6 @@ ndof_state<Real> yoshida_ndof_step(const separable_system<Real, Potential>& s, c
   for (const Real& w : weights) y = stormer_verlet_ndof_step(s, Real(w * h), y);
   return y;
 }
-
-/// The force a kick–drift–kick step ends with, kept for the step that starts there (first same as
-/// last): a run of Störmer–Verlet steps, or of Yoshida's substeps, then evaluates ∇V once a
-/// substep, as its users write it. Valid for the q it was evaluated at only.
-template <class Real>
-struct last_force {
-  dense_vector<Real> q, gradient;
-  bool valid = false;
-};
 
 /// Störmer–Verlet's step as stormer_verlet_ndof_step, the force at y.q taken from `kept` when it was
 /// evaluated there, and the force at the new q kept.

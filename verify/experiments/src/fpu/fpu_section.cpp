@@ -159,7 +159,7 @@ class stepper_on_chain {
   }
   ndof_state<double> step(double h, const ndof_state<double>& y, long long& iterations) {
     switch (method_) {
-      case fpu_method::simpson: return counted(simpson_ndof_step(system_, h, y), iterations);
+      case fpu_method::simpson: return counted(simpson_ndof_step(system_, h, y, kept_), iterations);
       case fpu_method::stormer_verlet: return stormer_verlet_ndof_step(system_, h, y, kept_);
       case fpu_method::implicit_midpoint:
       case fpu_method::gauss_legendre_2: return counted(prk_ndof_step(tableau_, tableau_, coupling_, system_, h, y), iterations);
@@ -177,7 +177,7 @@ class stepper_on_chain {
   separable_system<double, counted_chain> system_;
   butcher_tableau<double> tableau_;
   stage_coupling<double> coupling_;
-  last_force<double> kept_;  // the explicit steps' force at the step's end
+  last_force<double> kept_;  // the force at the step's end (Simpson's impulse, the explicit kicks): the next step's start
 };
 
 /// One run: H and the I_j sampled over time, the largest relative errors, and how it ended.
@@ -267,7 +267,7 @@ chain_run run_chain(fpu_method m, const system_type& s, const fpu_settings& sett
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   out.gradients = count.gradients;
   out.hessians = count.hessians;
-  out.start_gradients = m == fpu_method::stormer_verlet || m == fpu_method::trigonometric ? 1 : 0;
+  out.start_gradients = m == fpu_method::simpson || m == fpu_method::stormer_verlet || m == fpu_method::trigonometric ? 1 : 0;
   if (out.ok()) {
     out.invariant_drift = (last_sum - first_sum) / static_cast<double>(tenth) / I0;
     out.discrete_invariant_drift = (last_discrete - first_discrete) / static_cast<double>(tenth) / std::abs(Id0);

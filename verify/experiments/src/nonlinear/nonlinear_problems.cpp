@@ -58,10 +58,11 @@ class ndof_method {
   }
   ndof_state<Real> step(const Real& h, const ndof_state<Real>& y, long long& iterations) const {
     switch (id_) {
-      case scheme_id::simpson: return counted(simpson_ndof_step(system_, h, y), iterations);
+      case scheme_id::simpson: return counted(simpson_ndof_step(system_, h, y, kept_), iterations);
       case scheme_id::lobatto_iiia_iiib_3:
       case scheme_id::gauss_legendre_2: return counted(prk_ndof_step(for_q_, for_p_, coupling_, system_, h, y), iterations);
-      // The explicit compositions keep the force the last kick ended with (first same as last).
+      // The explicit compositions keep the force the last kick ended with, and Simpson the force its
+      // impulse ended with (first same as last).
       case scheme_id::stormer_verlet: return stormer_verlet_ndof_step(system_, h, y, kept_);
       case scheme_id::yoshida: return yoshida_ndof_step(system_, weights_, h, y, kept_);
       default: return rk4_ndof_step(system_, h, y);
@@ -437,10 +438,11 @@ void add_nonlinear_problems(const nonlinear_settings& s, section_result& out) {
       "partial-pivoting LU (Simpson has n unknowns, Gauss–Legendre 2n, Lobatto 3n). Störmer–Verlet, Yoshida and RK4 are "
       "explicit. Work: every call of ∇V and of ∇²V that the steps make as they are written, counted in the error run: "
       "Störmer–Verlet 1 ∇V a step and Yoshida 3 (each keeps the force a kick ends with for the next, first same as last, "
-      "and evaluates one more at the run's start), RK4 4; Simpson 3 + its Newton iterations, Gauss–Legendre 2 two and Lobatto "
+      "and evaluates one more at the run's start), RK4 4; Simpson 2 + its Newton iterations (one at the internal node per "
+      "Newton pass and one at the step's end, which it keeps for the next step's start), Gauss–Legendre 2 two and Lobatto "
       "IIIA–IIIB three per Newton pass, with one ∇²V per stage and Newton iteration (Simpson: one; the LU solves are not counted: "
-      "they are in the run time). Simpson evaluates ∇V at the step's end and again at the next step's start; keeping it "
-      "(first same as last) would save one a step. Order: least-squares slope "
+      "they are in the run time). Lobatto IIIA–IIIB is Simpson's map by another implementation, its three stages solved "
+      "for, whose first-same-as-last stage is not kept. Order: least-squares slope "
       "of log ‖q_N − q(T)‖ against log N over the runs that are ok (round-off flattens it where the errors reach it). "
       "Every run is in nonlinear_problems.csv and report.json (`problems`).";
   for (const std::string& r : references) intro += "\n\n- " + r;
