@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.25723e-06:0.00949422]
+set xrange [4.28188e-06:0.018828]
 set xtics autofreq
 set mxtics default
 set yrange [5.80357e-16:0.00124168]
@@ -35,7 +35,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.1878e-05:0.110681]
+set xrange [4.07655e-05:0.198068]
 set xtics autofreq
 set mxtics default
 set yrange [6.13271e-06:1193.17]
@@ -57,7 +57,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [3.8755e-06:0.0101742]
+set xrange [3.86788e-06:0.0222997]
 set xtics autofreq
 set mxtics default
 set yrange [1.74904e-12:0.238914]
@@ -79,7 +79,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [6.13878e-06:0.0257108]
+set xrange [5.92485e-06:0.0540862]
 set xtics autofreq
 set mxtics default
 set yrange [1.31557e-10:0.114842]
@@ -125,7 +125,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.25723e-06:0.00949422]
+set xrange [4.28188e-06:0.018828]
 set xtics autofreq
 set mxtics default
 set yrange [5.80357e-16:0.00124168]
@@ -147,7 +147,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.1878e-05:0.110681]
+set xrange [4.07655e-05:0.198068]
 set xtics autofreq
 set mxtics default
 set yrange [6.13271e-06:1193.17]
@@ -169,7 +169,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [3.8755e-06:0.0101742]
+set xrange [3.86788e-06:0.0222997]
 set xtics autofreq
 set mxtics default
 set yrange [1.74904e-12:0.238914]
@@ -191,7 +191,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [6.13878e-06:0.0257108]
+set xrange [5.92485e-06:0.0540862]
 set xtics autofreq
 set mxtics default
 set yrange [1.31557e-10:0.114842]

@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.20429e-07:0.000236858]
+set xrange [1.20637e-07:0.000228455]
 set xtics autofreq
 set mxtics default
 set yrange [2.94139e-15:0.34373]
@@ -37,7 +37,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [6.24583e-06:0.0410778]
+set xrange [6.10222e-06:0.0846824]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -87,7 +87,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.20429e-07:0.000236858]
+set xrange [1.20637e-07:0.000228455]
 set xtics autofreq
 set mxtics default
 set yrange [2.94139e-15:0.34373]
@@ -111,7 +111,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [6.24583e-06:0.0410778]
+set xrange [6.10222e-06:0.0846824]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
