@@ -21,8 +21,6 @@
 
 namespace simpson::verify {
 
-using namespace report_parts;
-
 namespace {
 
 /// "Numeric recheck decided by interval enclosures …": which enclosure decided the claim, at which
@@ -116,7 +114,7 @@ std::string amendments_markdown(const std::vector<amendment>& amendments) {
     if (places.size() > 1) where += places.size() == 2 ? " (twice)" : fmt::format(" ({} times)", places.size());
     lines.push_back(fmt::format("{}: printed {}, should be {}", where, amendment_side(a.printed, a.tex), amendment_side(a.should_be, a.tex)));
   }
-  return join(lines, "; ");
+  return report_parts::join(lines, "; ");
 }
 
 }  // namespace
@@ -125,7 +123,7 @@ namespace {
 
 /// The claims' Coq certificates in one paragraph: how many exported, how many checked by coqc and in how long.
 std::string coq_markdown(const run_record& r) {
-  const verdict_counts c = count_verdicts(r);
+  const report_parts::verdict_counts c = report_parts::count_verdicts(r);
   if (r.outcomes.empty()) return "";
   std::string version;
   for (const claim_outcome& o : r.outcomes) {
@@ -202,7 +200,7 @@ std::string first_sentence(const std::string& text) {
 /// What a referee reads first: the distinct findings about the paper, ordered by consequence, each
 /// in one line, with the consequences counted under their cause.
 std::string referee_summary_markdown(const run_record& r) {
-  const verdict_counts c = count_verdicts(r);
+  const report_parts::verdict_counts c = report_parts::count_verdicts(r);
   if (r.outcomes.empty()) return {};
   const std::string the = r.of_the_paper ? "paper" : "document";
   std::string md = "## Referee's summary\n\n";
@@ -235,14 +233,14 @@ std::string referee_summary_markdown(const run_record& r) {
   const auto consequences_of = [&](const claim& k) {
     std::vector<std::string> out;
     for (const claim_outcome& other : r.outcomes) {
-      if (cause_of(other) == k.id && is_finding(other.result.outcome)) out.push_back("`" + other.checked->id + "`");
+      if (cause_of(other) == k.id && report_parts::is_finding(other.result.outcome)) out.push_back("`" + other.checked->id + "`");
     }
     return out;
   };
   const auto rank = [&](const claim_outcome& o) {
     if (!consequences_of(*o.checked).empty()) return 0;
     if (o.checked->typographical) return 5;
-    switch (finding_of(o)) {
+    switch (report_parts::finding_of(o)) {
       case finding::erratum: return 1;
       case finding::derivation_gap: return 2;
       case finding::wording:
@@ -259,15 +257,15 @@ std::string referee_summary_markdown(const run_record& r) {
     for (const claim_outcome& o : r.outcomes) {
       const claim& k = *o.checked;
       const bool typographical = k.typographical;
-      if (k.origin != claim_origin::paper || !is_finding(o.result.outcome) || !cause_of(o).empty() || rank(o) != level) continue;
+      if (k.origin != claim_origin::paper || !report_parts::is_finding(o.result.outcome) || !cause_of(o).empty() || rank(o) != level) continue;
       const std::vector<std::string> consequences = consequences_of(k);
       const std::string what = !o.result.amendments.empty()   ? amendments_markdown(o.result.amendments)
                                : !o.result.correction.empty() ? markdown_escaped(o.result.correction)
                                                               : markdown_escaped(first_sentence(o.result.note));
       const bool stops = !what.empty() && what.back() == '.';
-      md += fmt::format("- **`{}`** (§{}, {}{}): {}{}{}\n", k.id, markdown_escaped(k.section), to_string(finding_of(o)),
+      md += fmt::format("- **`{}`** (§{}, {}{}): {}{}{}\n", k.id, markdown_escaped(k.section), to_string(report_parts::finding_of(o)),
                         typographical ? ", typographical" : "", what, stops || consequences.empty() ? "" : ".",
-                        consequences.empty() ? "" : fmt::format(" Consequences (counted under it): {}.", join(consequences, ", ")));
+                        consequences.empty() ? "" : fmt::format(" Consequences (counted under it): {}.", report_parts::join(consequences, ", ")));
     }
   }
   return md + "\n";
@@ -290,8 +288,8 @@ std::string provenance_markdown(const run_record& r) {
     for (const json& c : citations["claims_citing_unresolved"]) claims.push_back("`" + c["claim"].get<std::string>() + "`");
     md += fmt::format(" Its {} citations ({} distinct keys) are unresolved: the source carries {}, so no attribution "
                       "(to {}) can be checked{}.", uses, unresolved, citations["bibliography"].get<bool>() ? "no entry for them" : "no bibliography",
-                      join(citations["unresolved"].get<std::vector<std::string>>(), ", "),
-                      claims.empty() ? std::string() : "; the claims whose quoted sentence cites: " + join(claims, ", "));
+                      report_parts::join(citations["unresolved"].get<std::vector<std::string>>(), ", "),
+                      claims.empty() ? std::string() : "; the claims whose quoted sentence cites: " + report_parts::join(claims, ", "));
   }
   md += "\n\n";
   if (p["earlier_text"].is_array() && !p["earlier_text"].empty()) {
@@ -307,7 +305,7 @@ std::string provenance_markdown(const run_record& r) {
         rows.push_back(fmt::format(c["differs"].get<bool>() ? "`{}` {} on the live text, **{}** on the earlier one" : "`{}` {} on both",
                                    c["claim"].get<std::string>(), c["live"].get<std::string>(), c["earlier"].get<std::string>()));
       }
-      md += (rows.empty() ? std::string("no claim of this run reads it") : join(rows, "; ")) + "\n";
+      md += (rows.empty() ? std::string("no claim of this run reads it") : report_parts::join(rows, "; ")) + "\n";
     }
     md += "\n";
   }
@@ -316,7 +314,7 @@ std::string provenance_markdown(const run_record& r) {
 
 }  // namespace
 
-std::string report_markdown(const run_record& r) { return report_markdown(r, all_plots_drawn(r)); }
+std::string report_markdown(const run_record& r) { return report_markdown(r, report_parts::all_plots_drawn(r)); }
 
 std::string report_markdown(const run_record& r, const plot_outcome& plots) {
   std::string md;
@@ -331,7 +329,7 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
   md += fmt::format("**{}**\n\n{}\n\n", markdown_escaped(summary_line(r)), markdown_escaped(expectation_line(r)));
   md += referee_summary_markdown(r);
   {
-    const verdict_counts c = count_verdicts(r);
+    const report_parts::verdict_counts c = report_parts::count_verdicts(r);
     const std::string source = r.of_the_paper ? "the paper" : "the document";
     md += fmt::format("{} of {} claims read their formula from {}'s LaTeX source ({}) and prove it in GiNaC against "
                       "the derived one, beside our own kernel; {} quote the prose sentence they judge from that source{} and parse "
@@ -353,7 +351,7 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
         "report.json (`environment`).\n\n";
   md += fmt::format("Seed {} · {} random samples per numeric recheck and precision · precisions: {} · interval enclosures from "
                     "40 digits, doubled up to {}\n\n", r.run_scene.seed,
-                    r.run_scene.samples, join(precision_names(r.run_scene.precisions), ", "), r.run_scene.enclosure_budget_digits);
+                    r.run_scene.samples, report_parts::join(report_parts::precision_names(r.run_scene.precisions), ", "), r.run_scene.enclosure_budget_digits);
   md += provenance_markdown(r);
   md += "Verdicts: **holds** (true as printed), **erratum** (false as printed; a corrected statement is proved), **fails** "
         "(false, no correction found), **kernels-disagree** (our kernel and GiNaC reached different conclusions on the derived statement: a bug, never expected), "
@@ -378,7 +376,7 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
                                      (outcome_as_expected(o) ? "" : r.validation ? " **(does not hold)**" : " **(unexpected)**");
     md += fmt::format("| [{}](#{}) | {} | {} | {} | {} | {} | {} | {} |\n", c.id, heading_slug(c.id), c.section, markdown_cell(c.equation),
                       !o.result.printed.is_null() ? "read" : !o.result.quoted.empty() ? "quoted" : "typed", what_the_paper_says(o),
-                      verdict_text, to_string(o.expected), join(c.methods, ", ") + (o.result.printed.is_null() ? "" : ", GiNaC"));
+                      verdict_text, to_string(o.expected), report_parts::join(c.methods, ", ") + (o.result.printed.is_null() ? "" : ", GiNaC"));
   }
 
   // The claims of one verdict, each with its printed and corrected statements.
@@ -458,11 +456,11 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
     md += "\n# Experiments\n\n";
     std::vector<std::string> names;
     for (const section_result& section : r.sections) names.push_back(section.name);
-    md += "Sections computed for this scene: " + join(names, ", ") +
+    md += "Sections computed for this scene: " + report_parts::join(names, ", ") +
           ". Data files (CSV, .dat) and gnuplot scripts (.gp) are beside this report; each plot is an SVG and a PNG.\n\n";
     for (const section_result& section : r.sections) md += section_markdown(section);
     if (!plots.failures.empty()) {
-      md += "**Plots not drawn:** " + join(plots.failures, "; ") + "\n\n";
+      md += "**Plots not drawn:** " + report_parts::join(plots.failures, "; ") + "\n\n";
     }
   }
 
@@ -482,7 +480,7 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
         }
         md += fmt::format("- {} (line {}){}{}\n", markdown_escaped(f["label"].get<std::string>()), f["line"].get<int>(),
                           f.contains("tex") ? ": " + markdown_code(f["tex"].get<std::string>()) : std::string(),
-                          sides.empty() ? std::string() : "\n  - parsed: " + join(sides, " and "));
+                          sides.empty() ? std::string() : "\n  - parsed: " + report_parts::join(sides, " and "));
       }
       md += "\n";
     }

@@ -87,36 +87,34 @@ expectation_counts count_expectations(const run_record& r) {
 
 }  // namespace report_parts
 
-using namespace report_parts;
-
 std::string summary_line(const run_record& r) {
-  const verdict_counts c = count_verdicts(r);
-  const expectation_counts e = count_expectations(r);
+  const report_parts::verdict_counts c = report_parts::count_verdicts(r);
+  const report_parts::expectation_counts e = report_parts::count_expectations(r);
   const std::vector<std::string> rejected = rejected_certificates(r);
   // What makes the exit code 1, each named: the line says "as expected" only when it is 0.
   std::vector<std::string> problems;
   if (!c.unexpected.empty()) {
-    problems.push_back(r.validation ? fmt::format("{} not holding ({})", c.unexpected.size(), join(c.unexpected, ", "))
-                                    : fmt::format("{} not as expected ({})", c.unexpected.size(), join(c.unexpected, ", ")));
+    problems.push_back(r.validation ? fmt::format("{} not holding ({})", c.unexpected.size(), report_parts::join(c.unexpected, ", "))
+                                    : fmt::format("{} not as expected ({})", c.unexpected.size(), report_parts::join(c.unexpected, ", ")));
   }
   if (!c.fixes_not_accepted.empty()) {
     problems.push_back(fmt::format("{} fixed ({}: recorded as a finding, now holds; --accept-fixes accepts a fix)", c.fixes_not_accepted.size(),
-                                   join(c.fixes_not_accepted, ", ")));
+                                   report_parts::join(c.fixes_not_accepted, ", ")));
   }
   if (!e.failed.empty()) {
-    problems.push_back(fmt::format("{} expectation{} failed ({})", e.failed.size(), e.failed.size() == 1 ? "" : "s", join(e.failed, ", ")));
+    problems.push_back(fmt::format("{} expectation{} failed ({})", e.failed.size(), e.failed.size() == 1 ? "" : "s", report_parts::join(e.failed, ", ")));
   }
   if (!rejected.empty()) {
-    problems.push_back(fmt::format("coqc rejected {} certificate{} ({})", rejected.size(), rejected.size() == 1 ? "" : "s", join(rejected, ", ")));
+    problems.push_back(fmt::format("coqc rejected {} certificate{} ({})", rejected.size(), rejected.size() == 1 ? "" : "s", report_parts::join(rejected, ", ")));
   }
   const std::string expectations =
       e.total == 0 ? std::string()
                    : fmt::format("; {} expectation{} of the experiments: {} hold{}", e.total, e.total == 1 ? "" : "s", e.total - e.failed.size(),
                                  e.failed.empty() ? "" : fmt::format(", {} failed", e.failed.size()));
   const std::string ending = c.faults           ? std::string("no verdict on the run: a harness fault")
-                             : !problems.empty() ? join(problems, "; ")
+                             : !problems.empty() ? report_parts::join(problems, "; ")
                              : r.validation      ? std::string(e.total == 0 ? "every claim holds" : "every claim and expectation holds")
-                             : !c.fixed.empty()  ? fmt::format("all verdicts as expected, {} fixed, fixes accepted ({})", c.fixed.size(), join(c.fixed, ", "))
+                             : !c.fixed.empty()  ? fmt::format("all verdicts as expected, {} fixed, fixes accepted ({})", c.fixed.size(), report_parts::join(c.fixed, ", "))
                                                  : std::string("all verdicts as expected");
   return fmt::format("{} {}: {} held, {} errata, {} failed{}{}{}{}{}{}{}{}; {}", r.outcomes.size(), r.outcomes.size() == 1 ? "claim" : "claims",
                      c.held, c.errata, c.failed,
@@ -133,16 +131,16 @@ namespace {
 
 /// A validation's exit line: what holds in the document, with no talk of expected verdicts. A claim
 /// that holds once another's correction is put in is counted with its cause, never twice.
-std::string validation_line(const run_record& r, const verdict_counts& c) {
+std::string validation_line(const run_record& r, const report_parts::verdict_counts& c) {
   std::vector<std::string> causes, consequences, undecided, other;
   for (const claim_outcome& o : r.outcomes) {
     if (outcome_as_expected(o)) continue;
     const std::string& id = o.checked->id;
     if (o.result.outcome == verdict::undecided || o.result.outcome == verdict::unproved || o.result.outcome == verdict::kernels_disagree) {
       undecided.push_back(id);
-    } else if (is_finding(o.result.outcome) && !cause_of(o).empty()) {
+    } else if (report_parts::is_finding(o.result.outcome) && !cause_of(o).empty()) {
       consequences.push_back(id + " (from " + cause_of(o) + ")");
-    } else if (is_finding(o.result.outcome)) {
+    } else if (report_parts::is_finding(o.result.outcome)) {
       causes.push_back(id);
     } else {
       other.push_back(id + " (" + to_string(o.result.outcome) + ")");
@@ -151,18 +149,18 @@ std::string validation_line(const run_record& r, const verdict_counts& c) {
   std::vector<std::string> parts;
   if (!causes.empty()) {
     parts.push_back(fmt::format("{} claim{} {} not hold as written ({})", causes.size(), causes.size() == 1 ? "" : "s",
-                                causes.size() == 1 ? "does" : "do", join(causes, ", ")));
+                                causes.size() == 1 ? "does" : "do", report_parts::join(causes, ", ")));
   }
   if (!consequences.empty()) {
     parts.push_back(fmt::format("{} follow{} from another's correction ({})", consequences.size(), consequences.size() == 1 ? "s" : "",
-                                join(consequences, ", ")));
+                                report_parts::join(consequences, ", ")));
   }
   if (!undecided.empty()) {
-    parts.push_back(fmt::format("{} could not be decided ({}: the tool's limits, not findings)", undecided.size(), join(undecided, ", ")));
+    parts.push_back(fmt::format("{} could not be decided ({}: the tool's limits, not findings)", undecided.size(), report_parts::join(undecided, ", ")));
   }
-  if (!other.empty()) parts.push_back(fmt::format("{} changed ({})", other.size(), join(other, ", ")));
+  if (!other.empty()) parts.push_back(fmt::format("{} changed ({})", other.size(), report_parts::join(other, ", ")));
   (void)c;
-  return join(parts, "; ");
+  return report_parts::join(parts, "; ");
 }
 
 }  // namespace
@@ -170,7 +168,7 @@ std::string validation_line(const run_record& r, const verdict_counts& c) {
 std::string expectation_line(const run_record& r) {
   const std::vector<std::string> failed = failed_expectations(r);
   if (r.outcomes.empty() && failed.empty()) return "No claim in this run.";
-  const verdict_counts c = count_verdicts(r);
+  const report_parts::verdict_counts c = report_parts::count_verdicts(r);
   std::vector<std::string> expected_failures;
   for (const claim_outcome& o : r.outcomes) {
     if (o.result.outcome == o.expected && (o.expected == verdict::fails || o.expected == verdict::kernels_disagree)) {
@@ -190,7 +188,7 @@ std::string expectation_line(const run_record& r) {
     if (rejected) why += (why.empty() ? "" : "; ") + std::string("coqc rejected a certificate");
     if (!failed.empty()) {
       why += (why.empty() ? "" : "; ") + fmt::format("{} expectation{} of the experiments failed ({})", failed.size(), failed.size() == 1 ? "" : "s",
-                                                     join(failed, ", "));
+                                                     report_parts::join(failed, ", "));
     }
     return "Exit code 1: " + why + "; see Failures.";
   }
@@ -204,12 +202,12 @@ std::string expectation_line(const run_record& r) {
       why += (why.empty() ? "" : "; ") + fmt::format("{} finding{} of the record now hold{} ({}): a fix of {}, which a guard reports as a "
                                                      "change (--accept-fixes accepts fixes); see Fixed",
                                                      c.fixes_not_accepted.size(), c.fixes_not_accepted.size() == 1 ? "" : "s",
-                                                     c.fixes_not_accepted.size() == 1 ? "s" : "", join(c.fixes_not_accepted, ", "), changed);
+                                                     c.fixes_not_accepted.size() == 1 ? "s" : "", report_parts::join(c.fixes_not_accepted, ", "), changed);
     }
     if (rejected) why += (why.empty() ? "" : "; ") + std::string("coqc rejected a certificate");
     if (!failed.empty()) {
       why += (why.empty() ? "" : "; ") + fmt::format("{} expectation{} of the experiments failed ({})", failed.size(), failed.size() == 1 ? "" : "s",
-                                                     join(failed, ", "));
+                                                     report_parts::join(failed, ", "));
     }
     return "Exit code 1: " + why + "; see Failures.";
   }
@@ -220,15 +218,15 @@ std::string expectation_line(const run_record& r) {
   if (c.errata > 0) findings.push_back(fmt::format("{} {} (false as printed, a correction proved)", c.errata, c.errata == 1 ? "erratum" : "errata"));
   if (!expected_failures.empty()) {
     findings.push_back(fmt::format("{} expected failure{} ({}: not reproduced, no correction found)", expected_failures.size(),
-                                   expected_failures.size() == 1 ? "" : "s", join(expected_failures, ", ")));
+                                   expected_failures.size() == 1 ? "" : "s", report_parts::join(expected_failures, ", ")));
   }
   if (findings.empty()) return line + ".";
   const std::size_t expected_findings = c.errata + expected_failures.size();
-  return line + ": " + join(findings, " and ") + (expected_findings == 1 ? " is an expected verdict." : " are expected verdicts.");
+  return line + ": " + report_parts::join(findings, " and ") + (expected_findings == 1 ? " is an expected verdict." : " are expected verdicts.");
 }
 
 json summary_json(const run_record& r) {
-  const verdict_counts c = count_verdicts(r);
+  const report_parts::verdict_counts c = report_parts::count_verdicts(r);
   return {{"line", summary_line(r)},     {"expectation", expectation_line(r)}, {"claims", r.outcomes.size()},
           {"held", c.held},              {"errata", c.errata},
           {"failed", c.failed},          {"harness_faults", c.faults}, {"kernels_disagree", c.disagreed},
@@ -239,13 +237,13 @@ json summary_json(const run_record& r) {
           {"machine_read", c.machine_read}, {"quoted", c.quoted}, {"whole_text", c.whole_text}, {"typed", c.typed},
           {"coq_exported", c.coq_exported}, {"coq_checked", c.coq_checked},
           {"unexpected", c.unexpected}, {"failed_expectations", failed_expectations(r)},
-          {"expectations", count_expectations(r).total},
+          {"expectations", report_parts::count_expectations(r).total},
           {"fixed", c.fixed},
           {"fixes_accepted", r.run_scene.accept_fixes},
           {"exit_code", run_exit_code(r)},
           {"mode", r.validation ? "validation" : "regression"}};
 }
 
-std::size_t machine_read(const run_record& r) { return count_verdicts(r).machine_read; }
+std::size_t machine_read(const run_record& r) { return report_parts::count_verdicts(r).machine_read; }
 
 }  // namespace simpson::verify

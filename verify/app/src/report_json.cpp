@@ -21,8 +21,6 @@
 
 namespace simpson::verify {
 
-using namespace report_parts;
-
 namespace {
 
 /// The speed figures: the headline claims (their records say `headline = true`) in GiNaC (with the derivation
@@ -56,7 +54,7 @@ plot_outcome report_parts::all_plots_drawn(const run_record& r) {
   return p;
 }
 
-json report_json(const run_record& r) { return report_json(r, all_plots_drawn(r)); }
+json report_json(const run_record& r) { return report_json(r, report_parts::all_plots_drawn(r)); }
 
 namespace {
 
@@ -83,7 +81,7 @@ json report_json(const run_record& r, const plot_outcome& plots) {
                {"expected", to_string(o.expected)},
                {"as_expected", outcome_as_expected(o)},
                {"origin", to_string(c.origin)},
-               {"finding", to_string(finding_of(o))}};
+               {"finding", to_string(report_parts::finding_of(o))}};
     if (!cause_of(o).empty()) entry["follows_from"] = cause_of(o);
     if (!o.content_changed.empty()) entry["content_changed"] = o.content_changed;
     if (o.fixed) entry["fixed"] = true;
@@ -116,7 +114,7 @@ json report_json(const run_record& r, const plot_outcome& plots) {
               {"seed", r.run_scene.seed},
               {"samples", r.run_scene.samples},
               {"enclosure_budget_digits", r.run_scene.enclosure_budget_digits},
-              {"precisions", precision_names(r.run_scene.precisions)},
+              {"precisions", report_parts::precision_names(r.run_scene.precisions)},
               {"paper", r.paper_origin},
               {"overrides", r.run_scene.overrides},
               {"summary", summary_json(r)},
@@ -177,7 +175,7 @@ std::string timing_markdown(const run_record& r, const plot_outcome& plots) {
     if (machine_read(r) > 0) {
       md += fmt::format("The GiNaC derivation from first principles took {:.2e} s; the headline claims ({}) in GiNaC, with that "
                         "derivation, {:.2e} s.\n\n",
-                        r.ginac_derivation_seconds, join(speed.headline_ids, ", "), speed.headline);
+                        r.ginac_derivation_seconds, report_parts::join(speed.headline_ids, ", "), speed.headline);
     }
     md += fmt::format("## Claims\n\nEvery claim in both kernels, numeric rechecks included: {:.2e} s.{}\n\n"
                       "| claim | seconds | of which GiNaC, printed formula |\n|---|---|---|\n",
@@ -196,7 +194,7 @@ std::string timing_markdown(const run_record& r, const plot_outcome& plots) {
     for (std::size_t k = 0; k < r.sections.size(); ++k) md += fmt::format("| {} | {:.2f} |\n", r.sections[k].name, r.section_seconds[k]);
     md += "\n";
     for (const section_result& section : r.sections) md += section_timing_markdown(section);
-    if (!plots.failures.empty()) md += "**Plots not drawn:** " + join(plots.failures, "; ") + "\n\n";
+    if (!plots.failures.empty()) md += "**Plots not drawn:** " + report_parts::join(plots.failures, "; ") + "\n\n";
   }
   return md;
 }

@@ -7,12 +7,13 @@
 #include <simpson/verify/tex_document.hpp>
 #include <simpson/verify/quoted_words.hpp>
 
-#include "check_registry.hpp"
-#include "core_bindings.hpp"
-#include "claim_support.hpp"
 #include <simpson/shapes/proof_shapes.hpp>
-#include "derivation_support.hpp"
+
 #include "bespoke/bespoke_checks.hpp"
+#include "check_registry.hpp"
+#include "claim_support.hpp"
+#include "core_bindings.hpp"
+#include "derivation_support.hpp"
 #include "embedded_claims.hpp"
 
 #include <algorithm>
