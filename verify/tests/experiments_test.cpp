@@ -289,16 +289,23 @@ TEST(Experiments, FpuSecondBandKeepsTheSchemesOwnInvariantNotTheFlows) {
   EXPECT_THROW(run_fpu_chain(s, "euler", 1, 1), std::invalid_argument);
 }
 
-TEST(Experiments, FpuSectionMeetsItsExpectationsAtTheQuickSize) {
+/// The fpu section at a test's size: runs to t = 4, a scan from `scan_from` to 5 in steps of
+/// `scan_step` to t = 2, 50 samples a curve.
+fpu_settings fpu_at_test_size(double scan_from, double scan_step) {
   fpu_settings s;
-  s.omega_h = {1.5, 3.0};
   s.end_time = s.exchange_time = 4;
-  s.reference_omega_h = 1;
-  s.scan_from = 1;
+  s.scan_from = scan_from;
   s.scan_to = 5;
-  s.scan_step = 1;
+  s.scan_step = scan_step;
   s.scan_end_time = 2;
   s.samples = 50;
+  return s;
+}
+
+TEST(Experiments, FpuSectionMeetsItsExpectationsAtTheQuickSize) {
+  fpu_settings s = fpu_at_test_size(1, 1);
+  s.omega_h = {1.5, 3.0};
+  s.reference_omega_h = 1;
   s.resonances = {3, 4};
   s.equal_cost_omega_h = {1.5};
   const section_result out = run_fpu(s);
@@ -342,15 +349,9 @@ TEST(Experiments, FpuMethodsAreComparedAtEqualCost) {
   // the explicit ones (one evaluation a step) at that ωh exactly, the implicit ones where their own
   // evaluations per step over ωh are 1/0.5 and 1/1.5. A comparison at equal step (every ωh the same)
   // fails the second check.
-  fpu_settings s;
+  fpu_settings s = fpu_at_test_size(0.25, 0.25);
   s.omega_h = {1.5};
-  s.end_time = s.exchange_time = 4;
   s.reference_omega_h = 0.5;
-  s.scan_from = 0.25;
-  s.scan_to = 5;
-  s.scan_step = 0.25;
-  s.scan_end_time = 2;
-  s.samples = 50;
   s.resonances = {};
   s.equal_cost_omega_h = {0.5, 1.5};
   const section_result out = run_fpu(s);

@@ -121,38 +121,11 @@ std::vector<resonance> resonant_steps(fpu_method m, const std::vector<int>& orde
 /// θ = 2π/k in lowest terms: π/2 for k = 4, 2π/3 for k = 3.
 std::string resonance_text(int k) { return k % 2 == 0 ? fmt::format("θ = π/{}", k / 2) : fmt::format("θ = 2π/{}", k); }
 
-/// The chain's potential with its force evaluations counted (counting_potential.hpp's rule: every
-/// call, as the step makes it): ∇V and, for the trigonometric step, ∇U, the soft springs' part, each one
-/// force evaluation; ∇²V apart.
-class counted_chain {
- public:
-  counted_chain(const fpu_potential<double>& inner, detail::evaluation_count& count) : inner_(inner), count_(&count) {}
-  double value(const dense_vector<double>& q) const { return inner_.value(q); }
-  dense_vector<double> gradient(const dense_vector<double>& q) const {
-    ++count_->gradients;
-    return inner_.gradient(q);
-  }
-  dense_matrix<double> hessian(const dense_vector<double>& q) const {
-    ++count_->hessians;
-    return inner_.hessian(q);
-  }
-  const double& stiff_frequency() const { return inner_.stiff_frequency(); }
-  dense_vector<double> stiff_projection(const dense_vector<double>& v) const { return inner_.stiff_projection(v); }
-  dense_vector<double> slow_gradient(const dense_vector<double>& q) const {
-    ++count_->gradients;
-    return inner_.slow_gradient(q);
-  }
-
- private:
-  fpu_potential<double> inner_;
-  detail::evaluation_count* count_;
-};
-
 /// A method's step on the chain; adds its Newton iterations, and counts its force evaluations.
 class stepper_on_chain {
  public:
   stepper_on_chain(fpu_method m, const system_type& s, detail::evaluation_count& count)
-      : method_(m), system_(s.mass(), counted_chain(s.potential(), count)) {
+      : method_(m), system_(s.mass(), detail::counting_potential<fpu_potential<double>>(s.potential(), count)) {
     const butcher_tableau<double> t = m == fpu_method::implicit_midpoint ? implicit_midpoint_tableau<double>() : gauss_legendre2_tableau<double>();
     tableau_ = t;
     coupling_ = couple(tableau_, tableau_);
@@ -174,7 +147,8 @@ class stepper_on_chain {
     return r.state;
   }
   fpu_method method_;
-  separable_system<double, counted_chain> system_;
+  // ∇V, and the trigonometric step's ∇U, each one force evaluation; ∇²V apart.
+  separable_system<double, detail::counting_potential<fpu_potential<double>>> system_;
   butcher_tableau<double> tableau_;
   stage_coupling<double> coupling_;
   last_force<double> kept_;  // the force at the step's end (Simpson's impulse, the explicit kicks): the next step's start

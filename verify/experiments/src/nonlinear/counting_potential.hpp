@@ -13,7 +13,7 @@ struct evaluation_count {
 };
 
 /// `Potential` with its ∇V and ∇²V calls counted into an evaluation_count (V itself, used only for the
-/// energy that the run watches, is not counted).
+/// energy that the run watches, is not counted). The nonlinear problems and the FPU chain count with it.
 template <class Potential>
 class counting_potential {
  public:
@@ -31,6 +31,19 @@ class counting_potential {
   auto hessian(const Vector& q) const {
     ++count_->hessians;
     return inner_.hessian(q);
+  }
+  // The split a trigonometric step takes (trigonometric_step.hpp), where the potential has one: the
+  // stiff part's frequency and projector (no force evaluated), and ∇U, the slow part's gradient, counted
+  // as one force evaluation.
+  decltype(auto) stiff_frequency() const { return inner_.stiff_frequency(); }
+  template <class Vector>
+  auto stiff_projection(const Vector& v) const {
+    return inner_.stiff_projection(v);
+  }
+  template <class Vector>
+  auto slow_gradient(const Vector& q) const {
+    ++count_->gradients;
+    return inner_.slow_gradient(q);
   }
 
  private:

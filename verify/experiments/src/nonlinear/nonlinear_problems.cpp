@@ -273,6 +273,7 @@ problem_run run_one(const problem<Potential>& p, scheme_id id, long long N, cons
 }
 
 struct problem_panels {
+  std::string name;
   panel state, energy, work, time;
   std::vector<std::pair<scheme_id, std::vector<std::pair<double, double>>>> work_error;  // each method's (∇V, ‖q_N − q(T)‖), runs ok
 };
@@ -296,7 +297,8 @@ template <class Potential>
 problem_panels run_problem(const problem<Potential>& p, const nonlinear_settings& s, table& rows, table& summary, table& times,
                            std::vector<std::string>& references) {
   references.push_back("**" + p.name + "**: " + p.reference);
-  problem_panels out{{p.name + ": state error", {"N", true}, {"|q_N - q(T)|", true}, {}, "bottom left"},
+  problem_panels out{p.name,
+                     {p.name + ": state error", {"N", true}, {"|q_N - q(T)|", true}, {}, "bottom left"},
                      {p.name + ": energy error", {"N", true}, {"max |H - H_0|/|H_0|", true}, {}, "bottom left"},
                      {p.name, {"∇V evaluations in the run", true}, {"|q_N - q(T)|", true}, {}, "bottom left"},
                      {p.name, {"run time (s, median of repeats)", true}, {"|q_N - q(T)|", true}, {}, "bottom left"},
@@ -417,7 +419,7 @@ void add_nonlinear_problems(const nonlinear_settings& s, section_result& out) {
     }
   };
   const auto collect = [&](const problem_panels& p) {
-    add_costs(p.work.title, p);
+    add_costs(p.name, p);
     state_panels.push_back(p.state);
     energy_panels.push_back(p.energy);
     work_panels.push_back(p.work);

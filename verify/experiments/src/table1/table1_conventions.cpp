@@ -293,9 +293,10 @@ std::vector<computed_entry> table1_under(const convention_choice& choice, const 
 
 convention_search_result search_table1(const std::vector<printed_entry>& printed, const table1_stated& stated, run_memo* memo) {
   // The ledger's claims and the table1 section search the same table in one run: once per run. The
-  // key is every number the search depends on, exactly (hexadecimal floating point).
+  // key is everything the search depends on: each entry's place, value (exactly, in hexadecimal
+  // floating point), printed digits and kind, and the stated solution.
   std::string key = fmt::format("table1 search {:a} {:a} {:a}", stated.amplitude, stated.phase, stated.period);
-  for (const printed_entry& e : printed) key += fmt::format(" {:a}{}", e.value, e.round_off ? "r" : "");
+  for (const printed_entry& e : printed) key += fmt::format(" {}/{}:{:a}:{}{}", e.row, e.column, e.value, e.digits, e.round_off ? "r" : "");
   return remembered<convention_search_result>(memo, key, [&] {
     // The stated solution is the text's: its amplitude and phase where the search starts (and what it
     // calls stated), its period fixed in every run.
