@@ -4,11 +4,11 @@
 #include <simpson/trigonometric_step.hpp>
 
 #include <simpson/fpu_chain.hpp>
+#include <simpson/scalar_traits.hpp>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <limits>
 
 namespace simpson {
 namespace {
@@ -16,8 +16,8 @@ namespace {
 // Tolerances: k eps times the scale of the terms compared. The states are of order 1 and the stiff
 // spring's momentum terms of order ω (ω sin ωh q): each entry below is a sum of a few such terms, each
 // rounded a few times, so 16 eps (order-1 terms) or 16 eps ω (terms with a factor ω) bounds its error
-// with room; a wrong filter moves an entry by order h² or more, far above either.
-constexpr double eps = std::numeric_limits<double>::epsilon();
+// with room; a wrong filter moves an entry by order h² or more, far above either. eps<double>() is
+// scalar_traits.hpp's.
 
 /// Two unit masses, stiff spring ω²P, slow potential U = ½ qᵀKq (the step is then linear), counting ∇U.
 struct two_masses {
@@ -74,10 +74,10 @@ TEST(TrigonometricStep, WithoutASlowForceItIsTheStiffSpringsExactFlow) {
   const double d = y.q(1) - y.q(0), v = y.p(1) - y.p(0), c = (y.q(1) + y.q(0)) / 2, u = (y.p(1) + y.p(0)) / 2;
   const double d1 = d * std::cos(s.omega * h) + v / s.omega * std::sin(s.omega * h);
   const double v1 = -d * s.omega * std::sin(s.omega * h) + v * std::cos(s.omega * h);
-  EXPECT_NEAR(out.q(1) - out.q(0), d1, 16 * eps);
-  EXPECT_NEAR(out.p(1) - out.p(0), v1, 16 * eps * s.omega);
-  EXPECT_NEAR((out.q(1) + out.q(0)) / 2, c + h * u, 16 * eps);
-  EXPECT_NEAR((out.p(1) + out.p(0)) / 2, u, 16 * eps);
+  EXPECT_NEAR(out.q(1) - out.q(0), d1, 16 * eps<double>());
+  EXPECT_NEAR(out.p(1) - out.p(0), v1, 16 * eps<double>() * s.omega);
+  EXPECT_NEAR((out.q(1) + out.q(0)) / 2, c + h * u, 16 * eps<double>());
+  EXPECT_NEAR((out.p(1) + out.p(0)) / 2, u, 16 * eps<double>());
 }
 
 TEST(TrigonometricStep, WithoutAStiffSpringItIsStormerVerlet) {
@@ -89,8 +89,8 @@ TEST(TrigonometricStep, WithoutAStiffSpringItIsStormerVerlet) {
   const dense_vector<double> p_half = y.p - h / 2 * (s.K * y.q);
   const dense_vector<double> q1 = y.q + h * p_half;
   const dense_vector<double> p1 = p_half - h / 2 * (s.K * q1);
-  EXPECT_LT((out.q - q1).cwiseAbs().maxCoeff(), 16 * eps);
-  EXPECT_LT((out.p - p1).cwiseAbs().maxCoeff(), 16 * eps);
+  EXPECT_LT((out.q - q1).cwiseAbs().maxCoeff(), 16 * eps<double>());
+  EXPECT_LT((out.p - p1).cwiseAbs().maxCoeff(), 16 * eps<double>());
 }
 
 TEST(TrigonometricStep, IsSymplecticAtEveryOmegaH) {
@@ -103,7 +103,7 @@ TEST(TrigonometricStep, IsSymplecticAtEveryOmegaH) {
     const two_masses s = with_slow(50, 2, -0.5, 1);
     const dense_matrix<double> M = step_matrix(s, omega_h / s.omega);
     // MᵀJM sums products of an entry of order ω by one of order 1/ω or 1: 16 eps ω² bounds its rounding.
-    EXPECT_LT((M.transpose() * J * M - J).cwiseAbs().maxCoeff(), 16 * eps * s.omega * s.omega) << "ωh = " << omega_h;
+    EXPECT_LT((M.transpose() * J * M - J).cwiseAbs().maxCoeff(), 16 * eps<double>() * s.omega * s.omega) << "ωh = " << omega_h;
   }
 }
 
@@ -112,8 +112,8 @@ TEST(TrigonometricStep, IsSymmetric) {
   const two_masses s = with_slow(50, 2, -0.5, 1);
   const ndof_state<double> y = state(0.3, -0.2, 0.5, 0.1);
   const ndof_state<double> back = fresh_step(s, -0.03, fresh_step(s, 0.03, y));
-  EXPECT_LT((back.q - y.q).cwiseAbs().maxCoeff(), 16 * eps);
-  EXPECT_LT((back.p - y.p).cwiseAbs().maxCoeff(), 16 * eps * s.omega);
+  EXPECT_LT((back.q - y.q).cwiseAbs().maxCoeff(), 16 * eps<double>());
+  EXPECT_LT((back.p - y.p).cwiseAbs().maxCoeff(), 16 * eps<double>() * s.omega);
 }
 
 TEST(TrigonometricStep, KeepsTheLastForceAndEvaluatesOneASteps) {
@@ -156,9 +156,9 @@ TEST(FpuChain, TheSplitIsThePotentialsGradient) {
   const auto& V = chain.potential();
   const dense_vector<double> split = 50.0 * 50.0 * V.stiff_projection(q) + V.slow_gradient(q);
   // The stiff part's terms are of order ω² = 2500: 16 eps ω² bounds the two sums' difference.
-  EXPECT_LT((split - V.gradient(q)).cwiseAbs().maxCoeff(), 16 * eps * 50.0 * 50.0);
+  EXPECT_LT((split - V.gradient(q)).cwiseAbs().maxCoeff(), 16 * eps<double>() * 50.0 * 50.0);
   const dense_vector<double> Pq = V.stiff_projection(q);
-  EXPECT_LT((V.stiff_projection(Pq) - Pq).cwiseAbs().maxCoeff(), 4 * eps);  // P² = P
+  EXPECT_LT((V.stiff_projection(Pq) - Pq).cwiseAbs().maxCoeff(), 4 * eps<double>());  // P² = P
 }
 
 }  // namespace
