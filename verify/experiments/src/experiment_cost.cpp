@@ -103,7 +103,7 @@ cost_estimate estimate_cost(const experiment_settings& e, const recheck_load& re
     const double mpfr_factor = precision_factor(precision::mpfr_digits(n.mpfr_digits)) / precision_factor(precision::mpfr_digits(50));
     for (const long long N : n.pendulum_N) pendulum += 3e4 * mpfr_factor * static_cast<double>(N) + 100 * static_cast<double>(n.energy_steps);
     for (const long long N : n.N) {
-      problems += 200 * 6 * static_cast<double>(N) * static_cast<double>(n.problems.size()) * (2 + n.timing.max_runs);
+      problems += 200 * 5 * static_cast<double>(N) * static_cast<double>(n.problems.size()) * (2 + n.timing.max_runs);
       finest = std::max(finest, static_cast<double>(N));
     }
     for (const long long N : n.double_pendulum_N) double_pendulum += 300 * mpfr_factor * static_cast<double>(N) + 50 * static_cast<double>(n.energy_steps);

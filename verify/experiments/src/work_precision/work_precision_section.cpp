@@ -228,7 +228,7 @@ section_result run_work_precision(const work_precision_settings& s) {
                  "m = 1, ω = 2π, {} period(s), y₀ = (mω, 0); N steps per period. Each scheme runs in the forms {}: "
                  "`step` is its general algorithm, what it runs for any force (Simpson its nonlinear step, Newton's method on "
                  "the internal node to 16 eps of the terms, with V = mω²q²/2; simpson-elimination Section 6's elimination of "
-                 "the internal node at every step; Newmark the implicit midpoint rule, Gauss–Legendre and Lobatto IIIA–IIIB "
+                 "the internal node at every step; Newmark the implicit midpoint rule, Gauss–Legendre (and Lobatto IIIA–IIIB) "
                  "by their stage equations, whose matrix, constant for this linear force, is factored once; Störmer–Verlet "
                  "and Yoshida their kicks and drifts, RK4 its four explicit stages: each peer as its users write it); "
                  "`matrix` is its own exact 2 × 2 one-step matrix, one product a step, the form the paper gives Φ₃ in. In "
@@ -240,9 +240,13 @@ section_result run_work_precision(const work_precision_settings& s) {
                  "value, against the exact solution at t_j = j/N with 2π enclosed, and the energies at the run's own "
                  "rounded m, ω, h; only guaranteed digits are shown, with the radius where fewer than three are. {} "
                  "A run whose state is not finite, grows past 10⁶ times the amplitude (unstable, with the step), or throws "
-                 "is recorded with its status. At the round-off floor: error ≤ 100 N eps.",
+                 "is recorded with its status. At the round-off floor: error ≤ 100 N eps.{}",
                  s.periods, fmt::format("{}", fmt::join(s.forms, " and ")),
-                 timed ? "Run times, and how they are measured, are in [timing.md](timing.md)." : "Not timed (--no-timing)."),
+                 timed ? "Run times, and how they are measured, are in [timing.md](timing.md)." : "Not timed (--no-timing).",
+                 std::find(s.schemes.begin(), s.schemes.end(), scheme_id::lobatto_iiia_iiib_3) == s.schemes.end()
+                     ? ""
+                     : " Lobatto IIIA–IIIB(3) is Simpson's map (claim nonlinear-lobatto-equivalence): its rows are a second "
+                       "implementation of the same method, not another method."),
              {{"scheme", "scheme"},
               {"form", "form"},
               {"precision", "precision"},
