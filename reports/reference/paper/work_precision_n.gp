@@ -25,11 +25,10 @@ plot 'work_precision_n.dat' index 0 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#
      'work_precision_n.dat' index 3 u 1:2 w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
      'work_precision_n.dat' index 4 u 1:2 w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
      'work_precision_n.dat' index 5 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
-     'work_precision_n.dat' index 6 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
-     'work_precision_n.dat' index 7 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4', \
-     'work_precision_n.dat' index 8 u 1:2 w l lw 1.5 dt 2 lc rgb '#7f7f7f' t 'slope N^{-2}', \
-     'work_precision_n.dat' index 9 u 1:2 w l lw 1.5 dt 2 lc rgb '#000000' t 'slope N^{-4}', \
-     'work_precision_n.dat' index 10 u 1:2 w l lw 1.5 dt 3 lc rgb '#7f7f7f' t 'round-off floor 100 N eps'
+     'work_precision_n.dat' index 6 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4', \
+     'work_precision_n.dat' index 7 u 1:2 w l lw 1.5 dt 2 lc rgb '#7f7f7f' t 'slope N^{-2}', \
+     'work_precision_n.dat' index 8 u 1:2 w l lw 1.5 dt 2 lc rgb '#000000' t 'slope N^{-4}', \
+     'work_precision_n.dat' index 9 u 1:2 w l lw 1.5 dt 3 lc rgb '#7f7f7f' t 'round-off floor 100 N eps'
 set origin 0.3623,0.0000
 set size 0.3623,1.0000
 set title 'mpfr:100, step form'
@@ -46,17 +45,16 @@ set mxtics default
 set yrange [3.33375e-15:0.341687]
 set ytics 1e3
 set mytics 1
-plot 'work_precision_n.dat' index 11 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
-     'work_precision_n.dat' index 12 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
-     'work_precision_n.dat' index 13 u 1:2 w lp pt 9 ps 0.8 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
-     'work_precision_n.dat' index 14 u 1:2 w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
-     'work_precision_n.dat' index 15 u 1:2 w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
-     'work_precision_n.dat' index 16 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
-     'work_precision_n.dat' index 17 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
-     'work_precision_n.dat' index 18 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4', \
-     'work_precision_n.dat' index 19 u 1:2 w l lw 1.5 dt 2 lc rgb '#7f7f7f' t 'slope N^{-2}', \
-     'work_precision_n.dat' index 20 u 1:2 w l lw 1.5 dt 2 lc rgb '#000000' t 'slope N^{-4}', \
-     'work_precision_n.dat' index 21 u 1:2 w l lw 1.5 dt 3 lc rgb '#7f7f7f' t 'round-off floor 100 N eps'
+plot 'work_precision_n.dat' index 10 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
+     'work_precision_n.dat' index 11 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
+     'work_precision_n.dat' index 12 u 1:2 w lp pt 9 ps 0.8 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
+     'work_precision_n.dat' index 13 u 1:2 w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
+     'work_precision_n.dat' index 14 u 1:2 w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
+     'work_precision_n.dat' index 15 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
+     'work_precision_n.dat' index 16 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4', \
+     'work_precision_n.dat' index 17 u 1:2 w l lw 1.5 dt 2 lc rgb '#7f7f7f' t 'slope N^{-2}', \
+     'work_precision_n.dat' index 18 u 1:2 w l lw 1.5 dt 2 lc rgb '#000000' t 'slope N^{-4}', \
+     'work_precision_n.dat' index 19 u 1:2 w l lw 1.5 dt 3 lc rgb '#7f7f7f' t 'round-off floor 100 N eps'
 set origin 0.7246,0
 set size 0.2754,1
 unset title
@@ -74,7 +72,6 @@ plot NaN w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
      NaN w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
      NaN w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
      NaN w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
-     NaN w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
      NaN w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4', \
      NaN w l lw 1.5 dt 2 lc rgb '#7f7f7f' t 'slope N^{-2}', \
      NaN w l lw 1.5 dt 2 lc rgb '#000000' t 'slope N^{-4}', \
@@ -108,11 +105,10 @@ plot 'work_precision_n.dat' index 0 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#
      'work_precision_n.dat' index 3 u 1:2 w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
      'work_precision_n.dat' index 4 u 1:2 w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
      'work_precision_n.dat' index 5 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
-     'work_precision_n.dat' index 6 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
-     'work_precision_n.dat' index 7 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4', \
-     'work_precision_n.dat' index 8 u 1:2 w l lw 1.5 dt 2 lc rgb '#7f7f7f' t 'slope N^{-2}', \
-     'work_precision_n.dat' index 9 u 1:2 w l lw 1.5 dt 2 lc rgb '#000000' t 'slope N^{-4}', \
-     'work_precision_n.dat' index 10 u 1:2 w l lw 1.5 dt 3 lc rgb '#7f7f7f' t 'round-off floor 100 N eps'
+     'work_precision_n.dat' index 6 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4', \
+     'work_precision_n.dat' index 7 u 1:2 w l lw 1.5 dt 2 lc rgb '#7f7f7f' t 'slope N^{-2}', \
+     'work_precision_n.dat' index 8 u 1:2 w l lw 1.5 dt 2 lc rgb '#000000' t 'slope N^{-4}', \
+     'work_precision_n.dat' index 9 u 1:2 w l lw 1.5 dt 3 lc rgb '#7f7f7f' t 'round-off floor 100 N eps'
 set origin 0.3623,0.0000
 set size 0.3623,1.0000
 set title 'mpfr:100, step form'
@@ -129,17 +125,16 @@ set mxtics default
 set yrange [3.33375e-15:0.341687]
 set ytics 1e3
 set mytics 1
-plot 'work_precision_n.dat' index 11 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
-     'work_precision_n.dat' index 12 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
-     'work_precision_n.dat' index 13 u 1:2 w lp pt 9 ps 0.8 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
-     'work_precision_n.dat' index 14 u 1:2 w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
-     'work_precision_n.dat' index 15 u 1:2 w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
-     'work_precision_n.dat' index 16 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
-     'work_precision_n.dat' index 17 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
-     'work_precision_n.dat' index 18 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4', \
-     'work_precision_n.dat' index 19 u 1:2 w l lw 1.5 dt 2 lc rgb '#7f7f7f' t 'slope N^{-2}', \
-     'work_precision_n.dat' index 20 u 1:2 w l lw 1.5 dt 2 lc rgb '#000000' t 'slope N^{-4}', \
-     'work_precision_n.dat' index 21 u 1:2 w l lw 1.5 dt 3 lc rgb '#7f7f7f' t 'round-off floor 100 N eps'
+plot 'work_precision_n.dat' index 10 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
+     'work_precision_n.dat' index 11 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
+     'work_precision_n.dat' index 12 u 1:2 w lp pt 9 ps 0.8 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
+     'work_precision_n.dat' index 13 u 1:2 w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
+     'work_precision_n.dat' index 14 u 1:2 w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
+     'work_precision_n.dat' index 15 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
+     'work_precision_n.dat' index 16 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4', \
+     'work_precision_n.dat' index 17 u 1:2 w l lw 1.5 dt 2 lc rgb '#7f7f7f' t 'slope N^{-2}', \
+     'work_precision_n.dat' index 18 u 1:2 w l lw 1.5 dt 2 lc rgb '#000000' t 'slope N^{-4}', \
+     'work_precision_n.dat' index 19 u 1:2 w l lw 1.5 dt 3 lc rgb '#7f7f7f' t 'round-off floor 100 N eps'
 set origin 0.7246,0
 set size 0.2754,1
 unset title
@@ -157,7 +152,6 @@ plot NaN w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
      NaN w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
      NaN w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
      NaN w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
-     NaN w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
      NaN w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4', \
      NaN w l lw 1.5 dt 2 lc rgb '#7f7f7f' t 'slope N^{-2}', \
      NaN w l lw 1.5 dt 2 lc rgb '#000000' t 'slope N^{-4}', \

@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.20637e-07:0.000228455]
+set xrange [1.20552e-07:0.000231835]
 set xtics autofreq
 set mxtics default
 set yrange [2.94139e-15:0.34373]
@@ -25,8 +25,7 @@ plot 'work_precision_time.dat' index 0 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb
      'work_precision_time.dat' index 3 u 1:2 w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
      'work_precision_time.dat' index 4 u 1:2 w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
      'work_precision_time.dat' index 5 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
-     'work_precision_time.dat' index 6 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
-     'work_precision_time.dat' index 7 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
+     'work_precision_time.dat' index 6 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
 set origin 0.3623,0.0000
 set size 0.3623,1.0000
 set title 'mpfr:100, each scheme by its general step'
@@ -37,20 +36,19 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [6.10222e-06:0.0846824]
+set xrange [6.52741e-06:0.0420738]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
 set ytics 1e3
 set mytics 1
-plot 'work_precision_time.dat' index 8 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
-     'work_precision_time.dat' index 9 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
-     'work_precision_time.dat' index 10 u 1:2 w lp pt 9 ps 0.8 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
-     'work_precision_time.dat' index 11 u 1:2 w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
-     'work_precision_time.dat' index 12 u 1:2 w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
-     'work_precision_time.dat' index 13 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
-     'work_precision_time.dat' index 14 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
-     'work_precision_time.dat' index 15 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
+plot 'work_precision_time.dat' index 7 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
+     'work_precision_time.dat' index 8 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
+     'work_precision_time.dat' index 9 u 1:2 w lp pt 9 ps 0.8 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
+     'work_precision_time.dat' index 10 u 1:2 w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
+     'work_precision_time.dat' index 11 u 1:2 w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
+     'work_precision_time.dat' index 12 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
+     'work_precision_time.dat' index 13 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
 set origin 0.7246,0
 set size 0.2754,1
 unset title
@@ -68,7 +66,6 @@ plot NaN w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
      NaN w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
      NaN w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
      NaN w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
-     NaN w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
      NaN w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
 unset multiplot
 
@@ -87,7 +84,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.20637e-07:0.000228455]
+set xrange [1.20552e-07:0.000231835]
 set xtics autofreq
 set mxtics default
 set yrange [2.94139e-15:0.34373]
@@ -99,8 +96,7 @@ plot 'work_precision_time.dat' index 0 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb
      'work_precision_time.dat' index 3 u 1:2 w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
      'work_precision_time.dat' index 4 u 1:2 w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
      'work_precision_time.dat' index 5 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
-     'work_precision_time.dat' index 6 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
-     'work_precision_time.dat' index 7 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
+     'work_precision_time.dat' index 6 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
 set origin 0.3623,0.0000
 set size 0.3623,1.0000
 set title 'mpfr:100, each scheme by its general step'
@@ -111,20 +107,19 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [6.10222e-06:0.0846824]
+set xrange [6.52741e-06:0.0420738]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
 set ytics 1e3
 set mytics 1
-plot 'work_precision_time.dat' index 8 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
-     'work_precision_time.dat' index 9 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
-     'work_precision_time.dat' index 10 u 1:2 w lp pt 9 ps 0.8 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
-     'work_precision_time.dat' index 11 u 1:2 w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
-     'work_precision_time.dat' index 12 u 1:2 w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
-     'work_precision_time.dat' index 13 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
-     'work_precision_time.dat' index 14 u 1:2 w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
-     'work_precision_time.dat' index 15 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
+plot 'work_precision_time.dat' index 7 u 1:2 w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
+     'work_precision_time.dat' index 8 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
+     'work_precision_time.dat' index 9 u 1:2 w lp pt 9 ps 0.8 lw 1.2 dt 3 lc rgb '#2ca02c' t 'simpson-elimination', \
+     'work_precision_time.dat' index 10 u 1:2 w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
+     'work_precision_time.dat' index 11 u 1:2 w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
+     'work_precision_time.dat' index 12 u 1:2 w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
+     'work_precision_time.dat' index 13 u 1:2 w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
 set origin 0.7246,0
 set size 0.2754,1
 unset title
@@ -142,7 +137,6 @@ plot NaN w lp pt 5 ps 0.8 lw 1.2 dt 1 lc rgb '#1f77b4' t 'newmark', \
      NaN w lp pt 11 ps 0.8 lw 1.2 dt 4 lc rgb '#9467bd' t 'stormer-verlet', \
      NaN w lp pt 13 ps 0.8 lw 1.2 dt 5 lc rgb '#ff7f0e' t 'yoshida', \
      NaN w lp pt 4 ps 0.8 lw 1.2 dt 2 lc rgb '#8c564b' t 'gauss-legendre-2', \
-     NaN w p pt 6 ps 1.6 lc rgb '#e377c2' t 'lobatto-iiia-iiib-3', \
      NaN w lp pt 8 ps 0.8 lw 1.2 dt 4 lc rgb '#17becf' t 'rk4'
 unset multiplot
 

@@ -376,12 +376,12 @@ void add_nonlinear_problems(const nonlinear_settings& s, section_result& out) {
                  {"method", "method"},
                  {"runs_ok", "runs ok"},
                  {"runs_failed", "failed"},
-                 {"order_q_least_squares", "order (q)"},
+                 column::fixed_point("order_q_least_squares", "order (q)", 2),
                  {"finest_N", "finest N"},
                  {"error_q_finest", "‖q_N − q(T)‖ there"},
                  {"energy_error_finest", "max rel. H error there"},
-                 {"newton_iterations_finest", "Newton it./step there"},
-                 {"gradients_per_step_finest", "∇V / step there"}}};
+                 column::fixed_point("newton_iterations_finest", "Newton it./step there", 2),
+                 column::fixed_point("gradients_per_step_finest", "∇V / step there", 2)}};
   table rows{"problems", "", "",
              {{"problem", "problem"},
               {"method", "method"},
@@ -390,9 +390,9 @@ void add_nonlinear_problems(const nonlinear_settings& s, section_result& out) {
               {"error_q", "‖q_N − q(T)‖"},
               {"error_p", "‖p_N − p(T)‖"},
               {"energy_error_max_relative", "max rel. H error"},
-              {"newton_iterations_mean", "Newton it./step"},
-              {"gradients_per_step", "∇V / step"},
-              {"hessians_per_step", "∇²V / step"}}};
+              column::fixed_point("newton_iterations_mean", "Newton it./step", 2),
+              column::fixed_point("gradients_per_step", "∇V / step", 2),
+              column::fixed_point("hessians_per_step", "∇²V / step", 2)}};
   rows.csv_file = "nonlinear_problems.csv";
   rows.markdown = false;  // every run in report.json and the CSV; the summary in report.md
   table times{"problems_timing", "Run time of each configuration (nonlinear problems)",
@@ -411,7 +411,7 @@ void add_nonlinear_problems(const nonlinear_settings& s, section_result& out) {
               "above Simpson's smallest error. Counts, not seconds: they are the same on every machine (the run times, which also "
               "pay for the implicit methods' ∇²V and LU solves, are in the run-time report).",
               {{"problem", "problem"}, {"target", "target ‖q_N − q(T)‖"}, {"method", "method"}, {"work", "∇V evaluations"},
-               {"ratio", "against Simpson's"}, {"status", "status"}}};
+               column::fixed_point("ratio", "against Simpson's", 2), {"status", "status"}}};
   const auto add_costs = [&](const std::string& name, const problem_panels& p) {
     const auto simpson = std::find_if(p.work_error.begin(), p.work_error.end(), [](const auto& m) { return m.first == scheme_id::simpson; });
     if (simpson == p.work_error.end() || simpson->second.empty()) return;

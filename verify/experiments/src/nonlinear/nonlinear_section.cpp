@@ -37,8 +37,9 @@ section_result run_nonlinear(const nonlinear_settings& s) {
       "working precision, then takes Simpson's rule for the impulse. The paper's §9 leaves this case open; the claims "
       "of the ledger part \"beyond\" prove that the step is the 3-stage Lobatto IIIA–IIIB step and symplectic for every V.");
   if (problems_alone) {
-    out.text("The oscillator's comparison of the schemes is the work_precision section's; here the same peers, each in the form its "
-             "users write it, on the nonlinear problems the field uses, against N, force evaluations and run time.");
+    out.text("The oscillator's comparison of the schemes in every precision is the work_precision section's; here the same peers, "
+             "each in the form its users write it for any force, on the paper's oscillator and the nonlinear problems the field uses, "
+             "against N, force evaluations (∇V) and run time.");
   }
   if (runs("pendulum")) detail::add_nonlinear_pendulum(s, out);
   if (runs("brouwer")) detail::add_nonlinear_brouwer(s, out);
