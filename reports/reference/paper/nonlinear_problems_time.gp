@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.07481e-06:0.00652347]
+set xrange [4.09571e-06:0.00619581]
 set xtics autofreq
 set mxtics default
 set yrange [2.51598e-15:0.00942973]
@@ -34,7 +34,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.40348e-06:0.00647768]
+set xrange [4.27004e-06:0.00616386]
 set xtics autofreq
 set mxtics default
 set yrange [1.00325e-15:0.00120974]
@@ -55,7 +55,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.61778e-05:0.0772503]
+set xrange [4.205e-05:0.0723335]
 set xtics autofreq
 set mxtics default
 set yrange [6.13271e-06:1193.17]
@@ -76,7 +76,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.30628e-06:0.00708023]
+set xrange [3.9615e-06:0.0070849]
 set xtics autofreq
 set mxtics default
 set yrange [1.74904e-12:0.238914]
@@ -97,7 +97,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [6.65568e-06:0.0155654]
+set xrange [6.36101e-06:0.014634]
 set xtics autofreq
 set mxtics default
 set yrange [1.31557e-10:0.114842]
@@ -141,7 +141,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.07481e-06:0.00652347]
+set xrange [4.09571e-06:0.00619581]
 set xtics autofreq
 set mxtics default
 set yrange [2.51598e-15:0.00942973]
@@ -162,7 +162,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.40348e-06:0.00647768]
+set xrange [4.27004e-06:0.00616386]
 set xtics autofreq
 set mxtics default
 set yrange [1.00325e-15:0.00120974]
@@ -183,7 +183,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.61778e-05:0.0772503]
+set xrange [4.205e-05:0.0723335]
 set xtics autofreq
 set mxtics default
 set yrange [6.13271e-06:1193.17]
@@ -204,7 +204,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.30628e-06:0.00708023]
+set xrange [3.9615e-06:0.0070849]
 set xtics autofreq
 set mxtics default
 set yrange [1.74904e-12:0.238914]
@@ -225,7 +225,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [6.65568e-06:0.0155654]
+set xrange [6.36101e-06:0.014634]
 set xtics autofreq
 set mxtics default
 set yrange [1.31557e-10:0.114842]
