@@ -223,7 +223,7 @@ bad_section "digits > 100000" 21 '"long_time": {"mpfr_digits": 200000}' "'long_t
 bad_section "unknown section key" 22 '"long_time": {"step": 5}' "unknown key 'long_time.step'"
 bad_section "section wrong type" 23 '"stability": []' "'stability' must be an object"
 bad_section "run for days" 24 '"long_time": {"steps_double": 100000000000}' "estimated cost .* exceeds the budget .* --allow-expensive"
-bad_section "unknown problem" 25 '"nonlinear": {"problems": ["lorenz"]}' "'nonlinear.problems'\[0\]: unknown name 'lorenz' (known: pendulum, kepler, henon-heiles, fpu)"
+bad_section "unknown problem" 25 '"nonlinear": {"problems": ["lorenz"]}' "'nonlinear.problems'\[0\]: unknown name 'lorenz' (known: oscillator, pendulum, kepler, henon-heiles, fpu)"
 bad_section "pendulum over the top" 26 '"nonlinear": {"pendulum_q0": 4}' "'nonlinear.pendulum_q0' must be a number greater than 0 and at most 3.14159"
 bad_section "absurd nonlinear N" 27 '"nonlinear": {"N": [1e12]}' "'nonlinear.N'\[0\] must be an integer from 1 to 100000000"
 for k in 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21 22 23 24 25 26 27; do
