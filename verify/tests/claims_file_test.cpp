@@ -45,7 +45,8 @@ TEST(ClaimsFile, TheEmbeddedFileIsTheLedgerRecordForRecord) {
   std::set<std::string> headline;
   for (std::size_t k = 0; k < records.size(); ++k) {
     EXPECT_EQ(records[k].id, paper_book().claims[k].id);
-    EXPECT_EQ(records[k].shape.empty() ? records[k].check : "shape " + records[k].shape, paper_book().claims[k].check_name);
+    const decider from_record = records[k].shape.empty() ? decider{check_decider{records[k].check}} : decider{shape_decider{records[k].shape}};
+    EXPECT_EQ(from_record, paper_book().claims[k].decided_by);
     EXPECT_EQ(records[k].expected, paper_book().claims[k].expected) << records[k].id;
     if (records[k].headline) headline.insert(records[k].id);
   }
@@ -64,7 +65,8 @@ TEST(ClaimsFile, ACheckBringsItsFacetsUnderItsOneName) {
   EXPECT_FALSE(derivation->coq_goals);
   // A claim a proof shape decides names no check: it reads the displays its arguments name.
   EXPECT_EQ(detail::registered_checks().find("phi3-det"), nullptr);
-  EXPECT_EQ(paper_book().find("phi3-det").check_name, "shape determinant");
+  EXPECT_EQ(paper_book().find("phi3-det").decided_by, decider{shape_decider{"determinant"}});
+  EXPECT_EQ(to_string(paper_book().find("phi3-det").decided_by), "shape determinant");
   EXPECT_EQ(paper_book().find("hd-invariance").labels_read, (std::vector<std::string>{"Phi3", "hamiltonien-discret"}));
   EXPECT_TRUE(reads_printed_formula(paper_book().find("phi3-det")));
   const detail::registered_check* shears = detail::registered_checks().find("phi3-shear-factorization");
@@ -72,7 +74,7 @@ TEST(ClaimsFile, ACheckBringsItsFacetsUnderItsOneName) {
   EXPECT_TRUE(shears->coq_goals);
   EXPECT_FALSE(reads_printed_formula(paper_book().find("phi3-shear-factorization")));
   // Named under the check, not the claim: figure1-statements's check is figure1.
-  EXPECT_EQ(paper_book().find("figure1-statements").check_name, "figure1");
+  EXPECT_EQ(paper_book().find("figure1-statements").decided_by, decider{check_decider{"figure1"}});
   EXPECT_NE(detail::registered_checks().find("figure1"), nullptr);
   // A facet for a check that is not registered is a harness fault.
   detail::check_registry registry;

@@ -34,7 +34,7 @@ TEST(PaperReading, EveryFormulaOfTheEmbeddedPaperParsesAndKeepsItsVerdict) {
     const claim_result r = check_claim(c, run_context{{precision::parse("double"), precision::parse("rational")}, 20230830, 2, &paper});
     EXPECT_EQ(r.outcome, c.expected) << c.id << ": " << r.note;
     EXPECT_FALSE(r.printed.is_null()) << c.id;
-    if (c.check_name.rfind("shape ", 0) == 0) {
+    if (std::holds_alternative<shape_decider>(c.decided_by)) {
       // A proof shape: both kernels decided on the printed formula. A claim that holds, each proved
       // it; an erratum's identity each found false ("fails: lhs − rhs = ..."), or each proved the
       // facts the erratum rests on ("holds: 2 expansions differ ..."); never "not applicable".

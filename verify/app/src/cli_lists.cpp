@@ -19,7 +19,7 @@ int list_claims(const claim_book& book, const std::string& format) {
     json out = json::array();
     for (const claim& c : book.claims) {
       json one{{"id", c.id},           {"section", c.section},   {"equation", c.equation}, {"statement", c.statement},
-               {"methods", c.methods}, {"check", c.check_name}, {"expected", to_string(c.expected)}};
+               {"methods", c.methods}, {"check", to_string(c.decided_by)}, {"expected", to_string(c.expected)}};
       if (c.kind != finding::none) one["finding"] = to_string(c.kind);
       if (!c.follows_from.empty()) one["follows_from"] = c.follows_from;
       out.push_back(std::move(one));

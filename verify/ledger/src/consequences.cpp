@@ -39,7 +39,7 @@ std::vector<std::optional<consequence>> trace_consequences(const std::vector<con
   for (std::size_t k = 0; k < claims.size(); ++k) {
     const claim& c = *claims[k];
     const verdict v = results[k]->outcome;
-    if (v == verdict::holds || v == verdict::text_changed || v == verdict::skipped || c.check_name.rfind("shape ", 0) != 0) continue;
+    if (v == verdict::holds || v == verdict::text_changed || v == verdict::skipped || !std::holds_alternative<shape_decider>(c.decided_by)) continue;
     // The typed cause first: what the derivation says of it decides whether the record's link stands.
     std::vector<std::size_t> order;
     for (const std::size_t e : causes) {

@@ -119,7 +119,7 @@ std::vector<claim> claims_of(const std::vector<claim_record>& records, const std
   std::vector<claim> out;
   for (const claim_record& r : records) {
     claim c{r.id, r.section, r.equation, r.statement, r.methods, r.expected, check_of(r, declared), r.kind, r.follows_from, r.typographical, r.origin};
-    c.check_name = r.shape.empty() ? r.check : "shape " + r.shape;
+    c.decided_by = r.shape.empty() ? decider{check_decider{r.check}} : decider{shape_decider{r.shape}};
     c.labels_read = labels_read(r);
     c.headline = r.headline;
     c.coq_none = r.coq_none;

@@ -31,7 +31,10 @@ namespace {
 using detail::printed_outcome;
 
 /// The registered check that decides `c`, with its facets; null for a claim a proof shape decides.
-const detail::registered_check* bespoke_check(const claim& c) { return detail::registered_checks().find(c.check_name); }
+const detail::registered_check* bespoke_check(const claim& c) {
+  const check_decider* check = std::get_if<check_decider>(&c.decided_by);
+  return check != nullptr ? detail::registered_checks().find(check->check) : nullptr;
+}
 
 /// The GiNaC check of the printed formulas `c` reads; null when it reads none.
 const detail::registered_check* printed_facet(const claim& c) {
@@ -95,8 +98,9 @@ namespace {
 /// A claim a proof shape decides: it reads every formula from the run's document, when its shape
 /// judges a formula (a principal argument; the prose's shapes, spelling and citations, read none).
 bool decided_by_shape(const claim& c) {
-  if (c.check_name.rfind("shape ", 0) != 0) return false;
-  const auto shape = detail::proof_shapes().find(c.check_name.substr(6));
+  const shape_decider* by = std::get_if<shape_decider>(&c.decided_by);
+  if (by == nullptr) return false;
+  const auto shape = detail::proof_shapes().find(by->shape);
   return shape == detail::proof_shapes().end() || !shape->second.principal.empty();
 }
 

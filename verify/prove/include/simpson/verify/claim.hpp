@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace simpson::verify {
@@ -171,6 +172,24 @@ enum class claim_origin { paper, beyond, harness };
 
 inline std::string to_string(claim_origin o) { return o == claim_origin::paper ? "paper" : o == claim_origin::beyond ? "beyond" : "harness"; }
 
+/// What decides a claim, from its record: a proof shape of the engine (`shape`), or a check the book
+/// registers by name (`check`). Typed, so that no code reads a claim's kind back out of a string.
+struct shape_decider {
+  std::string shape;
+  bool operator==(const shape_decider& o) const { return shape == o.shape; }
+};
+struct check_decider {
+  std::string check;
+  bool operator==(const check_decider& o) const { return check == o.check; }
+};
+using decider = std::variant<shape_decider, check_decider>;
+
+/// The decider as the claims listing spells it: "shape <name>", or the check's name.
+inline std::string to_string(const decider& d) {
+  if (const shape_decider* s = std::get_if<shape_decider>(&d)) return "shape " + s->shape;
+  return std::get<check_decider>(d).check;
+}
+
 struct claim {
   std::string id;         // stable kebab-case
   std::string section;    // section of the paper
@@ -185,9 +204,9 @@ struct claim {
   std::string follows_from = {};
   bool typographical = false;  // a slip of the pen (a wrong index, a letter for another), not of the mathematics
   claim_origin origin = claim_origin::paper;
-  /// From the claim's record (claims_file.hpp): the name of its check, whether it is a headline
-  /// claim (the report's speed line), and why no Coq statement is exported when none is.
-  std::string check_name = {};
+  /// From the claim's record (claims_file.hpp): what decides it, whether it is a headline claim (the
+  /// report's speed line), and why no Coq statement is exported when none is.
+  decider decided_by = check_decider{};
   /// For a claim a proof shape decides: the labels of the displays it reads (provenance finds the
   /// claims that read a display through them).
   std::vector<std::string> labels_read = {};
