@@ -44,6 +44,39 @@ TEST(ProseSpan, TexGroupsAreTextAndAPatternMustStartWithWords) {
   EXPECT_THROW(find_prose(paper, "{property} is"), std::logic_error);
 }
 
+TEST(ProseSpan, AHoleTakesProseOnlyNeverADisplayOrAParagraphBreak) {
+  // The first "is" starts a span whose hole would take the display and the sentence after it; the
+  // hole stays in the prose, so the span is the second sentence's. Before this rule the first "is"
+  // matched, with a hole of 60 characters of math.
+  const paper_source paper = text_source("The node is\n\\begin{equation}\nq_m = q\n\\end{equation}\nThe ratio is not linear in q.");
+  const auto span = find_prose(paper, "is {linearity} in q.");
+  ASSERT_TRUE(span.has_value());
+  EXPECT_EQ(span->holes.at("linearity"), "not linear");
+  EXPECT_EQ(span->line, 5);
+  for (const char* between : {"\\[ x \\]", "$$ x $$", "\n\n", "\n  \n"}) {
+    const paper_source broken = text_source(std::string("It is stable") + between + "for all h.");
+    EXPECT_FALSE(find_prose(broken, "is {property} for all h.").has_value()) << between;
+  }
+  EXPECT_TRUE(find_prose(text_source("It is stable\n for all h."), "is {property} for all h.").has_value());  // a line break is not a paragraph's
+}
+
+TEST(ProseSpan, APatternThatMatchesTwoSpansIsRefusedNamingBoth) {
+  // Which sentence is judged is never guessed: a pattern with holes that matches twice says where.
+  const paper_source paper = text_source("The map is linear in q.\nThe ratio is not linear in q.");
+  const auto span = find_prose(paper, "is {linearity} in q.");
+  ASSERT_TRUE(span.has_value());
+  EXPECT_EQ(span->also_at, std::vector<int>{2});
+  try {
+    (void)quote_sentence(paper, "is {linearity} in q.", nullptr);
+    ADD_FAILURE() << "an ambiguous pattern was quoted";
+  } catch (const text_changed& e) {
+    EXPECT_NE(std::string(e.what()).find("matches 2 spans (lines 1, 2)"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(find_prose(paper, "The ratio is {linearity} in q.")->also_at.empty());
+  // Words without a hole are the same words wherever they stand: not ambiguous.
+  EXPECT_TRUE(find_prose(paper, "in q.")->also_at.empty());
+}
+
 TEST(ProseSpan, PlainWordsDropsMathMarkupAndSpacing) {
   EXPECT_EQ(plain_words("smaller or equal to $ \\, 1 $"), "smaller or equal to 1");
   EXPECT_EQ(plain_words("\\sin \\, \\omega \\, t \\,"), "\\sin \\omega t");

@@ -211,6 +211,28 @@ k &= 9 \label{k}
   EXPECT_EQ(equations_of(d.regions()[8]).front().sides.size(), 3u);  // split: o = 14 = 15
 }
 
+TEST(TexDocument, AScriptedParenthesisClosesForTheRelationsAndCommasAfterIt) {
+  // In (q_1 - q_0)^2 the ')' is the nucleus of a scripted atom: it closes the parenthesis, so the
+  // '=' and the ',' after it are at the top level. Counted as an atom only, the depth stayed at 1:
+  // the sentence's comma became part of the formula ("unexpected ','") and the relation was no
+  // relation.
+  const tex_document d(note_source(R"(\documentclass{article}
+\begin{document}
+\begin{equation} L = (q_1 - q_0)^2 - q_0 , \end{equation}
+\begin{equation} (q_1 - q_0)^2 = x, \quad y = \left(a + b\right)^2 . \end{equation}
+\end{document})"));
+  ASSERT_EQ(d.regions().size(), 2u);
+  const std::vector<tex_equation> first = equations_of(d.regions()[0]);
+  ASSERT_EQ(first.size(), 1u);
+  EXPECT_EQ(first[0].sides.size(), 2u);
+  EXPECT_EQ(first[0].side_tex.back(), "(q_1 - q_0)^2 - q_0");
+  const std::vector<tex_equation> second = equations_of(d.regions()[1]);
+  ASSERT_EQ(second.size(), 2u);
+  EXPECT_EQ(second[0].relations, std::vector<std::string>{"="});
+  EXPECT_EQ(second[0].side_tex.front(), "(q_1 - q_0)^2");
+  EXPECT_EQ(second[1].side_tex.back(), "\\left(a + b\\right)^2");
+}
+
 TEST(TexDocument, ATruncatedDocumentIsRefusedWithItsLine) {
   try {
     read_document(note_source("\\begin{document}\nText.\n\\begin{equation}\n x = 1\n"));

@@ -50,31 +50,58 @@ std::vector<pattern_part> split_pattern(const std::string& pattern) {
 
 void check_pattern(const std::string& pattern) { (void)split_pattern(pattern); }
 
-std::optional<prose_span> find_prose(const paper_source& paper, const std::string& pattern) {
+namespace {
+
+/// Whether a hole's words stay in the sentence's text: no display (an environment, \[ \], $$) and
+/// no paragraph break inside, which a hole of a pattern never means to take.
+bool hole_in_prose(const std::string& words) {
+  for (const char* display : {"\\begin{", "\\end{", "\\[", "\\]", "$$"}) {
+    if (words.find(display) != std::string::npos) return false;
+  }
+  for (std::size_t k = words.find('\n'); k != std::string::npos; k = words.find('\n', k + 1)) {
+    std::size_t next = k + 1;
+    while (next < words.size() && words[next] != '\n' && is_space(words[next])) ++next;
+    if (next < words.size() && words[next] == '\n') return false;
+  }
+  return true;
+}
+
+/// The span matching `parts` from the literal found at `first`, or none.
+std::optional<prose_span> span_from(const std::string& text, const std::vector<pattern_part>& parts, std::pair<std::size_t, std::size_t> first) {
   constexpr std::size_t longest_hole = 240;
+  prose_span span;
+  std::size_t at = first.second;
+  for (std::size_t k = 0; k + 1 < parts.size(); ++k) {
+    const auto next = find_ignoring_space(text, parts[k + 1].literal, at, true, longest_hole);
+    if (!next) return std::nullopt;
+    const std::string words = text.substr(at, next->first - at);
+    if (!hole_in_prose(words)) return std::nullopt;
+    span.holes[parts[k].hole] = folded_space(words);
+    at = next->second;
+  }
+  span.line = line_at(text, first.first);
+  span.text = folded_space(text.substr(first.first, at - first.first));
+  return span;
+}
+
+}  // namespace
+
+std::optional<prose_span> find_prose(const paper_source& paper, const std::string& pattern) {
   const std::vector<pattern_part> parts = split_pattern(pattern);
   const std::string& text = paper.text;
+  std::optional<prose_span> found;
   for (std::size_t from = 0;;) {
     const auto first = find_ignoring_space(text, parts.front().literal, from, true);
-    if (!first) return std::nullopt;
-    prose_span span;
-    std::size_t at = first->second;
-    bool matched = true;
-    for (std::size_t k = 0; k + 1 < parts.size(); ++k) {
-      const auto next = find_ignoring_space(text, parts[k + 1].literal, at, true, longest_hole);
-      if (!next) {
-        matched = false;
-        break;
-      }
-      span.holes[parts[k].hole] = folded_space(text.substr(at, next->first - at));
-      at = next->second;
-    }
-    if (matched) {
-      span.line = line_at(text, first->first);
-      span.text = folded_space(text.substr(first->first, at - first->first));
-      return span;
-    }
+    if (!first) return found;
     from = first->first + 1;
+    std::optional<prose_span> span = span_from(text, parts, *first);
+    if (!span) continue;
+    if (!found) {
+      found = std::move(span);
+      if (parts.size() == 1) return found;  // no hole: the words are the words, wherever they stand
+    } else {
+      found->also_at.push_back(span->line);
+    }
   }
 }
 

@@ -130,6 +130,14 @@ quoted_sentence quote_sentence(const paper_source& paper, const std::string& pat
     if (quotes != nullptr) quotes->push_back({{"source", paper.origin}, {"pattern", pattern}, {"found", false}});
     throw text_changed("document '" + paper.origin + "': the sentence the claim judges is no longer there (looked for: " + pattern + ")");
   }
+  if (!span->also_at.empty()) {
+    std::string lines = std::to_string(span->line);
+    for (const int line : span->also_at) lines += ", " + std::to_string(line);
+    if (quotes != nullptr) quotes->push_back({{"source", paper.origin}, {"pattern", pattern}, {"found", false}, {"ambiguous", lines}});
+    throw text_changed("document '" + paper.origin + "': the pattern matches " + std::to_string(span->also_at.size() + 1) +
+                       " spans (lines " + lines + "), so it does not say which sentence the claim judges; lengthen it until it matches one (" +
+                       pattern + ")");
+  }
   std::size_t index = 0;
   if (quotes != nullptr) {
     json words = json::object();

@@ -388,8 +388,7 @@ std::vector<tex_list> at_commas(const tex_list& list) {
   std::vector<tex_list> parts(1);
   int depth = 0;
   for (const tex_node& n : list) {
-    if (n.kind == tex_node_kind::atom && n.atom_class == tex_class::open) ++depth;
-    if (n.kind == tex_node_kind::atom && n.atom_class == tex_class::close) --depth;
+    depth += delimiter_depth_change(n);
     if (depth == 0 && is_comma(n)) {
       parts.emplace_back();
       continue;
@@ -485,8 +484,7 @@ tex_equation equation_of(const equation_part& part, const tokens_t& tokens) {
   e.sides.emplace_back();
   int depth = 0;
   for (const tex_node& n : part.nodes) {
-    if (n.kind == tex_node_kind::atom && n.atom_class == tex_class::open) ++depth;
-    if (n.kind == tex_node_kind::atom && n.atom_class == tex_class::close) --depth;
+    depth += delimiter_depth_change(n);
     if (depth == 0 && is_relation(n)) {
       e.relations.push_back(n.text);
       e.sides.emplace_back();

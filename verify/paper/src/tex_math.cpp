@@ -265,8 +265,7 @@ reader::application reader::arguments_and_power(cursor& c) {
     tex_list part;
     int depth = 0;
     for (const tex_node& n : open.children) {
-      if (n.kind == tex_node_kind::atom && n.atom_class == tex_class::open) ++depth;
-      if (n.kind == tex_node_kind::atom && n.atom_class == tex_class::close) --depth;
+      depth += delimiter_depth_change(n);
       if (depth == 0 && is_atom(n, ",")) {
         out.args.push_back(whole(part));
         part.clear();

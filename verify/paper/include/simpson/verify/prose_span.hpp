@@ -12,6 +12,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace simpson::verify {
 
@@ -19,10 +20,14 @@ struct prose_span {
   int line = 0;                               // 1-based line of the span's first character
   std::string text;                           // the span as printed, white space folded
   std::map<std::string, std::string> holes;   // each hole's words, as printed (white space folded)
+  /// The lines of the other spans the pattern matches, when it has holes: a pattern that matches
+  /// more than one span does not say which sentence it judges, and is refused (quoted_sentence.hpp).
+  std::vector<int> also_at;
 };
 
-/// The first span of the paper that matches `pattern`; none when the sentence is no longer there
-/// (or a hole would span more than 240 characters). Throws std::invalid_argument for a pattern that
+/// The first span of the paper that matches `pattern`, with the lines of any other; none when the
+/// sentence is no longer there. A hole takes words of the prose only: at most 240 characters, and
+/// no display (an environment, \[ \], $$) or paragraph break inside. Throws std::invalid_argument for a pattern that
 /// starts or ends with a hole, has two holes side by side, or an unclosed brace.
 std::optional<prose_span> find_prose(const paper_source& paper, const std::string& pattern);
 

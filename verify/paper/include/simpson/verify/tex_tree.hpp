@@ -49,6 +49,15 @@ struct tex_node {
 
 using tex_list = std::vector<tex_node>;
 
+/// How a node moves the depth of ( [ delimiters at its level: +1 for an opening one, -1 for a
+/// closing one, 0 otherwise. A scripted delimiter counts as its nucleus: the ')' of (a + b)^2 closes.
+inline int delimiter_depth_change(const tex_node& n) {
+  const tex_node* nucleus = &n;
+  while (nucleus->kind == tex_node_kind::scripts && !nucleus->children.empty()) nucleus = &nucleus->children.front();
+  if (nucleus->kind != tex_node_kind::atom) return 0;
+  return nucleus->atom_class == tex_class::open ? 1 : nucleus->atom_class == tex_class::close ? -1 : 0;
+}
+
 /// What a list may hold at its top level: an alignment row's & (align, eqnarray: alignment points,
 /// consumed), or nothing of the kind (an equation's body: & and \\ refused there).
 struct tex_list_rules {
