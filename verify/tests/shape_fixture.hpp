@@ -74,7 +74,7 @@ With $t = h \, \theta$ the nodes are $q(0) = a$ and $q(h) = b$, not $q(h) = a$; 
 \begin{equation}\label{trapezoid} \int_0^1 \psi(x) \, \dd x \simeq \frac{1}{2} \big( \psi(0) + \psi(1) \big) \end{equation}
 \begin{equation}\label{midpoint} \int_0^h \psi(t) \, \dd t \simeq h \, \psi\Big( \frac{h}{2} \Big) \end{equation}
 Trapezoids are exact for polynomials of degree one. Trapezoids, some say, are exact for polynomials of degree two.
-Trapezoids, said loosely, are exact for polynomials of degree zero. Trapezoids are exact for polynomials of degree at most 1.
+Trapezoids, said loosely, are exact for polynomials of degree zero. Trapezoids are, at best, exact for polynomials of degree at most 1.
 One step's action, $\int_0^h \Big[ \frac{m}{2} \Big( {{\dd q}\over{\dd t}} \Big)^2 - V(q) \Big] \, \dd t$, by a rule:
 \begin{equation}\label{ltrap} L = \frac{m}{2 h} (b - a)^2 - \frac{h}{2} \big( V(a) + V(b) \big) \end{equation}
 \begin{equation}\label{lmid} L = \frac{m}{2 h} (b - a)^2 - h \, V\Big( \frac{a + b}{2} \Big) \end{equation}

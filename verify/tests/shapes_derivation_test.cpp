@@ -57,7 +57,12 @@ TEST_F(ShapesOnADocument, QuadratureExactness) {
   EXPECT_EQ(holds.outcome, verdict::holds) << holds.note << holds.evidence.dump();
   EXPECT_EQ(holds.evidence.at("exact").at("exact_up_to_degree"), 1);
   EXPECT_EQ(holds.evidence.at("exact").at("monomials").size(), 3u);  // degrees 0 and 1 exact, 2 not
-  EXPECT_EQ(on("trapezoid", "Trapezoids are exact for polynomials of degree at most {degree}.").outcome, verdict::holds);
+  EXPECT_EQ(on("trapezoid", "Trapezoids are, at best, exact for polynomials of degree at most {degree}.").outcome, verdict::holds);
+  // A pattern that matches two sentences of the document (before the sentence above read "at best"
+  // this one matched it too) is refused, never read as its first.
+  const claim_result two_sentences = on("trapezoid", "exact for polynomials of degree {degree}.");
+  EXPECT_EQ(two_sentences.outcome, verdict::text_changed);
+  EXPECT_NE(two_sentences.note.find("matches 4 spans"), std::string::npos) << two_sentences.note;
   const claim_result two = on("trapezoid", "Trapezoids, some say, are exact for polynomials of degree {degree}.");
   EXPECT_EQ(two.outcome, verdict::erratum);
   EXPECT_EQ(two.correction, "The rule is exact for every polynomial of degree <= 1 and not for degree 2 (the printed words say 'two')");

@@ -426,4 +426,114 @@ std::string reference_of(const shape_call& call, const std::string& parameter) {
   return out;
 }
 
+// The parameters the shapes' specs share (shape_support.hpp).
+/// What every shape takes besides its own arguments: definitions, and the sentence that states the
+/// claim in words (its hole {property} must affirm `property`, or deny it: "not symplectic").
+const std::vector<shape_parameter>& common_parameters() {
+  static const std::vector<shape_parameter> parameters{
+    {"where", argument_kind::definitions, false, "displays 'x = ...' whose definitions are put in the other formulas"},
+    {"entries", argument_kind::definitions, false,
+     "two matrices: one printed with a symbol for each entry (Phi = (alpha beta; gamma delta)), then the matrix whose entries they name"},
+    {"says", argument_kind::word, false, "the sentence that states the claim, a pattern with the hole {property}"},
+    {"property", argument_kind::word, false, "the word the sentence's hole must say (or deny: 'not ...')"}};
+  return parameters;
+}
+
+/// The scheme and the equation a series shape expands on: what truncation and stated-order share.
+std::vector<shape_parameter> with_series(std::vector<shape_parameter> parameters) {
+  for (shape_parameter p : std::vector<shape_parameter>{
+           {"scheme", argument_kind::formula, true, "the scheme's expression (= 0) in three consecutive states"},
+           {"sequence", argument_kind::symbols, true, "the three states q_{j-1}, q_j, q_{j+1}", 3},
+           {"step", argument_kind::symbols, true, "the step h", 1},
+           {"frequency", argument_kind::formula, true, "omega of q'' = -omega^2 q"},
+           {"scale", argument_kind::formula, false, "a factor the text divides the scheme by ('the scheme divided by m'), free of the states"}}) {
+    if (p.name == "scale") p.free_of = "sequence";
+    parameters.push_back(std::move(p));
+  }
+  return parameters;
+}
+
+/// What the invariance shapes share besides the printed formula they judge: the quadratic form, the
+/// map it is invariant under, the state and the form's coefficients.
+std::vector<shape_parameter> with_invariance(shape_parameter printed) {
+  return {std::move(printed),
+          {"form", argument_kind::formula, true, "the quadratic form of the state, its coefficients the unknowns"},
+          {"map", argument_kind::matrix, true, "the one-step map"},
+          {"state", argument_kind::symbols, true, "the state's symbols, in the map's order", 0, "map"},
+          {"unknowns", argument_kind::symbols, true, "the form's coefficients: the system's unknowns (as many as the y_i y_j for its determinant)"}};
+}
+
+/// The printed conditions a shape puts in, each solved for one symbol of `solve_for`, in order.
+std::vector<shape_parameter> with_conditions(std::vector<shape_parameter> parameters) {
+  parameters.push_back({"conditions", argument_kind::equations, true, "printed equations a = b (alpha delta - beta gamma = 1), put in in order"});
+  parameters.push_back({"solve_for", argument_kind::symbols, true, "the symbol each condition is solved for (linear in it)", 0, "conditions"});
+  return parameters;
+}
+
+/// A sentence's pattern that must hold the hole {name} (an optional argument when not `required`).
+shape_parameter pattern_with_hole(std::string name, std::string meaning, std::string hole, bool required) {
+  shape_parameter p{std::move(name), argument_kind::word, required, std::move(meaning)};
+  p.hole = std::move(hole);
+  return p;
+}
+
+std::vector<shape_parameter> with_where(std::vector<shape_parameter> parameters) {
+  parameters.insert(parameters.end(), common_parameters().begin(), common_parameters().end());
+  return parameters;
+}
+
+// The series helpers the oscillator's series shapes and the consistency shapes share.
+/// The degree K of the Taylor polynomials of the exact solution that makes the scheme's series exact
+/// through h^(order − 1): the scheme is a polynomial in its states (none of them in a denominator)
+/// whose coefficients have a pole at h = 0 of order at most d, the degree in h of the denominators of
+/// the tree as read (our kernel's bound, kernel_zero.hpp), so states wrong by O(h^(K+1)) change it by
+/// O(h^(K+1−d)). Throws std::invalid_argument when a state is in a denominator.
+int taylor_degree(const shape_call& call, const ex& scheme, const std::vector<GiNaC::symbol>& sequence, const GiNaC::symbol& h, int order) {
+  for (const GiNaC::symbol& state : sequence) {
+    if (kernel_denominator_degree(scheme, state.get_name()) > 0) {
+      throw std::invalid_argument(reference_of(call, "scheme") + " has " + state.get_name() +
+                                  " in a denominator: the series shapes take a scheme polynomial in its states");
+    }
+  }
+  return order - 1 + static_cast<int>(kernel_denominator_degree(scheme, h.get_name()));
+}
+
+/// The lowest power of h with a nonzero coefficient, or nothing.
+std::optional<int> lowest_power(const ex& e, const GiNaC::symbol& h) {
+  const ex expanded = GiNaC::expand(e);
+  for (int k = expanded.ldegree(h); k <= expanded.degree(h); ++k) {
+    if (!GiNaC::normal(expanded.coeff(h, k)).is_zero()) return k;
+  }
+  return std::nullopt;
+}
+
+/// Our kernel's decision that f = h^power w with w regular at h = 0 (and, when `exact`, w(0) ≠ 0):
+/// w = n/d is GiNaC's witness, normal(f / h^power); our kernel decides f − h^power n/d = 0 as read,
+/// and that d (and n, when exact) at h = 0 is not zero. `zero` when all three hold, `nonzero` when
+/// one of them fails: the witness is then not one, and the claim is not confirmed.
+kernel_decision kernel_confirms_order(const ex& f, const GiNaC::symbol& h, int power, bool exact) {
+  const ex w = GiNaC::normal(f / GiNaC::pow(h, power));
+  const ex n = GiNaC::numer(w), d = GiNaC::denom(w);
+  const kernel_decision identity = kernel_decides_zero(f - GiNaC::pow(h, power) * n * GiNaC::pow(d, -1));
+  if (identity.outcome != kernel_decision::result::zero) {
+    return {identity.outcome, "f − " + h.get_name() + "^" + std::to_string(power) + " w as written: " + identity.evidence};
+  }
+  const kernel_decision regular = kernel_decides_zero(d.subs(h == 0));
+  if (regular.outcome != kernel_decision::result::nonzero) {
+    return {regular.outcome == kernel_decision::result::zero ? kernel_decision::result::nonzero : regular.outcome,
+            "w's denominator at " + h.get_name() + " = 0: " + regular.evidence};
+  }
+  std::string evidence = fmt::format("f = {}^{} w, w = n/d: f − {}^{} n/d {}; d at {} = 0 {}", h.get_name(), power, h.get_name(), power,
+                                     identity.evidence, h.get_name(), regular.evidence);
+  if (exact) {
+    const kernel_decision leading = kernel_decides_zero(n.subs(h == 0));
+    if (leading.outcome != kernel_decision::result::nonzero) {
+      return {leading.outcome == kernel_decision::result::zero ? kernel_decision::result::nonzero : leading.outcome,
+              "w's numerator at " + h.get_name() + " = 0: " + leading.evidence};
+    }
+    evidence += "; n at " + h.get_name() + " = 0 " + leading.evidence;
+  }
+  return {kernel_decision::result::zero, evidence};
+}
+
 }  // namespace simpson::verify::detail

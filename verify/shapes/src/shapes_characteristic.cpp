@@ -526,4 +526,53 @@ claim_result unconditional_stability_shape(const shape_call& call, const run_con
   return result;
 }
 
+/// The shapes of this file, each one's name, summary, principal argument and parameters beside the
+/// function that decides it (proof_shapes.cpp lists the files).
+std::vector<proof_shape> characteristic_shape_specs() {
+  std::vector<proof_shape> all;
+  const auto add = [&](proof_shape s) { all.push_back(std::move(s)); };
+  add({"characteristic", "the printed polynomial in the root is the scheme at (1, r, r^2), up to a factor free of r; unprinted coefficients solved for",
+       "printed",
+       with_where({{"printed", argument_kind::formula, true, "the printed polynomial (its side that is 0), of degree at most 2 in the root"},
+                   {"scheme", argument_kind::formula, true, "a linear three-term scheme (= 0)"},
+                   {"sequence", argument_kind::symbols, true, "its three states q_{j-1}, q_j, q_{j+1}", 3},
+                   {"root", argument_kind::symbols, true, "the root r: q_{j-1} = 1, q_j = r, q_{j+1} = r^2", 1},
+                   {"unprinted", argument_kind::symbols, false, "coefficients the text names but does not print (c), each one whole coefficient"}}),
+       characteristic_shape});
+  add({"discriminant", "the printed value of the discriminant b^2 - 4ac of the printed polynomial a r^2 + b r + c, its unprinted coefficients solved from the scheme",
+       "printed",
+       with_where({{"printed", argument_kind::formula, true, "the printed value of the discriminant"},
+                   {"polynomial", argument_kind::formula, true, "the printed polynomial in the root (its side that is 0)"},
+                   {"definition", argument_kind::formula, false, "the printed definition of the discriminant, b^2 - 4ac, in the polynomial's symbols"},
+                   {"scheme", argument_kind::formula, true, "a linear three-term scheme (= 0)"},
+                   {"sequence", argument_kind::symbols, true, "the scheme's three states q_{j-1}, q_j, q_{j+1}", 3},
+                   {"root", argument_kind::symbols, true, "the polynomial's variable", 1},
+                   {"unprinted", argument_kind::symbols, false, "coefficients the text names but does not print, solved from the scheme"}}),
+       discriminant_shape});
+  add({"characteristic-roots", "what a sentence says of the roots of the scheme's characteristic polynomial on the printed interval: complex or real, their product, stability",
+       "scheme",
+       with_where({{"scheme", argument_kind::formula, true, "a linear three-term scheme (= 0)"},
+                   {"sequence", argument_kind::symbols, true, "its three states q_{j-1}, q_j, q_{j+1}", 3},
+                   {"variable", argument_kind::formula, true, "the variable of the condition, a product of positive symbols", 0, "", true},
+                   {"condition", argument_kind::condition, true, "the printed interval 0 < variable < c"},
+                   pattern_with_hole("sentence", "the sentence's pattern: the hole {roots} (complex conjugate, real), optionally {product} and {conclusion} (stable, unstable)",
+                                     "roots")}),
+       characteristic_roots_shape});
+  add({"unconditional-stability", "what a sentence says of the scheme's stability ({stability}, optionally {qualifier}) against the root condition for every variable > 0",
+       "scheme",
+       with_where({{"scheme", argument_kind::formula, true, "a linear three-term scheme (= 0) whose first and last coefficients are equal"},
+                   {"sequence", argument_kind::symbols, true, "its three states q_{j-1}, q_j, q_{j+1}", 3},
+                   {"variable", argument_kind::formula, true, "the variable the scheme's roots depend on, a product of positive symbols", 0, "", true},
+                   pattern_with_hole("sentence", "the sentence's pattern: the hole {stability} (stable, linearly stable, conditionally or unconditionally stable, unstable)", "stability"),
+                   pattern_with_hole("qualifier", "optionally, a sentence with the hole {qualifier} (unconditionally, conditionally)", "qualifier", false)}),
+       unconditional_stability_shape});
+  add({"root-criterion", "a stability criterion stated on the roots' modulus, against the root condition on every region of variable > 0", "scheme",
+       with_where({{"scheme", argument_kind::formula, true, "a linear three-term scheme (= 0) whose first and last coefficients are equal"},
+                   {"sequence", argument_kind::symbols, true, "its three states q_{j-1}, q_j, q_{j+1}", 3},
+                   {"variable", argument_kind::formula, true, "the variable the scheme's roots depend on, a product of positive symbols", 0, "", true},
+                   pattern_with_hole("sentence", "the sentence's pattern: the hole {modulus} (a bound, optionally with 'simple')", "modulus")}),
+       root_criterion_shape});
+  return all;
+}
+
 }  // namespace simpson::verify::detail

@@ -174,4 +174,40 @@ claim_result discrete_map_shape(const shape_call& call, const run_context& ctx) 
   return result;
 }
 
+/// The shapes of this file, each one's name, summary, principal argument and parameters beside the
+/// function that decides it (proof_shapes.cpp lists the files).
+std::vector<proof_shape> derivation_shape_specs() {
+  std::vector<proof_shape> all;
+  const auto add = [&](proof_shape s) { all.push_back(std::move(s)); };
+  add({"euler-lagrange", "printed = 0 is D_2 L(q_{j-1}, q_j) + D_1 L(q_j, q_{j+1}) = 0, up to a factor free of the states", "printed",
+       with_where({{"lagrangian", argument_kind::formula, true, "the discrete Lagrangian L(q_0, q_1)"},
+                   {"nodes", argument_kind::symbols, true, "its two arguments", 2},
+                   {"sequence", argument_kind::symbols, true, "three consecutive states", 3},
+                   {"printed", argument_kind::formula, true, "the printed equation's side that is 0"}}),
+       euler_lagrange_shape});
+  add({"discrete-momenta", "every side of each printed equation equals its first once p_j = -D_1 L(q_j, q_{j+1}) and p_{j+1} = D_2 L(q_j, q_{j+1}) are put in",
+       "equations",
+       with_where({{"equations", argument_kind::equations, true, "the printed system: equations in the states and the momenta of one step"},
+                   {"lagrangian", argument_kind::formula, true, "the discrete Lagrangian L(q_0, q_1)"},
+                   {"nodes", argument_kind::symbols, true, "its two arguments", 2},
+                   {"at", argument_kind::symbols, true, "the two states of the step, q_j and q_{j+1}", 2},
+                   {"momenta", argument_kind::symbols, true, "the momenta at them, p_j and p_{j+1}", 2}}),
+       discrete_momenta_shape});
+  add({"stationary", "the printed equation (= 0) is d function / d variable = 0, up to a factor free of the unknowns", "printed",
+       with_where({{"printed", argument_kind::formula, true, "the printed equation's side that is 0"},
+                   {"function", argument_kind::formula, true, "the function made stationary (a discrete Lagrangian)"},
+                   {"variable", argument_kind::symbols, true, "the variable it is stationary in (an internal node)", 1},
+                   {"unknowns", argument_kind::symbols, true, "the states the factor must be free of"}}),
+       stationary_shape});
+  add({"discrete-map", "map is the one-step map of the discrete Lagrangian (internal nodes eliminated), p_0 = -D_1 L, p_1 = D_2 L", "map",
+       with_where({{"map", argument_kind::matrix, true, "the printed one-step map of (q_0, p_0)", 2},
+                   {"lagrangian", argument_kind::formula, true, "the discrete Lagrangian L(q_0, q_1), quadratic"},
+                   {"nodes", argument_kind::symbols, true, "its end nodes q_0, q_1", 2},
+                   {"momenta", argument_kind::symbols, true, "the momenta p_0, p_1", 2},
+                   {"internal", argument_kind::symbols, false, "its internal nodes, eliminated by their equations"},
+                   {"order", argument_kind::word, false, "the printed map's state order: 'q p' (the default) or 'p q'", 0, "", false, {"q p", "p q"}}}),
+       discrete_map_shape});
+  return all;
+}
+
 }  // namespace simpson::verify::detail

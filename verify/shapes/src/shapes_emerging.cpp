@@ -117,4 +117,23 @@ claim_result emerging_condition_shape(const shape_call& call, const run_context&
   return result;
 }
 
+/// The shapes of this file, each one's name, summary, principal argument and parameters beside the
+/// function that decides it (proof_shapes.cpp lists the files).
+std::vector<proof_shape> emerging_shape_specs() {
+  std::vector<proof_shape> all;
+  const auto add = [&](proof_shape s) { all.push_back(std::move(s)); };
+  add({"emerging-condition",
+       "the printed condition 0 < variable < c follows from the printed formula as the text says (c its first pole): only when the scheme's stable set "
+       "for variable > 0 is (0, c)",
+       "condition",
+       with_where({{"condition", argument_kind::condition, true, "the printed condition 0 < variable < c"},
+                   {"formula", argument_kind::formula, true, "the formula it is said to emerge from (its denominator's first positive root)"},
+                   {"variable", argument_kind::formula, true, "the condition's variable, a product of positive symbols", 0, "", true},
+                   {"scheme", argument_kind::formula, true, "the linear three-term scheme (= 0) whose stability the condition states"},
+                   {"sequence", argument_kind::symbols, true, "its three states q_{j-1}, q_j, q_{j+1}", 3},
+                   pattern_with_hole("sentence", "the sentence that says the condition emerges, with the hole {emerges}", "emerges")}),
+       emerging_condition_shape});
+  return all;
+}
+
 }  // namespace simpson::verify::detail

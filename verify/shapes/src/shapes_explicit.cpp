@@ -271,4 +271,26 @@ claim_result explicit_scheme_shape(const shape_call& call, const run_context& ct
   return result;
 }
 
+/// The shapes of this file, each one's name, summary, principal argument and parameters beside the
+/// function that decides it (proof_shapes.cpp lists the files).
+std::vector<proof_shape> explicit_shape_specs() {
+  std::vector<proof_shape> all;
+  const auto add = [&](proof_shape s) { all.push_back(std::move(s)); };
+  add({"explicit-map", "the sentence's {kind} (explicit or implicit) is what the printed map is: explicit when every entry is a polynomial in the step",
+       "map",
+       with_where({{"map", argument_kind::matrix, true, "the printed one-step map"},
+                   {"step", argument_kind::symbols, true, "the step h", 1},
+                   {"positive", argument_kind::symbols, false, "symbols positive besides the step (m, omega), for the denominators' signs"},
+                   pattern_with_hole("sentence", "the sentence's pattern: the hole {kind}, 'explicit' or 'implicit'", "kind")}),
+       explicit_map_shape});
+  add({"explicit-scheme", "the sentence's {kind} (explicit or implicit) is what the scheme is for the document's functions left general: explicit when it "
+                          "gives its next state in closed form (linear in it, and never inside an application of a function such as V')",
+       "scheme",
+       with_where({{"scheme", argument_kind::formula, true, "the scheme's expression (= 0) in consecutive states, its functions (V) uninterpreted"},
+                   {"sequence", argument_kind::symbols, true, "its states, the last the one a step computes (q_{j+1})"},
+                   pattern_with_hole("sentence", "the sentence's pattern: the hole {kind}, 'explicit' or 'implicit'", "kind")}),
+       explicit_scheme_shape});
+  return all;
+}
+
 }  // namespace simpson::verify::detail

@@ -535,4 +535,60 @@ claim_result proportional_shape(const shape_call& call, const run_context& ctx) 
   return result;
 }
 
+/// The shapes of this file, each one's name, summary, principal argument and parameters beside the
+/// function that decides it (proof_shapes.cpp lists the files).
+std::vector<proof_shape> identities_shape_specs() {
+  std::vector<proof_shape> all;
+  const auto add = [&](proof_shape s) { all.push_back(std::move(s)); };
+  add({"identity", "lhs = rhs, the definitions put in", "rhs",
+       with_where({{"lhs", argument_kind::formula, true, "a formula"}, {"rhs", argument_kind::formula, true, "the formula it equals"}}),
+       identity_shape});
+  add({"derivative", "d function / d variable = printed, the definitions put in", "printed",
+       with_where({{"function", argument_kind::formula, true, "the formula differentiated"},
+                   {"variable", argument_kind::symbols, true, "the symbol it is differentiated by", 1},
+                   {"printed", argument_kind::formula, true, "the printed derivative"},
+                   {"arguments", argument_kind::symbols, false, "the function's arguments, when the printed derivative is taken at others", 0, "",
+                    false, {}, "", "", "at"},
+                   {"at", argument_kind::symbols, false, "the values of the arguments in the printed derivative (q_j, q_{j+1} for q_l, q_r)", 0,
+                    "arguments", false, {}, "", "", "arguments"}}),
+       derivative_shape});
+  add({"equal-sides", "every side of each printed equation is equal to its first, the definitions put in", "equations",
+       with_where({{"equations", argument_kind::equations, true,
+                    "printed equations 'a = b = ...', each read whole (a chain's first side, a symbol nothing defines, names what it defines)"}}),
+       equal_sides_shape});
+  add({"solves", "the equation (= 0) holds with the unknown replaced by the printed solution, the definitions put in", "solution",
+       with_where({{"equation", argument_kind::formula, true, "the equation's side that is 0"},
+                   {"unknown", argument_kind::symbols, true, "the symbol it is solved for", 1},
+                   {"solution", argument_kind::formula, true, "the printed solution"}}),
+       solves_shape});
+  add({"determinant", "det matrix = equals", "equals",
+       with_where({{"matrix", argument_kind::matrix, true, "a square matrix"}, {"equals", argument_kind::formula, true, "its determinant"}}),
+       determinant_shape});
+  add({"symplectic", "matrix^T J matrix = J, J = [[0, I], [-I, 0]]", "matrix",
+       with_where({{"matrix", argument_kind::matrix, true, "a one-step map of (q, p)"}}), symplectic_shape});
+  add({"linear", "the sentence's {linearity} (linear, or not linear) is what the expression is in the variables: e = sum of v_i e(unit v_i)", "expression",
+       with_where({{"expression", argument_kind::formula, true, "the printed expression"},
+                   {"variables", argument_kind::symbols, true, "the variables it is linear in, or not"},
+                   pattern_with_hole("sentence", "the sentence's pattern: the hole {linearity}, 'linear' or 'not linear'", "linearity"),
+                   {"positive", argument_kind::symbols, false,
+                    "the symbol the sentence's condition makes positive ('if h > 0'): a wording erratum then says what holds, that "
+                    "for it > 0 the expression is not its value at 0",
+                    1}}),
+       linear_shape});
+  add({"conserved", "function(map y) = function(y), y the state", "function",
+       with_where({{"map", argument_kind::matrix, true, "a one-step map"},
+                   {"function", argument_kind::formula, true, "a function of the state"},
+                   {"state", argument_kind::symbols, true, "the state's symbols, in the map's order", 0, "map"},
+                   {"keep", argument_kind::symbols, false,
+                    "a state symbol whose square's coefficient a correction keeps as printed (the first of the state when left out)", 1, "",
+                    false, {}, "state"}}),
+       conserved_shape});
+  add({"proportional", "printed = c of, c free of the state and nonzero", "printed",
+       with_where({{"printed", argument_kind::formula, true, "a function of the state"},
+                   {"of", argument_kind::formula, true, "the function it is a constant multiple of"},
+                   {"state", argument_kind::symbols, true, "the symbols c must be free of"}}),
+       proportional_shape});
+  return all;
+}
+
 }  // namespace simpson::verify::detail

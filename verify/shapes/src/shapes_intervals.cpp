@@ -466,4 +466,46 @@ claim_result sign_iff_shape(const shape_call& call, const run_context& ctx) {
   return result;
 }
 
+/// The shapes of this file, each one's name, summary, principal argument and parameters beside the
+/// function that decides it (proof_shapes.cpp lists the files).
+std::vector<proof_shape> intervals_shape_specs() {
+  std::vector<proof_shape> all;
+  const auto add = [&](proof_shape s) { all.push_back(std::move(s)); };
+  add({"stability-interval", "the printed 0 < variable < c is the first band where the map (det 1), or the three-term scheme (reversible), is power-bounded",
+       "condition",
+       with_where({{"map", argument_kind::matrix, false, "a 2 x 2 one-step map with det 1", 2},
+                   {"scheme", argument_kind::formula, false,
+                    "instead of a map: a linear three-term scheme (= 0) whose q_{j+1} and q_{j-1} coefficients are equal", 0, "", false, {}, "",
+                    "map"},
+                   {"sequence", argument_kind::symbols, false, "the scheme's three states q_{j-1}, q_j, q_{j+1}", 3, "", false, {}, "", "",
+                    "scheme"},
+                   {"variable", argument_kind::formula, true, "the variable of the condition, a product of positive symbols", 0, "", true},
+                   {"condition", argument_kind::condition, true, "the printed condition 0 < variable < c"}}),
+       stability_interval_shape});
+  add({"sign-on-interval", "expression has the stated sign on the printed interval 0 < variable < c", "expression",
+       with_where({{"expression", argument_kind::formula, true, "a function of the variable alone once scaled"},
+                   {"variable", argument_kind::formula, true, "the variable of the condition, a product of positive symbols", 0, "", true},
+                   {"condition", argument_kind::condition, true, "the printed interval 0 < variable < c"},
+                   {"sign", argument_kind::word, false, "positive or negative, when no sentence states it", 0, "", false, {"positive", "negative"}, "", "sentence"},
+                   pattern_with_hole("sentence", "the sentence that states the sign, with the hole {sign}: '... is {sign} for'", "sign", false)}),
+       sign_on_interval_shape});
+  add({"sign-iff", "expression has the stated sign if and only if 0 < variable < c: on the printed interval, and nowhere else for variable > 0",
+       "expression",
+       with_where({{"expression", argument_kind::formula, true, "a function of the variable alone once scaled"},
+                   {"variable", argument_kind::formula, true, "the variable of the condition, a product of positive symbols", 0, "", true},
+                   {"condition", argument_kind::condition, true, "the printed interval 0 < variable < c"},
+                   {"sign", argument_kind::word, false, "positive or negative, when no sentence states it", 0, "", false, {"positive", "negative"}, "", "sentence"},
+                   pattern_with_hole("sentence", "the sentence that states the sign, with the hole {sign}: '... is {sign} if and only if'", "sign", false)}),
+       sign_iff_shape});
+  add({"factor-signs", "each factor of the printed product, and the product, have the signs a sentence states on the printed interval 0 < variable < c",
+       "expression",
+       with_where({{"expression", argument_kind::formula, true, "the printed product: its sums are its factors, the rest one prefactor"},
+                   {"variable", argument_kind::formula, true, "the variable of the condition, a product of positive symbols", 0, "", true},
+                   {"condition", argument_kind::condition, true, "the printed interval 0 < variable < c"},
+                   pattern_with_hole("sentence", "the sentence's pattern: the hole {sign} (the factors' sign), optionally {relation} (the product's, to 0)",
+                                     "sign")}),
+       factor_signs_shape});
+  return all;
+}
+
 }  // namespace simpson::verify::detail

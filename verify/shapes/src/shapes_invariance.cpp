@@ -547,4 +547,27 @@ claim_result invariance_kernel_shape(const shape_call& call, const run_context& 
   return result;
 }
 
+/// The shapes of this file, each one's name, summary, principal argument and parameters beside the
+/// function that decides it (proof_shapes.cpp lists the files).
+std::vector<proof_shape> invariance_shape_specs() {
+  std::vector<proof_shape> all;
+  const auto add = [&](proof_shape s) { all.push_back(std::move(s)); };
+  add({"invariance-system", "the printed system's rows are the coefficients of y_i y_j (i <= j, in the state's order) in form(map y) - form(y)",
+       "system",
+       with_where(with_invariance({"system", argument_kind::formula, true, "the printed system: a column with a row for each y_i y_j, linear in the unknowns"})),
+       invariance_system_shape});
+  add({"invariance-determinant", "printed = det of the system form(map y) = form(y) asks of the form's coefficients (the rows as invariance-system derives them)",
+       "printed", with_where(with_invariance({"printed", argument_kind::formula, true, "the printed determinant"})), invariance_determinant_shape});
+  add({"invariance-singular", "det of the printed system's coefficients is 0 once the printed conditions are put in (each solved for its symbol)",
+       "conditions", with_where(with_conditions(with_invariance({"system", argument_kind::formula, true, "the printed system: a column linear in the unknowns"}))),
+       invariance_singular_shape});
+  std::vector<shape_parameter> kernel = with_conditions(with_invariance({"printed", argument_kind::formula, true, "the printed form whose coefficients span the kernel"}));
+  kernel.push_back({"system", argument_kind::formula, true, "the printed system: a column linear in the unknowns"});
+  kernel.push_back({"obtains", argument_kind::equations, false, "printed equations in the unknowns that every solution satisfies (eta = 0)"});
+  add({"invariance-kernel",
+       "once the printed conditions are put in, the printed form's coefficients span the kernel of the printed system (rank n - 1), and each 'obtains' holds there",
+       "printed", with_where(std::move(kernel)), invariance_kernel_shape});
+  return all;
+}
+
 }  // namespace simpson::verify::detail

@@ -151,4 +151,28 @@ claim_result known_method_shape(const shape_call& call, const run_context& ctx) 
   return result;
 }
 
+/// The shapes of this file, each one's name, summary, principal argument and parameters beside the
+/// function that decides it (proof_shapes.cpp lists the files).
+std::vector<proof_shape> known_method_shape_specs() {
+  std::vector<proof_shape> all;
+  const auto add = [&](proof_shape s) { all.push_back(std::move(s)); };
+  add({"known-method",
+       "the printed one-step map is a named partitioned Runge-Kutta method's on q'' = -omega^2 q, and the text, presenting the method as its own, names it",
+       "map",
+       with_where({{"map", argument_kind::matrix, true, "the printed 2 x 2 one-step map", 2},
+                   {"state", argument_kind::symbols, true, "the map's state, in its order ('p', 'q')", 2},
+                   {"position", argument_kind::symbols, true, "which of the state is the position q", 1, "", false, {}, "state"},
+                   {"step", argument_kind::symbols, true, "the step h", 1},
+                   {"frequency", argument_kind::formula, true, "omega"},
+                   {"mass", argument_kind::formula, true, "the mass m"},
+                   {"tableau_position", argument_kind::matrix, true, "the method's s x s tableau for the position (Lobatto IIIA)"},
+                   {"tableau_momentum", argument_kind::matrix, true, "its s x s tableau for the momentum (Lobatto IIIB)"},
+                   {"weights", argument_kind::formula, true, "its weights, a 1 x s row"},
+                   {"method", argument_kind::word, true, "the method's name, in words ('the 3-stage Lobatto IIIA-IIIB pair')"},
+                   {"names", argument_kind::words, true, "words whose presence in the prose names it ('Lobatto')"},
+                   pattern_with_hole("sentence", "the sentence presenting the method as the text's own, with the hole {novelty}", "novelty")}),
+       known_method_shape});
+  return all;
+}
+
 }  // namespace simpson::verify::detail

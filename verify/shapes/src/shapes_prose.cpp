@@ -135,4 +135,18 @@ claim_result citations_shape(const shape_call&, const run_context& ctx) {
   return result;
 }
 
+/// The shapes of this file, each one's name, summary, principal argument and parameters beside the
+/// function that decides it (proof_shapes.cpp lists the files).
+std::vector<proof_shape> prose_shape_specs() {
+  std::vector<proof_shape> all;
+  const auto add = [&](proof_shape s) { all.push_back(std::move(s)); };
+  add({"spelling", "every word of the document's prose is in Hunspell's en_US dictionary or the record's vocabulary (its names and terms of art)", "",
+       {{"vocabulary", argument_kind::words, false, "words the dictionary lacks that the document spells right: names, terms of art ('symplectic')"},
+        {"from", argument_kind::word, false, "where the prose checked starts: words the source prints ('Abstract'); the body's start without it"}},
+       spelling_shape});
+  add({"citations", "every \\cite key of the document has its entry in the document's bibliography; unverifiable when one has none", "", {},
+       citations_shape});
+  return all;
+}
+
 }  // namespace simpson::verify::detail

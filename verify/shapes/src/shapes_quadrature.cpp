@@ -125,4 +125,27 @@ claim_result discrete_lagrangian_shape(const shape_call& call, const run_context
                           fmt::format("as derived: ({}) = {}", reference_of(call, "printed"), text_of(GiNaC::normal(derived))));
 }
 
+/// The shapes of this file, each one's name, summary, principal argument and parameters beside the
+/// function that decides it (proof_shapes.cpp lists the files).
+std::vector<proof_shape> quadrature_shape_specs() {
+  std::vector<proof_shape> all;
+  const auto add = [&](proof_shape s) { all.push_back(std::move(s)); };
+  add({"quadrature-exactness", "the degree of exactness a sentence states ({degree}) is the printed rule's, for the printed integral it approximates", "rule",
+       with_where({{"rule", argument_kind::formula, true, "the printed rule, a combination of the function's values"},
+                   {"integral", argument_kind::formula, true, "the printed integral it approximates, \\int_a^b f(x) \\dd x"},
+                   {"function", argument_kind::symbols, true, "the function integrated (psi)", 1},
+                   pattern_with_hole("sentence", "the sentence's pattern, with the hole {degree} (a number: 'degree three'; or a bound: 'smaller or equal to 1')",
+                                     "degree")}),
+       quadrature_exactness_shape});
+  add({"discrete-lagrangian", "the printed discrete Lagrangian is the printed rule applied to the printed action integral along the interpolant the definitions give",
+       "printed",
+       with_where({{"printed", argument_kind::formula, true, "the printed discrete Lagrangian"},
+                   {"integral", argument_kind::formula, true, "the action integral of one interval, \\int_a^b f \\dd t, f written in the state and its derivative"},
+                   {"rule", argument_kind::formula, true, "the printed rule: an equation \\int_{a0}^{b0} psi(x) \\dd x = (or \\simeq) a combination of psi's values"},
+                   {"function", argument_kind::symbols, true, "the rule's function (psi)", 1},
+                   {"state", argument_kind::symbols, true, "the state q, a function the definitions give (q(t) = ...)", 1}}),
+       discrete_lagrangian_shape});
+  return all;
+}
+
 }  // namespace simpson::verify::detail

@@ -125,4 +125,21 @@ claim_result sum_range_shape(const shape_call& call, const run_context& ctx) {
   return result;
 }
 
+/// The shapes of this file, each one's name, summary, principal argument and parameters beside the
+/// function that decides it (proof_shapes.cpp lists the files).
+std::vector<proof_shape> sums_shape_specs() {
+  std::vector<proof_shape> all;
+  const auto add = [&](proof_shape s) { all.push_back(std::move(s)); };
+  add({"sum-range", "the printed sum runs over the elements of the printed interval, from the first (starting at its start) to the last (ending at its end)", "sum",
+       with_where({{"sum", argument_kind::formula, false, "the printed sum \\sum_{j=a}^{b}", 0, "", false, {}, "", "sentence"},
+                   pattern_with_hole("sentence", "instead of a printed sum: a sentence stating its range, with the holes {from} and {to} (TeX: '$1$', '$N - 1$')",
+                                     "from", false),
+                   {"index", argument_kind::word, false, "the sum's index, with a sentence: 'j'", 0, "", false, {}, "", "", "sentence"},
+                   {"element", argument_kind::symbols, true, "the summand's first and last nodes, x_j and x_{j+1}", 2},
+                   {"node", argument_kind::formula, true, "the printed time of node j, t_j = j h"},
+                   {"range", argument_kind::condition, true, "the printed interval a <= t <= b"}}),
+       sum_range_shape});
+  return all;
+}
+
 }  // namespace simpson::verify::detail

@@ -165,6 +165,38 @@ std::optional<GiNaC::numeric> index_offset(const std::string& name, const std::s
 /// The reference an argument gives.
 std::string reference_of(const shape_call& call, const std::string& parameter);
 
+/// The parameters the shapes' specs share: the definitions and the sentence every shape takes
+/// (with_where), a sentence's pattern with its hole, the series', invariance's and conditions' own.
+const std::vector<shape_parameter>& common_parameters();
+std::vector<shape_parameter> with_where(std::vector<shape_parameter> parameters);
+shape_parameter pattern_with_hole(std::string name, std::string meaning, std::string hole, bool required = true);
+std::vector<shape_parameter> with_series(std::vector<shape_parameter> parameters);
+std::vector<shape_parameter> with_invariance(shape_parameter printed);
+std::vector<shape_parameter> with_conditions(std::vector<shape_parameter> parameters);
+
+/// The series helpers (shape_support.cpp) of the oscillator's series shapes and the consistency
+/// shapes: the Taylor degree that makes a scheme's series exact to an order, the lowest power of h
+/// in an expression, and our kernel's decision that f = h^power times a function regular at h = 0.
+int taylor_degree(const shape_call& call, const GiNaC::ex& scheme, const std::vector<GiNaC::symbol>& sequence, const GiNaC::symbol& h, int order);
+std::optional<int> lowest_power(const GiNaC::ex& e, const GiNaC::symbol& h);
+kernel_decision kernel_confirms_order(const GiNaC::ex& f, const GiNaC::symbol& h, int power, bool exact);
+
+/// Each shapes_*.cpp file's shapes, their specs beside the functions that decide them; proof_shapes()
+/// lists the files, one line each.
+std::vector<proof_shape> identities_shape_specs();
+std::vector<proof_shape> invariance_shape_specs();
+std::vector<proof_shape> derivation_shape_specs();
+std::vector<proof_shape> explicit_shape_specs();
+std::vector<proof_shape> intervals_shape_specs();
+std::vector<proof_shape> series_shape_specs();
+std::vector<proof_shape> consistency_shape_specs();
+std::vector<proof_shape> quadrature_shape_specs();
+std::vector<proof_shape> sums_shape_specs();
+std::vector<proof_shape> emerging_shape_specs();
+std::vector<proof_shape> known_method_shape_specs();
+std::vector<proof_shape> prose_shape_specs();
+std::vector<proof_shape> characteristic_shape_specs();
+
 // The shapes.
 claim_result identity_shape(const shape_call& call, const run_context& ctx);
 claim_result equal_sides_shape(const shape_call& call, const run_context& ctx);
