@@ -150,6 +150,7 @@ referenced_formula read_reference(const tex_document& document, const tex_declar
   // must not be taken for a scalar factor first.
   const std::size_t side = r.side == 0 ? f.sides.size() - 1 : static_cast<std::size_t>(r.side - 1);
   f.identity = f.place + "#" + std::to_string(r.equation) + ":side" + std::to_string(side + 1);
+  f.side = side;
   f.value = read_side(f, side, declared);
   return f;
 }

@@ -31,17 +31,60 @@ bool written_as_sum(const ex& f) { return GiNaC::is_a<GiNaC::add>(f) || (GiNaC::
 
 /// The factors of a printed product as the text writes them: each sum (written_as_sum), and the rest
 /// (numbers, symbols and their powers) multiplied into one prefactor, listed first; the sums by
-/// their text (GiNaC orders a product by hash, which differs from run to run).
-std::vector<ex> printed_factors(const ex& product) {
+/// their text (GiNaC orders a product by hash, which differs from run to run). Each parenthesised
+/// factor is read on its own from the printed tree, so that it keeps its printed orientation: GiNaC's
+/// product of (4 - x)(8 - x) is (x - 4)(x - 8), whose factors have the other sign. When the printed
+/// side is not a product of its top-level parts (a sum, or parts whose product is not the formula),
+/// the factors are GiNaC's.
+std::vector<ex> printed_factors(const ex& product, const referenced_formula& printed, const shape_reader& read) {
   std::vector<ex> sums;
   ex prefactor = 1;
-  for (const ex& f : GiNaC::is_a<GiNaC::mul>(product) ? GiNaC::exvector(product.begin(), product.end()) : GiNaC::exvector{product}) {
+  const auto add_factor = [&](const ex& f) {
     if (written_as_sum(f)) {
       sums.push_back(f);
     } else {
       prefactor *= f;
     }
+  };
+  const auto as_read = [&]() {
+    sums.clear();
+    prefactor = 1;
+    for (const ex& f : GiNaC::is_a<GiNaC::mul>(product) ? GiNaC::exvector(product.begin(), product.end()) : GiNaC::exvector{product}) add_factor(f);
+  };
+  const auto read_part = [&](const tex_list& part) { return read.defined(read_math(part, read.reading(), paper_symbols())); };
+  bool from_tree = printed.side < printed.side_trees.size();
+  if (from_tree) {
+    const tex_list& side = printed.side_trees[printed.side];
+    tex_list rest;
+    for (std::size_t k = 0; k < side.size() && from_tree; ++k) {
+      const tex_node& n = side[k];
+      if (n.kind == tex_node_kind::atom && n.atom_class == tex_class::bin) from_tree = false;  // a sum, not a product
+      const bool parenthesised = (n.kind == tex_node_kind::delimited && n.text == "(") ||
+                                 (n.kind == tex_node_kind::scripts && !n.children.empty() && n.children.front().kind == tex_node_kind::delimited &&
+                                  n.children.front().text == "(");
+      if (parenthesised) {
+        add_factor(read_part({n}));
+      } else if (delimiter_depth_change(n) > 0) {
+        tex_list group{n};
+        int depth = 1;
+        while (depth > 0 && ++k < side.size()) {
+          depth += delimiter_depth_change(side[k]);
+          group.push_back(side[k]);
+        }
+        if (depth != 0) from_tree = false;
+        else add_factor(read_part(group));
+      } else {
+        rest.push_back(n);
+      }
+    }
+    if (from_tree && !rest.empty()) prefactor *= read_part(rest);
+    from_tree = from_tree && GiNaC::normal(GiNaC::expand(prefactor) * [&] {
+                  ex all = 1;
+                  for (const ex& f : sums) all *= f;
+                  return all;
+                }() - product).is_zero();
   }
+  if (!from_tree) as_read();
   std::sort(sums.begin(), sums.end(), [](const ex& a, const ex& b) { return text_of(a) < text_of(b); });
   std::vector<ex> out;
   if (!(GiNaC::is_a<GiNaC::numeric>(prefactor) && prefactor == 1)) out.push_back(prefactor);
@@ -310,7 +353,7 @@ claim_result factor_signs_shape(const shape_call& call, const run_context& ctx) 
   std::vector<std::string> proved, unlike;
   bool kernels_agree = true, sums_as_stated = true, ginac_decided = true;
   int product_sign = 1;
-  for (const ex& f : printed_factors(product)) {
+  for (const ex& f : printed_factors(product, read.raw("expression"), read)) {
     const std::optional<one_variable> g = in_variable(f, v);
     const std::optional<rational> c = g ? g->exact(high) : std::nullopt;
     if (!g || !c || *c <= 0) {

@@ -56,6 +56,7 @@ struct referenced_formula {
   std::vector<std::string> sides;      // each side's TeX
   std::vector<std::string> relations;  // between them: "=", "<", "\\leq"
   std::vector<tex_list> side_trees;
+  std::size_t side = 0;  // which of the sides `value` is (its tree: side_trees[side])
   GiNaC::ex value;
   /// Which printed formula this is, whatever the reference's spelling: its place, equation and side
   /// ("label eq:PhiS#1:side2"); what a proved correction of it names.
