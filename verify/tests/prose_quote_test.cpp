@@ -58,6 +58,7 @@ TEST(ProseSpan, AHoleTakesProseOnlyNeverADisplayOrAParagraphBreak) {
     EXPECT_FALSE(find_prose(broken, "is {property} for all h.").has_value()) << between;
   }
   EXPECT_TRUE(find_prose(text_source("It is stable\n for all h."), "is {property} for all h.").has_value());  // a line break is not a paragraph's
+  EXPECT_FALSE(find_prose(text_source("It is for all h."), "is {property} for all h.").has_value());  // a hole stands for words
 }
 
 TEST(ProseSpan, APatternThatMatchesTwoSpansIsRefusedNamingBoth) {

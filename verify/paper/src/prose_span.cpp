@@ -52,9 +52,10 @@ void check_pattern(const std::string& pattern) { (void)split_pattern(pattern); }
 
 namespace {
 
-/// Whether a hole's words stay in the sentence's text: no display (an environment, \[ \], $$) and
-/// no paragraph break inside, which a hole of a pattern never means to take.
+/// Whether a hole's words stay in the sentence's text: some words, and no display (an environment,
+/// \[ \], $$) or paragraph break inside, which a hole of a pattern never means to take.
 bool hole_in_prose(const std::string& words) {
+  if (words.find_first_not_of(" \t\r\n") == std::string::npos) return false;  // a hole stands for words: never none
   for (const char* display : {"\\begin{", "\\end{", "\\[", "\\]", "$$"}) {
     if (words.find(display) != std::string::npos) return false;
   }

@@ -1,4 +1,4 @@
-// A condition a text says "emerges" from a formula (the stability condition from the pole of q_m):
+// A condition a text says "emerges" from a formula (the paper's stability condition from the pole of q_m):
 // whether that argument reaches it. See shape_support.hpp.
 
 #include <simpson/shapes/shape_support.hpp>
@@ -102,10 +102,14 @@ claim_result emerging_condition_shape(const shape_call& call, const run_context&
     result.note = fmt::format("The pole of ({}) at {} = {} ends the one stable band: the scheme is stable for {}.", formula_ref, var, text_of(high), stable_set);
     return result;
   }
+  // What the pole makes undefined, in the document's words: the symbol the formula defines (q_m in
+  // q_m = ...), or the formula itself.
+  const referenced_formula as_printed = read_reference(document_of(ctx), read.reading(), call.with.at("formula").values.front());
+  const std::string undefined = as_printed.sides.size() > 1 ? folded_space(as_printed.sides.front()) : "(" + formula_ref + ")";
   result.outcome = verdict::erratum;
   result.correction = fmt::format("The condition is the first stable band's, from the root condition on ({}), stable for {}; the pole of ({}) at {} = {} "
-                                  "only makes q_m undefined there{}",
-                                  scheme_ref, stable_set, formula_ref, var, text_of(high),
+                                  "only makes {} undefined there{}",
+                                  scheme_ref, stable_set, formula_ref, var, text_of(high), undefined,
                                   stable_beyond ? ", and the scheme is stable again beyond it" : "");
   result.note = fmt::format("As printed, the condition '{}' from the pole of ({}): a pole says where the formula is undefined, not where the scheme "
                             "is stable. {}",

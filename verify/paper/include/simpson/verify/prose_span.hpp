@@ -26,8 +26,8 @@ struct prose_span {
 };
 
 /// The first span of the paper that matches `pattern`, with the lines of any other; none when the
-/// sentence is no longer there. A hole takes words of the prose only: at most 240 characters, and
-/// no display (an environment, \[ \], $$) or paragraph break inside. Throws std::invalid_argument for a pattern that
+/// sentence is no longer there. A hole takes words of the prose only: at least one, at most 240
+/// characters, and no display (an environment, \[ \], $$) or paragraph break inside. Throws std::invalid_argument for a pattern that
 /// starts or ends with a hole, has two holes side by side, or an unclosed brace.
 std::optional<prose_span> find_prose(const paper_source& paper, const std::string& pattern);
 
