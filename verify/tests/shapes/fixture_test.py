@@ -9,12 +9,14 @@ folder passes when `simpson-verify --paper note.tex --claims-file claims.toml` g
 expected verdict. A folder must hold a statement the shape refuses (a verdict other than holds), so
 that a shape that stopped telling right from wrong fails it.
 """
-import json
 import pathlib
-import subprocess
 import sys
-import tempfile
+
+sys.dont_write_bytecode = True  # nothing written into the source tree
 import tomllib
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent / "notes"))
+from verdicts import compare, report_of  # noqa: E402
 
 binary, folder = sys.argv[1], pathlib.Path(sys.argv[2])
 name = folder.name
@@ -26,23 +28,5 @@ for r in records:
     expected[r["id"]] = r["expected"]
 if all(v == "holds" for v in expected.values()):
     sys.exit(f"FAIL {name}: every record holds; a fixture needs a statement its shape refuses")
-
-with tempfile.TemporaryDirectory() as out:
-    run = subprocess.run([binary, "--paper", str(folder / "note.tex"), "--claims-file", str(folder / "claims.toml"), "--no-certify",
-                          "--quiet", "--out", out], capture_output=True, text=True)
-    if run.returncode not in (0, 1):
-        sys.exit(f"FAIL {name}: simpson-verify exited {run.returncode}: {run.stderr.strip()}")
-    report = json.loads((pathlib.Path(out) / "report.json").read_text())
-
-failures = 0
-seen = set()
-for c in report["claims"]:
-    seen.add(c["id"])
-    if c["verdict"] != expected.get(c["id"]):
-        print(f"FAIL {name}: {c['id']}: verdict {c['verdict']}, expected {expected.get(c['id'])}\n     note: {c.get('note', '')[:300]}")
-        failures += 1
-for missing in sorted(set(expected) - seen):
-    print(f"FAIL {name}: {missing}: not in the report")
-    failures += 1
-print(f"{name}: {len(seen)} claims as expected" if not failures else f"{name}: {failures} difference(s)")
-sys.exit(1 if failures else 0)
+report = report_of(binary, name, folder / "note.tex", folder / "claims.toml")
+sys.exit(1 if compare(name, report, expected, lambda c: c["verdict"], "claims.toml's expected") else 0)
