@@ -327,6 +327,8 @@ TEST_F(ShapesOnADocument, Linear) {
   EXPECT_EQ(run("linear", with("midnode", "That node is {linearity} in the ends.")).outcome, verdict::holds);
   const claim_result squared = run("linear", with("squarenode", "Squared, the node is {linearity} in the ends."));
   EXPECT_EQ(squared.outcome, verdict::erratum) << squared.note;
+  // The words are false, not a wording: no weaker meaning of "linear" holds of a square.
+  EXPECT_EQ(squared.note, "As printed, the sentence says 'linear'.");
   EXPECT_EQ(squared.correction.rfind("(squarenode) is not linear in q_0, q_1: ", 0), 0u) << squared.correction;
   EXPECT_NE(squared.evidence.at("exact").at("own").get<std::string>().find("fails"), std::string::npos) << squared.evidence.dump();
   EXPECT_FALSE(squared.refutation.empty()) << "not linear, refuted in Coq";

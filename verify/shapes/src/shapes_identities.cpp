@@ -380,7 +380,8 @@ claim_result linear_shape(const shape_call& call, const run_context& ctx) {
   } else {
     result.outcome = verdict::erratum;
     result.correction = computed;
-    result.note = fmt::format("Wording: the sentence says '{}'.", said.words("linearity"));
+    // A wording erratum only where the words' weaker meaning holds (below); else the words are false.
+    result.note = fmt::format("As printed, the sentence says '{}'.", said.words("linearity"));
     if (!linear || stated == "linear" || !read.has("positive")) {
       result.amendments.push_back(amendment_in_words("the sentence's words", said.words("linearity"), linear ? "linear" : "not linear"));
     }
@@ -390,6 +391,7 @@ claim_result linear_shape(const shape_call& call, const run_context& ctx) {
       const GiNaC::symbol s = read.symbols("positive").front();
       const ex at_zero = GiNaC::normal(GiNaC::normal(e).subs(s == 0));
       if (!at_zero.is_zero() && !normal_difference(e, at_zero).is_zero()) {
+        result.note = fmt::format("Wording: the sentence says '{}'.", said.words("linearity"));
         result.note += fmt::format(" What holds for {} > 0: ({}) is not its value at {} = 0, {}, but {} times it", s.get_name(), expression_ref,
                                    s.get_name(), text_of(at_zero), text_of(GiNaC::factor(GiNaC::normal(e / at_zero))));
         result.correction += fmt::format("; for {} > 0 it is not its value at {} = 0, {}, but {} times it", s.get_name(), s.get_name(),
