@@ -178,10 +178,16 @@ TEST(Experiments, NonlinearProblemsRunThePapersOscillatorThroughTheGeneralSteps)
     const std::vector<std::size_t>& r = by_method[method];
     return std::log2(number(cell(t, r[0], "error_q")) / number(cell(t, r[1], "error_q")));
   };
+  // At N = 64, 128 (ωh = 0.098, 0.049) the next term of each error is (ωh)² ≈ 1e-2 relative to the
+  // leading one, which moves log₂ of the ratio by less than 0.02; 0.05 leaves room for that, while a
+  // wrong exact state (an error that stops falling) moves it by whole orders.
   EXPECT_NEAR(order("simpson"), 4, 0.05);
   EXPECT_NEAR(order("gauss-legendre-2"), 4, 0.05);
   EXPECT_NEAR(order("stormer-verlet"), 2, 0.05);
-  EXPECT_LT(number(cell(t, by_method["gauss-legendre-2"][1], "energy_error_max_relative")), 1e-13);
+  // Gauss–Legendre keeps quadratic invariants exactly; what is left is each step's Newton stop (16 eps
+  // of the terms) and rounding, about 20 eps a step: over 128 steps 2560 eps ≈ 6e-13 at worst. The
+  // bound 1e-12 is that worst case; a method that does not conserve H is at 1e-6 and above here.
+  EXPECT_LT(number(cell(t, by_method["gauss-legendre-2"][1], "energy_error_max_relative")), 1e-12);
 }
 
 TEST(Experiments, NonlinearSectionRunsOnlyThePartsItIsGiven) {

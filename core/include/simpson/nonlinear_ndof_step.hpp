@@ -64,6 +64,21 @@ template <class Real>
 struct last_force {
   dense_vector<Real> q, gradient;
   bool valid = false;
+
+  /// The force at `at`: the kept one when it was evaluated at these very values, else `evaluate(at)`.
+  template <class Evaluate>
+  dense_vector<Real> at(const dense_vector<Real>& at_q, const Evaluate& evaluate) const {
+    if (valid && q.size() == at_q.size() && (q.array() == at_q.array()).all()) return gradient;
+    return dense_vector<Real>(evaluate(at_q));
+  }
+  /// Evaluates the force at the step's end and keeps it for the next step's start.
+  template <class Evaluate>
+  const dense_vector<Real>& keep(const dense_vector<Real>& end_q, const Evaluate& evaluate) {
+    q = end_q;
+    gradient = evaluate(end_q);
+    valid = true;
+    return gradient;
+  }
 };
 
 /// One Simpson step for n degrees of freedom: Newton's method on F from x₀ = q + (h/2) M⁻¹ p (the
@@ -77,8 +92,8 @@ ndof_step_result<Real> simpson_ndof_step(const separable_system<Real, Potential>
   const dense_matrix<Real>& M = s.mass();
   const dense_matrix<Real> M_abs = M.cwiseAbs();
   const Real h2 = h * h;
-  const bool same = kept.valid && kept.q.size() == y.q.size() && (kept.q.array() == y.q.array()).all();
-  const dense_vector<Real> force_q = same ? kept.gradient : dense_vector<Real>(V.gradient(y.q));
+  const auto gradient = [&V](const dense_vector<Real>& at) { return V.gradient(at); };
+  const dense_vector<Real> force_q = kept.at(y.q, gradient);
   const dense_vector<Real> fixed = scaled(y.p, Real(-h / 2)) + scaled(force_q, Real(h2 / 12));
   const dense_vector<Real> fixed_terms = scaled(dense_vector<Real>(y.p.cwiseAbs()), Real(h / 2)) +
                                          scaled(dense_vector<Real>(force_q.cwiseAbs()), Real(h2 / 12)) + M_abs * y.q.cwiseAbs();
@@ -94,10 +109,8 @@ ndof_step_result<Real> simpson_ndof_step(const separable_system<Real, Potential>
     if (within) {
       const dense_vector<Real> impulse_half = y.p - scaled(dense_vector<Real>(force_q + 2 * force_x), Real(h / 6));
       out.state.q = y.q + scaled(s.mass_solve(impulse_half), h);
-      kept.q = out.state.q;
-      kept.gradient = V.gradient(out.state.q);
-      kept.valid = true;
-      out.state.p = y.p - scaled(dense_vector<Real>(force_q + 4 * force_x + kept.gradient), Real(h / 6));
+      const dense_vector<Real>& force_end = kept.keep(out.state.q, gradient);
+      out.state.p = y.p - scaled(dense_vector<Real>(force_q + 4 * force_x + force_end), Real(h / 6));
       return out;
     }
     if (out.newton_iterations == max_newton_iterations) break;
@@ -214,14 +227,10 @@ ndof_state<Real> yoshida_ndof_step(const separable_system<Real, Potential>& s, c
 template <class Real, class Potential>
 ndof_state<Real> stormer_verlet_ndof_step(const separable_system<Real, Potential>& s, const Real& tau, const ndof_state<Real>& y,
                                           last_force<Real>& kept) {
-  const bool same = kept.valid && kept.q.size() == y.q.size() && (kept.q.array() == y.q.array()).all();
-  const dense_vector<Real> force = same ? kept.gradient : dense_vector<Real>(s.potential().gradient(y.q));
-  const dense_vector<Real> p_half = y.p - scaled(force, Real(tau / 2));
+  const auto gradient = [&s](const dense_vector<Real>& at) { return s.potential().gradient(at); };
+  const dense_vector<Real> p_half = y.p - scaled(kept.at(y.q, gradient), Real(tau / 2));
   ndof_state<Real> out{p_half, y.q + scaled(s.mass_solve(p_half), tau)};
-  kept.q = out.q;
-  kept.gradient = s.potential().gradient(out.q);
-  kept.valid = true;
-  out.p -= scaled(kept.gradient, Real(tau / 2));
+  out.p -= scaled(kept.keep(out.q, gradient), Real(tau / 2));
   return out;
 }
 

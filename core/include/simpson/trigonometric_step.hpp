@@ -49,20 +49,17 @@ ndof_state<Real> trigonometric_step(const Split& split, const Real& h, const ndo
   const auto filtered_gradient = [&](const dense_vector<Real>& q) {  // ∇U(Φq), Φ = sinc(hΩ)
     return dense_vector<Real>(split.slow_gradient(on_split(q, split.stiff_projection(q), Real(1), f.sinc)));
   };
-  const bool same = kept.valid && kept.q.size() == y.q.size() && (kept.q.array() == y.q.array()).all();
-  const dense_vector<Real> g0 = same ? kept.gradient : filtered_gradient(y.q);
+  const dense_vector<Real> g0 = kept.at(y.q, filtered_gradient);
   const dense_vector<Real> Pq = split.stiff_projection(y.q), Pp = split.stiff_projection(y.p), Pg0 = split.stiff_projection(g0);
   ndof_state<Real> out;
   // q_{n+1} = cos(hΩ)q + Ω⁻¹sin(hΩ)p − ½h² sinc²(hΩ) ∇U(Φq)
   out.q = on_split(y.q, Pq, Real(1), f.cos_xi) + on_split(y.p, Pp, h, f.sin_over_omega) -
           scaled(on_split(g0, Pg0, Real(1), Real(f.sinc * f.sinc)), Real(h * h / 2));
-  kept.q = out.q;
-  kept.gradient = filtered_gradient(out.q);
-  kept.valid = true;
-  const dense_vector<Real> Pg1 = split.stiff_projection(kept.gradient);
+  const dense_vector<Real> g1 = kept.keep(out.q, filtered_gradient);
+  const dense_vector<Real> Pg1 = split.stiff_projection(g1);
   // p_{n+1} = −Ω sin(hΩ)q + cos(hΩ)p − ½h (cos(hΩ) sinc(hΩ) ∇U(Φq_n) + sinc(hΩ) ∇U(Φq_{n+1}))
   out.p = on_split(y.p, Pp, Real(1), f.cos_xi) - scaled(Pq, f.omega_sin) -
-          scaled(dense_vector<Real>(on_split(g0, Pg0, Real(1), Real(f.cos_xi * f.sinc)) + on_split(kept.gradient, Pg1, Real(1), f.sinc)),
+          scaled(dense_vector<Real>(on_split(g0, Pg0, Real(1), Real(f.cos_xi * f.sinc)) + on_split(g1, Pg1, Real(1), f.sinc)),
                  Real(h / 2));
   return out;
 }

@@ -44,7 +44,8 @@ bool same_value(const std::optional<ex>& a, const std::optional<ex>& b) {
 claim_result emerging_condition_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const referenced_formula condition = read.raw("condition");
-  const ex formula = read.formula("formula");
+  const referenced_formula formula_printed = read.raw("formula");  // read once: its value, and the symbol it defines
+  const ex formula = read.defined(formula_printed.value);
   const ex v = read.formula("variable");
   const ex scheme = read.formula("scheme");
   const std::vector<GiNaC::symbol> q = read.symbols("sequence");
@@ -104,8 +105,7 @@ claim_result emerging_condition_shape(const shape_call& call, const run_context&
   }
   // What the pole makes undefined, in the document's words: the symbol the formula defines (q_m in
   // q_m = ...), or the formula itself.
-  const referenced_formula as_printed = read_reference(document_of(ctx), read.reading(), call.with.at("formula").values.front());
-  const std::string undefined = as_printed.sides.size() > 1 ? folded_space(as_printed.sides.front()) : "(" + formula_ref + ")";
+  const std::string undefined = formula_printed.sides.size() > 1 ? folded_space(formula_printed.sides.front()) : "(" + formula_ref + ")";
   result.outcome = verdict::erratum;
   result.correction = fmt::format("The condition is the first stable band's, from the root condition on ({}), stable for {}; the pole of ({}) at {} = {} "
                                   "only makes {} undefined there{}",

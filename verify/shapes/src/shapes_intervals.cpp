@@ -332,7 +332,8 @@ claim_result sign_on_interval_shape(const shape_call& call, const run_context& c
 /// wording erratum; the correction gives each factor's proved sign, and so does the certificate.
 claim_result factor_signs_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
-  const ex product = read.formula("expression");
+  const referenced_formula printed_product = read.raw("expression");  // read once: its value, and its tree for the factors
+  const ex product = read.defined(printed_product.value);
   const referenced_formula condition = read.raw("condition");
   const ex v = read.formula("variable");
   const std::string pattern = call.with.at("sentence").values.front();
@@ -353,7 +354,7 @@ claim_result factor_signs_shape(const shape_call& call, const run_context& ctx) 
   std::vector<std::string> proved, unlike;
   bool kernels_agree = true, sums_as_stated = true, ginac_decided = true;
   int product_sign = 1;
-  for (const ex& f : printed_factors(product, read.raw("expression"), read)) {
+  for (const ex& f : printed_factors(product, printed_product, read)) {
     const std::optional<one_variable> g = in_variable(f, v);
     const std::optional<rational> c = g ? g->exact(high) : std::nullopt;
     if (!g || !c || *c <= 0) {
