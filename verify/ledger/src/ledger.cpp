@@ -100,7 +100,7 @@ detail::check_function check_of(const claim_record& r, const std::shared_ptr<con
       detail::shape_call with_document = call;
       with_document.corrections = ctx.corrections;
       const auto start = std::chrono::steady_clock::now();
-      claim_result result = run(with_document, ctx);
+      claim_result result = detail::decide(call.claim_id, call.statement, run(with_document, ctx));
       result.printed_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();  // GiNaC's and ours
       return detail::bound_to_core(as_the_sentence_says(std::move(result), with_document, ctx), core, with_document, ctx);
     };

@@ -29,6 +29,7 @@ const std::map<std::string, proof_shape>& proof_shapes() {
     // Each file of shapes lists its own (its shapes' specs beside their bodies): one line each here.
     for (const auto family : {
              &identities_shape_specs,
+             &forms_shape_specs,
              &invariance_shape_specs,
              &derivation_shape_specs,
              &explicit_shape_specs,

@@ -5,6 +5,7 @@
 #include <simpson/verify/formula_reference.hpp>
 
 #include <simpson/prove/coq_export.hpp>
+#include <simpson/prove/decide.hpp>
 #include <simpson/prove/kernel_zero.hpp>
 #include <simpson/prove/printed_check_support.hpp>
 
@@ -262,19 +263,22 @@ std::optional<std::string> vanishing_denominator(const ex& e, const GiNaC::exmap
   return std::nullopt;
 }
 
-claim_result undefined_there(shape_reader& read, const std::string& what, const std::string& pole) {
-  claim_result result;
-  result.outcome = verdict::fails;
-  result.printed = read.printed();
-  result.note = fmt::format("As printed: {} is undefined: the denominator {} is 0 there.", what, pole);
-  result.evidence["exact"] = {{"statement", what}, {"ginac", "fails: the denominator " + pole + " is 0 there"}, {"own", "not applicable: undefined"}};
-  result.certificate_missing = "undefined there: no identity to state";
-  return result;
+decider_evidence undefined_there(shape_reader& read, const std::string& what, const std::string& pole) {
+  decider_evidence e;
+  e.statement = what;
+  e.ginac = answer::fails;  // undefined: neither true nor correctable
+  e.if_false = verdict::fails;
+  e.found.printed = read.printed();
+  e.found.note = fmt::format("As printed: {} is undefined: the denominator {} is 0 there.", what, pole);
+  e.found.evidence["exact"] = {{"statement", what}, {"ginac", "fails: the denominator " + pole + " is 0 there"}, {"own", "not applicable: undefined"}};
+  e.found.certificate_missing = "undefined there: no identity to state";
+  return e;
 }
 
-claim_result identity_verdict(const shape_call& call, shape_reader& read, const std::string& goal, const std::string& what, const ex& lhs, const ex& rhs,
-                              const std::string& correction, verdict when_false, const std::optional<kernel_decision>& given) {
-  claim_result result;
+decider_evidence identity_evidence(shape_reader& read, const std::string& goal, const std::string& what, const ex& lhs, const ex& rhs,
+                                   const std::string& correction, verdict when_false, const std::optional<kernel_decision>& given) {
+  decider_evidence e;
+  claim_result& result = e.found;
   const ex difference = normal_difference(lhs, rhs);
   const bool ginac_zero = is_zero_expression(difference);
   const kernel_decision own = given ? *given : kernel_decides_zero((lhs - rhs).evalm());
@@ -285,14 +289,14 @@ claim_result identity_verdict(const shape_call& call, shape_reader& read, const 
                : own.outcome == kernel_decision::result::nonzero ? "fails: "
                                                                  : "not applicable: ") +
                   own.evidence}};
+  e.statement = what;
+  e.ginac = answer_of(ginac_zero);
+  e.own = answer_of(own);
+  e.if_false = when_false;
   const bool own_decided = own.outcome != kernel_decision::result::not_applicable;
-  const bool own_zero = own.outcome == kernel_decision::result::zero;
-  if (kernels_disagree_if(result, own_decided && own_zero != ginac_zero, kernels_differ_on(what))) {
-  } else if (ginac_zero) {
-    result.outcome = verdict::holds;
+  if (ginac_zero) {
     if (!own_decided) result.note = "Our kernel could not decide it (" + own.evidence + "): GiNaC's proof alone.";
   } else {
-    result.outcome = when_false;
     result.correction = correction;
     // The difference in the note when a reader can take it in; a long one (a 600-character
     // polynomial) goes to the evidence, and the note says where.
@@ -306,14 +310,18 @@ claim_result identity_verdict(const shape_call& call, shape_reader& read, const 
     if (!own_decided) result.note += " Our kernel could not decide it (" + own.evidence + "): GiNaC's proof alone.";
   }
   result.printed = read.printed();
-  record_certificate(result, coq_certificate(call.claim_id, call.statement, {decided(goal, lhs, rhs)}));
-  return result;
+  e.goals = std::vector<proof_goal>{decided(goal, lhs, rhs)};
+  return e;
 }
 
-void settle(claim_result& result, bool disagree, bool holds, const std::string& what, const std::string& correction) {
-  if (kernels_disagree_if(result, disagree, kernels_differ_on(what))) return;
-  result.outcome = holds ? verdict::holds : verdict::erratum;
-  if (!holds) result.correction = correction;
+decider_evidence settled(claim_result found, answer ginac, answer own, const std::string& what, const std::string& correction) {
+  decider_evidence e;
+  e.found = std::move(found);
+  e.statement = what;
+  e.ginac = ginac;
+  e.own = own;
+  if (ginac == answer::fails) e.found.correction = correction;
+  return e;
 }
 
 namespace {

@@ -166,7 +166,7 @@ void record_coefficients(claim_result& result, const characteristic_reading& c) 
 /// coefficient the text names without printing it (`unprinted`, c) is solved for: it is what makes
 /// the two proportional, and the evidence gives it. The scale is the printed coefficient of the
 /// highest power: Q_k P(r) = P_k Q(r), decided in both kernels as written, is the statement.
-claim_result characteristic_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence characteristic_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const characteristic_reading c = read_characteristic(read, call, "printed");
   const ex& printed = c.polynomial;
@@ -176,9 +176,8 @@ claim_result characteristic_shape(const shape_call& call, const run_context& ctx
   claim_result result;
   result.printed = read.printed();
   if (!c.why_not.empty()) {
-    result.outcome = verdict::undecided;  // the shape cannot judge it: a tool's limit, never a finding
     result.note = c.why_not;
-    return result;
+    return beyond_reach(std::move(result));  // a tool's limit, never a finding
   }
   // The statement: Q_lead · scheme(1, r, r²) = P_lead · printed, the unprinted coefficients put in.
   const GiNaC::lst geometric{q[0] == 1, q[1] == r, q[2] == r * r};
@@ -190,9 +189,9 @@ claim_result characteristic_shape(const shape_call& call, const run_context& ctx
   for (std::size_t k = 3; k-- > 0;) {
     correction += fmt::format(" ({}){}{}", text_of(GiNaC::normal(c.derived[k] * c.scale)), k > 0 ? " " + power_text(r, k) : std::string(), k > 0 ? " +" : "");
   }
-  result = identity_verdict(call, read, "characteristic", what, lhs, rhs, correction);
-  record_coefficients(result, c);
-  return result;
+  decider_evidence e = identity_evidence(read, "characteristic", what, lhs, rhs, correction);
+  record_coefficients(e.found, c);
+  return e;
 }
 
 /// "The discriminant Δ ≡ b² − 4ac can be factorized: Δ = ...": the printed value of the discriminant
@@ -200,7 +199,7 @@ claim_result characteristic_shape(const shape_call& call, const run_context& ctx
 /// ones solved from the scheme at the printed scale (as `characteristic` does), decided in both
 /// kernels. The printed definition (`definition`, b² − 4ac), when given, is first checked to be the
 /// printed polynomial's discriminant, its symbols as printed; its value is then the one compared.
-claim_result discriminant_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence discriminant_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const ex printed = read.formula("printed");
   const characteristic_reading c = read_characteristic(read, call, "polynomial");
@@ -209,9 +208,8 @@ claim_result discriminant_shape(const shape_call& call, const run_context& ctx) 
   claim_result result;
   result.printed = read.printed();
   const auto cannot = [&](const std::string& why) {
-    result.outcome = verdict::undecided;  // the shape cannot judge it: a tool's limit, never a finding
     result.note = why;
-    return result;
+    return beyond_reach(std::move(result));  // a tool's limit, never a finding
   };
   if (!c.why_not.empty()) return cannot(c.why_not);
   const ex discriminant = c.stated[1] * c.stated[1] - 4 * c.stated[2] * c.stated[0];  // b² − 4ac of the printed coefficients
@@ -224,22 +222,25 @@ claim_result discriminant_shape(const shape_call& call, const run_context& ctx) 
     if (!as_printed) return cannot("(" + polynomial_ref + ") as printed is not a polynomial of degree at most 2 in " + r.get_name() + ".");
     const ex expected = (*as_printed)[1] * (*as_printed)[1] - 4 * (*as_printed)[2] * (*as_printed)[0];
     if (!is_zero_expression(normal_difference(defined, expected))) {
-      result.outcome = verdict::erratum;
+      decider_evidence e;
+      e.statement = fmt::format("({}) is the discriminant of ({})", reference_of(call, "definition"), polynomial_ref);
+      e.ginac = answer::fails;
       result.correction = fmt::format("the discriminant of ({}) is {}", polynomial_ref, text_of(expected));
       result.note = fmt::format("As printed: ({}) = {} is not the discriminant of ({}), {}.", reference_of(call, "definition"), text_of(defined),
                                 polynomial_ref, text_of(expected));
       result.evidence["exact"] = {{"statement", fmt::format("({}) is the discriminant of ({})", reference_of(call, "definition"), polynomial_ref)},
                                   {"ginac", "fails: " + text_of(normal_difference(defined, expected)) + " ≠ 0"}};
-      return result;
+      e.found = std::move(result);
+      return e;
     }
     value = read.formula("definition").subs(c.solved);
     of = "(" + reference_of(call, "definition") + ")";
   }
   const std::string what = fmt::format("{} = ({}), the unprinted coefficients solved from ({})", of, printed_ref, c.scheme_ref);
-  result = identity_verdict(call, read, "discriminant", what, value, printed,
-                            fmt::format("as derived: {} = {}", of, text_of(GiNaC::factor(GiNaC::normal(value)))));
-  record_coefficients(result, c);
-  return result;
+  decider_evidence e = identity_evidence(read, "discriminant", what, value, printed,
+                                         fmt::format("as derived: {} = {}", of, text_of(GiNaC::factor(GiNaC::normal(value)))));
+  record_coefficients(e.found, c);
+  return e;
 }
 
 /// "has two {roots} roots r and r̄. Their product r r̄ = |r|² is {product} and the scheme is
@@ -251,7 +252,7 @@ claim_result discriminant_shape(const shape_call& call, const run_context& ctx) 
 /// of modulus 1 is simple since Δ ≠ 0), and not when they are real with product 1 (r and 1/r, one
 /// outside the unit circle) on all or part of the interval. The words are judged against these facts; holes {product} and
 /// {conclusion} are optional.
-claim_result characteristic_roots_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence characteristic_roots_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const ex scheme = read.formula("scheme");
   const std::vector<GiNaC::symbol> q = read.symbols("sequence");
@@ -272,17 +273,16 @@ claim_result characteristic_roots_shape(const shape_call& call, const run_contex
   const std::string scheme_ref = reference_of(call, "scheme");
   claim_result result;
   result.printed = read.printed();
-  const auto cannot = [&](verdict outcome, const std::string& why) {
-    result.outcome = outcome;
+  const auto cannot = [&](const std::string& why) {
     result.note = why;
-    return result;
+    return beyond_reach(std::move(result));
   };
   const std::optional<three_term_coefficients> terms = linear_three_term(scheme, q);
-  if (!terms) return cannot(verdict::undecided, "The shape decides linear three-term schemes; (" + scheme_ref + ") is not linear in its states.");
+  if (!terms) return cannot("The shape decides linear three-term schemes; (" + scheme_ref + ") is not linear in its states.");
   // The product of the roots, P₀/P₂: a number, in both kernels.
   const ex product = GiNaC::normal(terms->previous / terms->next);
   if (!GiNaC::is_a<GiNaC::numeric>(product) || !GiNaC::ex_to<GiNaC::numeric>(product).is_rational()) {
-    return cannot(verdict::undecided, "The roots' product " + text_of(product) + " of (" + scheme_ref + ") is not a number: the shape does not judge it.");
+    return cannot("The roots' product " + text_of(product) + " of (" + scheme_ref + ") is not a number: the shape does not judge it.");
   }
   const kernel_decision product_own = kernel_decides_zero(terms->previous - product * terms->next);
   // The discriminant's sign on the interval, in both kernels.
@@ -291,18 +291,20 @@ claim_result characteristic_roots_shape(const shape_call& call, const run_contex
   const std::optional<one_variable> g = in_variable(delta, v);
   const std::optional<rational> c = g ? g->exact(high) : std::nullopt;
   if (!g || !c || *c <= 0) {
-    return cannot(verdict::undecided, "The discriminant " + text_of(delta) + (g ? " on an interval whose end is not a positive rational" : " is not a function of " + text_of(v) + " alone") +
-                                          ": our kernel cannot decide its sign.");
+    return cannot("The discriminant " + text_of(delta) + (g ? " on an interval whose end is not a positive rational" : " is not a function of " + text_of(v) + " alone") +
+                  ": our kernel cannot decide its sign.");
   }
   const one_variable::inside_of found = g->first_inside(*c);
-  if (found.ambiguous) return cannot(verdict::undecided, "A root of the discriminant lies within 2^-40 of the interval's end.");
+  if (found.ambiguous) return cannot("A root of the discriminant lies within 2^-40 of the interval's end.");
   const int sign = found.first ? 0 : g->sign_at(*c / 2);
   std::string ginac_proof;
   const int ginac_sign = ginac_sign_on(*g, v, high, ginac_proof);
-  if (kernels_disagree_if(result, (ginac_sign != 0 && ginac_sign != sign) || product_own.outcome == kernel_decision::result::nonzero,
-                          kernels_differ_on("the discriminant's sign or the roots' product"))) {
-    return result;
-  }
+  // The facts are our kernel's (the sign by Sturm sequences) and GiNaC's (the sign from its
+  // coefficients, where they decide it, and the product in normal form): the words are judged once,
+  // and the kernels differ on them only through a fact.
+  decider_evidence e;
+  e.statement = "the discriminant's sign or the roots' product";
+  e.parts_differ = (ginac_sign != 0 && ginac_sign != sign) || product_own.outcome == kernel_decision::result::nonzero;
   const GiNaC::numeric p = GiNaC::ex_to<GiNaC::numeric>(product);
   const std::string nature = sign < 0 ? "complex conjugate" : sign > 0 ? "real" : "complex conjugate on part of the interval, real on the rest";
   std::optional<std::string> stability;  // "stable" or "unstable", when the facts decide it
@@ -324,21 +326,22 @@ claim_result characteristic_roots_shape(const shape_call& call, const run_contex
       {"ginac", std::string(ginac_sign != 0 ? "holds: " : "not decided: ") + ginac_proof + "; the product in normal form"}};
   std::vector<proof_goal> goals{decided("product", terms->previous, product * terms->next)};
   if (sign != 0) goals.push_back(g->sign_goal_on("discriminant", sign, *c));
-  record_certificate(result, coq_certificate(call.claim_id, call.statement, goals));
   const bool product_right = !product_said || (p.is_integer() && product_said->admits(static_cast<int>(p.to_long())));
   const bool words_hold = roots_said == nature && product_right && (!conclusion_said || (stability && *conclusion_said == *stability));
+  e.own = answer_of(words_hold);
+  e.ginac = ginac_sign != 0 ? answer_of(words_hold) : answer::none;
   if (words_hold) {
-    result.outcome = verdict::holds;
     result.note = "Proved in both kernels on the whole interval (no sample): " + facts + ".";
-    return result;
+  } else if (conclusion_said && !stability) {
+    e.reached = decider_evidence::reach::beyond_reach;
+    result.note = "The facts do not decide stability here (" + facts + "): the words' '" + *conclusion_said + "' is not judged.";
+  } else {
+    result.correction = "As proved: " + facts;
+    result.note = "As printed, the sentence's words are not the facts proved on the interval.";
   }
-  if (conclusion_said && !stability) {
-    return cannot(verdict::undecided, "The facts do not decide stability here (" + facts + "): the words' '" + *conclusion_said + "' is not judged.");
-  }
-  result.outcome = verdict::erratum;
-  result.correction = "As proved: " + facts;
-  result.note = "As printed, the sentence's words are not the facts proved on the interval.";
-  return result;
+  e.found = std::move(result);
+  e.goals = std::move(goals);
+  return e;
 }
 
 
@@ -349,7 +352,7 @@ claim_result characteristic_roots_shape(const shape_call& call, const run_contex
 /// a simple conjugate pair of modulus 1 (stable); where positive, ρ and 1/ρ with ρ > 1 taking every
 /// value near 1 at the region's ends (unstable); at its roots, a double root ±1 (unstable: linear
 /// growth). "{modulus}" is a bound ("smaller than 1", "at most 1"), optionally with "simple".
-claim_result root_criterion_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence root_criterion_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const ex scheme = read.formula("scheme");
   const std::vector<GiNaC::symbol> q = read.symbols("sequence");
@@ -362,7 +365,7 @@ claim_result root_criterion_shape(const shape_call& call, const run_context& ctx
   claim_result result;
   result.printed = read.printed();
   const std::optional<reversible_scheme> premise = reversible_premise(scheme, q, v, scheme_ref, result);
-  if (!premise) return result;
+  if (!premise) return beyond_reach(std::move(result));
   const ex& delta = premise->delta;
   const std::optional<one_variable>& g = premise->g;
   const kernel_decision& reversible_own = premise->reversible_own;
@@ -417,12 +420,15 @@ claim_result root_criterion_shape(const shape_call& call, const run_context& ctx
       {"regions", regions},
       {"own", std::string("holds: the regions by Sturm sequences of the discriminant, in ") + var_in},
       {"ginac", "holds: the premise in normal form, and the discriminant as a function of " + var + " alone; the regions are our kernel's"}};
-  record_certificate(result, coq_certificate(call.claim_id, call.statement, goals));
+  // The regions are our kernel's; GiNaC's part is the premise and the reduction to one variable.
+  decider_evidence e;
+  e.statement = "the stated criterion against the root condition";
+  e.own = answer_of(agrees);
+  e.goals = std::move(goals);
   if (agrees) {
-    result.outcome = verdict::holds;
-    return result;
+    e.found = std::move(result);
+    return e;
   }
-  result.outcome = verdict::erratum;
   result.correction = fmt::format("The scheme is stable when the roots have modulus <= 1 and the roots of modulus 1 are simple (root condition); here they "
                                   "are simple, conjugate and of modulus 1 for {} in {}.", var, fmt::join(stable_bands, " and "));
   result.amendments.push_back(amendment_in_words("the stability criterion", said.words("modulus"),
@@ -430,7 +436,8 @@ claim_result root_criterion_shape(const shape_call& call, const run_context& ctx
                                                              fmt::join(stable_bands, " and "))));
   result.note = fmt::format("As printed, '{}' and the root condition disagree: {}{}.", said.words("modulus"), fmt::join(disagreements, "; "),
                             said_any_stable ? "" : fmt::format("; read literally, '{}' calls the scheme stable for no {} > 0", said.words("modulus"), var));
-  return result;
+  e.found = std::move(result);
+  return e;
 }
 
 /// "the scheme is {stability}" (stable, linearly stable, unstable; "conditionally stable" or
@@ -441,7 +448,7 @@ claim_result root_criterion_shape(const shape_call& call, const run_context& ctx
 /// Coq: the sign for every positive symbol), conditionally when it is negative on some band between
 /// them (Coq: the sign on each band with rational ends), unstable when on none. Unqualified, "stable"
 /// means for every step.
-claim_result unconditional_stability_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence unconditional_stability_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const ex scheme = read.formula("scheme");
   const std::vector<GiNaC::symbol> q = read.symbols("sequence");
@@ -463,7 +470,7 @@ claim_result unconditional_stability_shape(const shape_call& call, const run_con
   claim_result result;
   result.printed = read.printed();
   const std::optional<reversible_scheme> premise = reversible_premise(scheme, q, v, scheme_ref, result);
-  if (!premise) return result;
+  if (!premise) return beyond_reach(std::move(result));
   const ex& delta = premise->delta;
   const std::optional<one_variable>& g = premise->g;
   const kernel_decision& reversible_own = premise->reversible_own;
@@ -488,8 +495,12 @@ claim_result unconditional_stability_shape(const shape_call& call, const run_con
                                : stable_bands.empty() ? "unstable"
                                                       : "conditional";
   const bool holds = stated == "stable" ? qualifier == computed : computed == "unstable";
-  if (holds && unconditional) record_certificate(result, coq_certificate(call.claim_id, call.statement, {sign_goal("discriminant", delta, -1, positive, inside)}));
-  if (holds && computed == "conditional" && !band_goals.empty()) record_certificate(result, coq_certificate(call.claim_id, call.statement, band_goals));
+  // The signs are our kernel's (Sturm sequences); Coq checks them where the statement holds.
+  decider_evidence e;
+  e.statement = "the stated stability against the root condition";
+  e.own = answer_of(holds);
+  if (holds && unconditional) e.goals = std::vector<proof_goal>{sign_goal("discriminant", delta, -1, positive, inside)};
+  if (holds && computed == "conditional" && !band_goals.empty()) e.goals = band_goals;
   std::string where;
   for (const positive_root& end : g->ends) where += (where.empty() ? "" : ", ") + g->text(end);
   const std::string bands_text = fmt::format("{} in {}", var, fmt::join(stable_bands, " and "));
@@ -505,10 +516,9 @@ claim_result unconditional_stability_shape(const shape_call& call, const run_con
                   ", and its sign between them"},
       {"ginac", "holds: the premise in normal form, and the discriminant as a function of " + var + " alone; its sign is our kernel's"}};
   if (holds) {
-    result.outcome = verdict::holds;
-    return result;
+    e.found = std::move(result);
+    return e;
   }
-  result.outcome = verdict::erratum;
   result.correction = unconditional ? fmt::format("The scheme ({}) is stable for every {} > 0 (unconditionally): its discriminant is negative on the whole half-line", scheme_ref, var)
                       : stable_bands.empty()
                           ? (where.empty() ? fmt::format("The scheme ({}) is stable for no {} > 0: its discriminant is positive on the whole half-line", scheme_ref, var)
@@ -523,7 +533,8 @@ claim_result unconditional_stability_shape(const shape_call& call, const run_con
                                                  unconditional ? "stable for every step (unconditionally)"
                                                  : stable_bands.empty() ? "stable for no step"
                                                                         : "conditionally stable: for " + bands_text + " only"));
-  return result;
+  e.found = std::move(result);
+  return e;
 }
 
 /// The shapes of this file, each one's name, summary, principal argument and parameters beside the

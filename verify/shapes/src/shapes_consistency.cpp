@@ -56,7 +56,7 @@ ex on_taylor_polynomials(const ex& e, const std::vector<smooth_state>& states, i
 /// the relation is h^p times GiNaC's leading term plus h^(p+1) times a function regular at h = 0, and
 /// that this term is the factor times the printed equation; V uninterpreted, for every polynomial V
 /// of degree <= 4.
-claim_result consistency_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence consistency_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const std::vector<referenced_formula> relations = read.equations("scheme"), equations = read.equations("equation");
   const GiNaC::symbol h = read.symbols("step").front();
@@ -167,15 +167,20 @@ claim_result consistency_shape(const shape_call& call, const run_context& ctx) {
     }
   }
   if (!not_decided.empty()) result.note = "Our kernel could not decide it: GiNaC's series alone. ";
-  settle(result, own_contradicts, ginac_all && corrections.empty(), what, "as derived: " + fmt::format("{}", fmt::join(corrections, "; ")));
-  return result;
+  // Our kernel confirms GiNaC's series and multiples relation by relation: where it decided them all,
+  // its answer is GiNaC's; where it refutes one, they differ on that relation.
+  const answer ginac = answer_of(ginac_all && corrections.empty());
+  decider_evidence e = settled(std::move(result), ginac, not_decided.empty() ? ginac : answer::none, what,
+                               "as derived: " + fmt::format("{}", fmt::join(corrections, "; ")));
+  e.parts_differ = own_contradicts;
+  return e;
 }
 
 /// Printed Taylor expansions "x_{j+k} = x_j + k h dx/dt + ... + O(h^N)": each printed series is the
 /// Taylor polynomial of x(t_j + k h) through h^(N-1), x_j its value at t_j and d^ix/dt^i its
 /// derivatives there as the reader names them. GiNaC's normal form and our kernel each compare the
 /// printed terms with it.
-claim_result taylor_expansion_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence taylor_expansion_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const std::vector<referenced_formula> expansions = read.equations("expansions");
   const GiNaC::symbol h = read.symbols("step").front();
@@ -237,8 +242,10 @@ claim_result taylor_expansion_shape(const shape_call& call, const run_context& c
       {"own", disagree               ? std::string("contradicts GiNaC on an expansion")
               : !not_decided.empty() ? "not applicable: " + fmt::format("{}", fmt::join(not_decided, "; "))
                                      : std::string("holds: printed terms − Taylor polynomial decided on a grid, as GiNaC")}};
-  settle(result, disagree, ginac_all, "an expansion", fmt::format("{}", fmt::join(corrections, "; ")));
-  return result;
+  decider_evidence e = settled(std::move(result), answer_of(ginac_all), not_decided.empty() ? answer_of(ginac_all) : answer::none, "an expansion",
+                               fmt::format("{}", fmt::join(corrections, "; ")));
+  e.parts_differ = disagree;  // on an expansion
+  return e;
 }
 
 /// The shapes of this file, each one's name, summary, principal argument and parameters beside the

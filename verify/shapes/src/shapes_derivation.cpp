@@ -19,28 +19,30 @@ namespace {
 
 /// The printed equation (= 0) against the derived one (= 0): the same when the printed one times a
 /// factor free of the unknowns (GiNaC finds it) is the derived one, an identity both kernels decide.
-claim_result same_equation_verdict(const shape_call& call, shape_reader& read, const std::string& goal, const std::string& what, const ex& printed,
+decider_evidence same_equation_evidence(shape_reader& read, const std::string& goal, const std::string& what, const ex& printed,
                                    const ex& derived, const std::vector<GiNaC::symbol>& unknowns) {
   const auto factor = equation_factor(printed, derived, std::vector<ex>(unknowns.begin(), unknowns.end()));
   if (factor) {
-    claim_result result = identity_verdict(call, read, goal, what, *factor * printed, derived, "");
-    result.evidence["exact"]["factor"] = text_of(*factor);
-    return result;
+    decider_evidence e = identity_evidence(read, goal, what, *factor * printed, derived, "");
+    e.found.evidence["exact"]["factor"] = text_of(*factor);
+    return e;
   }
-  claim_result result;
-  result.outcome = verdict::erratum;
+  decider_evidence e;
+  e.statement = what;
+  e.ginac = answer::fails;
+  claim_result& result = e.found;
   result.correction = "as derived: " + text_of(GiNaC::normal(derived)) + " = 0";
   result.note = "As printed: no factor free of the unknowns makes the printed equation the derived one (GiNaC: the ratio depends on them); our kernel decides identities only, not this refutation.";
   result.evidence["exact"] = {{"statement", what}, {"ginac", "fails: derived / printed depends on the unknowns"},
                               {"own", "not applicable: a refutation of proportionality"}};
   result.printed = read.printed();
   result.certificate_missing = "a refuted proportionality: no identity to state";
-  return result;
+  return e;
 }
 
 }  // namespace
 
-claim_result euler_lagrange_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence euler_lagrange_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const ex printed = read.formula("printed"), lagrangian = read.formula("lagrangian");
   const std::vector<GiNaC::symbol> nodes = read.symbols("nodes"), sequence = read.symbols("sequence");
@@ -51,24 +53,24 @@ claim_result euler_lagrange_shape(const shape_call& call, const run_context& ctx
   const ex derived = at(lagrangian.diff(nodes[1]), sequence[0], sequence[1]) + at(lagrangian.diff(nodes[0]), sequence[1], sequence[2]);
   const std::string what = fmt::format("({}) = 0 is the discrete Euler-Lagrange equation of ({})", reference_of(call, "printed"),
                                        reference_of(call, "lagrangian"));
-  return same_equation_verdict(call, read, "euler_lagrange", what, printed, derived, sequence);
+  return same_equation_evidence(read, "euler_lagrange", what, printed, derived, sequence);
 }
 
 /// The printed equation (= 0) is the stationarity condition d function / d variable = 0 (an internal
 /// node's equation), up to a factor free of the unknowns.
-claim_result stationary_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence stationary_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const ex printed = read.formula("printed"), function = read.formula("function");
   const GiNaC::symbol variable = read.symbols("variable").front();
   const std::string what = fmt::format("({}) = 0 is d({})/d{} = 0", reference_of(call, "printed"), reference_of(call, "function"), variable.get_name());
-  return same_equation_verdict(call, read, "stationary", what, printed, GiNaC::diff(function, variable), read.symbols("unknowns"));
+  return same_equation_evidence(read, "stationary", what, printed, GiNaC::diff(function, variable), read.symbols("unknowns"));
 }
 
 /// A printed system in the states and momenta of one step, each equation's sides equal once the
 /// momenta are the discrete Legendre transforms of the Lagrangian on that step, p_j = −D_1 L(q_j,
 /// q_{j+1}) and p_{j+1} = D_2 L(q_j, q_{j+1}) (the paper prints p_{j+1} and says "an analogous
 /// relation for p_j"): equal-sides with them put in.
-claim_result discrete_momenta_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence discrete_momenta_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const std::vector<referenced_formula> equations = read.equations("equations");
   const ex lagrangian = read.formula("lagrangian");
@@ -79,8 +81,8 @@ claim_result discrete_momenta_shape(const shape_call& call, const run_context& c
   const ex left = GiNaC::normal(-lagrangian.diff(nodes[0]).subs(on_step, GiNaC::subs_options::no_pattern));
   const ex right = GiNaC::normal(lagrangian.diff(nodes[1]).subs(on_step, GiNaC::subs_options::no_pattern));
   const GiNaC::exmap given{{momenta[0], left}, {momenta[1], right}};
-  return equal_sides_verdict(call, read, equations, given,
-                             fmt::format(", with {} = -D_1 L({}, {}) = {} and {} = D_2 L({}, {}) = {}", momenta[0].get_name(), at[0].get_name(), at[1].get_name(),
+  return equal_sides_evidence(call, read, equations, given,
+                              fmt::format(", with {} = -D_1 L({}, {}) = {} and {} = D_2 L({}, {}) = {}", momenta[0].get_name(), at[0].get_name(), at[1].get_name(),
                                          text_of(left), momenta[1].get_name(), at[0].get_name(), at[1].get_name(), text_of(right)));
 }
 
@@ -88,7 +90,7 @@ claim_result discrete_momenta_shape(const shape_call& call, const run_context& c
 /// node eliminated by its equation D_{q_m} L = 0, then p_0 = −D_1 L solved for q_1 and p_1 = D_2 L,
 /// as a matrix in (q_0, p_0), or in (p_0, q_0) when the record's `order` says "p q"; compared with
 /// the printed map in both kernels.
-claim_result discrete_map_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence discrete_map_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const GiNaC::matrix printed = as_square_matrix(read.formula("map"), reference_of(call, "map"));
   const ex lagrangian = read.formula("lagrangian");
@@ -96,11 +98,10 @@ claim_result discrete_map_shape(const shape_call& call, const run_context& ctx) 
   const std::vector<GiNaC::symbol> internal = read.has("internal") ? read.symbols("internal") : std::vector<GiNaC::symbol>{};
   const auto no_map = [&](const std::string& why) {
     claim_result result;
-    result.outcome = verdict::undecided;  // no map derived: the shape's limit
     result.note = why;
     result.printed = read.printed();
     result.certificate_missing = "no map derived";
-    return result;
+    return beyond_reach(std::move(result));  // no map derived: the shape's limit
   };
   const auto not_linear = [&](const std::string& step) {
     return no_map("The shape derives the map of a linear system: " + step + " is not linear in its unknowns.");
@@ -159,19 +160,18 @@ claim_result discrete_map_shape(const shape_call& call, const run_context& ctx) 
   if (momentum_first) derived = GiNaC::matrix{{derived(1, 1), derived(1, 0)}, {derived(0, 1), derived(0, 0)}};
   const std::string what = fmt::format("({}) is the one-step map of ({}), in ({})", reference_of(call, "map"), reference_of(call, "lagrangian"),
                                        momentum_first ? "p, q" : "q, p");
-  claim_result result = identity_verdict(call, read, "printed", what, ex(printed), ex(derived),
+  decider_evidence e = identity_evidence(read, "printed", what, ex(printed), ex(derived),
                                          fmt::format("as derived from ({}): ({}) = {}", reference_of(call, "lagrangian"), reference_of(call, "map"),
                                                      text_of(ex(derived))));
-  if (result.outcome == verdict::erratum) result.corrected_formulas.push_back(read.correction_of("map", ex(derived)));
-  result.evidence["exact"]["derivation"] = {{"q_1", text_of(q1)}, {"p_1", text_of(p1)},
+  if (e.found_false()) e.found.corrected_formulas.push_back(read.correction_of("map", ex(derived)));
+  e.found.evidence["exact"]["derivation"] = {{"q_1", text_of(q1)}, {"p_1", text_of(p1)},
                                             {"internal_nodes", internal.empty() ? std::string("none") : std::to_string(internal.size()) + " eliminated"}};
   // Coq is also told the derived map's defining property, which "printed = derived" leaves to GiNaC's
   // normal form: with q_1 from it, the momenta of the (reduced) Lagrangian are p_0 and its p_1.
-  record_certificate(result, coq_certificate(call.claim_id, call.statement,
-                                             {decided("printed", ex(printed), ex(derived)),
-                                              decided("derived_momentum_left", -reduced.diff(nodes[0]).subs(nodes[1] == q1), momenta[0]),
-                                              decided("derived_momentum_right", reduced.diff(nodes[1]).subs(nodes[1] == q1), p1)}));
-  return result;
+  e.goals = std::vector<proof_goal>{decided("printed", ex(printed), ex(derived)),
+                                    decided("derived_momentum_left", -reduced.diff(nodes[0]).subs(nodes[1] == q1), momenta[0]),
+                                    decided("derived_momentum_right", reduced.diff(nodes[1]).subs(nodes[1] == q1), p1)};
+  return e;
 }
 
 /// The shapes of this file, each one's name, summary, principal argument and parameters beside the

@@ -41,7 +41,7 @@ bool same_value(const std::optional<ex>& a, const std::optional<ex>& b) {
 /// it holds. When c is the pole but the scheme is stable elsewhere too (a band beyond the pole), the
 /// pole does not bound stability: the condition is right (c ends the first stable band) but its
 /// argument does not reach it, a derivation gap (the record's class), corrected by the stable set.
-claim_result emerging_condition_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence emerging_condition_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const referenced_formula condition = read.raw("condition");
   const referenced_formula formula_printed = read.raw("formula");  // read once: its value, and the symbol it defines
@@ -58,12 +58,11 @@ claim_result emerging_condition_shape(const shape_call& call, const run_context&
   const ex denominator = GiNaC::denom(GiNaC::normal(formula));
   const std::optional<one_variable> poles = in_variable(denominator, v);
   if (!poles) {
-    result.outcome = verdict::undecided;
     result.note = fmt::format("The denominator {} of ({}) is not a function of {} alone.", text_of(denominator), formula_ref, var);
-    return result;
+    return beyond_reach(std::move(result));
   }
   const std::optional<reversible_scheme> premise = reversible_premise(scheme, q, v, scheme_ref, result);
-  if (!premise) return result;
+  if (!premise) return beyond_reach(std::move(result));
   const one_variable& g = *premise->g;
   std::vector<std::string> bands;
   std::optional<ex> first_band_end;
@@ -90,23 +89,26 @@ claim_result emerging_condition_shape(const shape_call& call, const run_context&
       {"stable", stable_set + " (the root condition on (" + scheme_ref + "): its discriminant " + text_of(premise->delta) + " negative)"},
       {"own", "holds: the poles and the discriminant's roots by Sturm sequences, compared exactly"},
       {"ginac", "holds: the denominator in normal form and the discriminant as functions of " + var + " alone"}};
+  // The poles and bands are our kernel's (Sturm sequences), compared exactly: its answer decides.
+  decider_evidence e;
+  e.statement = "the condition's origin";
+  e.own = answer_of(end_is_pole && end_is_band && !stable_beyond);
   if (!end_is_pole) {
-    result.outcome = verdict::erratum;
     result.correction = fmt::format("the first pole of ({}) is {}; the scheme ({}) is stable for {}", formula_ref,
                                     pole ? poles->text(poles->ends.front()) : std::string("none"), scheme_ref, stable_set);
     result.note = fmt::format("As printed: the bound {} is not where ({}) has its first pole.", text_of(high), formula_ref);
     result.amendments.push_back(amendment_in_words("the bound's origin", "the pole of (" + formula_ref + ")", "the stable set: " + stable_set));
-    return result;
+    e.found = std::move(result);
+    return e;
   }
   if (end_is_band && !stable_beyond) {
-    result.outcome = verdict::holds;
     result.note = fmt::format("The pole of ({}) at {} = {} ends the one stable band: the scheme is stable for {}.", formula_ref, var, text_of(high), stable_set);
-    return result;
+    e.found = std::move(result);
+    return e;
   }
   // What the pole makes undefined, in the document's words: the symbol the formula defines (q_m in
   // q_m = ...), or the formula itself.
   const std::string undefined = formula_printed.sides.size() > 1 ? folded_space(formula_printed.sides.front()) : "(" + formula_ref + ")";
-  result.outcome = verdict::erratum;
   result.correction = fmt::format("The condition is the first stable band's, from the root condition on ({}), stable for {}; the pole of ({}) at {} = {} "
                                   "only makes {} undefined there{}",
                                   scheme_ref, stable_set, formula_ref, var, text_of(high), undefined,
@@ -118,7 +120,8 @@ claim_result emerging_condition_shape(const shape_call& call, const run_context&
                                           : "The pole is not the end of the stable band.");
   result.amendments.push_back(amendment_in_words("the condition's derivation", said.words("emerges") + " (from the pole of " + formula_ref + ")",
                                                  "from the root condition (the discriminant): stable for " + stable_set));
-  return result;
+  e.found = std::move(result);
+  return e;
 }
 
 /// The shapes of this file, each one's name, summary, principal argument and parameters beside the

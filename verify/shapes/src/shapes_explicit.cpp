@@ -89,7 +89,7 @@ std::vector<ex> square_hints(const ex& polynomial) {
 /// numerator's degree). The sentence's hole {kind} says "explicit" or "implicit". The denominators'
 /// positivity (every step, the `positive` symbols positive) is what the words can mean instead: the
 /// map in closed form and regular; Coq checks each denominator's sign.
-claim_result explicit_map_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence explicit_map_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const GiNaC::matrix map = as_square_matrix(read.formula("map"), reference_of(call, "map"));
   const GiNaC::symbol step = read.symbols("step").front();
@@ -151,9 +151,11 @@ claim_result explicit_map_shape(const shape_call& call, const run_context& ctx) 
       {"regular", regular ? fmt::format("every denominator is positive for {} > 0 (its terms)", fmt::join(positive, ", "))
                           : "not shown: a denominator's terms are not all positive"}};
   result.evidence["stated"] = stated;
-  if (kernels_disagree_if(result, own_decided && own_polynomial != polynomial, kernels_differ_on("whether the map is a polynomial in the step"))) {
-    return result;
-  }
+  // Each kernel's answer on the words, from its own finding whether the map is a polynomial.
+  decider_evidence e;
+  e.statement = "whether the map is a polynomial in the step";
+  e.ginac = answer_of((stated == "explicit") == polynomial);
+  e.own = own_decided ? answer_of((stated == "explicit") == own_polynomial) : answer::none;
   const std::string computed = polynomial ? fmt::format("The scheme is explicit: every entry of ({}) is a polynomial in {}", map_ref, step.get_name())
                                           : fmt::format("The scheme is implicit as a method: the entries of ({}) have the denominator{} {} (up to "
                                                         "factors free of {}), which depend{} on {}, and an explicit scheme's map on a linear problem is a "
@@ -162,10 +164,8 @@ claim_result explicit_map_shape(const shape_call& call, const run_context& ctx) 
                                                         map_ref, denominators.size() == 1 ? "" : "s", fmt::join(denominators, ", "), step.get_name(),
                                                         denominators.size() == 1 ? "s" : "", step.get_name(), step.get_name(), step.get_name());
   if ((stated == "explicit") == polynomial) {
-    result.outcome = verdict::holds;
     result.note = computed + ".";
   } else {
-    result.outcome = verdict::erratum;
     result.correction = computed + ".";
     result.amendments.push_back(amendment_in_words(
         "the scheme's kind", said.words("kind"),
@@ -181,9 +181,10 @@ claim_result explicit_map_shape(const shape_call& call, const run_context& ctx) 
   if (goals.empty()) {
     result.certificate_missing = polynomial ? "no denominator depends on the step: nothing to certify" : "no denominator shown positive";
   } else {
-    record_certificate(result, coq_certificate(call.claim_id, call.statement, goals));
+    e.goals = std::move(goals);
   }
-  return result;
+  e.found = std::move(result);
+  return e;
 }
 
 }  // namespace simpson::verify::detail
@@ -198,7 +199,7 @@ namespace simpson::verify::detail {
 /// harmonic case allows). GiNaC reads the structure and solves; our kernel decides that the
 /// solution satisfies the scheme (that identity is the Coq certificate). The sentence's hole {kind}
 /// says "explicit" or "implicit".
-claim_result explicit_scheme_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence explicit_scheme_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const ex scheme = read.formula("scheme");
   const std::vector<GiNaC::symbol> sequence = read.symbols("sequence");
@@ -228,10 +229,9 @@ claim_result explicit_scheme_shape(const shape_call& call, const run_context& ct
       computed = "implicit";
       why = fmt::format("{} is in a denominator of the scheme: the step solves a nonlinear equation in it", state);
     } else if (numerator.degree(next) == 0) {
-      result.outcome = verdict::undecided;
       result.note = fmt::format("({}) does not involve {}: it computes no step.", scheme_ref, state);
       result.certificate_missing = "no step to certify";
-      return result;
+      return beyond_reach(std::move(result));
     } else if (numerator.degree(next) > 1) {
       computed = "implicit";
       why = fmt::format("the scheme is of degree {} in {}: the step solves a polynomial equation", numerator.degree(next), state);
@@ -243,18 +243,18 @@ claim_result explicit_scheme_shape(const shape_call& call, const run_context& ct
   }
   json exact = {{"statement", fmt::format("({}) gives {} in closed form, its functions left general", scheme_ref, state)},
                 {"ginac", (computed == "explicit" ? "holds: " : "fails: ") + why}};
+  // GiNaC reads the structure and solves; our kernel checks the solution, so it confirms GiNaC's
+  // answer on the words (or refutes the solution it rests on).
+  decider_evidence e;
+  e.statement = "the step's solution";
+  e.ginac = answer_of(stated == computed);
   if (solution) {
     const kernel_decision own = kernel_decides_zero(scheme.subs(GiNaC::exmap{{next, *solution}}, GiNaC::subs_options::no_pattern));
     exact["own"] = own.outcome == kernel_decision::result::zero      ? fmt::format("holds: ({}) at {} = the solution is 0 ({})", scheme_ref, state, own.evidence)
                    : own.outcome == kernel_decision::result::nonzero ? "contradicts GiNaC: " + own.evidence
                                                                      : "not applicable: " + own.evidence;
-    if (own.outcome == kernel_decision::result::nonzero) {
-      result.evidence["exact"] = exact;
-      kernels_disagree_if(result, true, kernels_differ_on("the step's solution"));
-      return result;
-    }
-    record_certificate(result, coq_certificate(call.claim_id, call.statement,
-                                               {decided("solution", scheme.subs(GiNaC::exmap{{next, *solution}}, GiNaC::subs_options::no_pattern), 0)}));
+    e.own = confirming(e.ginac, own);
+    e.goals = std::vector<proof_goal>{decided("solution", scheme.subs(GiNaC::exmap{{next, *solution}}, GiNaC::subs_options::no_pattern), 0)};
   } else {
     exact["own"] = "not applicable: where the next state stands (a function's argument, a denominator, a power) is read from the formula's structure";
     result.certificate_missing = "a structural fact (where the next state stands), no identity to certify";
@@ -262,13 +262,12 @@ claim_result explicit_scheme_shape(const shape_call& call, const run_context& ct
   result.evidence["exact"] = exact;
   const std::string fact = fmt::format("The scheme is {}: {}", computed, why);
   if (stated == computed) {
-    result.outcome = verdict::holds;
     result.note = fact + ".";
   } else {
-    result.outcome = verdict::erratum;
     result.correction = fact + ".";
   }
-  return result;
+  e.found = std::move(result);
+  return e;
 }
 
 /// The shapes of this file, each one's name, summary, principal argument and parameters beside the

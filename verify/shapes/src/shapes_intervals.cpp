@@ -96,7 +96,7 @@ std::string sign_word(int sign) { return sign > 0 ? "positive" : sign < 0 ? "neg
 
 }  // namespace
 
-claim_result stability_interval_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence stability_interval_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const referenced_formula condition = read.raw("condition");
   const bool of_map = read.has("map");
@@ -115,9 +115,8 @@ claim_result stability_interval_shape(const shape_call& call, const run_context&
     const kernel_decision det_own = kernel_decides_zero(det - 1);
     if (!GiNaC::normal(det - 1).is_zero() || det_own.outcome == kernel_decision::result::nonzero) {
       result.printed = read.printed();
-      result.outcome = verdict::undecided;
       result.note = "The shape decides maps with det 1; det (" + what + ") = " + text_of(GiNaC::normal(det)) + ".";
-      return result;
+      return beyond_reach(std::move(result));
     }
     trace = m(0, 0) + m(1, 1);
     premise = "det = 1 (GiNaC normal form; our kernel: " + det_own.evidence + ")";
@@ -129,10 +128,9 @@ claim_result stability_interval_shape(const shape_call& call, const run_context&
     kernel_decision reversible_own;
     if (!terms || !reversible(*terms, reversible_own)) {
       result.printed = read.printed();
-      result.outcome = verdict::undecided;
       result.note = "The shape decides linear three-term schemes whose " + q[2].get_name() + " and " + q[0].get_name() + " coefficients are equal; (" +
                     what + ") " + (terms ? "has " + text_of(GiNaC::normal(terms->next)) + " and " + text_of(GiNaC::normal(terms->previous)) : "is not linear in its states") + ".";
-      return result;
+      return beyond_reach(std::move(result));
     }
     trace = -terms->current / terms->next;
     premise = fmt::format("the scheme is linear, its {} and {} coefficients equal: the characteristic roots' product is 1 (GiNaC normal form; our kernel: {})",
@@ -144,9 +142,8 @@ claim_result stability_interval_shape(const shape_call& call, const run_context&
   const ex high = interval_end(condition, v, read.reading());
   const std::optional<one_variable> excess = in_variable(trace * trace - 4, v);  // < 0 exactly on the stable set
   if (!excess) {
-    result.outcome = verdict::undecided;
     result.note = "The trace of " + what + " is not a function of " + text_of(v) + " alone.";
-    return result;
+    return beyond_reach(std::move(result));
   }
   const std::string var = text_of(v);
   // The stable bands: between consecutive ends, where trace² − 4 < 0 at a point inside.
@@ -196,10 +193,13 @@ claim_result stability_interval_shape(const shape_call& call, const run_context&
   // Coq: det = 1, and trace² − 4 < 0 on the printed band (holds) or on the first band (the
   // correction's), when its end is rational. That the band ends there is our kernel's alone.
   std::vector<proof_goal> goals{premise_goal};
+  // The bands and the end's comparison are our kernel's (Sturm sequences, exact): its answer decides.
+  decider_evidence e;
+  e.statement = "the first stable band";
+  e.own = answer_of(stable_near_zero && equal);
   if (stable_near_zero && equal) {
     goals.push_back(excess->sign_goal_on("stable_band", -1, *excess->exact(high)));
-    record_certificate(result, coq_certificate(call.claim_id, call.statement, goals));
-    result.outcome = verdict::holds;
+    e.goals = std::move(goals);
     // What the condition leaves out: the other bands, and the ends, where |trace| = 2 (a double root ±1).
     if (bands.size() > 1) {
       std::vector<std::string> ends;
@@ -207,15 +207,16 @@ claim_result stability_interval_shape(const shape_call& call, const run_context&
       result.note = fmt::format("Sufficient, not necessary: ({}) is stable exactly for {}. At {} = {} the characteristic roots are double (|trace| = 2).",
                                 what, fmt::join(bands, ", "), var, fmt::join(ends, ", "));
     }
-    return result;
+    e.found = std::move(result);
+    return e;
   }
   if (stable_near_zero && excess->ends.front().exact()) goals.push_back(excess->sign_goal_on("first_band", -1, excess->ends.front().low));
-  record_certificate(result, coq_certificate(call.claim_id, call.statement, goals));
-  result.outcome = verdict::erratum;
+  e.goals = std::move(goals);
   result.correction = bands.empty() ? "never stable for " + var + " > 0" : "stable exactly for " + fmt::format("{}", fmt::join(bands, ", "));
   result.note = "As printed: " + folded_space(condition.tex) + " is not the first stable band of " + what +
                 " (trace = " + text_of(trace_in_v) + ", stable where |trace| < 2).";
-  return result;
+  e.found = std::move(result);
+  return e;
 }
 
 /// The sign a claim states: the words of its sentence's hole {sign}, or, with no sentence, the
@@ -227,8 +228,8 @@ std::string stated_sign(const shape_call& call, const run_context& ctx) {
 
 /// What the sign shapes read: the expression as a function of the variable alone, the printed
 /// interval 0 < v < c with c exact, and the sign the claim states. None when our kernel cannot decide
-/// (the expression not a function of v alone, or c not a positive rational): `result` is then
-/// undecided, with the reason.
+/// (the expression not a function of v alone, or c not a positive rational): `result`'s note then
+/// says why (beyond the shape's reach).
 struct sign_claim {
   ex f, v, high;
   referenced_formula condition;
@@ -249,13 +250,11 @@ std::optional<sign_claim> read_sign_claim(shape_reader& read, const shape_call& 
   s.high = interval_end(s.condition, s.v, read.reading());
   s.g = in_variable(s.f, s.v);
   if (!s.g) {
-    result.outcome = verdict::undecided;
     result.note = "(" + reference_of(call, "expression") + ") is not a function of " + text_of(s.v) + " alone.";
     return std::nullopt;
   }
   const std::optional<rational> c = s.g->exact(s.high);
   if (!c || *c <= 0) {
-    result.outcome = verdict::undecided;
     result.note = "The interval's end " + text_of(s.high) + " is not a positive rational" + (s.g->in_square ? " in its square" : "") +
                   ": our kernel compares ends exactly, and cannot here.";
     return std::nullopt;
@@ -266,11 +265,11 @@ std::optional<sign_claim> read_sign_claim(shape_reader& read, const shape_call& 
 
 /// The claimed sign of a function of v on the printed interval 0 < v < c: no root or pole of it
 /// inside (our kernel's Sturm sequences, the end compared exactly), and the sign at a point inside.
-claim_result sign_on_interval_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence sign_on_interval_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   claim_result result;
   const std::optional<sign_claim> claim = read_sign_claim(read, call, ctx, result);
-  if (!claim) return result;
+  if (!claim) return beyond_reach(std::move(result));
   const ex &f = claim->f, &v = claim->v, &high = claim->high;
   const referenced_formula& condition = claim->condition;
   const std::string& claimed = claim->claimed;
@@ -281,9 +280,8 @@ claim_result sign_on_interval_shape(const shape_call& call, const run_context& c
   // The first root or pole of f inside (0, c), if any.
   const one_variable::inside_of found = g->first_inside(*c);
   if (found.ambiguous) {
-    result.outcome = verdict::undecided;
     result.note = "A root of " + text_of(f) + " lies within 2^-40 of the interval's end; its isolating interval holds the end.";
-    return result;
+    return beyond_reach(std::move(result));
   }
   const std::optional<positive_root> inside = found.first;
   const rational probe = inside ? rational(inside->low / 2) : rational(*c / 2);
@@ -304,24 +302,28 @@ claim_result sign_on_interval_shape(const shape_call& call, const run_context& c
                     " (normal form); the sign is our kernel's"}};
   // Coq: the sign on the printed interval (holds), or the correction's: the sign found on (0, c),
   // or on (0, r) up to the first root or pole r when it is rational.
+  // The roots, poles and sign are our kernel's: its answer decides.
+  decider_evidence e;
+  e.statement = "the sign on the interval";
+  e.own = answer_of(!inside && sign == want);
   if (!inside && sign == want) {
-    record_certificate(result, coq_certificate(call.claim_id, call.statement, {g->sign_goal_on("sign", want, *c)}));
-    result.outcome = verdict::holds;
-    return result;
+    e.goals = std::vector<proof_goal>{g->sign_goal_on("sign", want, *c)};
+    e.found = std::move(result);
+    return e;
   }
   if (!inside) {
-    record_certificate(result, coq_certificate(call.claim_id, call.statement, {g->sign_goal_on("sign", sign, *c)}));
+    e.goals = std::vector<proof_goal>{g->sign_goal_on("sign", sign, *c)};
   } else if (inside->exact()) {
-    record_certificate(result, coq_certificate(call.claim_id, call.statement, {g->sign_goal_on("sign_before_root", sign, inside->low)}));
+    e.goals = std::vector<proof_goal>{g->sign_goal_on("sign_before_root", sign, inside->low)};
   } else {
     result.certificate_missing = "the sign changes at an irrational root, which the certificate cannot name as a bound; our kernel's Sturm sequences decide it";
   }
-  result.outcome = verdict::erratum;
   const std::string sign_text = sign > 0 ? "positive" : "negative";
   result.correction = inside ? fmt::format("{} is {} for 0 < {} < {} only, and changes sign there", expression, sign_text, var, g->text(*inside))
                              : fmt::format("{} is {} for 0 < {} < {}", expression, sign_text, var, text_of(high));
   result.note = "As printed: (" + reference_of(call, "expression") + ") is said to be " + claimed + " for " + folded_space(condition.tex) + ".";
-  return result;
+  e.found = std::move(result);
+  return e;
 }
 
 /// "Under (condition), all the factors of the expression are {sign} and Δ {relation}": each factor of
@@ -330,7 +332,7 @@ claim_result sign_on_interval_shape(const shape_call& call, const run_context& c
 /// them: every factor of the stated sign, and the product in the stated relation to 0 (when the
 /// sentence has a hole {relation}). The product's relation true with a factor of another sign is a
 /// wording erratum; the correction gives each factor's proved sign, and so does the certificate.
-claim_result factor_signs_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence factor_signs_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const referenced_formula printed_product = read.raw("expression");  // read once: its value, and its tree for the factors
   const ex product = read.defined(printed_product.value);
@@ -358,17 +360,15 @@ claim_result factor_signs_shape(const shape_call& call, const run_context& ctx) 
     const std::optional<one_variable> g = in_variable(f, v);
     const std::optional<rational> c = g ? g->exact(high) : std::nullopt;
     if (!g || !c || *c <= 0) {
-      result.outcome = verdict::undecided;
       result.note = "The factor " + text_of(f) + (g ? " on an interval whose end is not a positive rational" + std::string(g->in_square ? " in its square" : "")
                                                      : " is not a function of " + var + " alone") + ": our kernel cannot decide its sign.";
-      return result;
+      return beyond_reach(std::move(result));
     }
     // Our kernel: no root or pole inside (0, c), and the sign at c/2.
     const one_variable::inside_of found = g->first_inside(*c);
     if (found.ambiguous) {
-      result.outcome = verdict::undecided;
       result.note = "A root or pole of " + text_of(f) + " lies within 2^-40 of the interval's end; its isolating interval holds the end.";
-      return result;
+      return beyond_reach(std::move(result));
     }
     const bool inside = found.first.has_value();
     const int own = inside ? 0 : g->sign_at(*c / 2);
@@ -395,17 +395,21 @@ claim_result factor_signs_shape(const shape_call& call, const run_context& ctx) 
                   " (Sturm count of the roots and poles of each factor in (0, c), c compared exactly, and its sign at c/2)"},
       {"ginac", std::string(ginac_decided ? "holds: every factor's sign decided" : "not decided for every factor") +
                     " (the coefficients of its numerator and denominator after u = E s/(1 + s))"}};
-  record_certificate(result, coq_certificate(call.claim_id, call.statement, goals));
-  if (kernels_disagree_if(result, !kernels_agree, "Our kernel's (Sturm) and GiNaC's (coefficients) signs of a factor differ: a bug in one of them.")) {
-    return result;
-  }
+  // The words are judged on our kernel's signs; GiNaC's coefficient test agrees factor by factor
+  // where it decides, and answers on the words only where it decided every factor.
+  decider_evidence e;
+  e.statement = "the factors' signs";
+  e.parts_differ = !kernels_agree;
+  e.disagreement = "Our kernel's (Sturm) and GiNaC's (coefficients) signs of a factor differ: a bug in one of them.";
+  e.own = answer_of(factors_as_stated && relation_as_stated);
+  e.ginac = ginac_decided ? e.own : answer::none;
+  e.goals = std::move(goals);
   const std::string facts = fmt::format("on 0 < {} < {}: {}; the product is {}", var, text_of(high), fmt::join(proved, ", "), sign_word(product_sign));
   if (factors_as_stated && relation_as_stated) {
-    result.outcome = verdict::holds;
     result.note = "Proved in both kernels, each factor's sign on the whole interval (no sample): " + facts + ".";
-    return result;
+    e.found = std::move(result);
+    return e;
   }
-  result.outcome = verdict::erratum;
   result.correction = "As proved: " + facts;
   // Wording when only the monomial prefactor differs and the product's relation holds: the sums are
   // what a reader may take for "the factors"; the words' "all" takes in the prefactor too.
@@ -418,7 +422,8 @@ claim_result factor_signs_shape(const shape_call& call, const run_context& ctx) 
       relation_as_stated && sums_as_stated
           ? fmt::format("{} for the factors that are sums; {} for the prefactor {}", said.words("sign"), stated < 0 ? "positive" : "negative", fmt::join(unlike, ", "))
           : fmt::format("on 0 < {} < {}: {}; the product {}", var, text_of(high), fmt::join(proved, ", "), sign_word(product_sign))));
-  return result;
+  e.found = std::move(result);
+  return e;
 }
 
 }  // namespace simpson::verify::detail
@@ -431,11 +436,11 @@ namespace simpson::verify::detail {
 /// them, the sign the stated one before it and never after it. Coq certifies the sign on the printed
 /// interval, and on each bounded interval beyond it between rational ends; the unbounded last one is
 /// our kernel's alone.
-claim_result sign_iff_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence sign_iff_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   claim_result result;
   const std::optional<sign_claim> claim = read_sign_claim(read, call, ctx, result);
-  if (!claim) return result;
+  if (!claim) return beyond_reach(std::move(result));
   const ex &f = claim->f, &v = claim->v, &high = claim->high;
   const referenced_formula& condition = claim->condition;
   const std::string& claimed = claim->claimed;
@@ -494,20 +499,24 @@ claim_result sign_iff_shape(const shape_call& call, const run_context& ctx) {
     if (bands[k].to < 0 || !bands[k].from_exact || !bands[k].to_exact) continue;
     goals.push_back(g->sign_goal_between("sign_band_" + std::to_string(k), bands[k].sign, bands[k].from, bands[k].to));
   }
+  // The bands are our kernel's (Sturm sequences): its answer decides.
+  decider_evidence e;
+  e.statement = "the sign's bands";
+  e.own = answer_of(holds);
   if (goals.empty()) {
     result.certificate_missing = "no band with rational ends to state; our kernel's Sturm sequences decide it";
   } else {
-    record_certificate(result, coq_certificate(call.claim_id, call.statement, goals));
+    e.goals = std::move(goals);
   }
   if (holds) {
-    result.outcome = verdict::holds;
-    return result;
+    e.found = std::move(result);
+    return e;
   }
-  result.outcome = verdict::erratum;
   result.correction = where.empty() ? fmt::format("{} is never {} for {} > 0", text_of(f), claimed, var)
                                     : fmt::format("{} is {} exactly for {}", text_of(f), claimed, fmt::join(where, " and for "));
   result.note = "As printed: (" + reference_of(call, "expression") + ") is said to be " + claimed + " if and only if " + folded_space(condition.tex) + ".";
-  return result;
+  e.found = std::move(result);
+  return e;
 }
 
 /// The shapes of this file, each one's name, summary, principal argument and parameters beside the

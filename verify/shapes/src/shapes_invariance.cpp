@@ -76,7 +76,7 @@ invariance_rows derive_invariance_rows(const ex& form, const GiNaC::matrix& m, c
 /// as written against Σ monomial × printed row, every symbol free (the state's too): GiNaC's normal
 /// form, our kernel's grid, and the Coq lemma. An erratum's correction is the derived rows, whose
 /// identity Coq checks beside the printed one's refutation.
-claim_result invariance_system_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence invariance_system_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const ex system = read.formula("system").evalm();
   const ex form = read.formula("form");
@@ -92,15 +92,13 @@ claim_result invariance_system_shape(const shape_call& call, const run_context& 
   result.printed = read.printed();
   if (!GiNaC::is_a<GiNaC::matrix>(system) || GiNaC::ex_to<GiNaC::matrix>(system).cols() != 1 ||
       GiNaC::ex_to<GiNaC::matrix>(system).rows() != monomials.size()) {
-    result.outcome = verdict::undecided;
     result.note = fmt::format("({}) is not a column of {} rows, one for each of {}.", system_ref, monomials.size(), fmt::join(named, ", "));
-    return result;
+    return beyond_reach(std::move(result));
   }
   if (!d.not_quadratic.empty()) {
-    result.outcome = verdict::undecided;
     result.note = fmt::format("({})(({}) y) − ({})(y) is not a quadratic form in the state: {} is left beyond the monomials {}.", form_ref, map_ref,
                               form_ref, d.not_quadratic, fmt::join(named, ", "));
-    return result;
+    return beyond_reach(std::move(result));
   }
   const GiNaC::matrix& rows = GiNaC::ex_to<GiNaC::matrix>(system);
   ex printed_sum = 0;
@@ -120,26 +118,26 @@ claim_result invariance_system_shape(const shape_call& call, const run_context& 
     }
   }
   const std::string what = fmt::format("({})(({}) y) − ({})(y) = {} times the rows of ({})", form_ref, map_ref, form_ref, fmt::join(named, ", "), system_ref);
-  result = identity_verdict(call, read, "system", what, change, printed_sum,
+  decider_evidence e = identity_evidence(read, "system", what, change, printed_sum,
                             fmt::format("{}{}as derived from ({})(({}) y) − ({})(y), the coefficients of {} in the unknowns: {}", fmt::join(differing, "; "),
                                         differing.empty() ? "" : "; ", form_ref, map_ref, form_ref, fmt::join(named, ", "), text_of(derived)));
-  result.evidence["exact"]["derived_rows"] = d.rows_text;
-  if (result.outcome == verdict::erratum) result.amendments = amendments;
-  if (result.outcome == verdict::erratum) {  // the correction certified beside the refutation
+  e.found.evidence["exact"]["derived_rows"] = d.rows_text;
+  if (e.found_false()) {  // the correction certified beside the refutation
+    e.found.amendments = amendments;
     ex derived_sum = 0;
     for (std::size_t k = 0; k < monomials.size(); ++k) {
       for (std::size_t u = 0; u < unknowns.size(); ++u) {
         derived_sum += monomials[k] * derived(static_cast<unsigned>(k), static_cast<unsigned>(u)) * unknowns[u];
       }
     }
-    record_certificate(result, coq_certificate(call.claim_id, call.statement, {decided("system", change, printed_sum), decided("derived", change, derived_sum)}));
+    e.goals = std::vector<proof_goal>{decided("system", change, printed_sum), decided("derived", change, derived_sum)};
     GiNaC::matrix column(derived.rows(), 1);  // the system as it should be printed: the derived rows times the unknowns
     for (unsigned k = 0; k < derived.rows(); ++k) {
       for (std::size_t u = 0; u < unknowns.size(); ++u) column(k, 0) += derived(k, static_cast<unsigned>(u)) * unknowns[u];
     }
-    result.corrected_formulas.push_back(read.correction_of("system", column));
+    e.found.corrected_formulas.push_back(read.correction_of("system", column));
   }
-  return result;
+  return e;
 }
 
 /// "We have det Γ = ...": the printed value against the determinant of the system a quadratic
@@ -147,7 +145,7 @@ claim_result invariance_system_shape(const shape_call& call, const run_context& 
 /// as it should be printed: a misprinted entry of the printed system is that claim's finding, not
 /// this one's). Decided in both kernels, one Coq lemma; an erratum's correction is the printed value
 /// times a number when the two differ by one (certified beside the refutation), else the determinant.
-claim_result invariance_determinant_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence invariance_determinant_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const ex printed = read.formula("printed");
   const ex form = read.formula("form");
@@ -158,12 +156,11 @@ claim_result invariance_determinant_shape(const shape_call& call, const run_cont
   claim_result result;
   result.printed = read.printed();
   if (!d.not_quadratic.empty() || d.derived.rows() != d.derived.cols()) {
-    result.outcome = verdict::undecided;
     result.note = d.not_quadratic.empty()
                       ? fmt::format("The system has {} rows ({}) and {} unknowns: no determinant.", d.derived.rows(), fmt::join(d.named, ", "),
                                     d.derived.cols())
                       : fmt::format("({})(({}) y) − ({})(y) is not a quadratic form in the state: {} is left.", form_ref, map_ref, form_ref, d.not_quadratic);
-    return result;
+    return beyond_reach(std::move(result));
   }
   const ex det = d.derived.determinant(GiNaC::determinant_algo::laplace);
   const std::string printed_ref = reference_of(call, "printed");
@@ -174,19 +171,20 @@ claim_result invariance_determinant_shape(const shape_call& call, const run_cont
   const bool multiple = GiNaC::is_a<GiNaC::numeric>(ratio) && !ratio.is_zero();
   const ex corrected = multiple ? ratio * printed : GiNaC::normal(det);
   const std::string what = fmt::format("det of the system ({})(({}) y) = ({})(y) asks of the unknowns = ({})", form_ref, map_ref, form_ref, printed_ref);
-  result = identity_verdict(call, read, "determinant", what, det, printed,
+  decider_evidence e = identity_evidence(read, "determinant", what, det, printed,
                             multiple ? fmt::format("as derived: det = {} × ${}$ (as printed)", text_of(ratio), folded_space(read.raw("printed").sides.back()))
                                      : "as derived: det = " + text_of(corrected));
-  result.evidence["exact"]["derived_rows"] = d.rows_text;
-  if (result.outcome == verdict::erratum) {  // the correction certified beside the refutation
-    record_certificate(result, coq_certificate(call.claim_id, call.statement, {decided("determinant", det, printed), decided("derived", det, corrected)}));
-    result.amendments.push_back(multiple ? amendment{"the printed determinant", folded_space(read.raw("printed").sides.back()),
+  claim_result& found = e.found;
+  found.evidence["exact"]["derived_rows"] = d.rows_text;
+  if (e.found_false()) {  // the correction certified beside the refutation
+    e.goals = std::vector<proof_goal>{decided("determinant", det, printed), decided("derived", det, corrected)};
+    found.amendments.push_back(multiple ? amendment{"the printed determinant", folded_space(read.raw("printed").sides.back()),
                                                      canonical_tex(ratio) + " \\times \\text{the printed}"}
                                          : *amendment_between("the printed determinant", printed, corrected));
     // What should stand where the determinant is printed: the claims that read it are judged again with it.
-    result.corrected_formulas.push_back(read.correction_of("printed", corrected));
+    found.corrected_formulas.push_back(read.correction_of("printed", corrected));
   }
-  return result;
+  return e;
 }
 
 
@@ -366,7 +364,7 @@ corank_one decide_corank_one(const GiNaC::matrix& m) {
 /// in both kernels and in Coq. An erratum when the system as derived (invariance-system) is singular
 /// there and the printed one is not: the derived determinant's identity certified beside the
 /// refutation. Fails when neither is.
-claim_result invariance_singular_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence invariance_singular_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   read.equations("conditions");  // read first: the principal formula the report lists
   const printed_system p = read_printed_system(call, read);
@@ -375,30 +373,29 @@ claim_result invariance_singular_shape(const shape_call& call, const run_context
   claim_result result;
   result.printed = read.printed();
   if (!p.wrong.empty()) {
-    result.outcome = verdict::undecided;
     result.note = p.wrong;
-    return result;
+    return beyond_reach(std::move(result));
   }
   const ex det_printed = written_determinant(substituted(p.coefficients, solved.values));
   const ex det_derived = written_determinant(substituted(d.derived, solved.values));
   const bool derived_singular = is_zero_expression(GiNaC::normal(det_derived));
   const std::string on = fmt::format("{}", fmt::join(solved.text, ", "));
   const std::string what = fmt::format("det of the printed system's coefficients, with {}, = 0", on);
-  result = identity_verdict(call, read, "printed", what, det_printed, 0,
+  decider_evidence e = identity_evidence(read, "printed", what, det_printed, 0,
                             derived_singular ? fmt::format("the system as derived (the rows invariance-system derives) is singular there: with {} its determinant is 0, "
                                                            "and the printed system's is {}",
                                                            on, text_of(GiNaC::factor(GiNaC::normal(det_printed))))
                                              : "",
                             derived_singular ? verdict::erratum : verdict::fails);
-  result.evidence["exact"]["conditions_solved"] = solved.text;
-  result.evidence["exact"]["derived_determinant_there"] = text_of(GiNaC::normal(det_derived));
-  if (result.outcome == verdict::fails) {
-    result.note += fmt::format(" The system as derived is not singular there either: its determinant is {}.", text_of(GiNaC::normal(det_derived)));
+  e.found.evidence["exact"]["conditions_solved"] = solved.text;
+  e.found.evidence["exact"]["derived_determinant_there"] = text_of(GiNaC::normal(det_derived));
+  if (e.found_false() && !derived_singular) {
+    e.found.note += fmt::format(" The system as derived is not singular there either: its determinant is {}.", text_of(GiNaC::normal(det_derived)));
   }
-  if (result.outcome == verdict::erratum) {  // the correction certified beside the refutation
-    record_certificate(result, coq_certificate(call.claim_id, call.statement, {decided("printed", det_printed, 0), decided("derived", det_derived, 0)}));
+  if (e.found_false() && derived_singular) {  // the correction certified beside the refutation
+    e.goals = std::vector<proof_goal>{decided("printed", det_printed, 0), decided("derived", det_derived, 0)};
   }
-  return result;
+  return e;
 }
 
 /// "When α = δ, we obtain η = 0 and a conserved quadratic form Q_c = γp²/2 − βq²/2, up to a
@@ -408,7 +405,7 @@ claim_result invariance_singular_shape(const shape_call& call, const run_context
 /// `obtains` (η = 0) holds there. Kernel membership in both kernels and Coq; the rank by GiNaC and
 /// by our kernel's nonzero minor. An erratum's correction is the kernel of the system as derived
 /// (invariance-system): the printed form when it spans it, else a column of its adjugate.
-claim_result invariance_kernel_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence invariance_kernel_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const ex printed_form = read.formula("printed");
   const printed_system p = read_printed_system(call, read);
@@ -448,9 +445,8 @@ claim_result invariance_kernel_shape(const shape_call& call, const run_context& 
     wrong = fmt::format("({}) is not ({}) for one value of its coefficients {}.", printed_ref, reference_of(call, "form"), fmt::join(call.with.at("unknowns").values, ", "));
   }
   if (!wrong.empty()) {
-    result.outcome = verdict::undecided;
     result.note = wrong;
-    return result;
+    return beyond_reach(std::move(result));
   }
   std::vector<ex> v;
   std::vector<std::string> v_text;
@@ -502,49 +498,51 @@ claim_result invariance_kernel_shape(const shape_call& call, const run_context& 
                                   w_obtains ? "" : fmt::format("; there {} does not hold", fmt::join(w_failing, ", ")))
                     : "";
   const std::string what = fmt::format("the printed system times the printed form's coefficients ({}) = 0, with {}", fmt::join(v_text, ", "), on);
-  result = identity_verdict(call, read, "kernel", what, rows_times(d.monomials, printed_there, v), 0, correction,
-                            derived_spans ? verdict::erratum : verdict::fails);
+  decider_evidence e = identity_evidence(read, "kernel", what, rows_times(d.monomials, printed_there, v), 0, correction,
+                                         derived_spans ? verdict::erratum : verdict::fails);
+  claim_result& found = e.found;
   const corank_one printed_rank = decide_corank_one(printed_there);
   std::vector<std::string> v_failing;
   const bool v_obtains = obtained_at(v, v_failing);
-  if (result.outcome == verdict::fails) result.correction.clear();
-  result.evidence["exact"]["conditions_solved"] = solved.text;
-  result.evidence["exact"]["rank"] = {
+  found.evidence["exact"]["conditions_solved"] = solved.text;
+  found.evidence["exact"]["rank"] = {
       {"printed", printed_rank.ginac ? "n - 1 (GiNaC)" : fmt::format("{} (GiNaC), not {}", normalised(printed_there).rank(), printed_there.rows() - 1)},
       {"own_minor", printed_rank.own.outcome == kernel_decision::result::nonzero ? "nonzero: " + printed_rank.own.evidence
                                                                                 : "not decided nonzero: " + printed_rank.own.evidence},
       {"where", "rank n - 1 wherever the gcd of the (n - 1)-minors' numerators, " + printed_rank.where + ", is not zero"},
       {"derived", derived_rank.ginac ? "n - 1 (GiNaC) wherever the gcd of the (n - 1)-minors' numerators, " + derived_rank.where + ", is not zero"
                                      : fmt::format("{} (GiNaC), not {}", normalised(derived_there).rank(), derived_there.rows() - 1)}};
-  result.evidence["exact"]["derived_kernel"] = w_text;
+  found.evidence["exact"]["derived_kernel"] = w_text;
   const bool own_rank = printed_rank.own.outcome == kernel_decision::result::nonzero;
-  if (result.outcome == verdict::holds && (!printed_rank.ginac || !v_obtains)) {
-    result.outcome = derived_spans && w_obtains ? verdict::erratum : verdict::fails;
-    result.correction = result.outcome == verdict::erratum ? correction : "";
-    result.note = !printed_rank.ginac ? fmt::format("As printed: ({}) is in the kernel, but the kernel has dimension {}: not every solution is a multiple of it.",
+  if (e.found_holds() && (!printed_rank.ginac || !v_obtains)) {
+    // In the kernel, but GiNaC finds the rank or an `obtains` wrong: the statement fails on those,
+    // which are GiNaC's alone.
+    e.ginac = answer::fails;
+    e.own = answer::none;
+    e.if_false = derived_spans && w_obtains ? verdict::erratum : verdict::fails;
+    found.correction = e.if_false == verdict::erratum ? correction : "";
+    found.note = !printed_rank.ginac ? fmt::format("As printed: ({}) is in the kernel, but the kernel has dimension {}: not every solution is a multiple of it.",
                                                     printed_ref, printed_there.rows() - normalised(printed_there).rank())
                                       : fmt::format("As printed: {} does not hold for the coefficients of ({}).", fmt::join(v_failing, ", "), printed_ref);
-  } else {
-    kernels_disagree_if(result, result.outcome == verdict::holds && !own_rank && printed_rank.own.outcome != kernel_decision::result::not_applicable,
-                        "GiNaC finds rank n - 1 and our kernel finds the chosen (n - 1)-minor zero: a bug in one of them.");
+  } else if (e.found_holds() && !own_rank && printed_rank.own.outcome != kernel_decision::result::not_applicable) {
+    e.own = answer::fails;  // our kernel's minor is zero: the rank is not n - 1 by it
+    e.disagreement = "GiNaC finds rank n - 1 and our kernel finds the chosen (n - 1)-minor zero: a bug in one of them.";
   }
-  if (result.outcome == verdict::fails && result.note.find("As printed") != std::string::npos && !derived_spans) {
-    result.note += " The system as derived has no one-dimensional kernel there either.";
+  const bool fails_plainly = e.found_false() && e.if_false == verdict::fails;
+  if (fails_plainly && found.note.find("As printed") != std::string::npos && !derived_spans) {
+    found.note += " The system as derived has no one-dimensional kernel there either.";
   }
   // Coq: the printed system's rows times the coefficients (a tree GiNaC may already have made 0),
   // and the form with them conserved, as written: when it holds, or as the correction.
   GiNaC::exmap at_v;
   for (std::size_t u = 0; u < unknowns.size(); ++u) at_v[unknowns[u]] = v[u];
-  if (result.outcome == verdict::holds) {
-    record_certificate(result, coq_certificate(call.claim_id, call.statement,
-                                               {decided("kernel", rows_times(d.monomials, printed_there, v), 0),
-                                                decided("conserved", d.change.subs(at_v).subs(solved.values), 0)}));
+  if (e.found_holds()) {
+    e.goals = std::vector<proof_goal>{decided("kernel", rows_times(d.monomials, printed_there, v), 0), decided("conserved", d.change.subs(at_v).subs(solved.values), 0)};
   }
-  if (result.outcome == verdict::erratum) {  // the correction certified beside the refutation
-    record_certificate(result, coq_certificate(call.claim_id, call.statement,
-                                               {decided("kernel", rows_times(d.monomials, printed_there, v), 0), decided("derived", conserved_w, 0)}));
+  if (e.found_false() && e.if_false == verdict::erratum) {  // the correction certified beside the refutation
+    e.goals = std::vector<proof_goal>{decided("kernel", rows_times(d.monomials, printed_there, v), 0), decided("derived", conserved_w, 0)};
   }
-  return result;
+  return e;
 }
 
 /// The shapes of this file, each one's name, summary, principal argument and parameters beside the

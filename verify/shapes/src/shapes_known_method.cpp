@@ -46,7 +46,7 @@ GiNaC::matrix numeric_matrix(shape_reader& read, const std::string& parameter, u
 /// Coq lemma each), makes the printed scheme that method on this problem. The text is then judged on
 /// whether its prose names the method (`names`, any of them): presented as its own without the
 /// name, a finding (the record's class: naming). Not the same map: the method is not that one here.
-claim_result known_method_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence known_method_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const GiNaC::matrix printed = as_square_matrix(read.formula("map"), reference_of(call, "map"));
   const std::vector<GiNaC::symbol> state = read.symbols("state");
@@ -128,27 +128,33 @@ claim_result known_method_shape(const shape_call& call, const run_context& ctx) 
                                                       : "not applicable for an entry: GiNaC's proof alone"}};
   result.evidence["stated"] = said.words("novelty");
   result.evidence["names"] = {{"looked_for", names}, {"found", named}};
-  if (kernels_disagree_if(result, own_contradicts, kernels_differ_on("an entry of the map"))) return result;
+  // Whether the map is the method's is the kernels' (entry by entry); whether the prose names it is
+  // read. Not the method's map: nothing to name, and the statement holds.
+  decider_evidence e;
+  e.statement = "an entry of the map";
+  e.parts_differ = own_contradicts;
+  e.ginac = answer_of(!ginac_same || !named.empty());
+  e.own = own_decided ? e.ginac : answer::none;
   if (!ginac_same) {
-    result.outcome = verdict::holds;
     result.note = fmt::format("The printed map is not {}'s on this problem: that method is not what the text presents.", method);
     result.certificate_missing = "a difference of maps: nothing to certify";
-    return result;
+    e.found = std::move(result);
+    return e;
   }
-  record_certificate(result, coq_certificate(call.claim_id, call.statement, goals));
+  e.goals = std::move(goals);
   if (!named.empty()) {
-    result.outcome = verdict::holds;
     result.note = fmt::format("The printed map is {}'s on this problem, and the text names it ({}).", method, fmt::format("{}", fmt::join(named, ", ")));
-    return result;
+    e.found = std::move(result);
+    return e;
   }
-  result.outcome = verdict::erratum;
   result.correction = fmt::format("On this problem the printed map ({}) is {}'s, proved entry by entry: the text should name it and cite its prior work",
                                   reference_of(call, "map"), method);
   result.note = fmt::format("The text presents '{}' as its own and never names {} ({} looked for in its prose; its citations cannot be resolved "
                             "without a bibliography, so whether one of them covers it is not known).",
                             said.words("novelty"), method, fmt::format("{}", fmt::join(names, ", ")));
   result.amendments.push_back(amendment_in_words("what the method is", said.words("novelty"), method + ", on this problem: known prior work, to be named and cited"));
-  return result;
+  e.found = std::move(result);
+  return e;
 }
 
 /// The shapes of this file, each one's name, summary, principal argument and parameters beside the

@@ -44,16 +44,18 @@ std::string stem(const std::string& word) {
 /// vocabulary (the document's names and terms of art: symplectic, Newmark). A word that is in
 /// neither is a spelling slip, the dictionary's first suggestion what should stand there; each
 /// slip once, with the lines it is printed on. Lexical by nature: no computation is involved.
-claim_result spelling_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence spelling_shape(const shape_call& call, const run_context& ctx) {
   const paper_reading& paper = paper_of(ctx);
   const std::unique_ptr<Hunspell> dictionary = english_dictionary();
   claim_result result;
   result.reads_whole_text = true;
   if (!dictionary) {
-    result.outcome = verdict::skipped;
     result.note = "Hunspell's en_US dictionary is not installed (Debian: hunspell-en-us): the spelling is not checked.";
     result.certificate_missing = "a spelling check: no identity";
-    return result;
+    decider_evidence e;
+    e.reached = decider_evidence::reach::tool_missing;
+    e.found = std::move(result);
+    return e;
   }
   std::set<std::string> vocabulary;
   if (call.with.count("vocabulary")) {
@@ -93,23 +95,26 @@ claim_result spelling_shape(const shape_call& call, const run_context& ctx) {
                               {"not_in_dictionary", found}};
   result.evidence["lexical"] = "the verdict follows from the words as printed; no computation is involved";
   result.certificate_missing = "a spelling check: no identity to state";
+  decider_evidence e;
+  e.statement = "the prose's spelling";
+  e.lexical = answer_of(order.empty());
   if (order.empty()) {
-    result.outcome = verdict::holds;
     result.note = fmt::format("Lexical: every one of the {} words of the prose is in the dictionary or the vocabulary.", words.size());
-    return result;
+    e.found = std::move(result);
+    return e;
   }
-  result.outcome = verdict::erratum;
   result.correction = fmt::format("{} word{} not in the dictionary, with Hunspell's first suggestion: {}", order.size(), order.size() == 1 ? "" : "s",
                                   fmt::join(corrections, "; "));
   result.note = fmt::format("Lexical: {} of the {} words of the prose are in neither Hunspell's en_US dictionary nor the record's vocabulary. A "
                             "grammatical slip of real words ('can we written') is beyond a dictionary.",
                             order.size(), words.size());
-  return result;
+  e.found = std::move(result);
+  return e;
 }
 
 /// Every \cite key of the live text is resolved by the source's bibliography (a \bibitem); when one
 /// is not, what the citations attribute cannot be checked: unverifiable, one finding for all of them.
-claim_result citations_shape(const shape_call&, const run_context& ctx) {
+decider_evidence citations_shape(const shape_call&, const run_context& ctx) {
   const paper_reading& paper = paper_of(ctx);
   const paper_provenance p = read_provenance(paper.source);
   claim_result result;
@@ -122,17 +127,21 @@ claim_result citations_shape(const shape_call&, const run_context& ctx) {
   }
   result.evidence["citations"] = {{"uses", uses}, {"keys", keys.size()}, {"bibliography", p.bibliography}, {"unresolved", p.unresolved}};
   result.certificate_missing = "a bibliography's presence: no identity to state";
+  decider_evidence e;
+  e.statement = "the citations' entries";
+  e.lexical = answer_of(p.unresolved.empty());
+  e.if_false = verdict::unverifiable;  // what the citations attribute cannot be checked
   if (p.unresolved.empty()) {
-    result.outcome = verdict::holds;
     result.note = fmt::format("Each of the {} citations ({} keys) has its entry in the source's bibliography.", p.citations.size(), keys.size());
-    return result;
+    e.found = std::move(result);
+    return e;
   }
-  result.outcome = verdict::unverifiable;
   result.note = fmt::format("{} of the {} citation keys ({} uses) are unresolved: the source carries {}. What they attribute cannot be checked.",
                             p.unresolved.size(), keys.size(), p.citations.size(), p.bibliography ? "no entry for them" : "no bibliography");
   result.amendments.push_back(amendment_in_words("the citations", fmt::format("\\cite{{{}}}", fmt::join(p.unresolved, ",")),
                                                  p.bibliography ? "an entry for each key in the bibliography" : "a bibliography"));
-  return result;
+  e.found = std::move(result);
+  return e;
 }
 
 /// The shapes of this file, each one's name, summary, principal argument and parameters beside the

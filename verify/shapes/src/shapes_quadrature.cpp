@@ -39,7 +39,7 @@ const GiNaC::integral& as_integral(const ex& e, const std::string& what) {
 /// with the function replaced by x^k, for k = 0, 1, ... until they differ (GiNaC integrates the
 /// monomial; both sides are then exact rationals, compared again in our kernel's arithmetic). The
 /// degree the sentence states ("of degree three", "of degree smaller or equal to 1") must be it.
-claim_result quadrature_exactness_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence quadrature_exactness_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const ex rule = read.formula("rule"), integral = read.formula("integral");
   const std::string printed_name = read.symbols("function").front().get_name();
@@ -84,22 +84,26 @@ claim_result quadrature_exactness_shape(const shape_call& call, const run_contex
                                                           "(constants once {} = x^k is put in: GiNaC's integral and substitution)",
                                                           stated == exact_up_to ? "holds" : "fails", printed_name)
                                             : "disagrees: " + own_evidence}};
-  if (kernels_disagree_if(r, !own_agrees, kernels_differ_on("a degree"))) {
-  } else if (stated == exact_up_to) {
-    r.outcome = verdict::holds;
+  // Our kernel compares each degree again: agreeing on every one, its answer on the words is GiNaC's.
+  decider_evidence e;
+  e.statement = "a degree";
+  e.ginac = answer_of(stated == exact_up_to);
+  e.own = own_agrees ? e.ginac : answer::none;
+  e.parts_differ = !own_agrees;
+  if (stated == exact_up_to) {
     r.note = "As stated ('" + said.words("degree") + "'): " + computed + ".";
   } else {
-    r.outcome = verdict::erratum;
     r.correction = "The rule is " + computed + " (the printed words say '" + said.words("degree") + "')";
   }
-  return r;
+  e.found = std::move(r);
+  return e;
 }
 
 /// A discrete Lagrangian as printed, against the printed rule ∫_{a0}^{b0} ψ(x) dx ≃ Σ w_k ψ(x_k)
 /// applied to the printed action integral ∫_a^b f dt of one interval: Σ w_k (b − a)/(b0 − a0)
 /// f(t_k), t_k = a + (b − a)(x_k − a0)/(b0 − a0), the integrand's state q and its dq/dt taken at t_k
 /// and then given by the definitions (the interpolant), V uninterpreted. Decided in both kernels.
-claim_result discrete_lagrangian_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence discrete_lagrangian_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const ex printed = read.formula("printed");
   const referenced_formula rule_read = read.raw("rule"), action_read = read.raw("integral");  // as read: their bound variables untouched
@@ -121,8 +125,8 @@ claim_result discrete_lagrangian_shape(const shape_call& call, const run_context
   const definition applied{GiNaC::symbol(psi), (b - a) / (b0 - a0) * integrand, "the action's integrand at the rule's nodes", 0, "", psi, x};
   const ex derived = read.defined(with_definitions(rule_read.value, {applied}));
   const std::string what = fmt::format("({}) = ({}) applied to ({})", reference_of(call, "printed"), reference_of(call, "rule"), reference_of(call, "integral"));
-  return identity_verdict(call, read, "lagrangian", what, derived, printed,
-                          fmt::format("as derived: ({}) = {}", reference_of(call, "printed"), text_of(GiNaC::normal(derived))));
+  return identity_evidence(read, "lagrangian", what, derived, printed,
+                           fmt::format("as derived: ({}) = {}", reference_of(call, "printed"), text_of(GiNaC::normal(derived))));
 }
 
 /// The shapes of this file, each one's name, summary, principal argument and parameters beside the

@@ -64,21 +64,22 @@ std::string own_text(const kernel_decision& own, const std::string& verdict, con
   }
 }
 
-/// The verdict on the order a sentence states, `order` being GiNaC's and `own` our kernel's decision
-/// of its witness: kernels-disagree when ours contradicts it (`on` says of what), holds when the two
-/// orders agree, else an erratum with `correction`, the note saying `as_printed`.
-claim_result settled_order(claim_result result, const kernel_decision& own, int stated, int order, const std::string& on, const std::string& correction,
-                           const std::string& as_printed) {
-  if (kernels_disagree_if(result, own.outcome == kernel_decision::result::nonzero, kernels_differ_on(on))) return result;
+/// The evidence on the order a sentence states, `order` being GiNaC's and `own` our kernel's decision
+/// of its witness: ours confirms GiNaC's answer, or contradicts it (`on` says of what); when the two
+/// orders differ, `correction` is the erratum's and the note says `as_printed`.
+decider_evidence order_evidence(claim_result result, const kernel_decision& own, int stated, int order, const std::string& on, const std::string& correction,
+                                const std::string& as_printed) {
+  decider_evidence e;
+  e.statement = on;
+  e.ginac = answer_of(order == stated);
+  e.own = confirming(e.ginac, own);
   if (own.outcome == kernel_decision::result::not_applicable) result.note = "Our kernel could not decide it (" + own.evidence + "): GiNaC's series alone. ";
-  if (order == stated) {
-    result.outcome = verdict::holds;
-    return result;
+  if (order != stated) {
+    result.correction = correction;
+    result.note += as_printed;
   }
-  result.outcome = verdict::erratum;
-  result.correction = correction;
-  result.note += as_printed;
-  return result;
+  e.found = std::move(result);
+  return e;
 }
 
 }  // namespace
@@ -90,7 +91,7 @@ claim_result settled_order(claim_result result, const kernel_decision& own, int 
 /// the scheme there is the terms plus h^N times a function regular at h = 0, GiNaC's quotient being
 /// only the witness: the printed terms when they hold, GiNaC's series (and that it differs from the
 /// printed terms) when they do not. That identity is the Coq certificate.
-claim_result truncation_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence truncation_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const ex printed = read.formula("printed");
   const ex scheme = scaled_scheme(read);
@@ -140,17 +141,19 @@ claim_result truncation_shape(const shape_call& call, const run_context& ctx) {
   std::vector<proof_goal> goals{decided(ginac_holds ? "printed_taylor_remainder" : "derived_taylor_remainder", on_taylor,
                                         (ginac_holds ? terms : series) + GiNaC::pow(h, order) * remainder)};
   if (!ginac_holds) goals.push_back(decided("printed", series, terms));
-  record_certificate(result, coq_certificate(call.claim_id, call.statement, goals));
-  if (kernels_disagree_if(result, own.outcome == kernel_decision::result::nonzero, kernels_differ_on(what))) return result;
+  // Our kernel confirms (or refutes) the series GiNaC's answer rests on.
+  decider_evidence e;
+  e.statement = what;
+  e.ginac = answer_of(ginac_holds);
+  e.own = confirming(e.ginac, own);
+  e.goals = std::move(goals);
   if (own.outcome == kernel_decision::result::not_applicable) result.note = "Our kernel could not decide it (" + own.evidence + "): GiNaC's series alone. ";
-  if (ginac_holds) {
-    result.outcome = verdict::holds;
-    return result;
+  if (!ginac_holds) {
+    result.correction = "as derived: " + text_of(series) + " + " + big_o;
+    result.note += "As printed: " + what + " is false; the series differs by " + text_of(gap) + ".";
   }
-  result.outcome = verdict::erratum;
-  result.correction = "as derived: " + text_of(series) + " + " + big_o;
-  result.note += "As printed: " + what + " is false; the series differs by " + text_of(gap) + ".";
-  return result;
+  e.found = std::move(result);
+  return e;
 }
 
 /// The order a sentence states ("the scheme is of {order} order"), its words quoted from the
@@ -158,7 +161,7 @@ claim_result truncation_shape(const shape_call& call, const run_context& ctx) {
 /// q'' = −ω² q is O(h^(p + s + 2)) when its q_{j+1} coefficient is of order h^s, so p = that power − s − 2.
 /// GiNaC finds both powers; our kernel decides each (f = h^k w, w(0) finite and nonzero, as in
 /// kernel_confirms_order).
-claim_result stated_order_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence stated_order_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const ex scheme = scaled_scheme(read);
   const ex omega = read.formula("frequency");
@@ -180,10 +183,9 @@ claim_result stated_order_shape(const shape_call& call, const run_context& ctx) 
                               {"series", text_of(series) + " + O(" + h.get_name() + "^" + std::to_string(series_order) + ")"},
                               {"q_next_coefficient_power", *scale}};
   if (!leading) {
-    result.outcome = verdict::undecided;
     result.note = "The series vanishes through O(h^" + std::to_string(series_order) + "): the order is at least " +
                   std::to_string(series_order - *scale - 2) + ", beyond what the shape expands.";
-    return result;
+    return beyond_reach(std::move(result));
   }
   const int order = *leading - *scale - 2;
   result.evidence["exact"]["computed"] = order;
@@ -197,16 +199,17 @@ claim_result stated_order_shape(const shape_call& call, const run_context& ctx) 
   const auto factored = [&h](const std::string& name, const ex& f, int power) {
     return decided(name, f, GiNaC::pow(h, power) * GiNaC::normal(f / GiNaC::pow(h, power)));
   };
-  record_certificate(result, coq_certificate(call.claim_id, call.statement,
-                                              {factored("next_coefficient", next_coefficient, *scale), factored("taylor_order", on_taylor, *leading)}));
+  const std::vector<proof_goal> goals{factored("next_coefficient", next_coefficient, *scale), factored("taylor_order", on_taylor, *leading)};
   const std::string verdict_word = order == stated ? "holds" : "fails";
   result.evidence["exact"]["ginac"] = fmt::format("{}: the series' leading power {}^{} less the {} coefficient's {}^{} less 2 is order {}",
                                                   verdict_word, h.get_name(), *leading, sequence[2].get_name(), h.get_name(), *scale, order);
   result.evidence["exact"]["own"] = own_text(own, verdict_word, fmt::format("the {} coefficient is of order {}^{} and the scheme on the solution of order {}^{}",
                                                               sequence[2].get_name(), h.get_name(), *scale, h.get_name(), *leading));
-  return settled_order(std::move(result), own, stated, order, "the powers of the series", fmt::format("the scheme is of order {}", order),
-                       fmt::format("As printed: the sentence states order {}; on the exact solution the scheme is {} + O(h^{}).", stated, text_of(series),
-                                   series_order));
+  decider_evidence e = order_evidence(std::move(result), own, stated, order, "the powers of the series", fmt::format("the scheme is of order {}", order),
+                                      fmt::format("As printed: the sentence states order {}; on the exact solution the scheme is {} + O(h^{}).", stated,
+                                                  text_of(series), series_order));
+  e.goals = goals;
+  return e;
 }
 
 /// The order of accuracy a sentence states ({order}) against the printed one-step map's: each entry
@@ -215,7 +218,7 @@ claim_result stated_order_shape(const shape_call& call, const run_context& ctx) 
 /// decides, on the flow's Taylor polynomials through h^(p+1), that each entry is h^(p+1) times a
 /// function finite at h = 0, nonzero there for the entries of the lowest power; Coq certifies the
 /// factorisations. Over a fixed time the global error is then O(h^p) wherever the map is stable.
-claim_result map_order_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence map_order_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const GiNaC::matrix map = as_square_matrix(read.formula("map"), reference_of(call, "map"));
   const ex mass = read.formula("mass"), omega = read.formula("frequency");
@@ -259,10 +262,9 @@ claim_result map_order_shape(const shape_call& call, const run_context& ctx) {
                               {"local_error", local},
                               {"stated", stated}};
   if (!lowest) {
-    result.outcome = verdict::undecided;
     result.note = fmt::format("The map is the flow through O({}^{}): the order is at least {}, beyond what the shape expands.", h.get_name(), series_order,
                               series_order - 1);
-    return result;
+    return beyond_reach(std::move(result));
   }
   const int order = *lowest - 1;
   result.evidence["exact"]["computed"] = order;
@@ -286,17 +288,18 @@ claim_result map_order_shape(const shape_call& call, const run_context& ctx) {
       }
     }
   }
-  record_certificate(result, coq_certificate(call.claim_id, call.statement, goals));
   const std::string verdict_word = order == stated ? "holds" : "fails";
   result.evidence["exact"]["ginac"] = fmt::format("{}: the entries' series start at {}^{} (local error), order {}", verdict_word, h.get_name(), *lowest, order);
   result.evidence["exact"]["own"] =
       own_text(own, verdict_word,
                fmt::format("each entry minus the flow's Taylor polynomials of degree {} is {}^{} times a function finite at {} = 0, nonzero there for the entries {}", *lowest,
                            h.get_name(), *lowest, h.get_name(), fmt::join(own_parts, ", ")));
-  return settled_order(std::move(result), own, stated, order, "the map's local error",
-                       fmt::format("the map is of order {}: its local error is O({}^{})", order, h.get_name(), *lowest),
-                       fmt::format("As printed: the sentence states order {}; the map differs from the exact flow over one step at {}^{}.", stated,
-                                   h.get_name(), *lowest));
+  decider_evidence e = order_evidence(std::move(result), own, stated, order, "the map's local error",
+                                      fmt::format("the map is of order {}: its local error is O({}^{})", order, h.get_name(), *lowest),
+                                      fmt::format("As printed: the sentence states order {}; the map differs from the exact flow over one step at {}^{}.", stated,
+                                                  h.get_name(), *lowest));
+  e.goals = std::move(goals);
+  return e;
 }
 
 /// The shapes of this file, each one's name, summary, principal argument and parameters beside the

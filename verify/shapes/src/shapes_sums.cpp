@@ -39,7 +39,7 @@ ex index_where(const ex& time, const GiNaC::symbol& j, const ex& at, const std::
 /// first element starts at a and the last ends at b, so the index runs from the j with t_{j+k0} = a
 /// to the j with t_{j+k1} = b (GiNaC solves both; our kernel checks each end, and each printed bound
 /// against it).
-claim_result sum_range_shape(const shape_call& call, const run_context& ctx) {
+decider_evidence sum_range_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   // The bounds as printed in the sum, or as a sentence states them ("j running from $1$ to $N$").
   GiNaC::symbol j;
@@ -111,9 +111,7 @@ claim_result sum_range_shape(const shape_call& call, const run_context& ctx) {
                                    std::regex_constants::format_first_only);  // no $ in the replacement
     if (printed.sides.size() > 1) corrected = folded_space(printed.sides.front()) + " = " + corrected;
   }
-  settle(result, own_decided && own_holds != ginac_holds, ginac_holds, "the range",
-         fmt::format("{}: the elements of [{}, {}] are {}", corrected, text_of(range.front()), text_of(range.back()), derived));
-  if (result.outcome == verdict::erratum) {
+  if (!ginac_holds) {
     result.note = fmt::format("As printed: {} = {}, ..., {}, {} terms.", j_name, text_of(lower), text_of(upper), text_of(GiNaC::normal(upper - lower + 1)));
     const auto range_tex = [&](const ex& a, const ex& b) {
       return fmt::format("\\sum_{{{}={}}}^{{{}}}", canonical_tex(j), canonical_tex(a), canonical_tex(b));
@@ -122,7 +120,8 @@ claim_result sum_range_shape(const shape_call& call, const run_context& ctx) {
                                                               fmt::format("{} = {}, ..., {}", j_name, text_of(first), text_of(last)))
                                          : amendment{"the sum's range", range_tex(lower, upper), range_tex(first, last)});
   }
-  return result;
+  return settled(std::move(result), answer_of(ginac_holds), own_decided ? answer_of(own_holds) : answer::none, "the range",
+                 fmt::format("{}: the elements of [{}, {}] are {}", corrected, text_of(range.front()), text_of(range.back()), derived));
 }
 
 /// The shapes of this file, each one's name, summary, principal argument and parameters beside the

@@ -13,7 +13,6 @@ std::optional<reversible_scheme> reversible_premise(const ex& scheme, const std:
   reversible_scheme out;
   const std::optional<three_term_coefficients> terms = linear_three_term(scheme, q);
   if (!terms || GiNaC::normal(terms->next).is_zero() || !reversible(*terms, out.reversible_own)) {
-    result.outcome = verdict::undecided;
     result.note = "The shape judges linear three-term schemes whose first and last coefficients are equal; (" + scheme_ref + ") is not one.";
     return std::nullopt;
   }
@@ -21,7 +20,6 @@ std::optional<reversible_scheme> reversible_premise(const ex& scheme, const std:
   out.delta = monic_discriminant(*terms);
   out.g = in_variable(out.delta, v);
   if (!out.g) {
-    result.outcome = verdict::undecided;
     result.note = "The discriminant " + text_of(out.delta) + " is not a function of " + text_of(v) + " alone.";
     return std::nullopt;
   }

@@ -3,9 +3,11 @@
 // C++ function with typed arguments read from the record (`with = { matrix = "phi", equals = "$1$" }`).
 // A shape reads the formulas it is given from the document's LaTeX (formula_reference.hpp), decides
 // its statement in GiNaC's normal form and again in our kernel (kernel_zero.hpp) where the
-// statement is an identity, states what it proved for Coq (coq_export.hpp), and returns the verdict:
-// holds, or erratum with the proved correction (docs/claims-file.md lists the shapes).
+// statement is an identity, states the goals Coq is to check (coq_export.hpp), and returns its
+// evidence: decide() (decide.hpp) makes the verdict of it, holds or erratum with the proved
+// correction (docs/claims-file.md lists the shapes).
 
+#include <simpson/prove/decide.hpp>
 #include <simpson/verify/claim.hpp>
 #include <simpson/verify/claim_declarations.hpp>
 #include <simpson/verify/claims_file.hpp>
@@ -53,7 +55,7 @@ struct shape_call {
   const formula_corrections* corrections = nullptr;  // the run's, when the claim is judged again with corrected formulas
 };
 
-using shape_function = std::function<claim_result(const shape_call&, const run_context&)>;
+using shape_function = std::function<decider_evidence(const shape_call&, const run_context&)>;
 
 struct proof_shape {
   std::string name;

@@ -2,11 +2,12 @@
 // What the proof shapes share (proof_shapes.hpp): reading a call's formulas from the run's
 // document with its definitions put in and its symbols checked against the declared ones, the
 // verdict on an identity in both kernels with its Coq certificate, and each shape's function, by
-// family: identities (shapes_identities.cpp), a form's invariance (shapes_invariance.cpp), derivations (shapes_derivation.cpp), series
+// family: identities (shapes_identities.cpp), quadratic forms (shapes_forms.cpp), a form's invariance (shapes_invariance.cpp), derivations (shapes_derivation.cpp), series
 // (shapes_series.cpp), a map's explicitness (shapes_explicit.cpp), intervals (shapes_intervals.cpp), characteristic polynomials
 // (shapes_characteristic.cpp), quadrature (shapes_quadrature.cpp), sums (shapes_sums.cpp), the prose
 // itself (shapes_prose.cpp).
 
+#include <simpson/prove/decide.hpp>
 #include <simpson/prove/kernel_zero.hpp>
 #include <simpson/shapes/proof_shapes.hpp>
 
@@ -105,28 +106,28 @@ const tex_document& document_of(const run_context& ctx);
 /// and leaks what it was building.
 std::optional<std::string> vanishing_denominator(const GiNaC::ex& e, const GiNaC::exmap& values);
 
-/// The verdict on a statement undefined at a record's values (`pole`, from vanishing_denominator):
-/// it fails, the note saying where.
-claim_result undefined_there(shape_reader& read, const std::string& what, const std::string& pole);
+/// The evidence on a statement undefined at a record's values (`pole`, from vanishing_denominator):
+/// GiNaC finds it fails, with nothing to correct it with; the note says where.
+decider_evidence undefined_there(shape_reader& read, const std::string& what, const std::string& pole);
 
-/// The verdict on an identity lhs = rhs, decided by GiNaC's normal form and by our kernel's grid:
-/// holds when both find it zero, `when_false` (erratum, with `correction`) when both find it not,
-/// kernels-disagree otherwise; our kernel not applicable leaves GiNaC's verdict, and says so. `own`,
-/// when given, is our kernel's decision of an equivalent statement (the shape says which) instead of
-/// its decision of lhs − rhs. `goal` names the Coq lemma (<claim>_<goal>).
-claim_result identity_verdict(const shape_call& call, shape_reader& read, const std::string& goal, const std::string& what, const GiNaC::ex& lhs,
-                              const GiNaC::ex& rhs, const std::string& correction, verdict when_false = verdict::erratum,
-                              const std::optional<kernel_decision>& own = std::nullopt);
+/// The evidence on an identity lhs = rhs: GiNaC's normal form and our kernel's grid each answer
+/// whether lhs − rhs is zero; "no" means `when_false` (erratum, with `correction`); where our kernel
+/// cannot decide, the note says GiNaC's proof stands alone. `own`, when given, is our kernel's
+/// decision of an equivalent statement (the shape says which) instead of its decision of lhs − rhs.
+/// The goal, lhs = rhs, names the Coq lemma (<claim>_<goal>).
+decider_evidence identity_evidence(shape_reader& read, const std::string& goal, const std::string& what, const GiNaC::ex& lhs,
+                                   const GiNaC::ex& rhs, const std::string& correction, verdict when_false = verdict::erratum,
+                                   const std::optional<kernel_decision>& own = std::nullopt);
 
-/// The verdict of equal-sides on `equations`: every side equals its equation's first, the call's
+/// The evidence of equal-sides on `equations`: every side equals its equation's first, the call's
 /// definitions and then `given` put in (`given_text` says what it puts in: ", with p_j = ..."), in
 /// both kernels, one Coq lemma per side; an erratum's correction gives each side as derived.
-claim_result equal_sides_verdict(const shape_call& call, shape_reader& read, const std::vector<referenced_formula>& equations, const GiNaC::exmap& given,
+decider_evidence equal_sides_evidence(const shape_call& call, shape_reader& read, const std::vector<referenced_formula>& equations, const GiNaC::exmap& given,
                                  const std::string& given_text);
 
-/// The verdict of a shape whose two kernels each decided its statement: kernels-disagree when they
-/// differ (the note naming `what`), else holds, or an erratum corrected by `correction`.
-void settle(claim_result& result, bool disagree, bool holds, const std::string& what, const std::string& correction);
+/// The evidence of a shape whose two kernels each answered on its statement (`what`, named when they
+/// differ): `correction` is the erratum's when GiNaC finds it false.
+decider_evidence settled(claim_result found, answer ginac, answer own, const std::string& what, const std::string& correction);
 
 /// "Printed X, should be Y" at `where`, at its simplest: one symbol for another when that is all
 /// that differs in a term of several symbols (d^6q/dt^5 for d^6q/dt^6), a constant factor when a
@@ -184,6 +185,7 @@ kernel_decision kernel_confirms_order(const GiNaC::ex& f, const GiNaC::symbol& h
 /// Each shapes_*.cpp file's shapes, their specs beside the functions that decide them; proof_shapes()
 /// lists the files, one line each.
 std::vector<proof_shape> identities_shape_specs();
+std::vector<proof_shape> forms_shape_specs();
 std::vector<proof_shape> invariance_shape_specs();
 std::vector<proof_shape> derivation_shape_specs();
 std::vector<proof_shape> explicit_shape_specs();
@@ -198,45 +200,45 @@ std::vector<proof_shape> prose_shape_specs();
 std::vector<proof_shape> characteristic_shape_specs();
 
 // The shapes.
-claim_result identity_shape(const shape_call& call, const run_context& ctx);
-claim_result equal_sides_shape(const shape_call& call, const run_context& ctx);
-claim_result derivative_shape(const shape_call& call, const run_context& ctx);
-claim_result solves_shape(const shape_call& call, const run_context& ctx);
-claim_result determinant_shape(const shape_call& call, const run_context& ctx);
-claim_result symplectic_shape(const shape_call& call, const run_context& ctx);
-claim_result linear_shape(const shape_call& call, const run_context& ctx);
-claim_result conserved_shape(const shape_call& call, const run_context& ctx);
-claim_result proportional_shape(const shape_call& call, const run_context& ctx);
-claim_result invariance_system_shape(const shape_call& call, const run_context& ctx);
-claim_result invariance_determinant_shape(const shape_call& call, const run_context& ctx);
-claim_result invariance_singular_shape(const shape_call& call, const run_context& ctx);
-claim_result invariance_kernel_shape(const shape_call& call, const run_context& ctx);
-claim_result euler_lagrange_shape(const shape_call& call, const run_context& ctx);
-claim_result stationary_shape(const shape_call& call, const run_context& ctx);
-claim_result discrete_momenta_shape(const shape_call& call, const run_context& ctx);
-claim_result explicit_map_shape(const shape_call& call, const run_context& ctx);
-claim_result explicit_scheme_shape(const shape_call& call, const run_context& ctx);
-claim_result sign_iff_shape(const shape_call& call, const run_context& ctx);
-claim_result discrete_map_shape(const shape_call& call, const run_context& ctx);
-claim_result truncation_shape(const shape_call& call, const run_context& ctx);
-claim_result stated_order_shape(const shape_call& call, const run_context& ctx);
-claim_result map_order_shape(const shape_call& call, const run_context& ctx);
-claim_result stability_interval_shape(const shape_call& call, const run_context& ctx);
-claim_result sign_on_interval_shape(const shape_call& call, const run_context& ctx);
-claim_result factor_signs_shape(const shape_call& call, const run_context& ctx);
-claim_result characteristic_shape(const shape_call& call, const run_context& ctx);
-claim_result discriminant_shape(const shape_call& call, const run_context& ctx);
-claim_result characteristic_roots_shape(const shape_call& call, const run_context& ctx);
-claim_result root_criterion_shape(const shape_call& call, const run_context& ctx);
-claim_result quadrature_exactness_shape(const shape_call& call, const run_context& ctx);
-claim_result discrete_lagrangian_shape(const shape_call& call, const run_context& ctx);
-claim_result consistency_shape(const shape_call& call, const run_context& ctx);
-claim_result taylor_expansion_shape(const shape_call& call, const run_context& ctx);
-claim_result sum_range_shape(const shape_call& call, const run_context& ctx);
-claim_result unconditional_stability_shape(const shape_call& call, const run_context& ctx);
-claim_result spelling_shape(const shape_call& call, const run_context& ctx);
-claim_result emerging_condition_shape(const shape_call& call, const run_context& ctx);
-claim_result known_method_shape(const shape_call& call, const run_context& ctx);
-claim_result citations_shape(const shape_call& call, const run_context& ctx);
+decider_evidence identity_shape(const shape_call& call, const run_context& ctx);
+decider_evidence equal_sides_shape(const shape_call& call, const run_context& ctx);
+decider_evidence derivative_shape(const shape_call& call, const run_context& ctx);
+decider_evidence solves_shape(const shape_call& call, const run_context& ctx);
+decider_evidence determinant_shape(const shape_call& call, const run_context& ctx);
+decider_evidence symplectic_shape(const shape_call& call, const run_context& ctx);
+decider_evidence linear_shape(const shape_call& call, const run_context& ctx);
+decider_evidence conserved_shape(const shape_call& call, const run_context& ctx);
+decider_evidence proportional_shape(const shape_call& call, const run_context& ctx);
+decider_evidence invariance_system_shape(const shape_call& call, const run_context& ctx);
+decider_evidence invariance_determinant_shape(const shape_call& call, const run_context& ctx);
+decider_evidence invariance_singular_shape(const shape_call& call, const run_context& ctx);
+decider_evidence invariance_kernel_shape(const shape_call& call, const run_context& ctx);
+decider_evidence euler_lagrange_shape(const shape_call& call, const run_context& ctx);
+decider_evidence stationary_shape(const shape_call& call, const run_context& ctx);
+decider_evidence discrete_momenta_shape(const shape_call& call, const run_context& ctx);
+decider_evidence explicit_map_shape(const shape_call& call, const run_context& ctx);
+decider_evidence explicit_scheme_shape(const shape_call& call, const run_context& ctx);
+decider_evidence sign_iff_shape(const shape_call& call, const run_context& ctx);
+decider_evidence discrete_map_shape(const shape_call& call, const run_context& ctx);
+decider_evidence truncation_shape(const shape_call& call, const run_context& ctx);
+decider_evidence stated_order_shape(const shape_call& call, const run_context& ctx);
+decider_evidence map_order_shape(const shape_call& call, const run_context& ctx);
+decider_evidence stability_interval_shape(const shape_call& call, const run_context& ctx);
+decider_evidence sign_on_interval_shape(const shape_call& call, const run_context& ctx);
+decider_evidence factor_signs_shape(const shape_call& call, const run_context& ctx);
+decider_evidence characteristic_shape(const shape_call& call, const run_context& ctx);
+decider_evidence discriminant_shape(const shape_call& call, const run_context& ctx);
+decider_evidence characteristic_roots_shape(const shape_call& call, const run_context& ctx);
+decider_evidence root_criterion_shape(const shape_call& call, const run_context& ctx);
+decider_evidence quadrature_exactness_shape(const shape_call& call, const run_context& ctx);
+decider_evidence discrete_lagrangian_shape(const shape_call& call, const run_context& ctx);
+decider_evidence consistency_shape(const shape_call& call, const run_context& ctx);
+decider_evidence taylor_expansion_shape(const shape_call& call, const run_context& ctx);
+decider_evidence sum_range_shape(const shape_call& call, const run_context& ctx);
+decider_evidence unconditional_stability_shape(const shape_call& call, const run_context& ctx);
+decider_evidence spelling_shape(const shape_call& call, const run_context& ctx);
+decider_evidence emerging_condition_shape(const shape_call& call, const run_context& ctx);
+decider_evidence known_method_shape(const shape_call& call, const run_context& ctx);
+decider_evidence citations_shape(const shape_call& call, const run_context& ctx);
 
 }  // namespace simpson::verify::detail

@@ -14,8 +14,8 @@
 namespace simpson::verify::detail {
 
 /// A reversible linear three-term scheme's monic discriminant as a function of the variable alone
-/// (what root-criterion and unconditional-stability judge): none, with `result` made `undecided` and
-/// its note saying why, when the scheme is not one or the discriminant is not such a function.
+/// (what root-criterion and unconditional-stability judge): none, `result`'s note saying why, when
+/// the scheme is not one or the discriminant is not such a function (beyond the shape's reach).
 struct reversible_scheme {
   three_term_coefficients terms;
   kernel_decision reversible_own;

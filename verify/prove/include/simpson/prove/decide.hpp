@@ -1,0 +1,88 @@
+#pragma once
+// What a decider found, and the one place that makes a verdict of it. A proof shape returns
+// `decider_evidence`: each kernel's answer on the statement it judged, what a "no" means (an erratum
+// with its correction, a plain failure, material that is absent), the goals Coq is to check, and
+// everything else it found (the evidence JSON, the printed formula, notes, amendments). decide()
+// applies the two-kernel rule, exports the certificate and sets the verdict: as LLVM lit's
+// `setResult`, nothing else in the engine writes one.
+
+#include <simpson/prove/coq_export.hpp>
+#include <simpson/prove/kernel_zero.hpp>
+#include <simpson/prove/printed_check_support.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace simpson::verify::detail {
+
+/// A kernel's answer on the statement a decider judged: it holds, it does not, or this kernel did
+/// not decide it (a term it does not compute, a grid too large).
+enum class answer { holds, fails, none };
+
+inline answer answer_of(bool holds) { return holds ? answer::holds : answer::fails; }
+
+/// A kernel's answer on the statement's denial ("not linear" for "linear").
+inline answer negated(answer a) { return a == answer::holds ? answer::fails : a == answer::fails ? answer::holds : answer::none; }
+
+/// Our kernel's answer on an identity from its decision that lhs − rhs is zero.
+answer answer_of(const kernel_decision& own);
+
+/// Our kernel's answer on the statement from its decision on the fact GiNaC reduced the statement to
+/// (an order, a degree, a derived entry): it confirms the fact, so its answer is GiNaC's; it refutes
+/// it, so its answer is the opposite; or it did not decide.
+answer confirming(answer ginac, const kernel_decision& on_fact);
+
+struct decider_evidence {
+  /// judged: the kernels answered (or not); beyond_reach: the statement is not of the shape's kind
+  /// (a map whose det is not 1, a condition not in one variable): undecided, a tool's limit and never
+  /// a finding; tool_missing: a program the check needs is not installed (skipped).
+  enum class reach { judged, beyond_reach, tool_missing };
+  reach reached = reach::judged;
+  /// The statement the kernels judged, in words: the note of kernels-disagree names it.
+  std::string statement;
+  answer ginac = answer::none;
+  answer own = answer::none;
+  /// The answer of a check that computes nothing (a dictionary's words, a bibliography's entries):
+  /// no kernel's, and asked only where neither kernel answered.
+  answer lexical = answer::none;
+  /// The note when the kernels disagree, where kernels_differ_on(statement) does not say what differs.
+  std::string disagreement;
+  /// A statement of several parts (sides, entries, factors) the kernels answered one by one: they
+  /// differ on one of them, whatever their answers on the whole.
+  bool parts_differ = false;
+  /// What "no" means: erratum (found.correction is the proved correction), fails (false, nothing to
+  /// correct it with: a printed property, an undefined formula) or unverifiable (the material it
+  /// needs is absent).
+  verdict if_false = verdict::erratum;
+  /// The identities and signs Coq is to check (coq_export.hpp); none: the decider exports no
+  /// certificate (found.certificate_missing may say why).
+  std::optional<std::vector<proof_goal>> goals;
+  /// Everything else the decider found; its `outcome` is decide()'s to set.
+  claim_result found;
+
+  /// What the kernels' answers come to, before reach and `if_false`: one of them answered, and the
+  /// other did not contradict it. A shape asks this to say more about a statement found false (the
+  /// value of a determinant, a correction's derivation), never to set a verdict.
+  bool found_holds() const { return agreed() == answer::holds; }
+  bool found_false() const { return agreed() == answer::fails; }
+  answer agreed() const {
+    if (parts_differ || (ginac != answer::none && own != answer::none && ginac != own)) return answer::none;
+    return ginac != answer::none ? ginac : own != answer::none ? own : lexical;
+  }
+};
+
+/// Evidence that the statement is beyond the decider's reach, `found.note` saying why.
+decider_evidence beyond_reach(claim_result found);
+
+/// The two-kernel rule, alone: the verdict `evidence` comes to (decide() below, in words).
+verdict verdict_of(const decider_evidence& evidence);
+
+/// The verdict of `evidence` for the claim `claim_id` (its statement `statement`, the certificate's
+/// title), in this order: skipped where a tool is missing; kernels-disagree where both kernels
+/// answered and differ, or differ on a part (no finding then: its correction and amendments are
+/// dropped); undecided where the statement is beyond reach or neither kernel answered; else holds,
+/// or `if_false`. The certificate of `goals` is exported unless the kernels disagree.
+claim_result decide(const std::string& claim_id, const std::string& statement, decider_evidence evidence);
+
+}  // namespace simpson::verify::detail

@@ -1,0 +1,61 @@
+#include <simpson/prove/decide.hpp>
+
+#include <utility>
+
+namespace simpson::verify::detail {
+
+answer answer_of(const kernel_decision& own) {
+  switch (own.outcome) {
+    case kernel_decision::result::zero: return answer::holds;
+    case kernel_decision::result::nonzero: return answer::fails;
+    case kernel_decision::result::not_applicable: return answer::none;
+  }
+  return answer::none;
+}
+
+answer confirming(answer ginac, const kernel_decision& on_fact) {
+  if (ginac == answer::none || on_fact.outcome == kernel_decision::result::not_applicable) return answer::none;
+  if (on_fact.outcome == kernel_decision::result::zero) return ginac;
+  return ginac == answer::holds ? answer::fails : answer::holds;
+}
+
+decider_evidence beyond_reach(claim_result found) {
+  decider_evidence e;
+  e.reached = decider_evidence::reach::beyond_reach;
+  e.found = std::move(found);
+  return e;
+}
+
+verdict verdict_of(const decider_evidence& evidence) {
+  if (evidence.reached == decider_evidence::reach::tool_missing) return verdict::skipped;
+  // Before reach: a fact the kernels differ on is a bug, whatever else the shape could judge.
+  if (evidence.parts_differ || (evidence.ginac != answer::none && evidence.own != answer::none && evidence.ginac != evidence.own)) {
+    return verdict::kernels_disagree;
+  }
+  if (evidence.reached == decider_evidence::reach::beyond_reach) return verdict::undecided;
+  switch (evidence.agreed()) {
+    case answer::holds: return verdict::holds;
+    case answer::fails: return evidence.if_false;
+    case answer::none: return verdict::undecided;
+  }
+  return verdict::undecided;
+}
+
+claim_result decide(const std::string& claim_id, const std::string& statement, decider_evidence evidence) {
+  const verdict outcome = verdict_of(evidence);
+  claim_result result = std::move(evidence.found);
+  if (outcome == verdict::kernels_disagree) {  // no finding: what a finding would carry is dropped
+    result.note = evidence.disagreement.empty() ? kernels_differ_on(evidence.statement) : evidence.disagreement;
+    result.correction.clear();
+    result.amendments.clear();
+    result.corrected_formulas.clear();
+  }
+  if (outcome == verdict::undecided && evidence.reached == decider_evidence::reach::judged && result.note.empty()) {
+    result.note = "Neither kernel decided " + evidence.statement + ".";
+  }
+  if (evidence.goals && outcome != verdict::kernels_disagree) record_certificate(result, coq_certificate(claim_id, statement, *evidence.goals));
+  result.outcome = outcome;  // the engine's one verdict site
+  return result;
+}
+
+}  // namespace simpson::verify::detail
