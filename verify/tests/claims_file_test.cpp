@@ -79,7 +79,7 @@ TEST(ClaimsFile, ACheckBringsItsFacetsUnderItsOneName) {
   // A facet for a check that is not registered is a harness fault.
   detail::check_registry registry;
   EXPECT_THROW(registry.add_coq_goals("nowhere", [] { return std::vector<detail::proof_goal>{}; }), std::logic_error);
-  registry.add("somewhere", [](const run_context&) { return claim_result{}; });
+  registry.add("somewhere", [](const run_context&) { return detail::decider_evidence{}; });
   registry.add_coq_goals("somewhere", [] { return std::vector<detail::proof_goal>{}; });
   EXPECT_THROW(registry.add_coq_goals("somewhere", [] { return std::vector<detail::proof_goal>{}; }), std::logic_error);
 }

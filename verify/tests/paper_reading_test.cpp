@@ -11,6 +11,7 @@
 #include <simpson/verify/run.hpp>
 
 #include "altered_paper.hpp"
+#include "check_registry.hpp"
 
 #include <gtest/gtest.h>
 
@@ -204,14 +205,24 @@ TEST(PaperReading, ACopyWithTheErrataCorrectedMakesThemHold) {
   EXPECT_EQ(verdict_of("conserved-form", paper), verdict::holds);
 }
 
+const claim_record& record_of(const std::string& id) {
+  for (const claim_record& r : paper_book().records) {
+    if (r.id == id) return r;
+  }
+  throw std::invalid_argument("no record " + id);
+}
+
 TEST(PaperReading, KernelsThatDisagreeOnTheDerivedStatementAreItsOwnVerdict) {
   const paper_reading paper = read_paper(embedded_paper());
   claim broken = paper_book().find("derivation-phi3");
-  broken.check = [](const run_context&) {  // our kernel, pretending not to prove the derivation
-    claim_result r;
-    r.outcome = verdict::fails;
-    return r;
+  detail::registered_check pretending = *detail::registered_checks().find("derivation-phi3");
+  pretending.check = [](const run_context&) {  // our kernel, pretending not to prove the derivation
+    detail::decider_evidence e;
+    e.own = detail::answer::fails;
+    e.if_false = verdict::fails;
+    return e;
   };
+  broken.check = detail::claim_check_of(detail::bespoke_judge(record_of("derivation-phi3"), pretending, paper_book().declarations), broken.id, broken.statement);
   const claim_result r = check_claim(broken, run_context{{precision::parse("double")}, 20230830, 2, &paper});
   EXPECT_EQ(r.outcome, verdict::kernels_disagree);
   EXPECT_NE(r.note.find("derivation-phi3"), std::string::npos) << r.note;
@@ -221,9 +232,11 @@ TEST(PaperReading, KernelsThatDisagreeOnTheDerivedStatementAreItsOwnVerdict) {
 TEST(PaperReading, AClaimNoEnclosureDecidesIsUndecidedWithItsEnclosureNamed) {
   const paper_reading paper = read_paper(embedded_paper());
   claim wide = paper_book().find("phi3-det");
-  wide.check = [](const run_context&) -> claim_result {
-    throw enclosure_undecided("phi3-det: the residual's enclosure 0 ± 3e-20 decides nothing at 640 digits, the run's budget");
-  };
+  wide.check = detail::claim_check_of(
+      [](const run_context&) -> detail::decider_evidence {
+        throw enclosure_undecided("phi3-det: the residual's enclosure 0 ± 3e-20 decides nothing at 640 digits, the run's budget");
+      },
+      wide.id, wide.statement);
   const claim_result r = check_claim(wide, run_context{{precision::parse("double")}, 20230830, 2, &paper});
   EXPECT_EQ(r.outcome, verdict::undecided);
   EXPECT_EQ(to_string(r.outcome), "undecided");

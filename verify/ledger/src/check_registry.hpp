@@ -7,17 +7,22 @@
 
 #include "derivation_support.hpp"
 
+#include <simpson/prove/decide.hpp>
 #include <simpson/verify/claim.hpp>
+#include <simpson/verify/claim_declarations.hpp>
+#include <simpson/verify/claims_file.hpp>
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace simpson::verify::detail {
 
-using check_function = std::function<claim_result(const run_context&)>;
+/// A bespoke check: our kernel's evidence (its exact proof, and the numeric rechecks by enclosure).
+using check_function = std::function<decider_evidence(const run_context&)>;
 using coq_goals_function = std::function<std::vector<proof_goal>()>;
 
 struct registered_check {
@@ -71,5 +76,24 @@ class check_registry {
 
 /// Every check of the ledger, registered once with its facets.
 const check_registry& registered_checks();
+
+/// What `judge` found, or why it found nothing: no enclosure decided it within the run's digits
+/// (beyond reach: undecided), or the words it quotes did not read (text-changed).
+decider_evidence within_reach(const std::function<decider_evidence(const run_context&)>& judge, const run_context& ctx);
+
+/// A bespoke check's evidence with its facets: the GiNaC check of the printed formulas it reads
+/// (GiNaC's answer on the print, the two kernels on the derived statement), and the Coq goals,
+/// GiNaC's or our kernel's proof's; `coq_none`, the record's reason when there are none.
+decider_evidence with_facets(decider_evidence e, const registered_check& check, const std::string& claim_id, const std::string& statement,
+                             const std::string& coq_none, const run_context& ctx);
+
+/// What decides a record a bespoke check decides (`check`: the book's, or a test's stand-in): the
+/// check, our core bound to the print, then its facets.
+std::function<decider_evidence(const run_context&)> bespoke_judge(const claim_record& r, const registered_check& check,
+                                                                  const std::shared_ptr<const claim_declarations>& declared);
+
+/// A claim's check: `judge`'s evidence within reach, made a verdict by decide().
+std::function<claim_result(const run_context&)> claim_check_of(std::function<decider_evidence(const run_context&)> judge, const std::string& id,
+                                                        const std::string& statement);
 
 }  // namespace simpson::verify::detail

@@ -1,7 +1,8 @@
 #pragma once
-// Helpers shared by the claim definitions: exact identity proofs with their evidence, and the
-// rule that turns evidence into a verdict.
+// Helpers shared by the claim definitions: exact identity proofs with their evidence, and that
+// evidence as a decider's (decide.hpp makes the verdict).
 
+#include <simpson/prove/decide.hpp>
 #include <simpson/verify/claim.hpp>
 #include <simpson/verify/exact_proof.hpp>
 #include <simpson/verify/numeric_recheck.hpp>
@@ -133,17 +134,20 @@ proof prove_zero_on_grid(const std::string& reduction, const std::vector<std::st
   return prove_zero_on_grid(reduction, variables, std::vector<int>(variables.size(), bound), std::forward<F>(f), memo);
 }
 
-/// holds when every method confirms; otherwise fails (errata are built explicitly).
-inline claim_result confirmed_if(bool ok, json evidence, std::string note = {}) {
-  claim_result r;
-  r.outcome = ok ? verdict::holds : verdict::fails;
-  r.evidence = std::move(evidence);
-  r.note = std::move(note);
-  return r;
+/// Our kernel's evidence (its exact proof, with the numeric rechecks by enclosure where the check
+/// has them): it holds when every method confirms, else it fails (errata are built explicitly).
+/// decide() (decide.hpp) makes the verdict.
+inline decider_evidence confirmed_if(bool ok, json evidence, std::string note = {}) {
+  decider_evidence e;
+  e.own = answer_of(ok);
+  e.if_false = verdict::fails;
+  e.found.evidence = std::move(evidence);
+  e.found.note = std::move(note);
+  return e;
 }
 
 /// An identity proved exactly and rechecked numerically.
-inline claim_result identity(const proof& exact, bool numeric_within, json numeric, std::string note = {}) {
+inline decider_evidence identity(const proof& exact, bool numeric_within, json numeric, std::string note = {}) {
   json evidence = json::object();
   evidence["exact"] = exact.evidence;
   evidence["numeric"] = std::move(numeric);
@@ -151,56 +155,65 @@ inline claim_result identity(const proof& exact, bool numeric_within, json numer
 }
 
 /// An identity proved exactly, with no numeric recheck.
-inline claim_result identity(const proof& exact, std::string note = {}) {
+inline decider_evidence identity(const proof& exact, std::string note = {}) {
   json evidence = json::object();
   evidence["exact"] = exact.evidence;
   return confirmed_if(exact.proved, std::move(evidence), std::move(note));
 }
 
 /// An erratum: the printed form is refuted and the corrected form proved. When the printed form
-/// turns out true, or the correction does not hold, the verdict is fails, and the evidence says which.
-inline claim_result erratum(const proof& printed, const proof& corrected, std::string correction, std::string note = {}) {
-  claim_result r;
-  r.evidence["printed"] = printed.evidence;
-  r.evidence["corrected"] = corrected.evidence;
-  r.correction = std::move(correction);
-  r.note = std::move(note);
-  r.outcome = (!printed.proved && corrected.proved) ? verdict::erratum : verdict::fails;
-  return r;
+/// turns out true, or the correction does not hold, it fails, and the evidence says which.
+inline decider_evidence erratum(const proof& printed, const proof& corrected, std::string correction, std::string note = {}) {
+  decider_evidence e;
+  e.own = answer::fails;
+  e.if_false = (!printed.proved && corrected.proved) ? verdict::erratum : verdict::fails;
+  e.found.evidence["printed"] = printed.evidence;
+  e.found.evidence["corrected"] = corrected.evidence;
+  e.found.correction = std::move(correction);
+  e.found.note = std::move(note);
+  return e;
 }
 
 /// An erratum of a prose claim's words: the words quoted (in `evidence`) say other than what the
 /// evidence computed, and the computed statement is the correction.
-inline claim_result words_erratum(json evidence, std::string correction, std::string note = {}) {
-  claim_result r;
-  r.outcome = verdict::erratum;
-  r.evidence = std::move(evidence);
-  r.correction = std::move(correction);
-  r.note = std::move(note);
-  return r;
+inline decider_evidence words_erratum(json evidence, std::string correction, std::string note = {}) {
+  decider_evidence e;
+  e.own = answer::fails;
+  e.found.evidence = std::move(evidence);
+  e.found.correction = std::move(correction);
+  e.found.note = std::move(note);
+  return e;
 }
 
+/// Whether `e` comes to an erratum (a finding with its correction), as decide() will find.
+inline bool comes_to_erratum(const decider_evidence& e) { return verdict_of(e) == verdict::erratum; }
+
 /// A finding with its one line, "printed X, should be Y" (words): kept only when it is a finding.
-inline claim_result amended(claim_result r, const std::string& where, const std::string& printed, const std::string& should_be) {
-  if (r.outcome == verdict::erratum) r.amendments.push_back(amendment{where, printed, should_be, false});
-  return r;
+inline decider_evidence amended(decider_evidence e, const std::string& where, const std::string& printed, const std::string& should_be) {
+  if (comes_to_erratum(e)) e.found.amendments.push_back(amendment{where, printed, should_be, false});
+  return e;
 }
 
 /// A verdict that a word of the quoted sentence decides (the computation beside it cannot move it):
 /// said as such in the evidence ("lexical") and at the head of the note, so that it is not read as a
 /// computed finding.
-inline claim_result lexical(claim_result r, const std::string& word, const std::string& computed) {
+inline decider_evidence lexical(decider_evidence e, const std::string& word, const std::string& computed) {
+  claim_result& r = e.found;
   r.evidence["lexical"] = "the verdict follows from the word '" + word + "' read in the quoted sentence; " + computed;
   r.note = "Lexical: decided by the word '" + word + "'; " + computed + "." + (r.note.empty() ? "" : " " + r.note);
-  return r;
+  return e;
 }
 
 /// A computed result judged against the words quoted for it: when the computation holds but the
-/// words deny it ("not consistent", "not symplectic"), an erratum whose correction is `computed_statement`.
-inline claim_result as_the_words_say(claim_result computed, bool words_affirm, std::string computed_statement) {
-  if (computed.outcome != verdict::holds || words_affirm) return computed;
-  computed.outcome = verdict::erratum;  // the rest of what was computed (its formulas read, its certificate) stands
-  computed.correction = std::move(computed_statement);
+/// words deny it ("not consistent", "not symplectic"), each answer is the words' denial of it, an
+/// erratum whose correction is `computed_statement`.
+inline decider_evidence as_the_words_say(decider_evidence computed, bool words_affirm, std::string computed_statement) {
+  if (verdict_of(computed) != verdict::holds || words_affirm) return computed;
+  computed.ginac = negated(computed.ginac);
+  computed.own = negated(computed.own);
+  computed.lexical = negated(computed.lexical);
+  computed.if_false = verdict::erratum;  // the rest of what was computed (its formulas read, its certificate) stands
+  computed.found.correction = std::move(computed_statement);
   return computed;
 }
 

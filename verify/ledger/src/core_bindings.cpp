@@ -124,10 +124,13 @@ void check_core_bindings(const claim_record& record, const std::string& file, co
   }
 }
 
-claim_result bound_to_core(claim_result result, const std::vector<core_binding>& bindings, const shape_call& call, const run_context& ctx) {
-  if (bindings.empty()) return result;
+decider_evidence bound_to_core(decider_evidence e, const std::vector<core_binding>& bindings, const shape_call& call, const run_context& ctx) {
+  if (bindings.empty()) return e;
+  claim_result& result = e.found;
+  const bool erratum_without_core = verdict_of(e) == verdict::erratum;
   json evidence = json::array();
   std::vector<std::string> differ;
+  bool own_refutes = false;
   for (const core_binding& b : bindings) {
     bound_pair pair = read_binding(b, call, document_of(ctx));
     // A formula this claim proves wrong, with its correction: the core is compared with the correction.
@@ -138,7 +141,7 @@ claim_result bound_to_core(claim_result result, const std::vector<core_binding>&
       against = "as corrected by this claim";
     }
     const std::vector<std::string> entries = differing_entries(pair.core, pair.printed);
-    if (against == "as printed" && result.outcome == verdict::erratum && !entries.empty()) {
+    if (against == "as printed" && erratum_without_core && !entries.empty()) {
       // The claim proves the printed formula wrong but gives no formula to stand in its place: the
       // core cannot be compared with what should be printed, and that is said, not counted.
       evidence.push_back({{"core", b.function},
@@ -149,35 +152,44 @@ claim_result bound_to_core(claim_result result, const std::vector<core_binding>&
     }
     const kernel_decision own = kernel_decides_zero(kernel_difference(pair.core, pair.printed));
     const bool ginac_zero = entries.empty();
-    json e = {{"core", b.function},
+    json row = {{"core", b.function},
               {"formula", pair.read.locator + ", " + against},
               {"line", pair.read.line},
               {"ginac", ginac_zero ? "core − formula = 0 in normal form" : "core − formula ≠ 0 in normal form"},
               {"own_kernel", own.evidence}};
-    if (kernels_disagree_if(result, own.outcome != kernel_decision::result::not_applicable && ginac_zero != (own.outcome == kernel_decision::result::zero),
-                            kernels_differ_on(fmt::format("the core's {} against {}", b.function, pair.read.locator)))) {
-      e["agrees"] = false;
-      evidence.push_back(e);
+    if (own.outcome != kernel_decision::result::not_applicable && ginac_zero != (own.outcome == kernel_decision::result::zero)) {
+      row["agrees"] = false;
+      evidence.push_back(row);
       result.evidence["core_bound"] = evidence;
-      return result;
+      e.parts_differ = true;
+      e.disagreement = kernels_differ_on(fmt::format("the core's {} against {}", b.function, pair.read.locator));
+      return e;
     }
-    e["agrees"] = ginac_zero;
+    own_refutes = own_refutes || own.outcome == kernel_decision::result::nonzero;
+    row["agrees"] = ginac_zero;
     if (!ginac_zero) {
-      e["differs"] = entries;
+      row["differs"] = entries;
       differ.push_back(fmt::format("the core's {} is not {} {} ({})", b.function, pair.read.locator, against, fmt::join(entries, "; ")));
     }
-    evidence.push_back(e);
+    evidence.push_back(row);
   }
   result.evidence["core_bound"] = evidence;
-  if (!differ.empty() && result.outcome != verdict::kernels_disagree && result.outcome != verdict::text_changed) {
-    result.outcome = verdict::fails;
+  const verdict without_core = verdict_of(e);
+  if (!differ.empty() && without_core != verdict::kernels_disagree && without_core != verdict::text_changed) {
+    // Code and print differ: the statement, with "our core is the printed formula" in it, is false
+    // for GiNaC, and for our kernel where it decided a binding or the rest; nothing corrects it.
+    e.reached = decider_evidence::reach::judged;
+    e.ginac = answer::fails;
+    e.own = own_refutes || e.own == answer::fails ? answer::fails : answer::none;
+    e.lexical = answer::none;
+    e.if_false = verdict::fails;
     result.correction.clear();
     result.corrected_formulas.clear();
     result.note = fmt::format("Our code and the print disagree: {}. One of them is wrong (a changed core formula, or a changed printed one). ",
                               fmt::join(differ, "; ")) +
                   result.note;
   }
-  return result;
+  return e;
 }
 
 }  // namespace simpson::verify::detail

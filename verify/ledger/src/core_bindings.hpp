@@ -20,12 +20,13 @@ namespace simpson::verify::detail {
 void check_core_bindings(const claim_record& record, const std::string& file, const tex_document& document,
                          const claim_declarations& declared);
 
-/// `result` with the record's bindings judged: each core formula's difference with the printed
-/// formula it binds is zero in GiNaC's normal form and in our kernel, entry by entry. A difference
-/// makes the verdict `fails`, naming the core formula, the printed one and the entries that differ
-/// (a harness fault when the two kernels disagree). `call` carries the record's `with` (its `where`
+/// `e` with the record's bindings judged: each core formula's difference with the printed formula
+/// it binds is zero in GiNaC's normal form and in our kernel, entry by entry. The claim's statement
+/// then takes in "our core is the printed formula": a difference makes both kernels' answer no, and
+/// the verdict `fails`, naming the core formula, the printed one and the entries that differ (the
+/// kernels differing on a binding, kernels-disagree). `call` carries the record's `with` (its `where`
 /// definitions are put in on both sides) and the run's corrections (a consequence judged again
 /// compares the core with the corrected formula).
-claim_result bound_to_core(claim_result result, const std::vector<core_binding>& bindings, const shape_call& call, const run_context& ctx);
+decider_evidence bound_to_core(decider_evidence e, const std::vector<core_binding>& bindings, const shape_call& call, const run_context& ctx);
 
 }  // namespace simpson::verify::detail

@@ -76,43 +76,49 @@ std::vector<std::string> labels_read(const claim_record& r) {
 /// A shape's verdict against the sentence that states it (`says`, `property`): a fact that holds
 /// while the words deny it is a wording erratum, corrected by the fact; words that are neither the
 /// property nor its denial make the verdict text-changed (quote throws).
-claim_result as_the_sentence_says(claim_result result, const detail::shape_call& call, const run_context& ctx) {
+detail::decider_evidence as_the_sentence_says(detail::decider_evidence e, const detail::shape_call& call, const run_context& ctx) {
   const auto says = call.with.find("says"), property = call.with.find("property");
-  if (says == call.with.end() || property == call.with.end()) return result;
+  if (says == call.with.end() || property == call.with.end()) return e;
+  claim_result& result = e.found;
   const quoted_sentence said = quote(ctx, says->second.values.front());
   const bool affirmed = said.choice("property", affirmed_or_denied(property->second.values.front())) == "affirmed";
   result.evidence["stated"] = affirmed ? property->second.values.front() : "not " + property->second.values.front();
   const json& statement = result.evidence["exact"]["statement"];
   const std::string fact = "It is " + property->second.values.front() + ": " + (statement.is_string() ? statement.get<std::string>() : call.statement);
-  const bool denied = result.outcome == verdict::holds && !affirmed;
-  result = detail::as_the_words_say(std::move(result), affirmed, fact);
-  if (denied) result.note = "Wording: the sentence denies what the formulas it judges prove.";
-  return result;
+  const bool denied = detail::verdict_of(e) == verdict::holds && !affirmed;
+  e = detail::as_the_words_say(std::move(e), affirmed, fact);
+  if (denied) e.found.note = "Wording: the sentence denies what the formulas it judges prove.";
+  return e;
 }
 
-/// The check of a record: its bespoke check, or its shape run with its arguments and the file's
-/// declarations.
-detail::check_function check_of(const claim_record& r, const std::shared_ptr<const claim_declarations>& declared) {
+/// What decides a record, as evidence: its shape run with its arguments and the file's
+/// declarations, or its bespoke check with its facets; then against the sentence that states it,
+/// and with our core bound to the print.
+std::function<detail::decider_evidence(const run_context&)> judge_of(const claim_record& r, const std::shared_ptr<const claim_declarations>& declared) {
   detail::shape_call call{r.id, r.statement, r.with, declared};
   if (!r.shape.empty()) {
     const detail::proof_shape& shape = detail::proof_shapes().at(r.shape);
-    return [call, run = shape.run, core = r.core](const run_context& ctx) {
+    return [call, run = shape.run, core = r.core, coq_none = r.coq_none](const run_context& ctx) {
       detail::shape_call with_document = call;
       with_document.corrections = ctx.corrections;
       const auto start = std::chrono::steady_clock::now();
-      claim_result result = detail::decide(call.claim_id, call.statement, run(with_document, ctx));
-      result.printed_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();  // GiNaC's and ours
-      return detail::bound_to_core(as_the_sentence_says(std::move(result), with_document, ctx), core, with_document, ctx);
+      detail::decider_evidence e = run(with_document, ctx);
+      e.found.printed_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();  // GiNaC's and ours
+      if (!e.goals && e.found.certificate.empty() && e.found.certificate_missing.empty()) {
+        e.found.certificate_missing = coq_none.empty() ? "its exact proof is our kernel's alone: no Coq statement yet" : coq_none;
+      }
+      return detail::bound_to_core(as_the_sentence_says(std::move(e), with_document, ctx), core, with_document, ctx);
     };
   }
   const detail::registered_check* check = detail::registered_checks().find(r.check);
   if (!check) throw std::logic_error("claims_of: no check is named '" + r.check + "'");
-  if (r.core.empty()) return check->check;
-  return [call, run = check->check, core = r.core](const run_context& ctx) {
-    detail::shape_call with_document = call;
-    with_document.corrections = ctx.corrections;
-    return detail::bound_to_core(run(ctx), core, with_document, ctx);
-  };
+  return detail::bespoke_judge(r, *check, declared);
+}
+
+/// The check of a record: what decides it, made a verdict by decide() (decide.hpp), the one place
+/// that makes one.
+std::function<claim_result(const run_context&)> check_of(const claim_record& r, const std::shared_ptr<const claim_declarations>& declared) {
+  return detail::claim_check_of(judge_of(r, declared), r.id, r.statement);
 }
 
 std::vector<claim> claims_of(const std::vector<claim_record>& records, const std::shared_ptr<const claim_declarations>& declared) {
@@ -130,6 +136,25 @@ std::vector<claim> claims_of(const std::vector<claim_record>& records, const std
 }
 
 }  // namespace
+
+namespace detail {
+
+std::function<decider_evidence(const run_context&)> bespoke_judge(const claim_record& r, const registered_check& check,
+                                                                  const std::shared_ptr<const claim_declarations>& declared) {
+  const shape_call call{r.id, r.statement, r.with, declared};
+  return [call, check, core = r.core, coq_none = r.coq_none](const run_context& ctx) {
+    shape_call with_document = call;
+    with_document.corrections = ctx.corrections;
+    return with_facets(bound_to_core(check.check(ctx), core, with_document, ctx), check, call.claim_id, call.statement, coq_none, ctx);
+  };
+}
+
+std::function<claim_result(const run_context&)> claim_check_of(std::function<decider_evidence(const run_context&)> judge, const std::string& id,
+                                                        const std::string& statement) {
+  return [judge = std::move(judge), id, statement](const run_context& ctx) { return decide(id, statement, within_reach(judge, ctx)); };
+}
+
+}  // namespace detail
 
 claim_book read_claim_book(const std::string& text, const std::string& file) {
   claims_file_contents contents = read_claims_contents(text, file, [](const std::string& field, const std::string& name) {

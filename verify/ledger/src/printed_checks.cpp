@@ -28,7 +28,11 @@ ex with_gear(const ex& e, const symbolic_derivation& d) {
 
 namespace {
 
+using detail::answer;
+using detail::answer_of;
+using detail::decider_evidence;
 using detail::printed_outcome;
+using detail::verdict_of;
 
 /// The registered check that decides `c`, with its facets; null for a claim a proof shape decides.
 const detail::registered_check* bespoke_check(const claim& c) {
@@ -50,46 +54,56 @@ std::string then(const std::string& first, const std::string& second) {
   return first + (last == '.' || last == ':' || last == ';' ? " " : ". ") + second;
 }
 
-/// The verdict from the two kernels. Each proves the derived statement (ours on our
-/// transcription, in θ with the grid lemma; GiNaC from first principles, every symbol free); they
-/// must agree, or the verdict is kernels-disagree. When they agree that it holds, the printed side
-/// decides: holds, erratum (the derived formula is the correction) or fails (a printed property).
-void decide(claim_result& result, const printed_outcome& g, const std::string& claim_id) {
-  const bool own_derived = result.outcome != verdict::fails;
-  const verdict own = result.outcome;
+/// The two kernels on a bespoke check's derived statement, and GiNaC's on the printed one. Each
+/// proves the derived statement (ours on our transcription, in θ with the grid lemma; GiNaC from
+/// first principles, every symbol free); they must agree, or they differ on that part. When they
+/// agree that it holds, the printed side is GiNaC's alone: it holds, or it is false (an erratum, the
+/// derived formula its correction, or a printed property that fails). `quoted`: the claim quotes
+/// words, so that an erratum of ours may be of the words and not of the formula.
+decider_evidence with_printed(decider_evidence e, const printed_outcome& g, const std::string& claim_id, bool quoted) {
+  const verdict own = verdict_of(e);
+  const bool own_derived = own != verdict::fails;
+  claim_result& result = e.found;
   // An erratum of the quoted words (a claim that reads a formula and also judges prose about it)
   // stands whatever the printed formula: the words, not the transcription, were refuted.
-  const bool words_refuted = own == verdict::erratum && !result.quoted.empty();
-  if (detail::kernels_disagree_if(result, own_derived != g.derived_holds,
-                          "The two kernels disagree on '" + claim_id + "': ours " + (own_derived ? "proved" : "did not prove") +
-                              " the derived statement, GiNaC " + (g.derived_holds ? "proved" : "did not prove") + " it (" + g.derived + ")." +
-                              (result.note.empty() ? "" : " " + result.note))) {
-    return;
+  const bool words_refuted = own == verdict::erratum && quoted;
+  if (own_derived != g.derived_holds) {
+    e.parts_differ = true;
+    e.disagreement = "The two kernels disagree on '" + claim_id + "': ours " + (own_derived ? "proved" : "did not prove") +
+                     " the derived statement, GiNaC " + (g.derived_holds ? "proved" : "did not prove") + " it (" + g.derived + ")." +
+                     (result.note.empty() ? "" : " " + result.note);
+    return e;
   }
-  if (!g.derived_holds) {
-    result.outcome = verdict::fails;
-    return;
+  if (!g.derived_holds) {  // neither proved the derived statement: it fails
+    e.ginac = answer::fails;
+    e.if_false = verdict::fails;
+    return e;
   }
-  if (g.holds && words_refuted) {
+  if (g.holds && words_refuted) {  // GiNaC judged the formula, not the words: ours decide
     result.note = then("The printed formula holds (" + g.proved + "); the quoted words do not.", result.note);
-    return;
+    return e;
   }
+  // The printed side is GiNaC's: our kernel judged our transcription, which answers for the print
+  // only where it agrees (an erratum of the transcription that the print repeats).
+  e.ginac = answer_of(g.holds);
+  e.lexical = answer::none;
   if (g.holds) {
-    result.outcome = verdict::holds;
     if (own == verdict::erratum) {
       result.note = "This copy of the paper prints the derived formula: " + g.proved +
                     ". (Our kernel's transcription of the printed formula, typed from the GSI 2023 text, is the erratum it refutes.)";
       result.correction.clear();
+      e.own = answer::none;
     }
-    return;
+    return e;
   }
-  result.outcome = g.property || g.correction.empty() ? verdict::fails : verdict::erratum;
-  if (result.outcome == verdict::erratum && own != verdict::erratum) result.correction = g.correction;
+  e.if_false = g.property || g.correction.empty() ? verdict::fails : verdict::erratum;
+  if (e.if_false == verdict::erratum && own != verdict::erratum) result.correction = g.correction;
+  e.own = own == verdict::erratum ? answer::fails : answer::none;
   result.note = then((own == verdict::erratum ? "As printed: " : "The formula as printed in the paper's source differs from the derived one: ") +
                          g.proved,
                      result.note);
+  return e;
 }
-
 
 }  // namespace
 
@@ -134,69 +148,58 @@ std::size_t printed_formula_claim_count(const std::vector<claim>& claims) {
   return count;
 }
 
-namespace {
+namespace detail {
 
-/// The claim's own check, with the sentences it quotes recorded; a sentence gone or words that no
-/// longer parse make the verdict text-changed, the check's other findings dropped.
-claim_result checked_with_quotes(const claim& c, const run_context& ctx) {
-  json quotes = json::array();
-  run_context quoting = ctx;
-  quoting.quotes = &quotes;
-  claim_result result;
+decider_evidence within_reach(const std::function<decider_evidence(const run_context&)>& judge, const run_context& ctx) {
   try {
-    result = c.check(quoting);
+    return judge(ctx);
   } catch (const enclosure_undecided& e) {
-    result = claim_result{};
-    result.outcome = verdict::undecided;
-    result.evidence["undecided"] = e.what();
-    result.note = std::string("No enclosure decided this claim within the run's digits: ") + e.what() +
-                  ". Raise --enclosure-budget, or find why the enclosure is wide.";
+    claim_result found;
+    found.evidence["undecided"] = e.what();
+    found.note = std::string("No enclosure decided this claim within the run's digits: ") + e.what() +
+                 ". Raise --enclosure-budget, or find why the enclosure is wide.";
+    return beyond_reach(std::move(found));
   } catch (const text_changed& e) {
-    result = claim_result{};
-    result.outcome = verdict::text_changed;
-    result.evidence["text_changed"] = e.what();
-    result.note = std::string("The words this claim quotes did not read: ") + e.what() +
-                  ". Its check judges only words it reads: a new wording is judged once the claim's sentence pattern matches it "
-                  "(docs/claims-file.md, sentence patterns).";
+    claim_result found;
+    found.evidence["text_changed"] = e.what();
+    found.note = std::string("The words this claim quotes did not read: ") + e.what() +
+                 ". Its check judges only words it reads: a new wording is judged once the claim's sentence pattern matches it "
+                 "(docs/claims-file.md, sentence patterns).";
+    return stopped(decider_evidence::reach::words_changed, std::move(found));
   }
-  result.quoted = std::move(quotes);
-  return result;
 }
 
-}  // namespace
-
-claim_result check_claim(const claim& c, const run_context& ctx) {
-  claim_result result = checked_with_quotes(c, ctx);
-  if (result.outcome == verdict::text_changed || result.outcome == verdict::undecided) return result;
-  const detail::registered_check* facet = printed_facet(c);
-  if (facet == nullptr) {
-    // The check wrote its own, or why there is none (the floating claims: Gappa's and the lifting
-    // lemma; the proof shapes of claims files).
-    if (!result.certificate.empty() || !result.certificate_missing.empty()) return result;
-    const detail::registered_check* check = bespoke_check(c);
-    if (check == nullptr || !check->coq_goals) {
-      result.certificate_missing = detail::without_coq_statement(c, "its exact proof is our kernel's alone: no Coq statement yet");
-      return result;
+decider_evidence with_facets(decider_evidence e, const registered_check& check, const std::string& claim_id, const std::string& statement,
+                             const std::string& coq_none, const run_context& ctx) {
+  if (e.reached != decider_evidence::reach::judged || verdict_of(e) == verdict::undecided) return e;
+  const auto without_coq = [&](const std::string& otherwise) { return coq_none.empty() ? otherwise : coq_none; };
+  if (!check.printed) {
+    // The check wrote its own, or why there is none (the floating claims: Gappa's and the lifting lemma).
+    if (!e.found.certificate.empty() || !e.found.certificate_missing.empty()) return e;
+    if (!check.coq_goals) {
+      e.found.certificate_missing = without_coq("its exact proof is our kernel's alone: no Coq statement yet");
+      return e;
     }
-    detail::record_certificate(result, detail::coq_certificate(c.id, c.statement, check->coq_goals()));
-    return result;
+    e.goals = check.coq_goals();
+    return e;
   }
   if (!ctx.paper) {
-    result.certificate_missing = "the run has no paper to read the printed formula from";
-    return result;
+    e.found.certificate_missing = "the run has no paper to read the printed formula from";
+    return e;
   }
   const paper_reading& reading = *ctx.paper;
   const auto start = std::chrono::steady_clock::now();
-  const printed_outcome outcome = facet->printed(reading);
+  const printed_outcome outcome = check.printed(reading);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   json printed = json::array();
-  for (const std::string& name : facet->formulas) {
+  for (const std::string& name : check.formulas) {
     const printed_formula& f = reading.at(name);
     json parsed = json::array();
-    for (const GiNaC::ex& side : f.sides) parsed.push_back(detail::text_of(side));
+    for (const GiNaC::ex& side : f.sides) parsed.push_back(text_of(side));
     printed.push_back({{"label", f.source.locator}, {"line", f.source.line}, {"tex", folded_space(f.tex)},
                        {"parsed", parsed}});
   }
+  claim_result& result = e.found;
   result.printed = {{"source", reading.origin}, {"formulas", printed}};
   // What the claim's own check did, in its words when it says (evidence "exact"'s method).
   const bool says = result.evidence.contains("exact") && result.evidence["exact"].is_object() && result.evidence["exact"].contains("method");
@@ -204,14 +207,29 @@ claim_result check_claim(const claim& c, const run_context& ctx) {
                                          : "the claim's check above: our transcription, rational functions of theta with the grid lemma";
   result.evidence["kernels"] = {
       {"own", {{"statement", own_statement},
-               {"derived_holds", result.outcome != verdict::fails}}},
+               {"derived_holds", verdict_of(e) != verdict::fails}}},
       {"ginac", {{"printed", outcome.proved}, {"printed_holds", outcome.holds}, {"derived", outcome.derived},
                  {"derived_holds", outcome.derived_holds}}}};
   result.printed_seconds = seconds;
-  decide(result, outcome, c.id);
-  detail::coq_export certificate = detail::coq_certificate(c.id, c.statement, outcome.goals);
-  if (outcome.goals.empty()) certificate.not_exported = detail::without_coq_statement(c, certificate.not_exported);
-  detail::record_certificate(result, certificate);
+  e = with_printed(std::move(e), outcome, claim_id, ctx.quotes != nullptr && !ctx.quotes->empty());
+  if (outcome.goals.empty()) {
+    e.found.certificate.clear();
+    e.found.certificate_missing = without_coq(coq_certificate(claim_id, statement, outcome.goals).not_exported);
+    e.goals.reset();
+  } else {
+    e.goals = outcome.goals;
+  }
+  return e;
+}
+
+}  // namespace detail
+
+claim_result check_claim(const claim& c, const run_context& ctx) {
+  json quotes = json::array();
+  run_context quoting = ctx;
+  quoting.quotes = &quotes;
+  claim_result result = c.check(quoting);
+  result.quoted = std::move(quotes);
   return result;
 }
 

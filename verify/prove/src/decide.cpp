@@ -27,7 +27,13 @@ decider_evidence beyond_reach(claim_result found) {
 }
 
 verdict verdict_of(const decider_evidence& evidence) {
-  if (evidence.reached == decider_evidence::reach::tool_missing) return verdict::skipped;
+  switch (evidence.reached) {
+    case decider_evidence::reach::tool_missing: return verdict::skipped;
+    case decider_evidence::reach::words_changed: return verdict::text_changed;
+    case decider_evidence::reach::not_proved: return verdict::unproved;
+    case decider_evidence::reach::judged:
+    case decider_evidence::reach::beyond_reach: break;
+  }
   // Before reach: a fact the kernels differ on is a bug, whatever else the shape could judge.
   if (evidence.parts_differ || (evidence.ginac != answer::none && evidence.own != answer::none && evidence.ginac != evidence.own)) {
     return verdict::kernels_disagree;
@@ -41,6 +47,13 @@ verdict verdict_of(const decider_evidence& evidence) {
   return verdict::undecided;
 }
 
+decider_evidence stopped(decider_evidence::reach reached, claim_result found) {
+  decider_evidence e;
+  e.reached = reached;
+  e.found = std::move(found);
+  return e;
+}
+
 claim_result decide(const std::string& claim_id, const std::string& statement, decider_evidence evidence) {
   const verdict outcome = verdict_of(evidence);
   claim_result result = std::move(evidence.found);
@@ -49,6 +62,7 @@ claim_result decide(const std::string& claim_id, const std::string& statement, d
     result.correction.clear();
     result.amendments.clear();
     result.corrected_formulas.clear();
+    if (result.certificate_missing.empty()) result.certificate_missing = "the kernels disagree: nothing is certified";
   }
   if (outcome == verdict::undecided && evidence.reached == decider_evidence::reach::judged && result.note.empty()) {
     result.note = "Neither kernel decided " + evidence.statement + ".";

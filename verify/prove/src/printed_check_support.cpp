@@ -62,13 +62,6 @@ bool is_zero_expression(const ex& e) {
 
 const ex& printed_side(const paper_reading& r, const std::string& name, std::size_t side) { return r.at(name).sides.at(side); }
 
-bool kernels_disagree_if(claim_result& result, bool disagree, const std::string& why) {
-  if (!disagree) return false;
-  result.outcome = verdict::kernels_disagree;
-  result.note = why;
-  return true;
-}
-
 std::string kernels_differ_on(const std::string& what) {
   return "GiNaC and our kernel reached different conclusions on " + what + ": a bug in one of them.";
 }

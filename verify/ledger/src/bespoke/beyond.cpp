@@ -54,7 +54,7 @@ std::array<ex, 3> euler_lagrange(const symbolic_derivation& d, const ex& q, cons
   return out;
 }
 
-claim_result check_step_derivation(const run_context&) {
+decider_evidence check_step_derivation(const run_context&) {
   const symbolic_derivation& d = derivation();
   const GiNaC::symbol q("q"), p("p"), x("x"), a("a"), b("b"), c("c");
   const ex F = simpson_internal_residual<ex>(d.m, d.h, q, p, x, a, b);
@@ -65,9 +65,11 @@ claim_result check_step_derivation(const run_context&) {
   const std::array<ex, 3> E = euler_lagrange(d, q, x, y, a, b, c);
   const ex left = GiNaC::normal(E[0] - p_solved), internal = GiNaC::normal(E[1]), right = GiNaC::normal(E[2] - p_next);
   const bool fallback_is_next = force.arguments.size() == 1 && force.arguments[0].is_equal(next.q);
-  claim_result r;
+  decider_evidence judged;
+  claim_result& r = judged.found;
   const bool proved = left.is_zero() && internal.is_zero() && right.is_zero() && fallback_is_next;
-  r.outcome = proved ? verdict::holds : verdict::fails;
+  judged.own = answer_of(proved);
+  judged.if_false = verdict::fails;
   r.evidence["exact"] = {
       {"kernel", "GiNaC"},
       {"method", "L_h derived from Simpson's rule on the quadratic interpolant with V uninterpreted (derivation-phi3's "
@@ -84,7 +86,7 @@ claim_result check_step_derivation(const run_context&) {
   r.note = "The step's closed forms: q_{j+1} = q_j + (h/m) p_j - h^2/(6m) (V'(q_j) + 2 V'(q_m)), p_{j+1} = p_j - (h/6) (V'(q_j) "
            "+ 4 V'(q_m) + V'(q_{j+1})) (Simpson's rule for the impulse), with m (q_m - q_j) - (h/2) p_j + h^2/12 V'(q_j) + "
            "h^2/24 V'(q_m) = 0.";
-  return r;
+  return judged;
 }
 
 /// The Lobatto IIIA-IIIB stage equations at stages (q, x, y), with V' at them free symbols.
@@ -100,7 +102,7 @@ lobatto_system lobatto_at(const ex& m, const ex& h, const ex& q, const ex& p, co
   return {prk_stage_residuals(couple(for_q, for_p), m, h, q, p, stages, forces), prk_update(for_q, for_p, m, h, q, p, forces)};
 }
 
-claim_result check_lobatto_exact(json& evidence) {
+decider_evidence check_lobatto_exact(json& evidence) {
   const symbolic_derivation& d = derivation();
   const GiNaC::symbol q("q"), p("p"), x("x"), y("y"), a("a"), b("b"), c("c");
   const ex F = simpson_internal_residual<ex>(d.m, d.h, q, p, x, a, b);
@@ -134,9 +136,7 @@ claim_result check_lobatto_exact(json& evidence) {
                        {"checks", rows},
                        {"result", proved ? "the two systems have the same solutions and the same update, for any V"
                                          : "the systems differ"}};
-  claim_result r;
-  r.outcome = proved ? verdict::holds : verdict::fails;
-  return r;
+  return confirmed_if(proved, json::object());
 }
 
 /// A pendulum sample from an oscillator sample: m, ω, h and the state, with ωh ≤ 2.7 so that
@@ -247,9 +247,10 @@ json lobatto_run_enclosed(const run_context& ctx, enclosure_outcome& outcome) {
   return out;
 }
 
-claim_result check_lobatto_equivalence(const run_context& ctx) {
+decider_evidence check_lobatto_equivalence(const run_context& ctx) {
   json evidence;
-  claim_result r = check_lobatto_exact(evidence);
+  decider_evidence judged = check_lobatto_exact(evidence);
+  claim_result& r = judged.found;
   enclosure_outcome over_a_run = enclosure_outcome::undecided;
   evidence["numeric_run"] = {{"problem", "pendulum, (q, p) = (1, 0), m = omega = 1, h = 1/10, 100 steps: the largest "
                                          "|p_S - p_L| + |q_S - q_L| over the run"},
@@ -288,18 +289,18 @@ claim_result check_lobatto_equivalence(const run_context& ctx) {
   evidence["numeric"]["problem"] = "pendulum V = m omega^2 (1 - cos q), one step from each sample state, Simpson (q_m) against "
                                    "Lobatto IIIA-IIIB (its three stages), both enclosed through Krawczyk's test";
   r.evidence = evidence;
-  if (over_a_run == enclosure_outcome::undecided && r.outcome == verdict::holds) {
+  if (over_a_run == enclosure_outcome::undecided && judged.found_holds()) {
     throw enclosure_undecided("nonlinear-lobatto-equivalence: the 100-step run " +
                               evidence["numeric_run"]["enclosure"]["decision"].get<std::string>());
   }
-  if (r.outcome == verdict::holds && !(within && over_a_run == enclosure_outcome::holds)) r.outcome = verdict::fails;
+  if (!(within && over_a_run == enclosure_outcome::holds)) judged.own = answer::fails;  // the numeric run and recheck confirm, or it fails
   r.note = "Proved for every smooth V, not only polynomials: the two systems involve V only through V' at the nodes q_j, q_m, "
            "q_{j+1}, and agree for every value of those. So the Simpson variational integrator is the 3-stage Lobatto "
            "IIIA-IIIB pair for any force, and inherits its theory (order 4, symplecticity, backward error analysis).";
-  return r;
+  return judged;
 }
 
-claim_result check_nonlinear_symplectic(const run_context& ctx) {
+decider_evidence check_nonlinear_symplectic(const run_context& ctx) {
   const symbolic_derivation& d = derivation();
   const GiNaC::symbol q("q"), p("p"), x("x"), a("a"), b("b"), c("c"), A("A"), B("B"), C("C");
   // The update as a function of (q, p, x) and of the nodal force values; x = x(q, p) by F = 0.
@@ -334,7 +335,8 @@ claim_result check_nonlinear_symplectic(const run_context& ctx) {
     core_gaps.push_back(canonical_text(gap));
   }
   const bool proved = det_minus_one.is_zero() && core_matches;
-  claim_result r;
+  decider_evidence judged;
+  claim_result& r = judged.found;
   r.evidence["exact"] = {{"kernel", "GiNaC"},
                          {"method", "implicit function theorem on F(x) = 0, chain rule through the update with V' and V'' at "
                                     "q_j, q_m, q_{j+1} free symbols (a, b, c and A, B, C): any V"},
@@ -372,8 +374,9 @@ claim_result check_nonlinear_symplectic(const run_context& ctx) {
       within);
   r.evidence["numeric"]["problem"] = "pendulum: det of the Jacobian of one step, differentiated through the Newton solve "
                                      "(simpson_step_jacobian at the converged q_m)";
-  r.outcome = proved && within ? verdict::holds : verdict::fails;
-  return r;
+  judged.own = answer_of(proved && within);
+  judged.if_false = verdict::fails;
+  return judged;
 }
 
 
@@ -382,7 +385,7 @@ claim_result check_nonlinear_symplectic(const run_context& ctx) {
 /// enclosed (pendulum_exact_enclosed.hpp), at T = 10 for N = 10 ... 320. The order is proved
 /// between N and 2N when log2(error_N / error_2N) is enclosed within 1/2 of 4, as for the
 /// harmonic oscillator (conclusion-fourth-order); every pair must prove it.
-claim_result check_nonlinear_order(const run_context&) {
+decider_evidence check_nonlinear_order(const run_context&) {
   constexpr unsigned digits = 60;
   const std::vector<int> meshes{10, 20, 40, 80, 160, 320};
   json rows = json::array();
@@ -436,8 +439,8 @@ claim_result check_nonlinear_order(const run_context&) {
     worst_energy = std::max(worst_energy, std::abs(y.p * y.p / 2 + Vd.value(y.q) - H0) / H0);
     if (j == 10000) worst_first_tenth = worst_energy;
   }
-  claim_result r;
-  r.outcome = undecided ? verdict::fails : (proved ? verdict::holds : verdict::fails);
+  decider_evidence judged = confirmed_if(!undecided && proved, json::object());
+  claim_result& r = judged.found;
   r.evidence["enclosure"] = {
       {"method", "enclosures (MPFI, " + std::to_string(digits) + " digits): the scheme stepped from the exact start, q_m proved "
                  "unique at every step (Krawczyk); the exact solution q = 2 asin(k sn(K - t, k)), p = -2k cn(K - t, k), "
@@ -457,7 +460,7 @@ claim_result check_nonlinear_order(const run_context&) {
            ". In double with h = 0.1 the largest relative energy error is " +
            simpson::to_string(worst_first_tenth, 3) + " over the first 1e4 steps and " + simpson::to_string(worst_energy, 3) +
            " over 1e5: it stays at that level instead of drifting, as for a symplectic method.";
-  return r;
+  return judged;
 }
 
 /// The internal node of the one-step equation F(x) = 0 proved to exist and be unique, by Krawczyk's
@@ -489,7 +492,7 @@ json krawczyk_internal_nodes(const run_context& ctx, bool& all_proved) {
   return out;
 }
 
-claim_result check_internal_node_solvability(const run_context& ctx) {
+decider_evidence check_internal_node_solvability(const run_context& ctx) {
   const symbolic_derivation& d = derivation();
   const GiNaC::symbol& qm = GiNaC::ex_to<GiNaC::symbol>(d.q_m);
   // (equation-milieu-intervalle) as a fixed point q_m = G(q_m), G = (q_l + q_r)/2 + h^2 V'(q_m)/(8m).
@@ -506,10 +509,12 @@ claim_result check_internal_node_solvability(const run_context& ctx) {
   const GiNaC::symbol q("q"), p("p"), x("x"), a("a");
   const ex step_slope = GiNaC::normal(simpson_internal_residual<ex>(d.m, d.h, q, p, x, a, d.m * d.omega * d.omega * x).diff(x));
   const bool proved = fixed_point_form.is_zero() && coefficient.is_zero() && !at_bound.is_zero();
-  claim_result r;
+  decider_evidence judged;
+  claim_result& r = judged.found;
   bool krawczyk_proved = false;
   r.evidence["krawczyk"] = krawczyk_internal_nodes(ctx, krawczyk_proved);
-  r.outcome = proved && krawczyk_proved ? verdict::holds : verdict::fails;
+  judged.own = answer_of(proved && krawczyk_proved);
+  judged.if_false = verdict::fails;
   r.evidence["exact"] = {{"kernel", "GiNaC"},
                          {"dLh_dqm_plus_16m_over_3h_times_G_minus_qm", canonical_text(fixed_point_form)},
                          {"G_prime", canonical_text(G_slope)},
@@ -523,7 +528,7 @@ claim_result check_internal_node_solvability(const run_context& ctx) {
            "F' = m + h^2 V''(x)/24, a contraction when h^2 sup|V''|/(24m) < 1. On the oscillator F' = m(1 + omega^2 h^2/24) never "
            "vanishes: the step (Phi_3, denominator 24 + omega^2 h^2) is defined at omega^2 h^2 = 8, where the paper's elimination "
            "of q_m from q_l and q_r breaks down.";
-  return r;
+  return judged;
 }
 
 }  // namespace

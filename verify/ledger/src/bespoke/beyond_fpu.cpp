@@ -30,7 +30,7 @@ std::vector<double> stable_band_middles() {
 /// "In its second stable band Simpson's scheme keeps its own oscillatory energy I_d within 5% on the
 /// FPU chain over t ≤ 300, but not the flow's adiabatic invariant I, which departs from I(0) by more
 /// than I(0)": the runs at the middle of each band (ω = 50, Hairer, Lubich and Wanner's start).
-claim_result check_fpu_second_band(const run_context&) {
+decider_evidence check_fpu_second_band(const run_context&) {
   const std::vector<double> middles = stable_band_middles();
   if (middles.size() < 2) throw std::logic_error("fpu-second-band-invariant: Φ₃'s region has no second stable band");
   const fpu_settings settings;

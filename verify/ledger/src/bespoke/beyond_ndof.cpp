@@ -147,8 +147,9 @@ std::pair<std::string, bool> core_gap(const linear_system& s, const GiNaC::matri
   return {simpson::to_string(relative, 3), relative <= 64 * n * n * eps<Real>()};
 }
 
-claim_result check_ndof_exact(bool energy) {
-  claim_result r;
+decider_evidence check_ndof_exact(bool energy) {
+  decider_evidence judged;
+  claim_result& r = judged.found;
   json rows = json::array();
   bool all = true;
   bool same_map = true;
@@ -176,7 +177,8 @@ claim_result check_ndof_exact(bool energy) {
                       {"core_phi_mpfr100_relative_gap", gap}});
     }
   }
-  r.outcome = all && same_map ? verdict::holds : verdict::fails;
+  judged.own = answer_of(all && same_map);
+  judged.if_false = verdict::fails;
   r.evidence["exact"] = {{"kernel", "GiNaC (exact rationals)"},
                          {"method", energy ? "Phi^T Q Phi - Q = 0 and Q symmetric, Q = diag(M^-1, K (I - S/12)(I - S/24)(I - S/8)^-1), "
                                              "S = h^2 M^-1 K; Phi built from the step's equations in GiNaC"
@@ -184,16 +186,16 @@ claim_result check_ndof_exact(bool energy) {
                                              "equations in GiNaC"},
                          {"cases", rows},
                          {"core", "the core's ndof_simpson_map (Eigen, mpfr:100) is GiNaC's Phi within 64 n^2 eps relative in every case"}};
-  return r;
+  return judged;
 }
 
-claim_result check_ndof_symplectic(const run_context&) { return check_ndof_exact(false); }
+decider_evidence check_ndof_symplectic(const run_context&) { return check_ndof_exact(false); }
 
-claim_result check_ndof_energy(const run_context&) {
-  claim_result r = check_ndof_exact(true);
-  r.note = "The discrete energy for n degrees of freedom is H_d = p^T M^-1 p/2 + q^T K (I - S/12)(I - S/24)(I - S/8)^-1 q/2 with "
+decider_evidence check_ndof_energy(const run_context&) {
+  decider_evidence judged = check_ndof_exact(true);
+  judged.found.note = "The discrete energy for n degrees of freedom is H_d = p^T M^-1 p/2 + q^T K (I - S/12)(I - S/24)(I - S/8)^-1 q/2 with "
            "S = h^2 M^-1 K: the block analogue of (hamiltonien-discret), to which it reduces for n = 1.";
-  return r;
+  return judged;
 }
 
 /// A GiNaC rational as an exact rational.
@@ -262,7 +264,7 @@ bool predicted_stable(const polynomial& c, std::string& why) {
 
 /// Stability: Φ's exact characteristic polynomial against the scalar stable set at each ω_k² h², both
 /// decided exactly (Sturm) at h = k/20, k = 1..60, for each system.
-claim_result check_ndof_stability(const run_context&) {
+decider_evidence check_ndof_stability(const run_context&) {
   const GiNaC::symbol lambda("lambda"), x("x");
   json rows = json::array();
   bool all = true;
@@ -291,8 +293,10 @@ claim_result check_ndof_stability(const run_context&) {
     }
   }
   if (!undecided.empty() && all) throw enclosure_undecided("ndof-stability: " + undecided);
-  claim_result r;
-  r.outcome = all ? verdict::holds : verdict::fails;
+  decider_evidence judged;
+  claim_result& r = judged.found;
+  judged.own = answer_of(all);
+  judged.if_false = verdict::fails;
   r.evidence["exact"] = {
       {"method", "exact (rational arithmetic, Sturm sequences), no tolerance: Phi from the step's equations in GiNaC at h = k/20, "
                  "k = 1..60; its characteristic polynomial P(lambda) reduced to Q(mu), mu = lambda + 1/lambda; stable iff Q has "
@@ -301,7 +305,7 @@ claim_result check_ndof_stability(const run_context&) {
       {"cases", cases},
       {"stable_cases", stable_cases},
       {"rows", rows}};
-  return r;
+  return judged;
 }
 
 }  // namespace

@@ -21,11 +21,12 @@ constexpr int family_claim_degree = 6;
 /// Our kernel's derivation and GiNaC's (m, ω, h symbolic) of every member up to the claim's
 /// degree: holds when each member with a one-step map has det Φ = 1 and ΦᵀWΦ = W in both, GiNaC's
 /// Φ(1, 1, θ) is ours and obeys the scaling law, and the two kernels agree on which members have a map.
-claim_result check_family_symplectic(const run_context& ctx) {
+decider_evidence check_family_symplectic(const run_context& ctx) {
   // The Lobatto pairs every member is compared with, made once: the run's memo, or this check's own.
   run_memo own;
   run_memo* memo = ctx.memo != nullptr ? ctx.memo : &own;
-  claim_result out;
+  decider_evidence judged;
+  claim_result& out = judged.found;
   json members = json::array();
   bool all = true;
   int derived = 0, without_map = 0;
@@ -55,14 +56,15 @@ claim_result check_family_symplectic(const run_context& ctx) {
       members.push_back(row);
     }
   }
-  out.outcome = all ? verdict::holds : verdict::fails;
+  judged.own = answer_of(all);
+  judged.if_false = verdict::fails;
   out.evidence["method"] = fmt::format(
       "each member s = 1 … {} with each rule of family_rules(s), derived in our kernel (verify/family, m = omega = 1, h = theta) "
       "and in GiNaC (m, omega, h symbolic, the rule's moments from its own nodal polynomial)",
       family_claim_degree);
   out.evidence["members"] = members;
   out.evidence["summary"] = fmt::format("{} members with a one-step map, {} without", derived, without_map);
-  return out;
+  return judged;
 }
 
 /// The Coq goals: det Φ = 1 and ΦᵀWΦ = W for each member with a one-step map (GiNaC's Φ).

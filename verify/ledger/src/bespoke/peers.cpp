@@ -87,7 +87,7 @@ json compare_with_phi3(const std::string& peer, const std::string& field, const 
                                                      det_minus_one[det_order].to_string(root_name))}};
 }
 
-claim_result check_peer_schemes(const run_context& ctx) {
+decider_evidence check_peer_schemes(const run_context& ctx) {
   using rational_series = truncated_series<number_field_element<1, 1>, series_order>;
   using sqrt3_series = truncated_series<number_field_element<2, 3>, series_order>;
   using cbrt2_series = truncated_series<number_field_element<3, 2>, series_order>;

@@ -50,12 +50,13 @@ std::string without_requires(const std::string& text) {
   return out;
 }
 
-claim_result check_table_roundoff(const run_context& ctx) {
+decider_evidence check_table_roundoff(const run_context& ctx) {
   // The run's paper, or the embedded one; text_changed when the rows are gone.
   const printed_table1 printed = read_table1(ctx.paper != nullptr ? ctx.paper->source : embedded_paper());
   const std::array<std::array<double, 3>, 8>& values = printed.values;
   const std::array<std::array<int, 3>, 8>& digits = printed.digits;
-  claim_result out;
+  decider_evidence judged;
+  claim_result& out = judged.found;
   json meshes = json::array();
   std::string coq = "(* Table 1's meshes: for each N, Gappa's proof of the double program's one-step round-off (module\n"
                     "   Gappa_N<N>, gappa -Bcoq) and the lifting lemma with the harness's constants (module Lifting_N<N>). *)\n"
@@ -82,21 +83,18 @@ claim_result check_table_roundoff(const run_context& ctx) {
     const roundoff_problem problem = stepper_roundoff_problem("phi3-matrix", "double", m, paper_omega(), rational(1, N), box_p, box_q);
     const roundoff_proof proof = prove_roundoff(problem, false);  // coqc by --certify, on this claim's certificate
     if (proof.status == proof_status::skipped) {
-      out.outcome = verdict::skipped;
       out.evidence["skipped"] = proof.reason;
-      return out;
+      return stopped(decider_evidence::reach::tool_missing, std::move(out));
     }
     if (proof.status == proof_status::unproved) {
-      out.outcome = verdict::unproved;
       out.evidence["unproved"] = fmt::format("N = {}: {}", N, proof.reason);
-      return out;
+      return stopped(decider_evidence::reach::not_proved, std::move(out));
     }
     const std::optional<lifting_constants> lifting = lifting_for(problem, proof.bounds, y0);
     if (!lifting || lifting->valid_steps < N) {
-      out.outcome = verdict::unproved;
       out.evidence["unproved"] = fmt::format("N = {}: {}", N, !lifting ? "Φ₃ conserves no diagonal form in double's parameters"
                                                                      : "the box does not hold the orbit for N steps");
-      return out;
+      return stopped(decider_evidence::reach::not_proved, std::move(out));
     }
     const rational bound = rational(N) * lifting->epsilon * lifting->to_euclidean;
     json entries = json::array();
@@ -121,7 +119,8 @@ claim_result check_table_roundoff(const run_context& ctx) {
     lemmas.push_back("Gappa_" + suffix + ".l1");
     lemmas.push_back("Lifting_" + suffix + ".lifting");
   }
-  out.outcome = below ? verdict::holds : verdict::fails;
+  judged.own = answer_of(below);
+  judged.if_false = verdict::fails;
   out.evidence["floating"] = {
       {"method", fmt::format("Gappa: one step of the double program (Φ₃ as a matrix, its coefficients computed in double from m = {}, "
                              "ω = 2π rounded to double, h = 1/N) against Φ₃ at that ω exactly, on |p| ≤ {}, |q| ≤ {}; lifted over N "
@@ -135,7 +134,7 @@ claim_result check_table_roundoff(const run_context& ctx) {
              "; not the printed table's conventions (table-values) nor the paper's own code.";
   out.certificate = coq;
   out.certificate_lemmas = lemmas;
-  return out;
+  return judged;
 }
 
 }  // namespace

@@ -44,7 +44,7 @@ newmark_solution solve_newmark(const GiNaC::ex& m, const GiNaC::ex& w, const GiN
 
 /// Our side: at β = 1/4, γ = 1/2 Newmark's map is the core's newmark_map; over the family, det = 1
 /// exactly when γ = 1/2. The printed Φ is judged against the same solution by the printed facet below.
-claim_result check_newmark_identification(const run_context& ctx) {
+decider_evidence check_newmark_identification(const run_context& ctx) {
   const quoted_sentence said =
       quote(ctx, "the numerical scheme (\\ref{systeme-symplectique-ordre-2}) is one particular inconditionally stable version of the {family} scheme");
   said.choice("family", {{"Newmark", "Newmark (beta, gamma) family"}});

@@ -23,7 +23,7 @@ namespace {
 /// principle varies the abbreviated action, the integral of p q' = m q'^2, at fixed energy. Shown: L_h
 /// is Simpson's rule on L (corrected), and differs from Simpson's rule on p q' by Simpson's rule on
 /// H = m q'^2/2 + V, which is not zero (printed).
-claim_result check_maupertuis_naming(const run_context& ctx) {
+decider_evidence check_maupertuis_naming(const run_context& ctx) {
   const quoted_sentence said = quote(ctx, "We first write the {principle} principle $ \\, \\delta \\Sigma_d = 0 \\, $");
   // Maupertuis's principle varies the abbreviated action at fixed energy (Landau-Lifshitz, Mechanics, §44; Goldstein §8.6);
   // Hamilton's varies the integral of L dt with the end times fixed. "Least"/"stationary action" alone names no functional.

@@ -18,7 +18,7 @@ namespace {
 /// Our kernel's route through the same derivation, in θ: L_h (simpson_lagrangian, Simpson's rule on
 /// the quadratic interpolant) at the harmonic q_m is L_hʳ; q_m makes ∂L_h/∂q_m vanish; eliminating
 /// q_{j-1} with p_r and the scheme gives Φ₃.
-claim_result check_derivation_phi3(const run_context& ctx) {
+decider_evidence check_derivation_phi3(const run_context& ctx) {
   const proof steps = prove_zero_on_grid(
       std::string(unit_reduction) +
           "; dL_h/dq_m at q_m of (qm-oscillateur-harmonique), L_h^r - L_h at that q_m, and (Phi3) y - the state by "

@@ -42,7 +42,7 @@
 namespace simpson::verify::detail {
 namespace {
 
-claim_result check_scaling(const run_context& ctx) {
+decider_evidence check_scaling(const run_context& ctx) {
   // h = θ/ω with θ symbolic and m, ω, p, q on a grid. Each quantity is m^a ω^b h^c F(ω²h²) with
   // |a|, |b|, |c| <= 2, so (mω)² × gap is a polynomial of degree <= 4 in m and in ω, and of degree
   // <= 2 in p and q.
@@ -213,14 +213,14 @@ json table_evidence(bool& orders_match, bool& conservation_match,
   return e;
 }
 
-claim_result check_table_orders(const run_context& ctx) {
+decider_evidence check_table_orders(const run_context& ctx) {
   bool orders = false, conservation = false;
   json evidence;
   evidence["numeric"] = table_evidence(orders, conservation, read_table1(paper_of(ctx).source, ctx.quotes), stated_table1_solution(ctx), ctx.memo);
   return confirmed_if(orders, evidence);
 }
 
-claim_result check_table_conservation(const run_context& ctx) {
+decider_evidence check_table_conservation(const run_context& ctx) {
   bool orders = false, conservation = false;
   json evidence;
   evidence["numeric"] = table_evidence(orders, conservation, read_table1(paper_of(ctx).source, ctx.quotes), stated_table1_solution(ctx), ctx.memo);
@@ -248,7 +248,7 @@ json candidate_json(const convention_candidate& c, const std::vector<printed_ent
           {"worst_residual", simpson::to_string(c.worst, 3)}, {"joint_extent", joint}, {"entries", entries}};
 }
 
-claim_result check_table_values(const run_context& ctx) {
+decider_evidence check_table_values(const run_context& ctx) {
   const printed_table1 printed = read_table1(paper_of(ctx).source, ctx.quotes);
   const std::array<std::array<double, 3>, 8>& published = printed.values;
   const std::array<std::array<int, 3>, 8>& digits = printed.digits;
@@ -362,7 +362,7 @@ claim_result check_table_values(const run_context& ctx) {
 /// reading is stated and computed: "very close" = within 1/500 of the amplitude (a pixel of a
 /// 500-pixel panel: the curves cannot be told apart); "very satisfactory" = within 1/10 of the
 /// amplitude (the curve follows the exact one, visibly).
-claim_result check_figure1(const run_context& ctx) {
+decider_evidence check_figure1(const run_context& ctx) {
   const quoted_sentence said = quote(ctx, "Both schemes give very {quality} results. Observe that the momentum $ \\, p \\, $ is "
                                           "very close to the exact solution with the {scheme} scheme.");
   said.choice("quality", {{"satisfactory", "within 1/10 of the amplitude"}, {"good", "within 1/10 of the amplitude"}});
@@ -425,15 +425,20 @@ claim_result check_figure1(const run_context& ctx) {
   evidence["figure"] = {{"includegraphics", found ? included : "none before the caption"}, {"present", found && !included.empty()}};
   // The harness reads no figure's data: the caption's statements are unverifiable whatever file
   // \includegraphics names; the errors above are context, not proof.
-  claim_result r;
-  r.outcome = verdict::unverifiable;
+  // Whether the figure's data is in the source is read, not computed: it is not, so the caption's
+  // statements are unverifiable.
+  decider_evidence judged;
+  judged.statement = "the figure's data is in the source";
+  judged.lexical = answer::fails;
+  judged.if_false = verdict::unverifiable;
+  claim_result& r = judged.found;
   r.evidence = evidence;
   r.note = (found && !included.empty() ? "Figure 1 is included from '" + included + "', a file the harness does not read (no figure's data is in the source)"
                                        : "Figure 1 is absent from the source (" + std::string(found ? "\\includegraphics{ } names no file" : "no \\includegraphics") + ")") +
            ": the caption's statements are about a figure the text does not carry. For context only, not as proof: at N = 15 "
            "the errors above, read by the harness's own thresholds (1/10 and 1/500 of the amplitude), " +
            (both_satisfactory && named_close ? "agree with the caption" : "do not agree with the caption") + "; table1 redraws the figure (figure1.svg).";
-  return r;
+  return judged;
 }
 
 /// Section 9: "the elimination of the internal degree of freedom is not possible" in the nonlinear
@@ -442,7 +447,7 @@ claim_result check_figure1(const run_context& ctx) {
 /// contraction and q_m is unique and the limit of the iteration (Banach): eliminated implicitly,
 /// not in closed form. Computed in GiNaC from the printed equation, and for the pendulum V = m ω²
 /// (1 − cos q) the contraction constant exactly.
-claim_result check_nonlinear_internal_node(const run_context& ctx) {
+decider_evidence check_nonlinear_internal_node(const run_context& ctx) {
   const auto text_of = [](const GiNaC::ex& e) { return canonical_text(e); };
   const quoted_sentence said = quote(ctx, "The elimination of the internal degree of freedom is {possibility} in that case.");
   // Literally: "not possible" denies that q_m can be eliminated at all; "possible" affirms it.
@@ -460,7 +465,6 @@ claim_result check_nonlinear_internal_node(const run_context& ctx) {
   const bool linear_in_qm = linear.is_polynomial(qm) && linear.degree(qm) == 1 && linear.degree(f) == 1 &&
                             GiNaC::normal(linear.coeff(f, 1) - 1).is_zero();
   json evidence;
-  claim_result r;
   if (!linear_in_qm) {
     evidence["exact"] = {{"kernel", "GiNaC"}, {"printed", text_of(printed)}, {"result", "the printed equation is not A q_m + B + V'(q_m)"}};
     return confirmed_if(false, evidence);

@@ -16,7 +16,7 @@
 namespace simpson::verify::detail {
 namespace {
 
-claim_result check_phi3_shear_factorization(const run_context& ctx) {
+decider_evidence check_phi3_shear_factorization(const run_context& ctx) {
   // Our kernel: m = ω = 1, h = θ (lemma-dimensional-scaling).
   const oscillator_parameters<symbolic> unit = unit_oscillator_in_theta();
   const one_step_matrix<symbolic> phi = simpson_map(unit);

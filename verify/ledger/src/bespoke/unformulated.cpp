@@ -45,7 +45,7 @@ bool internal_equation_linear(int k, json& evidence) {
   return linear;
 }
 
-claim_result check_abstract_explicit(const run_context& ctx) {
+decider_evidence check_abstract_explicit(const run_context& ctx) {
   const quoted_sentence said = abstract_sentence(ctx);
   const std::string stated = said.containing("qualities", {{"implicit", "implicit"}, {"explicit", "explicit"}});
   // Qualified when the words restrict "explicit" to linear problems or the harmonic oscillator
@@ -105,7 +105,7 @@ claim_result check_abstract_explicit(const run_context& ctx) {
 /// solves the oscillator (q'' = -ω² q) and p = m dq/dt of it, and q's amplitude and phase taken from
 /// q(0) and q'(0)/ω, ω = 2π/T. Whether they are the experiment's is the convention search's, from
 /// them. Listed: what the section leaves unstated.
-claim_result check_experiment_conventions(const run_context& ctx) {
+decider_evidence check_experiment_conventions(const run_context& ctx) {
   const stated_solution stated = read_stated_solution(paper_of(ctx).source, ctx.quotes);
   const std::string q = stated.q_text, expected_p = stated.m_dq_dt;
   const int period = static_cast<int>(stated.period);

@@ -27,9 +27,10 @@ double ginac_derivation_seconds();
 /// How many of `claims` read a formula from the paper.
 std::size_t printed_formula_claim_count(const std::vector<claim>& claims);
 
-/// Runs the claim's check, then, when the run has a paper and the claim reads a formula, the
-/// GiNaC check. Both kernels must prove the derived statement (else kernels-disagree); the printed
-/// side then decides holds, erratum or fails.
+/// Runs the claim's check with the sentences it quotes recorded. A book's claim's check is its
+/// decider (its shape, or its bespoke check with the GiNaC check of the printed formulas it reads),
+/// its evidence made a verdict by decide() (decide.hpp): both kernels must prove the derived
+/// statement (else kernels-disagree); the printed side then decides holds, erratum or fails.
 claim_result check_claim(const claim& c, const run_context& ctx);
 
 }  // namespace simpson::verify

@@ -35,9 +35,12 @@ answer confirming(answer ginac, const kernel_decision& on_fact);
 
 struct decider_evidence {
   /// judged: the kernels answered (or not); beyond_reach: the statement is not of the shape's kind
-  /// (a map whose det is not 1, a condition not in one variable): undecided, a tool's limit and never
-  /// a finding; tool_missing: a program the check needs is not installed (skipped).
-  enum class reach { judged, beyond_reach, tool_missing };
+  /// (a map whose det is not 1, a condition not in one variable), or no enclosure decided it within
+  /// the run's digits: undecided, a tool's limit and never a finding; tool_missing: a program the
+  /// check needs is not installed (skipped); not_proved: a prover (Gappa) could not bound what the
+  /// statement bounds (unproved); words_changed: the words the claim quotes are not in the document,
+  /// or no longer parse (text-changed).
+  enum class reach { judged, beyond_reach, tool_missing, not_proved, words_changed };
   reach reached = reach::judged;
   /// The statement the kernels judged, in words: the note of kernels-disagree names it.
   std::string statement;
@@ -75,11 +78,16 @@ struct decider_evidence {
 /// Evidence that the statement is beyond the decider's reach, `found.note` saying why.
 decider_evidence beyond_reach(claim_result found);
 
+/// Evidence that stopped at `reached` (a tool missing, a bound not proved, words changed), `found`
+/// saying why.
+decider_evidence stopped(decider_evidence::reach reached, claim_result found);
+
 /// The two-kernel rule, alone: the verdict `evidence` comes to (decide() below, in words).
 verdict verdict_of(const decider_evidence& evidence);
 
 /// The verdict of `evidence` for the claim `claim_id` (its statement `statement`, the certificate's
-/// title), in this order: skipped where a tool is missing; kernels-disagree where both kernels
+/// title), in this order: skipped where a tool is missing, text-changed where the words changed,
+/// unproved where a prover could not bound it; kernels-disagree where both kernels
 /// answered and differ, or differ on a part (no finding then: its correction and amendments are
 /// dropped); undecided where the statement is beyond reach or neither kernel answered; else holds,
 /// or `if_false`. The certificate of `goals` is exported unless the kernels disagree.

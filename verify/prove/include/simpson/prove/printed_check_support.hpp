@@ -74,11 +74,6 @@ bool is_zero_expression(const GiNaC::ex& e);
 /// The printed side `side` (index into formula_location::sides) of formula `name`.
 const GiNaC::ex& printed_side(const paper_reading& r, const std::string& name, std::size_t side = 0);
 
-/// The two-kernel rule, in one place for every check: where our kernel decided and its conclusion is
-/// not GiNaC's (`disagree`), the verdict is kernels-disagree, a bug in one of them, `why` its note;
-/// returns whether it is, so that the caller's verdict stops there.
-bool kernels_disagree_if(claim_result& result, bool disagree, const std::string& why);
-
 /// The note of kernels-disagree on `what`: "GiNaC and our kernel reached different conclusions on …".
 std::string kernels_differ_on(const std::string& what);
 
