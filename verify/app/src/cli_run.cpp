@@ -40,11 +40,11 @@ extern "C" void record_signal(int signal) { interruption_signal().store(signal);
 
 /// Progress of long sections on stderr, at most two updates a second: on a terminal one line
 /// rewritten in place with a percentage, otherwise plain lines.
-void install_progress() {
+progress_sink progress_on_stderr() {
   using clock = std::chrono::steady_clock;
   const bool terminal = ::isatty(STDERR_FILENO) != 0;
   auto last = std::make_shared<clock::time_point>(clock::now());
-  set_progress_sink([terminal, last](const std::string& section, const std::string& what, double fraction) {
+  return [terminal, last](const std::string& section, const std::string& what, double fraction) {
     const auto now = clock::now();
     if (now - *last < std::chrono::milliseconds(500)) return;
     *last = now;
@@ -55,7 +55,7 @@ void install_progress() {
       fmt::print(stderr, "[{}]{} {}\n", section, percent, what);
     }
     std::fflush(stderr);
-  });
+  };
 }
 
 /// The exit code of a run stopped by a signal: 128 + its number (130 for SIGINT, 143 for SIGTERM).
@@ -229,8 +229,8 @@ int execute_run(prepared_run& r, const cli_options& o) {
   if (s.experiments.any() && !o.quiet) {
     fmt::print(stderr, "experiments: estimated cost {:.3g} units, about {} (budget {:.3g} units, about {})\n", cost.units,
                seconds_text(cost.units), default_cost_budget, seconds_text(default_cost_budget));
-    install_progress();
   }
+  const progress_sink work = s.experiments.any() && !o.quiet ? progress_on_stderr() : progress_sink{};
   try {
     throw_if_interrupted();  // a signal while the run was being set up: nothing was written yet
     const auto start = std::chrono::steady_clock::now();
@@ -241,7 +241,7 @@ int execute_run(prepared_run& r, const cli_options& o) {
       if (quiet) return;
       if (::isatty(STDERR_FILENO)) fmt::print(stderr, "\r\033[K");
       fmt::print(stderr, "[section] {:<34} {:.2f} s\n", section, seconds);
-    });
+    }, work);
     throw_if_interrupted();
     if (o.certify && !record.outcomes.empty()) {
       if (!o.quiet) fmt::print(stderr, "[coqc] checking the claims' Coq certificates ...\n");

@@ -39,10 +39,10 @@ paper_reading read_scene_paper(const scene& s, claim_book& book) {
 }
 
 run_record run(const scene& s, const progress_callback& progress,
-               const std::function<void(const std::string&, double)>& section_progress) {
+               const std::function<void(const std::string&, double)>& section_progress, const progress_sink& work) {
   auto book = std::make_shared<claim_book>(paper_book());
   const paper_reading paper = read_scene_paper(s, *book);
-  return run(s, std::move(book), paper, progress, section_progress);
+  return run(s, std::move(book), paper, progress, section_progress, work);
 }
 
 void apply_baseline(scene& s, const json& baseline, const std::string& name) {
@@ -69,7 +69,7 @@ std::string correction_change(const std::string& recorded, const std::string& no
 }
 
 run_record run(const scene& s, std::shared_ptr<const claim_book> book, const paper_reading& paper, const progress_callback& progress,
-               const std::function<void(const std::string&, double)>& section_progress) {
+               const std::function<void(const std::string&, double)>& section_progress, const progress_sink& work) {
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
   run_record r;
@@ -187,14 +187,19 @@ run_record run(const scene& s, std::shared_ptr<const claim_book> book, const pap
       return run_table1(settings);
     });
   }
-  if (e.work_precision) section([&] { return run_work_precision(*e.work_precision); });
+  // Each section's settings as the scene gives them, with where it reports its work.
+  const auto reporting = [&work](auto settings) {
+    settings.progress = work;
+    return settings;
+  };
+  if (e.work_precision) section([&] { return run_work_precision(reporting(*e.work_precision)); });
   // Error against work on the nonlinear problems beside the oscillator's (the paper scene's parts).
-  if (e.nonlinear) section([&] { return run_nonlinear(*e.nonlinear); });
-  if (e.stability) section([&] { return run_stability(*e.stability); });
-  if (e.long_time) section([&] { return run_long_time(*e.long_time); });
-  if (e.floating) section([&] { return run_floating(*e.floating); });
-  if (e.family) section([&] { return run_family(*e.family); });
-  if (e.fpu) section([&] { return run_fpu(*e.fpu); });
+  if (e.nonlinear) section([&] { return run_nonlinear(reporting(*e.nonlinear)); });
+  if (e.stability) section([&] { return run_stability(reporting(*e.stability)); });
+  if (e.long_time) section([&] { return run_long_time(reporting(*e.long_time)); });
+  if (e.floating) section([&] { return run_floating(reporting(*e.floating)); });
+  if (e.family) section([&] { return run_family(reporting(*e.family)); });
+  if (e.fpu) section([&] { return run_fpu(reporting(*e.fpu)); });
   // Φ₃ at the paper's configuration: the paper's, not a document's that a claims file checks.
   if (r.of_the_paper) r.paper_configuration = paper_configuration(s.precisions);
   r.environment = build_environment(s, paper);

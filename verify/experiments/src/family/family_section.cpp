@@ -93,7 +93,7 @@ std::string order_answer(const std::vector<member_analysis>& members, const std:
 
 /// Each member with a one-step map, stepped for V = 1 − cos q (the implicit step, Newton in long
 /// double), its order measured against the pendulum's exact solution beside its linear order.
-table pendulum_table(const std::vector<member_analysis>& members, const std::vector<long long>& steps) {
+table pendulum_table(const std::vector<member_analysis>& members, const std::vector<long long>& steps, const progress_sink& progress) {
   std::vector<column> columns{{"member", "member"}, {"linear_order", "order (oscillator, exact)"}, column::fixed_point("pendulum_order", "order (pendulum)", 2)};
   for (const long long n : steps) columns.push_back({fmt::format("error_N{}", n), fmt::format("error, N = {}", n)});
   columns.push_back({"note", "note"});
@@ -114,7 +114,7 @@ table pendulum_table(const std::vector<member_analysis>& members, const std::vec
     for (std::size_t k = 0; k < steps.size(); ++k) row.push_back(k < r.errors.size() ? figure::of(r.errors[k]) : figure{});
     row.push_back(figure::text(r.failure));
     t.add(row);
-    progress_step("family", "pendulum " + member_name(a.member));
+    progress_step(progress, "family", "pendulum " + member_name(a.member));
   }
   return t;
 }
@@ -277,13 +277,13 @@ section_result run_family(const family_settings& s) {
         lobatto_orders.push_back(fmt::format("s = {}: order {}{}", degree, a.order, full ? "" : " (not 2s)"));
       }
       analysed.push_back(a);
-      progress_step("family", member_name(member));
+      progress_step(s.progress, "family", member_name(member));
     }
   }
   out.add(std::move(rows));
   out.text(order_answer(analysed, lobatto_orders));
   if (s.ginac) out.add(discriminant_table(checked));
-  out.add(pendulum_table(analysed, s.pendulum_steps));
+  out.add(pendulum_table(analysed, s.pendulum_steps, s.progress));
   out.add(stability_chart(analysed, s.max_degree));
   if (stopped) out.text(fmt::format("Stopped at the budget of {} s: the members marked 'not run' were not derived.", s.budget_seconds));
   return out;

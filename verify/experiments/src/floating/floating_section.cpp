@@ -165,7 +165,7 @@ plot_description add_global(const floating_settings& s, coq_queue& queue, std::v
       if (r.uniform) continue;
       bound_curve.add(figure::integer(r.n), figure::of(std::stod(r.roundoff_bound)));
       seen_curve.add(figure::integer(r.n), figure::of(std::stod(r.roundoff_seen)));
-      progress_step("floating", name + " n = " + std::to_string(r.n));
+      progress_step(s.progress, "floating", name + " n = " + std::to_string(r.n));
     }
     // The proved formula beyond the runs: n = 10^9 where the box still holds the orbit.
     const long long far = 1'000'000'000;
@@ -272,7 +272,7 @@ section_result run_floating(const floating_settings& s) {
         cells.push_back(figure::text(""));
         one_step.push_back({std::move(cells), {}, false});
       }
-      progress_step("floating", stepper + " " + format);
+      progress_step(s.progress, "floating", stepper + " " + format);
     }
   }
   std::vector<pending_row> global_rows;
@@ -306,7 +306,7 @@ section_result run_floating(const floating_settings& s) {
               {"coq", "Coq (bound, lifting)"}}};
   std::optional<plot_description> plot;
   if (s.global) plot = add_global(s, queue, global_rows);
-  progress_step("floating", "coqc on the section's proofs");
+  progress_step(s.progress, "floating", "coqc on the section's proofs");
   queue.run();
   add_rows(rows, one_step, queue);
   out.add(std::move(rows));

@@ -253,7 +253,7 @@ section_result run_fpu(const fpu_settings& s) {
   // The reference's own error, estimated as its gap to the same method at half its step.
   const double reference_error = exchange_gap(reference, run_chain(fpu_method::gauss_legendre_2, chain, s, s.reference_omega_h / 2, exchange_time, s.samples));
   exchange_panels.push_back(exchange_panel(fmt::format("reference: gauss-legendre-2, ωh = {}", s.reference_omega_h), reference));
-  progress_step("fpu", "reference for the exchange");
+  progress_step(s.progress, "fpu", "reference for the exchange");
   table exchange{"exchange", fmt::format("The exchange against the reference, t ≤ {}", exchange_time),
                  fmt::format("max over j and t of |I_j − I_j of the reference| (Gauss–Legendre 2 at ωh = {}, interpolated at each "
                              "method's samples): 0 is the reference's exchange, about 1 an exchange out of phase. The reference's own "
@@ -266,7 +266,7 @@ section_result run_fpu(const fpu_settings& s) {
     for (std::size_t k = 0; k < s.omega_h.size(); ++k) {
       const double omega_h = s.omega_h[k];
       const chain_run r = run_chain(m, chain, s, omega_h, s.end_time, s.samples);
-      progress_step("fpu", fmt::format("{} at ωh = {}", name_of(m), omega_h));
+      progress_step(s.progress, "fpu", fmt::format("{} at ωh = {}", name_of(m), omega_h));
       // An unstable run's largest errors are those of the few samples before it stopped: left blank.
       runs.add({figure::text(name_of(m)), figure::of(omega_h), figure::integer(r.steps), r.ok() ? figure::of(r.max_energy_error) : figure{},
                 r.ok() ? figure::of(r.max_invariant_error) : figure{}, r.ok() ? figure::of(r.invariant_drift) : figure{},
@@ -396,7 +396,7 @@ section_result run_fpu(const fpu_settings& s) {
         else disagree.push_back(fmt::format("{} ({})", omega_h, r.status.value()));
       }
     }
-    progress_step("fpu", "scan of " + name_of(m));
+    progress_step(s.progress, "fpu", "scan of " + name_of(m));
     close_curve();
     // Each resonance against the grid points beside it (the nearest ok one on each side).
     for (std::size_t i = 0; i < steps.size(); ++i) {
@@ -485,7 +485,7 @@ section_result run_fpu(const fpu_settings& s) {
         continue;
       }
       const chain_run r = run_chain(m, chain, s, *omega_h, exchange_time, s.samples);
-      progress_step("fpu", fmt::format("{} at the cost of Störmer–Verlet at ωh = {}", name_of(m), at));
+      progress_step(s.progress, "fpu", fmt::format("{} at the cost of Störmer–Verlet at ωh = {}", name_of(m), at));
       const double per_step = r.gradients_per_step();
       const double gap = r.ok() ? exchange_gap(r, reference) : INFINITY;
       costs.add({figure::of(at), figure::text(name_of(m)), figure::of(*omega_h), figure::of(per_step),

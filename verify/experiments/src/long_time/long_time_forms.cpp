@@ -69,7 +69,7 @@ form_run run_form(form f, const long_time_settings& s) {
   for (long long j = 1; j <= s.steps_double; ++j) {
     if ((j & 0xFFFFF) == 0) {
       throw_if_interrupted();
-      progress_step("long_time", fmt::format("form {} step {}", name_of(f), j), static_cast<double>(j) / static_cast<double>(s.steps_double));
+      progress_step(s.progress, "long_time", fmt::format("form {} step {}", name_of(f), j), static_cast<double>(j) / static_cast<double>(s.steps_double));
     }
     switch (f) {
       case form::matrix: z.y = phi * z.y; break;

@@ -92,7 +92,7 @@ struct enclosed_long_run {
 /// error (unwrapped angle of (q, p/(mω)) minus t) against the prediction j (φ − θ) with φ the
 /// argument of the eigenvalue of Φ (the exact characteristic roots).
 template <class Real>
-long_run run_long(const long_run_case& c, const precision& prec, long long steps, long long windows, double theta) {
+long_run run_long(const long_run_case& c, const precision& prec, long long steps, long long windows, double theta, const progress_sink& progress) {
   using std::abs;
   using std::atan2;
   using std::sqrt;
@@ -176,7 +176,7 @@ long_run run_long(const long_run_case& c, const precision& prec, long long steps
       out.phase_measured.add(figure::of(t), figure::of(Real(abs(measured_phase_error))));
       out.phase_predicted.add(figure::of(t), figure::of(Real(abs(predicted_phase_error))));
     }
-    progress_step("long_time", fmt::format("{} {} step {}", name, prec.name(), j), static_cast<double>(j) / static_cast<double>(steps));
+    progress_step(progress, "long_time", fmt::format("{} {} step {}", name, prec.name(), j), static_cast<double>(j) / static_cast<double>(steps));
   }
   // Drift: log-log slope of the per-window maxima against time over the second half (0: bounded,
   // 1: linear drift, 0.5: a random walk of round-off).
@@ -288,7 +288,7 @@ section_result run_long_time(const long_time_settings& s) {
     for (const long_run_case& c : long_run_cases) {
       long_run r = visit_floating(prec, [&](auto tag) {
         using Real = typename decltype(tag)::type;
-        return run_long<Real>(c, prec, steps, s.windows, s.omega_h);
+        return run_long<Real>(c, prec, steps, s.windows, s.omega_h, s.progress);
       });
       rows.add(std::move(r.row));
       if (r.drift_law) out.expect(std::move(*r.drift_law));

@@ -56,7 +56,7 @@ brouwer_runs run_forms(const nonlinear_settings& s) {
     for (long long j = 1; j <= s.brouwer_steps; ++j) {
       if ((j & 0xFFFF) == 0) {
         throw_if_interrupted();
-        progress_step("nonlinear", fmt::format("Brouwer forms step {}", j), static_cast<double>(j) / static_cast<double>(s.brouwer_steps));
+        progress_step(s.progress, "nonlinear", fmt::format("Brouwer forms step {}", j), static_cast<double>(j) / static_cast<double>(s.brouwer_steps));
       }
       const nonlinear_step_result<double> step = simpson_nonlinear_step(1.0, h, V, standard);
       standard = step.state;

@@ -151,7 +151,7 @@ void add_double_pendulum(const nonlinear_settings& s, section_result& out) {
       } catch (const std::domain_error& e) {
         row.insert(row.end(), {figure{}, figure{}, figure{}, figure{}, figure{}, figure{}, figure::fault(std::string("failed: ") + e.what())});
       }
-      progress_step("nonlinear", fmt::format("double pendulum N = {}", N));
+      progress_step(s.progress, "nonlinear", fmt::format("double pendulum N = {}", N));
       pending.push_back(std::move(row));
     }
     const std::vector<Real> orders = observed_orders(ok_N, errors_q);

@@ -133,7 +133,7 @@ void add_nonlinear_pendulum(const nonlinear_settings& s, section_result& out) {
     std::vector<long long> ok_N;
     for (const long long N : s.pendulum_N) {
       runs.push_back(run_pendulum<Real>(s, N));
-      progress_step("nonlinear", fmt::format("pendulum {} N = {}", prec.name(), N));
+      progress_step(s.progress, "nonlinear", fmt::format("pendulum {} N = {}", prec.name(), N));
       if (runs.back().status.is_fault()) continue;
       eq.push_back(runs.back().error_q);
       ep.push_back(runs.back().error_p);

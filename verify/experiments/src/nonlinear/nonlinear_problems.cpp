@@ -341,7 +341,7 @@ problem_panels run_problem(const problem<Potential>& p, const nonlinear_settings
       } else {
         ++failed;
       }
-      progress_step("nonlinear", fmt::format("{} {} N = {}", p.name, traits_of(id).name, N));
+      progress_step(s.progress, "nonlinear", fmt::format("{} {} N = {}", p.name, traits_of(id).name, N));
       by_n.add(figure::integer(N), r.state_error);
       energy.add(figure::integer(N), r.energy_error);
       by_work.add(r.gradients, r.state_error);

@@ -125,7 +125,7 @@ std::pair<table, plot_description> extreme_omega_h(const stability_settings& s) 
         hd_digits.add(figure::of(th), hd_digits_kept);
       }
     });
-    progress_step("stability", prec.name());
+    progress_step(s.progress, "stability", prec.name());
     series carried{"digits the precision carries", line_style::dashed, 8};
     carried.reference = true;
     const auto [lowest, highest] = std::minmax_element(s.omega_h.begin(), s.omega_h.end());
@@ -196,9 +196,9 @@ section_result run_stability(const stability_settings& s) {
   out.add(region_table(report));
   detail::add_spectral_radius(report, out);
   detail::add_endpoint_growth(report, s.endpoint_power, out);
-  progress_step("stability", "exact region and endpoints");
+  progress_step(s.progress, "stability", "exact region and endpoints");
   detail::add_stiff_chain(report, s.stiff_ratios, s.stiff_doublings, out);
-  progress_step("stability", "stiff chain");
+  progress_step(s.progress, "stability", "stiff chain");
   auto [extreme, digits_plot] = extreme_omega_h(s);
   out.add(std::move(extreme)).add(mass_table(s)).add(std::move(digits_plot));
   return out;

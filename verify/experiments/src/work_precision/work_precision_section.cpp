@@ -319,7 +319,7 @@ section_result run_work_precision(const work_precision_settings& s) {
           series by_mesh = by_seconds;
           for (const long long N : s.meshes) {
             measured_run m = measure<Real>(scheme, form, prec, N, s.periods, s.timing, s.benchmark, exact_by_N[N], enclosed_by_N[N]);
-            progress_step("work_precision", fmt::format("{} ({}) {} N = {}", traits_of(scheme).name, form, prec.name(), N));
+            progress_step(s.progress, "work_precision", fmt::format("{} ({}) {} N = {}", traits_of(scheme).name, form, prec.name(), N));
             if (timed) by_seconds.add(m.seconds, m.error);
             const auto e = m.error.plottable(), t = m.seconds.plottable();
             // In double only: its errors are doubles, so the interpolation passes no enclosure through double.

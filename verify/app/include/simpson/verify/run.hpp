@@ -1,6 +1,7 @@
 #pragma once
 // Running a scene: its claims, then the experiment sections it asks for, into one run record.
 
+#include <simpson/verify/progress.hpp>
 #include <simpson/verify/claim.hpp>
 #include <simpson/verify/ledger.hpp>
 #include <simpson/verify/paper_reading.hpp>
@@ -77,12 +78,12 @@ using progress_callback = std::function<void(std::size_t, std::size_t, const cla
 /// Then runs the experiment sections the scene asks for (table1, work_precision, stability,
 /// long_time), calling `section_progress(name, seconds)` after each.
 run_record run(const scene& s, std::shared_ptr<const claim_book> book, const paper_reading& paper, const progress_callback& progress = {},
-               const std::function<void(const std::string&, double)>& section_progress = {});
+               const std::function<void(const std::string&, double)>& section_progress = {}, const progress_sink& work = {});
 
 /// The same for the paper's book, reading the scene's paper first (the embedded one unless the
 /// scene names a file) and binding the book to it.
 run_record run(const scene& s, const progress_callback& progress = {},
-               const std::function<void(const std::string&, double)>& section_progress = {});
+               const std::function<void(const std::string&, double)>& section_progress = {}, const progress_sink& work = {});
 
 /// The document a scene's book checks, read, and `book` bound to it (check_claims_file_formulas):
 /// the paper (embedded, or the scene's `paper` file), or the book's [document] from the scene's

@@ -4,6 +4,7 @@
 // harmonic oscillator in our exact kernel (verify/family) and analysed: det Φ, the conserved form,
 // the stability bands, the order and its error constant, the known scheme it equals.
 
+#include <simpson/verify/progress.hpp>
 #include <simpson/verify/result_model.hpp>
 
 #include <vector>
@@ -11,6 +12,8 @@
 namespace simpson::verify {
 
 struct family_settings {
+  /// Where the section reports each unit of work done (progress.hpp); none: nowhere.
+  progress_sink progress;
   int max_degree = 2;          // s = 1 … max_degree
   double budget_seconds = 60;  // no member is started past this; the rest are listed as not run
   bool ginac = true;           // each member derived again in GiNaC, m, ω, h symbolic

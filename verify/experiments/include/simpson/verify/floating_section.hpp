@@ -3,6 +3,7 @@
 // double, proved by Gappa from its rounded program and checked by coqc, beside the largest error
 // seen on random states (verify/floating).
 
+#include <simpson/verify/progress.hpp>
 #include <simpson/verify/result_model.hpp>
 
 #include <string>
@@ -11,6 +12,8 @@
 namespace simpson::verify {
 
 struct floating_settings {
+  /// Where the section reports each unit of work done (progress.hpp); none: nowhere.
+  progress_sink progress;
   std::vector<std::string> steppers{"phi3-matrix", "phi3-shear", "newmark-matrix", "leapfrog-verinum"};
   std::vector<std::string> formats{"float32", "double"};
   long long h_denominator = 10;  // h = 1/h_denominator for Φ₃ and Newmark (m = ω = 1); leapfrog: VeriNum's 1/32

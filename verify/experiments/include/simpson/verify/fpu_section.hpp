@@ -7,6 +7,7 @@
 // several ωh across Φ₃'s bands, over long times: the energy error, the oscillatory energy I (an
 // adiabatic invariant) and the exchange between its parts I₁, I₂, I₃; and each at equal cost.
 
+#include <simpson/verify/progress.hpp>
 #include <simpson/verify/result_model.hpp>
 
 #include <string>
@@ -15,6 +16,8 @@
 namespace simpson::verify {
 
 struct fpu_settings {
+  /// Where the section reports each unit of work done (progress.hpp); none: nowhere.
+  progress_sink progress;
   int m = 3;           // stiff springs (2m masses)
   double omega = 50;   // their frequency
   std::vector<double> omega_h{0.5, 1.5, 3.0, 4.0};  // the runs followed over time: ωh of the stiff springs

@@ -2,6 +2,7 @@
 // The long_time section: energy drift over long runs, bounded oscillation against drift, and the
 // phase error against the frequency predicted by the exact characteristic roots.
 
+#include <simpson/verify/progress.hpp>
 #include <simpson/verify/result_model.hpp>
 
 #include <string>
@@ -9,6 +10,8 @@
 namespace simpson::verify {
 
 struct long_time_settings {
+  /// Where the section reports each unit of work done (progress.hpp); none: nowhere.
+  progress_sink progress;
   long long steps_double = 10'000'000;
   long long steps_mpfr = 100'000;
   unsigned mpfr_digits = 50;

@@ -5,6 +5,7 @@
 // problem, Hénon–Heiles and the FPU chain for Simpson and its peers, every implicit one solved by the same Newton rule; the
 // linearized double pendulum of the authors' 2024 work, with its discrete energy.
 
+#include <simpson/verify/progress.hpp>
 #include <simpson/verify/result_model.hpp>
 #include <simpson/verify/work_precision_section.hpp>  // timing_policy
 
@@ -27,6 +28,8 @@ inline const std::vector<std::string>& nonlinear_problem_names() {
 }
 
 struct nonlinear_settings {
+  /// Where the section reports each unit of work done (progress.hpp); none: nowhere.
+  progress_sink progress;
   std::vector<std::string> parts = nonlinear_part_names();  // the parts run (the paper scene: "problems" alone)
   // The pendulum V = m ω² (1 − cos q), m = ω = 1, released from rest at q0 (0 < q0 < π).
   double pendulum_q0 = 1;

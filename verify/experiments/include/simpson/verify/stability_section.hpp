@@ -2,6 +2,7 @@
 // The stability section: the exact stability region of Φ₃, the behaviour at and around each
 // endpoint, a stiff linear chain, extreme ωh in each precision, and extreme masses.
 
+#include <simpson/verify/progress.hpp>
 #include <simpson/precision.hpp>
 #include <simpson/verify/result_model.hpp>
 #include <simpson/verify/stability_analysis.hpp>
@@ -11,6 +12,8 @@
 namespace simpson::verify {
 
 struct stability_settings {
+  /// Where the section reports each unit of work done (progress.hpp); none: nowhere.
+  progress_sink progress;
   std::vector<precision> precisions;
   std::vector<double> stiff_ratios{1e3, 1e6};  // ω_max/ω_min of the stiff chain
   int stiff_doublings = 30;                     // the stiff chain runs 2^stiff_doublings steps

@@ -2,6 +2,7 @@
 // The work_precision section: error against run time for the Simpson scheme and its peers, in
 // several precisions, each scheme advancing by its general step and by its own 2 × 2 matrix.
 
+#include <simpson/verify/progress.hpp>
 #include <simpson/precision.hpp>
 #include <simpson/scheme.hpp>
 #include <simpson/verify/result_model.hpp>
@@ -27,6 +28,8 @@ struct timing_policy {
 };
 
 struct work_precision_settings {
+  /// Where the section reports each unit of work done (progress.hpp); none: nowhere.
+  progress_sink progress;
   std::vector<scheme_id> schemes = all_schemes();
   std::vector<precision> precisions;
   std::vector<long long> meshes{16, 64, 256, 1024, 4096};  // N per period
