@@ -3,6 +3,8 @@
 // kernel's "no" pass under the other's "yes", or a finding survive a disagreement, would move them all.
 
 #include <simpson/prove/decide.hpp>
+#include <simpson/verify/enclosure_undecided.hpp>
+#include <simpson/verify/quoted_sentence.hpp>
 
 #include <gtest/gtest.h>
 
@@ -78,6 +80,19 @@ TEST(Decide, ADisagreementDropsTheFindingAndExportsNoCertificate) {
   EXPECT_EQ(agreed.outcome, verdict::erratum);
   EXPECT_EQ(agreed.correction, "det (phi) = 1 + h^4/144");
   EXPECT_NE(agreed.certificate.find("Lemma phi3_det"), std::string::npos) << agreed.certificate << agreed.certificate_missing;
+}
+
+TEST(Decide, WhatStopsAJudgeIsItsVerdictAndNoFinding) {
+  // An enclosure that decides nothing within the run's digits: undecided, the enclosure named.
+  const auto wide = claim_check_of([](const run_context&) -> decider_evidence { throw enclosure_undecided("0 ± 3e-20 at 640 digits"); }, "c", "s");
+  const claim_result undecided = wide(run_context{});
+  EXPECT_EQ(undecided.outcome, verdict::undecided);
+  EXPECT_NE(undecided.note.find("--enclosure-budget"), std::string::npos) << undecided.note;
+  // Words the claim quotes that no longer read: text-changed, whatever the judge would have found.
+  const auto reworded = claim_check_of([](const run_context&) -> decider_evidence { throw text_changed("the pattern is not in the document"); }, "c", "s");
+  const claim_result changed = reworded(run_context{});
+  EXPECT_EQ(changed.outcome, verdict::text_changed);
+  EXPECT_EQ(changed.evidence.value("text_changed", std::string()), "the pattern is not in the document");
 }
 
 }  // namespace

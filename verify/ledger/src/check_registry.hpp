@@ -77,10 +77,6 @@ class check_registry {
 /// Every check of the ledger, registered once with its facets.
 const check_registry& registered_checks();
 
-/// What `judge` found, or why it found nothing: no enclosure decided it within the run's digits
-/// (beyond reach: undecided), or the words it quotes did not read (text-changed).
-decider_evidence within_reach(const std::function<decider_evidence(const run_context&)>& judge, const run_context& ctx);
-
 /// A bespoke check's evidence with its facets: the GiNaC check of the printed formulas it reads
 /// (GiNaC's answer on the print, the two kernels on the derived statement), and the Coq goals,
 /// GiNaC's or our kernel's proof's; `coq_none`, the record's reason when there are none.
@@ -92,8 +88,5 @@ decider_evidence with_facets(decider_evidence e, const registered_check& check, 
 std::function<decider_evidence(const run_context&)> bespoke_judge(const claim_record& r, const registered_check& check,
                                                                   const std::shared_ptr<const claim_declarations>& declared);
 
-/// A claim's check: `judge`'s evidence within reach, made a verdict by decide().
-std::function<claim_result(const run_context&)> claim_check_of(std::function<decider_evidence(const run_context&)> judge, const std::string& id,
-                                                        const std::string& statement);
 
 }  // namespace simpson::verify::detail

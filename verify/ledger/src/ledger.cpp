@@ -149,11 +149,6 @@ std::function<decider_evidence(const run_context&)> bespoke_judge(const claim_re
   };
 }
 
-std::function<claim_result(const run_context&)> claim_check_of(std::function<decider_evidence(const run_context&)> judge, const std::string& id,
-                                                        const std::string& statement) {
-  return [judge = std::move(judge), id, statement](const run_context& ctx) { return decide(id, statement, within_reach(judge, ctx)); };
-}
-
 }  // namespace detail
 
 claim_book read_claim_book(const std::string& text, const std::string& file) {

@@ -150,25 +150,6 @@ std::size_t printed_formula_claim_count(const std::vector<claim>& claims) {
 
 namespace detail {
 
-decider_evidence within_reach(const std::function<decider_evidence(const run_context&)>& judge, const run_context& ctx) {
-  try {
-    return judge(ctx);
-  } catch (const enclosure_undecided& e) {
-    claim_result found;
-    found.evidence["undecided"] = e.what();
-    found.note = std::string("No enclosure decided this claim within the run's digits: ") + e.what() +
-                 ". Raise --enclosure-budget, or find why the enclosure is wide.";
-    return beyond_reach(std::move(found));
-  } catch (const text_changed& e) {
-    claim_result found;
-    found.evidence["text_changed"] = e.what();
-    found.note = std::string("The words this claim quotes did not read: ") + e.what() +
-                 ". Its check judges only words it reads: a new wording is judged once the claim's sentence pattern matches it "
-                 "(docs/claims-file.md, sentence patterns).";
-    return stopped(decider_evidence::reach::words_changed, std::move(found));
-  }
-}
-
 decider_evidence with_facets(decider_evidence e, const registered_check& check, const std::string& claim_id, const std::string& statement,
                              const std::string& coq_none, const run_context& ctx) {
   if (e.reached != decider_evidence::reach::judged || verdict_of(e) == verdict::undecided) return e;

@@ -1,5 +1,8 @@
 #include <simpson/prove/decide.hpp>
 
+#include <simpson/verify/enclosure_undecided.hpp>
+#include <simpson/verify/quoted_sentence.hpp>
+
 #include <utility>
 
 namespace simpson::verify::detail {
@@ -70,6 +73,31 @@ claim_result decide(const std::string& claim_id, const std::string& statement, d
   if (evidence.goals && outcome != verdict::kernels_disagree) record_certificate(result, coq_certificate(claim_id, statement, *evidence.goals));
   result.outcome = outcome;  // the engine's one verdict site
   return result;
+}
+
+decider_evidence within_reach(const judge& judged_by, const run_context& ctx) {
+  try {
+    return judged_by(ctx);
+  } catch (const enclosure_undecided& e) {
+    claim_result found;
+    found.evidence["undecided"] = e.what();
+    found.note = std::string("No enclosure decided this claim within the run's digits: ") + e.what() +
+                 ". Raise --enclosure-budget, or find why the enclosure is wide.";
+    return beyond_reach(std::move(found));
+  } catch (const text_changed& e) {
+    claim_result found;
+    found.evidence["text_changed"] = e.what();
+    found.note = std::string("The words this claim quotes did not read: ") + e.what() +
+                 ". Its check judges only words it reads: a new wording is judged once the claim's sentence pattern matches it "
+                 "(docs/claims-file.md, sentence patterns).";
+    return stopped(decider_evidence::reach::words_changed, std::move(found));
+  }
+}
+
+std::function<claim_result(const run_context&)> claim_check_of(judge judged_by, const std::string& claim_id, const std::string& statement) {
+  return [judged_by = std::move(judged_by), claim_id, statement](const run_context& ctx) {
+    return decide(claim_id, statement, within_reach(judged_by, ctx));
+  };
 }
 
 }  // namespace simpson::verify::detail

@@ -10,6 +10,7 @@
 #include <simpson/prove/kernel_zero.hpp>
 #include <simpson/prove/printed_check_support.hpp>
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -84,6 +85,16 @@ decider_evidence stopped(decider_evidence::reach reached, claim_result found);
 
 /// The two-kernel rule, alone: the verdict `evidence` comes to (decide() below, in words).
 verdict verdict_of(const decider_evidence& evidence);
+
+/// What decides a claim: its evidence, from the run's context.
+using judge = std::function<decider_evidence(const run_context&)>;
+
+/// What `judge` found, or why it found nothing: no enclosure decided it within the run's digits
+/// (beyond reach: undecided), or the words it quotes did not read (text-changed).
+decider_evidence within_reach(const judge& judged_by, const run_context& ctx);
+
+/// A claim's check: `judged_by`'s evidence within reach, made a verdict by decide().
+std::function<claim_result(const run_context&)> claim_check_of(judge judged_by, const std::string& claim_id, const std::string& statement);
 
 /// The verdict of `evidence` for the claim `claim_id` (its statement `statement`, the certificate's
 /// title), in this order: skipped where a tool is missing, text-changed where the words changed,
