@@ -45,6 +45,19 @@ GiNaC::matrix numeric_matrix(shape_reader& read, const std::string& parameter, u
 /// against the printed map (in the state's order): the same map, entry by entry in both kernels (a
 /// Coq lemma each), makes the printed scheme that method on this problem. The text is then judged on
 /// whether its prose names the method (`names`, any of them): presented as its own without the
+
+namespace {
+
+/// A word without its possessive ending ("Verlet's", "Verlet’s": Verlet).
+std::string without_possessive(const std::string& word) {
+  for (const std::string ending : {"'s", "\u2019s"}) {
+    if (word.size() > ending.size() && word.compare(word.size() - ending.size(), ending.size(), ending) == 0) return word.substr(0, word.size() - ending.size());
+  }
+  return word;
+}
+
+}  // namespace
+
 /// name, a finding (the record's class: naming). Not the same map: the method is not that one here.
 decider_evidence known_method_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
@@ -115,7 +128,8 @@ decider_evidence known_method_shape(const shape_call& call, const run_context& c
   std::vector<std::string> named;
   const std::vector<std::string> names = call.with.at("names").values;
   for (const prose_word& w : prose_words(paper_of(ctx).source, document_of(ctx))) {
-    if (std::find(names.begin(), names.end(), w.word) != names.end() && std::find(named.begin(), named.end(), w.word) == named.end()) named.push_back(w.word);
+    const std::string word = without_possessive(w.word);  // "Verlet's method" names Verlet
+    if (std::find(names.begin(), names.end(), word) != names.end() && std::find(named.begin(), named.end(), word) == named.end()) named.push_back(word);
   }
   claim_result result;
   result.printed = read.printed();
