@@ -22,6 +22,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -227,6 +228,21 @@ TEST(KernelZero, AnUninterpretedFunctionLinearlyForEachMonomialUpToTheFourth) {
 }
 
 // ---- the shapes, through a claims file: shapes_algebra_test.cpp, shapes_derivation_test.cpp, prose_shapes_test.cpp ----
+
+// A new shape is its file, its list line and its fixture folder (verify/tests/shapes/<shape>/, run
+// as shapes.<shape>): a shape without one, or a folder that names no shape, fails here.
+TEST(ProofShapes, EachShapeHasItsFixtureFolderAndEachFolderAShape) {
+  const std::filesystem::path fixtures = std::filesystem::path(SIMPSON_SOURCE_DIR) / "verify/tests/shapes";
+  for (const auto& [name, shape] : detail::proof_shapes()) {
+    EXPECT_TRUE(std::filesystem::exists(fixtures / name / "note.tex") && std::filesystem::exists(fixtures / name / "claims.toml"))
+        << "the shape '" << name << "' has no fixture folder " << (fixtures / name).string();
+  }
+  for (const auto& entry : std::filesystem::directory_iterator(fixtures)) {
+    if (entry.is_directory()) {
+      EXPECT_EQ(detail::proof_shapes().count(entry.path().filename().string()), 1u) << entry.path();
+    }
+  }
+}
 
 // Every hole a shape's pattern names is in the one table the shapes read their words by, and the
 // reference generated from it (--list-holes) lists it with the shapes that take it.
