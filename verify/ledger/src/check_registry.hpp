@@ -85,8 +85,8 @@ decider_evidence with_facets(decider_evidence e, const registered_check& check, 
 
 /// What decides a record a bespoke check decides (`check`: the book's, or a test's stand-in): the
 /// check, our core bound to the print, then its facets.
-std::function<decider_evidence(const run_context&)> bespoke_judge(const claim_record& r, const registered_check& check,
-                                                                  const std::shared_ptr<const claim_declarations>& declared);
+judge bespoke_judge(const claim_record& r, const registered_check& check,
+                    const std::shared_ptr<const claim_declarations>& declared);
 
 
 }  // namespace simpson::verify::detail

@@ -94,7 +94,7 @@ detail::decider_evidence as_the_sentence_says(detail::decider_evidence e, const 
 /// What decides a record, as evidence: its shape run with its arguments and the file's
 /// declarations, or its bespoke check with its facets; then against the sentence that states it,
 /// and with our core bound to the print.
-std::function<detail::decider_evidence(const run_context&)> judge_of(const claim_record& r, const std::shared_ptr<const claim_declarations>& declared) {
+detail::judge judge_of(const claim_record& r, const std::shared_ptr<const claim_declarations>& declared) {
   detail::shape_call call{r.id, r.statement, r.with, declared};
   if (!r.shape.empty()) {
     const detail::proof_shape& shape = detail::proof_shapes().at(r.shape);
@@ -139,8 +139,8 @@ std::vector<claim> claims_of(const std::vector<claim_record>& records, const std
 
 namespace detail {
 
-std::function<decider_evidence(const run_context&)> bespoke_judge(const claim_record& r, const registered_check& check,
-                                                                  const std::shared_ptr<const claim_declarations>& declared) {
+judge bespoke_judge(const claim_record& r, const registered_check& check,
+                    const std::shared_ptr<const claim_declarations>& declared) {
   const shape_call call{r.id, r.statement, r.with, declared};
   return [call, check, core = r.core, coq_none = r.coq_none](const run_context& ctx) {
     shape_call with_document = call;

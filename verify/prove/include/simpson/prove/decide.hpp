@@ -1,10 +1,10 @@
 #pragma once
-// What a decider found, and the one place that makes a verdict of it. A proof shape returns
-// `decider_evidence`: each kernel's answer on the statement it judged, what a "no" means (an erratum
-// with its correction, a plain failure, material that is absent), the goals Coq is to check, and
-// everything else it found (the evidence JSON, the printed formula, notes, amendments). decide()
-// applies the two-kernel rule, exports the certificate and sets the verdict: as LLVM lit's
-// `setResult`, nothing else in the engine writes one.
+// What a decider found, and the one place that makes a verdict of it. A proof shape, or a bespoke
+// check of a book, returns `decider_evidence`: each kernel's answer on the statement it judged, what
+// a "no" means (an erratum with its correction, a plain failure, material that is absent), the
+// goals Coq is to check, and everything else it found (the evidence JSON, the printed formula,
+// notes, amendments). decide() applies the two-kernel rule, exports the certificate and sets the
+// verdict: as LLVM lit's `setResult`, nothing else writes a claim's verdict.
 
 #include <simpson/prove/coq_export.hpp>
 #include <simpson/prove/kernel_zero.hpp>
