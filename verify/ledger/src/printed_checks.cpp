@@ -152,7 +152,10 @@ namespace detail {
 
 decider_evidence with_facets(decider_evidence e, const registered_check& check, const std::string& claim_id, const std::string& statement,
                              const std::string& coq_none, const run_context& ctx) {
-  if (e.reached != decider_evidence::reach::judged || verdict_of(e) == verdict::undecided) return e;
+  // Words that no longer read, or nothing decided: no facet and no certificate (a skipped or unproved
+  // floating claim still says why it has none).
+  const verdict own = verdict_of(e);
+  if (own == verdict::text_changed || own == verdict::undecided) return e;
   const auto without_coq = [&](const std::string& otherwise) { return coq_none.empty() ? otherwise : coq_none; };
   if (!check.printed) {
     // The check wrote its own, or why there is none (the floating claims: Gappa's and the lifting lemma).
