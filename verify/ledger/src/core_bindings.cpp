@@ -127,7 +127,7 @@ void check_core_bindings(const claim_record& record, const std::string& file, co
 decider_evidence bound_to_core(decider_evidence e, const std::vector<core_binding>& bindings, const shape_call& call, const run_context& ctx) {
   if (bindings.empty()) return e;
   claim_result& result = e.found;
-  const bool erratum_without_core = verdict_of(e) == verdict::erratum;
+  const verdict without_core = verdict_of(e);  // the claim's own verdict, before the bindings
   json evidence = json::array();
   std::vector<std::string> differ;
   bool own_refutes = false;
@@ -141,7 +141,7 @@ decider_evidence bound_to_core(decider_evidence e, const std::vector<core_bindin
       against = "as corrected by this claim";
     }
     const std::vector<std::string> entries = differing_entries(pair.core, pair.printed);
-    if (against == "as printed" && erratum_without_core && !entries.empty()) {
+    if (against == "as printed" && without_core == verdict::erratum && !entries.empty()) {
       // The claim proves the printed formula wrong but gives no formula to stand in its place: the
       // core cannot be compared with what should be printed, and that is said, not counted.
       evidence.push_back({{"core", b.function},
@@ -153,10 +153,10 @@ decider_evidence bound_to_core(decider_evidence e, const std::vector<core_bindin
     const kernel_decision own = kernel_decides_zero(kernel_difference(pair.core, pair.printed));
     const bool ginac_zero = entries.empty();
     json row = {{"core", b.function},
-              {"formula", pair.read.locator + ", " + against},
-              {"line", pair.read.line},
-              {"ginac", ginac_zero ? "core − formula = 0 in normal form" : "core − formula ≠ 0 in normal form"},
-              {"own_kernel", own.evidence}};
+                {"formula", pair.read.locator + ", " + against},
+                {"line", pair.read.line},
+                {"ginac", ginac_zero ? "core − formula = 0 in normal form" : "core − formula ≠ 0 in normal form"},
+                {"own_kernel", own.evidence}};
     if (own.outcome != kernel_decision::result::not_applicable && ginac_zero != (own.outcome == kernel_decision::result::zero)) {
       row["agrees"] = false;
       evidence.push_back(row);
@@ -174,7 +174,6 @@ decider_evidence bound_to_core(decider_evidence e, const std::vector<core_bindin
     evidence.push_back(row);
   }
   result.evidence["core_bound"] = evidence;
-  const verdict without_core = verdict_of(e);
   if (!differ.empty() && without_core != verdict::kernels_disagree && without_core != verdict::text_changed) {
     // Code and print differ: the statement, with "our core is the printed formula" in it, is false
     // for GiNaC, and for our kernel where it decided a binding or the rest; nothing corrects it.

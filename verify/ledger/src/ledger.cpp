@@ -105,7 +105,7 @@ detail::judge judge_of(const claim_record& r, const std::shared_ptr<const claim_
       detail::decider_evidence e = run(with_document, ctx);
       e.found.printed_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();  // GiNaC's and ours
       if (!e.goals && e.found.certificate.empty() && e.found.certificate_missing.empty()) {
-        e.found.certificate_missing = coq_none.empty() ? "its exact proof is our kernel's alone: no Coq statement yet" : coq_none;
+        e.found.certificate_missing = detail::without_coq_statement(coq_none);
       }
       return detail::bound_to_core(as_the_sentence_says(std::move(e), with_document, ctx), core, with_document, ctx);
     };

@@ -156,12 +156,11 @@ decider_evidence with_facets(decider_evidence e, const registered_check& check, 
   // floating claim still says why it has none).
   const verdict own = verdict_of(e);
   if (own == verdict::text_changed || own == verdict::undecided) return e;
-  const auto without_coq = [&](const std::string& otherwise) { return coq_none.empty() ? otherwise : coq_none; };
   if (!check.printed) {
     // The check wrote its own, or why there is none (the floating claims: Gappa's and the lifting lemma).
     if (!e.found.certificate.empty() || !e.found.certificate_missing.empty()) return e;
     if (!check.coq_goals) {
-      e.found.certificate_missing = without_coq("its exact proof is our kernel's alone: no Coq statement yet");
+      e.found.certificate_missing = without_coq_statement(coq_none);
       return e;
     }
     e.goals = check.coq_goals();
@@ -191,14 +190,14 @@ decider_evidence with_facets(decider_evidence e, const registered_check& check, 
                                          : "the claim's check above: our transcription, rational functions of theta with the grid lemma";
   result.evidence["kernels"] = {
       {"own", {{"statement", own_statement},
-               {"derived_holds", verdict_of(e) != verdict::fails}}},
+               {"derived_holds", own != verdict::fails}}},
       {"ginac", {{"printed", outcome.proved}, {"printed_holds", outcome.holds}, {"derived", outcome.derived},
                  {"derived_holds", outcome.derived_holds}}}};
   result.printed_seconds = seconds;
   e = with_printed(std::move(e), outcome, claim_id, ctx.quotes != nullptr && !ctx.quotes->empty());
   if (outcome.goals.empty()) {
     e.found.certificate.clear();
-    e.found.certificate_missing = without_coq(coq_certificate(claim_id, statement, outcome.goals).not_exported);
+    e.found.certificate_missing = without_coq_statement(coq_none, coq_certificate(claim_id, statement, outcome.goals).not_exported);
     e.goals.reset();
   } else {
     e.goals = outcome.goals;

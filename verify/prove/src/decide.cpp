@@ -22,12 +22,6 @@ answer confirming(answer ginac, const kernel_decision& on_fact) {
   return ginac == answer::holds ? answer::fails : answer::holds;
 }
 
-decider_evidence beyond_reach(claim_result found) {
-  decider_evidence e;
-  e.reached = decider_evidence::reach::beyond_reach;
-  e.found = std::move(found);
-  return e;
-}
 
 verdict verdict_of(const decider_evidence& evidence) {
   switch (evidence.reached) {
@@ -38,9 +32,7 @@ verdict verdict_of(const decider_evidence& evidence) {
     case decider_evidence::reach::beyond_reach: break;
   }
   // Before reach: a fact the kernels differ on is a bug, whatever else the shape could judge.
-  if (evidence.parts_differ || (evidence.ginac != answer::none && evidence.own != answer::none && evidence.ginac != evidence.own)) {
-    return verdict::kernels_disagree;
-  }
+  if (evidence.kernels_differ()) return verdict::kernels_disagree;
   if (evidence.reached == decider_evidence::reach::beyond_reach) return verdict::undecided;
   switch (evidence.agreed()) {
     case answer::holds: return verdict::holds;
@@ -56,6 +48,8 @@ decider_evidence stopped(decider_evidence::reach reached, claim_result found) {
   e.found = std::move(found);
   return e;
 }
+
+decider_evidence beyond_reach(claim_result found) { return stopped(decider_evidence::reach::beyond_reach, std::move(found)); }
 
 claim_result decide(const std::string& claim_id, const std::string& statement, decider_evidence evidence) {
   const verdict outcome = verdict_of(evidence);

@@ -178,7 +178,7 @@ proof_goal sign_goal(const std::string& name, const ex& lhs, int sign, std::vect
   return g;
 }
 
-std::string without_coq_statement(const claim& c, const std::string& otherwise) { return c.coq_none.empty() ? otherwise : c.coq_none; }
+std::string without_coq_statement(const std::string& coq_none, const std::string& otherwise) { return coq_none.empty() ? otherwise : coq_none; }
 
 /// The polynomial part of e (its Order terms dropped) and the order k of its O(h^k), 0 when none.
 std::pair<GiNaC::ex, int> split_order(const GiNaC::ex& e, const GiNaC::ex& h) {

@@ -70,8 +70,10 @@ struct decider_evidence {
   /// value of a determinant, a correction's derivation), never to set a verdict.
   bool found_holds() const { return agreed() == answer::holds; }
   bool found_false() const { return agreed() == answer::fails; }
+  /// The two kernels differ: both answered, and not alike, or they differ on a part.
+  bool kernels_differ() const { return parts_differ || (ginac != answer::none && own != answer::none && ginac != own); }
   answer agreed() const {
-    if (parts_differ || (ginac != answer::none && own != answer::none && ginac != own)) return answer::none;
+    if (kernels_differ()) return answer::none;
     return ginac != answer::none ? ginac : own != answer::none ? own : lexical;
   }
 };

@@ -45,7 +45,8 @@ proof_goal sign_goal(const std::string& name, const GiNaC::ex& lhs, int sign, st
 
 /// Why a claim has no Coq statement (its check has no Coq goals, or a formula claim whose GiNaC
 /// check decides no identity): its record's `coq_none`, or `otherwise` when the record gives none.
-std::string without_coq_statement(const claim& c, const std::string& otherwise);
+std::string without_coq_statement(const std::string& coq_none,
+                                  const std::string& otherwise = "its exact proof is our kernel's alone: no Coq statement yet");
 
 /// What the GiNaC kernel found for one claim.
 struct printed_outcome {
