@@ -45,8 +45,7 @@ TEST(ClaimsFile, TheEmbeddedFileIsTheLedgerRecordForRecord) {
   std::set<std::string> headline;
   for (std::size_t k = 0; k < records.size(); ++k) {
     EXPECT_EQ(records[k].id, paper_book().claims[k].id);
-    const decider from_record = records[k].shape.empty() ? decider{check_decider{records[k].check}} : decider{shape_decider{records[k].shape}};
-    EXPECT_EQ(from_record, paper_book().claims[k].decided_by);
+    EXPECT_EQ(decider_of(records[k]), paper_book().claims[k].decided_by);
     EXPECT_EQ(records[k].expected, paper_book().claims[k].expected) << records[k].id;
     if (records[k].headline) headline.insert(records[k].id);
   }
@@ -164,9 +163,13 @@ INSTANTIATE_TEST_SUITE_P(
         bad_file{"symbol_twice", "[document]\ntitle = 'T'\n[symbols]\npositive = ['h']\nreal = ['h']\n" + good_record,
                  "claims file 'test.toml', line 5, field 'symbols.real': 'h' is declared twice"},
         bad_file{"check_and_shape", replaced(good_record, "check = \"a-check\"", "check = \"a-check\"\nshape = \"identity\""),
-                 "claims file 'test.toml', line 2, field 'check': a record names either a check or a shape, not both"},
+                 "claims file 'test.toml', line 2, field 'check': a record names one of a shape, an observed fact and a check, not two"},
+        bad_file{"check_and_observed_fact", replaced(good_record, "check = \"a-check\"", "check = \"a-check\"\nobserves = \"a-check\""),
+                 "claims file 'test.toml', line 2, field 'observes': a record names one of a shape, an observed fact and a check, not two"},
+        bad_file{"unknown_fact", replaced(good_record, "check = \"a-check\"", "observes = \"table1.nothing\""),
+                 "claims file 'test.toml', line 8, field 'observes': no experiment publishes a fact named 'table1.nothing' (simpson-verify --list-facts)"},
         bad_file{"neither_check_nor_shape", replaced(good_record, "check = \"a-check\"\n", ""),
-                 "claims file 'test.toml', line 2, field 'shape': missing: a record names the proof shape (or the bespoke check) that decides it"},
+                 "claims file 'test.toml', line 2, field 'shape': missing: a record names the proof shape, the observed fact or the bespoke check that decides it"},
         bad_file{"with_without_shape", replaced(good_record, "check = \"a-check\"", "check = \"a-check\"\nwith = { lhs = \"x\" }"),
                  "claims file 'test.toml', line 9, field 'with': arguments without a shape"},
         bad_file{"empty", "# nothing\n", "claims file 'test.toml', line 1, field 'claim': no [[claim]] record"}),

@@ -95,5 +95,21 @@ TEST(Decide, WhatStopsAJudgeIsItsVerdictAndNoFinding) {
   EXPECT_EQ(changed.evidence.value("text_changed", std::string()), "the pattern is not in the document");
 }
 
+TEST(Decide, AnObservedFactHoldsOrFailsAndOffersNoCorrection) {
+  // A fact an experiment published: found false, it fails (never an erratum: an observation proves
+  // no correction), and it says why no Coq statement is exported.
+  const published_fact found{true, json{{"numeric", "measured"}}, "as measured"};
+  const claim_result held = decide("table-orders", "orders", observed(found, ""));
+  EXPECT_EQ(held.outcome, verdict::holds);
+  EXPECT_EQ(held.evidence, found.evidence);
+  EXPECT_EQ(held.note, "as measured");
+  EXPECT_EQ(held.certificate_missing, "a fact an experiment measured: nothing for a proof assistant to state");
+  EXPECT_TRUE(held.certificate.empty());
+  const claim_result failed = decide("table-orders", "orders", observed(published_fact{false, json::object(), ""}, "the record's reason"));
+  EXPECT_EQ(failed.outcome, verdict::fails);
+  EXPECT_TRUE(failed.correction.empty());
+  EXPECT_EQ(failed.certificate_missing, "the record's reason");
+}
+
 }  // namespace
 }  // namespace simpson::verify::detail

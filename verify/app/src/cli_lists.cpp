@@ -13,6 +13,17 @@
 #include <vector>
 
 namespace simpson::verify {
+namespace {
+
+/// What decides a record, as the Markdown list spells it: "shape `identity`", "observes
+/// `table1.printed-orders`" or "check `scaling`".
+std::string decided_by_markdown(const claim_record& r) {
+  if (!r.shape.empty()) return "shape `" + r.shape + "`";
+  if (!r.observes.empty()) return "observes `" + r.observes + "`";
+  return "check `" + r.check + "`";
+}
+
+}  // namespace
 
 int list_claims(const claim_book& book, const std::string& format) {
   if (format == "json") {
@@ -36,7 +47,7 @@ int list_claims(const claim_book& book, const std::string& format) {
       std::vector<std::string> core;
       for (const core_binding& b : r.core) core.push_back("`" + b.function + "`");
       const std::string expected = to_string(c.expected) + (c.follows_from.empty() ? "" : ", follows from `" + c.follows_from + "`");
-      fmt::print("| `{}` | {} | {} | {} | {} | {} | {} |\n", c.id, c.section, r.shape.empty() ? "check `" + r.check + "`" : "shape `" + r.shape + "`",
+      fmt::print("| `{}` | {} | {} | {} | {} | {} | {} |\n", c.id, c.section, decided_by_markdown(r),
                  c.equation, to_string(c.origin), expected, core.empty() ? "" : fmt::format("{}", fmt::join(core, ", ")));
     }
     return 0;

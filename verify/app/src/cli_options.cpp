@@ -95,6 +95,9 @@ void declare_options(CLI::App& app, cli_options& o) {
   app.add_flag("--list-core", o.want_core,
                "list the formulas of our core a record may bind to the print (core = { function = ... }), the label each "
                "implements and the records that bind it (a Markdown table), and exit");
+  app.add_flag("--list-facts", o.want_facts,
+               "list the facts the experiments publish that a record may observe (observes = \"table1.printed-orders\"), what "
+               "each states and the records that observe it (a Markdown table), and exit");
 }
 
 }  // namespace simpson::verify

@@ -104,6 +104,10 @@ std::optional<int> prepare_run(cli_options& o, const CLI::App& app, int argc, ch
       fmt::print("{}", simpson::verify::holes_markdown());
       return 0;
     }
+    if (o.want_facts) {
+      fmt::print("{}", simpson::verify::published_facts_markdown(*book));
+      return 0;
+    }
     if (o.want_core) {
       fmt::print("{}", simpson::verify::core_formulas_markdown(*book));
       return 0;

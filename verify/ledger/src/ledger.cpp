@@ -15,6 +15,7 @@
 #include "core_bindings.hpp"
 #include "derivation_support.hpp"
 #include "embedded_claims.hpp"
+#include "published_facts.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -43,7 +44,6 @@ const check_registry& registered_checks() {
     add_shear_checks(all);
     add_beyond_checks(all);
     add_beyond_ndof_checks(all);
-    add_beyond_fpu_checks(all);
     add_family_checks(all);
     return all;
   }();
@@ -91,9 +91,9 @@ detail::decider_evidence as_the_sentence_says(detail::decider_evidence e, const 
   return e;
 }
 
-/// What decides a record, as evidence: its shape run with its arguments and the file's
-/// declarations, or its bespoke check with its facets; then against the sentence that states it,
-/// and with our core bound to the print.
+/// What decides a record, as evidence: its shape run with its arguments and the file's declarations
+/// (then against the sentence that states it), the fact an experiment publishes that it observes, or
+/// its bespoke check with its facets; each with our core bound to the print.
 detail::judge judge_of(const claim_record& r, const std::shared_ptr<const claim_declarations>& declared) {
   detail::shape_call call{r.id, r.statement, r.with, declared};
   if (!r.shape.empty()) {
@@ -108,6 +108,15 @@ detail::judge judge_of(const claim_record& r, const std::shared_ptr<const claim_
         e.found.certificate_missing = detail::without_coq_statement(coq_none);
       }
       return detail::bound_to_core(as_the_sentence_says(std::move(e), with_document, ctx), core, with_document, ctx);
+    };
+  }
+  if (!r.observes.empty()) {
+    const auto fact = detail::published_facts().find(r.observes);
+    if (fact == detail::published_facts().end()) throw std::logic_error("claims_of: no experiment publishes '" + r.observes + "'");
+    return [call, publish = fact->second.publish, core = r.core, coq_none = r.coq_none](const run_context& ctx) {
+      detail::shape_call with_document = call;
+      with_document.corrections = ctx.corrections;
+      return detail::bound_to_core(detail::observed(publish(ctx), coq_none), core, with_document, ctx);
     };
   }
   const detail::registered_check* check = detail::registered_checks().find(r.check);
@@ -125,7 +134,7 @@ std::vector<claim> claims_of(const std::vector<claim_record>& records, const std
   std::vector<claim> out;
   for (const claim_record& r : records) {
     claim c{r.id, r.section, r.equation, r.statement, r.methods, r.expected, check_of(r, declared), r.kind, r.follows_from, r.typographical, r.origin};
-    c.decided_by = r.shape.empty() ? decider{check_decider{r.check}} : decider{shape_decider{r.shape}};
+    c.decided_by = decider_of(r);
     c.labels_read = labels_read(r);
     c.headline = r.headline;
     c.coq_none = r.coq_none;
@@ -155,6 +164,7 @@ claim_book read_claim_book(const std::string& text, const std::string& file) {
   claims_file_contents contents = read_claims_contents(text, file, [](const std::string& field, const std::string& name) {
     if (field == "shape") return detail::proof_shapes().count(name) > 0;
     if (field == "core") return detail::find_core_formula(name) != nullptr;
+    if (field == "observes") return detail::published_facts().count(name) > 0;
     return detail::registered_checks().find(name) != nullptr;
   });
   for (const claim_record& r : contents.records) {
@@ -184,10 +194,16 @@ const claim_book& paper_book() {
     }
     // Every registered check (its facets with it) is named by some record: one no record names is
     // dead code.
-    std::set<std::string> named;
-    for (const claim_record& r : read.records) named.insert(r.check);
+    std::set<std::string> named, observed;
+    for (const claim_record& r : read.records) {
+      named.insert(r.check);
+      observed.insert(r.observes);
+    }
     for (const auto& [name, check] : detail::registered_checks().all()) {
       if (!named.count(name)) throw std::logic_error("check '" + name + "' is registered but no record of claims/paper.toml names it");
+    }
+    for (const auto& [name, fact] : detail::published_facts()) {
+      if (!observed.count(name)) throw std::logic_error("fact '" + name + "' is published but no record of claims/paper.toml observes it");
     }
     return read;
   }();

@@ -32,7 +32,8 @@ class record_reader {
   record_reader(const toml::table& table, const std::string& file) : table_(table), file_(file), line_(line_of(table)) {
     static const std::set<std::string> fields{"id",       "section",  "equation",     "statement",     "methods", "check",
                                               "expected",    "finding",       "follows_from",
-                                              "typographical", "origin", "headline",  "coq_none", "shape", "with", "core", "correction"};
+                                              "typographical", "origin", "headline",  "coq_none", "shape", "with", "core", "correction",
+                                              "observes"};
     for (const auto& [key, node] : table_) {
       if (!fields.count(std::string(key.str()))) {
         throw claims_file_error(file_, line_of(node), std::string(key.str()), "not a field of a claim record (docs/claims-file.md)");
@@ -274,14 +275,21 @@ claims_file_contents read_claims_contents(const std::string& text, const std::st
     r.methods = read.texts("methods");
     r.check = read.text("check", false);
     r.shape = read.text("shape", false);
-    if (r.check.empty() == r.shape.empty()) {
-      throw claims_file_error(file, r.line, r.check.empty() ? "shape" : "check",
-                              r.check.empty() ? "missing: a record names the proof shape (or the bespoke check) that decides it"
-                                              : "a record names either a check or a shape, not both");
+    r.observes = read.text("observes", false);
+    const int deciders = !r.check.empty() + !r.shape.empty() + !r.observes.empty();
+    if (deciders != 1) {
+      const std::string second = r.shape.empty() ? "observes" : r.check.empty() ? "observes" : "check";
+      throw claims_file_error(file, r.line, deciders == 0 ? "shape" : second,
+                              deciders == 0 ? "missing: a record names the proof shape, the observed fact or the bespoke check that decides it"
+                                            : "a record names one of a shape, an observed fact and a check, not two");
     }
     if (!r.check.empty() && !known("check", r.check)) throw claims_file_error(file, read.line_of_field("check"), "check", "no check is named '" + r.check + "'");
     if (!r.shape.empty() && !known("shape", r.shape)) {
       throw claims_file_error(file, read.line_of_field("shape"), "shape", "no proof shape is named '" + r.shape + "' (docs/claims-file.md)");
+    }
+    if (!r.observes.empty() && !known("observes", r.observes)) {
+      throw claims_file_error(file, read.line_of_field("observes"), "observes",
+                              "no experiment publishes a fact named '" + r.observes + "' (simpson-verify --list-facts)");
     }
     // A shape record may leave its statement out: the reports then show the TeX it reads.
     r.statement = read.text("statement", r.shape.empty());

@@ -42,6 +42,16 @@ verdict verdict_of(const decider_evidence& evidence) {
   return verdict::undecided;
 }
 
+decider_evidence observed(published_fact fact, const std::string& coq_none) {
+  decider_evidence e;
+  e.own = answer_of(fact.holds);
+  e.if_false = verdict::fails;
+  e.found.evidence = std::move(fact.evidence);
+  e.found.note = std::move(fact.note);
+  e.found.certificate_missing = without_coq_statement(coq_none, "a fact an experiment measured: nothing for a proof assistant to state");
+  return e;
+}
+
 decider_evidence stopped(decider_evidence::reach reached, claim_result found) {
   decider_evidence e;
   e.reached = reached;

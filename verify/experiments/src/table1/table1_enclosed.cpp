@@ -144,6 +144,7 @@ std::array<enclosed_table_row, 8> enclosed_table1(unsigned digits, long shown_di
     for (std::size_t k = 0; k < 3; ++k) {
       errors[k] = runs[row.simpson_scheme ? 1 : 0][k].*field_of(row.field);
       rows[r].values[k] = enclosure_text(errors[k], shown_digits);
+      rows[r].short_values[k] = enclosure_text(errors[k], 12);
       all_hold_zero = all_hold_zero && certain_sign(errors[k]) == 0;
       none_holds_zero = none_holds_zero && certain_sign(errors[k]) != 0;
     }
@@ -168,6 +169,11 @@ std::array<enclosed_table_row, 8> enclosed_table1(unsigned digits, long shown_di
     }
   }
   return rows;
+}
+
+std::array<enclosed_table_row, 8> enclosed_table1_of_run(run_memo* memo) {
+  return remembered<std::array<enclosed_table_row, 8>>(memo, "table1: the exact schemes' errors enclosed",
+                                                       [] { return enclosed_table1(table1_enclosure_digits); });
 }
 
 }  // namespace simpson::verify

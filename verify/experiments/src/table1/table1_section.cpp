@@ -147,8 +147,8 @@ void add_convention_search(section_result& out, const printed_table_values& valu
 
 /// The exact schemes' errors at the paper's meshes, enclosed (table1_enclosed.hpp): guaranteed digits
 /// beside the double run, and the orders they prove.
-std::array<enclosed_table_row, 8> add_enclosed_table(section_result& out) {
-  const std::array<enclosed_table_row, 8> enclosed = enclosed_table1(40, 12);
+std::array<enclosed_table_row, 8> add_enclosed_table(section_result& out, run_memo* memo) {
+  const std::array<enclosed_table_row, 8> enclosed = enclosed_table1_of_run(memo);
   out.text("The same errors for the exact schemes (no rounding), enclosed in interval arithmetic (MPFI, 40 digits, π "
            "enclosed): every digit shown is guaranteed, the radius covers the rest. They are what the double run "
            "approximates; the orders are proved from them (both log₂ ratios within ½ of the integer; 'exact' when every "
@@ -157,8 +157,8 @@ std::array<enclosed_table_row, 8> add_enclosed_table(section_result& out) {
                                             {"N_40", "N = 40"}, {"order", "order (proved)"}}};
   for (std::size_t r = 0; r < enclosed.size(); ++r) {
     const published_row& row = published_rows()[r];
-    t.add({figure::text(row.scheme), figure::text(row.quantity), figure::text(enclosed[r].values[0]), figure::text(enclosed[r].values[1]),
-           figure::text(enclosed[r].values[2]), figure::text(enclosed[r].order)});
+    t.add({figure::text(row.scheme), figure::text(row.quantity), figure::text(enclosed[r].short_values[0]),
+           figure::text(enclosed[r].short_values[1]), figure::text(enclosed[r].short_values[2]), figure::text(enclosed[r].order)});
   }
   out.add(std::move(t));
   return enclosed;
@@ -303,7 +303,7 @@ section_result run_table1(const table1_settings& s) {
   for (const std::string& n : not_reproduced) not_reproduced_list.add({figure::text(n)});
   out.add(std::move(not_reproduced_list));
 
-  if (s.m == 1) add_order_expectations(out, add_enclosed_table(out), least_squares, s.meshes);
+  if (s.m == 1) add_order_expectations(out, add_enclosed_table(out, s.memo), least_squares, s.meshes);
   out.add(figure1_plot(s.m, s.figure_meshes));
   if (s.printed_values && s.printed_orders) {
     add_convention_search(out, *s.printed_values, *s.printed_orders, s.printed_digits, s.stated, s.memo);

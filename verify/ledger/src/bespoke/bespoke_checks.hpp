@@ -39,7 +39,6 @@ void add_peer_checks(check_registry& checks);
 void add_shear_checks(check_registry& checks);
 void add_beyond_checks(check_registry& checks);
 void add_beyond_ndof_checks(check_registry& checks);
-void add_beyond_fpu_checks(check_registry& checks);
 void add_family_checks(check_registry& checks);
 
 }  // namespace simpson::verify::detail

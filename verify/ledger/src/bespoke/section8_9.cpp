@@ -10,6 +10,7 @@
 #include <simpson/verify/printed_table1.hpp>
 #include <simpson/verify/quoted_words.hpp>
 #include <simpson/verify/table1_enclosed.hpp>
+#include <simpson/verify/table1_facts.hpp>
 #include <simpson/verify/tex_math.hpp>
 
 #include <ginac/ginac.h>
@@ -126,108 +127,6 @@ decider_evidence check_scaling(const run_context& ctx) {
                       "proofs therefore take m = omega = 1, h = theta.");
 }
 
-/// "exact" when every error is at round-off (at_round_off_floor); otherwise the closest integer to
-/// log2 of successive ratios, when both ratios agree.
-/// Digits of Table 1's enclosed run: far more than its orders need (they are decided at 40 with
-/// margins of 0.4 and more), few enough for a fast run.
-constexpr unsigned table_enclosure_digits = 40;
-
-std::string estimated_order(const std::array<double, 3>& errors, double H0) {
-  bool round_off = true;
-  for (std::size_t k = 0; k < errors.size(); ++k) round_off = round_off && at_round_off_floor(errors[k], published_meshes[k], H0);
-  if (round_off) return "exact";
-  const long first = std::lround(std::log2(errors[0] / errors[1]));
-  const long second = std::lround(std::log2(errors[1] / errors[2]));
-  return first == second ? std::to_string(first) : "inconsistent (" + std::to_string(first) + ", " + std::to_string(second) + ")";
-}
-
-json table_evidence(bool& orders_match, bool& conservation_match,
-                    const printed_table1& printed, const table1_stated& stated, run_memo* memo) {
-  orders_match = conservation_match = true;
-  std::array<std::array<table_errors, 3>, 2> runs{};
-  for (int s = 0; s < 2; ++s) {
-    for (std::size_t k = 0; k < 3; ++k) runs[static_cast<std::size_t>(s)][k] = run_table_experiment(s == 1, published_meshes[k]);
-  }
-  const double H0 = stated_H0();
-  // The printed values' round-off floor is that of the orbit that reproduces the table: the simplest
-  // hypothesis of its convention search (table-values), when it keeps the stated discrete conventions.
-  double printed_H0 = H0;
-  std::string printed_orbit = "the stated orbit (no simple hypothesis under the stated discrete conventions explains the table)";
-  const convention_search_result search = search_table1(table1_printed(printed.values, printed.orders, &printed.digits), stated, memo);
-  if (const std::optional<exact_start> start = table1_reproducing_start(search)) {
-    printed_H0 = H0 * start->energy_factor();
-    printed_orbit = "the orbit that reproduces the table (table-values): " + table1_start(*search.simplest());
-  }
-  // The orders are decided by the exact schemes' enclosed errors; the double run is the paper's own.
-  const std::array<enclosed_table_row, 8> enclosed = enclosed_table1(table_enclosure_digits);
-  json rows = json::array();
-  for (std::size_t index = 0; index < published_rows().size(); ++index) {
-    const published_row& row = published_rows()[index];
-    const std::string& published_order = printed.orders[index];
-    const std::array<double, 3>& published = printed.values[index];
-    std::array<double, 3> ours{};
-    json ratios = json::array(), values = json::array();
-    for (std::size_t k = 0; k < 3; ++k) {
-      ours[k] = runs[row.simpson_scheme ? 1 : 0][k].*row.field;
-      values.push_back(simpson::to_string(ours[k], 3));
-      ratios.push_back(simpson::to_string(published[k] / ours[k], 3));
-    }
-    const std::string order = enclosed[index].order, order_in_double = estimated_order(ours, H0);
-    // The order the printed line itself gives, by the paper's rule ("the closest integer α measuring
-    // the ratio of successive errors in a given line by 2^-α"), and "exact" only when every printed
-    // value is at round-off for the quantity's size (64 eps N H_0, H_0 of the orbit that reproduces the table).
-    const std::string order_printed_values = estimated_order(published, printed_H0);
-    const bool exact_column = published_order == "exact";
-    if (exact_column) {
-      conservation_match = conservation_match && order == "exact" && order_printed_values == "exact";
-    } else {
-      conservation_match = conservation_match && order != "exact";  // conserved, yet printed with an order
-      orders_match = orders_match && order == published_order && order_printed_values == published_order;
-    }
-    rows.push_back({{"scheme", row.scheme},
-                    {"quantity", row.quantity},
-                    {"ours_N_10_20_40", values},
-                    {"published_N_10_20_40", {simpson::to_string(published[0], 3), simpson::to_string(published[1], 3),
-                                              simpson::to_string(published[2], 3)}},
-                    {"published_over_ours", !exact_column ? ratios
-                                            : order_printed_values == "exact" ? json("round-off on both sides")
-                                                                              : json("printed above round-off (64 eps N H_0)")},
-                    {"exact_scheme_enclosed_N_10_20_40", enclosed[index].values},
-                    {"order_ours", order},
-                    {"order_evidence", enclosed[index].order_evidence},
-                    {"order_in_double", order_in_double},
-                    {"order_published", published_order},
-                    {"order_from_printed_values", order_printed_values}});
-  }
-  json e;
-  e["method"] = "enclosures (MPFI, " + std::to_string(table_enclosure_digits) +
-                " digits) of the exact schemes' errors decide the orders; the double run (the paper's) is shown beside";
-  e["conventions"] = "m = 1, omega = 2 pi, T = 1, N = 10, 20, 40; y_0 = (m omega, 0) exact, then y_{j+1} = Phi y_j; maximum over "
-                     "j = 0..N of |p_j - p(t_j)|, |q_j - q(t_j)|, |H(y_j) - H(y_0)|, |H_d(y_j) - H_d(y_0)|";
-  e["order_rule"] = "the integer n when both log2 ratios of successive enclosed errors are proved within 1/2 of n; 'exact' when "
-                    "every enclosed error holds 0 (conserved by the exact scheme); else undecided. order_from_printed_values: "
-                    "the paper's own rule on the printed line (closest integer to each log2 ratio of successive printed values; "
-                    "'exact' when every printed value is below 64 eps N H_0, H_0 of " + printed_orbit + "); the printed order must agree with both. "
-                    "order_in_double: the same rule on the double run (shown, not deciding)";
-  e["rows"] = rows;
-  return e;
-}
-
-decider_evidence check_table_orders(const run_context& ctx) {
-  bool orders = false, conservation = false;
-  json evidence;
-  evidence["numeric"] = table_evidence(orders, conservation, read_table1(paper_of(ctx).source, ctx.quotes), stated_table1_solution(ctx), ctx.memo);
-  return confirmed_if(orders, evidence);
-}
-
-decider_evidence check_table_conservation(const run_context& ctx) {
-  bool orders = false, conservation = false;
-  json evidence;
-  evidence["numeric"] = table_evidence(orders, conservation, read_table1(paper_of(ctx).source, ctx.quotes), stated_table1_solution(ctx), ctx.memo);
-  return confirmed_if(conservation, evidence,
-                      "'exact' means conserved to round-off: the errors grow with N only through rounding.");
-}
-
 /// A candidate of the convention search, entry by entry beside the printed table.
 json candidate_json(const convention_candidate& c, const std::vector<printed_entry>& printed) {
   json entries = json::array();
@@ -253,12 +152,12 @@ decider_evidence check_table_values(const run_context& ctx) {
   const std::array<std::array<double, 3>, 8>& published = printed.values;
   const std::array<std::array<int, 3>, 8>& digits = printed.digits;
   const std::array<std::string, 8>& orders = printed.orders;
-  // The values are decided by the search below (printed digits), not by a ratio tolerance.
-  bool orders_match = false, conservation = false;
+  // The values are decided by the search below (printed digits), not by a ratio tolerance; the
+  // orders' evidence (table1_facts.hpp) is shown beside them.
   // The solution the text states, read once: where the search starts, and its words below.
   const std::optional<stated_solution> stated = stated_table1_words(ctx);
   json evidence;
-  evidence["numeric"] = table_evidence(orders_match, conservation, printed, search_start(stated), ctx.memo);
+  evidence["numeric"] = table1_printed_facts(published, orders, digits, search_start(stated), ctx.memo).printed_orders.evidence["numeric"];
   evidence["numeric"]["also_tried"] = table_also_tried(published);
   // The convention search: every convention Section 8 states or leaves implicit, enumerated and fitted.
   const std::vector<printed_entry> entries = table1_printed(published, orders, &digits);
@@ -281,7 +180,7 @@ decider_evidence check_table_values(const run_context& ctx) {
   // the same side of its printed digits' interval as in the double run, or the verdict is undecided.
   std::vector<printed_value> printed_values;
   for (const printed_entry& e : entries) printed_values.push_back({e.value, e.digits, e.round_off});
-  const std::vector<entry_decision> enclosed = enclosed_stated_entries(printed_values, table_enclosure_digits);
+  const std::vector<entry_decision> enclosed = enclosed_stated_entries(printed_values, table1_enclosure_digits);
   std::size_t enclosed_reproduced = 0;
   std::string disagreements;
   for (std::size_t k = 0; k < entries.size() && k < enclosed.size(); ++k) {
@@ -292,7 +191,7 @@ decider_evidence check_table_values(const run_context& ctx) {
     }
   }
   evidence["stated_enclosed"] = {
-      {"method", "enclosures (MPFI, " + std::to_string(table_enclosure_digits) +
+      {"method", "enclosures (MPFI, " + std::to_string(table1_enclosure_digits) +
                      " digits) of the exact schemes' errors under the stated conventions against the half-unit interval of each "
                      "printed value (the printed decimal, exactly); a round-off entry against 0"},
       {"reproduced", std::to_string(enclosed_reproduced) + " of " + std::to_string(entries.size())},
@@ -310,7 +209,7 @@ decider_evidence check_table_values(const run_context& ctx) {
     evidence["simplest"] = candidate_json(*simplest, entries);
     evidence["simplest"]["in_words"] = table1_explanation(search, entries);
     if (const std::optional<exact_start> start = table1_reproducing_start(search)) {
-      const std::vector<entry_decision> decided = enclosed_entries(printed_values, *start, table_enclosure_digits);
+      const std::vector<entry_decision> decided = enclosed_entries(printed_values, *start, table1_enclosure_digits);
       std::size_t reproduced = 0;
       std::string differ;
       for (std::size_t k = 0; k < entries.size() && k < decided.size(); ++k) {
@@ -319,7 +218,7 @@ decider_evidence check_table_values(const run_context& ctx) {
           differ += (differ.empty() ? "" : "; ") + entries[k].row + " " + entries[k].column;
         }
       }
-      evidence["simplest"]["enclosed"] = {{"method", "enclosures (MPFI, " + std::to_string(table_enclosure_digits) +
+      evidence["simplest"]["enclosed"] = {{"method", "enclosures (MPFI, " + std::to_string(table1_enclosure_digits) +
                                                          " digits) of the exact schemes' errors from this start, as for the stated one"},
                                           {"reproduced", std::to_string(reproduced) + " of " + std::to_string(entries.size())},
                                           {"agrees_with_double", differ.empty()}};
@@ -377,7 +276,7 @@ decider_evidence check_figure1(const run_context& ctx) {
   for (const bool simpson_scheme : {false, true}) {
     const std::string name = simpson_scheme ? "symplectic Simpson" : "Newmark";
     // Decided by the exact scheme's errors enclosed; the double run (the paper's) shown beside.
-    const bounded_errors enclosed = enclosed_errors_within(simpson_scheme, 15, bounds, table_enclosure_digits);
+    const bounded_errors enclosed = enclosed_errors_within(simpson_scheme, 15, bounds, table1_enclosure_digits);
     const bound_decision satisfactory = enclosed.worst_within[0], close = enclosed.p_within[1];
     for (const bound_decision d : {satisfactory, close}) {
       if (d == bound_decision::undecided) undecided += (undecided.empty() ? "" : "; ") + name;
@@ -395,10 +294,10 @@ decider_evidence check_figure1(const run_context& ctx) {
   }
   if (!undecided.empty()) {
     throw enclosure_undecided("figure1-statements: an error's enclosure straddles 1/10 or 1/500 at " +
-                              std::to_string(table_enclosure_digits) + " digits (" + undecided + ")");
+                              std::to_string(table1_enclosure_digits) + " digits (" + undecided + ")");
   }
   json evidence;
-  evidence["numeric"] = {{"method", "enclosures (MPFI, " + std::to_string(table_enclosure_digits) +
+  evidence["numeric"] = {{"method", "enclosures (MPFI, " + std::to_string(table1_enclosure_digits) +
                                         " digits, pi enclosed) of the exact schemes' errors, compared with 1/10 and 1/500 "
                                         "exactly; the double run shown beside"},
                          {"experiment", "Section 8 conventions, N = 15 (Figure 1), errors at the nodes over one period"},
@@ -532,8 +431,6 @@ void add_scaling_lemma_check(check_registry& checks) {
 }
 
 void add_section8_9_checks(check_registry& checks) {
-  checks.add("table-orders", check_table_orders);
-  checks.add("table-conservation", check_table_conservation);
   checks.add("table-values", check_table_values);
   checks.add("figure1", check_figure1);
   checks.add("nonlinear-internal-node", check_nonlinear_internal_node);

@@ -6,6 +6,8 @@
 // every error's enclosure holds 0 (the quantity is conserved by the exact scheme), else undecided.
 // Header free of MPFI: enclosures leave as text (enclosure_text: only guaranteed digits).
 
+#include <simpson/verify/run_memo.hpp>
+
 #include <boost/math/constants/constants.hpp>
 
 #include <array>
@@ -19,6 +21,7 @@ namespace simpson::verify {
 
 struct enclosed_table_row {
   std::array<std::string, 3> values;  // N = 10, 20, 40: "1.4427e-14 ± 3e-31", or "0 ± 2e-50"
+  std::array<std::string, 3> short_values;  // the same with at most 12 digits, for a table
   std::string order;                  // "2", "4", "exact", or "undecided (…)"
   std::string order_evidence;         // the log₂ ratios' enclosures, or why exact
 };
@@ -26,6 +29,14 @@ struct enclosed_table_row {
 /// The rows of published_rows() (paper_table.hpp), in order, computed in `digits` decimal digits;
 /// each value printed with at most `shown_digits` digits (its radius widened by that rounding).
 std::array<enclosed_table_row, 8> enclosed_table1(unsigned digits = 40, long shown_digits = 60);
+
+/// Digits of Table 1's enclosed runs: far more than its orders need (they are decided at 40 with
+/// margins of 0.4 and more), few enough for a fast run.
+inline constexpr unsigned table1_enclosure_digits = 40;
+
+/// enclosed_table1() at table1_enclosure_digits, computed once per run (the run's memo; every time without one):
+/// the table1 section and the records that observe its facts read the same enclosures.
+std::array<enclosed_table_row, 8> enclosed_table1_of_run(run_memo* memo);
 
 /// How an enclosure compares with a bound a/b: proved at most the bound, proved above it, or neither
 /// at this precision.

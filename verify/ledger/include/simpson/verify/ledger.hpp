@@ -65,6 +65,11 @@ std::vector<std::string> required_claim_ids();
 /// of `book` that bind it (simpson-verify --list-core).
 std::string core_formulas_markdown(const claim_book& book);
 
+/// The facts the experiments publish that a record may observe (`observes = "table1.printed-orders"`),
+/// as a Markdown table: each one's name, what it states, and the records of `book` that observe it
+/// (simpson-verify --list-facts).
+std::string published_facts_markdown(const claim_book& book);
+
 /// The paper read with its book's declarations (claims/paper.toml's [symbols]), as its claims read it.
 paper_reading read_paper(const paper_source& paper);
 

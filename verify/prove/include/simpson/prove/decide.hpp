@@ -9,6 +9,7 @@
 #include <simpson/prove/coq_export.hpp>
 #include <simpson/prove/kernel_zero.hpp>
 #include <simpson/prove/printed_check_support.hpp>
+#include <simpson/verify/published_fact.hpp>
 
 #include <functional>
 #include <optional>
@@ -84,6 +85,11 @@ decider_evidence beyond_reach(claim_result found);
 /// Evidence that stopped at `reached` (a tool missing, a bound not proved, words changed), `found`
 /// saying why.
 decider_evidence stopped(decider_evidence::reach reached, claim_result found);
+
+/// A fact an experiment published (published_fact.hpp) as evidence: measured by the harness, so our
+/// side's answer; found false, it fails (an observation offers no correction). It exports no Coq
+/// statement: `coq_none` says why, or by default that it is a measured fact.
+decider_evidence observed(published_fact fact, const std::string& coq_none);
 
 /// The two-kernel rule, alone: the verdict `evidence` comes to (decide() below, in words).
 verdict verdict_of(const decider_evidence& evidence);

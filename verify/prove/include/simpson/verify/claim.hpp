@@ -172,21 +172,27 @@ enum class claim_origin { paper, beyond, harness };
 
 inline std::string to_string(claim_origin o) { return o == claim_origin::paper ? "paper" : o == claim_origin::beyond ? "beyond" : "harness"; }
 
-/// What decides a claim, from its record: a proof shape of the engine (`shape`), or a check the book
-/// registers by name (`check`). Typed, so that no code reads a claim's kind back out of a string.
+/// What decides a claim, from its record: a proof shape of the engine (`shape`), a fact an experiment
+/// publishes (`observes`: published_fact.hpp), or a check the book registers by name (`check`).
+/// Typed, so that no code reads a claim's kind back out of a string.
 struct shape_decider {
   std::string shape;
   bool operator==(const shape_decider& o) const { return shape == o.shape; }
+};
+struct observation_decider {
+  std::string fact;  // "section.name"
+  bool operator==(const observation_decider& o) const { return fact == o.fact; }
 };
 struct check_decider {
   std::string check;
   bool operator==(const check_decider& o) const { return check == o.check; }
 };
-using decider = std::variant<shape_decider, check_decider>;
+using decider = std::variant<shape_decider, check_decider, observation_decider>;
 
-/// The decider as the claims listing spells it: "shape <name>", or the check's name.
+/// The decider as the claims listing spells it: "shape <name>", "observes <fact>", or the check's name.
 inline std::string to_string(const decider& d) {
   if (const shape_decider* s = std::get_if<shape_decider>(&d)) return "shape " + s->shape;
+  if (const observation_decider* o = std::get_if<observation_decider>(&d)) return "observes " + o->fact;
   return std::get<check_decider>(d).check;
 }
 

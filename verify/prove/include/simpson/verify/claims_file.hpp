@@ -45,7 +45,8 @@ struct claim_record {
   std::vector<std::string> methods;
   std::string check;      // the name of the bespoke check that decides it, or
   std::string shape;      // the name of the proof shape that decides it (proof_shapes.hpp), with
-  std::map<std::string, shape_argument> with;  // its arguments
+  std::map<std::string, shape_argument> with;  // its arguments, or
+  std::string observes;   // the fact an experiment publishes that decides it ("table1.printed-orders")
   verdict expected = verdict::holds;
   bool expected_given = false;  // the record says `expected`: a regression guard, not a validation
   finding kind = finding::none;
@@ -58,6 +59,13 @@ struct claim_record {
   std::string correction;          // an expected erratum's proved correction, as recorded: its content
   int line = 0;           // the line of its [[claim]] header
 };
+
+/// What decides a record (its `shape`, `observes` or `check`), typed.
+inline decider decider_of(const claim_record& r) {
+  if (!r.shape.empty()) return shape_decider{r.shape};
+  if (!r.observes.empty()) return observation_decider{r.observes};
+  return check_decider{r.check};
+}
 
 /// A claims file that does not read: "claims file 'NAME', line N, field 'F': why". Bad input
 /// (exit 2 for a file given on the command line).
@@ -99,8 +107,8 @@ struct claims_file_contents {
 /// Reads and validates the records of `text` (named `file` in errors): TOML syntax, every field
 /// known and of its type, the required ones present (`expected` may be left out: holds), ids unique, verdicts, classes and origins
 /// spelled as the reports spell them, `finding` given exactly when the expected verdict is a
-/// finding, `follows_from` naming another record with no cycle, exactly one of `check` and `shape`,
-/// and `check` and `shape` names that `known(field, name)` accepts. Throws
+/// finding, `follows_from` naming another record with no cycle, exactly one of `check`, `shape` and
+/// `observes`, and names that `known(field, name)` accepts. Throws
 /// claims_file_error at the first fault.
 using known_name = std::function<bool(const std::string& field, const std::string& name)>;
 claims_file_contents read_claims_contents(const std::string& text, const std::string& file, const known_name& known);

@@ -1,9 +1,6 @@
-// Beyond the paper, on the stiff FPU chain (fpu_section.hpp): whether Simpson's scheme keeps the
-// adiabatic invariant in its second stable band, decided by runs beside one in its first band.
-
-#include "bespoke_checks.hpp"
-
-#include "claim_support.hpp"
+// The FPU section's published fact (published_fact.hpp): whether Simpson's scheme keeps the
+// adiabatic invariant in its second stable band, decided by runs beside one in its first band
+// (claims/paper.toml: fpu-second-band-invariant observes it).
 
 #include <simpson/verify/fpu_section.hpp>
 #include <simpson/verify/stability_section.hpp>
@@ -13,8 +10,10 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <stdexcept>
+#include <vector>
 
-namespace simpson::verify::detail {
+namespace simpson::verify {
 namespace {
 
 /// The middle of a stable band of Φ₃'s exact region, as ωh (the first two bands).
@@ -27,10 +26,12 @@ std::vector<double> stable_band_middles() {
   return middles;
 }
 
+}  // namespace
+
 /// "In its second stable band Simpson's scheme keeps its own oscillatory energy I_d within 5% on the
 /// FPU chain over t ≤ 300, but not the flow's adiabatic invariant I, which departs from I(0) by more
 /// than I(0)": the runs at the middle of each band (ω = 50, Hairer, Lubich and Wanner's start).
-decider_evidence check_fpu_second_band(const run_context&) {
+published_fact fpu_second_band_fact() {
   const std::vector<double> middles = stable_band_middles();
   if (middles.size() < 2) throw std::logic_error("fpu-second-band-invariant: Φ₃'s region has no second stable band");
   const fpu_settings settings;
@@ -58,18 +59,14 @@ decider_evidence check_fpu_second_band(const run_context&) {
                                                 "ω²x₁,ⱼ² weighted by (1 − x/12)(1 − x/24)/(1 − x/8), x = (ωh)² (hamiltonien-discret)",
                                                 settings.m, settings.omega, end_time)},
                          {"runs", runs}};
-  return confirmed_if(keeps_own && loses_flows, evidence,
-                      fmt::format("In the second band (ωh = {:.4f}) I_d keeps within {:.3g} and I departs by {:.3g}; in the first band "
+  return {keeps_own && loses_flows, evidence,
+          fmt::format("In the second band (ωh = {:.4f}) I_d keeps within {:.3g} and I departs by {:.3g}; in the first band "
                                   "(ωh = {:.4f}) I keeps within {:.3g}. There I_d and I nearly coincide; in the second band I_d weights "
                                   "ω²x₁² by {:.3g}, and only I_d is the scheme's invariant.",
                                   middles[1], second.max_discrete_invariant_error, second.max_invariant_error, middles[0],
                                   summaries[0].max_invariant_error,
                                   // (hamiltonien-discret)'s weight of ω²q² at m = ω = 1, h = ωh: 2 H_d(p = 0, q = 1).
-                                  2 * discrete_energy(oscillator_parameters<double>{1, 1, middles[1]}, phase_point<double>{0, 1})));
+                                  2 * discrete_energy(oscillator_parameters<double>{1, 1, middles[1]}, phase_point<double>{0, 1}))};
 }
 
-}  // namespace
-
-void add_beyond_fpu_checks(check_registry& checks) { checks.add("fpu-second-band-invariant", check_fpu_second_band); }
-
-}  // namespace simpson::verify::detail
+}  // namespace simpson::verify

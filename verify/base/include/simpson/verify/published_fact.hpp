@@ -1,0 +1,19 @@
+#pragma once
+// A fact an experiment publishes under a name ("table1.printed-orders"): whether the run found it so,
+// the measurements behind it, and what a reader needs beside the verdict. A claims file's record
+// observes one by that name (`observes = "table1.printed-orders"`); the engine makes its verdict as
+// for any decider (decide.hpp: observed). The experiment computes the fact; the record only names it.
+
+#include <simpson/verify/json.hpp>
+
+#include <string>
+
+namespace simpson::verify {
+
+struct published_fact {
+  bool holds = false;
+  json evidence = json::object();  // one member per method ("numeric", "enclosure")
+  std::string note;
+};
+
+}  // namespace simpson::verify

@@ -1,0 +1,69 @@
+// The experiments' published facts a record may observe: see published_facts.hpp.
+
+#include "published_facts.hpp"
+
+#include "bespoke/bespoke_checks.hpp"
+#include "claim_support.hpp"
+
+#include <simpson/verify/fpu_section.hpp>
+#include <simpson/verify/ledger.hpp>
+#include <simpson/verify/nonlinear_section.hpp>
+#include <simpson/verify/printed_table1.hpp>
+#include <simpson/verify/table1_facts.hpp>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <string>
+#include <vector>
+
+namespace simpson::verify::detail {
+namespace {
+
+/// Table 1's facts, from the table as the run's document prints it and the solution its text states
+/// (both quoted into the claim's evidence, as every claim that reads them).
+table1_facts table1_of(const run_context& ctx) {
+  const printed_table1 printed = read_table1(paper_of(ctx).source, ctx.quotes);
+  return table1_printed_facts(printed.values, printed.orders, printed.digits, stated_table1_solution(ctx), ctx.memo);
+}
+
+}  // namespace
+
+const std::map<std::string, fact_publisher>& published_facts() {
+  static const std::map<std::string, fact_publisher> facts{
+      {"table1.printed-orders",
+       {"Each order Table 1 prints is the order the exact scheme's enclosed errors prove, and the order the paper's own rule gives "
+        "on the printed line.",
+        [](const run_context& ctx) { return table1_of(ctx).printed_orders; }}},
+      {"table1.printed-conservation",
+       {"Each row Table 1 prints 'exact' is conserved by the exact scheme and printed at round-off; no row printed with an order is "
+        "conserved.",
+        [](const run_context& ctx) { return table1_of(ctx).printed_conservation; }}},
+      {"fpu.second-band-invariant",
+       {"In its second stable band Simpson's scheme keeps its own oscillatory energy I_d within 5% on the stiff FPU chain over "
+        "t <= 300, but not the flow's adiabatic invariant I.",
+        [](const run_context&) { return fpu_second_band_fact(); }}},
+      {"nonlinear.pendulum-order-4",
+       {"The Simpson scheme's global order on the pendulum is 4, proved by enclosures of the scheme and of the exact solution.",
+        [](const run_context&) { return pendulum_order_fact(); }}},
+  };
+  return facts;
+}
+
+}  // namespace simpson::verify::detail
+
+namespace simpson::verify {
+
+std::string published_facts_markdown(const claim_book& book) {
+  std::string out = "| fact | what it states | observed by |\n|---|---|---|\n";
+  for (const auto& [name, fact] : detail::published_facts()) {
+    std::vector<std::string> by;
+    for (const claim_record& r : book.records) {
+      if (r.observes == name) by.push_back("`" + r.id + "`");
+    }
+    out += fmt::format("| `{}` | {} | {} |\n", name, fact.states, by.empty() ? "none" : fmt::format("{}", fmt::join(by, ", ")));
+  }
+  return out;
+}
+
+}  // namespace simpson::verify
