@@ -95,9 +95,10 @@ TEST(Decide, WhatStopsAJudgeIsItsVerdictAndNoFinding) {
   EXPECT_EQ(changed.evidence.value("text_changed", std::string()), "the pattern is not in the document");
 }
 
-TEST(Decide, AnObservedFactHoldsOrFailsAndOffersNoCorrection) {
-  // A fact an experiment published: found false, it fails (never an erratum: an observation proves
-  // no correction), and it says why no Coq statement is exported.
+TEST(Decide, AnObservedFactIsAnErratumOnlyWithTheCorrectionItFound) {
+  // A fact an experiment published: found false, it fails unless the experiment found what holds
+  // instead (then an erratum with that correction, and only then), and it says why no Coq statement
+  // is exported.
   const published_fact found{true, json{{"numeric", "measured"}}, "as measured"};
   const claim_result held = decide("table-orders", "orders", observed(found, ""));
   EXPECT_EQ(held.outcome, verdict::holds);
@@ -109,6 +110,13 @@ TEST(Decide, AnObservedFactHoldsOrFailsAndOffersNoCorrection) {
   EXPECT_EQ(failed.outcome, verdict::fails);
   EXPECT_TRUE(failed.correction.empty());
   EXPECT_EQ(failed.certificate_missing, "the record's reason");
+  const claim_result corrected = decide("table-values", "values", observed(published_fact{false, json::object(), "", "another start"}, ""));
+  EXPECT_EQ(corrected.outcome, verdict::erratum);
+  EXPECT_EQ(corrected.correction, "another start");
+  // A correction beside a fact that holds is not a finding.
+  const claim_result held_anyway = decide("table-values", "values", observed(published_fact{true, json::object(), "", "another start"}, ""));
+  EXPECT_EQ(held_anyway.outcome, verdict::holds);
+  EXPECT_TRUE(held_anyway.correction.empty());
 }
 
 }  // namespace

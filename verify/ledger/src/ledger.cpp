@@ -38,7 +38,8 @@ const check_registry& registered_checks() {
     add_section5_checks(all);
     add_section6_7_checks(all);
     add_convention_checks(all);
-    add_section8_9_checks(all);
+    add_figure1_check(all);
+    add_nonlinear_internal_node_check(all);
     add_roundoff_checks(all);
     add_peer_checks(all);
     add_shear_checks(all);

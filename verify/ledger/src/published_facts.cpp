@@ -39,6 +39,15 @@ const std::map<std::string, fact_publisher>& published_facts() {
        {"Each row Table 1 prints 'exact' is conserved by the exact scheme and printed at round-off; no row printed with an order is "
         "conserved.",
         [](const run_context& ctx) { return table1_of(ctx).printed_conservation; }}},
+      {"table1.printed-values",
+       {"Table 1's printed values are reproduced, each within its printed digits, by the experiment under the stated conventions; "
+        "else the start and conventions that reproduce them.",
+        [](const run_context& ctx) {
+          const printed_table1 printed = read_table1(paper_of(ctx).source, ctx.quotes);
+          const std::optional<stated_solution> stated = stated_table1_words(ctx);
+          return table1_printed_values_fact(printed.values, printed.orders, printed.digits, search_start(stated),
+                                            stated ? std::optional<std::string>(stated->q_text) : std::nullopt, ctx.memo);
+        }}},
       {"fpu.second-band-invariant",
        {"In its second stable band Simpson's scheme keeps its own oscillatory energy I_d within 5% on the stiff FPU chain over "
         "t <= 300, but not the flow's adiabatic invariant I.",

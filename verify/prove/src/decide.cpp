@@ -45,9 +45,10 @@ verdict verdict_of(const decider_evidence& evidence) {
 decider_evidence observed(published_fact fact, const std::string& coq_none) {
   decider_evidence e;
   e.own = answer_of(fact.holds);
-  e.if_false = verdict::fails;
+  e.if_false = fact.correction.empty() ? verdict::fails : verdict::erratum;
   e.found.evidence = std::move(fact.evidence);
   e.found.note = std::move(fact.note);
+  if (!fact.holds) e.found.correction = std::move(fact.correction);
   e.found.certificate_missing = without_coq_statement(coq_none, "a fact an experiment measured: nothing for a proof assistant to state");
   return e;
 }

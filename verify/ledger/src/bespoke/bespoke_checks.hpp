@@ -27,13 +27,14 @@ table1_stated search_start(const std::optional<stated_solution>& s);
 table1_stated stated_table1_solution(const run_context& ctx);
 
 // Each file's checks, added to the registry (ledger.cpp calls each once).
-void add_scaling_lemma_check(check_registry& checks);  // section8_9.cpp: the reduction the exact proofs rest on
+void add_scaling_lemma_check(check_registry& checks);  // scaling.cpp: the reduction the exact proofs rest on
 void add_abstract_checks(check_registry& checks);      // unformulated.cpp
 void add_convention_checks(check_registry& checks);    // unformulated.cpp
 void add_section2_checks(check_registry& checks);
 void add_section5_checks(check_registry& checks);
 void add_section6_7_checks(check_registry& checks);
-void add_section8_9_checks(check_registry& checks);
+void add_figure1_check(check_registry& checks);
+void add_nonlinear_internal_node_check(check_registry& checks);
 void add_roundoff_checks(check_registry& checks);
 void add_peer_checks(check_registry& checks);
 void add_shear_checks(check_registry& checks);

@@ -1,8 +1,9 @@
 #pragma once
 // What the table1 section publishes about Table 1 as printed (published_fact.hpp), for records to
-// observe (claims/paper.toml: `observes = "table1.printed-orders"`, `"table1.printed-conservation"`):
-// the printed order column against the orders the exact schemes' enclosed errors prove, and the
-// rows printed "exact" against what the exact schemes conserve.
+// observe (claims/paper.toml: `observes = "table1.printed-orders"`, and the rows printed "exact",
+// the values): the printed order column against the orders the exact schemes' enclosed errors
+// prove, the rows printed "exact" against what the exact schemes conserve, and the printed values
+// against the experiment under the stated conventions and the convention search.
 
 #include <simpson/verify/paper_table.hpp>
 #include <simpson/verify/published_fact.hpp>
@@ -10,6 +11,8 @@
 #include <simpson/verify/table1_conventions.hpp>
 
 #include <array>
+#include <optional>
+#include <string>
 
 namespace simpson::verify {
 
@@ -28,5 +31,14 @@ struct table1_facts {
 /// enclosures and the search are made once per run).
 table1_facts table1_printed_facts(const printed_table_values& values, const printed_table_orders& orders,
                                   const std::array<std::array<int, 3>, 8>& digits, const table1_stated& stated, run_memo* memo);
+
+/// Table 1's printed values as a fact: each entry reproduced within its printed digits under the
+/// stated conventions (the double run's judgment, confirmed by enclosures of the exact schemes; a
+/// disagreement throws enclosure_undecided). Found false, its correction is the simplest start that
+/// reproduces every entry, or the convention search's fit that does; with neither, it fails.
+/// `stated_q`: q(t) as the text states it (GiNaC's text), none when it states none.
+published_fact table1_printed_values_fact(const printed_table_values& values, const printed_table_orders& orders,
+                                          const std::array<std::array<int, 3>, 8>& digits, const table1_stated& start,
+                                          const std::optional<std::string>& stated_q, run_memo* memo);
 
 }  // namespace simpson::verify

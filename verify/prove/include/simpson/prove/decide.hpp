@@ -87,8 +87,8 @@ decider_evidence beyond_reach(claim_result found);
 decider_evidence stopped(decider_evidence::reach reached, claim_result found);
 
 /// A fact an experiment published (published_fact.hpp) as evidence: measured by the harness, so our
-/// side's answer; found false, it fails (an observation offers no correction). It exports no Coq
-/// statement: `coq_none` says why, or by default that it is a measured fact.
+/// side's answer; found false, an erratum with the fact's correction when it has one, else it fails.
+/// It exports no Coq statement: `coq_none` says why, or by default that it is a measured fact.
 decider_evidence observed(published_fact fact, const std::string& coq_none);
 
 /// The two-kernel rule, alone: the verdict `evidence` comes to (decide() below, in words).
