@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <optional>
+#include <string>
 
 namespace simpson::verify {
 namespace {
@@ -49,6 +50,22 @@ enclosed_errors enclosed_run(bool simpson_scheme, long long N, const exact_start
   return e;
 }
 
+/// Both schemes' runs at the paper's meshes from `start` ([newmark, simpson][N = 10, 20, 40]), in
+/// the digits in scope; once per run with its memo.
+using enclosed_runs = std::array<std::array<enclosed_errors, 3>, 2>;
+enclosed_runs runs_from(const exact_start& start, unsigned digits, run_memo* memo) {
+  const std::string key = fmt::format("table1: the exact schemes' runs enclosed from m = {}/{}, A = {}/{} pi^{}{}, {} digits", start.m_num,
+                                      start.m_den, start.amplitude_num, start.amplitude_den, start.amplitude_pi_power,
+                                      start.at_rest ? " at rest" : "", digits);
+  return remembered<enclosed_runs>(memo, key, [&] {
+    enclosed_runs runs;
+    for (int s = 0; s < 2; ++s) {
+      for (std::size_t k = 0; k < 3; ++k) runs[static_cast<std::size_t>(s)][k] = enclosed_run(s == 1, published_meshes[k], start);
+    }
+    return runs;
+  });
+}
+
 interval enclosed_errors::*field_of(double table_errors::*field) {
   if (field == &table_errors::p) return &enclosed_errors::p;
   if (field == &table_errors::q) return &enclosed_errors::q;
@@ -73,16 +90,14 @@ bound_decision against(const interval& x, const std::pair<long, long>& bound) {
 
 }  // namespace
 
-std::vector<entry_decision> enclosed_stated_entries(const std::vector<printed_value>& printed, unsigned digits) {
-  return enclosed_entries(printed, exact_start{}, digits);
+std::vector<entry_decision> enclosed_stated_entries(const std::vector<printed_value>& printed, unsigned digits, run_memo* memo) {
+  return enclosed_entries(printed, exact_start{}, digits, memo);
 }
 
-std::vector<entry_decision> enclosed_entries(const std::vector<printed_value>& printed, const exact_start& start, unsigned digits) {
+std::vector<entry_decision> enclosed_entries(const std::vector<printed_value>& printed, const exact_start& start, unsigned digits,
+                                            run_memo* memo) {
   const scoped_interval_digits scope(digits);
-  std::array<std::array<enclosed_errors, 3>, 2> runs;
-  for (int s = 0; s < 2; ++s) {
-    for (std::size_t k = 0; k < 3; ++k) runs[static_cast<std::size_t>(s)][k] = enclosed_run(s == 1, published_meshes[k], start);
-  }
+  const enclosed_runs runs = runs_from(start, digits, memo);
   std::vector<entry_decision> out;
   for (std::size_t r = 0; r < published_rows().size(); ++r) {
     const published_row& row = published_rows()[r];
@@ -130,12 +145,9 @@ bounded_errors enclosed_errors_within(bool simpson_scheme, long long N, const st
   return out;
 }
 
-std::array<enclosed_table_row, 8> enclosed_table1(unsigned digits, long shown_digits) {
+std::array<enclosed_table_row, 8> enclosed_table1(unsigned digits, long shown_digits, run_memo* memo) {
   const scoped_interval_digits scope(digits);
-  std::array<std::array<enclosed_errors, 3>, 2> runs;
-  for (int s = 0; s < 2; ++s) {
-    for (std::size_t k = 0; k < 3; ++k) runs[static_cast<std::size_t>(s)][k] = enclosed_run(s == 1, published_meshes[k]);
-  }
+  const enclosed_runs runs = runs_from(exact_start{}, digits, memo);
   std::array<enclosed_table_row, 8> rows;
   for (std::size_t r = 0; r < published_rows().size(); ++r) {
     const published_row& row = published_rows()[r];
@@ -173,7 +185,7 @@ std::array<enclosed_table_row, 8> enclosed_table1(unsigned digits, long shown_di
 
 std::array<enclosed_table_row, 8> enclosed_table1_of_run(run_memo* memo) {
   return remembered<std::array<enclosed_table_row, 8>>(memo, "table1: the exact schemes' errors enclosed",
-                                                       [] { return enclosed_table1(table1_enclosure_digits); });
+                                                       [&] { return enclosed_table1(table1_enclosure_digits, 60, memo); });
 }
 
 }  // namespace simpson::verify

@@ -71,7 +71,7 @@ published_fact table1_printed_values_fact(const printed_table_values& published,
   // the same side of its printed digits' interval as in the double run, or the verdict is undecided.
   std::vector<printed_value> printed_values;
   for (const printed_entry& e : entries) printed_values.push_back({e.value, e.digits, e.round_off});
-  const std::vector<entry_decision> enclosed = enclosed_stated_entries(printed_values, table1_enclosure_digits);
+  const std::vector<entry_decision> enclosed = enclosed_stated_entries(printed_values, table1_enclosure_digits, memo);
   std::size_t enclosed_reproduced = 0;
   std::string disagreements;
   for (std::size_t k = 0; k < entries.size() && k < enclosed.size(); ++k) {
@@ -100,7 +100,7 @@ published_fact table1_printed_values_fact(const printed_table_values& published,
     evidence["simplest"] = candidate_json(*simplest, entries);
     evidence["simplest"]["in_words"] = table1_explanation(search, entries);
     if (const std::optional<exact_start> start = table1_reproducing_start(search)) {
-      const std::vector<entry_decision> decided = enclosed_entries(printed_values, *start, table1_enclosure_digits);
+      const std::vector<entry_decision> decided = enclosed_entries(printed_values, *start, table1_enclosure_digits, memo);
       std::size_t reproduced = 0;
       std::string differ;
       for (std::size_t k = 0; k < entries.size() && k < decided.size(); ++k) {

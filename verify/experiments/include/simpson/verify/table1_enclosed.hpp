@@ -28,7 +28,8 @@ struct enclosed_table_row {
 
 /// The rows of published_rows() (paper_table.hpp), in order, computed in `digits` decimal digits;
 /// each value printed with at most `shown_digits` digits (its radius widened by that rounding).
-std::array<enclosed_table_row, 8> enclosed_table1(unsigned digits = 40, long shown_digits = 60);
+/// With a run's memo, the runs are enclosed once per run, for this and the entries' judgments below.
+std::array<enclosed_table_row, 8> enclosed_table1(unsigned digits = 40, long shown_digits = 60, run_memo* memo = nullptr);
 
 /// Digits of Table 1's enclosed runs: far more than its orders need (they are decided at 40 with
 /// margins of 0.4 and more), few enough for a fast run.
@@ -62,7 +63,7 @@ struct printed_value {
   int digits = 3;
   bool round_off = false;
 };
-std::vector<entry_decision> enclosed_stated_entries(const std::vector<printed_value>& printed, unsigned digits = 40);
+std::vector<entry_decision> enclosed_stated_entries(const std::vector<printed_value>& printed, unsigned digits = 40, run_memo* memo = nullptr);
 
 /// An exact solution of the oscillator with ω = 2π, exactly: m = m_num/m_den, amplitude A =
 /// (amplitude_num/amplitude_den) π^amplitude_pi_power, started at q_0 = 0 with p_0 = m ω A (the
@@ -81,7 +82,8 @@ struct exact_start {
   double energy_factor() const { return mass() * amplitude() * amplitude(); }
 };
 /// The same judgment (enclosed_stated_entries) under the stated discrete conventions from `start`.
-std::vector<entry_decision> enclosed_entries(const std::vector<printed_value>& printed, const exact_start& start, unsigned digits = 40);
+std::vector<entry_decision> enclosed_entries(const std::vector<printed_value>& printed, const exact_start& start, unsigned digits = 40,
+                                            run_memo* memo = nullptr);
 
 bounded_errors enclosed_errors_within(bool simpson_scheme, long long N, const std::vector<std::pair<long, long>>& bounds,
                                       unsigned digits = 40);
