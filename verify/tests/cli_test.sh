@@ -273,10 +273,19 @@ sed '0,/check = "scaling"/s//check = "no-such-check"/' "$claims_src" >"$work/bad
 check "claims file, unknown check" 2 --claims-file "$work/bad-check.toml" --scene quick --out "$work/none-claims3"
 printf '[[claim]]\nid = "a"\n[[claim]]\nid = "a"\n' >"$work/incomplete.toml"
 check "claims file, incomplete record" 2 --claims-file "$work/incomplete.toml" --scene quick --out "$work/none-claims4"
-for k in 1 2 3 4; do [ -e "$work/none-claims$k" ] && fail "bad claims file wrote $work/none-claims$k"; done
+sed '0,/observes = "table1.printed-orders"/s//observes = "table1.printed-order"/' "$claims_src" >"$work/bad-fact.toml"
+check "claims file, unknown fact" 2 --claims-file "$work/bad-fact.toml" --scene quick --out "$work/none-claims5"
+grep -q "claims file '$work/bad-fact.toml', line [0-9]*, field 'observes': no experiment publishes a fact named 'table1.printed-order'" "$work/err" ||
+  fail "claims file, unknown fact: line and field not named: $(cat "$work/err")"
+for k in 1 2 3 4 5; do [ -e "$work/none-claims$k" ] && fail "bad claims file wrote $work/none-claims$k"; done
 awk 'BEGIN{p=0} /^id = "phi3-det"/{p=1} p && /^expected = "holds"/{sub(/holds/, "erratum\"\nfinding = \"erratum"); p=0} {print}' "$claims_src" >"$work/phi3-erratum.toml"
 check "claims file read" 1 --claims-file "$work/phi3-erratum.toml" --scene quick --claims phi3-det --out "$work/claims-file"
 grep -q "phi3-det: fixed: recorded as erratum, now holds" "$work/err" || fail "claims file read: expectation not from the file: $(cat "$work/err")"
+# A record that observes a published fact is judged by it: Table 1's printed orders hold, so a file
+# that expects them to fail fails the run.
+awk 'BEGIN{p=0} /^id = "table-orders"/{p=1} p && /^expected = "holds"/{sub(/holds/, "fails\"\nfinding = \"erratum"); p=0} {print}' "$claims_src" >"$work/orders-fail.toml"
+check "claims file, an observation" 1 --claims-file "$work/orders-fail.toml" --scene quick --claims table-orders --out "$work/claims-observed"
+grep -q "table-orders: fixed: recorded as fails, now holds" "$work/err" || fail "claims file, an observation: not judged by its fact: $(cat "$work/err")"
 # A note the harness has never seen, checked from its claims file alone: its four deliberate
 # errors are errata with corrections (exit 0: as the file expects); --validate judges them failures.
 note_dir="$(dirname "$0")/notes"
