@@ -278,7 +278,7 @@ claims_file_contents read_claims_contents(const std::string& text, const std::st
     r.observes = read.text("observes", false);
     const int deciders = !r.check.empty() + !r.shape.empty() + !r.observes.empty();
     if (deciders != 1) {
-      const std::string second = r.shape.empty() ? "observes" : r.check.empty() ? "observes" : "check";
+      const std::string second = !r.shape.empty() && !r.check.empty() ? "check" : "observes";  // the field one too many
       throw claims_file_error(file, r.line, deciders == 0 ? "shape" : second,
                               deciders == 0 ? "missing: a record names the proof shape, the observed fact or the bespoke check that decides it"
                                             : "a record names one of a shape, an observed fact and a check, not two");
