@@ -51,6 +51,29 @@ TEST(Krawczyk, TheEnclosedPendulumStepContainsTheMpfrStep) {
   EXPECT_LT(width(step.state.q), 1e-35);
 }
 
+TEST(Krawczyk, ProvesNothingWhereItCannotAndNeverAborts) {
+  // A derivative enclosure that is the whole line: the test proves nothing. It compares points, never
+  // intervals: an uncertain interval comparison throws from Boost's noexcept operator==, and aborts.
+  const scoped_interval_digits digits(30);
+  const auto f = [](const interval& x) { return interval(x * x - 2); };
+  const auto df = [](const interval&) { return entire_line(); };
+  using real = boost::multiprecision::mpfr_float;
+  EXPECT_FALSE(krawczyk(f, df, interval(real("1.3"), real("1.5"))).proved);
+  // The pendulum stepped in 6 digits with h = 1/2 (V = 1 − cos q, q(0) = 1, p(0) = 0): the state
+  // widens step by step until a node is not proved. Comparing the Newton midpoints as intervals
+  // aborted on the way.
+  const scoped_interval_digits few(6);
+  const pendulum_potential<interval> V{interval(1), interval(1)};
+  phase_point<interval> y{interval(0), interval(1)};
+  bool proved = true;
+  int steps = 0;
+  for (; steps < 10000 && proved; ++steps) {
+    const enclosed_simpson_step step = simpson_enclosed_step(interval(1), interval(interval(1) / 2), V, y);
+    proved = step.node.proved;
+    if (proved) y = step.state;
+  }
+  EXPECT_FALSE(proved) << steps;
+}
 
 TEST(KrawczykSystem, ProvesTheUniqueRootOfACircleAndALineAndNothingWhereThereIsNone) {
   const scoped_interval_digits digits(50);

@@ -2,7 +2,9 @@
 // faults, and results that agree with the ledger's exact algebra.
 
 #include <simpson/verify/experiment_cost.hpp>
+#include <simpson/verify/enclosure_undecided.hpp>
 #include <simpson/verify/experiments.hpp>
+#include <simpson/verify/nonlinear_section.hpp>
 #include <simpson/verify/paper_table.hpp>
 #include <simpson/verify/printed_table1.hpp>
 #include <simpson/verify/report.hpp>
@@ -485,6 +487,13 @@ TEST(Experiments, CostEstimateGrowsWithStepsAndPrecision) {
   const scene paper = load_scene("paper");
   const recheck_load usual{16, paper.samples, paper.precisions};
   EXPECT_LT(estimate_cost(experiment_settings{}, usual).units, default_cost_budget / 100);
+}
+
+TEST(PublishedFacts, ThePendulumsOrderIsUndecidedWhereItsEnclosuresDecideNothing) {
+  // At 60 digits the order is proved (the beyond scene's nonlinear-order-4); at 6 the enclosures
+  // are too wide to prove q_m unique or a ratio within 1/2 of 4, and the fact says so by throwing,
+  // never by failing with a note.
+  EXPECT_THROW(pendulum_order_fact(6), enclosure_undecided);
 }
 
 }  // namespace

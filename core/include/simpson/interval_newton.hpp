@@ -31,8 +31,11 @@ krawczyk_result krawczyk(F&& f, DF&& df, const interval& box, int narrowing = 8)
   interval X = box;
   for (int k = 0; k <= narrowing; ++k) {
     const interval centre(median(X));
-    const interval c(median(df(centre)));
-    if (c == 0) return out;
+    // Compared as a point (its median): an uncertain interval comparison throws from Boost's noexcept
+    // operator== (an abort), and a derivative that is not finite proves nothing.
+    const auto c_point = median(df(centre));
+    if (!boost::multiprecision::isfinite(c_point) || c_point == 0) return out;
+    const interval c(c_point);
     const interval K = centre - f(centre) / c + (1 - df(X) / c) * (X - centre);
     if (k == 0) {
       if (!proper_subset(K, X)) return out;  // nothing proved on this box
@@ -62,13 +65,17 @@ enclosed_simpson_step simpson_enclosed_step(const interval& m, const interval& h
   const interval force_q = V.derivative(y.q);
   const auto F = [&](const interval& x) { return simpson_internal_residual(m, h, y.q, y.p, x, force_q, interval(V.derivative(x))); };
   const auto dF = [&](const interval& x) { return interval(m + h * h / 24 * V.second_derivative(x)); };
+  // Newton on midpoints, compared as points (medians), not as intervals: a midpoint made an interval
+  // again may round outward to two ulps, and comparing two such intervals is uncertain, which Boost's
+  // noexcept operator== turns into an abort (seen at 6 digits). A midpoint that is not finite stops
+  // the iteration; Krawczyk decides either way.
   interval approx(median(interval(y.q + h * y.p / (2 * m))));
   for (int k = 0; k < 60; ++k) {
-    const interval slope(median(dF(approx)));
-    if (slope == 0) break;
-    const interval next(median(interval(approx - F(approx) / slope)));
-    if (next == approx) break;
-    approx = next;
+    const auto slope = median(dF(approx));
+    if (!boost::multiprecision::isfinite(slope) || slope == 0) break;
+    const auto next = median(interval(approx - F(approx) / interval(slope)));
+    if (!boost::multiprecision::isfinite(next) || next == median(approx)) break;
+    approx = interval(next);
   }
   const int bits = static_cast<int>(mpfi_get_prec(approx.backend().data()));
   const interval radius = ldexp(interval(1), -bits / 2) * (1 + abs(approx));

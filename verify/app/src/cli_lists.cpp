@@ -17,10 +17,10 @@ namespace {
 
 /// What decides a record, as the Markdown list spells it: "shape `identity`", "observes
 /// `table1.printed-orders`" or "check `scaling`".
-std::string decided_by_markdown(const claim_record& r) {
-  if (!r.shape.empty()) return "shape `" + r.shape + "`";
-  if (!r.observes.empty()) return "observes `" + r.observes + "`";
-  return "check `" + r.check + "`";
+std::string decided_by_markdown(const decider& d) {
+  if (const shape_decider* s = std::get_if<shape_decider>(&d)) return "shape `" + s->shape + "`";
+  if (const observation_decider* o = std::get_if<observation_decider>(&d)) return "observes `" + o->fact + "`";
+  return "check `" + std::get<check_decider>(d).check + "`";
 }
 
 }  // namespace
@@ -47,7 +47,7 @@ int list_claims(const claim_book& book, const std::string& format) {
       std::vector<std::string> core;
       for (const core_binding& b : r.core) core.push_back("`" + b.function + "`");
       const std::string expected = to_string(c.expected) + (c.follows_from.empty() ? "" : ", follows from `" + c.follows_from + "`");
-      fmt::print("| `{}` | {} | {} | {} | {} | {} | {} |\n", c.id, c.section, decided_by_markdown(r),
+      fmt::print("| `{}` | {} | {} | {} | {} | {} | {} |\n", c.id, c.section, decided_by_markdown(c.decided_by),
                  c.equation, to_string(c.origin), expected, core.empty() ? "" : fmt::format("{}", fmt::join(core, ", ")));
     }
     return 0;

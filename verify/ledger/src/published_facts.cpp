@@ -20,8 +20,8 @@
 namespace simpson::verify::detail {
 namespace {
 
-/// Table 1's facts, from the table as the run's document prints it and the solution its text states
-/// (both quoted into the claim's evidence, as every claim that reads them).
+/// Table 1's facts, from the table as the run's document prints it (each row quoted into the claim's
+/// evidence) and the solution its text states (where the convention search starts).
 table1_facts table1_of(const run_context& ctx) {
   const printed_table1 printed = read_table1(paper_of(ctx).source, ctx.quotes);
   return table1_printed_facts(printed.values, printed.orders, printed.digits, stated_table1_solution(ctx), ctx.memo);

@@ -26,8 +26,7 @@ namespace simpson::verify {
 /// harmonic oscillator (conclusion-fourth-order), and refuted when a ratio's enclosure lies outside
 /// (7/2, 9/2); every pair must prove it. A step whose q_m is not proved unique, or a ratio whose
 /// enclosure straddles an end, decides nothing: enclosure_undecided.
-published_fact pendulum_order_fact() {
-  constexpr unsigned digits = 60;
+published_fact pendulum_order_fact(unsigned digits) {
   const std::vector<int> meshes{10, 20, 40, 80, 160, 320};
   json rows = json::array();
   bool proved = true;

@@ -183,9 +183,6 @@ std::array<enclosed_table_row, 8> enclosed_table1(unsigned digits, long shown_di
   return rows;
 }
 
-std::array<enclosed_table_row, 8> enclosed_table1_of_run(run_memo* memo) {
-  return remembered<std::array<enclosed_table_row, 8>>(memo, "table1: the exact schemes' errors enclosed",
-                                                       [&] { return enclosed_table1(table1_enclosure_digits, 60, memo); });
-}
+std::array<enclosed_table_row, 8> enclosed_table1_of_run(run_memo* memo) { return enclosed_table1(table1_enclosure_digits, 60, memo); }
 
 }  // namespace simpson::verify

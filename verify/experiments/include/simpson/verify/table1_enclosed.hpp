@@ -35,8 +35,9 @@ std::array<enclosed_table_row, 8> enclosed_table1(unsigned digits = 40, long sho
 /// margins of 0.4 and more), few enough for a fast run.
 inline constexpr unsigned table1_enclosure_digits = 40;
 
-/// enclosed_table1() at table1_enclosure_digits, computed once per run (the run's memo; every time without one):
-/// the table1 section and the records that observe its facts read the same enclosures.
+/// enclosed_table1() at table1_enclosure_digits, its runs enclosed once per run (the run's memo;
+/// every time without one): the table1 section and the records that observe its facts read the
+/// same enclosures.
 std::array<enclosed_table_row, 8> enclosed_table1_of_run(run_memo* memo);
 
 /// How an enclosure compares with a bound a/b: proved at most the bound, proved above it, or neither
