@@ -77,6 +77,9 @@ TEST(Interval, EnclosureTextShowsOnlyGuaranteedDigits) {
   EXPECT_GE(printed_mid + printed_radius, upper(blurred)) << text;
   EXPECT_LT(printed_radius, real("1e-30")) << text;
   EXPECT_EQ(enclosure_text(interval(real("-2e-50"), real("1e-50"))).rfind("0 ± 2e-50", 0), 0u) << enclosure_text(interval(real("-2e-50"), real("1e-50")));
+  // An unbounded enclosure (a ratio over an error that may be 0) says that nothing is known.
+  EXPECT_EQ(enclosure_text(entire_line()), "0 ± inf");
+  EXPECT_EQ(enclosure_text(interval(interval(1) / interval(real(0), real(1)))), "0 ± inf");
 }
 
 TEST(Interval, EnclosureTextKeepsTheDigitsOfAPrecisionAboveTheDefault) {

@@ -78,6 +78,9 @@ struct enclosure_parts {
 
 inline enclosure_parts enclosure_of(const interval& x, long max_digits = 60) {
   using real = boost::multiprecision::mpfr_float;
+  // An end that is infinite (or not a number): nothing is known, and "0 ± inf" says so (the digits
+  // below would take the logarithm of an infinite radius).
+  if (!boost::multiprecision::isfinite(lower(x)) || !boost::multiprecision::isfinite(upper(x))) return {"0", "inf"};
   // The midpoint and radius in x's own precision and more: in fewer digits the midpoint's rounding
   // would swamp the radius.
   struct scoped_real_digits {
