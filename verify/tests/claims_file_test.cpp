@@ -132,6 +132,9 @@ INSTANTIATE_TEST_SUITE_P(
                  "claims file 'test.toml', line 9, field 'expected': 'hold' is not a verdict (holds, erratum, fails, unverifiable, ...)"},
         bad_file{"finding_missing", replaced(good_record, "\"holds\"", "\"erratum\""),
                  "claims file 'test.toml', line 9, field 'finding': missing: an expected 'erratum' is a finding, and says its class"},
+        bad_file{"never_expected", replaced(good_record, "expected = \"holds\"", "expected = \"undecided\""),
+                 "claims file 'test.toml', line 9, field 'expected': 'undecided' is never expected: it is no judgment of the document "
+                 "(expect holds, erratum, fails or unverifiable)"},
         bad_file{"finding_for_holds", replaced(good_record, "expected = \"holds\"", "expected = \"holds\"\nfinding = \"wording\""),
                  "claims file 'test.toml', line 10, field 'finding': given for a claim expected to holds"},
         bad_file{"bad_finding", replaced(good_record, "expected = \"holds\"", "expected = \"erratum\"\nfinding = \"typo\""),

@@ -378,7 +378,7 @@ grep -q "fixes accepted" "$work/out" || fail "corrected paper, fixes accepted: n
 check "corrected paper, validated" 0 --validate --claims 'taylor-display,*-action-range' --precisions double \
     --paper "$work/corrected.tex" --out "$work/corrected-validated"
 check "printed paper, validated" 1 --validate --claims '*-action-range' --precisions double --out "$work/printed-validated"
-grep -q "^simpson-verify: simpson-action-range: erratum$" "$work/err" || fail "printed paper, validated: simpson-action-range not named: $(cat "$work/err")"
+grep -q "^simpson-verify: simpson-action-range: erratum: the claim does not hold as written$" "$work/err" || fail "printed paper, validated: simpson-action-range not named: $(cat "$work/err")"
 grep -q "^Exit code 1: 2 claims do not hold as written (classical-action-range, simpson-action-range); see Failures" "$work/out" ||
   fail "printed paper, validated: the exit line speaks of expected verdicts: $(grep '^Exit code' "$work/out")"
 grep -q '"mode": "validation"' "$work/printed-validated/report.json" || fail "printed paper, validated: summary.mode is not validation"

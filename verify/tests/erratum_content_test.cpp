@@ -12,6 +12,7 @@
 #include <simpson/verify/report.hpp>
 #include <simpson/verify/report_compare.hpp>
 #include <simpson/verify/run.hpp>
+#include <simpson/verify/verdict_table.hpp>
 #include <simpson/verify/scene.hpp>
 
 #include <gtest/gtest.h>
@@ -128,6 +129,16 @@ TEST(ErratumContent, NothingMayGetWorseThanABaseline) {
   const run_record broken = run_on("phi3-det", altered("\\label{Phi3}", "{11\\over24}", "{13\\over24}"), false, &reference);
   EXPECT_EQ(broken.outcomes[0].result.outcome, verdict::fails);
   EXPECT_EQ(run_exit_code(broken), 1);
+  // A baseline that could not decide a claim keeps no judgment of it: the record's expectation
+  // stays, so an undecided claim is no regression to keep (it would expect what is never expected).
+  json undecided = reference;
+  for (json& c : undecided["claims"]) {
+    if (c["id"] == "gamma-system") c["verdict"] = "undecided";
+  }
+  scene kept = load_scene("quick");
+  kept.claims = {"gamma-system"};
+  apply_baseline(kept, undecided, "undecided");
+  EXPECT_EQ(kept.expected_overrides.count("gamma-system"), 0u);
   json no_claims = reference;
   no_claims.erase("claims");
   scene s = load_scene("quick");

@@ -1,6 +1,7 @@
 // report.junit.xml parses as XML (Boost.PropertyTree's parser) and counts every claim and table.
 
 #include <simpson/verify/junit.hpp>
+#include <simpson/verify/verdict_table.hpp>
 #include <simpson/verify/report.hpp>
 #include <simpson/verify/report_compare.hpp>
 #include <simpson/verify/scene.hpp>
@@ -230,6 +231,43 @@ TEST(JUnit, EveryPlaceThatSummarisesARunAgreesWithItsExitCode) {
   EXPECT_EQ(validation.find("every claim"), std::string::npos) << validation;
   EXPECT_NE(validation.find("1 not holding (phi3-det)"), std::string::npos) << validation;
   EXPECT_NE(validation.find("1 expectation failed"), std::string::npos) << validation;
+}
+
+// One rule for every place: a verdict never expected (undecided, unproved, text-changed) fails the
+// run even where its record expects it (a record written before the claims reader refused it, or
+// made so here), and the exit code, JUnit, report.json's verdict table and stderr's words agree.
+// Before the verdict table, the exit code said 0 and JUnit a failure.
+TEST(JUnit, AVerdictNeverExpectedFailsTheRunEverywhere) {
+  scene s = load_scene("quick");
+  s.claims = {"phi3-det"};
+  s.experiments = {};
+  s.experiments.stability = load_scene("quick").experiments.stability;
+  run_record r = run(s);
+  ASSERT_EQ(run_exit_code(r), 0);
+  for (const verdict_row& row : verdict_table(r)) EXPECT_FALSE(fails_the_run(row)) << row.name;
+  const std::size_t rows = 1 + r.sections[0].expectations.size();
+  EXPECT_EQ(verdict_table(r).size(), rows);
+  for (const verdict v : {verdict::undecided, verdict::unproved, verdict::text_changed}) {
+    r.outcomes.front().result.outcome = r.outcomes.front().expected = v;
+    EXPECT_EQ(run_exit_code(r), 1) << to_string(v);
+    const verdict_row row = verdict_table(r).front();
+    EXPECT_EQ(row.type, to_string(v));
+    EXPECT_EQ(row.message.rfind("verdict " + to_string(v) + ", expected " + to_string(v) + ": ", 0), 0u) << row.message;
+    EXPECT_EQ(parsed(report_junit(r)).get<std::size_t>("testsuites.<xmlattr>.failures"), 1u) << to_string(v);
+    const json report = report_json(r);
+    EXPECT_FALSE(report["all_as_expected"].get<bool>());
+    ASSERT_EQ(report["verdicts"].size(), rows);
+    EXPECT_EQ(report["verdicts"][0]["status"], "failed");
+    EXPECT_EQ(report["verdicts"][1]["kind"], "expectation");
+  }
+  // A skipped claim never fails the run, and an expected failure is set aside, not failed.
+  r.outcomes.front().result.outcome = verdict::skipped;
+  r.outcomes.front().expected = verdict::holds;
+  EXPECT_EQ(run_exit_code(r), 0);
+  EXPECT_EQ(report_json(r)["verdicts"][0]["status"], "skipped");
+  r.outcomes.front().result.outcome = r.outcomes.front().expected = verdict::fails;
+  EXPECT_EQ(run_exit_code(r), 0);
+  EXPECT_EQ(report_json(r)["verdicts"][0]["status"], "expected-failure");
 }
 
 // `compare --junit`: a failing testcase per difference, named by its place, in XML a CI parses; one

@@ -16,6 +16,7 @@
 #include <simpson/verify/scene.hpp>
 #include <simpson/verify/selection.hpp>
 #include <simpson/verify/sentence_holes.hpp>
+#include <simpson/verify/verdict_table.hpp>
 
 #include <fmt/core.h>
 #include <fmt/format.h>
@@ -277,22 +278,11 @@ int execute_run(prepared_run& r, const cli_options& o) {
           fmt::print("           corrected: {}\n", o.result.correction);
         }
       }
-      if (!expected_verdict && record.validation) {
-        fmt::print(stderr, "simpson-verify: {}: {}{}\n", o.checked->id, to_string(o.result.outcome),
-                   cause_of(o).empty() ? "" : ", a consequence of " + cause_of(o));
-      } else if (o.fixed && !o.fix_accepted) {
-        fmt::print(stderr, "simpson-verify: {}: fixed: recorded as {}, now holds (--accept-fixes accepts a fix)\n", o.checked->id,
-                   to_string(o.expected));
-      } else if (!o.content_changed.empty()) {
-        fmt::print(stderr, "simpson-verify: {}: erratum as expected, but {}\n", o.checked->id, o.content_changed);
-      } else if (!expected_verdict) {
-        fmt::print(stderr, "simpson-verify: {}: verdict {}, expected {}\n", o.checked->id, to_string(o.result.outcome),
-                   to_string(o.expected));
-      }
     }
-    for (const std::string& id : rejected_certificates(record)) fmt::print(stderr, "simpson-verify: {}: coqc rejected its certificate\n", id);
-    for (const std::string& key : failed_expectations(record)) {
-      fmt::print(stderr, "simpson-verify: expectation {} failed: the run did not show what was predicted (report.md, Failures)\n", key);
+    // What fails the run, one line each, as the verdict table words it (an error was named above).
+    for (const verdict_row& row : verdict_table(record)) {
+      if (row.state != verdict_row::status::failed) continue;
+      fmt::print(stderr, "simpson-verify: {}{}: {}\n", row.expectation ? "expectation " : "", row.name, row.message);
     }
     const plot_outcome plots = write_report_files(out, record);
     for (const std::string& failure : plots.failures) fmt::print(stderr, "simpson-verify: warning: plot not drawn: {}\n", failure);

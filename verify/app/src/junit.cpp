@@ -2,6 +2,7 @@
 
 #include <simpson/verify/printed_statement.hpp>
 #include <simpson/verify/report_html.hpp>
+#include <simpson/verify/verdict_table.hpp>
 
 #include <fmt/format.h>
 
@@ -74,84 +75,40 @@ std::string suite_xml(const std::string& name, const std::vector<testcase>& case
   return xml + "  </testsuite>\n";
 }
 
-/// A claim: a failure exactly when the run's exit code counts it (a verdict not as expected, a
-/// certificate coqc rejected), an error when its check threw; an erratum as expected passes with
-/// its printed and corrected statements in <system-out>; a `fails` as expected is skipped with its
-/// reason (an expected failure, as pytest writes xfail), so that a CI view shows both for what they are.
-/// In a validation (no expected verdicts) a claim that does not hold fails, a consequence naming its cause.
+/// A claim, as its row of the verdict table judges it (claim_row: a failure exactly when the exit
+/// code counts it, an error when its check threw); an erratum as expected passes with its printed
+/// and corrected statements in <system-out>; a `fails` as expected is skipped with its reason (an
+/// expected failure, as pytest writes xfail), so that a CI view shows both for what they are.
 testcase claim_case(const claim_outcome& o, bool validation) {
   const claim& c = *o.checked;
+  const verdict_row row = claim_row(o, validation);
   testcase t{c.id, "claims.section-" + c.section, {}, testcase::result::passed, "", "", "", ""};
-  const std::string verdict = to_string(o.result.outcome), expected = to_string(o.expected);
-  t.properties = {{"verdict", verdict}, {"expected", expected}, {"section", c.section}, {"equation", c.equation}};
+  t.properties = {{"verdict", row.verdict}, {"expected", row.expected}, {"section", c.section}, {"equation", c.equation}};
   const printed_statement printed = printed_of(o);
   std::string summary = "Printed (" + printed.source + "): " + printed.text;
   if (!o.result.correction.empty()) summary += "\nCorrected: " + o.result.correction;
   if (!o.result.note.empty()) summary += "\nNote: " + o.result.note;
-  const json& evidence = o.result.evidence;
-  if (evidence.contains("error")) {
-    t.outcome = testcase::result::error;
-    t.type = "internal-error";
-    t.message = "internal error (a bug in the harness): " + evidence["error"].get<std::string>();
-    t.detail = summary;
-  } else if (o.result.outcome == verdict::undecided) {
-    t.outcome = testcase::result::failure;
-    t.type = "undecided";
-    t.message = o.result.evidence.value("undecided", std::string("no enclosure decided the claim"));
-    t.detail = summary;
-  } else if (o.result.outcome == verdict::unproved) {
-    t.outcome = testcase::result::failure;
-    t.type = "unproved";
-    t.message = o.result.evidence.value("unproved", std::string("Gappa could not bound the round-off"));
-    t.detail = summary;
-  } else if (o.result.outcome == verdict::skipped) {
-    t.outcome = testcase::result::skipped;
-    t.message = o.result.evidence.value("skipped", std::string("the prover is not installed"));
-    t.out = summary;
-  } else if (o.result.outcome == verdict::text_changed) {
-    t.outcome = testcase::result::failure;
-    t.type = "text-changed";
-    t.message = o.result.evidence.value("text_changed", std::string("the quoted words changed"));
-    t.detail = summary;
-  } else if (o.fixed) {  // a finding of the record that now holds
-    if (o.fix_accepted) {
-      t.out = "Fixed: recorded as " + expected + ", now holds (accepted: --accept-fixes).\n" + summary;
-    } else {
-      t.outcome = testcase::result::failure;
-      t.type = "fixed";
-      t.message = "fixed: recorded as " + expected + ", now holds (--accept-fixes accepts a fix)";
-      t.detail = summary;
-    }
-  } else if (o.result.outcome != o.expected && validation) {  // no expected verdicts: the claim is to hold
-    t.outcome = testcase::result::failure;
-    t.type = cause_of(o).empty() ? "does-not-hold" : "consequence";
-    t.message = cause_of(o).empty() ? verdict + ": the claim does not hold as written"
-                                    : verdict + ": a consequence of " + cause_of(o) + ", which does not hold as written";
-    t.detail = summary;
-  } else if (o.result.outcome != o.expected) {
-    t.outcome = testcase::result::failure;
-    t.type = "unexpected-verdict";
-    t.message = "verdict " + verdict + ", expected " + expected;
-    t.detail = summary;
-  } else if (!o.content_changed.empty()) {  // the expected erratum, but another one
-    t.outcome = testcase::result::failure;
-    t.type = "erratum-changed";
-    t.message = "erratum, as expected, but " + o.content_changed;
-    t.detail = summary;
-  } else if (evidence.contains("coq") && evidence["coq"].value("status", "") == "failed") {
-    t.outcome = testcase::result::failure;
-    t.type = "certificate-rejected";
-    t.message = "coqc rejected its Coq certificate";
-    t.detail = evidence["coq"].value("coqc_output", "");
-  } else if (o.result.outcome == verdict::fails) {
-    t.outcome = testcase::result::skipped;
-    t.message = "expected failure: verdict fails, as the ledger expects" +
-                (o.result.note.empty() ? std::string() : ": " + o.result.note);
-    t.out = summary;
-  } else if (o.result.outcome == verdict::erratum) {
-    t.out = "Erratum, as the ledger expects.\n" + summary;
-  } else if (o.result.outcome == verdict::unverifiable) {
-    t.out = "Unverifiable (material absent from the source), as the ledger expects.\n" + summary;
+  using status = verdict_row::status;
+  switch (row.state) {
+    case status::error:
+    case status::failed:
+      t.outcome = row.state == status::error ? testcase::result::error : testcase::result::failure;
+      t.type = row.type;
+      t.message = row.message;
+      t.detail = row.type == "certificate-rejected" ? o.result.evidence["coq"].value("coqc_output", "") : summary;
+      break;
+    case status::skipped:
+    case status::expected_failure:
+      t.outcome = testcase::result::skipped;
+      t.message = row.message;
+      t.out = summary;
+      break;
+    case status::passed:
+      t.out = row.type == "fixed-accepted"               ? "Fixed: recorded as " + row.expected + ", now holds (accepted: --accept-fixes).\n" + summary
+              : o.result.outcome == verdict::erratum      ? "Erratum, as the ledger expects.\n" + summary
+              : o.result.outcome == verdict::unverifiable ? "Unverifiable (material absent from the source), as the ledger expects.\n" + summary
+                                                          : std::string();
+      break;
   }
   return t;
 }
@@ -175,15 +132,17 @@ testcase table_case(const section_result& section, const table& t) {
   return c;
 }
 
-/// A section's expectation: a failure when the run did not show what was predicted.
+/// A section's expectation, as its row of the verdict table judges it: a failure when the run did
+/// not show what was predicted.
 testcase expectation_case(const section_result& section, const expectation& e) {
+  const verdict_row row = expectation_row(section, e);
   testcase c{e.key, "sections." + section.name + ".expectations", {}, testcase::result::passed, "", "", "", ""};
   c.properties = {{"holds", e.holds ? "yes" : "no"}};
   c.out = "Expected: " + e.statement + "\nPredicted: " + e.predicted + "\nObserved: " + e.observed;
-  if (!e.holds) {
+  if (fails_the_run(row)) {
     c.outcome = testcase::result::failure;
-    c.type = "expectation-failed";
-    c.message = "the run did not show what was predicted: " + e.statement;
+    c.type = row.type;
+    c.message = row.message;
     c.detail = c.out;
   }
   return c;

@@ -4,6 +4,7 @@
 #include "report_parts.hpp"
 
 #include <simpson/verify/ledger.hpp>
+#include <simpson/verify/verdict_table.hpp>
 
 #include <fmt/format.h>
 

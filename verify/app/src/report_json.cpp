@@ -9,6 +9,7 @@
 #include <simpson/verify/markdown_text.hpp>
 #include <simpson/verify/printed_statement.hpp>
 #include <simpson/verify/report_html.hpp>
+#include <simpson/verify/verdict_table.hpp>
 
 #include <fmt/format.h>
 
@@ -68,6 +69,26 @@ json amendments_json(const std::vector<amendment>& amendments) {
 
 }  // namespace
 
+namespace {
+
+/// The verdict table (verdict_table.hpp): every claim and expectation in one list, each with the
+/// one rule's status; a row whose status is "failed" or "error" is what makes the exit code non-zero.
+json verdicts_json(const run_record& r) {
+  json rows = json::array();
+  for (const verdict_row& row : verdict_table(r)) {
+    static constexpr const char* names[] = {"passed", "failed", "error", "expected-failure", "skipped"};
+    json entry{{"name", row.name},         {"kind", row.expectation ? "expectation" : "claim"}, {"suite", row.suite},
+               {"verdict", row.verdict},   {"expected", row.expected},
+               {"status", names[static_cast<int>(row.state)]}};
+    if (!row.type.empty()) entry["type"] = row.type;
+    if (!row.message.empty()) entry["message"] = row.message;
+    rows.push_back(std::move(entry));
+  }
+  return rows;
+}
+
+}  // namespace
+
 json report_json(const run_record& r, const plot_outcome& plots) {
   json claims = json::array();
   for (const claim_outcome& o : r.outcomes) {
@@ -119,6 +140,7 @@ json report_json(const run_record& r, const plot_outcome& plots) {
               {"overrides", r.run_scene.overrides},
               {"summary", summary_json(r)},
               {"all_as_expected", run_exit_code(r) == 0},
+              {"verdicts", verdicts_json(r)},
               {"claims", claims},
               {"experiments", experiments},
               {"plots", plot_list},

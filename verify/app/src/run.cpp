@@ -55,6 +55,9 @@ void apply_baseline(scene& s, const json& baseline, const std::string& name) {
     const std::string word = it->second->value("verdict", "");
     const std::optional<verdict> v = verdict_of_name(word);
     if (!v) throw std::invalid_argument("--baseline '" + name + "': claim " + id + " has no verdict ('" + word + "')");
+    // Undecided, unproved, text-changed, kernels-disagree or skipped there: no judgment to keep, so the
+    // record's expectation stays (a guard stays red on what it could not decide, and never expects it).
+    if (!expectable(*v)) continue;
     s.expected_overrides[id] = *v;
     if (*v == verdict::erratum) s.baseline_corrections[id] = it->second->value("correction", "");
   }
@@ -205,37 +208,6 @@ run_record run(const scene& s, std::shared_ptr<const claim_book> book, const pap
   r.environment = build_environment(s, paper);
   r.seconds = std::chrono::duration<double>(clock::now() - start).count();
   return r;
-}
-
-bool all_as_expected(const run_record& r) {
-  for (const claim_outcome& o : r.outcomes) {
-    if (!outcome_as_expected(o)) return false;
-  }
-  return true;
-}
-
-std::vector<std::string> rejected_certificates(const run_record& r) {
-  std::vector<std::string> ids;
-  for (const claim_outcome& o : r.outcomes) {
-    const json& evidence = o.result.evidence;
-    if (evidence.contains("coq") && evidence["coq"].value("status", "") == "failed") ids.push_back(o.checked->id);
-  }
-  return ids;
-}
-
-std::vector<std::string> failed_expectations(const run_record& r) {
-  std::vector<std::string> keys;
-  for (const section_result& section : r.sections) {
-    for (const expectation& e : section.expectations) {
-      if (!e.holds) keys.push_back(section.name + "." + e.key);
-    }
-  }
-  return keys;
-}
-
-int run_exit_code(const run_record& r) {
-  if (!r.internal_errors.empty()) return 3;
-  return all_as_expected(r) && rejected_certificates(r).empty() && failed_expectations(r).empty() ? 0 : 1;
 }
 
 }  // namespace simpson::verify

@@ -14,8 +14,13 @@ namespace {
 int line_of(const toml::node& node) { return static_cast<int>(node.source().begin.line); }
 
 verdict verdict_named(const std::string& text, const std::string& file, int line) {
-  if (const std::optional<verdict> v = verdict_of_name(text)) return *v;
-  throw claims_file_error(file, line, "expected", "'" + text + "' is not a verdict (holds, erratum, fails, unverifiable, ...)");
+  const std::optional<verdict> v = verdict_of_name(text);
+  if (!v) throw claims_file_error(file, line, "expected", "'" + text + "' is not a verdict (holds, erratum, fails, unverifiable, ...)");
+  if (!expectable(*v)) {
+    throw claims_file_error(file, line, "expected",
+                            "'" + text + "' is never expected: it is no judgment of the document (expect holds, erratum, fails or unverifiable)");
+  }
+  return *v;
 }
 
 finding finding_named(const std::string& text, const std::string& file, int line) {

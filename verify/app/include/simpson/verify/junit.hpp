@@ -9,6 +9,7 @@
 //   non-finite, unstable) are findings, counted in a property and listed in <system-out>.
 
 #include <simpson/verify/run.hpp>
+#include <simpson/verify/verdict_table.hpp>
 
 #include <string>
 

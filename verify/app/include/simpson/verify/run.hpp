@@ -91,9 +91,6 @@ run_record run(const scene& s, const progress_callback& progress = {},
 /// when it is missing or does not parse, and claims_file_error when a record does not bind.
 paper_reading read_scene_paper(const scene& s, claim_book& book);
 
-/// True when every verdict equals its expected verdict.
-bool all_as_expected(const run_record& r);
-
 /// --baseline: each of the scene's claims that `baseline` (a report.json) judged is expected to keep
 /// its verdict there, an erratum its correction there, and fixes pass. Throws std::invalid_argument
 /// naming `name` when a verdict there is not one.
@@ -102,16 +99,5 @@ void apply_baseline(scene& s, const json& baseline, const std::string& name);
 /// What changed between an erratum's recorded correction and the one a run proved, each shown
 /// around where they first differ (cut between UTF-8 characters).
 std::string correction_change(const std::string& recorded, const std::string& now);
-
-/// The claims whose Coq certificate coqc rejected (evidence "coq" status "failed", with --certify).
-std::vector<std::string> rejected_certificates(const run_record& r);
-
-/// The sections' expectations that failed, as "section.key".
-std::vector<std::string> failed_expectations(const run_record& r);
-
-/// The process's exit code for a finished run, and the one rule report.junit.xml follows: 3 when a
-/// check threw (a bug in the harness), 1 when a verdict differs from the expected one, coqc
-/// rejected a certificate or a section's expectation failed, 0 otherwise.
-int run_exit_code(const run_record& r);
 
 }  // namespace simpson::verify
