@@ -1,10 +1,10 @@
 // report.junit.xml parses as XML (Boost.PropertyTree's parser) and counts every claim and table.
 
 #include <simpson/verify/junit.hpp>
-#include <simpson/verify/verdict_table.hpp>
 #include <simpson/verify/report.hpp>
 #include <simpson/verify/report_compare.hpp>
 #include <simpson/verify/scene.hpp>
+#include <simpson/verify/verdict_table.hpp>
 
 #include <boost/property_tree/ptree.hpp>
 #include <boost/property_tree/xml_parser.hpp>
@@ -17,6 +17,9 @@
 #include <cstdlib>
 #include <map>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace simpson::verify {
 namespace {
@@ -26,6 +29,15 @@ boost::property_tree::ptree parsed(const std::string& xml) {
   boost::property_tree::ptree tree;
   boost::property_tree::read_xml(in, tree);  // throws on malformed XML
   return tree;
+}
+
+/// The quick scene's stability section alone, with `claims`: a run with expectations to fail.
+scene stability_scene(std::vector<std::string> claims) {
+  scene s = load_scene("quick");
+  s.claims = std::move(claims);
+  s.experiments = {};
+  s.experiments.stability = load_scene("quick").experiments.stability;
+  return s;
 }
 
 TEST(JUnit, ParsesAndCountsEveryClaimAndTable) {
@@ -147,10 +159,7 @@ TEST(JUnit, AValidationFailsWhatDoesNotHoldAndNamesACauseOnce) {
 // A section's expectation is a testcase of its section: passed while the run shows what was
 // predicted, a failure (and exit code 1) when it does not, as a claim not as expected.
 TEST(JUnit, AFailedExpectationOfASectionFailsTheRun) {
-  scene s = load_scene("quick");
-  s.claims.clear();
-  s.experiments = {};
-  s.experiments.stability = load_scene("quick").experiments.stability;
+  scene s = stability_scene({});
   run_record r = run(s);
   ASSERT_EQ(r.sections.size(), 1u);
   ASSERT_FALSE(r.sections[0].expectations.empty());
@@ -181,10 +190,7 @@ TEST(JUnit, AFailedExpectationOfASectionFailsTheRun) {
 // and all_as_expected, and in JUnit; the same run with both as expected says "as expected"
 // everywhere, and counts its expectations.
 TEST(JUnit, EveryPlaceThatSummarisesARunAgreesWithItsExitCode) {
-  scene s = load_scene("quick");
-  s.claims = {"phi3-det"};
-  s.experiments = {};
-  s.experiments.stability = load_scene("quick").experiments.stability;
+  scene s = stability_scene({"phi3-det"});
   run_record r = run(s);
   ASSERT_EQ(r.sections.size(), 1u);
   const std::size_t expectations = r.sections[0].expectations.size();
@@ -238,10 +244,7 @@ TEST(JUnit, EveryPlaceThatSummarisesARunAgreesWithItsExitCode) {
 // made so here), and the exit code, JUnit, report.json's verdict table and stderr's words agree.
 // Before the verdict table, the exit code said 0 and JUnit a failure.
 TEST(JUnit, AVerdictNeverExpectedFailsTheRunEverywhere) {
-  scene s = load_scene("quick");
-  s.claims = {"phi3-det"};
-  s.experiments = {};
-  s.experiments.stability = load_scene("quick").experiments.stability;
+  scene s = stability_scene({"phi3-det"});
   run_record r = run(s);
   ASSERT_EQ(run_exit_code(r), 0);
   for (const verdict_row& row : verdict_table(r)) EXPECT_FALSE(fails_the_run(row)) << row.name;
@@ -302,10 +305,7 @@ TEST(JUnit, ACompareOfTwoReportsIsATestSuiteOfItsDifferences) {
 // The smallest endpoint_power a scene may ask for (10^6, scene.cpp) decides every endpoint
 // expectation: the refusal below it is not a guess. 10^3, the old minimum, did not.
 TEST(JUnit, TheSmallestEndpointPowerAllowedDecidesEveryExpectation) {
-  scene s = load_scene("quick");
-  s.claims.clear();
-  s.experiments = {};
-  s.experiments.stability = load_scene("quick").experiments.stability;
+  scene s = stability_scene({});
   s.experiments.stability->endpoint_power = 1000000;
   const run_record r = run(s);
   EXPECT_TRUE(failed_expectations(r).empty()) << ::testing::PrintToString(failed_expectations(r));
