@@ -225,6 +225,19 @@ std::optional<int> prepare_run(cli_options& o, const CLI::App& app, int argc, ch
 }
 
 /// Runs the prepared scene: the verdicts on stdout and stderr, then the report, written last.
+/// What a claim's line on stdout points at, from its row of the verdict table: nothing when it is
+/// as expected, else why it fails the run, briefly (stderr says it whole).
+std::string pointer(const verdict_row& row, const claim_outcome& o, bool validation) {
+  if (row.state == verdict_row::status::error) return "  <- the check threw (a bug in the harness)";
+  if (!fails_the_run(row)) return "";
+  if (row.type == "does-not-hold") return "  <- does not hold";
+  if (row.type == "consequence") return "  <- follows from " + cause_of(o);
+  if (row.type == "erratum-changed") return "  <- not the recorded erratum";
+  if (row.type == "fixed") return "  <- fixed (recorded " + row.expected + ")";
+  if (row.type == "certificate-rejected") return "  <- coqc rejected its certificate";
+  return validation ? "  <- no judgment (" + row.type + ")" : "  <- expected " + row.expected;  // unexpected, undecided, unproved, text-changed
+}
+
 int execute_run(prepared_run& r, const cli_options& o) {
   scene& s = r.s;
   const std::shared_ptr<claim_book>& book = r.book;
@@ -262,25 +275,17 @@ int execute_run(prepared_run& r, const cli_options& o) {
     for (const std::string& error : record.internal_errors) {
       fmt::print(stderr, "simpson-verify: internal error (a bug in the harness) in {}\n", error);
     }
-    const bool quiet = o.quiet;
-    for (const claim_outcome& o : record.outcomes) {
-      const bool faulted = o.result.evidence.contains("error");
-      const bool expected_verdict = faulted || outcome_as_expected(o);
-      if (!quiet) {
-        fmt::print("  {:<8} {:<34}{}\n", faulted ? "fault" : to_string(o.result.outcome), o.checked->id,
-                   faulted            ? "  <- the check threw (a bug in the harness)"
-                   : expected_verdict ? ""
-                   : record.validation ? (cause_of(o).empty() ? "  <- does not hold" : "  <- follows from " + cause_of(o))
-                   : !o.content_changed.empty() ? "  <- not the recorded erratum"
-                   : o.fixed ? "  <- fixed (recorded " + to_string(o.expected) + ")"
-                                       : "  <- expected " + to_string(o.expected));
-        if (o.result.outcome == verdict::erratum && !o.result.correction.empty()) {
-          fmt::print("           corrected: {}\n", o.result.correction);
-        }
+    // One line per claim on stdout, and what fails the run on stderr, both from the verdict table.
+    const std::vector<verdict_row> rows = verdict_table(record);
+    if (!o.quiet) {
+      for (std::size_t k = 0; k < record.outcomes.size(); ++k) {
+        const claim_outcome& c = record.outcomes[k];
+        fmt::print("  {:<8} {:<34}{}\n", rows[k].state == verdict_row::status::error ? "fault" : rows[k].verdict, rows[k].name,
+                   pointer(rows[k], c, record.validation));
+        if (c.result.outcome == verdict::erratum && !c.result.correction.empty()) fmt::print("           corrected: {}\n", c.result.correction);
       }
     }
-    // What fails the run, one line each, as the verdict table words it (an error was named above).
-    for (const verdict_row& row : verdict_table(record)) {
+    for (const verdict_row& row : rows) {  // an error was named above, in its own words
       if (row.state != verdict_row::status::failed) continue;
       fmt::print(stderr, "simpson-verify: {}{}: {}\n", row.expectation ? "expectation " : "", row.name, row.message);
     }

@@ -171,10 +171,8 @@ std::string expectation_line(const run_record& r) {
   if (r.outcomes.empty() && failed.empty()) return "No claim in this run.";
   const report_parts::verdict_counts c = report_parts::count_verdicts(r);
   std::vector<std::string> expected_failures;
-  for (const claim_outcome& o : r.outcomes) {
-    if (o.result.outcome == o.expected && (o.expected == verdict::fails || o.expected == verdict::kernels_disagree)) {
-      expected_failures.push_back(o.checked->id);
-    }
+  for (const verdict_row& row : verdict_table(r)) {
+    if (row.state == verdict_row::status::expected_failure) expected_failures.push_back(row.name);
   }
   const int code = run_exit_code(r);
   if (code == 3) return "Exit code 3: a check threw (a bug in the harness); see Failures.";

@@ -67,19 +67,14 @@ json amendments_json(const std::vector<amendment>& amendments) {
   return out;
 }
 
-}  // namespace
-
-namespace {
-
 /// The verdict table (verdict_table.hpp): every claim and expectation in one list, each with the
 /// one rule's status; a row whose status is "failed" or "error" is what makes the exit code non-zero.
 json verdicts_json(const run_record& r) {
   json rows = json::array();
   for (const verdict_row& row : verdict_table(r)) {
-    static constexpr const char* names[] = {"passed", "failed", "error", "expected-failure", "skipped"};
     json entry{{"name", row.name},         {"kind", row.expectation ? "expectation" : "claim"}, {"suite", row.suite},
                {"verdict", row.verdict},   {"expected", row.expected},
-               {"status", names[static_cast<int>(row.state)]}};
+               {"status", to_string(row.state)}};
     if (!row.type.empty()) entry["type"] = row.type;
     if (!row.message.empty()) entry["message"] = row.message;
     rows.push_back(std::move(entry));

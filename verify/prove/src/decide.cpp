@@ -22,7 +22,6 @@ answer confirming(answer ginac, const kernel_decision& on_fact) {
   return ginac == answer::holds ? answer::fails : answer::holds;
 }
 
-
 verdict verdict_of(const decider_evidence& evidence) {
   switch (evidence.reached) {
     case decider_evidence::reach::tool_missing: return verdict::skipped;

@@ -28,6 +28,18 @@ struct verdict_row {
   std::string message;  // in words: the line on stderr and JUnit's message
 };
 
+/// A status as report.json spells it.
+inline const char* to_string(verdict_row::status s) {
+  switch (s) {
+    case verdict_row::status::passed: return "passed";
+    case verdict_row::status::failed: return "failed";
+    case verdict_row::status::error: return "error";
+    case verdict_row::status::expected_failure: return "expected-failure";
+    case verdict_row::status::skipped: return "skipped";
+  }
+  return "?";
+}
+
 /// A claim's row. The one rule: an error when its check threw; a failure when its verdict is not
 /// the expected one (outcome_as_expected: undecided, unproved, text-changed never are), its fix not
 /// accepted, its erratum another one, or coqc rejected its certificate; in a validation (no
