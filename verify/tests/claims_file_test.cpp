@@ -135,8 +135,14 @@ INSTANTIATE_TEST_SUITE_P(
         bad_file{"never_expected", replaced(good_record, "expected = \"holds\"", "expected = \"undecided\""),
                  "claims file 'test.toml', line 9, field 'expected': 'undecided' is never expected: it is no judgment of the document "
                  "(expect holds, erratum, fails or unverifiable)"},
-        bad_file{"finding_for_holds", replaced(good_record, "expected = \"holds\"", "expected = \"holds\"\nfinding = \"wording\""),
-                 "claims file 'test.toml', line 10, field 'finding': given for a claim expected to holds"},
+        // A claim that holds may carry a remark of class wording, naming or derivation gap; an erratum is no remark's class.
+        bad_file{"finding_for_holds", replaced(good_record, "expected = \"holds\"", "expected = \"holds\"\nfinding = \"erratum\""),
+                 "claims file 'test.toml', line 10, field 'finding': 'erratum' is no class of a remark on a claim that holds (wording, naming, derivation gap)"},
+        bad_file{"remark_without_class", replaced(good_record, "expected = \"holds\"", "expected = \"holds\"\nremark = 'a remark'"),
+                 "claims file 'test.toml', line 10, field 'remark': given for a claim not expected to hold with a remark: a remark's record says "
+                 "expected = \"holds\" and its class in `finding`"},
+        bad_file{"reads_not_a_digest", replaced(good_record, "expected = \"holds\"", "expected = \"holds\"\nreads = \"xyz\""),
+                 "claims file 'test.toml', line 10, field 'reads': 'xyz' is not a digest of what the claim reads (16 hexadecimal digits)"},
         bad_file{"bad_finding", replaced(good_record, "expected = \"holds\"", "expected = \"erratum\"\nfinding = \"typo\""),
                  "claims file 'test.toml', line 10, field 'finding': 'typo' is not a class of finding (erratum, wording, derivation gap, naming, unverifiable, prose)"},
         bad_file{"unknown_cause", replaced(good_record, "expected = \"holds\"", "expected = \"holds\"\nfollows_from = \"zeroth\""),

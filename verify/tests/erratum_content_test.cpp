@@ -51,7 +51,7 @@ void expect_content_changed(const std::string& id, const paper_source& second_er
   EXPECT_EQ(run_exit_code(r), 1) << id;
   EXPECT_NE(summary_line(r).find("1 not as expected (" + id + ")"), std::string::npos) << summary_line(r);
   EXPECT_NE(report_junit(r).find("erratum-changed"), std::string::npos) << id;
-  EXPECT_NE(report_markdown(r).find("not the expected erratum"), std::string::npos) << id;
+  EXPECT_NE(report_markdown(r).find("erratum, as expected, but its correction is not the recorded one"), std::string::npos) << id;
   EXPECT_EQ(report_json(r)["claims"][0]["content_changed"], o.content_changed);
 }
 

@@ -124,11 +124,12 @@ TEST(JUnit, FailuresAreExactlyWhatMakesTheExitCodeNonZero) {
 }
 
 // A validation (no expected verdicts) speaks of what holds: an erratum fails as a claim that does
-// not hold, its consequence fails naming its cause, and no line talks of expected verdicts. A
-// regression run over the same verdicts would pass (they are the ledger's expected ones).
+// not hold, its consequence fails naming its cause, and no line talks of expected verdicts; a claim
+// that holds with a remark linked to an erratum passes. A regression run over the same verdicts
+// would pass (they are the ledger's expected ones).
 TEST(JUnit, AValidationFailsWhatDoesNotHoldAndNamesACauseOnce) {
   scene s = load_scene("quick");
-  s.claims = {"gamma-system", "gamma-singular", "phi3-det"};
+  s.claims = {"gamma-system", "gamma-singular", "experiment-conventions", "table-values", "phi3-det"};
   s.experiments = experiment_settings{};
   for (const std::string& id : s.claims) s.expected_overrides[id] = verdict::holds;
   s.overrides["validate"] = true;
@@ -146,14 +147,17 @@ TEST(JUnit, AValidationFailsWhatDoesNotHoldAndNamesACauseOnce) {
       messages[name] = testcase.get<std::string>("failure.<xmlattr>.message");
     }
   }
-  EXPECT_EQ(types.size(), 2u);
+  EXPECT_EQ(types.size(), 3u);
   EXPECT_EQ(types["gamma-system"], "does-not-hold");
-  EXPECT_EQ(types["gamma-singular"], "consequence");
-  EXPECT_NE(messages["gamma-singular"].find("a consequence of gamma-system"), std::string::npos) << messages["gamma-singular"];
+  EXPECT_EQ(types["experiment-conventions"], "does-not-hold");
+  EXPECT_EQ(types["table-values"], "consequence");
+  EXPECT_EQ(types.count("gamma-singular"), 0u) << "holds, with its remark linked to gamma-system: " << messages["gamma-singular"];
+  EXPECT_NE(messages["table-values"].find("a consequence of experiment-conventions"), std::string::npos) << messages["table-values"];
   const std::string line = expectation_line(r);
-  EXPECT_EQ(line.rfind("Exit code 1: 1 claim does not hold as written (gamma-system); 1 follows from", 0), 0u) << line;
+  EXPECT_EQ(line.rfind("Exit code 1: 2 claims do not hold as written (gamma-system, experiment-conventions); 1 follows from", 0), 0u) << line;
   EXPECT_EQ(line.find("expected"), std::string::npos) << line;
-  EXPECT_NE(summary_line(r).find("2 not holding"), std::string::npos) << summary_line(r);
+  EXPECT_NE(summary_line(r).find("3 not holding"), std::string::npos) << summary_line(r);
+  EXPECT_NE(summary_line(r).find("(1 with a remark)"), std::string::npos) << summary_line(r);
 }
 
 // A section's expectation is a testcase of its section: passed while the run shows what was
@@ -292,10 +296,11 @@ TEST(JUnit, ACompareOfTwoReportsIsATestSuiteOfItsDifferences) {
     names.insert(testcase.get<std::string>("<xmlattr>.name"));
     EXPECT_EQ(testcase.get<std::string>("failure.<xmlattr>.type"), "difference");
   }
-  EXPECT_EQ(names, (std::set<std::string>{"claim phi3-det: verdict", "claim gamma-system: correction"}));
+  EXPECT_EQ(names, (std::set<std::string>{"claim phi3-det", "claim gamma-system"}));  // one testcase per claim that differs
   const json as_data = comparison_json(found, "old", "new");
   EXPECT_FALSE(as_data["agree"].get<bool>());
-  EXPECT_EQ(as_data["differences"][0]["where"], "claim phi3-det: verdict");
+  EXPECT_EQ(as_data["differences"][0]["where"], "claim phi3-det");
+  EXPECT_EQ(as_data["differences"][0]["what"][0], "verdict: \"holds\" → \"fails\"");
 
   const boost::property_tree::ptree agree = parsed(comparison_junit(compare_reports(reference, reference), "old", "new"));
   EXPECT_EQ(agree.get<std::size_t>("testsuites.<xmlattr>.failures"), 0u);

@@ -127,8 +127,9 @@ TEST_F(ShapesOnADocument, EmergingCondition) {
 }
 
 // Leapfrog's map (map, in (q, p)) is the 2-stage Lobatto IIIA-IIIB pair's on the oscillator: a text
-// that presents it as new without naming it has a naming finding; naming it, none; another map (or
-// another tableau) is not that method, whatever the words.
+// that presents it as new without naming it holds, with a naming remark (a known method left
+// unnamed is no falsehood: the policy); naming it, no remark; another map (or another tableau) is not
+// that method, and nothing is remarked.
 TEST_F(ShapesOnADocument, KnownMethod) {
   const std::string presented = shape_document + "We propose a new integrator for the time integration of oscillators.\n";
   const auto judge = [&](const std::string& map, const std::string& tableau_position, const std::string& text) {
@@ -141,15 +142,22 @@ TEST_F(ShapesOnADocument, KnownMethod) {
   };
   const std::string lobatto_a = R"($\begin{pmatrix} 0 & 0 \\ \frac{1}{2} & \frac{1}{2} \end{pmatrix}$)";
   const claim_result unnamed = judge("map", lobatto_a, presented);
-  EXPECT_EQ(unnamed.outcome, verdict::erratum) << unnamed.note << unnamed.evidence.dump();
+  EXPECT_EQ(unnamed.outcome, verdict::holds) << unnamed.note << unnamed.evidence.dump();
+  EXPECT_EQ(unnamed.remark_kind, finding::naming);
+  EXPECT_NE(unnamed.remark.find("is the 2-stage Lobatto IIIA-IIIB pair's, proved entry by entry, and the text never names it"), std::string::npos)
+      << unnamed.remark;
   ASSERT_EQ(unnamed.amendments.size(), 1u);
   EXPECT_EQ(unnamed.amendments[0].printed, "new integrator");
   EXPECT_FALSE(unnamed.certificate.empty()) << "the maps' equality certified entry by entry";
-  EXPECT_EQ(judge("map", lobatto_a, presented + "It is the Verlet scheme.\n").outcome, verdict::holds);
-  // Psi's (2,1) entry lacks its factor: not the pair's map, so the words present something else.
-  EXPECT_EQ(judge("mapwrong", lobatto_a, presented).outcome, verdict::holds);
+  const claim_result named = judge("map", lobatto_a, presented + "It is the Verlet scheme.\n");
+  EXPECT_EQ(named.outcome, verdict::holds);
+  EXPECT_TRUE(named.remark.empty()) << named.remark;
+  // Psi's (2,1) entry lacks its factor: not the pair's map, nothing to name.
+  const claim_result other = judge("mapwrong", lobatto_a, presented);
+  EXPECT_EQ(other.outcome, verdict::holds);
+  EXPECT_TRUE(other.remark.empty()) << other.remark;
   // Lobatto IIIB's tableau for q too: another method, another map.
-  EXPECT_EQ(judge("map", R"($\begin{pmatrix} \frac{1}{2} & 0 \\ \frac{1}{2} & 0 \end{pmatrix}$)", presented).outcome, verdict::holds);
+  EXPECT_TRUE(judge("map", R"($\begin{pmatrix} \frac{1}{2} & 0 \\ \frac{1}{2} & 0 \end{pmatrix}$)", presented).remark.empty());
 }
 
 }  // namespace

@@ -117,7 +117,7 @@ Of unit determinant, $u s - v w = 1$; on a circle, $u^2 + s^2 = 1$.
   - m \om^2 h & 1 - \frac{\om^2 h^2}{4} \end{pmatrix} \end{equation}
 \begin{equation}\label{singularmap} \Phi = \frac{1}{1 - \frac{\om^2 h^2}{4}} \begin{pmatrix} 1 & h \\ 0 & 1 \end{pmatrix} \end{equation}
 Written as (\ref{map}), leapfrog is an explicit scheme. Written as (\ref{newmarkmap}), the trapezoidal rule is an explicit scheme.
-Said otherwise, the trapezoidal rule is an implicit scheme. Written as (\ref{singularmap}), the backward rule is an explicit scheme.
+Said otherwise, the trapezoidal rule is an implicit scheme. Said otherwise, leapfrog is an implicit scheme. Written as (\ref{singularmap}), the backward rule is an explicit scheme.
 \begin{equation}\label{midnode} q_m = \frac{1}{1 - \frac{\om^2 h^2}{8}} \frac{q_0 + q_1}{2} \end{equation}
 \begin{equation}\label{squarenode} q_m = \frac{q_0^2 + q_1^2}{q_0 + q_1} \end{equation}
 This node is not linear in the ends. That node is linear in the ends. Squared, the node is linear in the ends.

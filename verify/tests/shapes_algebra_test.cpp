@@ -224,11 +224,15 @@ TEST_F(ShapesOnADocument, InvarianceSingular) {
   const GiNaC::ex u = paper_symbols()["u"], v = paper_symbols()["v"], w = paper_symbols()["w"];
   EXPECT_EQ(holds.evidence.at("exact").at("conditions_solved")[0].get<std::string>(), "s = " + detail::text_of(GiNaC::normal((1 + v * w) / u)));
   EXPECT_FALSE(holds.certificate.empty());
+  // The misprinted system: the conclusion (the system as derived is singular there) holds, and only
+  // its derivation from the printed system fails: it holds, with a derivation-gap remark (before: an
+  // erratum on a true conclusion).
   const claim_result wrong = run("invariance-singular", R"({ system = "invsyswrong:side2", )" + unit + rest + " }");
-  EXPECT_EQ(wrong.outcome, verdict::erratum) << wrong.note;
-  EXPECT_NE(wrong.evidence.at("exact").at("own").get<std::string>().find("fails"), std::string::npos) << wrong.evidence.dump();
-  EXPECT_EQ(wrong.correction.rfind("the system as derived (the rows invariance-system derives) is singular there", 0), 0u) << wrong.correction;
-  EXPECT_FALSE(wrong.refutation.empty());
+  EXPECT_EQ(wrong.outcome, verdict::holds) << wrong.note;
+  EXPECT_EQ(wrong.remark_kind, finding::derivation_gap);
+  EXPECT_NE(wrong.remark.find("Its derivation from the printed system fails: that system's determinant there is"), std::string::npos) << wrong.remark;
+  EXPECT_NE(wrong.evidence.at("exact").at("printed_system").at("own").get<std::string>().find("fails"), std::string::npos) << wrong.evidence.dump();
+  EXPECT_NE(wrong.evidence.at("exact").at("own").get<std::string>().find("holds"), std::string::npos) << wrong.evidence.dump();
   EXPECT_NE(wrong.certificate.find("under_test_derived"), std::string::npos) << wrong.certificate;
   // A condition not linear in the symbol it is solved for: nothing is put in, the shape cannot judge it (undecided, never a finding).
   const claim_result circle = run("invariance-singular", R"({ system = "invsys:side2", conditions = ['inline:on a circle'], solve_for = ['s'], )" + rest + " }");
@@ -249,20 +253,23 @@ TEST_F(ShapesOnADocument, InvarianceKernel) {
   EXPECT_EQ(holds.evidence.at("exact").at("rank").at("printed").get<std::string>(), "n - 1 (GiNaC)") << holds.evidence.dump();
   EXPECT_EQ(holds.evidence.at("exact").at("rank").at("own_minor").get<std::string>().rfind("nonzero", 0), 0u) << holds.evidence.dump();
   EXPECT_FALSE(holds.certificate.empty());
+  // The rank-one system holds K's coefficients in a two-dimensional kernel: the conclusion (K
+  // conserved, up to a constant) holds of the system as derived, its derivation from the printed one
+  // fails: it holds, with that remark.
   const claim_result rank_one = run("invariance-kernel", R"({ system = "invsysrankone:side2", )" + on + rest + " }");
-  EXPECT_EQ(rank_one.outcome, verdict::erratum) << rank_one.note << rank_one.evidence.dump();
-  EXPECT_NE(rank_one.evidence.at("exact").at("own").get<std::string>().find("holds"), std::string::npos) << "in the kernel: " << rank_one.evidence.dump();
-  EXPECT_NE(rank_one.note.find("the kernel has dimension 2"), std::string::npos) << rank_one.note;
-  EXPECT_NE(rank_one.correction.find("which follows from that system"), std::string::npos) << rank_one.correction;
-  // The misprinted system: only 0 in its kernel there; corrected by the derived kernel, certified.
+  EXPECT_EQ(rank_one.outcome, verdict::holds) << rank_one.note << rank_one.evidence.dump();
+  EXPECT_EQ(rank_one.remark_kind, finding::derivation_gap);
+  EXPECT_NE(rank_one.remark.find("the kernel has dimension 2"), std::string::npos) << rank_one.remark;
+  EXPECT_NE(rank_one.remark.find("which follows from that system"), std::string::npos) << rank_one.remark;
+  // The misprinted system: only 0 in its kernel there; the conclusion holds of the derived kernel
+  // (certified), the derivation from the printed system fails.
   const claim_result wrong = run("invariance-kernel", R"({ system = "invsyswrong:side2", )" + on + rest + " }");
-  EXPECT_EQ(wrong.outcome, verdict::erratum) << wrong.note;
+  EXPECT_EQ(wrong.outcome, verdict::holds) << wrong.note;
   const GiNaC::ex u = paper_symbols()["u"], v = paper_symbols()["v"];
-  EXPECT_NE(wrong.correction.find("a one-dimensional kernel spanned by a = " + detail::text_of(GiNaC::normal((u * u - 1) / v)) + ", b = 0, c = " +
-                                  detail::text_of(-v)),
+  EXPECT_NE(wrong.remark.find("a one-dimensional kernel spanned by a = " + detail::text_of(GiNaC::normal((u * u - 1) / v)) + ", b = 0, c = " +
+                              detail::text_of(-v)),
             std::string::npos)
-      << wrong.correction;
-  EXPECT_FALSE(wrong.refutation.empty());
+      << wrong.remark;
   EXPECT_NE(wrong.certificate.find("under_test_derived"), std::string::npos) << wrong.certificate;
   // What the text says it obtains must hold there: c = 0 does not, and nothing corrects it.
   const claim_result obtains = run("invariance-kernel", R"({ system = "invsys:side2", obtains = ['inline:not only'], )" + on + rest + " }");
@@ -307,8 +314,11 @@ TEST_F(ShapesOnADocument, StabilityInterval) {
     EXPECT_NE(wrong.certificate_lemmas[1].find("_first_band"), std::string::npos);
     EXPECT_NE(wrong.certificate.find("0 < (((-1) * x) + 4)"), std::string::npos) << wrong.certificate;
   }
+  // A map whose determinant is not 1 is not symplectic, and the report says so: its premise fails
+  // (before: "undecided within the enclosure budget").
   const claim_result not_det_one = run("stability-interval", R"({ map = "mapwrong", variable = '$\omega h$', condition = "inline:Stable for" })");
-  EXPECT_EQ(not_det_one.outcome, verdict::undecided);
+  EXPECT_EQ(not_det_one.outcome, verdict::fails);
+  EXPECT_NE(not_det_one.note.find("is not symplectic: its determinant is"), std::string::npos) << not_det_one.note;
 }
 
 TEST_F(ShapesOnADocument, DiscreteMap) {

@@ -167,11 +167,11 @@ TEST(TexReader, NoDeclarationTurnsAMisreadIntoAReading) {
   EXPECT_NE(why_refused("\\frac{dV}{dq}", d_symbol).find("ambiguous"), std::string::npos);
   // O and \pi cannot be declared at all.
   claims_file_contents contents;
-  contents.symbols = claims_symbols{{}, {"O"}, {}, 3};
+  contents.symbols = claims_symbols{{}, {"O"}, {}, {}, 3};
   EXPECT_THROW(read_declarations(contents, "note.toml"), claims_file_error);
-  contents.symbols = claims_symbols{{}, {}, {"O"}, 3};
+  contents.symbols = claims_symbols{{}, {}, {"O"}, {}, 3};
   EXPECT_THROW(read_declarations(contents, "note.toml"), claims_file_error);
-  contents.symbols = claims_symbols{{"\\pi"}, {}, {}, 3};
+  contents.symbols = claims_symbols{{"\\pi"}, {}, {}, {}, 3};
   EXPECT_THROW(read_declarations(contents, "note.toml"), claims_file_error);
 }
 

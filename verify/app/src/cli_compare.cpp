@@ -32,6 +32,15 @@ int compare_report_directories(const cli_options& o) {
     std::fprintf(stderr, "simpson-verify: %s\n", e.what());
     return 2;
   }
+  // A selection against a fuller report compares only what both ran: that is --subset, or every
+  // claim and section the selection left out is a difference.
+  if (!subset && is_selection(new_report) && !is_selection(old_report)) {
+    std::fprintf(stderr, "simpson-verify: compare: '%s' is a selection (--claims or --sections: %zu claims, %zu sections) and '%s' is a full run: "
+                 "compare only what the selection ran with `simpson-verify compare --subset %s %s`\n",
+                 new_dir.c_str(), new_report.value("claims", json::array()).size(), new_report.value("experiments", json::object()).size(),
+                 old_dir.c_str(), old_dir.c_str(), new_dir.c_str());
+    return 2;
+  }
   if (subset) {
     // A selection against the fuller report, in that order: the other way round names the mistake.
     std::set<std::string> old_ids, new_ids;
@@ -46,7 +55,7 @@ int compare_report_directories(const cli_options& o) {
     }
   }
   const report_comparison found = subset ? compare_report_subset(old_report, new_report) : compare_reports(old_report, new_report);
-  const std::vector<std::string>& differences = found.differences;
+  const std::vector<report_difference>& differences = found.differences;
   if (!quiet) {
     fmt::print("compare {} (old) with {} (new){}; tolerances:\n", old_dir, new_dir,
                subset ? fmt::format(", only the new report's {} claims and {} sections", new_report.value("claims", json::array()).size(),
@@ -73,7 +82,10 @@ int compare_report_directories(const cli_options& o) {
     return differences.empty() ? 0 : 1;
   }
   for (const std::string& line : found.notes) fmt::print("note: {}\n", line);
-  for (const std::string& line : differences) fmt::print("{}\n", line);
+  for (const report_difference& d : differences) {
+    fmt::print("{}: {}\n", d.place, d.changes.front());
+    for (std::size_t k = 1; k < d.changes.size(); ++k) fmt::print("    {}\n", d.changes[k]);
+  }
   fmt::print("{}\n", differences.empty() ? std::string("the reports agree")
                                           : fmt::format("{} {}", differences.size(), differences.size() == 1 ? "difference" : "differences"));
   return differences.empty() ? 0 : 1;

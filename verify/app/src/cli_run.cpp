@@ -134,7 +134,7 @@ std::optional<int> prepare_run(cli_options& o, const CLI::App& app, int argc, ch
       s.accept_fixes = true;
       s.overrides["accept_fixes"] = true;
     }
-    if (!o.baseline.empty()) apply_baseline(s, load_report(o.baseline), o.baseline);  // a report that does not load: bad input
+    if (!o.baseline.empty()) apply_baseline(s, load_report(o.baseline, "--baseline"), o.baseline);  // a report that does not load: bad input
     if (o.validate) {
       for (const std::string& id : s.claims) s.expected_overrides[id] = verdict::holds;
       s.overrides["validate"] = true;
@@ -233,6 +233,8 @@ std::string pointer(const verdict_row& row, const claim_outcome& o, bool validat
   if (row.type == "does-not-hold") return "  <- does not hold";
   if (row.type == "consequence") return "  <- follows from " + cause_of(o);
   if (row.type == "erratum-changed") return "  <- not the recorded erratum";
+  if (row.type == "remark-changed") return "  <- not the recorded remark";
+  if (row.type == "changed") return cause_of(o).empty() ? "  <- changed: nothing it reads changed" : "  <- changed: follows from " + cause_of(o) + ", not a fix";
   if (row.type == "fixed") return "  <- fixed (recorded " + row.expected + ")";
   if (row.type == "certificate-rejected") return "  <- coqc rejected its certificate";
   return validation ? "  <- no judgment (" + row.type + ")" : "  <- expected " + row.expected;  // unexpected, undecided, unproved, text-changed
@@ -283,6 +285,7 @@ int execute_run(prepared_run& r, const cli_options& o) {
         fmt::print("  {:<8} {:<34}{}\n", rows[k].state == verdict_row::status::error ? "fault" : rows[k].verdict, rows[k].name,
                    pointer(rows[k], c, record.validation));
         if (c.result.outcome == verdict::erratum && !c.result.correction.empty()) fmt::print("           corrected: {}\n", c.result.correction);
+        if (!c.result.remark.empty()) fmt::print("           remark ({}): {}\n", to_string(c.result.remark_kind), c.result.remark);
       }
     }
     for (const verdict_row& row : rows) {  // an error was named above, in its own words

@@ -197,75 +197,84 @@ std::string first_sentence(const std::string& text) {
   return end == std::string::npos ? text : text.substr(0, end + 1);
 }
 
-/// What a referee reads first: the distinct findings about the paper, ordered by consequence, each
-/// in one line, with the consequences counted under their cause.
+/// What a referee reads first: the findings about the paper in a referee's words (substantive
+/// errors, typographical slips, statements false as worded, remarks), then each distinct finding,
+/// ordered by consequence, each in one line with the claims that follow from it, then the remarks on
+/// claims that hold.
 std::string referee_summary_markdown(const run_record& r) {
   const report_parts::verdict_counts c = report_parts::count_verdicts(r);
   if (r.outcomes.empty()) return {};
   const std::string the = r.of_the_paper ? "paper" : "document";
   std::string md = "## Referee's summary\n\n";
+  md += "**" + markdown_escaped(findings_headline(r)) + "**";
   if (c.harness + c.beyond > 0) {
-    md += fmt::format("{} of the {} claims are the {}'s ({}, not counted below). ", c.paper, r.outcomes.size(), the,
-                      c.beyond == 0    ? fmt::format("{} the harness's own statements", c.harness)
-                      : c.harness == 0 ? fmt::format("{} beyond the {}", c.beyond, the)
+    md += fmt::format(" The other {} claims are {} (not counted here).", c.harness + c.beyond,
+                      c.beyond == 0    ? fmt::format("the harness's own statements", c.harness)
+                      : c.harness == 0 ? fmt::format("claims beyond the {}", the)
                                        : fmt::format("{} beyond the {} and {} the harness's own statements", c.beyond, the, c.harness));
   }
-  const std::string prose = c.prose_slips == 0 ? std::string()
-                            : fmt::format(" Apart from them, the prose has {} spelling slip{} (class prose, last below).", c.prose_slips,
-                                          c.prose_slips == 1 ? "" : "s");
-  if (c.distinct + c.consequences == 0 && c.prose_slips > 0) {
-    md += fmt::format("No finding about the mathematics of the {}.{}\n\n", the, prose);
-  } else if (c.distinct + c.consequences == 0) {
+  md += " A finding is false as printed under every reasonable reading, its correction proved; a remark is said of a claim that holds "
+        "as an expert reads it (classes: docs/findings.md).\n\n";
+  if (c.distinct + c.consequences == 0 && c.remarks == 0 && c.prose_slips == 0) {
     return md + (r.run_scene.selection.empty()
                      ? fmt::format("No finding: every claim of the {} checked holds as printed.\n\n", the)
                      : fmt::format("No finding among the {} claim{} of this selection; the {}'s other claims were not run.\n\n", r.outcomes.size(),
                                    r.outcomes.size() == 1 ? "" : "s", the));
   }
-  if (c.distinct + c.consequences > 0) {
-    md += fmt::format("**{} distinct finding{}** about the {} ({} substantive, {} typographical), and {} consequence{} counted under "
-                      "their cause. Classes (docs/findings.md): erratum, wording, derivation gap, naming, unverifiable; and prose.{}\n\n",
-                      c.distinct, c.distinct == 1 ? "" : "s", the, c.distinct - c.typographical, c.typographical, c.consequences,
-                      c.consequences == 1 ? "" : "s", prose);
-  }
-  // Ordered by consequence: a finding that breaks a derivation (other claims follow from it) first,
-  // then wrong results, derivation gaps, wording and naming, what cannot be verified, and last the
-  // typographical slips that break nothing; the ledger's order within each.
-  const auto consequences_of = [&](const claim& k) {
+  // Ordered by consequence: a substantive error that others follow from first, then the other
+  // substantive errors, a slip that breaks a derivation, derivation gaps, wording and naming, what
+  // cannot be verified, the typographical slips that break nothing, the prose's spelling; the
+  // ledger's order within each.
+  const auto follows = [&](const claim& k) {
     std::vector<std::string> out;
     for (const claim_outcome& other : r.outcomes) {
-      if (cause_of(other) == k.id && report_parts::is_finding(other.result.outcome)) out.push_back("`" + other.checked->id + "`");
+      if (cause_of(other) == k.id && (is_finding(other.result.outcome) || !other.result.remark.empty())) {
+        out.push_back("`" + other.checked->id + "`" + (is_finding(other.result.outcome) ? "" : " (holds, with a remark)"));
+      }
     }
     return out;
   };
   const auto rank = [&](const claim_outcome& o) {
-    if (!consequences_of(*o.checked).empty()) return 0;
-    if (o.checked->typographical) return 5;
-    switch (report_parts::finding_of(o)) {
-      case finding::erratum: return 1;
-      case finding::derivation_gap: return 2;
+    const bool consequential = !follows(*o.checked).empty();
+    const finding kind = report_parts::finding_of(o);
+    if (kind == finding::prose) return 7;
+    if (o.checked->typographical) return consequential ? 2 : 6;
+    switch (kind) {
+      case finding::erratum: return consequential ? 0 : 1;
+      case finding::derivation_gap: return 3;
       case finding::wording:
-      case finding::naming: return 3;
-      case finding::unverifiable: return 4;
-      case finding::prose: return 6;
-      case finding::none: break;
+      case finding::naming: return 4;
+      case finding::unverifiable: return 5;
+      default: return 6;
     }
-    return 5;
   };
-  md += "Ordered by consequence: what breaks a derivation first, then wrong results, derivation gaps, wording and naming, what "
-        "cannot be verified, typographical slips, and the prose's spelling.\n\n";
-  for (int level = 0; level <= 6; ++level) {
+  if (c.distinct > 0 || c.prose_slips > 0) {
+    md += "Findings, ordered by consequence: substantive errors first (those that others follow from before the rest), then slips that break a "
+          "derivation, derivation gaps, wording and naming, what cannot be verified, typographical slips, and the prose's spelling.\n\n";
+  }
+  for (int level = 0; level <= 7; ++level) {
     for (const claim_outcome& o : r.outcomes) {
       const claim& k = *o.checked;
-      const bool typographical = k.typographical;
-      if (k.origin != claim_origin::paper || !report_parts::is_finding(o.result.outcome) || !cause_of(o).empty() || rank(o) != level) continue;
-      const std::vector<std::string> consequences = consequences_of(k);
+      if (k.origin != claim_origin::paper || !is_finding(o.result.outcome) || !cause_of(o).empty() || rank(o) != level) continue;
+      const std::vector<std::string> consequences = follows(k);
       const std::string what = !o.result.amendments.empty()   ? amendments_markdown(o.result.amendments)
                                : !o.result.correction.empty() ? markdown_escaped(o.result.correction)
                                                               : markdown_escaped(first_sentence(o.result.note));
       const bool stops = !what.empty() && what.back() == '.';
-      md += fmt::format("- **`{}`** (§{}, {}{}): {}{}{}\n", k.id, markdown_escaped(k.section), to_string(report_parts::finding_of(o)),
-                        typographical ? ", typographical" : "", what, stops || consequences.empty() ? "" : ".",
-                        consequences.empty() ? "" : fmt::format(" Consequences (counted under it): {}.", report_parts::join(consequences, ", ")));
+      const finding kind = report_parts::finding_of(o);
+      const std::string label = o.checked->typographical ? to_string(kind) + ", typographical"
+                                : kind == finding::erratum ? std::string("substantive error")
+                                                           : to_string(kind);
+      md += fmt::format("- **`{}`** (§{}, {}): {}{}{}\n", k.id, markdown_escaped(k.section), label, what, stops || consequences.empty() ? "" : ".",
+                        consequences.empty() ? "" : fmt::format(" Following from it: {}.", report_parts::join(consequences, ", ")));
+    }
+  }
+  if (c.remarks > 0) {
+    md += fmt::format("\nRemarks on claims that hold ({}), not findings:\n\n", c.remarks);
+    for (const claim_outcome& o : r.outcomes) {
+      if (o.checked->origin != claim_origin::paper || o.result.outcome != verdict::holds || o.result.remark.empty()) continue;
+      md += fmt::format("- **`{}`** (§{}, {}{}): {}\n", o.checked->id, markdown_escaped(o.checked->section), to_string(o.result.remark_kind),
+                        cause_of(o).empty() ? "" : "; linked to `" + cause_of(o) + "`", markdown_escaped(o.result.remark));
     }
   }
   return md + "\n";
@@ -326,8 +335,8 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
                       "not run, and nothing here speaks for them.\n\n",
                       markdown_escaped(r.run_scene.selection));
   }
-  md += fmt::format("**{}**\n\n{}\n\n", markdown_escaped(summary_line(r)), markdown_escaped(expectation_line(r)));
   md += referee_summary_markdown(r);
+  md += fmt::format("## The run\n\n**{}**\n\n{}\n\n", markdown_escaped(summary_line(r)), markdown_escaped(expectation_line(r)));
   {
     const report_parts::verdict_counts c = report_parts::count_verdicts(r);
     const std::string source = r.of_the_paper ? "the paper" : "the document";
@@ -391,34 +400,27 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
   md += "## Unverifiable\n\nClaims about material the source does not carry (a figure, a reference): no verdict on the words is "
         "possible; what the harness computed beside them is context.\n\n" + section_of(verdict::unverifiable);
 
-  bool any_fix = false;
+  // Fixes, changes and failures as the verdict table judges them (verdict_table.hpp): its row's words.
+  const std::vector<verdict_row> rows = verdict_table(r);
   std::string fixes;
-  for (const claim_outcome& o : r.outcomes) {
+  for (std::size_t k = 0; k < r.outcomes.size(); ++k) {
+    const claim_outcome& o = r.outcomes[k];
     if (!o.fixed) continue;
-    any_fix = true;
-    fixes += fmt::format("- **{}** (§{}): recorded as {}, now **holds**{}.\n", o.checked->id, o.checked->section, to_string(o.expected),
+    fixes += fmt::format("- **{}** (§{}): recorded as {}, now **holds**{}.\n", o.checked->id, o.checked->section, recorded_as(o),
                          o.fix_accepted ? " (accepted: --accept-fixes)" : ": a change of the paper; the exit code is 1 unless --accept-fixes accepts fixes");
   }
-  if (any_fix) md += "## Fixed\n\nFindings of the record that the checked text no longer has.\n\n" + fixes + "\n";
+  if (!fixes.empty()) md += "## Fixed\n\nFindings and remarks of the record that the checked text no longer has, its own words or formula changed.\n\n" + fixes + "\n";
   md += "## Failures\n\n";
   bool any_failure = false;
-  for (const claim_outcome& o : r.outcomes) {
-    const bool failed = o.result.outcome == verdict::fails || o.result.outcome == verdict::kernels_disagree ||
-                        o.result.outcome == verdict::text_changed || o.result.outcome == verdict::undecided ||
-                        o.result.outcome == verdict::unproved;
-    if (o.fixed || (!failed && outcome_as_expected(o))) continue;  // also a holds or erratum not as expected; fixes apart
+  for (std::size_t k = 0; k < r.outcomes.size(); ++k) {
+    const claim_outcome& o = r.outcomes[k];
+    const verdict_row& row = rows[k];
+    const bool listed = row.state == verdict_row::status::error || row.state == verdict_row::status::expected_failure ||
+                        (row.state == verdict_row::status::failed && row.type != "fixed");
+    if (!listed) continue;  // fixes are listed above
     any_failure = true;
-    const std::string why = o.result.evidence.contains("error")
-                                ? "its check threw, a bug in the harness: " + o.result.evidence["error"].get<std::string>()
-                            : !o.content_changed.empty()
-                                ? "the expected verdict, but not the expected erratum: " + o.content_changed + "; the exit code is 1"
-                            : o.result.outcome == o.expected
-                                ? "an expected failure: the ledger expects this verdict, so the exit code is 0"
-                            : r.validation
-                                ? (cause_of(o).empty() ? std::string("the claim does not hold as written: the exit code is 1")
-                                                       : "a consequence of " + cause_of(o) + ": the exit code is 1")
-                                : "not as expected (expected " + to_string(o.expected) + "): the exit code is 1";
-    md += finding_markdown(o, "**" + to_string(o.result.outcome) + "**, " + markdown_escaped(why));
+    const std::string why = row.message + (row.state == verdict_row::status::expected_failure ? " (the exit code is 0)" : " (the exit code is 1)");
+    md += finding_markdown(o, "**" + row.verdict + "**, " + markdown_escaped(why));
   }
   for (const section_result& section : r.sections) {
     for (const expectation& e : section.expectations) {

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -138,8 +139,7 @@ json without_coq_check(json claim) {
 
 /// "claims[3].evidence.x" → "claim <id>: evidence.x"; "experiments.table1.entries[2].ours" →
 /// "section table1, entries row 2, column ours".
-void compare_claims(const json& a, const json& b, report_comparison& result, bool subset = false) {
-  std::vector<std::string>& out = result.differences;
+void compare_claims(const json& a, const json& b, std::vector<std::string>& out, report_comparison& result, bool subset = false) {
   std::size_t coq_noted = 0;
   std::map<std::string, const json*> old_claims;
   for (const json& c : a) old_claims[c.value("id", "")] = &c;
@@ -250,6 +250,8 @@ json without_timed_parts(json report) {
 
 }  // namespace
 
+namespace {
+
 /// `from` with every string equal to `name` replaced by `as` (the paper's name in a report).
 void rename_strings(json& from, const std::string& name, const std::string& as) {
   if (from.is_string()) {
@@ -260,26 +262,102 @@ void rename_strings(json& from, const std::string& name, const std::string& as) 
 }
 
 /// The paper is compared by its SHA-256: the same bytes under another name (embedded, or the path
-/// given with --paper) are one paper, and its name is a note, not a difference on every claim.
+/// given with --paper) are one paper, and its name is a note, not a difference on every claim. Other
+/// bytes are another document: one note says so, and its name is not a difference either (every
+/// claim that read it names it): what its text changed is.
 void paper_by_digest(json& a, json& b, report_comparison& result) {
   const auto digest = [](const json& r) { return r.value("environment", json::object()).value("paper_sha256", std::string()); };
-  if (digest(a).empty() || digest(a) != digest(b)) return;
   const json old_name = a.value("paper", json()), new_name = b.value("paper", json());
-  if (old_name.is_string() && new_name.is_string() && old_name != new_name) {
-    rename_strings(b, new_name.get<std::string>(), old_name.get<std::string>());
-    result.notes.push_back(fmt::format("the same paper (SHA-256 {}...) is '{}' in the old report and '{}' in the new one: compared as one",
-                                       digest(a).substr(0, 12), old_name.get<std::string>(), new_name.get<std::string>()));
+  const bool renamed = old_name.is_string() && new_name.is_string() && old_name != new_name;
+  if (!digest(a).empty() && digest(a) == digest(b)) {
+    if (renamed) {
+      result.notes.push_back(fmt::format("the same paper (SHA-256 {}...) is '{}' in the old report and '{}' in the new one: compared as one",
+                                         digest(a).substr(0, 12), old_name.get<std::string>(), new_name.get<std::string>()));
+    }
+  } else if (!digest(a).empty() && !digest(b).empty()) {
+    result.notes.push_back(fmt::format("the documents differ: '{}' (SHA-256 {}...) in the old report, '{}' (SHA-256 {}...) in the new one; the "
+                                       "differences below are what the new text changed",
+                                       old_name.is_string() ? old_name.get<std::string>() : "?", digest(a).substr(0, 12),
+                                       new_name.is_string() ? new_name.get<std::string>() : "?", digest(b).substr(0, 12)));
+    for (json* r : {&a, &b}) {
+      if (r->contains("provenance") && (*r)["provenance"].is_object()) (*r)["provenance"].erase("sha256");
+    }
   }
+  if (renamed) rename_strings(b, new_name.get<std::string>(), old_name.get<std::string>());
   for (json* r : {&a, &b}) {
     if (r->contains("overrides") && (*r)["overrides"].is_object()) (*r)["overrides"].erase("paper");
   }
+}
+
+/// What follows from the claims and the sections: the summary's counts and lines, the verdict table,
+/// the earlier text's verdicts (provenance), all_as_expected and the list of files (a refuted certificate adds one).
+bool derived_member(const std::string& place) {
+  return place == "summary" || place == "verdicts" || place == "all_as_expected" || place == "provenance" || place == "files";
+}
+
+/// The unit a line "place: change" belongs to, and the change within it: "claim <id>", "section
+/// <name>", or the report's member.
+std::pair<std::string, std::string> unit_of(const std::string& line) {
+  if (line.rfind("claim ", 0) == 0 || line.rfind("section ", 0) == 0) {
+    const std::size_t colon = line.find(": "), comma = line.find(", ");
+    const std::size_t cut = line.rfind("section ", 0) == 0 && comma != std::string::npos && comma < colon ? comma : colon;
+    if (cut != std::string::npos) return {line.substr(0, cut), line.substr(cut + 2)};
+  }
+  const std::size_t cut = line.find_first_of(".[:");
+  if (cut == std::string::npos) return {line, line};
+  const std::size_t rest = line[cut] == ':' ? cut + 2 : cut + (line[cut] == '.' ? 1 : 0);
+  return {line.substr(0, cut), line.substr(std::min(rest, line.size()))};
+}
+
+/// Lines grouped into one difference per unit, in the order first met; what follows from the
+/// claims and the sections (derived_member) is one note when they differ.
+void grouped(const std::vector<std::string>& lines, report_comparison& result) {
+  std::vector<report_difference> units;
+  for (const std::string& line : lines) {
+    const auto [place, change] = unit_of(line);
+    auto it = std::find_if(units.begin(), units.end(), [&](const report_difference& d) { return d.place == place; });
+    if (it == units.end()) {
+      units.push_back({place, {}});
+      it = units.end() - 1;
+    }
+    it->changes.push_back(change);
+  }
+  const bool primary = std::any_of(units.begin(), units.end(), [](const report_difference& d) { return !derived_member(d.place); });
+  std::vector<std::string> derived;
+  for (report_difference& d : units) {
+    if (primary && derived_member(d.place)) {
+      derived.push_back(fmt::format("{} ({} field{})", d.place, d.changes.size(), d.changes.size() == 1 ? "" : "s"));
+      continue;
+    }
+    result.differences.push_back(std::move(d));
+  }
+  if (!derived.empty()) {
+    std::string list;
+    for (const std::string& d : derived) list += (list.empty() ? "" : ", ") + d;
+    result.notes.push_back("what follows from the differences below also differs, as they make it: " + list);
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> report_comparison::lines() const {
+  std::vector<std::string> out;
+  for (const report_difference& d : differences) {
+    for (const std::string& change : d.changes) out.push_back(d.place + ": " + change);
+  }
+  return out;
+}
+
+bool is_selection(const json& report) {
+  const json overrides = report.value("overrides", json::object());
+  return overrides.is_object() && (overrides.contains("claims") || overrides.contains("sections"));
 }
 
 report_comparison compare_reports(const json& given_old, const json& given_new) {
   report_comparison result;
   json old_report = given_old, new_report = given_new;
   paper_by_digest(old_report, new_report, result);
-  std::vector<std::string>& out = result.differences;
+  std::vector<std::string> out;
   const bool timing_differs = untimed(old_report) != untimed(new_report);
   const json a = timing_differs ? without_timed_parts(old_report) : old_report;
   const json b = timing_differs ? without_timed_parts(new_report) : new_report;
@@ -293,7 +371,7 @@ report_comparison compare_reports(const json& given_old, const json& given_new) 
     if (!b.contains(key)) {
       out.push_back(key + ": only in the old report");
     } else if (key == "claims") {
-      compare_claims(value, b.at(key), result);
+      compare_claims(value, b.at(key), out, result);
     } else if (key == "experiments") {
       compare_sections(value, b.at(key), out, false, timing_differs);
     } else if (key == "summary") {
@@ -311,6 +389,7 @@ report_comparison compare_reports(const json& given_old, const json& given_new) 
   for (const auto& [key, value] : b.items()) {
     if (!ignored_keys().count(key) && !a.contains(key)) out.push_back(key + ": only in the new report");
   }
+  grouped(out, result);
   return result;
 }
 
@@ -318,7 +397,7 @@ report_comparison compare_report_subset(const json& given_old, const json& given
   report_comparison result;
   json a = given_old, b = given_new;
   paper_by_digest(a, b, result);
-  std::vector<std::string>& out = result.differences;
+  std::vector<std::string> out;
   for (const char* key : {"schema_version", "tool", "scene", "paper", "seed", "samples", "precisions"}) {
     if (a.contains(key) != b.contains(key)) {
       out.push_back(std::string(key) + (a.contains(key) ? ": only in the old report" : ": only in the new report"));
@@ -327,24 +406,11 @@ report_comparison compare_report_subset(const json& given_old, const json& given
     }
   }
   const bool timing_differs = untimed(a) != untimed(b);
-  compare_claims(a.value("claims", json::array()), b.value("claims", json::array()), result, true);
+  compare_claims(a.value("claims", json::array()), b.value("claims", json::array()), out, result, true);
   compare_sections(a.value("experiments", json::object()), b.value("experiments", json::object()), out, true, timing_differs);
+  grouped(out, result);
   return result;
 }
-
-namespace {
-
-/// A difference's place and what changed: "claim phi3-det: verdict: ..." is place "claim
-/// phi3-det: verdict" and the rest what changed (a claim's line names the claim, then the field);
-/// any other line's place is up to its first ": ".
-std::pair<std::string, std::string> place_and_change(const std::string& line) {
-  std::size_t cut = line.find(": ");
-  if (line.rfind("claim ", 0) == 0 && cut != std::string::npos) cut = line.find(": ", cut + 2);
-  if (cut == std::string::npos) return {line, line};
-  return {line.substr(0, cut), line.substr(cut + 2)};
-}
-
-}  // namespace
 
 std::string comparison_junit(const report_comparison& found, const std::string& old_name, const std::string& new_name) {
   std::string notes;
@@ -357,10 +423,11 @@ std::string comparison_junit(const report_comparison& found, const std::string& 
   if (found.differences.empty()) {
     xml += fmt::format("    <testcase classname=\"compare\" name=\"the reports agree\"><system-out>{}</system-out></testcase>\n", markup_escaped(notes));
   }
-  for (const std::string& line : found.differences) {
-    const auto [place, change] = place_and_change(line);
+  for (const report_difference& d : found.differences) {
+    std::string body;
+    for (const std::string& change : d.changes) body += change + "\n";
     xml += fmt::format("    <testcase classname=\"compare\" name=\"{}\"><failure type=\"difference\" message=\"{}\">{}</failure></testcase>\n",
-                       markup_escaped(place), markup_escaped(change), markup_escaped(line));
+                       markup_escaped(d.place), markup_escaped(d.changes.front()), markup_escaped(body));
   }
   if (!notes.empty()) xml += "    <system-out>" + markup_escaped(notes) + "</system-out>\n";
   return xml + "  </testsuite>\n</testsuites>\n";
@@ -368,27 +435,24 @@ std::string comparison_junit(const report_comparison& found, const std::string& 
 
 json comparison_json(const report_comparison& found, const std::string& old_name, const std::string& new_name) {
   json differences = json::array();
-  for (const std::string& line : found.differences) {
-    const auto [place, change] = place_and_change(line);
-    differences.push_back({{"where", place}, {"what", change}});
-  }
+  for (const report_difference& d : found.differences) differences.push_back({{"where", d.place}, {"what", d.changes}});
   return {{"old", old_name}, {"new", new_name}, {"agree", found.differences.empty()}, {"differences", differences}, {"notes", found.notes}};
 }
 
-json load_report(const std::filesystem::path& given) {
+json load_report(const std::filesystem::path& given, const std::string& who) {
   const std::filesystem::path file = std::filesystem::is_directory(given) ? given / "report.json" : given;
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw std::invalid_argument("compare: '" + given.string() + "': no report.json there");
+  if (!in) throw std::invalid_argument(who + ": '" + given.string() + "': no report.json there");
   std::ostringstream text;
   text << in.rdbuf();
   json report;
   try {
     report = json::parse(text.str());
   } catch (const json::parse_error& e) {
-    throw std::invalid_argument("compare: '" + file.string() + "': malformed JSON (" + std::string(e.what()) + ")");
+    throw std::invalid_argument(who + ": '" + file.string() + "': malformed JSON (" + std::string(e.what()) + ")");
   }
   if (!report.is_object() || report.value("tool", "") != "simpson-verify" || !report.contains("claims")) {
-    throw std::invalid_argument("compare: '" + file.string() + "': not a simpson-verify report");
+    throw std::invalid_argument(who + ": '" + file.string() + "': not a simpson-verify report");
   }
   return report;
 }

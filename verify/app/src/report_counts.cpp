@@ -26,8 +26,6 @@ std::vector<std::string> precision_names(const std::vector<precision>& precision
   return names;
 }
 
-bool is_finding(verdict v) { return v == verdict::erratum || v == verdict::fails || v == verdict::unverifiable; }
-
 finding finding_of(const claim_outcome& o) {
   if (!is_finding(o.result.outcome)) return finding::none;
   if (o.result.outcome == o.expected && o.checked->kind != finding::none) return o.checked->kind;
@@ -41,27 +39,30 @@ verdict_counts count_verdicts(const run_record& r) {
       ++c.faults;
       continue;
     }
-    (o.checked->origin == claim_origin::paper ? c.paper : o.checked->origin == claim_origin::beyond ? c.beyond : c.harness) += 1;
-    if (o.checked->origin == claim_origin::paper && is_finding(o.result.outcome) && finding_of(o) == finding::prose) {
+    const bool paper = o.checked->origin == claim_origin::paper;
+    (paper ? c.paper : o.checked->origin == claim_origin::beyond ? c.beyond : c.harness) += 1;
+    const finding kind = finding_of(o);
+    if (paper && is_finding(o.result.outcome) && kind == finding::prose) {
       ++c.prose_claims;
       c.prose_slips += std::max<std::size_t>(1, o.result.amendments.size());
-    } else if (o.checked->origin == claim_origin::paper && is_finding(o.result.outcome)) {
+    } else if (paper && is_finding(o.result.outcome)) {
       if (cause_of(o).empty()) {
         ++c.distinct;
-        c.typographical += o.checked->typographical;
+        if (o.checked->typographical) {
+          ++c.typographical;
+        } else if (kind == finding::unverifiable) {
+          ++c.unverifiable_findings;
+        } else if (remark_class(kind)) {
+          ++c.wording;
+        } else {
+          ++c.substantive;
+        }
       } else {
         ++c.consequences;
       }
     }
-    c.held += o.result.outcome == verdict::holds;
-    c.errata += o.result.outcome == verdict::erratum;
-    c.failed += o.result.outcome == verdict::fails;
-    c.disagreed += o.result.outcome == verdict::kernels_disagree;
-    c.text_changed += o.result.outcome == verdict::text_changed;
-    c.undecided += o.result.outcome == verdict::undecided;
-    c.unproved += o.result.outcome == verdict::unproved;
-    c.skipped += o.result.outcome == verdict::skipped;
-    c.unverifiable += o.result.outcome == verdict::unverifiable;
+    c.remarks += paper && o.result.outcome == verdict::holds && !o.result.remark.empty();
+    ++c.of[static_cast<std::size_t>(o.result.outcome)];
     c.machine_read += !o.result.printed.is_null();
     c.quoted += !o.result.quoted.empty();  // a claim may read a formula and quote its sentence: counted in both
     c.whole_text += o.result.reads_whole_text;
@@ -70,7 +71,9 @@ verdict_counts count_verdicts(const run_record& r) {
     c.coq_exported += !certificate_documents(o).empty();
     c.coq_checked += o.result.evidence.contains("coq") && o.result.evidence["coq"].value("status", "") == "checked";
     if (o.fixed) c.fixed.push_back(o.checked->id);
-    if (o.fixed && !outcome_as_expected(o)) {
+    if (!o.changed.empty()) {
+      c.changed.push_back(o.checked->id + (o.changed_cause.empty() ? "" : " from " + o.changed_cause));
+    } else if (o.fixed && !outcome_as_expected(o)) {
       c.fixes_not_accepted.push_back(o.checked->id);
     } else if (!outcome_as_expected(o)) {
       c.unexpected.push_back(o.checked->id);
@@ -98,6 +101,11 @@ std::string summary_line(const run_record& r) {
     problems.push_back(r.validation ? fmt::format("{} not holding ({})", c.unexpected.size(), report_parts::join(c.unexpected, ", "))
                                     : fmt::format("{} not as expected ({})", c.unexpected.size(), report_parts::join(c.unexpected, ", ")));
   }
+  if (!c.changed.empty()) {
+    problems.push_back(fmt::format("{} changed by what {} read{} ({}: recorded as a finding or a remark, now holding without it, not a fix)",
+                                   c.changed.size(), c.changed.size() == 1 ? "it" : "they", c.changed.size() == 1 ? "s" : "",
+                                   report_parts::join(c.changed, ", ")));
+  }
   if (!c.fixes_not_accepted.empty()) {
     problems.push_back(fmt::format("{} fixed ({}: recorded as a finding, now holds; --accept-fixes accepts a fix)", c.fixes_not_accepted.size(),
                                    report_parts::join(c.fixes_not_accepted, ", ")));
@@ -117,15 +125,18 @@ std::string summary_line(const run_record& r) {
                              : r.validation      ? std::string(e.total == 0 ? "every claim holds" : "every claim and expectation holds")
                              : !c.fixed.empty()  ? fmt::format("all verdicts as expected, {} fixed, fixes accepted ({})", c.fixed.size(), report_parts::join(c.fixed, ", "))
                                                  : std::string("all verdicts as expected");
-  return fmt::format("{} {}: {} held, {} errata, {} failed{}{}{}{}{}{}{}{}; {}", r.outcomes.size(), r.outcomes.size() == 1 ? "claim" : "claims",
-                     c.held, c.errata, c.failed,
-                     c.unverifiable ? fmt::format(", {} unverifiable (material absent from the source)", c.unverifiable) : "",
-                     c.faults ? fmt::format(", {} without a verdict (a harness fault: the check threw)", c.faults) : "",
-                     c.disagreed ? fmt::format(", {} with the kernels in disagreement", c.disagreed) : "",
-                     c.text_changed ? fmt::format(", {} whose quoted words changed (text-changed)", c.text_changed) : "",
-                     c.undecided ? fmt::format(", {} undecided within the enclosure budget", c.undecided) : "",
-                     c.unproved ? fmt::format(", {} unproved (Gappa could not bound the round-off)", c.unproved) : "",
-                     c.skipped ? fmt::format(", {} skipped (gappa not installed)", c.skipped) : "", expectations, ending);
+  // Each verdict's count in its words (verdict.hpp's table): those always shown, then the others met.
+  std::vector<std::string> counted;
+  for (const verdict_meaning& m : verdict_meanings) {
+    const std::size_t n = c.count(m.value);
+    if (!m.always_counted && n == 0) continue;
+    std::string words = fmt::format(fmt::runtime(m.counted_as), n);
+    if (m.value == verdict::holds && c.remarks > 0) words += fmt::format(" ({} with a remark)", c.remarks);
+    counted.push_back(words);
+  }
+  if (c.faults) counted.push_back(fmt::format("{} without a verdict (a harness fault: the check threw)", c.faults));
+  return fmt::format("{} {}: {}{}; {}", r.outcomes.size(), r.outcomes.size() == 1 ? "claim" : "claims", report_parts::join(counted, ", "), expectations,
+                     ending);
 }
 
 namespace {
@@ -139,9 +150,9 @@ std::string validation_line(const run_record& r, const report_parts::verdict_cou
     const std::string& id = o.checked->id;
     if (o.result.outcome == verdict::undecided || o.result.outcome == verdict::unproved || o.result.outcome == verdict::kernels_disagree) {
       undecided.push_back(id);
-    } else if (report_parts::is_finding(o.result.outcome) && !cause_of(o).empty()) {
+    } else if (is_finding(o.result.outcome) && !cause_of(o).empty()) {
       consequences.push_back(id + " (from " + cause_of(o) + ")");
-    } else if (report_parts::is_finding(o.result.outcome)) {
+    } else if (is_finding(o.result.outcome)) {
       causes.push_back(id);
     } else {
       other.push_back(id + " (" + to_string(o.result.outcome) + ")");
@@ -197,6 +208,12 @@ std::string expectation_line(const run_record& r) {
       why = fmt::format("{} verdict{} differ{} from the expected one ({}): either {} or the harness changed", c.unexpected.size(),
                         c.unexpected.size() == 1 ? "" : "s", c.unexpected.size() == 1 ? "s" : "", judgment, changed);
     }
+    if (!c.changed.empty()) {
+      why += (why.empty() ? "" : "; ") + fmt::format("{} claim{} recorded as a finding or a remark now hold{} because a premise {} read{} changed "
+                                                     "({}): a consequence, not a fix, which --accept-fixes does not pass",
+                                                     c.changed.size(), c.changed.size() == 1 ? "" : "s", c.changed.size() == 1 ? "s" : "",
+                                                     c.changed.size() == 1 ? "it" : "they", c.changed.size() == 1 ? "s" : "", report_parts::join(c.changed, ", "));
+    }
     if (!c.fixes_not_accepted.empty()) {
       why += (why.empty() ? "" : "; ") + fmt::format("{} finding{} of the record now hold{} ({}): a fix of {}, which a guard reports as a "
                                                      "change (--accept-fixes accepts fixes); see Fixed",
@@ -214,33 +231,53 @@ std::string expectation_line(const run_record& r) {
                                  "mean that {} or the harness changed), not a validation",
                                  judgment, changed);
   std::vector<std::string> findings;
-  if (c.errata > 0) findings.push_back(fmt::format("{} {} (false as printed, a correction proved)", c.errata, c.errata == 1 ? "erratum" : "errata"));
+  const std::size_t errata = c.count(verdict::erratum);
+  if (errata > 0) findings.push_back(fmt::format("{} {} (false as printed, a correction proved)", errata, errata == 1 ? "erratum" : "errata"));
   if (!expected_failures.empty()) {
     findings.push_back(fmt::format("{} expected failure{} ({}: not reproduced, no correction found)", expected_failures.size(),
                                    expected_failures.size() == 1 ? "" : "s", report_parts::join(expected_failures, ", ")));
   }
   if (findings.empty()) return line + ".";
-  const std::size_t expected_findings = c.errata + expected_failures.size();
+  const std::size_t expected_findings = errata + expected_failures.size();
   return line + ": " + report_parts::join(findings, " and ") + (expected_findings == 1 ? " is an expected verdict." : " are expected verdicts.");
 }
 
 json summary_json(const run_record& r) {
   const report_parts::verdict_counts c = report_parts::count_verdicts(r);
-  return {{"line", summary_line(r)},     {"expectation", expectation_line(r)}, {"claims", r.outcomes.size()},
-          {"held", c.held},              {"errata", c.errata},
-          {"failed", c.failed},          {"harness_faults", c.faults}, {"kernels_disagree", c.disagreed},
-          {"paper_claims", c.paper},     {"beyond_claims", c.beyond},   {"harness_claims", c.harness},
-          {"distinct_findings", c.distinct}, {"typographical_findings", c.typographical}, {"consequences", c.consequences},
-          {"spelling_slips", c.prose_slips},
-          {"text_changed", c.text_changed}, {"undecided", c.undecided}, {"unproved", c.unproved}, {"skipped", c.skipped},
-          {"machine_read", c.machine_read}, {"quoted", c.quoted}, {"whole_text", c.whole_text}, {"typed", c.typed},
-          {"coq_exported", c.coq_exported}, {"coq_checked", c.coq_checked},
-          {"unexpected", c.unexpected}, {"failed_expectations", failed_expectations(r)},
-          {"expectations", report_parts::count_expectations(r).total},
-          {"fixed", c.fixed},
-          {"fixes_accepted", r.run_scene.accept_fixes},
-          {"exit_code", run_exit_code(r)},
-          {"mode", r.validation ? "validation" : "regression"}};
+  json out = {{"line", summary_line(r)},     {"expectation", expectation_line(r)}, {"headline", findings_headline(r)}, {"claims", r.outcomes.size()},
+              {"harness_faults", c.faults},
+              {"paper_claims", c.paper},     {"beyond_claims", c.beyond},   {"harness_claims", c.harness},
+              {"distinct_findings", c.distinct}, {"substantive_findings", c.substantive}, {"typographical_findings", c.typographical},
+              {"wording_findings", c.wording}, {"unverifiable_findings", c.unverifiable_findings}, {"consequences", c.consequences},
+              {"remarks", c.remarks},
+              {"spelling_slips", c.prose_slips},
+              {"machine_read", c.machine_read}, {"quoted", c.quoted}, {"whole_text", c.whole_text}, {"typed", c.typed},
+              {"coq_exported", c.coq_exported}, {"coq_checked", c.coq_checked},
+              {"unexpected", c.unexpected}, {"failed_expectations", failed_expectations(r)},
+              {"expectations", report_parts::count_expectations(r).total},
+              {"fixed", c.fixed},
+              {"changed", c.changed},
+              {"fixes_accepted", r.run_scene.accept_fixes},
+              {"exit_code", run_exit_code(r)},
+              {"mode", r.validation ? "validation" : "regression"}};
+  for (const verdict_meaning& m : verdict_meanings) out[m.count_key] = c.count(m.value);
+  return out;
+}
+
+/// The findings in a referee's words: how many substantive errors, typographical slips, findings of
+/// wording, naming or derivation, and remarks on claims that hold, the spelling apart.
+std::string findings_headline(const run_record& r) {
+  const report_parts::verdict_counts c = report_parts::count_verdicts(r);
+  const std::string the = r.of_the_paper ? "paper" : "document";
+  const auto n = [](std::size_t k, const char* one, const char* many) { return fmt::format("{} {}", k, k == 1 ? one : many); };
+  std::vector<std::string> parts{n(c.substantive, "substantive error", "substantive errors"), n(c.typographical, "typographical slip", "typographical slips"),
+                                 n(c.wording, "statement false as worded (wording, naming or derivation)", "statements false as worded (wording, naming or derivation)")};
+  if (c.unverifiable_findings > 0) parts.push_back(n(c.unverifiable_findings, "claim unverifiable for absent material", "claims unverifiable for absent material"));
+  std::string line = fmt::format("The {}'s {} claims: {}", the, c.paper, report_parts::join(parts, ", "));
+  if (c.consequences > 0) line += fmt::format(" ({} more following from them, counted under their cause)", c.consequences);
+  line += fmt::format("; {} on claims that hold", n(c.remarks, "remark", "remarks"));
+  if (c.prose_slips > 0) line += fmt::format("; {} apart", n(c.prose_slips, "spelling slip", "spelling slips"));
+  return line + ".";
 }
 
 std::size_t machine_read(const run_record& r) { return report_parts::count_verdicts(r).machine_read; }

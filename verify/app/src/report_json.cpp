@@ -1,5 +1,7 @@
 #include "report_parts.hpp"
 
+#include <simpson/verify/claim_reads.hpp>
+
 #include <simpson/verify/report.hpp>
 #include <simpson/verify/report_directory.hpp>
 
@@ -99,8 +101,12 @@ json report_json(const run_record& r, const plot_outcome& plots) {
                {"origin", to_string(c.origin)},
                {"finding", to_string(report_parts::finding_of(o))}};
     if (!cause_of(o).empty()) entry["follows_from"] = cause_of(o);
+    if (!o.result.remark.empty()) entry["remark"] = {{"class", to_string(o.result.remark_kind)}, {"text", o.result.remark}};
+    if (o.expected_remark != finding::none) entry["expected_remark"] = to_string(o.expected_remark);
     if (!o.content_changed.empty()) entry["content_changed"] = o.content_changed;
     if (o.fixed) entry["fixed"] = true;
+    if (!o.changed.empty()) entry["changed"] = {{"why", o.changed}, {"cause", o.changed_cause}};
+    if (const std::string reads = reads_digest(o.result.printed, o.result.quoted); !reads.empty()) entry["reads"] = reads;
     if (c.typographical) entry["typographical"] = true;
     if (!o.result.correction.empty()) entry["correction"] = o.result.correction;
     if (!o.result.amendments.empty()) entry["amendments"] = amendments_json(o.result.amendments);

@@ -5,6 +5,7 @@
 #include <simpson/verify/report.hpp>
 #include <simpson/verify/run.hpp>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -16,19 +17,21 @@ std::vector<std::string> precision_names(const std::vector<precision>& precision
 struct verdict_counts {
   std::size_t faults = 0;  // checks that threw: a bug in the harness, no verdict (exit 3)
   std::size_t paper = 0, beyond = 0, harness = 0;            // whose statements
-  std::size_t distinct = 0, typographical = 0, consequences = 0;  // the paper's findings, each cause once
+  /// The paper's findings, each cause once: distinct = substantive + typographical + wording (the
+  /// classes wording, derivation gap and naming of a claim false under every reading) + unverifiable.
+  std::size_t distinct = 0, substantive = 0, typographical = 0, wording = 0, unverifiable_findings = 0, consequences = 0;
+  std::size_t remarks = 0;                                       // the paper's claims that hold, with a remark
   std::size_t whole_text = 0;                                    // claims that read the text as a whole (spelling, citations)
   std::size_t prose_claims = 0, prose_slips = 0;                 // its spelling, counted apart: the claims, and the words they found
-  std::size_t unverifiable = 0;
-  std::size_t held = 0, errata = 0, failed = 0, disagreed = 0, text_changed = 0, undecided = 0, unproved = 0, skipped = 0, machine_read = 0,
-              quoted = 0, typed = 0, read_and_quoted = 0, coq_exported = 0,
-              coq_checked = 0;
+  /// How many claims have each verdict, in verdict_meanings' order.
+  std::array<std::size_t, verdict_meanings.size()> of{};
+  std::size_t machine_read = 0, quoted = 0, typed = 0, read_and_quoted = 0, coq_exported = 0, coq_checked = 0;
   std::vector<std::string> unexpected;  // not as expected, fixes not accepted apart
-  std::vector<std::string> fixed, fixes_not_accepted;
+  std::vector<std::string> fixed, fixes_not_accepted, changed;
+  std::size_t count(verdict v) const { return of[static_cast<std::size_t>(v)]; }
 };
 
 /// A verdict that is a finding about the paper: false or unsupported as printed.
-bool is_finding(verdict v);
 
 /// The class of a claim's finding: the ledger's when the verdict is the expected one; an unexpected
 /// finding is an erratum (or unverifiable) until the ledger classifies it; none when it holds.

@@ -8,6 +8,7 @@
 #include <simpson/verify/quoted_sentence.hpp>
 #include <simpson/verify/run.hpp>
 #include <simpson/verify/utf8_text.hpp>
+#include <simpson/verify/claim_reads.hpp>
 
 #include <simpson/verify/certify.hpp>
 #include <simpson/verify/consequences.hpp>
@@ -18,6 +19,7 @@
 #include <chrono>
 #include <map>
 #include <optional>
+#include <set>
 #include <cstdlib>
 #include <exception>
 
@@ -52,24 +54,88 @@ void apply_baseline(scene& s, const json& baseline, const std::string& name) {
   for (const std::string& id : s.claims) {
     const auto it = judged.find(id);
     if (it == judged.end()) continue;  // a claim the baseline did not judge keeps its record's expectation
-    const std::string word = it->second->value("verdict", "");
+    const json& entry = *it->second;
+    const std::string word = entry.value("verdict", "");
     const std::optional<verdict> v = verdict_of_name(word);
     if (!v) throw std::invalid_argument("--baseline '" + name + "': claim " + id + " has no verdict ('" + word + "')");
     // Undecided, unproved, text-changed, kernels-disagree or skipped there: no judgment to keep, so the
     // record's expectation stays (a guard stays red on what it could not decide, and never expects it).
     if (!expectable(*v)) continue;
     s.expected_overrides[id] = *v;
-    if (*v == verdict::erratum) s.baseline_corrections[id] = it->second->value("correction", "");
+    baseline_claim b;
+    if (*v == verdict::erratum) b.correction = entry.value("correction", "");
+    if (entry.contains("remark") && entry["remark"].is_object()) {
+      const std::string kind = entry["remark"].value("class", "");
+      const std::optional<finding> f = finding_of_name(kind);
+      if (!f || !remark_class(*f)) throw std::invalid_argument("--baseline '" + name + "': claim " + id + " has a remark of no remark's class ('" + kind + "')");
+      b.remark_kind = *f;
+      b.remark = entry["remark"].value("text", "");
+    }
+    b.reads = reads_digest(entry.value("printed", json()), entry.value("quoted", json::array()));
+    s.baseline_claims[id] = std::move(b);
   }
   s.baseline = name;
   s.accept_fixes = true;
   s.overrides["baseline"] = name;
 }
 
-std::string correction_change(const std::string& recorded, const std::string& now) {
-  const std::size_t k = utf8_first_difference(recorded, now);
-  return fmt::format("its correction is not the recorded one: recorded '{}', now '{}'", utf8_around(recorded, k, 160), utf8_around(now, k, 160));
+namespace {
+
+/// The formula references a claim read (its result's printed formulas).
+std::set<std::string> references_read(const claim_result& r) {
+  std::set<std::string> out;
+  if (r.printed.is_object() && r.printed.contains("formulas")) {
+    for (const json& f : r.printed["formulas"]) out.insert(f.value("reference", std::string()));
+  }
+  out.erase("");
+  return out;
 }
+
+/// A claim recorded as a finding or with a remark that now holds without it, told apart: changed when
+/// a claim that reads one of its displays no longer has its recorded verdict (the display changed
+/// under both: a premise it reads broke; the first such claim of the run is the cause), or when the
+/// text it reads is the text recorded (nothing it reads changed: the harness's judgment did); else
+/// fixed, the text it reads changed.
+void resolve_fixes(run_record& r, const scene& s) {
+  for (claim_outcome& o : r.outcomes) {
+    if (!o.fixed) continue;
+    const std::set<std::string> mine = references_read(o.result);
+    for (const claim_outcome& other : r.outcomes) {
+      if (&other == &o || other.fixed || outcome_as_expected(other)) continue;
+      for (const std::string& ref : references_read(other.result)) {
+        if (!mine.count(ref)) continue;
+        o.changed_cause = other.checked->id;
+        o.changed = fmt::format("a consequence of {}, which reads the same ({}) and no longer has its recorded verdict: the premise changed, not "
+                                "this claim's own text",
+                                other.checked->id, ref);
+        break;
+      }
+      if (!o.changed.empty()) break;
+    }
+    if (o.changed.empty()) {
+      const auto from_baseline = s.baseline_claims.find(o.checked->id);
+      const std::string recorded = from_baseline != s.baseline_claims.end() ? from_baseline->second.reads : o.checked->expected_reads;
+      const std::string now = reads_digest(o.result.printed, o.result.quoted);
+      if (!recorded.empty() && recorded == now) {
+        o.changed = "nothing it reads changed (the displays and sentences it reads are the recorded ones): the harness's judgment changed, not the "
+                    "document";
+      }
+    }
+    if (!o.changed.empty()) {
+      o.fixed = false;
+      o.fix_accepted = false;
+    }
+  }
+}
+
+}  // namespace
+
+std::string text_change(const std::string& what, const std::string& recorded, const std::string& now) {
+  const std::size_t k = utf8_first_difference(recorded, now);
+  return fmt::format("{} is not the recorded one: recorded '{}', now '{}'", what, utf8_around(recorded, k, 160), utf8_around(now, k, 160));
+}
+
+std::string correction_change(const std::string& recorded, const std::string& now) { return text_change("its correction", recorded, now); }
 
 run_record run(const scene& s, std::shared_ptr<const claim_book> book, const paper_reading& paper, const progress_callback& progress,
                const std::function<void(const std::string&, double)>& section_progress, const progress_sink& work) {
@@ -110,25 +176,45 @@ run_record run(const scene& s, std::shared_ptr<const claim_book> book, const pap
       r.internal_errors.push_back(c.id + ": " + e.what());
     }
     outcome.seconds = std::chrono::duration<double>(clock::now() - claim_start).count();
-    // The erratum's content: the record's correction, or the baseline's (--baseline).
+    // What the record (or the baseline) expects beyond the verdict: an erratum's correction, a remark.
     const bool overridden = s.expected_overrides.find(c.id) != s.expected_overrides.end();
-    const auto from_baseline = s.baseline_corrections.find(c.id);
-    const std::string recorded = from_baseline != s.baseline_corrections.end() ? from_baseline->second
-                                 : overridden                                  ? std::string()
-                                                                               : c.expected_correction;
-    if (outcome.expected == verdict::erratum && outcome.result.outcome == verdict::erratum && !recorded.empty() &&
-        outcome.result.correction != recorded) {
-      outcome.content_changed = correction_change(recorded, outcome.result.correction);
+    const auto from_baseline = s.baseline_claims.find(c.id);
+    const bool baselined = from_baseline != s.baseline_claims.end();
+    const std::string recorded = baselined ? from_baseline->second.correction : overridden ? std::string() : c.expected_correction;
+    if (baselined) {
+      outcome.expected_remark = from_baseline->second.remark_kind;
+      outcome.expected_remark_text = from_baseline->second.remark;
+    } else if (!overridden && c.expects_remark()) {
+      outcome.expected_remark = c.kind;
+      outcome.expected_remark_text = c.expected_correction;
     }
-    // A finding of the record that now holds: fixed (the ledger's expectation, not an override).
-    if (outcome.result.outcome == verdict::holds && (outcome.expected == verdict::erratum || outcome.expected == verdict::fails) &&
-        (!overridden || !s.baseline.empty())) {
+    const claim_result& got = outcome.result;
+    if (outcome.expected == verdict::erratum && got.outcome == verdict::erratum && !recorded.empty() && got.correction != recorded) {
+      outcome.content_changed = correction_change(recorded, got.correction);
+    }
+    if (!r.validation && got.outcome == verdict::holds && outcome.expected == verdict::holds) {
+      if (outcome.expected_remark == finding::none && got.remark_kind != finding::none) {
+        outcome.content_changed = fmt::format("it holds with a remark the record does not have ({}: {})", to_string(got.remark_kind), got.remark);
+      } else if (outcome.expected_remark != finding::none && got.remark_kind != finding::none &&
+                 (got.remark_kind != outcome.expected_remark ||
+                  (!outcome.expected_remark_text.empty() && got.remark != outcome.expected_remark_text))) {
+        outcome.content_changed = got.remark_kind != outcome.expected_remark
+                                      ? fmt::format("its remark is of another class: recorded {}, now {}", to_string(outcome.expected_remark),
+                                                    to_string(got.remark_kind))
+                                      : text_change("its remark", outcome.expected_remark_text, got.remark);
+      }
+    }
+    // A finding or a remark of the record that the claim now holds without: fixed, or changed by a
+    // premise (resolve_fixes, once every claim ran). The ledger's expectation, or the baseline's.
+    const bool recorded_finding = is_finding(outcome.expected) || outcome.expected_remark != finding::none;
+    if (got.outcome == verdict::holds && got.remark_kind == finding::none && recorded_finding && (!overridden || !s.baseline.empty())) {
       outcome.fixed = true;
       outcome.fix_accepted = s.accept_fixes;
     }
     r.outcomes.push_back(std::move(outcome));
     if (progress) progress(k, s.claims.size(), c, &r.outcomes.back());
   }
+  resolve_fixes(r, s);
   // Consequences traced: a claim that does not hold, judged again with an erratum's corrected
   // formulas, that then holds, is counted under that erratum.
   {

@@ -34,11 +34,15 @@ std::string position(const std::string& text, std::size_t offset) {
   return "line " + std::to_string(line) + ", column " + std::to_string(column);
 }
 
+/// A verdict a scene may expect: a judgment of the document (verdict.hpp's table says which).
 verdict parse_verdict(const std::string& origin, const std::string& field, const std::string& v) {
-  if (v == "holds") return verdict::holds;
-  if (v == "erratum") return verdict::erratum;
-  if (v == "fails") return verdict::fails;
-  fail(origin, field + ": '" + v + "' is not a verdict (holds, erratum, fails)");
+  const std::optional<verdict> named = verdict_of_name(v);
+  if (named && expectable(*named)) return *named;
+  std::string judgments;
+  for (const verdict_meaning& m : verdict_meanings) {
+    if (m.expectable) judgments += (judgments.empty() ? "" : ", ") + std::string(m.name);
+  }
+  fail(origin, field + ": '" + v + "' is not a verdict a scene may expect (" + judgments + ")");
 }
 
 /// Reads the members of one experiment section, naming each field "section.key" in errors.

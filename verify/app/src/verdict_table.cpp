@@ -2,6 +2,8 @@
 
 #include <simpson/verify/verdict_table.hpp>
 
+#include <fmt/format.h>
+
 #include <algorithm>
 
 namespace simpson::verify {
@@ -14,6 +16,11 @@ bool certificate_rejected(const claim_outcome& o) {
 }
 
 }  // namespace
+
+std::string recorded_as(const claim_outcome& o) {
+  if (o.expected == verdict::holds && o.expected_remark != finding::none) return "holds with a remark (" + to_string(o.expected_remark) + ")";
+  return to_string(o.expected);
+}
 
 verdict_row claim_row(const claim_outcome& o, bool validation) {
   using status = verdict_row::status;
@@ -28,26 +35,24 @@ verdict_row claim_row(const claim_outcome& o, bool validation) {
     row.message = std::move(message);
   };
   const json& evidence = o.result.evidence;
-  const verdict v = o.result.outcome;
-  // A verdict never expected, with its reason: a validation speaks of what holds, not of expectations.
-  const auto limit = [&](const char* field, const char* otherwise) {
-    return (validation ? row.verdict + ": " : "verdict " + row.verdict + ", expected " + row.expected + ": ") + evidence.value(field, std::string(otherwise));
-  };
+  const verdict_meaning& met = meaning(o.result.outcome);
+  const auto reason = [&]() { return evidence.value(met.reason_key, std::string(met.default_reason)); };
   if (evidence.contains("error")) {
     set(status::error, "internal-error", "internal error (a bug in the harness): " + evidence["error"].get<std::string>());
-  } else if (v == verdict::skipped) {
-    set(status::skipped, "skipped", evidence.value("skipped", std::string("the prover is not installed")));
-  } else if (v == verdict::undecided) {  // never expected (expectable): the tool's limit, not a judgment
-    set(status::failed, "undecided", limit("undecided", "no enclosure decided the claim"));
-  } else if (v == verdict::unproved) {
-    set(status::failed, "unproved", limit("unproved", "Gappa could not bound the round-off"));
-  } else if (v == verdict::text_changed) {
-    set(status::failed, "text-changed", limit("text_changed", "the quoted words changed"));
-  } else if (o.fixed) {  // a finding of the record that now holds
+  } else if (met.met == verdict_meaning::row::not_counted) {
+    set(status::skipped, met.name, reason());
+  } else if (met.met == verdict_meaning::row::never_expected) {  // the tool's limit or a changed text, not a judgment
+    set(status::failed, met.name,
+        (validation ? row.verdict + ": " : "verdict " + row.verdict + ", expected " + row.expected + ": ") + reason());
+  } else if (!o.changed.empty()) {  // recorded as a finding or a remark, holds now because a premise changed: never a fix
+    set(status::failed, "changed",
+        fmt::format("changed: recorded as {}, now holds{}: {} (not a fix: --accept-fixes does not pass it)", recorded_as(o),
+                    o.result.remark.empty() ? "" : " with another remark", o.changed));
+  } else if (o.fixed) {  // a finding or a remark of the record that now holds without it
     if (o.fix_accepted) {
-      set(status::passed, "fixed-accepted", "fixed: recorded as " + row.expected + ", now holds (accepted: --accept-fixes)");
+      set(status::passed, "fixed-accepted", "fixed: recorded as " + recorded_as(o) + ", now holds (accepted: --accept-fixes)");
     } else {
-      set(status::failed, "fixed", "fixed: recorded as " + row.expected + ", now holds (--accept-fixes accepts a fix)");
+      set(status::failed, "fixed", "fixed: recorded as " + recorded_as(o) + ", now holds (--accept-fixes accepts a fix)");
     }
   } else if (!outcome_as_expected(o) && validation) {  // no expected verdicts: the claim is to hold
     if (cause_of(o).empty()) {
@@ -55,13 +60,14 @@ verdict_row claim_row(const claim_outcome& o, bool validation) {
     } else {
       set(status::failed, "consequence", row.verdict + ": a consequence of " + cause_of(o) + ", which does not hold as written");
     }
-  } else if (!o.content_changed.empty()) {  // the expected erratum, but another one
-    set(status::failed, "erratum-changed", "erratum, as expected, but " + o.content_changed);
+  } else if (!o.content_changed.empty()) {  // the expected verdict, but another erratum or remark
+    const bool remark = o.result.outcome == verdict::holds;
+    set(status::failed, remark ? "remark-changed" : "erratum-changed", (remark ? "holds, as expected, but " : "erratum, as expected, but ") + o.content_changed);
   } else if (!outcome_as_expected(o)) {
     set(status::failed, "unexpected-verdict", "verdict " + row.verdict + ", expected " + row.expected);
   } else if (certificate_rejected(o)) {
     set(status::failed, "certificate-rejected", "coqc rejected its Coq certificate");
-  } else if (v == verdict::fails) {
+  } else if (o.result.outcome == verdict::fails) {
     set(status::expected_failure, "expected-failure",
         "expected failure: verdict fails, as the ledger expects" + (o.result.note.empty() ? std::string() : ": " + o.result.note));
   }

@@ -111,9 +111,16 @@ paper_source read_source(const std::string& path, const std::string& what) {
 
 paper_source load_paper(const std::string& path) {
   paper_source paper = read_source(path, "paper");
-  if (paper.text.find("symplectic scheme") == std::string::npos || paper.text.find("\\label{Phi3}") == std::string::npos) {
-    throw std::invalid_argument("paper '" + path +
-                                "': not the symplectic Simpson paper (no title 'symplectic scheme' or no \\label{Phi3})");
+  // Which of three it is: another document (no title), the paper cut short (its title, no end), or
+  // the paper without the display its claims start from.
+  const bool titled = paper.text.find("symplectic scheme") != std::string::npos;
+  const bool ended = paper.text.find("\\end{document}") != std::string::npos;
+  if (!titled) throw std::invalid_argument("paper '" + path + "': not the symplectic Simpson paper (its title, 'symplectic scheme', is not in it)");
+  if (paper.text.find("\\label{Phi3}") == std::string::npos) {
+    const std::size_t lines = static_cast<std::size_t>(std::count(paper.raw.begin(), paper.raw.end(), '\n')) + (paper.raw.back() == '\n' ? 0 : 1);
+    throw std::invalid_argument("paper '" + path + "': " +
+                                (ended ? std::string("the paper without the display \\label{Phi3} (Section 6's map), which its claims read")
+                                       : "truncated: it ends at line " + std::to_string(lines) + " without \\end{document}, before \\label{Phi3} (Section 6's map)"));
   }
   return paper;
 }

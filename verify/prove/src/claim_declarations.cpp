@@ -39,6 +39,8 @@ claim_declarations read_declarations(const claims_file_contents& contents, const
   names(out.written.positive, "symbols.positive", out.positive);
   names(out.written.real, "symbols.real", out.real);
   names(out.written.functions, "symbols.functions", out.reading.functions);
+  names(out.written.solutions, "symbols.solutions", out.solutions);
+  out.reading.functions.insert(out.solutions.begin(), out.solutions.end());
   out.reading.symbols = out.positive;
   out.reading.symbols.insert(out.real.begin(), out.real.end());
   return out;

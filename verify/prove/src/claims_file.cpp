@@ -5,6 +5,7 @@
 
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <map>
 #include <set>
 
@@ -23,10 +24,15 @@ verdict verdict_named(const std::string& text, const std::string& file, int line
   return *v;
 }
 
+bool is_finding_verdict(verdict v) { return is_finding(v); }
+
+bool reads_digest_spelled(const std::string& text) {
+  return text.size() == 16 && std::all_of(text.begin(), text.end(), [](char c) { return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'); });
+}
+
 finding finding_named(const std::string& text, const std::string& file, int line) {
-  for (const finding f : {finding::erratum, finding::wording, finding::derivation_gap, finding::naming, finding::unverifiable, finding::prose}) {
-    if (to_string(f) == text) return f;
-  }
+  const std::optional<finding> f = finding_of_name(text);
+  if (f && *f != finding::none) return *f;
   throw claims_file_error(file, line, "finding",
                           "'" + text + "' is not a class of finding (erratum, wording, derivation gap, naming, unverifiable, prose)");
 }
@@ -38,7 +44,7 @@ class record_reader {
     static const std::set<std::string> fields{"id",       "section",  "equation",     "statement",     "methods", "check",
                                               "expected",    "finding",       "follows_from",
                                               "typographical", "origin", "headline",  "coq_none", "shape", "with", "core", "correction",
-                                              "observes"};
+                                              "observes", "remark", "reads"};
     for (const auto& [key, node] : table_) {
       if (!fields.count(std::string(key.str()))) {
         throw claims_file_error(file_, line_of(node), std::string(key.str()), "not a field of a claim record (docs/claims-file.md)");
@@ -219,8 +225,8 @@ std::optional<claims_symbols> read_symbols(const toml::table& file_table, const 
   std::map<std::string, std::set<std::string>> seen;  // name: the lists it is in
   for (const auto& [key, node] : *s) {
     const std::string field = "symbols." + std::string(key.str());
-    if (key.str() != "positive" && key.str() != "real" && key.str() != "functions") {
-      throw claims_file_error(file, line_of(node), field, "not a field of [symbols] (positive, real, functions)");
+    if (key.str() != "positive" && key.str() != "real" && key.str() != "functions" && key.str() != "solutions") {
+      throw claims_file_error(file, line_of(node), field, "not a field of [symbols] (positive, real, functions, solutions)");
     }
     const toml::array* names = node.as_array();
     if (!names) throw claims_file_error(file, line_of(node), field, "must be an array of symbol names");
@@ -228,11 +234,14 @@ std::optional<claims_symbols> read_symbols(const toml::table& file_table, const 
       const auto* name = item.as_string();
       if (!name || name->get().empty()) throw claims_file_error(file, line_of(item), field, "must be an array of symbol names");
       std::set<std::string>& lists = seen[name->get()];
-      const bool as_function = key.str() == "functions";
-      const bool state = lists.size() == 1 && (lists.count("functions") > 0) != as_function;  // a function and a symbol
+      // A solution is a function (applied); either may also be a symbol (a state: q(t), dq/dt).
+      const bool as_function = key.str() == "functions" || key.str() == "solutions";
+      const bool earlier_function = lists.count("functions") > 0 || lists.count("solutions") > 0;
+      const bool state = lists.size() == 1 && earlier_function != as_function;  // a function and a symbol
       if (!lists.empty() && !state) throw claims_file_error(file, line_of(item), field, "'" + name->get() + "' is declared twice");
       lists.insert(std::string(key.str()));
-      (key.str() == "positive" ? out.positive : key.str() == "real" ? out.real : out.functions).push_back(name->get());
+      (key.str() == "positive" ? out.positive : key.str() == "real" ? out.real : key.str() == "functions" ? out.functions : out.solutions)
+          .push_back(name->get());
     }
   }
   return out;
@@ -308,14 +317,17 @@ claims_file_contents read_claims_contents(const std::string& text, const std::st
       r.expected_given = true;
     }
     const std::string kind = read.text("finding", false);
-    const bool is_finding = r.expected == verdict::erratum || r.expected == verdict::fails || r.expected == verdict::unverifiable;
+    const bool is_finding = expectable(r.expected) && is_finding_verdict(r.expected);
     if (!kind.empty()) r.kind = finding_named(kind, file, read.line_of_field("finding"));
     if (is_finding && kind.empty()) {
       throw claims_file_error(file, read.line_of_field("expected"), "finding",
                               "missing: an expected '" + to_string(r.expected) + "' is a finding, and says its class");
     }
-    if (!is_finding && !kind.empty()) {
-      throw claims_file_error(file, read.line_of_field("finding"), "finding", "given for a claim expected to " + to_string(r.expected));
+    // A claim expected to hold may carry a remark: its class is one a remark can have.
+    if (!is_finding && !kind.empty() && !(r.expected == verdict::holds && remark_class(r.kind))) {
+      throw claims_file_error(file, read.line_of_field("finding"), "finding",
+                              r.expected == verdict::holds ? "'" + kind + "' is no class of a remark on a claim that holds (wording, naming, derivation gap)"
+                                                           : "given for a claim expected to " + to_string(r.expected));
     }
     r.follows_from = read.text("follows_from", false);
     if (r.follows_from == r.id) throw claims_file_error(file, read.line_of_field("follows_from"), "follows_from", "a claim cannot follow from itself");
@@ -341,6 +353,15 @@ claims_file_contents read_claims_contents(const std::string& text, const std::st
     if (!r.correction.empty() && r.expected != verdict::erratum) {
       throw claims_file_error(file, read.line_of_field("correction"), "correction",
                               "given for a claim whose expected verdict is " + to_string(r.expected) + ": only an expected erratum records its correction");
+    }
+    r.remark = read.text("remark", false);
+    if (!r.remark.empty() && !(r.expected == verdict::holds && r.kind != finding::none)) {
+      throw claims_file_error(file, read.line_of_field("remark"), "remark",
+                              "given for a claim not expected to hold with a remark: a remark's record says expected = \"holds\" and its class in `finding`");
+    }
+    r.reads = read.text("reads", false);
+    if (!r.reads.empty() && !reads_digest_spelled(r.reads)) {
+      throw claims_file_error(file, read.line_of_field("reads"), "reads", "'" + r.reads + "' is not a digest of what the claim reads (16 hexadecimal digits)");
     }
     records.push_back(std::move(r));
   }

@@ -74,6 +74,10 @@ claim_result decide(const std::string& claim_id, const std::string& statement, d
   if (outcome == verdict::undecided && evidence.reached == decider_evidence::reach::judged && result.note.empty()) {
     result.note = "Neither kernel decided " + evidence.statement + ".";
   }
+  if (outcome != verdict::holds && !result.remark.empty()) {  // a remark is said of a claim that holds, never of a finding
+    result.remark.clear();
+    result.remark_kind = finding::none;
+  }
   if (evidence.goals && outcome != verdict::kernels_disagree) record_certificate(result, coq_certificate(claim_id, statement, *evidence.goals));
   result.outcome = outcome;  // the engine's one verdict site
   return result;

@@ -27,18 +27,6 @@
 namespace simpson::verify {
 namespace {
 
-/// Throws std::filesystem::error_code's kind of error (the reason in errno's words) when the file
-/// cannot be written: a full disk or a read-only mount is the output directory's fault, not a bug.
-void write_file(const std::filesystem::path& path, const std::string& content) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << content;
-  out.flush();
-  if (!out) {
-    const int error = errno != 0 ? errno : EIO;
-    throw std::filesystem::filesystem_error("cannot write", path, std::error_code(error, std::generic_category()));
-  }
-}
-
 std::string read_file(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream text;
@@ -145,6 +133,26 @@ void copy_katex(const std::filesystem::path& dir) {
 
 }  // namespace
 
+void write_file(const std::filesystem::path& path, const std::string& content) {
+  // POSIX calls, not a stream: each says why it failed (a full disk is ENOSPC, from write or close),
+  // where a stream's buffer leaves errno to whatever ran last.
+  const auto failed = [&](int error) { throw std::filesystem::filesystem_error("cannot write", path, std::error_code(error, std::generic_category())); };
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) failed(errno);
+  for (std::size_t written = 0; written < content.size();) {
+    const ::ssize_t n = ::write(fd, content.data() + written, content.size() - written);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int error = n < 0 ? errno : EIO;
+      ::close(fd);
+      failed(error);
+    }
+    written += static_cast<std::size_t>(n);
+  }
+  if (::close(fd) != 0) failed(errno);
+}
+
+
 std::string cmark_gfm_version() { return cmark_version_string(); }
 
 std::vector<std::string> katex_file_names() {
@@ -189,7 +197,7 @@ plot_outcome write_report_directory(const std::filesystem::path& dir, const std:
     const report_documents docs = documents(plots);
     write_file(staging / "report.json", docs.report.dump(2) + "\n");
     write_file(staging / "report.md", docs.markdown);
-    write_file(staging / "report.html", render_report_html(docs.markdown, docs.title));
+    write_file(staging / "report.html", render_report_html(docs.markdown, docs.title, !katex_file_names().empty()));
     copy_katex(staging);
     if (!docs.junit.empty()) write_file(staging / "report.junit.xml", docs.junit);
     for (const auto& [name, content] : docs.extra_files) {
@@ -199,7 +207,7 @@ plot_outcome write_report_directory(const std::filesystem::path& dir, const std:
     if (!docs.timing.is_null()) {
       write_file(staging / "timing.json", docs.timing.dump(2) + "\n");
       write_file(staging / "timing.md", docs.timing_markdown);
-      write_file(staging / "timing.html", render_report_html(docs.timing_markdown, docs.title + ": run times"));
+      write_file(staging / "timing.html", render_report_html(docs.timing_markdown, docs.title + ": run times", !katex_file_names().empty()));
     }
     // Everything is written: the staged directory replaces the previous report whole. SIGINT and
     // SIGTERM wait (blocked) during the two renames, so the swap is never left half done; one that

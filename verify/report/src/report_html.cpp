@@ -1,4 +1,5 @@
 #include <simpson/verify/report_html.hpp>
+#include <simpson/verify/verdict.hpp>
 
 #include <cmark-gfm-core-extensions.h>
 #include <cmark-gfm.h>
@@ -147,7 +148,8 @@ constexpr const char* style =
     ".verdict-text-changed{background:#6f42c1;color:#fff}.verdict-undecided{background:#fff3cd;color:#664d03}"
     ".verdict-unproved{background:#fff3cd;color:#664d03}.verdict-skipped{background:#e2e3e5;color:#41464b}"
     ".verdict-unverifiable{background:#e2e3e5;color:#41464b;font-style:italic}"
-    ".verdict-unexpected{outline:2px solid #c00}";
+    ".verdict-unexpected{outline:2px solid #c00}"
+    ".no-katex{background:#fff3cd;border:1px solid #c9a400;padding:6px 10px}";
 
 }  // namespace
 
@@ -176,11 +178,11 @@ std::string heading_slug(std::string_view heading_text) {
   return slug;
 }
 
-std::string render_report_html(const std::string& markdown, const std::string& title) {
+std::string render_report_html(const std::string& markdown, const std::string& title, bool katex_beside) {
   std::string body = with_tex_marked(with_contents(with_long_tables_folded(with_heading_ids(cmark_html(markdown)))));
   // Verdicts: report.md writes them in bold; each gets its colour.
-  for (const char* v : {"holds", "erratum", "fails", "kernels-disagree", "text-changed", "undecided", "unproved", "skipped", "unverifiable"}) {
-    replace_all(body, fmt::format("<strong>{}</strong>", v), fmt::format("<strong class=\"verdict verdict-{}\">{}</strong>", v, v));
+  for (const verdict_meaning& m : verdict_meanings) {
+    replace_all(body, fmt::format("<strong>{}</strong>", m.name), fmt::format("<strong class=\"verdict verdict-{}\">{}</strong>", m.name, m.name));
   }
   replace_all(body, "<strong>(unexpected)</strong>", "<strong class=\"verdict verdict-unexpected\">(unexpected)</strong>");
   // Each claim's evidence JSON, folded.
@@ -196,9 +198,15 @@ std::string render_report_html(const std::string& markdown, const std::string& t
   // Links between the report's pages go to their HTML renderings.
   replace_all(body, "href=\"timing.md\"", "href=\"timing.html\"");
   replace_all(body, "href=\"report.md\"", "href=\"report.html\"");
-  return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + markup_escaped(title) +
-         "</title>\n<link rel=\"stylesheet\" href=\"katex/katex.min.css\">\n<style>" + style + "</style>\n</head>\n<body>\n" + body +
-         katex_script + "</body>\n</html>\n";
+  // Without KaTeX beside the page the formulas stay TeX: the page says so first, and how to fix it.
+  const std::string no_katex =
+      katex_beside ? std::string()
+                   : "<p class=\"no-katex\"><strong>The formulas on this page are shown as TeX source, not rendered:</strong> KaTeX (Debian's "
+                     "package libjs-katex) was not installed when this report was written, so no katex/ folder is beside it. Install it "
+                     "(<code>apt-get install libjs-katex</code>, or <code>scripts/install-deps verify</code>) and run simpson-verify again.</p>\n";
+  return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + markup_escaped(title) + "</title>\n" +
+         (katex_beside ? "<link rel=\"stylesheet\" href=\"katex/katex.min.css\">\n" : "") + "<style>" + style + "</style>\n</head>\n<body>\n" +
+         no_katex + body + (katex_beside ? katex_script : "") + "</body>\n</html>\n";
 }
 
 }  // namespace simpson::verify

@@ -69,6 +69,14 @@ void check_shape_arguments(const claim_record& record, const std::string& file) 
       throw claims_file_error(file, argument.line, "with." + name, list ? "must be an array of strings" : "must be one string (a formula reference)");
     }
     if (list && argument.values.empty()) throw claims_file_error(file, argument.line, "with." + name, "must not be empty");
+    if (it->pairs) {
+      for (const std::string& value : argument.values) {
+        const std::size_t colon = value.find(": ");
+        if (colon == std::string::npos || colon == 0 || colon + 2 >= value.size()) {
+          throw claims_file_error(file, argument.line, "with." + name, "'" + value + "' is not 'word: replacement'");
+        }
+      }
+    }
     if (it->kind == argument_kind::word || it->kind == argument_kind::symbols || it->kind == argument_kind::words) continue;
     for (const std::string& value : argument.values) {  // each a reference that reads ('label#0' does not)
       try {
@@ -235,6 +243,18 @@ std::string check_shape_formulas(const claim_record& record, const std::string& 
       throw;
     } catch (const std::invalid_argument& e) {
       throw claims_file_error(file, line, field, e.what());
+    }
+  }
+  if (shape.bind) {  // what the shape settles of its notation before it runs
+    try {
+      shape.bind(*read, call);
+    } catch (const argument_error& e) {
+      const auto it = record.with.find(e.argument);
+      throw claims_file_error(file, it != record.with.end() ? it->second.line : record.line, "with." + e.argument, e.what());
+    } catch (const document_error&) {
+      throw;
+    } catch (const std::invalid_argument& e) {
+      throw claims_file_error(file, record.line, "with", e.what());
     }
   }
   return principal;

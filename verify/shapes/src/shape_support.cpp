@@ -16,6 +16,8 @@
 
 #include <fmt/format.h>
 
+#include <sstream>
+
 #include <algorithm>
 #include <iterator>
 #include <set>
@@ -409,6 +411,56 @@ std::optional<GiNaC::numeric> index_offset(const std::string& name, const std::s
   }
   const GiNaC::numeric k(digits.c_str());
   return rest[0] == '-' ? -k : k;
+}
+
+bool applies(const ex& e, const std::string& base) {
+  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (is_reader_function(*it) && GiNaC::ex_to<GiNaC::function>(*it).get_name() == base) return true;
+  }
+  return false;
+}
+
+ex solution_at_nodes(const ex& e, const claim_declarations& declared, const std::string& base, const std::string& index, const GiNaC::symbol& h,
+                     const std::string& parameter) {
+  if (!applies(e, base)) return e;
+  if (!declared.solutions.count(base)) {
+    throw argument_error(parameter, fmt::format("{0}(t_{1}) is read, but nothing says which {0} it is: when {0}(t) is the exact solution, declare it "
+                                                "([symbols] solutions = ['{0}'], docs/claims-file.md); when it is the scheme's value at the node, "
+                                                "write {0}_{1}",
+                                                base, index));
+  }
+  GiNaC::exmap at_nodes;
+  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (!is_reader_function(*it) || GiNaC::ex_to<GiNaC::function>(*it).get_name() != base) continue;
+    const ex& application = *it;
+    const std::string shown = text_of(application);
+    if (application.nops() != 1) throw argument_error(parameter, fmt::format("{} applies the solution {} to {} arguments, not to a node", shown, base, application.nops()));
+    const ex argument = GiNaC::expand(application.op(0));
+    // t_{n+m} + c h: one node symbol, the rest a rational multiple of the step.
+    std::optional<GiNaC::numeric> offset;
+    ex rest = argument;
+    for (const std::string& name : symbol_names(argument)) {
+      const std::optional<GiNaC::numeric> m = name.rfind("t_", 0) == 0 ? index_offset(name, index) : std::nullopt;
+      if (!m) continue;
+      if (offset || argument.degree(paper_symbols()[name]) != 1 || !argument.coeff(paper_symbols()[name], 1).is_equal(1)) {
+        offset.reset();
+        break;
+      }
+      offset = *m;
+      rest = GiNaC::expand(argument - paper_symbols()[name]);
+    }
+    const ex c = GiNaC::normal(rest / h);
+    if (!offset || !GiNaC::is_a<GiNaC::numeric>(c) || !GiNaC::ex_to<GiNaC::numeric>(c).is_rational()) {
+      throw argument_error(parameter, fmt::format("{} is the solution {} at {}, which is no node t_{} + k h", shown, base, text_of(argument), index));
+    }
+    const GiNaC::numeric k = *offset + GiNaC::ex_to<GiNaC::numeric>(c);
+    std::ostringstream digits_stream;
+    digits_stream << GiNaC::abs(k);
+    const std::string digits = digits_stream.str();
+    const std::string state = base + "_" + index + (k.is_zero() ? std::string() : (k.is_positive() ? "+" : "-") + digits);
+    at_nodes[application] = paper_symbols()[state];
+  }
+  return e.subs(at_nodes, GiNaC::subs_options::no_pattern);
 }
 
 std::string reference_of(const shape_call& call, const std::string& parameter) {

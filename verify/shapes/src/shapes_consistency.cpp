@@ -47,6 +47,28 @@ ex on_taylor_polynomials(const ex& e, const std::vector<smooth_state>& states, i
   return e.subs(on, GiNaC::subs_options::no_pattern);
 }
 
+/// The reader's functions `e` applies, each once.
+std::vector<std::string> function_names(const ex& e) {
+  std::vector<std::string> names;
+  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (!is_reader_function(*it)) continue;
+    const std::string name = GiNaC::ex_to<GiNaC::function>(*it).get_name();
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  }
+  return names;
+}
+
+/// Whether `e` applies `name` to an argument holding a time node t_<index>, t_<index>+k.
+bool applies_at_node(const ex& e, const std::string& name, const std::string& index) {
+  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (!is_reader_function(*it) || GiNaC::ex_to<GiNaC::function>(*it).get_name() != name) continue;
+    for (const std::string& symbol : symbol_names(*it)) {
+      if (symbol.rfind("t_", 0) == 0 && index_offset(symbol, index)) return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 /// Printed relations of a scheme consistent with printed differential equations: each relation
@@ -76,7 +98,17 @@ decider_evidence consistency_shape(const shape_call& call, const run_context& ct
   bool ginac_all = true, own_contradicts = false;
   std::vector<std::string> own_lines, not_decided;
   for (std::size_t i = 0; i < relations.size(); ++i) {
-    const std::vector<ex> sides = read.sides(relations[i]), printed_sides = read.sides(equations[i]);
+    std::vector<ex> sides = read.sides(relations[i]), printed_sides = read.sides(equations[i]);
+    // The exact solution written at the nodes (x(t_n + k h), x(t_{n+k}), x declared a solution): the
+    // state x_{n+k} on the smooth function, as the scheme's states are put; x(t_n) in an equation is x.
+    for (const std::string& x : call.declared->solutions) {
+      for (ex& side : sides) side = solution_at_nodes(side, *call.declared, x, index, h, "scheme");
+      for (ex& side : printed_sides) {
+        side = side.subs(apply_function(x, {paper_symbols()["t_" + index]}) == paper_symbols()[x]);
+        side = solution_at_nodes(side, *call.declared, x, index, h, "equation");
+        if (side.has(paper_symbols()[x + "_" + index])) side = side.subs(paper_symbols()[x + "_" + index] == paper_symbols()[x]);
+      }
+    }
     const ex relation = sides.front() - sides.back();
     std::vector<smooth_state> states = indexed_states(relation, index, h);
     if (states.empty()) throw std::invalid_argument(fmt::format("{} has no state x_{}, x_{}+1, ...", relations[i].locator, index, index));
@@ -260,7 +292,21 @@ std::vector<proof_shape> consistency_shape_specs() {
                    {"step", argument_kind::symbols, true, "the step h", 1},
                    {"index", argument_kind::word, true, "the index of the states, 'j' for x_j, x_{j+1}, x_{j-1}"},
                    pattern_with_hole("sentence", "optionally, a sentence stating the order, with the hole {order}", "order", false)}),
-       consistency_shape});
+       consistency_shape,
+       [](shape_reader& read, const shape_call& call) {  // x(t_j) of a function not declared a solution: refused before the run
+         const std::string index = call.with.at("index").values.front();
+         const GiNaC::symbol h = read.symbols("step").front();
+         for (const char* parameter : {"scheme", "equation"}) {
+           for (const referenced_formula& f : read.equations(parameter)) {
+             for (const GiNaC::ex& side : read.sides(f)) {
+               for (const std::string& name : function_names(side)) {
+                 if (!applies_at_node(side, name, index)) continue;
+                 solution_at_nodes(side, *call.declared, name, index, h, parameter);
+               }
+             }
+           }
+         }
+       }});
   add({"taylor-expansion", "each printed expansion x_{j+k} = ... + O(h^N) is the Taylor polynomial of x(t_j + k h) through h^(N-1)", "expansions",
        with_where({{"expansions", argument_kind::equations, true, "the printed expansions 'x_{j+k} = x_j + ... + O(h^N)'"},
                    {"step", argument_kind::symbols, true, "the step h", 1},

@@ -1,6 +1,7 @@
 // The explicit-map shape (shape_support.hpp): whether a printed one-step map is explicit, read as the
 // field defines it, against the word a sentence uses.
 
+#include <simpson/shapes/one_variable.hpp>
 #include <simpson/shapes/shape_support.hpp>
 
 #include <simpson/prove/coq_export.hpp>
@@ -141,41 +142,107 @@ decider_evidence explicit_map_shape(const shape_call& call, const run_context& c
   claim_result result;
   result.printed = read.printed();
   const std::string map_ref = reference_of(call, "map");
+  const std::string h = step.get_name();
   result.evidence["exact"] = {
-      {"statement", fmt::format("every entry of ({}) is a polynomial in {} (explicit: no step equation solved)", map_ref, step.get_name())},
-      {"ginac", polynomial ? "holds: no denominator depends on " + step.get_name()
-                           : fmt::format("fails: the denominators {} depend on {}", fmt::join(denominators, ", "), step.get_name())},
-      {"own", own_decided ? fmt::format("{}: {}", own_polynomial ? "holds" : "fails", fmt::join(own_evidence, "; "))
+      {"statement", fmt::format("({}) gives the next state in closed form for every {} > 0 (explicit on this linear problem); every entry a polynomial in {} "
+                                "(explicit as a method: no step equation solved)",
+                                map_ref, h, h)},
+      {"ginac", polynomial ? "a polynomial: no denominator depends on " + h
+                           : fmt::format("not a polynomial: the denominators {} depend on {}", fmt::join(denominators, ", "), h)},
+      {"own", own_decided ? fmt::format("{}: {}", own_polynomial ? "a polynomial" : "not a polynomial", fmt::join(own_evidence, "; "))
                           : fmt::format("not applicable: {}", fmt::join(own_evidence, "; "))},
       {"denominators", denominators},
       {"regular", regular ? fmt::format("every denominator is positive for {} > 0 (its terms)", fmt::join(positive, ", "))
                           : "not shown: a denominator's terms are not all positive"}};
   result.evidence["stated"] = stated;
-  // Each kernel's answer on the words, from its own finding whether the map is a polynomial.
+  // The words as the field reads them (the policy: an erratum is false under every reasonable
+  // reading). "Explicit", said of a scheme on a linear problem whose map the text gives, holds when
+  // that map gives the next state in closed form for every step: its denominators do not vanish. A
+  // denominator in the step is what solving the step's equation leaves, so as a method the scheme is
+  // implicit: a wording remark, not an erratum. "Implicit" holds when a denominator depends on the
+  // step, and is false of a map that is a polynomial in it.
   decider_evidence e;
   e.statement = "whether the map is a polynomial in the step";
-  e.ginac = answer_of((stated == "explicit") == polynomial);
-  e.own = own_decided ? answer_of((stated == "explicit") == own_polynomial) : answer::none;
-  const std::string computed = polynomial ? fmt::format("The scheme is explicit: every entry of ({}) is a polynomial in {}", map_ref, step.get_name())
-                                          : fmt::format("The scheme is implicit as a method: the entries of ({}) have the denominator{} {} (up to "
-                                                        "factors free of {}), which depend{} on {}, and an explicit scheme's map on a linear problem is a "
-                                                        "polynomial in {}. A denominator in {} is what solving the step's equation leaves; on this linear "
-                                                        "problem that equation is linear and solved once, in closed form, not at each step",
-                                                        map_ref, denominators.size() == 1 ? "" : "s", fmt::join(denominators, ", "), step.get_name(),
-                                                        denominators.size() == 1 ? "s" : "", step.get_name(), step.get_name(), step.get_name());
-  if ((stated == "explicit") == polynomial) {
-    result.note = computed + ".";
+  const std::string denominators_text = fmt::format("{} {}", denominators.size() == 1 ? "denominator" : "denominators", fmt::join(denominators, ", "));
+  if (stated == "explicit") {
+    e.statement = "whether the map's denominators are positive for every step";
+    // Our kernel, on each denominator with the other positive symbols at 1: its positive roots in
+    // the step by Sturm sequences. None, and positive at a step: it confirms GiNaC's sign read from
+    // the terms (which holds for every positive value, Coq checking each); a root refutes "for every
+    // step" there.
+    GiNaC::exmap at_one;
+    for (const ex& p : positive_symbols) {
+      if (!p.is_equal(step)) at_one[p] = 1;
+    }
+    std::optional<std::string> pole;
+    bool own_positive = true, own_applies = true;
+    std::vector<std::string> own_lines;
+    std::vector<ex> all_denominators;
+    for (unsigned r = 0; r < map.rows(); ++r) {
+      for (unsigned c = 0; c < map.cols(); ++c) {
+        const ex den = GiNaC::denom(GiNaC::normal(map(r, c)));
+        if (GiNaC::is_a<GiNaC::numeric>(den)) continue;
+        const ex primitive = GiNaC::factor(GiNaC::expand(den).primpart(step));
+        if (std::none_of(all_denominators.begin(), all_denominators.end(), [&](const ex& d) { return text_of(d) == text_of(primitive); })) {
+          all_denominators.push_back(primitive);
+        }
+      }
+    }
+    for (const ex& d : all_denominators) {
+      try {
+        const simpson::verify::polynomial at = as_polynomial(GiNaC::expand(d.subs(at_one)), step);
+        const std::vector<positive_root> roots = positive_roots(at);
+        const bool positive_somewhere = at.evaluate(rational(1)) > 0;
+        if (!roots.empty() && !pole) pole = fmt::format("{} = 0 at {} = {} (the other positive symbols 1)", text_of(d), h, root_text(roots.front()));
+        own_positive = own_positive && roots.empty() && positive_somewhere;
+        own_lines.push_back(fmt::format("{}: {} positive root{} in {} (Sturm sequences){}", text_of(d), roots.size(), roots.size() == 1 ? "" : "s", h,
+                                        roots.empty() ? (positive_somewhere ? ", positive" : ", negative") : ""));
+      } catch (const std::invalid_argument&) {  // a coefficient that is no rational number there
+        own_applies = false;
+      }
+    }
+    std::vector<std::string> ones;  // in the record's order
+    for (const ex& p : positive_symbols) {
+      if (!p.is_equal(step)) ones.push_back(text_of(p) + " = 1");
+    }
+    const std::string at_text = ones.empty() ? std::string() : fmt::format(" at {}", fmt::join(ones, ", "));
+    result.evidence["exact"]["ginac"] = regular ? fmt::format("holds: every denominator is positive for {} > 0 (its terms); {}", fmt::join(positive, ", "),
+                                                              result.evidence["exact"]["ginac"].get<std::string>())
+                                                : fmt::format("not shown: a denominator's terms are not all positive; {}", result.evidence["exact"]["ginac"].get<std::string>());
+    result.evidence["exact"]["own"] = !own_applies ? "not applicable: a denominator's coefficients are not rational numbers" + at_text
+                                      : own_lines.empty() ? std::string("holds: no denominator depends on ") + h
+                                                          : fmt::format("{}{}: {}", own_positive ? "holds" : "fails", at_text, fmt::join(own_lines, "; "));
+    e.ginac = regular ? answer::holds : pole ? answer::fails : answer::none;
+    e.own = !own_applies ? answer::none : own_positive ? (regular ? answer::holds : answer::none) : pole ? answer::fails : answer::none;
+    if (!regular) {
+      if (!pole) {
+        result.note = fmt::format("A denominator of ({}) is not shown positive for every {} > 0, nor shown to vanish: whether the map is defined for every "
+                                  "step is not decided.",
+                                  map_ref, h);
+        return beyond_reach(std::move(result));
+      }
+      result.correction = fmt::format("({}) is not in closed form for every {} > 0: {}, and the step is not defined there", map_ref, h, *pole);
+      result.amendments.push_back(amendment_in_words("the scheme's kind", said.words("kind"), "explicit only where " + *pole + " does not hold"));
+    } else if (!polynomial) {
+      result.remark_kind = finding::wording;
+      result.remark = fmt::format("Explicit on this linear problem: ({}) gives the next state in closed form, regular for every {} > 0. As a method the "
+                                  "scheme is implicit: the {} (up to factors free of {}) depend{} on {}, what solving the step's equation leaves; for a "
+                                  "general potential that equation is solved at every step.",
+                                  map_ref, h, denominators_text, h, denominators.size() == 1 ? "s" : "", h);
+      result.amendments.push_back(amendment_in_words("the scheme's kind", said.words("kind"),
+                                                     "explicit for this linear problem (in closed form); implicit as a method"));
+    } else {
+      result.note = fmt::format("The scheme is explicit: every entry of ({}) is a polynomial in {}.", map_ref, h);
+    }
   } else {
-    result.correction = computed + ".";
-    result.amendments.push_back(amendment_in_words(
-        "the scheme's kind", said.words("kind"),
-        polynomial ? "explicit: every entry of the map is a polynomial in " + step.get_name()
-                   : fmt::format("implicit as a method (the map's denominator{} {} depend{} on {}); on this linear problem, in closed form",
-                                 denominators.size() == 1 ? "" : "s", fmt::join(denominators, ", "), denominators.size() == 1 ? "s" : "", step.get_name())));
-    if (stated == "explicit" && regular) {
-      result.note = fmt::format("Wording: the map is in closed form and regular for every {} > 0 (its denominators are positive), which is what the "
-                                "words can mean; every linear one-step scheme is explicit in that sense.",
-                                step.get_name());
+    e.ginac = answer_of(!polynomial);
+    e.own = own_decided ? answer_of(!own_polynomial) : answer::none;
+    if (polynomial) {
+      result.correction = fmt::format("The scheme is explicit: every entry of ({}) is a polynomial in {}, so no step equation is solved.", map_ref, h);
+      result.amendments.push_back(amendment_in_words("the scheme's kind", said.words("kind"), "explicit: every entry of the map is a polynomial in " + h));
+    } else {
+      result.note = fmt::format("The scheme is implicit as a method: the entries of ({}) have the {}, which depend{} on {}.", map_ref, denominators_text,
+                                denominators.size() == 1 ? "s" : "", h);
     }
   }
   if (goals.empty()) {
@@ -275,7 +342,9 @@ decider_evidence explicit_scheme_shape(const shape_call& call, const run_context
 std::vector<proof_shape> explicit_shape_specs() {
   std::vector<proof_shape> all;
   const auto add = [&](proof_shape s) { all.push_back(std::move(s)); };
-  add({"explicit-map", "the sentence's {kind} (explicit or implicit) is what the printed map is: explicit when every entry is a polynomial in the step",
+  add({"explicit-map", "the sentence's {kind} (explicit or implicit) is what the printed map of a linear problem is: explicit when it gives the next state "
+                       "in closed form for every step (its denominators positive), with a wording remark when a denominator depends on the step "
+                       "(implicit as a method); implicit when one does",
        "map",
        with_where({{"map", argument_kind::matrix, true, "the printed one-step map"},
                    {"step", argument_kind::symbols, true, "the step h", 1},

@@ -215,26 +215,52 @@ decider_evidence linear_shape(const shape_call& call, const run_context& ctx) {
   const std::vector<GiNaC::symbol> variables = read.symbols("variables");
   const quoted_sentence said = quote(ctx, call.with.at("sentence").values.front());
   const std::string stated = said.choice("linearity", hole_named("linearity").phrases);
+  // "Linear" as the field reads it: of an equation in its unknowns, or of a function of a real
+  // variable (an interpolation, a curve), affine (degree at most 1: "linear in q_{j+1}", "linear
+  // interpolation"); of a map or a form, additive and homogeneous (the record says sense =
+  // "homogeneous").
+  const bool homogeneous = read.has("sense") && call.with.at("sense").values.front() == "homogeneous";
+  const std::string sense = homogeneous ? "linear (homogeneous)" : "affine";
   ex combination = 0;
   std::vector<std::string> names, terms;
-  std::string pole;  // a unit vector where the expression has no value: not linear
-  // Its value at each unit vector from its normal form, where no denominator of it vanishes there:
-  // linearity is the function's, whatever the tree as read divides by on the way.
+  std::string pole;  // a point where the expression has no value: not linear
+  // Its values at a base point and at the base plus each unit vector, from its normal form where no
+  // denominator of it vanishes: linearity is the function's, whatever the tree as read divides by on
+  // the way. The base is the origin (homogeneous: its value there must be 0, so the origin itself is
+  // not evaluated; affine: e(0)), or, affine, where the origin is a pole of the tree as written
+  // (q_0^2 + q_1^2 over q_0 + q_1), the point of ones: an affine function is determined by any point.
   const ex normal = GiNaC::normal(e);
-  for (std::size_t i = 0; i < variables.size(); ++i) {
-    GiNaC::exmap unit;
-    for (std::size_t k = 0; k < variables.size(); ++k) unit[variables[k]] = k == i ? 1 : 0;
+  GiNaC::exmap base;
+  for (const GiNaC::symbol& v : variables) base[v] = 0;
+  ex constant = 0;
+  if (!homogeneous) {
+    if (vanishing_denominator(normal, base)) {
+      for (const GiNaC::symbol& v : variables) base[v] = 1;
+      if (vanishing_denominator(normal, base)) pole = "the origin, every variable 0, and the point of ones";
+    }
+    if (pole.empty()) {
+      constant = GiNaC::normal(normal.subs(base, GiNaC::subs_options::no_pattern));
+      combination = constant;
+      if (!constant.is_zero()) terms.push_back(text_of(constant));
+    }
+  }
+  for (std::size_t i = 0; i < variables.size() && pole.empty(); ++i) {
+    GiNaC::exmap unit = base;
+    unit[variables[i]] = base[variables[i]] + 1;
     names.push_back(variables[i].get_name());
     if (vanishing_denominator(normal, unit)) {
-      if (pole.empty()) pole = fmt::format("{} = 1, the others 0", variables[i].get_name());
+      if (pole.empty()) pole = fmt::format("{} = {}, the others {}", variables[i].get_name(), text_of(unit[variables[i]]), text_of(base[variables[i]]));
       continue;
     }
-    const ex coefficient = GiNaC::normal(normal.subs(unit, GiNaC::subs_options::no_pattern));
-    combination += variables[i] * coefficient;
-    terms.push_back(fmt::format("{} ({})", variables[i].get_name(), text_of(coefficient)));
+    const ex coefficient = GiNaC::normal(normal.subs(unit, GiNaC::subs_options::no_pattern) - constant);
+    const ex shifted = GiNaC::normal(variables[i] - base[variables[i]]);
+    combination += shifted * coefficient;
+    terms.push_back(fmt::format("{} ({})", text_of(shifted), text_of(coefficient)));
   }
+  names.clear();
+  for (const GiNaC::symbol& v : variables) names.push_back(v.get_name());
   const std::string expression_ref = reference_of(call, "expression");
-  const std::string what = fmt::format("({}) is linear in {}: it is {}", expression_ref, fmt::join(names, ", "), fmt::join(terms, " + "));
+  const std::string what = fmt::format("({}) is {} in {}: it is {}", expression_ref, sense, fmt::join(names, ", "), fmt::join(terms, " + "));
   decider_evidence judged;
   if (pole.empty()) {
     judged = identity_evidence(read, "linear", what, e, combination, "", verdict::fails);
@@ -245,54 +271,50 @@ decider_evidence linear_shape(const shape_call& call, const run_context& ctx) {
   claim_result& result = judged.found;
   if (!pole.empty()) {
     result.printed = read.printed();
-    result.evidence["exact"] = {{"statement", fmt::format("({}) is linear in {}", expression_ref, fmt::join(names, ", "))},
+    result.evidence["exact"] = {{"statement", fmt::format("({}) is {} in {}", expression_ref, sense, fmt::join(names, ", "))},
                                 {"ginac", "fails: it has no value at " + pole + " (a pole), where a linear function is defined"},
                                 {"own", "not applicable: nothing to evaluate at a pole"}};
     result.certificate_missing = "a pole: no identity to state";
   }
   result.evidence["stated"] = said.words("linearity");
+  result.evidence["sense"] = sense;
   if (judged.agreed() == answer::none) return judged;  // the kernels disagree
   const bool linear = judged.found_holds();
-  const std::string computed = linear ? fmt::format("({}) is linear in {}: {} = {}", expression_ref, fmt::join(names, ", "), text_of(GiNaC::normal(e)),
+  const std::string computed = linear ? fmt::format("({}) is {} in {}: {} = {}", expression_ref, sense, fmt::join(names, ", "), text_of(GiNaC::normal(e)),
                                                     fmt::join(terms, " + "))
-                      : !pole.empty() ? fmt::format("({}) is not linear in {}: it has no value at {}", expression_ref, fmt::join(names, ", "), pole)
-                                      : fmt::format("({}) is not linear in {}: it differs from {} by {}", expression_ref, fmt::join(names, ", "),
-                                                    fmt::join(terms, " + "), text_of(normal_difference(e, combination)));
+                      : !pole.empty() ? fmt::format("({}) is not {} in {}: it has no value at {}", expression_ref, sense, fmt::join(names, ", "), pole)
+                                      : fmt::format("({}) is not {} in {}: it differs from {} by {}", expression_ref, sense, fmt::join(names, ", "),
+                                                    fmt::join(terms, " + "), text_of(GiNaC::factor(normal_difference(e, combination))));
   result.note = result.note.empty() || linear ? "" : result.note;
   // The claim is the sentence's word: each kernel's answer on "not linear" is the denial of its
   // answer on "linear"; words that are false are an erratum, corrected by what the expression is.
   if (stated != "linear") {
     judged.ginac = negated(judged.ginac);
     judged.own = negated(judged.own);
+    // Each kernel's line said of the denial the sentence makes: its "fails" on "linear" is a "holds".
+    json& exact = result.evidence["exact"];
+    for (const char* kernel : {"ginac", "own"}) {
+      if (!exact.contains(kernel) || !exact[kernel].is_string()) continue;
+      const std::string said = exact[kernel].get<std::string>();
+      if (said.rfind("fails", 0) == 0) exact[kernel] = "holds (not " + sense + "): " + said.substr(said.find(':') == std::string::npos ? 5 : said.find(':') + 2);
+      else if (said.rfind("holds", 0) == 0) exact[kernel] = "fails (it is " + sense + "): " + said.substr(said.find(':') == std::string::npos ? 5 : said.find(':') + 2);
+    }
   }
   judged.if_false = verdict::erratum;
   if ((stated == "linear") == linear) {
-    if (!linear) result.note = "As the sentence says: " + computed + ".";
+    result.note = "As the sentence says: " + computed + ".";
+    // Under its condition ("if h > 0"): what the expression is at the condition's boundary, where the
+    // words would not hold.
+    if (!linear && read.has("positive")) {
+      const GiNaC::symbol s = read.symbols("positive").front();
+      const ex at_zero = GiNaC::normal(normal.subs(s == 0));
+      const ex at_zero_difference = GiNaC::normal(at_zero - GiNaC::normal(combination.subs(s == 0)));
+      if (at_zero_difference.is_zero()) result.note += fmt::format(" At {} = 0 it is {}: the condition {} > 0 is what makes it not {}.", s.get_name(), sense, s.get_name(), sense);
+    }
   } else {
     result.correction = computed;
-    // A wording erratum only where the words' weaker meaning holds (below); else the words are false.
     result.note = fmt::format("As printed, the sentence says '{}'.", said.words("linearity"));
-    if (!linear || stated == "linear" || !read.has("positive")) {
-      result.amendments.push_back(amendment_in_words("the sentence's words", said.words("linearity"), linear ? "linear" : "not linear"));
-    }
-    // What the words can mean under their condition ("if h > 0"): the expression is not its value at
-    // h = 0 (GiNaC: the ratio of the two, in normal form).
-    if (linear && stated != "linear" && read.has("positive")) {
-      const GiNaC::symbol s = read.symbols("positive").front();
-      const ex at_zero = GiNaC::normal(GiNaC::normal(e).subs(s == 0));
-      if (!at_zero.is_zero() && !normal_difference(e, at_zero).is_zero()) {
-        result.note = fmt::format("Wording: the sentence says '{}'.", said.words("linearity"));
-        result.note += fmt::format(" What holds for {} > 0: ({}) is not its value at {} = 0, {}, but {} times it", s.get_name(), expression_ref,
-                                   s.get_name(), text_of(at_zero), text_of(GiNaC::factor(GiNaC::normal(e / at_zero))));
-        result.correction += fmt::format("; for {} > 0 it is not its value at {} = 0, {}, but {} times it", s.get_name(), s.get_name(),
-                                         text_of(at_zero), text_of(GiNaC::factor(GiNaC::normal(e / at_zero))));
-        result.evidence["positive"] = {{"at_zero", text_of(at_zero)}, {"ratio", text_of(GiNaC::factor(GiNaC::normal(e / at_zero)))}};
-        result.amendments.push_back(amendment_in_words(
-            "the sentence's words", said.words("linearity"),
-            fmt::format("linear in {}, but for {} > 0 not its value at {} = 0: ${}$ times ${}$", fmt::join(names, ", "), s.get_name(), s.get_name(),
-                        canonical_tex(GiNaC::factor(GiNaC::normal(e / at_zero))), canonical_tex(at_zero))));
-      }
-    }
+    result.amendments.push_back(amendment_in_words("the sentence's words", said.words("linearity"), linear ? "linear" : "not linear"));
   }
   return judged;
 }
@@ -328,14 +350,17 @@ std::vector<proof_shape> identities_shape_specs() {
        determinant_shape});
   add({"symplectic", "matrix^T J matrix = J, J = [[0, I], [-I, 0]]", "matrix",
        with_where({{"matrix", argument_kind::matrix, true, "a one-step map of (q, p)"}}), symplectic_shape});
-  add({"linear", "the sentence's {linearity} (linear, or not linear) is what the expression is in the variables: e = sum of v_i e(unit v_i)", "expression",
+  add({"linear", "the sentence's {linearity} (linear, or not linear) is what the expression is in the variables, as the field reads it: affine "
+                 "(e = e(0) + sum of v_i (e(unit v_i) - e(0))) for an equation or a curve, homogeneous for a map or a form (sense)", "expression",
        with_where({{"expression", argument_kind::formula, true, "the printed expression"},
                    {"variables", argument_kind::symbols, true, "the variables it is linear in, or not"},
                    pattern_with_hole("sentence", "the sentence's pattern: the hole {linearity}, 'linear' or 'not linear'", "linearity"),
                    {"positive", argument_kind::symbols, false,
-                    "the symbol the sentence's condition makes positive ('if h > 0'): a wording erratum then says what holds, that "
-                    "for it > 0 the expression is not its value at 0",
-                    1}}),
+                    "the symbol the sentence's condition makes positive ('if h > 0'): the note says what the expression is where it is 0", 1},
+                   {"sense", argument_kind::word, false,
+                    "'affine' (the default: an equation in its unknowns, a function of a real variable such as an interpolation) or "
+                    "'homogeneous' (a map or a form: additive and homogeneous)",
+                    0, "", false, {"affine", "homogeneous"}}}),
        linear_shape});
   return all;
 }

@@ -114,9 +114,22 @@ decider_evidence stability_interval_shape(const shape_call& call, const run_cont
     const ex det = m.determinant();
     const kernel_decision det_own = kernel_decides_zero(det - 1);
     if (!GiNaC::normal(det - 1).is_zero() || det_own.outcome == kernel_decision::result::nonzero) {
+      // Not symplectic: the premise of the band's criterion (|trace| < 2 for det 1) fails, decided in
+      // both kernels; a finding without a correction (what its stable set is, the shape does not say).
       result.printed = read.printed();
-      result.note = "The shape decides maps with det 1; det (" + what + ") = " + text_of(GiNaC::normal(det)) + ".";
-      return beyond_reach(std::move(result));
+      result.evidence["exact"] = {{"statement", "det (" + what + ") = 1: the map is symplectic, the premise of the criterion |trace| < 2"},
+                                  {"ginac", "fails: det = " + text_of(GiNaC::normal(det))},
+                                  {"own", std::string(det_own.outcome == kernel_decision::result::nonzero ? "fails: " : "not decided: ") + det_own.evidence}};
+      result.note = "(" + what + ") is not symplectic: its determinant is " + text_of(GiNaC::factor(GiNaC::normal(det))) +
+                    ", not 1, so its stability is not the band where |trace| < 2 that this shape decides.";
+      result.certificate_missing = "a determinant that is not 1: nothing to certify of the band";
+      decider_evidence e;
+      e.statement = "det = 1, the map's premise";
+      e.ginac = answer::fails;
+      e.own = det_own.outcome == kernel_decision::result::nonzero ? answer::fails : answer::none;
+      e.if_false = verdict::fails;
+      e.found = std::move(result);
+      return e;
     }
     trace = m(0, 0) + m(1, 1);
     premise = "det = 1 (GiNaC normal form; our kernel: " + det_own.evidence + ")";

@@ -392,8 +392,21 @@ decider_evidence invariance_singular_shape(const shape_call& call, const run_con
   if (e.found_false() && !derived_singular) {
     e.found.note += fmt::format(" The system as derived is not singular there either: its determinant is {}.", text_of(GiNaC::normal(det_derived)));
   }
-  if (e.found_false() && derived_singular) {  // the correction certified beside the refutation
-    e.goals = std::vector<proof_goal>{decided("printed", det_printed, 0), decided("derived", det_derived, 0)};
+  if (e.found_false() && derived_singular) {
+    // The conclusion holds of the system as derived; only its derivation from the printed system
+    // fails (a consequence of the printed system's own erratum): it holds, with that remark.
+    const json evidence = e.found.evidence;
+    decider_evidence derived = identity_evidence(read, "derived", fmt::format("det of the system as derived (invariance-system's rows), with {}, = 0", on),
+                                                 det_derived, 0, "", verdict::fails);
+    derived.found.evidence["exact"]["printed_system"] = evidence["exact"];
+    derived.found.evidence["exact"]["conditions_solved"] = solved.text;
+    derived.found.remark_kind = finding::derivation_gap;
+    derived.found.remark = fmt::format("The conclusion holds: the system as derived (the rows invariance-system derives) is singular with {}. Its derivation "
+                                       "from the printed system fails: that system's determinant there is {}, not 0.",
+                                       on, text_of(GiNaC::factor(GiNaC::normal(det_printed))));
+    derived.found.amendments.push_back(amendment_in_words("the system the conclusion is derived from", "the printed system",
+                                                          "the system as derived (its entries corrected)"));
+    return derived;
   }
   return e;
 }
@@ -538,6 +551,23 @@ decider_evidence invariance_kernel_shape(const shape_call& call, const run_conte
   for (std::size_t u = 0; u < unknowns.size(); ++u) at_v[unknowns[u]] = v[u];
   if (e.found_holds()) {
     e.goals = std::vector<proof_goal>{decided("kernel", rows_times(d.monomials, printed_there, v), 0), decided("conserved", d.change.subs(at_v).subs(solved.values), 0)};
+  }
+  if (e.found_false() && e.if_false == verdict::erratum && printed_in_derived && w_obtains) {
+    // The printed form is conserved, and follows from the system as derived; only its derivation from
+    // the printed system fails (that system's own erratum): it holds, with that remark.
+    decider_evidence derived =
+        identity_evidence(read, "derived", fmt::format("the system as derived times the printed form's coefficients ({}) = 0, with {}", fmt::join(v_text, ", "), on),
+                          rows_times(d.monomials, derived_there, v), 0, "", verdict::fails);
+    derived.found.evidence["exact"]["printed_system"] = found.evidence["exact"];
+    derived.found.evidence["exact"]["derived_kernel"] = w_text;
+    derived.found.remark_kind = finding::derivation_gap;
+    const std::string printed_fails = found.note.rfind("As printed: ", 0) == 0 ? found.note.substr(12)
+                                                                               : std::string("the printed system times those coefficients is not 0 there.");
+    derived.found.remark = fmt::format("The conclusion holds: {}. Its derivation from the printed system fails: {}", correction, printed_fails);
+    derived.found.amendments.push_back(amendment_in_words("the system the conclusion is derived from", "the printed system",
+                                                          "the system as derived (its entries corrected)"));
+    if (derived.found_holds()) derived.goals = std::vector<proof_goal>{decided("derived", rows_times(d.monomials, derived_there, v), 0), decided("conserved", conserved_w, 0)};
+    return derived;
   }
   if (e.found_false() && e.if_false == verdict::erratum) {  // the correction certified beside the refutation
     e.goals = std::vector<proof_goal>{decided("kernel", rows_times(d.monomials, printed_there, v), 0), decided("derived", conserved_w, 0)};

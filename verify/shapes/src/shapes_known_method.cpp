@@ -143,14 +143,16 @@ decider_evidence known_method_shape(const shape_call& call, const run_context& c
   result.evidence["stated"] = said.words("novelty");
   result.evidence["names"] = {{"looked_for", names}, {"found", named}};
   // Whether the map is the method's is the kernels' (entry by entry); whether the prose names it is
-  // read. Not the method's map: nothing to name, and the statement holds.
+  // read. The sentence ("we propose a ... method") holds either way: a method that is known prior
+  // work, left unnamed, is a naming remark, not a falsehood (the policy: an erratum is false under
+  // every reasonable reading). Not the method's map: nothing to name.
   decider_evidence e;
   e.statement = "an entry of the map";
   e.parts_differ = own_contradicts;
-  e.ginac = answer_of(!ginac_same || !named.empty());
-  e.own = own_decided ? e.ginac : answer::none;
+  e.ginac = answer::holds;
+  e.own = own_decided ? answer::holds : answer::none;
   if (!ginac_same) {
-    result.note = fmt::format("The printed map is not {}'s on this problem: that method is not what the text presents.", method);
+    result.note = fmt::format("The printed map is not {}'s on this problem: there is no known method to name.", method);
     result.certificate_missing = "a difference of maps: nothing to certify";
     e.found = std::move(result);
     return e;
@@ -161,12 +163,12 @@ decider_evidence known_method_shape(const shape_call& call, const run_context& c
     e.found = std::move(result);
     return e;
   }
-  result.correction = fmt::format("On this problem the printed map ({}) is {}'s, proved entry by entry: the text should name it and cite its prior work",
-                                  reference_of(call, "map"), method);
-  result.note = fmt::format("The text presents '{}' as its own and never names {} ({} looked for in its prose; its citations cannot be resolved "
-                            "without a bibliography, so whether one of them covers it is not known).",
-                            said.words("novelty"), method, fmt::format("{}", fmt::join(names, ", ")));
-  result.amendments.push_back(amendment_in_words("what the method is", said.words("novelty"), method + ", on this problem: known prior work, to be named and cited"));
+  result.remark_kind = finding::naming;
+  result.remark = fmt::format("On this problem the printed map ({}) is {}'s, proved entry by entry, and the text never names it ({} looked for in its "
+                              "prose). Whether a work it cites covers it stays unresolved: the source has no bibliography to read.",
+                              reference_of(call, "map"), method, fmt::format("{}", fmt::join(names, ", ")));
+  result.amendments.push_back(amendment_in_words("what the method is", said.words("novelty"),
+                                                 said.words("novelty") + ", named: " + method + " (known prior work, with its citation)"));
   e.found = std::move(result);
   return e;
 }
@@ -177,7 +179,7 @@ std::vector<proof_shape> known_method_shape_specs() {
   std::vector<proof_shape> all;
   const auto add = [&](proof_shape s) { all.push_back(std::move(s)); };
   add({"known-method",
-       "the printed one-step map is a named partitioned Runge-Kutta method's on q'' = -omega^2 q, and the text, presenting the method as its own, names it",
+       "the sentence presenting the printed one-step map's method as the text's own holds; a naming remark when the map is a named partitioned Runge-Kutta method's on q'' = -omega^2 q that the text never names",
        "map",
        with_where({{"map", argument_kind::matrix, true, "the printed 2 x 2 one-step map", 2},
                    {"state", argument_kind::symbols, true, "the map's state, in its order ('p', 'q')", 2},

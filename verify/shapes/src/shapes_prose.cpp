@@ -64,6 +64,15 @@ decider_evidence spelling_shape(const shape_call& call, const run_context& ctx) 
       dictionary->add(w);  // its capitalised form too, as Hunspell takes a dictionary word
     }
   }
+  // The record's own replacements, where the dictionary's first suggestion is not what an English
+  // writer would put ("explicited": "made explicit", not "explicated").
+  std::map<std::string, std::string> replacements;
+  if (call.with.count("suggestions")) {
+    for (const std::string& pair : call.with.at("suggestions").values) {
+      const std::size_t colon = pair.find(": ");
+      replacements[pair.substr(0, colon)] = pair.substr(colon + 2);
+    }
+  }
   const std::string from = call.with.count("from") ? call.with.at("from").values.front() : std::string();
   const std::vector<prose_word> words = prose_words(paper.source, document_of(ctx), from);
   std::map<std::string, std::vector<int>> slips;  // word: its lines
@@ -78,9 +87,11 @@ decider_evidence spelling_shape(const shape_call& call, const run_context& ctx) 
   std::vector<std::string> corrections;
   for (const std::string& word : order) {
     const std::vector<std::string> suggested = dictionary->suggest(word);
-    const std::string best = suggested.empty() ? std::string() : suggested.front();
+    const auto replaced = replacements.find(word);
+    const std::string best = replaced != replacements.end() ? replaced->second : suggested.empty() ? std::string() : suggested.front();
     json lines = slips[word];
     found.push_back({{"word", word}, {"lines", lines}, {"suggestions", suggested}});
+    if (replaced != replacements.end()) found.back()["replacement"] = replaced->second;
     const std::string where = slips[word].size() == 1 ? fmt::format("line {}", slips[word].front()) : fmt::format("lines {}", fmt::join(slips[word], ", "));
     result.amendments.push_back(amendment_in_words(where, word, best.empty() ? "(no suggestion)" : best));
     // No line in the correction: the recorded correction guards the words, and an edit elsewhere moves the lines.
@@ -103,7 +114,8 @@ decider_evidence spelling_shape(const shape_call& call, const run_context& ctx) 
     e.found = std::move(result);
     return e;
   }
-  result.correction = fmt::format("{} word{} not in the dictionary, with Hunspell's first suggestion: {}", order.size(), order.size() == 1 ? "" : "s",
+  result.correction = fmt::format("{} word{} not in the dictionary, with {}: {}", order.size(), order.size() == 1 ? "" : "s",
+                                  replacements.empty() ? "Hunspell's first suggestion" : "Hunspell's first suggestion or the record's replacement",
                                   fmt::join(corrections, "; "));
   result.note = fmt::format("Lexical: {} of the {} words of the prose are in neither Hunspell's en_US dictionary nor the record's vocabulary. A "
                             "grammatical slip of real words ('can we written') is beyond a dictionary.",
@@ -151,7 +163,11 @@ std::vector<proof_shape> prose_shape_specs() {
   const auto add = [&](proof_shape s) { all.push_back(std::move(s)); };
   add({"spelling", "every word of the document's prose is in Hunspell's en_US dictionary or the record's vocabulary (its names and terms of art)", "",
        {{"vocabulary", argument_kind::words, false, "words the dictionary lacks that the document spells right: names, terms of art ('symplectic')"},
-        {"from", argument_kind::word, false, "where the prose checked starts: words the source prints ('Abstract'); the body's start without it"}},
+        {"from", argument_kind::word, false, "where the prose checked starts: words the source prints ('Abstract'); the body's start without it"},
+        {"suggestions", argument_kind::words, false,
+         "the record's replacement for a slip, where the dictionary's first suggestion is not what an English writer puts there "
+         "('explicited: made explicit')",
+         0, "", false, {}, "", "", "", "", "", true}},
        spelling_shape});
   add({"citations", "every \\cite key of the document has its entry in the document's bibliography; unverifiable when one has none", "", {},
        citations_shape});

@@ -35,6 +35,19 @@ ex scaled_scheme(shape_reader& read) {
   return scheme / scale;
 }
 
+/// The function and the index of a state named "<base>_<index>" ("q_j": q and j); empty when the
+/// state is not so named.
+struct node_names {
+  std::string base, index;
+};
+
+node_names node_names_of(const GiNaC::symbol& state) {
+  const std::string name = state.get_name();
+  const std::size_t bar = name.find('_');
+  if (bar == std::string::npos || bar == 0 || bar + 1 == name.size()) return {};
+  return {name.substr(0, bar), name.substr(bar + 1)};
+}
+
 /// The scheme (= 0, in three consecutive states) on the Taylor polynomials of degree `degree` of the
 /// exact solution of q'' = −ω² q through the middle state, q(t_j ± h) = q_j cos ωh ± (v_j/ω) sin ωh.
 ex on_taylor_solution(const ex& scheme, const std::vector<GiNaC::symbol>& sequence, const GiNaC::symbol& h, const ex& omega, int degree) {
@@ -100,12 +113,20 @@ decider_evidence truncation_shape(const shape_call& call, const run_context& ctx
   const GiNaC::symbol& h = step.front();
   claim_result result;
   result.printed = read.printed();
-  // The printed terms and its order term O(h^N).
-  const auto [terms, order] = split_order(printed, h);
+  // The printed terms and its order term O(h^N); the exact solution at the nodes, where the text
+  // writes it so (q(t_j), q(t_j + h): the states the scheme is put on), read as those states.
+  const node_names nodes = node_names_of(sequence[1]);
+  const ex printed_states = nodes.base.empty() ? printed : solution_at_nodes(printed, *call.declared, nodes.base, nodes.index, h, "printed");
+  const bool written_at_nodes = !printed_states.is_equal(printed);
+  const auto [printed_terms, order] = split_order(printed_states, h);
   if (order <= 0) throw std::invalid_argument(reference_of(call, "printed") + " has no order term O(" + h.get_name() + "^k)");
   const int degree = taylor_degree(call, scheme, sequence, h, order);
   const ex on_taylor = on_taylor_solution(scheme, sequence, h, omega, degree);
   const ex series = series_of(on_taylor, h, order);
+  // Printed terms at the neighbouring nodes are the solution there too: expanded like the scheme.
+  const ex terms = printed_terms.has(sequence[0]) || printed_terms.has(sequence[2])
+                       ? series_of(on_taylor_solution(printed_terms, sequence, h, omega, degree), h, order)
+                       : printed_terms;
   // The next terms, for the reader (two more even powers), from the Taylor polynomials of a higher degree.
   const int further = order + 4;
   const ex series_further = series_of(on_taylor_solution(scheme, sequence, h, omega, taylor_degree(call, scheme, sequence, h, further)), h, further);
@@ -149,7 +170,9 @@ decider_evidence truncation_shape(const shape_call& call, const run_context& ctx
   e.goals = std::move(goals);
   if (own.outcome == kernel_decision::result::not_applicable) result.note = "Our kernel could not decide it (" + own.evidence + "): GiNaC's series alone. ";
   if (!ginac_holds) {
-    result.correction = "as derived: " + text_of(series) + " + " + big_o;
+    // In the text's notation: the exact solution at the node where it writes it so.
+    const ex shown = written_at_nodes ? series.subs(sequence[1] == apply_function(nodes.base, {paper_symbols()["t_" + nodes.index]})) : series;
+    result.correction = "as derived: " + text_of(shown) + " + " + big_o;
     result.note += "As printed: " + what + " is false; the series differs by " + text_of(gap) + ".";
   }
   e.found = std::move(result);
@@ -308,8 +331,15 @@ std::vector<proof_shape> series_shape_specs() {
   std::vector<proof_shape> all;
   const auto add = [&](proof_shape s) { all.push_back(std::move(s)); };
   add({"truncation", "the scheme on the exact solution of q'' = -omega^2 q is the printed series, to its printed order", "printed",
-       with_where(with_series({{"printed", argument_kind::formula, true, "the printed truncation error, with its order term O(h^N)"}})),
-       truncation_shape});
+       with_where(with_series({{"printed", argument_kind::formula, true,
+                                "the printed truncation error, with its order term O(h^N); the exact solution at the nodes may be written "
+                                "q(t_j), q(t_j + h), q(t_{j+1}) when [symbols] declares q a solution"}})),
+       truncation_shape,
+       [](shape_reader& read, const shape_call& call) {  // q(t_j): the declarations must say it is the exact solution
+         const std::vector<GiNaC::symbol> sequence = read.symbols("sequence");
+         const node_names nodes = node_names_of(sequence[1]);
+         if (!nodes.base.empty()) solution_at_nodes(read.formula("printed"), *call.declared, nodes.base, nodes.index, read.symbols("step").front(), "printed");
+       }});
   add({"stated-order", "the order a sentence states ({order} in its pattern) is the scheme's order on q'' = -omega^2 q", "scheme",
        with_where(with_series({pattern_with_hole("sentence", "the sentence's pattern, with the hole {order}", "order")})),
        stated_order_shape});

@@ -6,8 +6,10 @@
 Each folder under verify/tests/shapes/ holds note.tex, a short document, and claims.toml, whose
 every record states its `expected` verdict with its derivation by hand in a comment beside it. The
 folder passes when `simpson-verify --paper note.tex --claims-file claims.toml` gives every record its
-expected verdict. A folder must hold a statement the shape refuses (a verdict other than holds), so
-that a shape that stopped telling right from wrong fails it.
+expected verdict, and every record expecting a remark (`expected = "holds"` with its class in
+`finding`) that remark's class, and no other record a remark. A folder must hold a statement the
+shape refuses (a verdict other than holds) or one it holds with a remark, so that a shape that stopped
+telling right from wrong fails it.
 """
 import pathlib
 import sys
@@ -25,8 +27,10 @@ expected = {}
 for r in records:
     if "expected" not in r:
         sys.exit(f"FAIL {name}: record '{r['id']}' states no expected verdict")
-    expected[r["id"]] = r["expected"]
+    remark = r.get("finding") if r["expected"] == "holds" else None
+    expected[r["id"]] = r["expected"] + (f", with a remark ({remark})" if remark else "")
 if all(v == "holds" for v in expected.values()):
-    sys.exit(f"FAIL {name}: every record holds; a fixture needs a statement its shape refuses")
+    sys.exit(f"FAIL {name}: every record holds without a remark; a fixture needs a statement its shape refuses or remarks")
 report = report_of(binary, name, folder / "note.tex", folder / "claims.toml")
-sys.exit(1 if compare(name, report, expected, lambda c: c["verdict"], "claims.toml's expected") else 0)
+got = lambda c: c["verdict"] + (f", with a remark ({c['remark']['class']})" if "remark" in c else "")
+sys.exit(1 if compare(name, report, expected, got, "claims.toml's expected") else 0)

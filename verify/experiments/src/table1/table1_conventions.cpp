@@ -247,14 +247,31 @@ std::string table1_start(const convention_candidate& c) {
   return fmt::format("q(t) = {} sin(ωt + {}), m = {}", A, name("phase"), m);
 }
 
+entry_tally tally_entries(const convention_candidate& c, const std::vector<printed_entry>& printed) {
+  entry_tally t;
+  for (std::size_t k = 0; k < printed.size() && k < c.entries.size(); ++k) {
+    (printed[k].round_off ? t.round_off : t.informative) += 1;
+    (printed[k].round_off ? t.round_off_reproduced : t.informative_reproduced) += c.entries[k].reproduced;
+  }
+  return t;
+}
+
+std::string tally_text(const entry_tally& t) {
+  std::string text = fmt::format("{} of the {} informative entries", t.informative_reproduced, t.informative);
+  if (t.round_off == 0) return text;
+  return text + (t.round_off_reproduced == t.round_off
+                     ? fmt::format(" (the {} others, of the rows printed as exact, are round-off and reproduced too)", t.round_off)
+                     : fmt::format(" ({} of the {} others, of the rows printed as exact, round-off)", t.round_off_reproduced, t.round_off));
+}
+
 std::string table1_explanation(const convention_search_result& r, const std::vector<printed_entry>& printed) {
   const convention_candidate* s = r.simplest();
   if (s == nullptr) return "";
   const std::vector<std::string> departures = table1_departures(*s);
-  std::string text = fmt::format("the oscillator {}, {}, reproduces {} of the {} entries within their printed digits", table1_start(*s),
+  std::string text = fmt::format("the oscillator {}, {}, reproduces within their printed digits {}", table1_start(*s),
                                  departures.empty() ? "under the stated discrete conventions"
                                                     : fmt::format("with {} (the other discrete conventions as stated)", fmt::join(departures, ", ")),
-                                 s->reproduced, printed.size());
+                                 tally_text(tally_entries(*s, printed)));
   std::vector<std::string> misses;
   for (std::size_t k = 0; k < printed.size(); ++k) {
     if (s->entries[k].reproduced) continue;

@@ -16,7 +16,7 @@
 namespace simpson::verify {
 
 /// The version of report.json's layout, its member "schema_version" (verify/app/report.schema.json).
-inline constexpr int report_schema_version = 1;
+inline constexpr int report_schema_version = 2;
 
 json report_json(const run_record& r);
 std::string report_markdown(const run_record& r);
@@ -25,6 +25,9 @@ std::string summary_line(const run_record& r);
 /// What the exit code says about the verdicts, in one line: "Exit code 0: every verdict is the one
 /// the ledger records as expected ... 7 errata ... and 1 expected failure (table-values ...)".
 std::string expectation_line(const run_record& r);
+/// The findings in a referee's words, one sentence: "The paper's 68 claims: 1 substantive error, 5
+/// typographical slips, ...; 5 remarks on claims that hold; 6 spelling slips apart."
+std::string findings_headline(const run_record& r);
 
 /// Writes report.json, report.md, report.html, the sections' data files (CSV, .dat), the gnuplot
 /// scripts (<plot>.gp) and the plots (SVG, PNG). Everything is made in a staging directory beside

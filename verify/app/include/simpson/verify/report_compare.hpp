@@ -30,11 +30,27 @@ namespace simpson::verify {
 /// The tolerances above, one line each.
 const std::vector<std::string>& comparison_tolerances();
 
-/// What a comparison found: differences (exit 1), and notes on what only one run computed.
-struct report_comparison {
-  std::vector<std::string> differences;
-  std::vector<std::string> notes;
+/// One difference: the claim, the section or the report's member that differs ("claim
+/// truncation-1440", "section table1", "seed"), and each of its fields that does ("verdict:
+/// \"holds\" → \"erratum\""), in the order found.
+struct report_difference {
+  std::string place;
+  std::vector<std::string> changes;
 };
+
+/// What a comparison found: differences (exit 1), one per claim, section or member; and notes: on
+/// what only one run computed, on a different document (one note, not a difference on every claim
+/// that names it), and on the summary and the verdict table, which follow from the claims'
+/// differences.
+struct report_comparison {
+  std::vector<report_difference> differences;
+  std::vector<std::string> notes;
+  /// Each change as one line, "place: change".
+  std::vector<std::string> lines() const;
+};
+
+/// Whether a report is of a selection (--claims, --sections: its overrides name them).
+bool is_selection(const json& report);
 
 /// The differences between two report.json documents, one line each; empty when they agree.
 report_comparison compare_reports(const json& old_report, const json& new_report);
@@ -47,15 +63,16 @@ report_comparison compare_reports(const json& old_report, const json& new_report
 report_comparison compare_report_subset(const json& old_report, const json& new_report);
 
 /// The comparison as JUnit XML, for a CI's test view: a testsuite "compare", a failing testcase per
-/// difference (named by its place: "claim phi3-det: verdict"), the notes in <system-out>; one
-/// passing testcase when the reports agree.
+/// difference (named by its place: "claim phi3-det"; its first change the message, all of them the
+/// body), the notes in <system-out>; one passing testcase when the reports agree.
 std::string comparison_junit(const report_comparison& found, const std::string& old_name, const std::string& new_name);
 
-/// The comparison as JSON: {"old", "new", "agree", "differences": [{"where", "what"}], "notes"}.
+/// The comparison as JSON: {"old", "new", "agree", "differences": [{"where", "what": [changes]}], "notes"}.
 json comparison_json(const report_comparison& found, const std::string& old_name, const std::string& new_name);
 
-/// report.json of a report directory (or the file itself). Throws std::invalid_argument naming the
-/// path when it is missing or is not a simpson-verify report.
-json load_report(const std::filesystem::path& dir_or_file);
+/// report.json of a report directory (or the file itself). Throws std::invalid_argument, "`who`:
+/// 'path': why", when it is missing or is not a simpson-verify report (`who` is the command or the
+/// flag that read it: "compare", "--baseline").
+json load_report(const std::filesystem::path& dir_or_file, const std::string& who = "compare");
 
 }  // namespace simpson::verify

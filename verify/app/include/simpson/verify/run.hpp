@@ -19,28 +19,44 @@ namespace simpson::verify {
 struct claim_outcome {
   const claim* checked = nullptr;
   verdict expected = verdict::holds;
+  /// The remark the claim is expected to hold with (its record's, or the baseline's): its class, none
+  /// for no remark, and its text as recorded (empty: not recorded).
+  finding expected_remark = finding::none;
+  std::string expected_remark_text;
   claim_result result;
   double seconds = 0;
   /// The erratum it follows from, derived (consequences.hpp): it holds once that erratum's proved
   /// corrections are put in; empty when it does not follow so.
   std::string consequence_of;
   /// An expected erratum whose correction is not the recorded one (a new error inside an old
-  /// erratum): what changed, the recorded and the new correction around where they differ.
+  /// erratum), or a claim that holds with another remark than the recorded one (or one where none was
+  /// recorded): what changed, the recorded and the new text around where they differ.
   std::string content_changed;
-  /// Recorded as a finding (erratum or fails), and it now holds: a fix of the paper, reported apart
-  /// from failures; `fix_accepted` when the run accepts fixes (--accept-fixes).
+  /// Recorded as a finding (erratum, fails, unverifiable) or with a remark, and it now holds without
+  /// it: `fixed` when the text it reads changed and no claim sharing a display with it now differs
+  /// from its record (a fix of the document, reported apart from failures; `fix_accepted` when the
+  /// run accepts fixes, --accept-fixes); else `changed`, never accepted: `changed` says why, and
+  /// `changed_cause` names the claim whose change it follows (a premise it reads), when one does.
   bool fixed = false;
   bool fix_accepted = false;
+  std::string changed;
+  std::string changed_cause;
 };
 
-/// Whether an outcome is the one its record expects: its verdict, and for an erratum whose record
-/// recorded its correction, that correction. The one rule every report and the exit code use.
+/// Whether an outcome is the one its record expects: its verdict, for an erratum whose record
+/// recorded its correction that correction, its remark; a claim changed by a premise never is. The
+/// one rule every report and the exit code use.
 inline bool outcome_as_expected(const claim_outcome& o) {
-  return o.content_changed.empty() && (as_expected(o.result.outcome, o.expected) || o.fix_accepted);
+  if (!o.content_changed.empty() || !o.changed.empty()) return false;
+  return o.fixed ? o.fix_accepted : as_expected(o.result.outcome, o.expected);
 }
 
-/// The finding a claim's outcome is counted under: its derived cause, or the one its record types.
-inline const std::string& cause_of(const claim_outcome& o) { return o.consequence_of.empty() ? o.checked->follows_from : o.consequence_of; }
+/// The finding a claim's outcome is counted under: its derived cause, or the one its record types;
+/// for a claim changed by a premise, that premise's claim.
+inline const std::string& cause_of(const claim_outcome& o) {
+  if (!o.changed_cause.empty()) return o.changed_cause;
+  return o.consequence_of.empty() ? o.checked->follows_from : o.consequence_of;
+}
 
 struct run_record {
   scene run_scene;
@@ -99,5 +115,8 @@ void apply_baseline(scene& s, const json& baseline, const std::string& name);
 /// What changed between an erratum's recorded correction and the one a run proved, each shown
 /// around where they first differ (cut between UTF-8 characters).
 std::string correction_change(const std::string& recorded, const std::string& now);
+
+/// The same for any recorded text: "`what` is not the recorded one: recorded '…', now '…'".
+std::string text_change(const std::string& what, const std::string& recorded, const std::string& now);
 
 }  // namespace simpson::verify

@@ -30,6 +30,15 @@ namespace simpson::verify {
 inline constexpr std::uint64_t default_seed = 20230830;  // the first day of GSI 2023
 inline constexpr unsigned default_samples = 16;
 
+/// What a baseline report (--baseline) judged of one claim: its verdict, an erratum's correction, a
+/// remark (its class and text), and the digest of what the claim read there (claim_reads.hpp).
+struct baseline_claim {
+  std::string correction;
+  finding remark_kind = finding::none;
+  std::string remark;
+  std::string reads;
+};
+
 struct scene {
   std::string name;
   std::string description;
@@ -48,7 +57,7 @@ struct scene {
   /// expected_overrides), an erratum its correction there (baseline_corrections), and fixes pass:
   /// nothing may get worse than that report. Empty: no baseline.
   std::string baseline;
-  std::map<std::string, std::string> baseline_corrections;
+  std::map<std::string, baseline_claim> baseline_claims;
   experiment_settings experiments;
   /// The paper's source the formula claims read: empty for the embedded copy, else a file.
   std::string paper_file;

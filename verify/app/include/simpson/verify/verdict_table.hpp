@@ -21,8 +21,9 @@ struct verdict_row {
   std::string expected;   // the record's expected verdict; an expectation expects "holds"
   status state = status::passed;
   /// What the row is when it is not plainly as expected, as JUnit's failure type:
-  /// internal-error, undecided, unproved, text-changed, fixed, fixed-accepted, does-not-hold,
-  /// consequence, unexpected-verdict, erratum-changed, certificate-rejected, expectation-failed,
+  /// internal-error, a verdict never expected by its name (undecided, unproved, text-changed,
+  /// kernels-disagree), changed, fixed, fixed-accepted, does-not-hold, consequence,
+  /// unexpected-verdict, erratum-changed, remark-changed, certificate-rejected, expectation-failed,
   /// expected-failure, skipped; empty for a plain pass.
   std::string type;
   std::string message;  // in words: the line on stderr and JUnit's message
@@ -39,6 +40,9 @@ inline const char* to_string(verdict_row::status s) {
   }
   return "?";
 }
+
+/// What a claim's record expects, in words: its verdict, or "holds with a remark (wording)".
+std::string recorded_as(const claim_outcome& o);
 
 /// A claim's row. The one rule: an error when its check threw; a failure when its verdict is not
 /// the expected one (outcome_as_expected: undecided, unproved, text-changed never are), its fix not

@@ -59,6 +59,17 @@ std::string table1_start(const convention_candidate& c);
 /// past its rounding boundary.
 std::string table1_explanation(const convention_search_result& r, const std::vector<printed_entry>& printed);
 
+/// How many of a candidate's entries it reproduces, the informative ones (printed digits that pin a
+/// start down) apart from the round-off ones (the rows printed as exact: reproduced under any start).
+struct entry_tally {
+  std::size_t informative = 0, informative_reproduced = 0, round_off = 0, round_off_reproduced = 0;
+};
+entry_tally tally_entries(const convention_candidate& c, const std::vector<printed_entry>& printed);
+
+/// "17 of the 18 informative entries (the 6 round-off ones of the rows printed as exact reproduced
+/// too)": a candidate's count in those words.
+std::string tally_text(const entry_tally& t);
+
 /// Table 1's entries computed under `choice` and `values`.
 std::vector<computed_entry> table1_under(const convention_choice& choice, const parameter_values& values);
 

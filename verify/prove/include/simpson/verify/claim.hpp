@@ -4,6 +4,7 @@
 #include <simpson/precision.hpp>
 
 #include <simpson/verify/json.hpp>
+#include <simpson/verify/verdict.hpp>
 
 #include <cstdint>
 #include <functional>
@@ -14,54 +15,6 @@
 #include <vector>
 
 namespace simpson::verify {
-
-/// holds: true as printed; erratum: false as printed, with a proved correction; fails: false,
-/// no correction found; kernels-disagree: the two exact kernels reached different conclusions on
-/// the derived statement (a bug in one of them, never expected); text-changed: the sentence a
-/// prose claim quotes is no longer in the paper, or its words no longer parse (never expected:
-/// the paper changed under the ledger); undecided: an enclosure could neither prove the statement
-/// nor its negation within the run's precision budget (never expected: raise the budget);
-/// unproved: a floating-point claim whose round-off Gappa could not bound (its reason in the
-/// evidence: an intermediate that may overflow, a step outside the stable range); skipped: a
-/// floating-point claim whose prover (gappa) is not installed, decided neither way and never
-/// counted against the run.
-enum class verdict { holds, erratum, fails, kernels_disagree, text_changed, undecided, unproved, skipped, unverifiable };
-
-inline std::string to_string(verdict v) {
-  switch (v) {
-    case verdict::holds: return "holds";
-    case verdict::erratum: return "erratum";
-    case verdict::fails: return "fails";
-    case verdict::kernels_disagree: return "kernels-disagree";
-    case verdict::text_changed: return "text-changed";
-    case verdict::undecided: return "undecided";
-    case verdict::unproved: return "unproved";
-    case verdict::skipped: return "skipped";
-    case verdict::unverifiable: return "unverifiable";
-  }
-  return "?";
-}
-
-/// The verdict a report or a claims file spells `text` (to_string's spelling), or none.
-inline std::optional<verdict> verdict_of_name(const std::string& text) {
-  for (const verdict v : {verdict::holds, verdict::erratum, verdict::fails, verdict::kernels_disagree, verdict::text_changed,
-                          verdict::undecided, verdict::unproved, verdict::skipped, verdict::unverifiable}) {
-    if (to_string(v) == text) return v;
-  }
-  return std::nullopt;
-}
-
-/// Whether a record (or a baseline, or a scene's override) may expect a verdict: a judgment of the
-/// document (holds, erratum, fails, unverifiable). The others are never expected: kernels-disagree is
-/// a bug, text-changed a quote the document no longer has, undecided and unproved the tool's limits,
-/// skipped a prover not installed.
-inline bool expectable(verdict v) {
-  return v == verdict::holds || v == verdict::erratum || v == verdict::fails || v == verdict::unverifiable;
-}
-
-/// Whether a verdict is the expected one for the run's exit code: equal to an expectable verdict, or
-/// skipped (a prover not installed decides nothing, and says so).
-inline bool as_expected(verdict got, verdict expected) { return (got == expected && expectable(expected)) || got == verdict::skipped; }
 
 /// What a check is given: the precisions of the numeric rechecks, the seed and how many random
 /// samples each recheck draws per precision.
@@ -114,6 +67,31 @@ struct amendment {
   bool operator==(const amendment& o) const { return where == o.where && printed == o.printed && should_be == o.should_be && tex == o.tex; }
 };
 
+/// The class of a finding or of a remark, one policy for all (docs/findings.md, "How findings are
+/// classified"). A finding is false under every reasonable reading; a claim true under the reading an
+/// expert referee gives it holds, with a remark of its class at most:
+///   erratum         a formula or statement false as printed; its correction proved;
+///   wording         (a remark) the words say more, or less, than the mathematics that holds, and an
+///                   expert reads them as meant; or (a finding) false under every reading;
+///   derivation_gap  (a remark) the conclusion holds, but the printed argument does not reach it;
+///   naming          (a remark) a result left unnamed or attributed to the wrong principle or person;
+///   unverifiable    material the claim needs is absent from the source (a figure, a reference);
+///   prose           slips of spelling in the prose, counted apart from the findings about the mathematics.
+enum class finding { none, erratum, wording, derivation_gap, naming, unverifiable, prose };
+
+inline std::string to_string(finding f) {
+  switch (f) {
+    case finding::none: return "none";
+    case finding::erratum: return "erratum";
+    case finding::wording: return "wording";
+    case finding::derivation_gap: return "derivation gap";
+    case finding::naming: return "naming";
+    case finding::unverifiable: return "unverifiable";
+    case finding::prose: return "prose";
+  }
+  return "?";
+}
+
 /// What a check found. `evidence` has one member per method ("exact", "numeric", ...).
 struct claim_result {
   verdict outcome = verdict::fails;
@@ -146,30 +124,24 @@ struct claim_result {
   /// The printed formulas this erratum's correction replaces, with what should stand there: the
   /// claims that read them are judged again with them (ledger.hpp, trace_consequences).
   std::vector<std::shared_ptr<const corrected_formula>> corrected_formulas;
+  /// For a claim that holds under the reading an expert gives its words, but whose words say more or
+  /// less than what holds: a remark, of its class (wording, naming, derivation gap), shown beside the
+  /// verdict and never counted among the findings; its "printed X, should be Y" in `amendments`.
+  /// decide() keeps it only on a claim that holds. Empty: no remark.
+  std::string remark;
+  finding remark_kind = finding::none;
 };
 
-/// The class of a finding, one policy for all (docs/findings.md, "How findings are classified"):
-///   erratum         a formula or statement false as printed; its correction proved;
-///   wording         the words are literally false, but the intended mathematical content holds
-///                   (the note says which);
-///   derivation_gap  the conclusion holds, but the printed argument does not reach it;
-///   naming          a result attributed to the wrong principle or person;
-///   unverifiable    material the claim needs is absent from the source (a figure, a reference);
-///   prose           slips of spelling in the prose, counted apart from the findings about the mathematics.
-enum class finding { none, erratum, wording, derivation_gap, naming, unverifiable, prose };
-
-inline std::string to_string(finding f) {
-  switch (f) {
-    case finding::none: return "none";
-    case finding::erratum: return "erratum";
-    case finding::wording: return "wording";
-    case finding::derivation_gap: return "derivation gap";
-    case finding::naming: return "naming";
-    case finding::unverifiable: return "unverifiable";
-    case finding::prose: return "prose";
+/// The class spelled `text` (to_string's spelling), or none.
+inline std::optional<finding> finding_of_name(const std::string& text) {
+  for (const finding f : {finding::none, finding::erratum, finding::wording, finding::derivation_gap, finding::naming, finding::unverifiable, finding::prose}) {
+    if (to_string(f) == text) return f;
   }
-  return "?";
+  return std::nullopt;
 }
+
+/// Whether a class may be a remark's, on a claim that holds: wording, derivation gap, naming.
+inline bool remark_class(finding f) { return f == finding::wording || f == finding::derivation_gap || f == finding::naming; }
 
 /// Whose statement a claim is: the paper's, or the harness's own (a lemma the proofs use, a
 /// finding beyond the paper), counted apart.
@@ -227,9 +199,16 @@ struct claim {
   bool headline = false;
   std::string coq_none = {};
   /// For an expected erratum: the proved correction its record recorded (`correction`), the
-  /// erratum's content. The same verdict with another correction (a second error in a formula
-  /// already known to be wrong) is a changed verdict. Empty: not recorded.
+  /// erratum's content; for an expected remark (`expected` holds, a class in `kind`), the remark's
+  /// text as recorded (`remark`). The same verdict with another correction or remark (a second error
+  /// in a formula already known to be wrong) is a changed verdict. Empty: not recorded.
   std::string expected_correction = {};
+  /// The digest of the text the claim read when its record was written (`reads`: the displays and
+  /// sentences it reads, reads_digest()): a claim recorded as a finding or a remark that now holds
+  /// without it is a fix only when that text changed. Empty: not recorded.
+  std::string expected_reads = {};
+  /// Whether the record expects a remark: it holds, with a remark of class `kind`.
+  bool expects_remark() const { return expected == verdict::holds && kind != finding::none; }
 };
 
 }  // namespace simpson::verify

@@ -16,6 +16,10 @@ struct claim_declarations {
   tex_declarations reading;         // the reader's functions and symbols
   std::set<std::string> positive;   // the reader's names of the symbols declared positive
   std::set<std::string> real;       // ... declared real
+  /// The reader's names of the functions that name the exact solution ([symbols] solutions, applied
+  /// like the functions): x(t_n), x(t_n + k h) and x(t_{n+k}) are its values at the nodes, the
+  /// states x_{n+k} of a scheme put on it (truncation, consistency).
+  std::set<std::string> solutions;
   /// A file with a [document]: every symbol a formula it reads uses must be declared (a symbol the
   /// file does not name is a misreading, or a name it forgot).
   bool complete = false;

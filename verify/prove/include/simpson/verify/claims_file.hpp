@@ -57,6 +57,8 @@ struct claim_record {
   std::string coq_none;   // why no Coq statement is exported, when none is
   std::vector<core_binding> core;  // the core's formulas bound to the print (one table or a list of them)
   std::string correction;          // an expected erratum's proved correction, as recorded: its content
+  std::string remark;              // an expected remark's text, as recorded (expected holds, `finding` its class)
+  std::string reads;               // the digest of the text it read when recorded (reads_digest): a fix changes it
   int line = 0;           // the line of its [[claim]] header
 };
 
@@ -95,6 +97,7 @@ struct claims_symbols {
   std::vector<std::string> positive;   // symbols > 0 (parameters: m, omega, h)
   std::vector<std::string> real;       // other real symbols (the state: q_0, p_0, ...)
   std::vector<std::string> functions;  // applied as f(x): V, L_d, \psi
+  std::vector<std::string> solutions;  // functions that name the exact solution: q(t_n) is its value at the node t_n
   int line = 0;
 };
 

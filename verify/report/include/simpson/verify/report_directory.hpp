@@ -49,6 +49,10 @@ bool holds_only_a_report(const std::filesystem::path& dir);
 /// libjs-katex is not installed (the page then shows its TeX as code).
 std::vector<std::string> katex_file_names();
 
+/// Writes `content` to `path` whole (created or truncated). Throws std::filesystem::filesystem_error
+/// with the reason the system gave (ENOSPC: "No space left on device"), from the call that failed.
+void write_file(const std::filesystem::path& path, const std::string& content);
+
 /// The version of the cmark-gfm library that renders report.html ("0.29.0.gfm.6").
 std::string cmark_gfm_version();
 

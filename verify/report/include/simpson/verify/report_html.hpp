@@ -21,7 +21,9 @@ std::string heading_slug(std::string_view heading_text);
 // The paper's claims and the family's members (81 up to s = 6) stay open; work_precision's 400 rows fold.
 inline constexpr std::size_t folded_table_rows = 120;
 
-/// The whole page: report.md rendered, with the additions above, under `title`.
-std::string render_report_html(const std::string& markdown, const std::string& title);
+/// The whole page: report.md rendered, with the additions above, under `title`. `katex_beside`:
+/// whether katex/ is beside the page (copied from Debian's libjs-katex); without it the page's first
+/// paragraph says that its formulas are TeX source, and how to have them rendered.
+std::string render_report_html(const std::string& markdown, const std::string& title, bool katex_beside = true);
 
 }  // namespace simpson::verify

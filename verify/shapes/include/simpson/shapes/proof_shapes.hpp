@@ -43,6 +43,7 @@ struct shape_parameter {
   std::string only_with{};           // given exactly when this argument is
   std::string hole{};                // word: a sentence's pattern, which must hold the hole {hole}
   std::string free_of{};             // formula: nonzero, and free of this symbols argument's symbols (a scale free of the states)
+  bool pairs = false;                // words: each entry 'word: replacement', both non-empty
 };
 
 /// One call: the claim's id and statement, its arguments, and its claims file's declarations (they
@@ -57,12 +58,19 @@ struct shape_call {
 
 using shape_function = std::function<decider_evidence(const shape_call&, const run_context&)>;
 
+class shape_reader;  // shape_support.hpp
+
+/// What a shape checks of a record once its formulas are read, before anything runs (the notation
+/// it reads that the declarations must settle): throws argument_error naming the argument.
+using shape_binding = std::function<void(shape_reader&, const shape_call&)>;
+
 struct proof_shape {
   std::string name;
   std::string summary;
   std::string principal;  // the argument whose formula is the printed statement (the reports show its TeX)
   std::vector<shape_parameter> parameters;
   shape_function run;
+  shape_binding bind = {};
 };
 
 /// Every shape, by name.

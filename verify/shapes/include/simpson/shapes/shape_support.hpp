@@ -163,6 +163,18 @@ GiNaC::ex monic_discriminant(const three_term_coefficients& terms);
 /// "q_j-1/2": −1/2); none when the name is not one.
 std::optional<GiNaC::numeric> index_offset(const std::string& name, const std::string& index);
 
+/// The exact solution at the nodes, as the states a scheme puts on it: each application x(t_n + k h)
+/// or x(t_{n+k}) of the function `base` that the claims file declares a solution ([symbols]
+/// solutions) becomes the state x_{n+k} (the reader's "x_n+k"), `index` being n. Throws
+/// argument_error(`parameter`) when `base` is applied and is no declared solution (the words do not
+/// say whether x(t_n) is the exact solution or the scheme's value: the message says how to declare
+/// it), or when a solution is applied at a point that is no node.
+GiNaC::ex solution_at_nodes(const GiNaC::ex& e, const claim_declarations& declared, const std::string& base, const std::string& index,
+                            const GiNaC::symbol& h, const std::string& parameter);
+
+/// Whether `e` applies the function `base` (a reader's function) anywhere.
+bool applies(const GiNaC::ex& e, const std::string& base);
+
 /// The reference an argument gives.
 std::string reference_of(const shape_call& call, const std::string& parameter);
 

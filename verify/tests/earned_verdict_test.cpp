@@ -1,0 +1,262 @@
+// No verdict the text did not earn (docs/findings.md, the policy): a referee's readings of the
+// paper, each a case that failed on the verdicts before the policy; a fix told apart from a broken
+// premise; compare showing what changed; the verdict table and the schema reading one table of
+// meanings.
+
+#include "altered_paper.hpp"
+
+#include <simpson/verify/claim_reads.hpp>
+#include <simpson/verify/junit.hpp>
+#include <simpson/verify/ledger.hpp>
+#include <simpson/verify/report.hpp>
+#include <simpson/verify/report_compare.hpp>
+#include <simpson/verify/report_directory.hpp>
+#include <simpson/verify/report_html.hpp>
+#include <simpson/verify/run.hpp>
+#include <simpson/verify/scene.hpp>
+#include <simpson/verify/verdict_table.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cerrno>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <set>
+#include <sstream>
+#include <string>
+
+namespace simpson::verify {
+namespace {
+
+run_record run_claims(const std::vector<std::string>& ids, const paper_source& paper, bool accept_fixes = false) {
+  scene s = load_scene("quick");
+  s.claims = ids;
+  s.experiments = {};
+  s.precisions = {precision::parse("double"), precision::parse("rational")};
+  s.accept_fixes = accept_fixes;
+  auto book = std::make_shared<claim_book>(paper_book());
+  const paper_reading reading = read_paper(paper);
+  check_claims_file_formulas(*book, reading.source);
+  return run(s, book, reading);
+}
+
+const claim_outcome& outcome_of(const run_record& r, const std::string& id) {
+  for (const claim_outcome& o : r.outcomes) {
+    if (o.checked->id == id) return o;
+  }
+  throw std::logic_error("no outcome " + id);
+}
+
+// The referee's nine cases, on the paper as printed: three errata a referee will not sign (now
+// holds, with a remark, or the harness's own), six rewordings.
+TEST(RefereesCases, ThePaperAsAnExpertReadsIt) {
+  const run_record r = run_claims({"phi3-explicit", "qm-not-affine", "approximate-energy-sign", "abstract-explicit", "gamma-system", "gamma-singular",
+                                   "conserved-form", "experiment-conventions", "table-values", "novelty-prior-work", "prose-spelling"},
+                                  embedded_paper());
+  EXPECT_EQ(run_exit_code(r), 0) << summary_line(r);
+  const auto remark = [&](const std::string& id, finding kind) {
+    const claim_outcome& o = outcome_of(r, id);
+    EXPECT_EQ(o.result.outcome, verdict::holds) << id << ": " << o.result.note;
+    EXPECT_EQ(o.result.remark_kind, kind) << id << ": " << o.result.remark;
+    EXPECT_TRUE(o.result.correction.empty()) << id;
+  };
+  remark("phi3-explicit", finding::wording);
+  remark("abstract-explicit", finding::wording);
+  remark("gamma-singular", finding::derivation_gap);
+  remark("conserved-form", finding::derivation_gap);
+  remark("novelty-prior-work", finding::naming);
+  EXPECT_EQ(cause_of(outcome_of(r, "gamma-singular")), "gamma-system");  // linked to the premise's erratum
+  // "This interpolation is not linear if h > 0" holds, of the curve.
+  EXPECT_EQ(outcome_of(r, "qm-not-affine").result.outcome, verdict::holds);
+  EXPECT_TRUE(outcome_of(r, "qm-not-affine").result.remark.empty());
+  // Not the paper's claim: the harness's own, not counted among the paper's.
+  EXPECT_EQ(outcome_of(r, "approximate-energy-sign").checked->origin, claim_origin::beyond);
+  const json summary = report_json(r)["summary"];
+  EXPECT_EQ(summary["remarks"], 5);
+  EXPECT_EQ(summary["beyond_claims"], 1);
+  // Table 1: the numbers right for the start that reproduces them, the round-off entries apart.
+  const std::string& values = outcome_of(r, "table-values").result.correction;
+  EXPECT_EQ(values.rfind("The numbers are right for the start that reproduces them; what is wrong is Section 8's description", 0), 0u) << values;
+  EXPECT_NE(values.find("17 of the 18 informative entries (the 6 others, of the rows printed as exact, are round-off"), std::string::npos) << values;
+  // "explicited": "made explicit", the record's replacement, not Hunspell's "explicated".
+  const claim_outcome& spelling = outcome_of(r, "prose-spelling");
+  EXPECT_NE(spelling.result.correction.find("explicited (4 times): made explicit"), std::string::npos) << spelling.result.correction;
+  // The headline: in a referee's words, Table 1's finding first in the summary.
+  EXPECT_EQ(summary["headline"].get<std::string>().rfind("The paper's ", 0), 0u);
+  const std::string md = report_markdown(r);
+  const std::size_t table1 = md.find("**`experiment-conventions`**"), gamma = md.find("**`gamma-system`**");
+  ASSERT_NE(table1, std::string::npos);
+  EXPECT_LT(table1, gamma) << "Table 1's finding first";
+  EXPECT_LT(md.find("## Referee's summary"), md.find("Exit code 0")) << "the findings before the exit code";
+  EXPECT_NE(md.find("Remarks on claims that hold (5), not findings"), std::string::npos);
+}
+
+// The 11/25 copy: Phi_3's (2,2) entry changed. Seven claims that read Phi_3 turn red; the naming
+// remark of novelty-prior-work goes away (the map is no longer Lobatto's, nothing to name), which is
+// no fix: it changed because of phi3-elimination, which reads the same display, and --accept-fixes
+// does not pass it. The corrected copy's remarks that go away with their premise's erratum are fixes.
+TEST(FixOrChange, APremiseThatBrokeIsNoFix) {
+  const paper_source broken = altered("label{Phi3}", "&    1 \\!-\\! {11\\over24}", "&    1 \\!-\\! {11\\over25}");
+  const run_record r = run_claims({"phi3-elimination", "phi3-det", "novelty-prior-work"}, broken, true);
+  const claim_outcome& novelty = outcome_of(r, "novelty-prior-work");
+  EXPECT_EQ(novelty.result.outcome, verdict::holds);
+  EXPECT_TRUE(novelty.result.remark.empty());
+  EXPECT_FALSE(novelty.fixed);
+  EXPECT_EQ(novelty.changed_cause, "phi3-elimination");
+  EXPECT_FALSE(outcome_as_expected(novelty)) << "--accept-fixes does not pass a change";
+  EXPECT_EQ(run_exit_code(r), 1);
+  const verdict_row row = claim_row(novelty, false);
+  EXPECT_EQ(row.type, "changed");
+  EXPECT_NE(row.message.find("a consequence of phi3-elimination"), std::string::npos) << row.message;
+  EXPECT_NE(summary_line(r).find("novelty-prior-work from phi3-elimination"), std::string::npos) << summary_line(r);
+  EXPECT_EQ(summary_line(r).find("fixed"), std::string::npos) << summary_line(r);
+}
+
+TEST(FixOrChange, AFixOfTheTextItReadsIsAFix) {
+  // Gamma's (3,3) entry corrected: gamma-system is fixed, and gamma-singular's derivation-gap remark
+  // (which followed from it) goes with it: a fix too, the display it reads changed.
+  paper_source fixed = altered("the following homogeneous linear system", "{{\\gamma^2-1}\\over2}   \\end{pmatrix}", "{{\\delta^2-1}\\over2} \\end{pmatrix}");
+  const run_record r = run_claims({"gamma-system", "gamma-singular"}, fixed, true);
+  for (const char* id : {"gamma-system", "gamma-singular"}) {
+    const claim_outcome& o = outcome_of(r, id);
+    EXPECT_EQ(o.result.outcome, verdict::holds) << id;
+    EXPECT_TRUE(o.fixed) << id << ": " << o.changed;
+    EXPECT_TRUE(o.fix_accepted) << id;
+  }
+  EXPECT_EQ(run_exit_code(r), 0) << summary_line(r);
+}
+
+// The digest a record keeps of what its claim reads: a claim recorded with a remark that holds
+// without it while it reads the recorded text changed because the harness did, not the document.
+TEST(FixOrChange, NothingReadChangedIsNoFix) {
+  const std::string note = R"(\documentclass{article}
+\title{A fix or a change}
+\begin{document}
+\maketitle
+Leapfrog advances $(q, p)$ by
+\begin{equation}\label{map}
+S = \begin{pmatrix} 1 - \frac{\omega^2 h^2}{2} & h \\ -\omega^2 h \left(1 - \frac{\omega^2 h^2}{4}\right) & 1 - \frac{\omega^2 h^2}{2} \end{pmatrix} ,
+\end{equation}
+so that leapfrog is an explicit scheme.
+\end{document}
+)";
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "simpson-fix-or-change";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "note.tex") << note;
+  const auto claims = [&](const std::string& reads) {
+    return std::string(R"([document]
+title = "A fix or a change"
+[symbols]
+positive = ['\omega', 'h']
+[[claim]]
+id = "leapfrog-explicit"
+section = "1"
+equation = "map"
+methods = ["exact"]
+shape = "explicit-map"
+with = { map = "map", step = ['h'], positive = ['\omega'], sentence = 'so that leapfrog is an {kind} scheme.' }
+expected = "holds"
+finding = "wording"
+)") + (reads.empty() ? "" : "reads = \"" + reads + "\"\n");
+  };
+  const auto run_with = [&](const std::string& reads) {
+    auto book = std::make_shared<claim_book>(read_claim_book(claims(reads), "note.toml"));
+    scene s = load_scene("quick");
+    s.claims = {"leapfrog-explicit"};
+    s.experiments = {};
+    s.paper_file = (dir / "note.tex").string();
+    s.accept_fixes = true;
+    const paper_reading reading = read_scene_paper(s, *book);
+    return run(s, book, reading);
+  };
+  // Leapfrog's map is a polynomial: no remark, though the record expects one.
+  const run_record unrecorded = run_with("");
+  EXPECT_TRUE(outcome_of(unrecorded, "leapfrog-explicit").fixed) << "no record of its text: nothing tells the fix apart";
+  const std::string digest = reads_digest(outcome_of(unrecorded, "leapfrog-explicit").result.printed, outcome_of(unrecorded, "leapfrog-explicit").result.quoted);
+  ASSERT_EQ(digest.size(), 16u);
+  const run_record recorded = run_with(digest);
+  const claim_outcome& o = outcome_of(recorded, "leapfrog-explicit");
+  EXPECT_FALSE(o.fixed);
+  EXPECT_NE(o.changed.find("nothing it reads changed"), std::string::npos) << o.changed;
+  EXPECT_EQ(run_exit_code(recorded), 1);
+  std::filesystem::remove_all(dir);
+}
+
+// compare on the 1/1400 copy: one difference, the truncation claim's, and one note on the
+// document (before: a difference on every claim that names the paper, and the summary's lines).
+TEST(CompareWhatChanged, ADifferentDocumentIsOneNote) {
+  const std::vector<std::string> ids{"truncation-1440", "phi3-det", "hd-invariance"};
+  const run_record printed = run_claims(ids, embedded_paper());
+  paper_source copy = altered("{\\cal T}_h(q_j)", "{1\\over1440}", "{1\\over1400}");
+  copy.origin = "paper_1400.tex";
+  copy.sha256 = std::string(64, 'a');
+  const run_record changed = run_claims(ids, copy);
+  json a = report_json(printed), b = report_json(changed);
+  a["environment"]["paper_sha256"] = printed.environment.value("paper_sha256", std::string(64, '0'));
+  b["environment"]["paper_sha256"] = std::string(64, 'a');
+  const report_comparison found = compare_reports(a, b);
+  ASSERT_EQ(found.differences.size(), 1u) << ::testing::PrintToString(found.lines());
+  EXPECT_EQ(found.differences[0].place, "claim truncation-1440");
+  EXPECT_EQ(found.differences[0].changes.front(), "verdict: \"holds\" → \"erratum\"");
+  const std::string notes = ::testing::PrintToString(found.notes);
+  EXPECT_NE(notes.find("the documents differ"), std::string::npos) << notes;
+  EXPECT_NE(notes.find("what follows from the differences below also differs"), std::string::npos) << notes;
+  // One JUnit case per real difference.
+  const std::string junit = comparison_junit(found, "old", "new");
+  EXPECT_NE(junit.find("failures=\"1\""), std::string::npos) << junit;
+}
+
+// The page says first why its formulas are TeX when KaTeX was not installed, and how to fix it.
+TEST(ReportHtml, WithoutKatexThePageSaysWhyFirst) {
+  const std::string md = "# A report\n\nThe map `\\frac{1}{2}`.\n";
+  const std::string without = render_report_html(md, "t", false);
+  const std::size_t body = without.find("<body>");
+  ASSERT_NE(body, std::string::npos);
+  EXPECT_EQ(without.find("<p class=\"no-katex\"><strong>The formulas on this page are shown as TeX source", body), body + 7) << without.substr(body, 300);
+  EXPECT_NE(without.find("apt-get install libjs-katex"), std::string::npos);
+  EXPECT_EQ(without.find("katex.min.js"), std::string::npos);
+  const std::string with = render_report_html(md, "t", true);
+  EXPECT_EQ(with.find("<p class=\"no-katex\">"), std::string::npos);
+  EXPECT_NE(with.find("katex/katex.min.js"), std::string::npos);
+}
+
+// A full disk is said as the system says it, "No space left on device" (before: "Input/output error",
+// errno lost in a stream's buffer): /dev/full fails every write with ENOSPC.
+TEST(Messages, AFullDiskSaysNoSpaceLeft) {
+  if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full on this machine";
+  try {
+    write_file("/dev/full", std::string(1 << 16, 'x'));
+    ADD_FAILURE() << "writing to /dev/full did not fail";
+  } catch (const std::filesystem::filesystem_error& e) {
+    EXPECT_EQ(e.code().value(), ENOSPC) << e.what();
+    EXPECT_NE(e.code().message().find("No space left"), std::string::npos) << e.code().message();
+  }
+}
+
+// The verdicts the JSON Schema names are verdict.hpp's table, in its order: adding a verdict is its
+// enumerator, its row and this enum.
+TEST(VerdictMeanings, TheSchemaNamesEveryVerdictOfTheTable) {
+  std::ifstream in(std::filesystem::path(SIMPSON_SOURCE_DIR) / "verify" / "app" / "schema" / "report.schema.json");
+  std::ostringstream text;
+  text << in.rdbuf();
+  const json schema = json::parse(text.str());
+  std::vector<std::string> names;
+  for (const verdict_meaning& m : verdict_meanings) names.push_back(m.name);
+  EXPECT_EQ(schema["$defs"]["verdict"]["enum"].get<std::vector<std::string>>(), names);
+  std::set<std::string> keys;
+  for (const verdict_meaning& m : verdict_meanings) {
+    EXPECT_TRUE(keys.insert(m.count_key).second) << m.count_key;
+    EXPECT_TRUE(schema["$defs"].is_object());
+    EXPECT_TRUE(schema["properties"]["summary"]["properties"].contains(m.count_key)) << m.count_key;
+    EXPECT_EQ(verdict_of_name(m.name), m.value);
+    // Only a judgment of the document may be expected; a finding is a judgment.
+    if (m.finding) {
+      EXPECT_TRUE(m.expectable) << m.name;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace simpson::verify
