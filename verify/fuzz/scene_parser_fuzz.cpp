@@ -1,6 +1,7 @@
 // libFuzzer target: the scene parser must turn any input into a scene or a std::invalid_argument,
 // never crash, hang, leak or throw anything else.
 
+#include <simpson/verify/experiments.hpp>
 #include <simpson/verify/scene.hpp>
 
 #include <cstddef>
@@ -14,10 +15,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const simpson::verify::scene s = simpson::verify::parse_scene(text, "fuzz");
     // Validation let a hole through: a scene must ask for something, and every experiment parameter is in range.
     if (s.name.empty() || (s.claims.empty() && !s.experiments.any()) || s.precisions.empty()) __builtin_trap();
-    if (s.experiments.table1 && (s.experiments.table1->meshes.empty() || !(s.experiments.table1->m > 0))) __builtin_trap();
-    if (s.experiments.work_precision && s.experiments.work_precision->precisions.empty()) __builtin_trap();
-    if (s.experiments.stability) {
-      for (const double x : s.experiments.stability->omega_h) {
+    if (s.experiments.find<table1_settings>() && (s.experiments.find<table1_settings>()->meshes.empty() || !(s.experiments.find<table1_settings>()->m > 0))) __builtin_trap();
+    if (s.experiments.find<work_precision_settings>() && s.experiments.find<work_precision_settings>()->precisions.empty()) __builtin_trap();
+    if (s.experiments.find<stability_settings>()) {
+      for (const double x : s.experiments.find<stability_settings>()->omega_h) {
         if (!(x > 0)) __builtin_trap();
       }
     }

@@ -4,6 +4,7 @@
 #include <simpson/verify/experiment_cost.hpp>
 #include <simpson/verify/enclosure_undecided.hpp>
 #include <simpson/verify/experiments.hpp>
+#include <simpson/verify/ledger.hpp>
 #include <simpson/verify/nonlinear_section.hpp>
 #include <simpson/verify/paper_table.hpp>
 #include <simpson/verify/printed_table1.hpp>
@@ -473,9 +474,9 @@ mpfr digits_of(const figure& f) {
 
 TEST(Experiments, CostEstimateGrowsWithStepsAndPrecision) {
   experiment_settings e;
-  e.long_time = long_time_settings{};
+  e.set(*find_section(experiment_sections(), "long_time"), long_time_settings{}, experiment_sections());
   const double base = estimate_cost(e).units;
-  e.long_time->steps_double = 1'000'000'000;
+  e.find<long_time_settings>()->steps_double = 1'000'000'000;
   EXPECT_GT(estimate_cost(e).units, default_cost_budget);
   EXPECT_LT(base, default_cost_budget);
   EXPECT_LT(estimate_cost(load_scene("paper").experiments).units, default_cost_budget);

@@ -1,5 +1,6 @@
 // report.junit.xml parses as XML (Boost.PropertyTree's parser) and counts every claim and table.
 
+#include <simpson/verify/experiments.hpp>
 #include <simpson/verify/junit.hpp>
 #include <simpson/verify/report.hpp>
 #include <simpson/verify/report_compare.hpp>
@@ -35,8 +36,9 @@ boost::property_tree::ptree parsed(const std::string& xml) {
 scene stability_scene(std::vector<std::string> claims) {
   scene s = load_scene("quick");
   s.claims = std::move(claims);
+  const scene quick = load_scene("quick");
   s.experiments = {};
-  s.experiments.stability = load_scene("quick").experiments.stability;
+  s.experiments.set(*find_section(experiment_sections(), "stability"), *quick.experiments.find<stability_settings>(), experiment_sections());
   return s;
 }
 
@@ -78,9 +80,7 @@ TEST(JUnit, ParsesAndCountsEveryClaimAndTable) {
 TEST(JUnit, FailuresAreExactlyWhatMakesTheExitCodeNonZero) {
   scene s = load_scene("quick");
   s.claims = {"phi3-det", "gamma-system", "table-values"};
-  s.experiments.table1.reset();
-  s.experiments.work_precision.reset();
-  s.experiments.long_time.reset();
+  for (const char* section : {"table1", "work_precision", "long_time"}) s.experiments.remove(section);
   run_record r = run(s);
   ASSERT_EQ(run_exit_code(r), 0);
   // No claim of the paper's ledger expects `fails` today: one made so (table-values, an erratum as
@@ -311,10 +311,10 @@ TEST(JUnit, ACompareOfTwoReportsIsATestSuiteOfItsDifferences) {
 // expectation: the refusal below it is not a guess. 10^3, the old minimum, did not.
 TEST(JUnit, TheSmallestEndpointPowerAllowedDecidesEveryExpectation) {
   scene s = stability_scene({});
-  s.experiments.stability->endpoint_power = 1000000;
+  s.experiments.find<stability_settings>()->endpoint_power = 1000000;
   const run_record r = run(s);
   EXPECT_TRUE(failed_expectations(r).empty()) << ::testing::PrintToString(failed_expectations(r));
-  s.experiments.stability->endpoint_power = 1000;
+  s.experiments.find<stability_settings>()->endpoint_power = 1000;
   EXPECT_FALSE(failed_expectations(run(s)).empty());  // why the minimum is not 1000
 }
 

@@ -6,6 +6,7 @@
 // To accept a deliberate change: build/bin/simpson-verify --out reports/reference/paper
 
 #include <simpson/verify/certify.hpp>
+#include <simpson/verify/experiments.hpp>
 #include <simpson/verify/report.hpp>
 #include <simpson/verify/report_compare.hpp>
 
@@ -34,8 +35,8 @@ TEST(ReferenceReport, PaperSceneReproducesTheCommittedReport) {
   const std::filesystem::path dir = std::filesystem::path(SIMPSON_SOURCE_DIR) / "reports" / "reference" / "paper";
   ASSERT_TRUE(std::filesystem::exists(dir / "report.json")) << dir;
   scene s = load_scene("paper");
-  s.experiments.work_precision->timing = timing_policy{1, 0.01};
-  s.experiments.nonlinear->timing = timing_policy{1, 0.01};
+  s.experiments.find<work_precision_settings>()->timing = timing_policy{1, 0.01};
+  s.experiments.find<nonlinear_settings>()->timing = timing_policy{1, 0.01};
   run_record r = run(s);
   // The committed report was made with --certify: its Coq counts are checked counts.
   ASSERT_FALSE(coqc_version().empty()) << "coqc is needed (scripts/install-deps installs Debian's coq)";

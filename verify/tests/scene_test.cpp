@@ -1,3 +1,4 @@
+#include <simpson/verify/experiments.hpp>
 #include <simpson/verify/scene.hpp>
 
 #include <simpson/verify/ledger.hpp>
@@ -91,26 +92,26 @@ TEST(Scene, ExperimentSectionsParseWithDefaultsAndOnlyWhenAsked) {
   EXPECT_FALSE(none.experiments.any());
   const scene s = parse_scene(R"({"name": "e", "table1": {}, "long_time": {"steps_double": 1e5}})", "t");
   EXPECT_TRUE(s.claims.empty());
-  ASSERT_TRUE(s.experiments.table1 && s.experiments.long_time);
-  EXPECT_FALSE(s.experiments.work_precision || s.experiments.stability);
-  EXPECT_EQ(s.experiments.table1->meshes, (std::vector<long long>{10, 20, 40}));
-  EXPECT_EQ(s.experiments.long_time->steps_double, 100000);
+  ASSERT_TRUE(s.experiments.find<table1_settings>() && s.experiments.find<long_time_settings>());
+  EXPECT_FALSE(s.experiments.find<work_precision_settings>() || s.experiments.find<stability_settings>());
+  EXPECT_EQ(s.experiments.find<table1_settings>()->meshes, (std::vector<long long>{10, 20, 40}));
+  EXPECT_EQ(s.experiments.find<long_time_settings>()->steps_double, 100000);
   const scene paper = load_scene("paper");
-  EXPECT_TRUE(paper.experiments.table1 && paper.experiments.work_precision && paper.experiments.stability &&
-              paper.experiments.long_time);
+  EXPECT_TRUE(paper.experiments.find<table1_settings>() && paper.experiments.find<work_precision_settings>() && paper.experiments.find<stability_settings>() &&
+              paper.experiments.find<long_time_settings>());
   // Every scheme but Lobatto IIIA–IIIB(3), Simpson's own map by another implementation: Simpson is
   // drawn once, as the method.
   std::vector<scheme_id> peers = all_schemes();
   peers.erase(std::find(peers.begin(), peers.end(), scheme_id::lobatto_iiia_iiib_3));
-  EXPECT_EQ(paper.experiments.work_precision->schemes, peers);
+  EXPECT_EQ(paper.experiments.find<work_precision_settings>()->schemes, peers);
   // The paper scene's nonlinear section is its problems' error against work alone, beside the oscillator's.
-  ASSERT_TRUE(paper.experiments.nonlinear);
-  EXPECT_EQ(paper.experiments.nonlinear->parts, std::vector<std::string>{"problems"});
+  ASSERT_TRUE(paper.experiments.find<nonlinear_settings>());
+  EXPECT_EQ(paper.experiments.find<nonlinear_settings>()->parts, std::vector<std::string>{"problems"});
   const scene beyond = load_scene("beyond");
-  ASSERT_TRUE(beyond.experiments.nonlinear);
-  EXPECT_EQ(beyond.experiments.nonlinear->problems, nonlinear_problem_names());
+  ASSERT_TRUE(beyond.experiments.find<nonlinear_settings>());
+  EXPECT_EQ(beyond.experiments.find<nonlinear_settings>()->problems, nonlinear_problem_names());
   const scene zero_e = parse_scene(R"({"name": "e", "nonlinear": {"eccentricity": 0, "problems": ["kepler"]}})", "t");
-  EXPECT_EQ(zero_e.experiments.nonlinear->eccentricity, 0);  // a circle is an ellipse
+  EXPECT_EQ(zero_e.experiments.find<nonlinear_settings>()->eccentricity, 0);  // a circle is an ellipse
 }
 
 TEST(Scene, RejectsEveryBadExperimentParameter) {

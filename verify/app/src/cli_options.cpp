@@ -6,7 +6,10 @@
 #include <simpson/verify/experiment_cost.hpp>
 #include <simpson/verify/scene.hpp>
 
+#include <simpson/verify/ledger.hpp>
+
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace simpson::verify {
 
@@ -28,9 +31,16 @@ void declare_options(CLI::App& app, cli_options& o) {
   app.add_option("--claims", o.claim_ids,
                  "comma-separated claim ids, or all (the scene's); alone, runs these claims and no section (default: the scene's)")
       ->delimiter(',');
+  // The sections and what each does to --precisions: the registry's (experiment_section.hpp).
+  std::vector<std::string> sections, applied, refused;
+  for (const experiment_section* section : experiment_sections()) {
+    sections.push_back(section->name());
+    if (section->precisions() == experiment_section::precisions_use::applied) applied.push_back(section->name());
+    if (section->precisions() == experiment_section::precisions_use::refused) refused.push_back(section->name());
+  }
   app.add_option("--sections", o.section_list,
-                 "comma-separated sections (table1, work_precision, stability, long_time, nonlinear, floating, family) or none; alone, runs these "
-                 "sections and no claim (default: the scene's)")
+                 fmt::format("comma-separated sections ({}) or none; alone, runs these sections and no claim (default: the scene's)",
+                             fmt::join(sections, ", ")))
       ->delimiter(',');
   app.add_flag("--quiet", o.quiet, "print only the summary line and errors");
   o.compare = app.add_subcommand(
@@ -47,8 +57,9 @@ void declare_options(CLI::App& app, cli_options& o) {
       ->check(CLI::IsMember({"text", "json"}));
   o.compare->fallthrough();
   app.add_option("--precisions", o.precision_names,
-                 "comma-separated precisions of the claims' rechecks and of the sections work_precision and stability "
-                 "(table1 runs in double; a run with long_time or nonlinear is refused: they compare double with mpfr by design)")
+                 fmt::format("comma-separated precisions of the claims' rechecks and of the sections {} (the others run in their own; a "
+                             "run with {} is refused: they compare double with mpfr by design)",
+                             fmt::join(applied, " and "), fmt::join(refused, " or ")))
       ->delimiter(',');
   app.add_option("--seed", o.seed_text, "seed of the random samples (default: the scene's, printed in the report)")->type_name("UINT");
   app.add_option("--samples", o.samples_text, "random samples per numeric recheck and precision, 1..10000")->type_name("UINT");

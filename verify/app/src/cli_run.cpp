@@ -20,6 +20,7 @@
 
 #include <fmt/core.h>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <chrono>
@@ -168,29 +169,37 @@ std::optional<int> prepare_run(cli_options& o, const CLI::App& app, int argc, ch
       s.overrides["enclosure_budget_digits"] = s.enclosure_budget_digits;
     }
     if (!o.timing_runs_text.empty() && o.no_timing) throw std::invalid_argument("--timing-runs and --no-timing exclude each other");
+    // The run-wide options, each applied by the sections that take it (experiment_section.hpp).
+    section_options options;
     if (!o.timing_runs_text.empty()) {
       const auto runs = static_cast<unsigned>(parse_count("--timing-runs", o.timing_runs_text, 1, 1000));
-      if (!s.experiments.work_precision && !s.experiments.nonlinear) {
-        throw std::invalid_argument("--timing-runs: the run has no work_precision or nonlinear section, the only ones timed by repeats");
+      std::vector<std::string> timed;
+      for (const experiment_section* section : experiment_sections()) {
+        if (section->times_runs()) timed.push_back(section->name());
       }
-      if (s.experiments.work_precision) s.experiments.work_precision->timing.max_runs = runs;
-      if (s.experiments.nonlinear) s.experiments.nonlinear->timing.max_runs = runs;
+      const bool any_timed = std::any_of(s.experiments.entries().begin(), s.experiments.entries().end(),
+                                         [](const experiment_settings::entry& e) { return e.section->times_runs(); });
+      if (!any_timed) {
+        throw std::invalid_argument(fmt::format("--timing-runs: the run has no {} section, the only ones timed by repeats", fmt::join(timed, " or ")));
+      }
+      options.timing_runs = runs;
       s.overrides["timing_runs"] = runs;
     }
     if (o.no_timing) {
       s.timing = false;
-      if (s.experiments.work_precision) s.experiments.work_precision->timing.max_runs = 0;
-      if (s.experiments.nonlinear) s.experiments.nonlinear->timing.max_runs = 0;
-      if (s.experiments.fpu) s.experiments.fpu->timed = false;
+      options.timed = false;
       s.overrides["timing"] = false;
     }
     s.command_line.assign(argv, argv + argc);
     if (o.long_run) {
-      if (!s.experiments.long_time) s.experiments.long_time = long_time_settings{};
-      s.experiments.long_time->steps_double = 1'000'000'000;
+      for (const experiment_section* section : experiment_sections()) {
+        if (section->runs_long() && !s.experiments.has(section->name())) s.experiments.set(*section, section->defaults({}), experiment_sections());
+      }
+      options.long_run = true;
       o.allow_expensive = true;
       s.overrides["long"] = true;
     }
+    for (experiment_settings::entry& section : s.experiments.entries()) section.section->apply(section.settings, options);
     recheck_load rechecks{0, s.samples, s.precisions};
     for (const std::string& id : s.claims) {
       const std::vector<std::string>& methods = book->find(id).methods;
@@ -208,7 +217,8 @@ std::optional<int> prepare_run(cli_options& o, const CLI::App& app, int argc, ch
     if (o.certify && coqc_version().empty()) throw std::invalid_argument("--certify: coqc was not found (install Debian's coq)");
     // Checked wherever coqc is installed, unless --no-certify.
     if (!o.certify && !o.no_certify) o.certify = !coqc_version().empty();
-    if (s.experiments.floating) s.experiments.floating->check_with_coqc = o.certify;  // Gappa's proofs and the lifting lemmas
+    options.certify = o.certify;  // Gappa's proofs and the lifting lemmas of the floating section
+    for (experiment_settings::entry& section : s.experiments.entries()) section.section->apply(section.settings, options);
     out = output_directory(s, app.count("--out") > 0 ? std::optional<std::string>(o.out_dir) : std::nullopt);
     prepare_output_directory(out);
   } catch (const std::invalid_argument& e) {

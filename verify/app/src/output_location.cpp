@@ -20,14 +20,8 @@ std::string joined(const json& names, const char* separator) {
 
 /// The experiment sections the run computes.
 std::set<std::string> run_sections(const scene& s) {
-  const experiment_settings& e = s.experiments;
-  std::set<std::string> names;
-  if (e.table1) names.insert("table1");
-  if (e.work_precision) names.insert("work_precision");
-  if (e.stability) names.insert("stability");
-  if (e.long_time) names.insert("long_time");
-  if (e.nonlinear) names.insert("nonlinear");
-  return names;
+  const std::vector<std::string> names = s.experiments.names();
+  return std::set<std::string>(names.begin(), names.end());
 }
 
 std::string counted(std::size_t n, const char* noun) { return fmt::format("{} {}{}", n, noun, n == 1 ? "" : "s"); }

@@ -264,19 +264,39 @@ json summary_json(const run_record& r) {
   return out;
 }
 
-/// The findings in a referee's words: how many substantive errors, typographical slips, findings of
-/// wording, naming or derivation, and remarks on claims that hold, the spelling apart.
+/// The findings in a referee's words: how many substantive errors (and where), typographical slips,
+/// statements false as worded, and remarks on claims that hold, the spelling apart; the claims that
+/// follow from a finding counted with it.
 std::string findings_headline(const run_record& r) {
   const report_parts::verdict_counts c = report_parts::count_verdicts(r);
   const std::string the = r.of_the_paper ? "paper" : "document";
   const auto n = [](std::size_t k, const char* one, const char* many) { return fmt::format("{} {}", k, k == 1 ? one : many); };
-  std::vector<std::string> parts{n(c.substantive, "substantive error", "substantive errors"), n(c.typographical, "typographical slip", "typographical slips"),
+  // Each distinct finding's category, and what follows from it.
+  std::vector<std::string> substantive;
+  std::size_t follows_other = 0;
+  for (const claim_outcome& o : r.outcomes) {
+    if (o.checked->origin != claim_origin::paper || !is_finding(o.result.outcome) || !cause_of(o).empty()) continue;
+    const finding kind = report_parts::finding_of(o);
+    std::size_t following = 0;
+    for (const claim_outcome& other : r.outcomes) following += cause_of(other) == o.checked->id && is_finding(other.result.outcome);
+    if (kind == finding::erratum && !o.checked->typographical) {
+      substantive.push_back(fmt::format("§{}, {}{}", o.checked->section, o.checked->id,
+                                        following == 0 ? std::string() : fmt::format(" and {} following from it", n(following, "claim", "claims"))));
+    } else {
+      follows_other += following;
+    }
+  }
+  std::string errors = n(c.substantive, "substantive error", "substantive errors");
+  if (!substantive.empty()) {
+    errors += " (" + report_parts::join(substantive, "; ") + ")";
+  }
+  std::vector<std::string> parts{errors, n(c.typographical, "typographical slip", "typographical slips"),
                                  n(c.wording, "statement false as worded (wording, naming or derivation)", "statements false as worded (wording, naming or derivation)")};
   if (c.unverifiable_findings > 0) parts.push_back(n(c.unverifiable_findings, "claim unverifiable for absent material", "claims unverifiable for absent material"));
   std::string line = fmt::format("The {}'s {} claims: {}", the, c.paper, report_parts::join(parts, ", "));
-  if (c.consequences > 0) line += fmt::format(" ({} more following from them, counted under their cause)", c.consequences);
+  if (follows_other > 0) line += fmt::format(" ({} following from these)", n(follows_other, "more claim", "more claims"));
   line += fmt::format("; {} on claims that hold", n(c.remarks, "remark", "remarks"));
-  if (c.prose_slips > 0) line += fmt::format("; {} apart", n(c.prose_slips, "spelling slip", "spelling slips"));
+  if (c.prose_slips > 0) line += fmt::format("; {} apart", n(c.prose_slips, "misspelled word", "misspelled words"));
   return line + ".";
 }
 

@@ -3,12 +3,12 @@
 #include <simpson/verify/environment.hpp>
 #include <simpson/verify/paper_configuration.hpp>
 #include <simpson/verify/printed_checks.hpp>
-#include <simpson/verify/printed_table1.hpp>
 #include <simpson/verify/provenance.hpp>
 #include <simpson/verify/quoted_sentence.hpp>
 #include <simpson/verify/run.hpp>
 #include <simpson/verify/utf8_text.hpp>
 #include <simpson/verify/claim_reads.hpp>
+#include <simpson/verify/run_memo.hpp>
 
 #include <simpson/verify/certify.hpp>
 #include <simpson/verify/consequences.hpp>
@@ -247,48 +247,16 @@ run_record run(const scene& s, std::shared_ptr<const claim_book> book, const pap
     r.provenance = provenance_json(paper, ctx, checked);
   }
   record_certificates(r, false);  // each claim's evidence "coq": exported or why not (checked by --certify)
-  const experiment_settings& e = s.experiments;
-  const auto section = [&](auto&& compute) {
+  // The sections the scene asks for, each run by its registry entry (experiment_section.hpp), with
+  // the run's memo, where it reports its work and the run's document.
+  const section_inputs inputs{&memo, work, &paper};
+  for (const experiment_settings::entry& entry : s.experiments.entries()) {
     throw_if_interrupted();
     const auto section_start = clock::now();
-    r.sections.push_back(compute());
+    r.sections.push_back(entry.section->run(entry.settings, inputs));
     r.section_seconds.push_back(std::chrono::duration<double>(clock::now() - section_start).count());
     if (section_progress) section_progress(r.sections.back().name, r.section_seconds.back());
-  };
-  if (e.table1) {
-    section([&] {
-      // Table 1 as the run's paper prints it (a changed copy is judged as printed); no printed value
-      // when the table can no longer be read (table-values then says text-changed).
-      table1_settings settings = *e.table1;
-      settings.memo = &memo;
-      try {
-        const printed_table1 printed = read_table1(paper.source);
-        settings.printed_values = printed.values;
-        settings.printed_digits = printed.digits;
-        settings.printed_orders = printed.orders;
-      } catch (const text_changed&) {
-      }
-      try {  // the solution it states, where the convention search starts (its claim says when it is gone)
-        const stated_solution stated = read_stated_solution(paper.source);
-        settings.stated = {stated.amplitude, stated.phase, stated.period};
-      } catch (const text_changed&) {
-      }
-      return run_table1(settings);
-    });
   }
-  // Each section's settings as the scene gives them, with where it reports its work.
-  const auto reporting = [&work](auto settings) {
-    settings.progress = work;
-    return settings;
-  };
-  if (e.work_precision) section([&] { return run_work_precision(reporting(*e.work_precision)); });
-  // Error against work on the nonlinear problems beside the oscillator's (the paper scene's parts).
-  if (e.nonlinear) section([&] { return run_nonlinear(reporting(*e.nonlinear)); });
-  if (e.stability) section([&] { return run_stability(reporting(*e.stability)); });
-  if (e.long_time) section([&] { return run_long_time(reporting(*e.long_time)); });
-  if (e.floating) section([&] { return run_floating(reporting(*e.floating)); });
-  if (e.family) section([&] { return run_family(reporting(*e.family)); });
-  if (e.fpu) section([&] { return run_fpu(reporting(*e.fpu)); });
   // Φ₃ at the paper's configuration: the paper's, not a document's that a claims file checks.
   if (r.of_the_paper) r.paper_configuration = paper_configuration(s.precisions);
   r.environment = build_environment(s, paper);

@@ -35,37 +35,18 @@ std::vector<precision> floating_precisions(const scene& s) {
 
 void keep_sections(scene& s, const std::vector<std::string>& names) {
   experiment_settings& e = s.experiments;
-  const auto wanted = [&names](const char* name) { return std::find(names.begin(), names.end(), name) != names.end(); };
-  if (!wanted("table1")) e.table1.reset();
-  else if (!e.table1) e.table1 = table1_settings{};
-  if (!wanted("work_precision")) {
-    e.work_precision.reset();
-  } else if (!e.work_precision) {
-    e.work_precision = work_precision_settings{};
-    e.work_precision->precisions = floating_precisions(s);
+  for (const experiment_section* section : experiment_sections()) {
+    const bool wanted = std::find(names.begin(), names.end(), section->name()) != names.end();
+    if (!wanted) e.remove(section->name());
+    else if (!e.has(section->name())) e.set(*section, section->defaults(floating_precisions(s)), experiment_sections());
   }
-  if (!wanted("stability")) {
-    e.stability.reset();
-  } else if (!e.stability) {
-    e.stability = stability_settings{};
-    e.stability->precisions = floating_precisions(s);
-  }
-  if (!wanted("long_time")) e.long_time.reset();
-  else if (!e.long_time) e.long_time = long_time_settings{};
-  if (!wanted("nonlinear")) e.nonlinear.reset();
-  else if (!e.nonlinear) e.nonlinear = nonlinear_settings{};
-  if (!wanted("floating")) e.floating.reset();
-  else if (!e.floating) e.floating = floating_settings{};
-  if (!wanted("family")) e.family.reset();
-  else if (!e.family) e.family = family_settings{};
-  if (!wanted("fpu")) e.fpu.reset();
-  else if (!e.fpu) e.fpu = fpu_settings{};
 }
 
 }  // namespace
 
-const std::vector<std::string>& section_names() {
-  static const std::vector<std::string> names{"table1", "work_precision", "stability", "long_time", "nonlinear", "floating", "family", "fpu"};
+std::vector<std::string> section_names() {
+  std::vector<std::string> names;
+  for (const experiment_section* section : experiment_sections()) names.push_back(section->name());
   return names;
 }
 
@@ -119,7 +100,7 @@ void apply_selection(scene& s, const scene_selection& selection, const claim_boo
     for (const std::string& given : *selection.sections) {
       const std::string name = trimmed(given);
       if (name.empty() || name == "none") continue;
-      if (std::find(section_names().begin(), section_names().end(), name) == section_names().end()) {
+      if (find_section(experiment_sections(), name) == nullptr) {
         throw std::invalid_argument("--sections: unknown section '" + name + "' (known: " + joined(section_names()) + ", or none)");
       }
       if (std::find(sections.begin(), sections.end(), name) == sections.end()) sections.push_back(name);
@@ -154,20 +135,14 @@ void apply_precisions(scene& s, const std::vector<std::string>& names) {
   }
   if (parsed.empty()) throw std::invalid_argument("--precisions: no precision given");
   experiment_settings& e = s.experiments;
-  if (e.long_time) {
-    throw std::invalid_argument("--precisions: the long_time section compares double with mpfr:" +
-                                std::to_string(e.long_time->mpfr_digits) +
-                                " by design and takes no precision list; leave it out with --sections, or set "
-                                "long_time.mpfr_digits in a scene file");
-  }
-  if (e.nonlinear) {
-    throw std::invalid_argument("--precisions: the nonlinear section runs in mpfr:" + std::to_string(e.nonlinear->mpfr_digits) +
-                                " and double by design and takes no precision list; leave it out with --sections, or set "
-                                "nonlinear.mpfr_digits in a scene file");
-  }
+  // Each section takes the list, ignores it, or refuses it (and says why): the registry's word.
   std::vector<std::string> applied{"claims"};
-  if (e.work_precision) applied.push_back("work_precision");
-  if (e.stability) applied.push_back("stability");
+  for (const experiment_settings::entry& section : e.entries()) {
+    if (section.section->precisions() == experiment_section::precisions_use::refused) {
+      throw std::invalid_argument("--precisions: " + section.section->why_no_precisions(section.settings));
+    }
+    if (section.section->precisions() == experiment_section::precisions_use::applied) applied.push_back(section.section->name());
+  }
   for (const precision& p : parsed) {
     if (p.exact() && applied.size() > 1) {
       throw std::invalid_argument("--precisions: '" + p.name() + "' has no cos or sin, and the sections " +
@@ -176,8 +151,9 @@ void apply_precisions(scene& s, const std::vector<std::string>& names) {
     }
   }
   s.precisions = parsed;
-  if (e.work_precision) e.work_precision->precisions = parsed;
-  if (e.stability) e.stability->precisions = parsed;
+  for (experiment_settings::entry& section : e.entries()) {
+    if (section.section->precisions() == experiment_section::precisions_use::applied) section.section->set_precisions(section.settings, parsed);
+  }
   s.overrides["precisions"] = given;
   s.overrides["precisions_applied_to"] = applied;
 }

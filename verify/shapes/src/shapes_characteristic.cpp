@@ -435,7 +435,11 @@ decider_evidence root_criterion_shape(const shape_call& call, const run_context&
                                                  fmt::format("modulus at most 1, those of modulus 1 simple (the root condition): stable for {} in {}", var,
                                                              fmt::join(stable_bands, " and "))));
   result.note = fmt::format("As printed, '{}' and the root condition disagree: {}{}.", said.words("modulus"), fmt::join(disagreements, "; "),
-                            said_any_stable ? "" : fmt::format("; read literally, '{}' calls the scheme stable for no {} > 0", said.words("modulus"), var));
+                            said_any_stable ? ""
+                                            : fmt::format("; read literally, '{}' is a sufficient condition that no {} > 0 meets here, and the text "
+                                                          "then applies it to roots of modulus 1: what the conclusion needs is the root condition, "
+                                                          "which the negative discriminant gives, so the conclusion stands",
+                                                          said.words("modulus"), var));
   e.found = std::move(result);
   return e;
 }
@@ -447,7 +451,8 @@ decider_evidence root_criterion_shape(const shape_call& call, const run_context&
 /// unconditionally when it has no root or pole on variable > 0 and is negative there (Sturm sequences;
 /// Coq: the sign for every positive symbol), conditionally when it is negative on some band between
 /// them (Coq: the sign on each band with rational ends), unstable when on none. Unqualified, "stable"
-/// means for every step.
+/// is read as the field reads it of a scheme, stable for every step small enough: it holds on a first
+/// band from 0, with a wording remark when the scheme is not stable for every step.
 decider_evidence unconditional_stability_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const ex scheme = read.formula("scheme");
@@ -459,6 +464,9 @@ decider_evidence unconditional_stability_shape(const shape_call& call, const run
   const std::string stated_words = said.choice("stability", hole_named("stability").phrases);
   const std::string stated = stated_words == "unstable" ? "unstable" : "stable";
   std::string qualifier = stated_words == "unconditionally stable" ? "unconditional" : stated_words == "conditionally stable" ? "conditional" : "";
+  // A plain "stable", with no qualifying words, is read as the field reads it of a scheme: stable for
+  // every step small enough (a first stable band from 0); not for every step, a wording remark.
+  const bool plain = qualifier.empty() && !call.with.count("qualifier") && stated_words == "stable";
   if (qualifier.empty()) {
     qualifier = "unconditional";  // no qualifying words: stable means for every step
     if (call.with.count("qualifier")) {
@@ -494,7 +502,10 @@ decider_evidence unconditional_stability_shape(const shape_call& call, const run
   const std::string computed = unconditional          ? "unconditional"
                                : stable_bands.empty() ? "unstable"
                                                       : "conditional";
-  const bool holds = stated == "stable" ? qualifier == computed : computed == "unstable";
+  const std::vector<discriminant_region> regions = regions_of(*g);
+  const bool stable_from_zero = !regions.empty() && regions.front().negative;
+  const bool small_steps = plain && computed == "conditional" && stable_from_zero;  // stable for h small enough
+  const bool holds = stated == "stable" ? (qualifier == computed || small_steps) : computed == "unstable";
   // The signs are our kernel's (Sturm sequences); Coq checks them where the statement holds.
   decider_evidence e;
   e.statement = "the stated stability against the root condition";
@@ -516,6 +527,13 @@ decider_evidence unconditional_stability_shape(const shape_call& call, const run
                   ", and its sign between them"},
       {"ginac", "holds: the premise in normal form, and the discriminant as a function of " + var + " alone; its sign is our kernel's"}};
   if (holds) {
+    if (small_steps) {
+      result.remark_kind = finding::wording;
+      result.remark = fmt::format("Stable as the field reads a plain \"stable\" of a scheme, for every step small enough: ({}) is stable for {}, not for "
+                                  "every step: conditionally stable.",
+                                  scheme_ref, bands_text);
+      result.amendments.push_back(amendment_in_words("the stated stability", stated_words, "conditionally stable: for " + bands_text + " only"));
+    }
     e.found = std::move(result);
     return e;
   }

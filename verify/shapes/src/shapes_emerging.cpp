@@ -38,9 +38,10 @@ bool same_value(const std::optional<ex>& a, const std::optional<ex>& b) {
 /// "A stability condition is naturally emerging: 0 < v < c", after a formula: the argument the text
 /// gives is the formula's first pole in v. It reaches the condition only when the scheme's stable
 /// set for v > 0 (root condition, stability_regions.hpp) is exactly (0, c) and c is that pole: then
-/// it holds. When c is the pole but the scheme is stable elsewhere too (a band beyond the pole), the
-/// pole does not bound stability: the condition is right (c ends the first stable band) but its
-/// argument does not reach it, a derivation gap (the record's class), corrected by the stable set.
+/// it holds. When c is the pole and ends the first stable band but the scheme is stable beyond it
+/// too, the condition holds and its argument has a gap: a derivation-gap remark (a pole is not a
+/// stability argument). When c is not the pole, or not the band's end, an erratum corrected by the
+/// stable set.
 decider_evidence emerging_condition_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const referenced_formula condition = read.raw("condition");
@@ -92,7 +93,7 @@ decider_evidence emerging_condition_shape(const shape_call& call, const run_cont
   // The poles and bands are our kernel's (Sturm sequences), compared exactly: its answer decides.
   decider_evidence e;
   e.statement = "the condition's origin";
-  e.own = answer_of(end_is_pole && end_is_band && !stable_beyond);
+  e.own = answer_of(end_is_pole && end_is_band);
   if (!end_is_pole) {
     result.correction = fmt::format("the first pole of ({}) is {}; the scheme ({}) is stable for {}", formula_ref,
                                     pole ? poles->text(poles->ends.front()) : std::string("none"), scheme_ref, stable_set);
@@ -103,6 +104,18 @@ decider_evidence emerging_condition_shape(const shape_call& call, const run_cont
   }
   if (end_is_band && !stable_beyond) {
     result.note = fmt::format("The pole of ({}) at {} = {} ends the one stable band: the scheme is stable for {}.", formula_ref, var, text_of(high), stable_set);
+    e.found = std::move(result);
+    return e;
+  }
+  if (end_is_band) {
+    // The condition is right and its end is the pole; but a pole is not a stability argument, and the
+    // scheme is stable again beyond it: the condition holds, its derivation has a gap (a remark).
+    result.remark_kind = finding::derivation_gap;
+    result.remark = fmt::format("The condition is the first stable band of ({}), and its end {} = {} is the first pole of ({}); stability itself follows "
+                                "from the root condition on ({}) (its discriminant), not from the pole, and the scheme is stable again beyond it: for {}.",
+                                scheme_ref, var, text_of(high), formula_ref, scheme_ref, stable_set);
+    result.amendments.push_back(amendment_in_words("the condition's derivation", said.words("emerges") + " (from the pole of " + formula_ref + ")",
+                                                   "the first stable band, whose end is the pole; stability from the root condition: stable for " + stable_set));
     e.found = std::move(result);
     return e;
   }

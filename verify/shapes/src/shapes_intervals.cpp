@@ -423,6 +423,24 @@ decider_evidence factor_signs_shape(const shape_call& call, const run_context& c
     e.found = std::move(result);
     return e;
   }
+  // Only the monomial prefactor differs, and the sentence states the product's sign, which holds:
+  // the sentence is consistent under one reading alone, "all the factors" being the sums (all of them
+  // of the stated sign would give the product the other one). As an expert reads it, it holds: a
+  // wording remark (the policy: an erratum is false under every reasonable reading).
+  if (has_relation && relation_as_stated && sums_as_stated) {
+    e.own = answer::holds;
+    e.ginac = ginac_decided ? answer::holds : answer::none;
+    result.remark_kind = finding::wording;
+    result.remark = fmt::format("'All the factors' can only be the factors that are sums: they are {}, and the product {} as stated; the prefactor {} is {} "
+                                "(were it {} too, the product would have the other sign). As proved: {}.",
+                                said.words("sign"), sign_word(product_sign) == "negative" ? "is negative" : "is positive", fmt::join(unlike, ", "),
+                                stated < 0 ? "positive" : "negative", said.words("sign"), facts);
+    result.amendments.push_back(amendment_in_words("the sign said of all the factors", said.words("sign"),
+                                                   fmt::format("{} for the factors that are sums; {} for the prefactor {}", said.words("sign"),
+                                                               stated < 0 ? "positive" : "negative", fmt::join(unlike, ", "))));
+    e.found = std::move(result);
+    return e;
+  }
   result.correction = "As proved: " + facts;
   // Wording when only the monomial prefactor differs and the product's relation holds: the sums are
   // what a reader may take for "the factors"; the words' "all" takes in the prefactor too.

@@ -561,8 +561,19 @@ decider_evidence invariance_kernel_shape(const shape_call& call, const run_conte
     derived.found.evidence["exact"]["printed_system"] = found.evidence["exact"];
     derived.found.evidence["exact"]["derived_kernel"] = w_text;
     derived.found.remark_kind = finding::derivation_gap;
-    const std::string printed_fails = found.note.rfind("As printed: ", 0) == 0 ? found.note.substr(12)
-                                                                               : std::string("the printed system times those coefficients is not 0 there.");
+    // Where the printed system fails: its rows times the coefficients that are not 0 (the kernel is
+    // wrong), or the rank (the kernel too large).
+    std::vector<std::string> rows_off;
+    for (unsigned k = 0; k < printed_there.rows(); ++k) {
+      ex row = 0;
+      for (unsigned u = 0; u < printed_there.cols(); ++u) row += printed_there(k, u) * v[u];
+      const ex value = GiNaC::factor(GiNaC::normal(row));
+      if (!value.is_zero()) rows_off.push_back(fmt::format("row {} gives {}", k + 1, text_of(value)));
+    }
+    const std::string printed_fails = !rows_off.empty()
+                                          ? fmt::format("the printed system times those coefficients is not 0 there: {}, not 0.", fmt::join(rows_off, ", "))
+                                      : found.note.rfind("As printed: ", 0) == 0 ? found.note.substr(12)
+                                                                                 : std::string("the printed system does not determine them.");
     derived.found.remark = fmt::format("The conclusion holds: {}. Its derivation from the printed system fails: {}", correction, printed_fails);
     derived.found.amendments.push_back(amendment_in_words("the system the conclusion is derived from", "the printed system",
                                                           "the system as derived (its entries corrected)"));

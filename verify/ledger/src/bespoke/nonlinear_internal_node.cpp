@@ -79,12 +79,17 @@ decider_evidence check_nonlinear_internal_node(const run_context& ctx) {
   if (!proved) return confirmed_if(false, evidence);
   const std::string fixed = "the computation (the printed equation as a contraction) is the same whatever the word";
   if (stated == "possible") return lexical(confirmed_if(true, evidence, eliminated + "."), said.words("possibility"), fixed);
-  return lexical(amended(words_erratum(evidence, eliminated + "; what does not exist in general is a closed form for q_m",
-                               "Wording: 'not possible' is false of the elimination itself, which the contraction gives; the intended "
-                               "content, no elimination in closed form for a general V, holds."),
-                         "the elimination of q_m", said.words("possibility"),
-                         fmt::format("possible, implicitly: a contraction when sup|V''| < |A|, A = ${}$; not in closed form for a general V", canonical_tex(A))),
-                 said.words("possibility"), fixed);
+  // "Not possible", as an expert reads it of a general V, is "not in closed form": true. It holds,
+  // with the wording remark that the elimination is possible implicitly (the policy: an erratum is
+  // false under every reasonable reading).
+  decider_evidence holds = confirmed_if(true, evidence);
+  holds.found.remark_kind = finding::wording;
+  holds.found.remark = "Not possible in closed form for a general V, as meant; possible implicitly: " + eliminated + ".";
+  holds.found.amendments.push_back(
+      amendment{"the elimination of q_m", said.words("possibility"),
+                fmt::format("not possible in closed form for a general V; possible implicitly, by a contraction when sup|V''| < |A|, A = ${}$", canonical_tex(A)),
+                false});
+  return lexical(std::move(holds), said.words("possibility"), fixed);
 }
 
 }  // namespace

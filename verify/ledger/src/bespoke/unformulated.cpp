@@ -164,10 +164,8 @@ decider_evidence check_experiment_conventions(const run_context& ctx) {
                          fmt::format("The stated pair is one exact solution with T = {} one period, but not the one Table 1 was computed "
                                      "with (table-values, convention search). ", period) + unstated),
                    "Table 1's exact solution", fmt::format("$q(t) = {}$, $p(t) = {}$", stated.q_tex, stated.p_tex),
-                   fmt::format("{}: {}", table1_start(*simplest), [&] {
-                     const entry_tally t = tally_entries(*simplest, entries);
-                     return fmt::format("{} of the {} informative entries", t.informative_reproduced, t.informative);
-                   }()));
+                   fmt::format("the best explanation found, the oscillator {} ({} of the {} informative entries reproduced)", table1_start(*simplest),
+                               tally_entries(*simplest, entries).informative_reproduced, tally_entries(*simplest, entries).informative));
   }
   return confirmed_if(false, evidence, "The stated pair does not reproduce Table 1, and no convention of the searched family does "
                                        "(table-values). " + unstated);

@@ -5,7 +5,7 @@
 #include <simpson/verify/claim.hpp>
 #include <simpson/verify/ledger.hpp>
 #include <simpson/verify/paper_reading.hpp>
-#include <simpson/verify/experiments.hpp>
+#include <simpson/verify/experiment_section.hpp>
 #include <simpson/verify/result_model.hpp>
 #include <simpson/verify/scene.hpp>
 

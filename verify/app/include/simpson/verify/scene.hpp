@@ -11,14 +11,14 @@
 //   "seed": 20230830,                      optional, the default seed (--seed overrides)
 //   "expected_overrides": {"id": "fails"}, optional, replaces expected verdicts (tests the exit code)
 //   "table1": {...}, "work_precision": {...}, "stability": {...}, "long_time": {...}
-//                                          optional experiment sections (experiments.hpp; README)
+//                                          optional experiment sections (experiment_section.hpp: the registry the book gives)
 // }
 // "claims" may be left out when the scene has at least one experiment section.
 
 #include <simpson/precision.hpp>
 #include <simpson/verify/claim.hpp>
 #include <simpson/verify/ledger.hpp>
-#include <simpson/verify/experiments.hpp>
+#include <simpson/verify/experiment_section.hpp>
 
 #include <cstdint>
 #include <map>

@@ -1,7 +1,7 @@
 #pragma once
 // The cost estimate that guards a scene against running for days, checked before anything runs.
 
-#include <simpson/verify/experiments.hpp>
+#include <simpson/verify/experiment_section.hpp>
 
 #include <string>
 #include <vector>

@@ -4,6 +4,9 @@
 // harmonic oscillator in our exact kernel (verify/family) and analysed: det Φ, the conserved form,
 // the stability bands, the order and its error constant, the known scheme it equals.
 
+#include <simpson/verify/experiment_section.hpp>
+
+#include <memory>
 #include <simpson/verify/progress.hpp>
 #include <simpson/verify/result_model.hpp>
 
@@ -22,5 +25,8 @@ struct family_settings {
 };
 
 section_result run_family(const family_settings& s);
+
+/// The family section as a registry entry (experiment_section.hpp).
+std::unique_ptr<experiment_section> make_family_section();
 
 }  // namespace simpson::verify

@@ -3,6 +3,9 @@
 // double, proved by Gappa from its rounded program and checked by coqc, beside the largest error
 // seen on random states (verify/floating).
 
+#include <simpson/verify/experiment_section.hpp>
+
+#include <memory>
 #include <simpson/verify/progress.hpp>
 #include <simpson/verify/result_model.hpp>
 
@@ -24,6 +27,9 @@ struct floating_settings {
 };
 
 section_result run_floating(const floating_settings& s);
+
+/// The floating section as a registry entry (experiment_section.hpp).
+std::unique_ptr<experiment_section> make_floating_section();
 
 /// The steppers the section proves (stepper_roundoff.hpp's proved_steppers), for the scene's check.
 const std::vector<std::string>& floating_stepper_names();

@@ -7,6 +7,9 @@
 // several ωh across Φ₃'s bands, over long times: the energy error, the oscillatory energy I (an
 // adiabatic invariant) and the exchange between its parts I₁, I₂, I₃; and each at equal cost.
 
+#include <simpson/verify/experiment_section.hpp>
+
+#include <memory>
 #include <simpson/verify/progress.hpp>
 #include <simpson/verify/published_fact.hpp>
 #include <simpson/verify/result_model.hpp>
@@ -36,6 +39,9 @@ struct fpu_settings {
 };
 
 section_result run_fpu(const fpu_settings& s);
+
+/// The fpu section as a registry entry (experiment_section.hpp).
+std::unique_ptr<experiment_section> make_fpu_section();
 
 /// One method's run on the chain (s.m, s.omega), summarised as the section's runs table shows it.
 struct fpu_run_summary {

@@ -2,6 +2,9 @@
 // The long_time section: energy drift over long runs, bounded oscillation against drift, and the
 // phase error against the frequency predicted by the exact characteristic roots.
 
+#include <simpson/verify/experiment_section.hpp>
+
+#include <memory>
 #include <simpson/verify/progress.hpp>
 #include <simpson/verify/result_model.hpp>
 
@@ -20,6 +23,9 @@ struct long_time_settings {
 };
 
 section_result run_long_time(const long_time_settings& s);
+
+/// The long_time section as a registry entry (experiment_section.hpp).
+std::unique_ptr<experiment_section> make_long_time_section();
 
 /// An energy's change against t, classed by its log-log slope at the midpoints between the three laws:
 /// bounded (0), a random walk of round-off (½), a linear drift (1); above 1.5 "faster than linear".

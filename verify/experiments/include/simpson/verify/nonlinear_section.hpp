@@ -5,6 +5,9 @@
 // problem, Hénon–Heiles and the FPU chain for Simpson and its peers, every implicit one solved by the same Newton rule; the
 // linearized double pendulum of the authors' 2024 work, with its discrete energy.
 
+#include <simpson/verify/experiment_section.hpp>
+
+#include <memory>
 #include <simpson/verify/progress.hpp>
 #include <simpson/verify/published_fact.hpp>
 #include <simpson/verify/result_model.hpp>
@@ -54,6 +57,9 @@ struct nonlinear_settings {
 };
 
 section_result run_nonlinear(const nonlinear_settings& s);
+
+/// The nonlinear section as a registry entry (experiment_section.hpp).
+std::unique_ptr<experiment_section> make_nonlinear_section();
 
 /// The section's published fact "nonlinear.pendulum-order-4": the Simpson scheme's global order is 4
 /// on the pendulum V = m ω² (1 − cos q), m = ω = 1, q(0) = 1, T = 10, proved by enclosures of the

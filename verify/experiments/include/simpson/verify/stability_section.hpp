@@ -2,6 +2,9 @@
 // The stability section: the exact stability region of Φ₃, the behaviour at and around each
 // endpoint, a stiff linear chain, extreme ωh in each precision, and extreme masses.
 
+#include <simpson/verify/experiment_section.hpp>
+
+#include <memory>
 #include <simpson/verify/progress.hpp>
 #include <simpson/precision.hpp>
 #include <simpson/verify/result_model.hpp>
@@ -24,6 +27,9 @@ struct stability_settings {
 };
 
 section_result run_stability(const stability_settings& s);
+
+/// The stability section as a registry entry (experiment_section.hpp).
+std::unique_ptr<experiment_section> make_stability_section();
 
 /// Φ₃'s exact stability region (m = ω = 1, x = ω²h²), from the Sturm-sequence analysis of its
 /// discriminant, as the ledger's stability claims decide it.

@@ -2,6 +2,7 @@
 // The table1 section: the paper's experiment (Section 8) for any list of N, beside Table 1's
 // published values, with estimated orders and Figure 1 redrawn.
 
+#include <simpson/verify/experiment_section.hpp>
 #include <simpson/verify/table1_conventions.hpp>
 #include <simpson/verify/result_model.hpp>
 
@@ -29,6 +30,20 @@ struct table1_settings {
 };
 
 section_result run_table1(const table1_settings& s);
+
+/// The table1 section as a registry entry (experiment_section.hpp). It runs beside no printed value:
+/// the book's entry reads Table 1 from the run's paper first (it derives from this one).
+class table1_section : public typed_section<table1_settings> {
+ public:
+  table1_section();
+  std::set<std::string> keys() const override;
+
+ protected:
+  table1_settings read(const section_reader& r, const std::vector<precision>& floating) const override;
+  table1_settings initial(const std::vector<precision>& floating) const override;
+  section_cost estimate(const table1_settings& s) const override;
+  section_result compute(const table1_settings& s, const section_inputs& inputs) const override;
+};
 
 /// Whether a row's least-squares order in double (none: every point at the round-off floor) agrees
 /// with the order its exact scheme's enclosures prove ("2", "4", "exact"): within ½ of the integer,

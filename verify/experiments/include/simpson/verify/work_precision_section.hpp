@@ -2,6 +2,9 @@
 // The work_precision section: error against run time for the Simpson scheme and its peers, in
 // several precisions, each scheme advancing by its general step and by its own 2 × 2 matrix.
 
+#include <simpson/verify/experiment_section.hpp>
+
+#include <memory>
 #include <simpson/verify/progress.hpp>
 #include <simpson/precision.hpp>
 #include <simpson/scheme.hpp>
@@ -43,5 +46,8 @@ struct work_precision_settings {
 };
 
 section_result run_work_precision(const work_precision_settings& s);
+
+/// The work_precision section as a registry entry (experiment_section.hpp).
+std::unique_ptr<experiment_section> make_work_precision_section();
 
 }  // namespace simpson::verify

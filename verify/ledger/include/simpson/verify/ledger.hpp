@@ -5,6 +5,7 @@
 // A book is a value: read once, bound to its document once, and passed to the run; nothing in the
 // process remembers which book is "installed".
 
+#include <simpson/verify/experiment_section.hpp>
 #include <simpson/verify/claim.hpp>
 #include <simpson/verify/claim_declarations.hpp>
 #include <simpson/verify/claims_file.hpp>
@@ -46,6 +47,10 @@ std::string embedded_claims_text();
 
 /// The paper's book (the embedded claims/paper.toml), read once.
 const claim_book& paper_book();
+
+/// The experiment sections a scene may ask for, in the order a run computes them: the registry the
+/// app iterates (experiment_section.hpp). Each is stateless; the book's table1 reads the run's paper.
+const std::vector<const experiment_section*>& experiment_sections();
 
 /// The records of a claims file whose every `check` is a registered one (read_claims_file).
 std::vector<claim_record> read_claims_with_known_checks(const std::string& text, const std::string& file);
