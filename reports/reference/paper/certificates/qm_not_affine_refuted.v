@@ -1,4 +1,4 @@
-(* Refutation of claim qm-not-affine as printed: This interpolation is not linear if h > 0: the interpolating curve (q2t), its middle value q_m the harmonic one (qm-oscillateur-harmonique), is of degree 2 in t.
+(* Refutation of claim qm-not-affine as printed: This interpolation is not linear if h > 0: the interpolating curve (q2t), its middle value q_m the harmonic one (qm-oscillateur-harmonique), is of degree 2 in t (for q_l + q_r != 0).
    The printed identity, for all values under its hypotheses, is false: each lemma is its negation,
    shown at one point where the two sides differ. Written by simpson-verify from the expressions
    its GiNaC kernel compared; check with coqc. *)
