@@ -78,7 +78,7 @@ TEST(RefereesCases, ThePaperAsAnExpertReadsIt) {
   EXPECT_EQ(summary["beyond_claims"], 1);
   // Table 1: the numbers right for the start that reproduces them, the round-off entries apart.
   const std::string& values = outcome_of(r, "table-values").result.correction;
-  EXPECT_EQ(values.rfind("The numbers are right for the start that reproduces them; what is wrong is Section 8's description", 0), 0u) << values;
+  EXPECT_EQ(values.rfind("The numbers are right for the start that reproduces them, not for the one Section 8 states: the two are inconsistent", 0), 0u) << values;
   EXPECT_NE(values.find("17 of the 18 informative entries (the 6 others, of the rows printed as exact, are round-off"), std::string::npos) << values;
   // "explicited": "made explicit", the record's replacement, not Hunspell's "explicated".
   const claim_outcome& spelling = outcome_of(r, "prose-spelling");

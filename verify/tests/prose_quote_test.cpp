@@ -165,8 +165,8 @@ INSTANTIATE_TEST_SUITE_P(
         sentence_change{"simpson-exactness", "polynomials of  degree three", "polynomials of degree five", verdict::erratum},
         sentence_change{"simpson-exactness", "polynomials of  degree three", "polynomials of degree trois", verdict::text_changed},
         sentence_change{"midpoint-exactness", "smaller or equal to $ \\, 1 $", "smaller or equal to $ \\, 2 $", verdict::erratum},
-        sentence_change{"root-modulus-criterion", "of modulus smaller than 1",
-                   "of modulus smaller or equal to 1, those of modulus 1 being simple", verdict::holds},
+        // "at most 1" without simple roots calls the double root at 2 sqrt(2) stable: false under every reading.
+        sentence_change{"root-modulus-criterion", "of modulus smaller than 1", "of modulus smaller or equal to 1", verdict::erratum},
         sentence_change{"root-modulus-criterion", "The scheme is stable when the roots", "The scheme is stable if the roots",
                    verdict::text_changed},
         sentence_change{"maupertuis-naming", "Maupertuis's stationary-action", "Hamilton's stationary-action", verdict::holds},
@@ -267,16 +267,15 @@ TEST(ChangedSentence, TheReferesReadingsHoldWithARemark) {
   EXPECT_NE(explicit_map.remark.find("the denominator h^2*omega^2+24 (up to factors free of h)"), std::string::npos) << explicit_map.remark;
   EXPECT_NE(explicit_map.remark.find("As a method the scheme is implicit"), std::string::npos) << explicit_map.remark;
   EXPECT_TRUE(explicit_map.correction.empty()) << explicit_map.correction;
+  // "Stable when the roots are of modulus smaller than 1": read literally a true sufficient condition,
+  // read as meant (at most 1) the root condition without simple roots, which the roots are: it holds,
+  // with a wording remark (before: an erratum).
   const claim_result modulus = check_claim(paper_book().find("root-modulus-criterion"), ctx);
-  EXPECT_EQ(modulus.outcome, verdict::erratum);  // read literally or as meant, "smaller than 1" is false
-  EXPECT_NE(modulus.note.find("for h*omega in (0, 2 sqrt(2)) the roots are conjugate, simple, of modulus 1: stable by the root condition, unstable by "
-                              "'smaller than 1'"),
-            std::string::npos)
-      << modulus.note;
-  EXPECT_NE(modulus.note.find("read literally, 'smaller than 1' is a sufficient condition that no h*omega > 0 meets here, and the text then applies "
-                              "it to roots of modulus 1"),
-            std::string::npos)
-      << modulus.note;
+  EXPECT_EQ(modulus.outcome, verdict::holds);
+  EXPECT_EQ(modulus.remark_kind, finding::wording);
+  EXPECT_NE(modulus.remark.find("'smaller than 1' should read 'at most 1, those of modulus 1 simple' (the root condition)"), std::string::npos)
+      << modulus.remark;
+  EXPECT_NE(modulus.remark.find("stable for h*omega in (0, 2 sqrt(2)) and (2 sqrt(3), 2 sqrt(6))"), std::string::npos) << modulus.remark;
 }
 
 // The abstract's "approximate energy": H_d = H + m omega^6 h^4 q^2/(72 (8 - omega^2 h^2)) holds as

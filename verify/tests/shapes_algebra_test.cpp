@@ -202,8 +202,9 @@ TEST_F(ShapesOnADocument, InvarianceDeterminant) {
   EXPECT_EQ(wrong.outcome, verdict::erratum) << wrong.note;
   EXPECT_NE(wrong.evidence.at("exact").at("own").get<std::string>().find("fails"), std::string::npos) << wrong.evidence.dump();
   EXPECT_EQ(wrong.correction, "as derived: det = " + detail::text_of(GiNaC::numeric(1, 4)) +
-                                  " × $(u s - v w - 1) (1 - u - s + u s - v w) (1 + u + s + u s - v w)$ (as printed)");
-  EXPECT_EQ(wrong.amendments, (std::vector<amendment>{{"the printed determinant", "(u s - v w - 1) (1 - u - s + u s - v w) (1 + u + s + u s - v w)",
+                                  " × $(u s - v w - 1) (1 - u - s + u s - v w) (1 + u + s + u s - v w)$ (as printed): a constant factor, the same zeros");
+  EXPECT_EQ(wrong.amendments, (std::vector<amendment>{{"the printed determinant, off by a constant factor (its zeros the same)",
+                                                       "(u s - v w - 1) (1 - u - s + u s - v w) (1 + u + s + u s - v w)",
                                                        "\\frac{1}{4} \\times \\text{the printed}"}}));
   EXPECT_FALSE(wrong.refutation.empty());
   EXPECT_NE(wrong.certificate.find("under_test_derived"), std::string::npos) << wrong.certificate;

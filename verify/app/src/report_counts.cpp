@@ -280,8 +280,9 @@ std::string findings_headline(const run_record& r) {
     std::size_t following = 0;
     for (const claim_outcome& other : r.outcomes) following += cause_of(other) == o.checked->id && is_finding(other.result.outcome);
     if (kind == finding::erratum && !o.checked->typographical) {
-      substantive.push_back(fmt::format("§{}, {}{}", o.checked->section, o.checked->id,
-                                        following == 0 ? std::string() : fmt::format(" and {} following from it", n(following, "claim", "claims"))));
+      const std::string where = o.result.amendments.empty() ? std::string() : ": " + o.result.amendments.front().where;
+      substantive.push_back(fmt::format("§{}, {}{}{}", o.checked->section, o.checked->id, where,
+                                        following == 0 ? std::string() : fmt::format(", and {} following from it", n(following, "claim", "claims"))));
     } else {
       follows_other += following;
     }

@@ -379,9 +379,10 @@ decider_evidence root_criterion_shape(const shape_call& call, const run_context&
   json regions = json::array();
   std::vector<std::string> stable_bands;
   std::vector<proof_goal> goals{decided("reversible", premise->terms.next, premise->terms.previous)};
-  bool agrees = true, said_any_stable = false;
+  bool agrees = true, said_any_stable = false, only_too_strict = true;
   std::vector<std::string> disagreements;  // where the stated criterion and the root condition differ, in words
   const auto differ = [&](const std::string& where, const std::string& roots, bool stable) {
+    only_too_strict = only_too_strict && stable;  // a stable region the criterion calls unstable
     disagreements.push_back(fmt::format("for {} {} the roots are {}: {} by the root condition, {} by '{}'", var, where, roots, stable ? "stable" : "unstable",
                                         stable ? "unstable" : "stable", said.words("modulus")));
   };
@@ -426,6 +427,22 @@ decider_evidence root_criterion_shape(const shape_call& call, const run_context&
   e.own = answer_of(agrees);
   e.goals = std::move(goals);
   if (agrees) {
+    e.found = std::move(result);
+    return e;
+  }
+  // "Modulus smaller than 1", where the stable roots have modulus 1: read literally, a sufficient
+  // condition (true, and met by no step here); read as meant ("smaller than" for at most 1, as the
+  // French "inférieur à"), the root condition without its clause on simple roots, which the roots here
+  // are. The conclusion the text draws from it holds: as an expert reads it, a wording remark.
+  if (only_too_strict && bound.relation == "<" && bound.value == 1 && !simple_required) {
+    e.own = answer::holds;
+    result.remark_kind = finding::wording;
+    result.remark = fmt::format("'{}' should read 'at most 1, those of modulus 1 simple' (the root condition). Read literally it is a sufficient "
+                                "condition that no {} > 0 meets here; the conclusion, drawn from roots of modulus 1, holds because the negative "
+                                "discriminant makes them simple and conjugate: stable for {} in {}.",
+                                said.words("modulus"), var, var, fmt::join(stable_bands, " and "));
+    result.amendments.push_back(amendment_in_words("the stability criterion", said.words("modulus"),
+                                                   "modulus at most 1, those of modulus 1 simple (the root condition)"));
     e.found = std::move(result);
     return e;
   }
@@ -516,8 +533,8 @@ decider_evidence unconditional_stability_shape(const shape_call& call, const run
   for (const positive_root& end : g->ends) where += (where.empty() ? "" : ", ") + g->text(end);
   const std::string bands_text = fmt::format("{} in {}", var, fmt::join(stable_bands, " and "));
   result.evidence["exact"] = {
-      {"statement", fmt::format("the root condition of ({}) on every {} > 0", scheme_ref, var)},
-      {"stated", {{"scheme", stated}, {"qualifier", qualifier}}},
+      {"statement", fmt::format("the stated stability of ({}) against its root condition, region by region of {} > 0", scheme_ref, var)},
+      {"stated", {{"scheme", stated}, {"qualifier", plain ? std::string("none (a plain 'stable': for steps small enough)") : qualifier}}},
       {"reversible", "the first and last coefficients are equal (GiNaC normal form; our kernel: " + reversible_own.evidence + ")"},
       {"discriminant", text_of(delta) + " (over the leading coefficient squared)"},
       {"computed", unconditional ? fmt::format("negative for every {} > 0: simple conjugate roots of modulus 1, stable for every step", var)

@@ -172,14 +172,15 @@ decider_evidence invariance_determinant_shape(const shape_call& call, const run_
   const ex corrected = multiple ? ratio * printed : GiNaC::normal(det);
   const std::string what = fmt::format("det of the system ({})(({}) y) = ({})(y) asks of the unknowns = ({})", form_ref, map_ref, form_ref, printed_ref);
   decider_evidence e = identity_evidence(read, "determinant", what, det, printed,
-                            multiple ? fmt::format("as derived: det = {} × ${}$ (as printed)", text_of(ratio), folded_space(read.raw("printed").sides.back()))
+                            multiple ? fmt::format("as derived: det = {} × ${}$ (as printed): a constant factor, the same zeros", text_of(ratio),
+                                                   folded_space(read.raw("printed").sides.back()))
                                      : "as derived: det = " + text_of(corrected));
   claim_result& found = e.found;
   found.evidence["exact"]["derived_rows"] = d.rows_text;
   if (e.found_false()) {  // the correction certified beside the refutation
     e.goals = std::vector<proof_goal>{decided("determinant", det, printed), decided("derived", det, corrected)};
-    found.amendments.push_back(multiple ? amendment{"the printed determinant", folded_space(read.raw("printed").sides.back()),
-                                                     canonical_tex(ratio) + " \\times \\text{the printed}"}
+    found.amendments.push_back(multiple ? amendment{"the printed determinant, off by a constant factor (its zeros the same)",
+                                                     folded_space(read.raw("printed").sides.back()), canonical_tex(ratio) + " \\times \\text{the printed}"}
                                          : *amendment_between("the printed determinant", printed, corrected));
     // What should stand where the determinant is printed: the claims that read it are judged again with it.
     found.corrected_formulas.push_back(read.correction_of("printed", corrected));
