@@ -12,7 +12,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
-    const simpson::verify::scene s = simpson::verify::parse_scene(text, "fuzz");
+    const simpson::verify::scene s = simpson::verify::parse_scene(text, "fuzz", simpson::verify::paper_book());
     // Validation let a hole through: a scene must ask for something, and every experiment parameter is in range.
     if (s.name.empty() || (s.claims.empty() && !s.experiments.any()) || s.precisions.empty()) __builtin_trap();
     if (s.experiments.find<table1_settings>() && (s.experiments.find<table1_settings>()->meshes.empty() || !(s.experiments.find<table1_settings>()->m > 0))) __builtin_trap();

@@ -456,10 +456,17 @@ grep -q '^\*\*A selection\*\*: claims phi3-det only; no sections\. This report j
 grep -q '^No finding among the 1 claim of this selection; the paper.s other claims were not run\.' "$work/quiet/report.md" ||
   fail "quiet: the selection's referee summary speaks for the whole paper"
 # An internal error (a check that throws) is exit 3, named, with the report still written.
-SIMPSON_VERIFY_INJECT_FAULT=phi3-det check "internal error" 3 --claims phi3-det,hd-invariance --precisions double --out "$work/fault"
-grep -q 'internal error (a bug in the harness) in phi3-det: injected fault' "$work/err" || fail "internal error: not named: $(cat "$work/err")"
+# simpson-verify with phi3-det's check made to throw, through the run's seam (simpson-verify-with-fault).
+fault_bin="$(dirname "$bin")/simpson-verify-with-fault"
+real_bin="$bin"
+bin="$fault_bin"
+check "internal error" 3 --fault-claim phi3-det --claims phi3-det,hd-invariance --precisions double --out "$work/fault"
+bin="$real_bin"
+grep -q 'internal error (a bug in the harness) in phi3-det: a fault made by the test' "$work/err" || fail "internal error: not named: $(cat "$work/err")"
 # ... and never counted, or announced, as a verdict on the paper.
 grep -q 'phi3-det: verdict fails' "$work/err" && fail "internal error: announced as a failed claim: $(cat "$work/err")"
+grep -q '\] phi3-det  *fails' "$work/err" && fail "internal error: its progress line says fails: $(cat "$work/err")"
+grep -q '\] phi3-det  *threw' "$work/err" || fail "internal error: its progress line does not say threw: $(cat "$work/err")"
 grep -q '^2 claims: 1 held, 0 errata, 0 failed, 1 without a verdict (a harness fault' "$work/out" ||
   fail "internal error: the summary counts it as a verdict: $(tail -3 "$work/out")"
 grep -q 'without a verdict (a harness fault: the check threw); no verdict on the run: a harness fault' "$work/out" ||

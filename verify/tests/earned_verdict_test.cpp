@@ -31,7 +31,7 @@ namespace simpson::verify {
 namespace {
 
 run_record run_claims(const std::vector<std::string>& ids, const paper_source& paper, bool accept_fixes = false) {
-  scene s = load_scene("quick");
+  scene s = load_scene("quick", paper_book());
   s.claims = ids;
   s.experiments = {};
   s.precisions = {precision::parse("double"), precision::parse("rational")};
@@ -91,6 +91,30 @@ TEST(RefereesCases, ThePaperAsAnExpertReadsIt) {
   EXPECT_LT(table1, gamma) << "Table 1's finding first";
   EXPECT_LT(md.find("## Referee's summary"), md.find("Exit code 0")) << "the findings before the exit code";
   EXPECT_NE(md.find("Remarks on claims that hold (5), not findings"), std::string::npos);
+}
+
+// The headline says first whether the paper's headline results hold (records with headline = true),
+// then counts a determinant off by a constant factor (its zeros the same) apart from the substantive
+// errors, and names what the supplied source cannot show. With Phi_3's (2,2) entry changed, the
+// headline says which headline result does not hold.
+TEST(RefereesCases, TheHeadlineSaysFirstWhetherTheHeadlineResultsHold) {
+  const std::vector<std::string> ids{"phi3-det", "hd-invariance", "gamma-determinant", "bibliography"};
+  const run_record printed = run_claims(ids, embedded_paper());
+  const std::string line = findings_headline(printed);
+  EXPECT_EQ(line.rfind("The paper's 4 claims: its 2 headline results hold (phi3-det, hd-invariance). Findings: 0 substantive errors, "
+                       "1 constant-factor slip, zeros unchanged (§7, gamma-determinant), 0 typographical slips; 1 claim the supplied source "
+                       "cannot show, its material absent (bibliography)",
+                       0),
+            0u)
+      << line;
+  const json summary = report_json(printed)["summary"];
+  EXPECT_EQ(summary["constant_factor_findings"], 1);
+  EXPECT_EQ(summary["substantive_findings"], 0);
+  EXPECT_EQ(summary["headline_claims"].size(), 2u);
+  EXPECT_TRUE(report_json(printed)["claims"][2].value("constant_factor", false));
+  const paper_source broken = altered("label{Phi3}", "&    1 \\!-\\! {11\\over24}", "&    1 \\!-\\! {11\\over25}");
+  const std::string broken_line = findings_headline(run_claims({"phi3-det", "hd-invariance"}, broken));
+  EXPECT_EQ(broken_line.rfind("The paper's 2 claims: of its 2 headline results, 0 hold; phi3-det: fails; hd-invariance: fails. Findings: 2 substantive errors", 0), 0u) << broken_line;
 }
 
 // The 11/25 copy: Phi_3's (2,2) entry changed. Seven claims that read Phi_3 turn red; the naming
@@ -163,7 +187,7 @@ finding = "wording"
   };
   const auto run_with = [&](const std::string& reads) {
     auto book = std::make_shared<claim_book>(read_claim_book(claims(reads), "note.toml"));
-    scene s = load_scene("quick");
+    scene s = load_scene("quick", paper_book());
     s.claims = {"leapfrog-explicit"};
     s.experiments = {};
     s.paper_file = (dir / "note.tex").string();

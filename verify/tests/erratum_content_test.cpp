@@ -25,7 +25,7 @@ namespace simpson::verify {
 namespace {
 
 run_record run_on(const std::string& id, const paper_source& paper, bool accept_fixes = false, const json* baseline = nullptr) {
-  scene s = load_scene("quick");
+  scene s = load_scene("quick", paper_book());
   s.claims = {id};
   s.experiments = {};
   s.accept_fixes = accept_fixes;
@@ -135,13 +135,13 @@ TEST(ErratumContent, NothingMayGetWorseThanABaseline) {
   for (json& c : undecided["claims"]) {
     if (c["id"] == "gamma-system") c["verdict"] = "undecided";
   }
-  scene kept = load_scene("quick");
+  scene kept = load_scene("quick", paper_book());
   kept.claims = {"gamma-system"};
   apply_baseline(kept, undecided, "undecided");
   EXPECT_EQ(kept.expected_overrides.count("gamma-system"), 0u);
   json no_claims = reference;
   no_claims.erase("claims");
-  scene s = load_scene("quick");
+  scene s = load_scene("quick", paper_book());
   EXPECT_THROW(apply_baseline(s, no_claims, "x"), std::invalid_argument);
 }
 

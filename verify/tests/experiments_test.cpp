@@ -110,7 +110,7 @@ TEST(Figures, MarkdownCellsEscapePipes) {
 }
 
 TEST(Experiments, OnlyTheSectionsAskedForAreComputed) {
-  scene s = parse_scene(R"({"name": "t", "table1": {"N": [10, 20]}})", "t");
+  scene s = parse_scene(R"({"name": "t", "table1": {"N": [10, 20]}})", "t", paper_book());
   const run_record r = run(s);
   ASSERT_EQ(r.sections.size(), 1u);
   EXPECT_EQ(r.sections[0].name, "table1");
@@ -479,13 +479,13 @@ TEST(Experiments, CostEstimateGrowsWithStepsAndPrecision) {
   e.find<long_time_settings>()->steps_double = 1'000'000'000;
   EXPECT_GT(estimate_cost(e).units, default_cost_budget);
   EXPECT_LT(base, default_cost_budget);
-  EXPECT_LT(estimate_cost(load_scene("paper").experiments).units, default_cost_budget);
-  EXPECT_LT(estimate_cost(load_scene("beyond").experiments).units, default_cost_budget);
+  EXPECT_LT(estimate_cost(load_scene("paper", paper_book()).experiments).units, default_cost_budget);
+  EXPECT_LT(estimate_cost(load_scene("beyond", paper_book()).experiments).units, default_cost_budget);
   // The numeric rechecks count too: 16 claims x 10000 samples in mpfr:100000 is far over the budget,
   // the paper scene's 16 samples across its ladder far under it.
   const recheck_load huge{16, 10000, {precision::mpfr_digits(100000)}};
   EXPECT_GT(estimate_cost(experiment_settings{}, huge).units, default_cost_budget);
-  const scene paper = load_scene("paper");
+  const scene paper = load_scene("paper", paper_book());
   const recheck_load usual{16, paper.samples, paper.precisions};
   EXPECT_LT(estimate_cost(experiment_settings{}, usual).units, default_cost_budget / 100);
 }

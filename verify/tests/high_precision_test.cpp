@@ -32,7 +32,7 @@ TEST(HighPrecision, EverySectionAtMpfr3000KeepsItsDigitsAndIsRight) {
       "stability": {"precisions": ["double", "mpfr:3000"], "stiff_ratios": [1e3], "stiff_doublings": 12, "omega_h": [1e-8, 1e-2, 1],
                     "masses": [1e-300, 1, 1e300], "steps": 100},
       "long_time": {"steps_double": 10000, "steps_mpfr": 1000, "mpfr_digits": 3000, "windows": 10}})",
-                              "mpfr3000");
+                              "mpfr3000", paper_book());
   const run_record r = run(s);
   const json j = report_json(r);
 

@@ -34,16 +34,16 @@ boost::property_tree::ptree parsed(const std::string& xml) {
 
 /// The quick scene's stability section alone, with `claims`: a run with expectations to fail.
 scene stability_scene(std::vector<std::string> claims) {
-  scene s = load_scene("quick");
+  scene s = load_scene("quick", paper_book());
   s.claims = std::move(claims);
-  const scene quick = load_scene("quick");
+  const scene quick = load_scene("quick", paper_book());
   s.experiments = {};
   s.experiments.set(*find_section(experiment_sections(), "stability"), *quick.experiments.find<stability_settings>(), experiment_sections());
   return s;
 }
 
 TEST(JUnit, ParsesAndCountsEveryClaimAndTable) {
-  scene s = load_scene("quick");
+  scene s = load_scene("quick", paper_book());
   s.expected_overrides["phi3-det"] = verdict::fails;  // one testcase must fail, and say why
   const run_record r = run(s);
   const boost::property_tree::ptree tree = parsed(report_junit(r));
@@ -78,7 +78,7 @@ TEST(JUnit, ParsesAndCountsEveryClaimAndTable) {
 // failure are verdicts as expected: exit 0 and no failure. Errata carry their verdict as a
 // property; the expected failure is skipped with its reason.
 TEST(JUnit, FailuresAreExactlyWhatMakesTheExitCodeNonZero) {
-  scene s = load_scene("quick");
+  scene s = load_scene("quick", paper_book());
   s.claims = {"phi3-det", "gamma-system", "table-values"};
   for (const char* section : {"table1", "work_precision", "long_time"}) s.experiments.remove(section);
   run_record r = run(s);
@@ -128,7 +128,7 @@ TEST(JUnit, FailuresAreExactlyWhatMakesTheExitCodeNonZero) {
 // that holds with a remark linked to an erratum passes. A regression run over the same verdicts
 // would pass (they are the ledger's expected ones).
 TEST(JUnit, AValidationFailsWhatDoesNotHoldAndNamesACauseOnce) {
-  scene s = load_scene("quick");
+  scene s = load_scene("quick", paper_book());
   s.claims = {"gamma-system", "gamma-singular", "experiment-conventions", "table-values", "phi3-det"};
   s.experiments = experiment_settings{};
   for (const std::string& id : s.claims) s.expected_overrides[id] = verdict::holds;
@@ -320,12 +320,10 @@ TEST(JUnit, TheSmallestEndpointPowerAllowedDecidesEveryExpectation) {
 
 // A check that throws is an error of its testcase (exit code 3).
 TEST(JUnit, AThrowingCheckIsAnError) {
-  scene s = load_scene("quick");
+  scene s = load_scene("quick", paper_book());
   s.claims = {"phi3-det"};
   s.experiments = {};
-  ::setenv("SIMPSON_VERIFY_INJECT_FAULT", "phi3-det", 1);
-  const run_record r = run(s);
-  ::unsetenv("SIMPSON_VERIFY_INJECT_FAULT");
+  const run_record r = run(s, {}, {}, {}, [](const claim& c, const run_context&) -> claim_result { throw std::logic_error("a fault of the test's (" + c.id + ")"); });
   ASSERT_EQ(run_exit_code(r), 3);
   const boost::property_tree::ptree tree = parsed(report_junit(r));
   EXPECT_EQ(tree.get<std::size_t>("testsuites.<xmlattr>.errors"), 1u);
@@ -333,7 +331,7 @@ TEST(JUnit, AThrowingCheckIsAnError) {
 }
 
 TEST(JUnit, EscapesWhatXmlReserves) {
-  scene s = load_scene("quick");
+  scene s = load_scene("quick", paper_book());
   s.name = "a<b&\"c\"";
   s.experiments = {};
   const run_record r = run(s);

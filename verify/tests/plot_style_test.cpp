@@ -17,7 +17,7 @@ namespace simpson::verify {
 namespace {
 
 std::vector<plot_description> quick_plots() {
-  scene s = load_scene("quick");
+  scene s = load_scene("quick", paper_book());
   s.claims.clear();
   const run_record r = run(s);
   std::vector<plot_description> plots;

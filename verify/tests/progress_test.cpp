@@ -30,7 +30,7 @@ TEST(Progress, ARunGivesEachSectionItsSinkAndTwoRunsDoNotShareOne) {
   // The sink is the run's, passed to its sections: a run given none reports nothing, whatever
   // another run in the process was given.
   const scene s = parse_scene(R"({"name": "progress", "stability": {"precisions": ["double"], "stiff_ratios": [4], "stiff_doublings": 10,
-                                                        "omega_h": [1], "masses": [1], "steps": 10}})", "t");
+                                                        "omega_h": [1], "masses": [1], "steps": 10}})", "t", paper_book());
   std::string seen;
   run(s, {}, {}, [&](const std::string& section, const std::string&, double) { seen += section + "\n"; });
   EXPECT_NE(seen.find("stability\n"), std::string::npos) << seen;

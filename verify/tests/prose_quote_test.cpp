@@ -169,7 +169,8 @@ INSTANTIATE_TEST_SUITE_P(
         sentence_change{"root-modulus-criterion", "of modulus smaller than 1", "of modulus smaller or equal to 1", verdict::erratum},
         sentence_change{"root-modulus-criterion", "The scheme is stable when the roots", "The scheme is stable if the roots",
                    verdict::text_changed},
-        sentence_change{"maupertuis-naming", "Maupertuis's stationary-action", "Hamilton's stationary-action", verdict::holds},
+        // The abbreviated action named: false under every reading (Maupertuis's name alone holds, with a remark).
+        sentence_change{"maupertuis-naming", "Maupertuis's stationary-action", "Maupertuis's abbreviated-action", verdict::erratum},
         sentence_change{"internal-equation-second-order", "a second order discretization", "a fourth order discretization",
                         verdict::erratum},
         sentence_change{"classical-consistency", "is clearly consistent with", "is clearly not consistent with", verdict::erratum},
@@ -245,6 +246,21 @@ TEST(ChangedSentence, AWordDecidedVerdictSaysItIsLexical) {
     EXPECT_TRUE(changed.outcome != printed.outcome || changed.remark != printed.remark) << id << ": " << changed.note;
     EXPECT_EQ(changed.note.rfind("Lexical: decided by the word", 0), 0u) << id << ": " << changed.note;
   }
+}
+
+// "Maupertuis's stationary-action principle": Maupertuis's name on what is Hamilton's principle (the
+// field often gives his name to any least-action principle) holds with a naming remark; "Hamilton's"
+// holds plainly; the abbreviated action named is an erratum (the ChangedSentence case above).
+TEST(ChangedSentence, MaupertuisNameOnHamiltonsPrincipleIsANamingRemark) {
+  const run_context ctx{{precision::parse("double")}, 20230830, 2, &embedded_reading()};
+  const claim_result printed = check_claim(paper_book().find("maupertuis-naming"), ctx);
+  EXPECT_EQ(printed.outcome, verdict::holds) << printed.note;
+  EXPECT_EQ(printed.remark_kind, finding::naming);
+  EXPECT_NE(printed.remark.find("strictly Hamilton's"), std::string::npos) << printed.remark;
+  const paper_reading reading = altered_reading("Maupertuis's stationary-action", "Hamilton's stationary-action");
+  const claim_result hamilton = check_claim(paper_book().find("maupertuis-naming"), run_context{{precision::parse("double")}, 20230830, 2, &reading});
+  EXPECT_EQ(hamilton.outcome, verdict::holds) << hamilton.note;
+  EXPECT_TRUE(hamilton.remark.empty()) << hamilton.remark;
 }
 
 // The referee's cases (docs/findings.md, the policy): a sentence true as an expert reads it holds,

@@ -17,7 +17,7 @@ namespace {
 using test::without_volatile;
 
 TEST(Report, SameSceneAndSeedGiveIdenticalReportsApartFromTheirRunTimes) {
-  const scene s = load_scene("quick");
+  const scene s = load_scene("quick", paper_book());
   const run_record first = run(s), second = run(s);
   EXPECT_EQ(without_volatile(report_json(first)).dump(), without_volatile(report_json(second)).dump());
   EXPECT_EQ(report_markdown(first), report_markdown(second));
@@ -29,7 +29,7 @@ TEST(Report, SameSceneAndSeedGiveIdenticalReportsApartFromTheirRunTimes) {
 TEST(Report, ADifferentSeedChangesTheSamplesAndIsRecorded) {
   // The seed draws the claims' samples; the sections, which draw none, are left out (two runs of
   // them cost 20 s under the sanitizers and add nothing here).
-  scene s = load_scene("quick");
+  scene s = load_scene("quick", paper_book());
   s.experiments = experiment_settings{};
   const json a = report_json(run(s));
   s.seed += 1;
@@ -39,7 +39,7 @@ TEST(Report, ADifferentSeedChangesTheSamplesAndIsRecorded) {
 }
 
 TEST(Report, HasTheRequiredFieldsAndAnErrataSection) {
-  const run_record r = run(load_scene("quick"));
+  const run_record r = run(load_scene("quick", paper_book()));
   const json j = report_json(r);
   for (const json& c : j["claims"]) {
     for (const char* key : {"id", "equation", "statement", "methods", "verdict", "expected", "evidence"}) {
@@ -65,7 +65,7 @@ TEST(Report, WritesEveryFileAtomically) {
   std::filesystem::remove_all(dir);
   prepare_output_directory(dir);
   EXPECT_FALSE(std::filesystem::exists(dir)) << "checking the directory creates nothing";
-  write_report_files(dir, run(load_scene("quick")));
+  write_report_files(dir, run(load_scene("quick", paper_book())));
   std::vector<std::string> names;  // report-relative paths of the files, a directory's as <directory>/<file>
   for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
     if (entry.is_regular_file()) names.push_back(entry.path().lexically_relative(dir).generic_string());
@@ -92,7 +92,7 @@ TEST(Report, WritesEveryFileAtomically) {
   test::expect_no_bare_non_finite(dir);
   test::expect_html_tables_rendered(dir);
   // A second, smaller run replaces the report whole: nothing of the first survives, nothing staged is left.
-  write_report_files(dir, run(parse_scene(R"({"name": "t", "table1": {"N": [10]}})", "t")));
+  write_report_files(dir, run(parse_scene(R"({"name": "t", "table1": {"N": [10]}})", "t", paper_book())));
   EXPECT_FALSE(std::filesystem::exists(dir / "work_precision.csv"));
   EXPECT_TRUE(std::filesystem::exists(dir / "table1.csv"));
   for (const auto& entry : std::filesystem::directory_iterator(dir.parent_path())) {
@@ -107,7 +107,7 @@ TEST(Report, ADirectoryHoldingOtherFilesIsRefusedAndKept) {
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "notes.txt") << "keep";
   EXPECT_THROW(prepare_output_directory(dir), std::invalid_argument);
-  EXPECT_THROW(write_report_files(dir, run(parse_scene(R"({"name": "t", "table1": {"N": [10]}})", "t"))), std::invalid_argument);
+  EXPECT_THROW(write_report_files(dir, run(parse_scene(R"({"name": "t", "table1": {"N": [10]}})", "t", paper_book()))), std::invalid_argument);
   EXPECT_TRUE(std::filesystem::exists(dir / "notes.txt"));
   EXPECT_FALSE(holds_only_a_report(dir));
   std::filesystem::remove_all(dir);

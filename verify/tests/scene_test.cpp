@@ -13,7 +13,7 @@ namespace {
 /// The message of the std::invalid_argument that parsing `text` throws ("" if it does not throw).
 std::string scene_error_of(const std::string& text) {
   try {
-    parse_scene(text, "t.json");
+    parse_scene(text, "t.json", paper_book());
   } catch (const std::invalid_argument& e) {
     return e.what();
   }
@@ -23,29 +23,29 @@ std::string scene_error_of(const std::string& text) {
 bool mentions(const std::string& message, const std::string& part) { return message.find(part) != std::string::npos; }
 
 TEST(Scene, EmbeddedScenesParseAndPaperHasEveryClaim) {
-  const scene paper = load_scene("paper");
-  const scene beyond = load_scene("beyond");
+  const scene paper = load_scene("paper", paper_book());
+  const scene beyond = load_scene("beyond", paper_book());
   // "all" is every claim of the paper; "beyond" the rest of the ledger.
   EXPECT_EQ(paper.claims.size() + beyond.claims.size(), paper_book().claims.size());
   const auto of_the_paper = std::count_if(paper_book().claims.begin(), paper_book().claims.end(), [](const claim& c) { return c.section != "beyond"; });
   EXPECT_EQ(paper.claims.size(), static_cast<std::size_t>(of_the_paper));
   for (const std::string& id : beyond.claims) EXPECT_EQ(paper_book().find(id).section, "beyond") << id;
   EXPECT_EQ(paper.seed, default_seed);
-  const scene quick = load_scene("quick");
+  const scene quick = load_scene("quick", paper_book());
   for (const std::string& id : required_claim_ids()) {
     EXPECT_NE(std::find(quick.claims.begin(), quick.claims.end(), id), quick.claims.end()) << id;
   }
 }
 
 TEST(Scene, ValidMinimalSceneTakesDefaults) {
-  const scene s = parse_scene(R"({"name": "mini", "claims": ["phi3-det"], "precisions": ["double"]})", "t.json");
+  const scene s = parse_scene(R"({"name": "mini", "claims": ["phi3-det"], "precisions": ["double"]})", "t.json", paper_book());
   EXPECT_EQ(s.samples, default_samples);
   EXPECT_EQ(s.seed, default_seed);
   ASSERT_EQ(s.claims.size(), 1u);
 }
 
 TEST(Scene, ClaimsAreKeptInLedgerOrderWithoutDuplicates) {
-  const scene s = parse_scene(R"({"name": "o", "claims": ["phi3-det", "newmark-det", "phi3-det"], "precisions": ["double"]})", "t");
+  const scene s = parse_scene(R"({"name": "o", "claims": ["phi3-det", "newmark-det", "phi3-det"], "precisions": ["double"]})", "t", paper_book());
   ASSERT_EQ(s.claims.size(), 2u);
   EXPECT_EQ(s.claims[0], "newmark-det");
 }
@@ -88,15 +88,15 @@ TEST(Scene, RejectsEveryBadField) {
 }
 
 TEST(Scene, ExperimentSectionsParseWithDefaultsAndOnlyWhenAsked) {
-  const scene none = parse_scene(R"({"name": "c", "claims": ["phi3-det"], "precisions": ["double"]})", "t");
+  const scene none = parse_scene(R"({"name": "c", "claims": ["phi3-det"], "precisions": ["double"]})", "t", paper_book());
   EXPECT_FALSE(none.experiments.any());
-  const scene s = parse_scene(R"({"name": "e", "table1": {}, "long_time": {"steps_double": 1e5}})", "t");
+  const scene s = parse_scene(R"({"name": "e", "table1": {}, "long_time": {"steps_double": 1e5}})", "t", paper_book());
   EXPECT_TRUE(s.claims.empty());
   ASSERT_TRUE(s.experiments.find<table1_settings>() && s.experiments.find<long_time_settings>());
   EXPECT_FALSE(s.experiments.find<work_precision_settings>() || s.experiments.find<stability_settings>());
   EXPECT_EQ(s.experiments.find<table1_settings>()->meshes, (std::vector<long long>{10, 20, 40}));
   EXPECT_EQ(s.experiments.find<long_time_settings>()->steps_double, 100000);
-  const scene paper = load_scene("paper");
+  const scene paper = load_scene("paper", paper_book());
   EXPECT_TRUE(paper.experiments.find<table1_settings>() && paper.experiments.find<work_precision_settings>() && paper.experiments.find<stability_settings>() &&
               paper.experiments.find<long_time_settings>());
   // Every scheme but Lobatto IIIA–IIIB(3), Simpson's own map by another implementation: Simpson is
@@ -107,10 +107,10 @@ TEST(Scene, ExperimentSectionsParseWithDefaultsAndOnlyWhenAsked) {
   // The paper scene's nonlinear section is its problems' error against work alone, beside the oscillator's.
   ASSERT_TRUE(paper.experiments.find<nonlinear_settings>());
   EXPECT_EQ(paper.experiments.find<nonlinear_settings>()->parts, std::vector<std::string>{"problems"});
-  const scene beyond = load_scene("beyond");
+  const scene beyond = load_scene("beyond", paper_book());
   ASSERT_TRUE(beyond.experiments.find<nonlinear_settings>());
   EXPECT_EQ(beyond.experiments.find<nonlinear_settings>()->problems, nonlinear_problem_names());
-  const scene zero_e = parse_scene(R"({"name": "e", "nonlinear": {"eccentricity": 0, "problems": ["kepler"]}})", "t");
+  const scene zero_e = parse_scene(R"({"name": "e", "nonlinear": {"eccentricity": 0, "problems": ["kepler"]}})", "t", paper_book());
   EXPECT_EQ(zero_e.experiments.find<nonlinear_settings>()->eccentricity, 0);  // a circle is an ellipse
 }
 
@@ -179,7 +179,7 @@ TEST(Scene, RejectsEveryBadExperimentParameter) {
 
 TEST(Scene, UnknownNameAndUnreadableFileAreNamed) {
   try {
-    load_scene("/nonexistent/scene.json");
+    load_scene("/nonexistent/scene.json", paper_book());
     ADD_FAILURE();
   } catch (const std::invalid_argument& e) {
     EXPECT_TRUE(mentions(e.what(), "'/nonexistent/scene.json'")) << e.what();

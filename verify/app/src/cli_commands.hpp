@@ -4,6 +4,7 @@
 #include "cli_options.hpp"
 
 #include <simpson/verify/ledger.hpp>
+#include <simpson/verify/run.hpp>
 
 #include <string>
 
@@ -19,7 +20,11 @@ int list_precisions();
 /// agree, 1 on a difference (one line each), 2 on bad input.
 int compare_report_directories(const cli_options& o);
 
-/// A run of a scene (or a list asked for): the exit code of simpson-verify.
-int run_command(cli_options& o, const CLI::App& app, int argc, char** argv);
+/// The whole command line: parses it and runs the command it names; the process's exit code.
+int simpson_verify_main(int argc, char** argv, const claim_checker& checker);
+
+/// A run of a scene (or a list asked for): the exit code of simpson-verify; `checker` runs each claim
+/// (empty: check_claim).
+int run_command(cli_options& o, const CLI::App& app, int argc, char** argv, const claim_checker& checker = {});
 
 }  // namespace simpson::verify

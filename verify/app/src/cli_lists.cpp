@@ -60,7 +60,7 @@ int list_claims(const claim_book& book, const std::string& format) {
 
 int list_scenes() {
   for (const auto& [name, text] : embedded_scenes()) {
-    const scene s = parse_scene(text, name);
+    const scene s = parse_scene(text, name, paper_book());
     fmt::print("{:<8} {} claims, {} precisions: {}\n", name, s.claims.size(), s.precisions.size(), s.description);
   }
   return 0;

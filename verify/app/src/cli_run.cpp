@@ -250,7 +250,7 @@ std::string pointer(const verdict_row& row, const claim_outcome& o, bool validat
   return validation ? "  <- no judgment (" + row.type + ")" : "  <- expected " + row.expected;  // unexpected, undecided, unproved, text-changed
 }
 
-int execute_run(prepared_run& r, const cli_options& o) {
+int execute_run(prepared_run& r, const cli_options& o, const claim_checker& checker) {
   scene& s = r.s;
   const std::shared_ptr<claim_book>& book = r.book;
   const std::optional<paper_reading>& paper = r.paper;
@@ -266,12 +266,13 @@ int execute_run(prepared_run& r, const cli_options& o) {
     const auto start = std::chrono::steady_clock::now();
     run_record record = run(s, book, *paper, [&](std::size_t k, std::size_t n, const claim& c, const claim_outcome* done) {
       if (!done || o.quiet) return;
-      fmt::print(stderr, "[{:>2}/{}] {:<34} {:<8} {:.2f} s\n", k + 1, n, c.id, to_string(done->result.outcome), done->seconds);
+      fmt::print(stderr, "[{:>2}/{}] {:<34} {:<8} {:.2f} s\n", k + 1, n, c.id,
+                 done->threw ? "threw" : to_string(done->result.outcome), done->seconds);
     }, [quiet = o.quiet](const std::string& section, double seconds) {
       if (quiet) return;
       if (::isatty(STDERR_FILENO)) fmt::print(stderr, "\r\033[K");
       fmt::print(stderr, "[section] {:<34} {:.2f} s\n", section, seconds);
-    }, work);
+    }, work, checker);
     throw_if_interrupted();
     if (o.certify && !record.outcomes.empty()) {
       if (!o.quiet) fmt::print(stderr, "[coqc] checking the claims' Coq certificates ...\n");
@@ -348,10 +349,10 @@ int execute_run(prepared_run& r, const cli_options& o) {
 
 }  // namespace
 
-int run_command(cli_options& o, const CLI::App& app, int argc, char** argv) {
+int run_command(cli_options& o, const CLI::App& app, int argc, char** argv, const claim_checker& checker) {
   prepared_run r;
   if (const std::optional<int> code = prepare_run(o, app, argc, argv, r)) return *code;
-  return execute_run(r, o);
+  return execute_run(r, o, checker);
 }
 
 }  // namespace simpson::verify

@@ -238,7 +238,7 @@ std::string referee_summary_markdown(const run_record& r) {
     const bool consequential = !follows(*o.checked).empty();
     const finding kind = report_parts::finding_of(o);
     if (kind == finding::prose) return 7;
-    if (o.checked->typographical) return consequential ? 2 : 6;
+    if (o.checked->typographical || o.result.constant_factor) return consequential ? 2 : 6;
     switch (kind) {
       case finding::erratum: return consequential ? 0 : 1;
       case finding::derivation_gap: return 3;
@@ -250,7 +250,7 @@ std::string referee_summary_markdown(const run_record& r) {
   };
   if (c.distinct > 0 || c.prose_slips > 0) {
     md += "Findings, ordered by consequence: substantive errors first (those that others follow from before the rest), then slips that break a "
-          "derivation, derivation gaps, wording and naming, what cannot be verified, typographical slips, and the prose's spelling.\n\n";
+          "derivation, derivation gaps, wording and naming, what cannot be verified, typographical and constant-factor slips, and the prose's spelling.\n\n";
   }
   for (int level = 0; level <= 7; ++level) {
     for (const claim_outcome& o : r.outcomes) {
@@ -262,8 +262,9 @@ std::string referee_summary_markdown(const run_record& r) {
                                                               : markdown_escaped(first_sentence(o.result.note));
       const bool stops = !what.empty() && what.back() == '.';
       const finding kind = report_parts::finding_of(o);
-      const std::string label = o.checked->typographical ? to_string(kind) + ", typographical"
-                                : kind == finding::erratum ? std::string("substantive error")
+      const std::string label = o.checked->typographical                    ? to_string(kind) + ", typographical"
+                                : kind == finding::erratum && o.result.constant_factor ? std::string("erratum, a constant factor, zeros unchanged")
+                                : kind == finding::erratum                             ? std::string("substantive error")
                                                            : to_string(kind);
       md += fmt::format("- **`{}`** (§{}, {}): {}{}{}\n", k.id, markdown_escaped(k.section), label, what, stops || consequences.empty() ? "" : ".",
                         consequences.empty() ? "" : fmt::format(" Following from it: {}.", report_parts::join(consequences, ", ")));

@@ -50,6 +50,8 @@ verdict_counts count_verdicts(const run_record& r) {
         ++c.distinct;
         if (o.checked->typographical) {
           ++c.typographical;
+        } else if (o.result.constant_factor) {
+          ++c.constant_factor;
         } else if (kind == finding::unverifiable) {
           ++c.unverifiable_findings;
         } else if (remark_class(kind)) {
@@ -242,12 +244,32 @@ std::string expectation_line(const run_record& r) {
   return line + ": " + report_parts::join(findings, " and ") + (expected_findings == 1 ? " is an expected verdict." : " are expected verdicts.");
 }
 
+namespace {
+
+/// The paper's headline results (records with `headline = true`) that were run, each with its verdict.
+std::vector<std::pair<std::string, verdict>> headline_results(const run_record& r) {
+  std::vector<std::pair<std::string, verdict>> out;
+  for (const claim_outcome& o : r.outcomes) {
+    if (o.checked->origin == claim_origin::paper && o.checked->headline && !o.threw) out.emplace_back(o.checked->id, o.result.outcome);
+  }
+  return out;
+}
+
+json headline_claims_json(const run_record& r) {
+  json out = json::array();
+  for (const auto& [id, v] : headline_results(r)) out.push_back({{"id", id}, {"verdict", to_string(v)}});
+  return out;
+}
+
+}  // namespace
+
 json summary_json(const run_record& r) {
   const report_parts::verdict_counts c = report_parts::count_verdicts(r);
   json out = {{"line", summary_line(r)},     {"expectation", expectation_line(r)}, {"headline", findings_headline(r)}, {"claims", r.outcomes.size()},
               {"harness_faults", c.faults},
               {"paper_claims", c.paper},     {"beyond_claims", c.beyond},   {"harness_claims", c.harness},
-              {"distinct_findings", c.distinct}, {"substantive_findings", c.substantive}, {"typographical_findings", c.typographical},
+              {"distinct_findings", c.distinct}, {"substantive_findings", c.substantive}, {"constant_factor_findings", c.constant_factor},
+              {"headline_claims", headline_claims_json(r)}, {"typographical_findings", c.typographical},
               {"wording_findings", c.wording}, {"unverifiable_findings", c.unverifiable_findings}, {"consequences", c.consequences},
               {"remarks", c.remarks},
               {"spelling_slips", c.prose_slips},
@@ -264,38 +286,66 @@ json summary_json(const run_record& r) {
   return out;
 }
 
-/// The findings in a referee's words: how many substantive errors (and where), typographical slips,
-/// statements false as worded, and remarks on claims that hold, the spelling apart; the claims that
-/// follow from a finding counted with it.
+/// The findings in a referee's words: first whether the headline results hold, then how many
+/// substantive errors (and where), constant-factor slips (zeros unchanged), typographical slips,
+/// statements false as worded, claims the supplied source cannot show, and remarks on claims that
+/// hold, the spelling apart; the claims that follow from a finding counted with it.
 std::string findings_headline(const run_record& r) {
   const report_parts::verdict_counts c = report_parts::count_verdicts(r);
   const std::string the = r.of_the_paper ? "paper" : "document";
   const auto n = [](std::size_t k, const char* one, const char* many) { return fmt::format("{} {}", k, k == 1 ? one : many); };
   // Each distinct finding's category, and what follows from it.
-  std::vector<std::string> substantive;
+  std::vector<std::string> substantive, constant_factor, unverifiable;
   std::size_t follows_other = 0;
   for (const claim_outcome& o : r.outcomes) {
     if (o.checked->origin != claim_origin::paper || !is_finding(o.result.outcome) || !cause_of(o).empty()) continue;
     const finding kind = report_parts::finding_of(o);
     std::size_t following = 0;
     for (const claim_outcome& other : r.outcomes) following += cause_of(other) == o.checked->id && is_finding(other.result.outcome);
-    if (kind == finding::erratum && !o.checked->typographical) {
+    const std::string place = fmt::format("§{}, {}", o.checked->section, o.checked->id);
+    const std::string and_following = following == 0 ? std::string() : fmt::format(", and {} following from it", n(following, "claim", "claims"));
+    if (kind == finding::erratum && !o.checked->typographical && o.result.constant_factor) {
+      constant_factor.push_back(place + and_following);
+    } else if (kind == finding::erratum && !o.checked->typographical) {
       const std::string where = o.result.amendments.empty() ? std::string() : ": " + o.result.amendments.front().where;
-      substantive.push_back(fmt::format("§{}, {}{}{}", o.checked->section, o.checked->id, where,
-                                        following == 0 ? std::string() : fmt::format(", and {} following from it", n(following, "claim", "claims"))));
+      substantive.push_back(place + where + and_following);
     } else {
+      if (kind == finding::unverifiable) unverifiable.push_back(o.checked->id);
       follows_other += following;
     }
   }
-  std::string errors = n(c.substantive, "substantive error", "substantive errors");
-  if (!substantive.empty()) {
-    errors += " (" + report_parts::join(substantive, "; ") + ")";
+  std::string line = fmt::format("The {}'s {} claims: ", the, c.paper);
+  const std::vector<std::pair<std::string, verdict>> headline = headline_results(r);
+  if (!headline.empty()) {
+    std::vector<std::string> held, not_held;
+    for (const auto& [id, v] : headline) {
+      if (v == verdict::holds) {
+        held.push_back(id);
+      } else {
+        not_held.push_back(fmt::format("{}: {}", id, to_string(v)));
+      }
+    }
+    line += not_held.empty() ? fmt::format("its {} {} ({}). ", n(headline.size(), "headline result", "headline results"),
+                                           headline.size() == 1 ? "holds" : "hold", report_parts::join(held, ", "))
+                             : fmt::format("of its {}, {} {}; {}. ", n(headline.size(), "headline result", "headline results"), held.size(),
+                                           held.size() == 1 ? "holds" : "hold", report_parts::join(not_held, "; "));
+    line += "Findings: ";
   }
-  std::vector<std::string> parts{errors, n(c.typographical, "typographical slip", "typographical slips"),
-                                 n(c.wording, "statement false as worded (wording, naming or derivation)", "statements false as worded (wording, naming or derivation)")};
-  if (c.unverifiable_findings > 0) parts.push_back(n(c.unverifiable_findings, "claim unverifiable for absent material", "claims unverifiable for absent material"));
-  std::string line = fmt::format("The {}'s {} claims: {}", the, c.paper, report_parts::join(parts, ", "));
+  std::string errors = n(c.substantive, "substantive error", "substantive errors");
+  if (!substantive.empty()) errors += " (" + report_parts::join(substantive, "; ") + ")";
+  std::vector<std::string> parts{errors};
+  if (c.constant_factor > 0) {
+    parts.push_back(fmt::format("{}, zeros unchanged ({})", n(c.constant_factor, "constant-factor slip", "constant-factor slips"),
+                                report_parts::join(constant_factor, "; ")));
+  }
+  parts.push_back(n(c.typographical, "typographical slip", "typographical slips"));
+  if (c.wording > 0) parts.push_back(n(c.wording, "statement false as worded (wording, naming or derivation)", "statements false as worded (wording, naming or derivation)"));
+  line += report_parts::join(parts, ", ");
   if (follows_other > 0) line += fmt::format(" ({} following from these)", n(follows_other, "more claim", "more claims"));
+  if (c.unverifiable_findings > 0) {
+    line += fmt::format("; {} the supplied source cannot show, its material absent ({})", n(c.unverifiable_findings, "claim", "claims"),
+                        report_parts::join(unverifiable, ", "));
+  }
   line += fmt::format("; {} on claims that hold", n(c.remarks, "remark", "remarks"));
   if (c.prose_slips > 0) line += fmt::format("; {} apart", n(c.prose_slips, "misspelled word", "misspelled words"));
   return line + ".";

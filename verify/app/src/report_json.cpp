@@ -108,6 +108,7 @@ json report_json(const run_record& r, const plot_outcome& plots) {
     if (!o.changed.empty()) entry["changed"] = {{"why", o.changed}, {"cause", o.changed_cause}};
     if (const std::string reads = reads_digest(o.result.printed, o.result.quoted); !reads.empty()) entry["reads"] = reads;
     if (c.typographical) entry["typographical"] = true;
+    if (o.result.constant_factor) entry["constant_factor"] = true;
     if (!o.result.correction.empty()) entry["correction"] = o.result.correction;
     if (!o.result.amendments.empty()) entry["amendments"] = amendments_json(o.result.amendments);
     if (!o.result.note.empty()) entry["note"] = o.result.note;

@@ -18,8 +18,9 @@ struct verdict_counts {
   std::size_t faults = 0;  // checks that threw: a bug in the harness, no verdict (exit 3)
   std::size_t paper = 0, beyond = 0, harness = 0;            // whose statements
   /// The paper's findings, each cause once: distinct = substantive + typographical + wording (the
-  /// classes wording, derivation gap and naming of a claim false under every reading) + unverifiable.
-  std::size_t distinct = 0, substantive = 0, typographical = 0, wording = 0, unverifiable_findings = 0, consequences = 0;
+  /// classes wording, derivation gap and naming of a claim false under every reading) + unverifiable
+  /// + constant_factor (errata off by a constant factor only, their zeros the same).
+  std::size_t distinct = 0, substantive = 0, constant_factor = 0, typographical = 0, wording = 0, unverifiable_findings = 0, consequences = 0;
   std::size_t remarks = 0;                                       // the paper's claims that hold, with a remark
   std::size_t whole_text = 0;                                    // claims that read the text as a whole (spelling, citations)
   std::size_t prose_claims = 0, prose_slips = 0;                 // its spelling, counted apart: the claims, and the words they found

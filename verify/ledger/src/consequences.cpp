@@ -17,7 +17,7 @@ std::pair<verdict, bool> judged_with(const claim& c, const claim_result& cause, 
   again.corrections = &corrections;
   again.quotes = nullptr;  // the document's sentences are quoted once, by the judgment as printed
   const claim_result r = check_claim(c, again);
-  return {r.outcome, corrections.used};
+  return {r.outcome, r.printed.is_object() && r.printed.value("corrected", false)};
 }
 
 std::vector<std::string> shown(const claim_result& cause) {

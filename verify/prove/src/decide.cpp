@@ -78,6 +78,7 @@ claim_result decide(const std::string& claim_id, const std::string& statement, d
     result.remark.clear();
     result.remark_kind = finding::none;
   }
+  if (outcome != verdict::erratum) result.constant_factor = false;
   if (evidence.goals && outcome != verdict::kernels_disagree) record_certificate(result, coq_certificate(claim_id, statement, *evidence.goals));
   result.outcome = outcome;  // the engine's one verdict site
   return result;

@@ -47,7 +47,7 @@ shape_reader::shape_reader(const shape_call& call, const tex_document& document)
         for (const auto& c : call.corrections->corrected) {
           if (c->identity != identity) continue;
           definitions_.back().value = c->value;
-          call.corrections->used = true;
+          corrected_ = true;
         }
       }
       const definition& d = definitions_.back();
@@ -125,7 +125,7 @@ referenced_formula shape_reader::corrected(referenced_formula f) const {
   for (const auto& c : call_.corrections->corrected) {
     if (c->identity != f.identity) continue;
     f.value = c->value;
-    call_.corrections->used = true;
+    corrected_ = true;
   }
   return f;
 }
@@ -210,7 +210,9 @@ bool shape_reader::defines(const GiNaC::symbol& name) const {
 json shape_reader::printed() const {
   json all = read_;
   for (const json& d : definitions_read_) all.push_back(d);
-  return {{"source", document_.origin()}, {"formulas", all}};
+  json out = {{"source", document_.origin()}, {"formulas", all}};
+  if (corrected_) out["corrected"] = true;  // a correction was read in place of a printed formula (consequences.hpp)
+  return out;
 }
 
 void shape_reader::declared_only(const ex& e, const std::string& where) const {

@@ -179,6 +179,7 @@ decider_evidence invariance_determinant_shape(const shape_call& call, const run_
   found.evidence["exact"]["derived_rows"] = d.rows_text;
   if (e.found_false()) {  // the correction certified beside the refutation
     e.goals = std::vector<proof_goal>{decided("determinant", det, printed), decided("derived", det, corrected)};
+    found.constant_factor = multiple;
     found.amendments.push_back(multiple ? amendment{"the printed determinant, off by a constant factor (its zeros the same)",
                                                      folded_space(read.raw("printed").sides.back()), canonical_tex(ratio) + " \\times \\text{the printed}"}
                                          : *amendment_between("the printed determinant", printed, corrected));
@@ -276,6 +277,23 @@ printed_system read_printed_system(const shape_call& call, shape_reader& read) {
     out.coefficients = *printed;
   }
   return out;
+}
+
+/// Where the printed system's matrix differs from the one derived (invariance-system): "entry (i, j),
+/// printed X where derived Y", each; the rest agree.
+std::string entries_differing(const GiNaC::matrix& printed, const GiNaC::matrix& derived) {
+  std::vector<std::string> out;
+  for (unsigned i = 0; i < printed.rows(); ++i) {
+    for (unsigned j = 0; j < printed.cols(); ++j) {
+      if (!GiNaC::normal(printed(i, j) - derived(i, j)).is_zero()) {
+        out.push_back(fmt::format("entry ({}, {}) (printed {} where derived {})", i + 1, j + 1, text_of(GiNaC::normal(printed(i, j))),
+                                  text_of(GiNaC::normal(derived(i, j)))));
+      }
+    }
+  }
+  const std::size_t n = printed.rows() * printed.cols();
+  return out.size() == 1 ? fmt::format("the printed system's {} alone, its {} other entries as derived", out.front(), n - 1)
+                         : fmt::format("the printed system's {}, {} of its {} entries", fmt::join(out, "; "), out.size(), n);
 }
 
 /// m with the values put in, as written (not normalised: our kernel and Coq decide the tree).
@@ -402,9 +420,9 @@ decider_evidence invariance_singular_shape(const shape_call& call, const run_con
     derived.found.evidence["exact"]["printed_system"] = evidence["exact"];
     derived.found.evidence["exact"]["conditions_solved"] = solved.text;
     derived.found.remark_kind = finding::derivation_gap;
-    derived.found.remark = fmt::format("The conclusion holds: the system as derived (the rows invariance-system derives) is singular with {}. Its derivation "
-                                       "from the printed system fails: that system's determinant there is {}, not 0.",
-                                       on, text_of(GiNaC::factor(GiNaC::normal(det_printed))));
+    derived.found.remark = fmt::format("The conclusion holds: the system as derived (the rows invariance-system derives) is singular with {}. The gap is "
+                                       "{}: with it the printed system's determinant there is {}, not 0.",
+                                       on, entries_differing(p.coefficients, d.derived), text_of(GiNaC::factor(GiNaC::normal(det_printed))));
     derived.found.amendments.push_back(amendment_in_words("the system the conclusion is derived from", "the printed system",
                                                           "the system as derived (its entries corrected)"));
     return derived;
@@ -575,7 +593,8 @@ decider_evidence invariance_kernel_shape(const shape_call& call, const run_conte
                                           ? fmt::format("the printed system times those coefficients is not 0 there: {}, not 0.", fmt::join(rows_off, ", "))
                                       : found.note.rfind("As printed: ", 0) == 0 ? found.note.substr(12)
                                                                                  : std::string("the printed system does not determine them.");
-    derived.found.remark = fmt::format("The conclusion holds: {}. Its derivation from the printed system fails: {}", correction, printed_fails);
+    derived.found.remark = fmt::format("The conclusion holds: {}. The gap is {}: with it {}", correction, entries_differing(p.coefficients, d.derived),
+                                       printed_fails);
     derived.found.amendments.push_back(amendment_in_words("the system the conclusion is derived from", "the printed system",
                                                           "the system as derived (its entries corrected)"));
     if (derived.found_holds()) derived.goals = std::vector<proof_goal>{decided("derived", rows_times(d.monomials, derived_there, v), 0), decided("conserved", conserved_w, 0)};

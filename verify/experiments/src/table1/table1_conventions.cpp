@@ -2,9 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <deque>
+#include <memory>
+
 namespace simpson::verify {
 
-namespace {
+namespace table1_detail {  // named: table1_basis_cache, declared in the header, holds these
 
 /// The two quadratic forms of the table (H and H_d) on a pair of states: Q(x), Q(y) and the bilinear
 /// Q(x, y), so that Q(c x + s y) = c² Q(x) + 2 c s Q(x, y) + s² Q(y).
@@ -47,12 +50,30 @@ form_pair forms(double (*Q)(const oscillator_parameters<double>&, const phase_po
 double energy_of(const oscillator_parameters<double>& par, const phase_point<double>& y) { return energy(par, y); }
 double discrete_energy_of(const oscillator_parameters<double>& par, const phase_point<double>& y) { return discrete_energy(par, y); }
 
-const std::vector<basis_point>& basis_run(const basis_key& key) {
-  thread_local std::vector<std::pair<basis_key, std::vector<basis_point>>> cache;
-  for (const auto& [k, points] : cache) {
-    if (k == key) return points;
+std::vector<basis_point> compute_basis_run(const basis_key& key);
+
+}  // namespace table1_detail
+
+using namespace table1_detail;
+
+class table1_basis_cache {
+ public:
+  /// The basis runs of `key`, computed once.
+  const std::vector<basis_point>& of(const basis_key& key) {
+    for (const auto& [k, points] : entries_) {
+      if (k == key) return points;
+    }
+    entries_.emplace_back(key, compute_basis_run(key));
+    return entries_.back().second;
   }
-  if (cache.size() >= 64) cache.erase(cache.begin());
+
+ private:
+  std::deque<std::pair<basis_key, std::vector<basis_point>>> entries_;  // stable references as it grows
+};
+
+namespace table1_detail {
+
+std::vector<basis_point> compute_basis_run(const basis_key& key) {
   const double omega = key.omega, m = 1;
   const oscillator_parameters<double> par{m, omega, key.h};
   const phase_point<double> u{m * omega, 0}, v{0, 1};
@@ -82,13 +103,12 @@ const std::vector<basis_point>& basis_run(const basis_key& key) {
     b.H = {H.xx - H0.xx, H.xy - H0.xy, H.yy - H0.yy};
     b.Hd = {Hd.xx - Hd0.xx, Hd.xy - Hd0.xy, Hd.yy - Hd0.yy};
   }
-  cache.emplace_back(key, std::move(points));
-  return cache.back().second;
+  return points;
 }
 
 }  // namespace
 
-table1_run_errors table1_run(bool simpson_scheme, long long N, const convention_choice& c, const parameter_values& v) {
+table1_run_errors table1_run(bool simpson_scheme, long long N, const convention_choice& c, const parameter_values& v, table1_basis_cache* cache) {
   // The conventions, decoded once (this runs some 10^5 times per search).
   // The period T the text states (1 unless given): ω = 2π/T, h = T/N.
   const double T = v.count("period") ? v.at("period") : 1.0;
@@ -114,7 +134,10 @@ table1_run_errors table1_run(bool simpson_scheme, long long N, const convention_
   const double q_scale = relative ? A : 1.0;
   const double energy_scale = relative_energy ? H0 : 1.0;
   const auto combined = [&](const form_pair& f) { return cu * cu * f.xx + 2 * cu * cv * f.xy + cv * cv * f.yy; };
-  for (const basis_point& b : basis_run({simpson_scheme, N, n, internal_nodes, h, omega})) {
+  // Without a cache of its caller's (a search's), the run's own: its basis runs computed here.
+  table1_basis_cache own;
+  table1_basis_cache& basis = cache != nullptr ? *cache : own;
+  for (const basis_point& b : basis.of({simpson_scheme, N, n, internal_nodes, h, omega})) {
     const bool last = b.node && b.j == n;
     if (b.node && ((skip_start && b.j == 0) || (end_only && !last))) continue;
     const double p = m * (cu * b.yu.p + cv * b.yv.p), q = cu * b.yu.q + cv * b.yv.q;
@@ -290,11 +313,11 @@ std::string table1_explanation(const convention_search_result& r, const std::vec
   return text;
 }
 
-std::vector<computed_entry> table1_under(const convention_choice& choice, const parameter_values& values) {
+std::vector<computed_entry> table1_under(const convention_choice& choice, const parameter_values& values, table1_basis_cache* cache) {
   std::array<std::array<table1_run_errors, 3>, 2> runs{};
   for (int s = 0; s < 2; ++s) {
     for (std::size_t k = 0; k < published_meshes.size(); ++k) {
-      runs[static_cast<std::size_t>(s)][k] = table1_run(s == 1, published_meshes[k], choice, values);
+      runs[static_cast<std::size_t>(s)][k] = table1_run(s == 1, published_meshes[k], choice, values, cache);
     }
   }
   std::vector<computed_entry> entries;
@@ -323,11 +346,13 @@ convention_search_result search_table1(const std::vector<printed_entry>& printed
       if (p.name == "phase") p.stated = stated.phase;
     }
     const double period = stated.period;
-    const parametrised_experiment experiment = [period](const convention_choice& choice, const parameter_values& values) {
-      if (period == 1) return table1_under(choice, values);
+    // The search's basis runs, kept for its duration: its own value, gone with it.
+    auto cache = std::make_shared<table1_basis_cache>();
+    const parametrised_experiment experiment = [period, cache](const convention_choice& choice, const parameter_values& values) {
+      if (period == 1) return table1_under(choice, values, cache.get());
       parameter_values with_period = values;
       with_period["period"] = period;
-      return table1_under(choice, with_period);
+      return table1_under(choice, with_period, cache.get());
     };
     convention_search_result result = search_conventions(printed, table1_discrete_conventions(), continuous, experiment, table1_simple_values());
     result.fixed["period"] = period;

@@ -25,6 +25,8 @@ struct claim_outcome {
   std::string expected_remark_text;
   claim_result result;
   double seconds = 0;
+  /// Its check threw (a harness fault): no verdict on the paper, whatever result holds.
+  bool threw = false;
   /// The erratum it follows from, derived (consequences.hpp): it holds once that erratum's proved
   /// corrections are put in; empty when it does not follow so.
   std::string consequence_of;
@@ -87,6 +89,10 @@ struct run_record {
 /// Called before and after each claim: (index, count, claim, outcome or nullptr).
 using progress_callback = std::function<void(std::size_t, std::size_t, const claim&, const claim_outcome*)>;
 
+/// What runs a claim's check: check_claim (printed_checks.hpp) unless a test passes its own, a seam
+/// (a check that throws, to test exit code 3), never a variable read in the run.
+using claim_checker = std::function<claim_result(const claim&, const run_context&)>;
+
 /// Runs every claim of the scene, each one of `book`'s (bound to `paper` by read_scene_paper); a
 /// check that throws is recorded as `fails` with the message, and in `internal_errors`.
 /// Throws simpson::verify::interrupted when interruption_signal() is set (checked between claims
@@ -94,12 +100,14 @@ using progress_callback = std::function<void(std::size_t, std::size_t, const cla
 /// Then runs the experiment sections the scene asks for (table1, work_precision, stability,
 /// long_time), calling `section_progress(name, seconds)` after each.
 run_record run(const scene& s, std::shared_ptr<const claim_book> book, const paper_reading& paper, const progress_callback& progress = {},
-               const std::function<void(const std::string&, double)>& section_progress = {}, const progress_sink& work = {});
+               const std::function<void(const std::string&, double)>& section_progress = {}, const progress_sink& work = {},
+               const claim_checker& checker = {});
 
 /// The same for the paper's book, reading the scene's paper first (the embedded one unless the
 /// scene names a file) and binding the book to it.
 run_record run(const scene& s, const progress_callback& progress = {},
-               const std::function<void(const std::string&, double)>& section_progress = {}, const progress_sink& work = {});
+               const std::function<void(const std::string&, double)>& section_progress = {}, const progress_sink& work = {},
+               const claim_checker& checker = {});
 
 /// The document a scene's book checks, read, and `book` bound to it (check_claims_file_formulas):
 /// the paper (embedded, or the scene's `paper` file), or the book's [document] from the scene's

@@ -77,10 +77,10 @@ struct scene {
 /// Parses and validates a scene against the claims of `book` (its ids, "all"); `origin` names it in
 /// errors. Throws std::invalid_argument with a one-line message naming the field (and, for malformed
 /// JSON, the line and column).
-scene parse_scene(const std::string& text, const std::string& origin, const claim_book& book = paper_book());
+scene parse_scene(const std::string& text, const std::string& origin, const claim_book& book);
 
 /// An embedded scene by name ("paper", "quick"), or else a file path.
-scene load_scene(const std::string& name_or_path, const claim_book& book = paper_book());
+scene load_scene(const std::string& name_or_path, const claim_book& book);
 
 /// Names and texts of the embedded scenes (the files of scenes/, compiled in).
 const std::map<std::string, std::string>& embedded_scenes();

@@ -23,7 +23,7 @@ struct scene_selection {
 /// defaults. Records what changed in `s.overrides` ("claims", "sections") and in `s.selection` (for
 /// the title: "claims phi3-det only; no sections"). Throws std::invalid_argument naming an unknown
 /// claim or section.
-void apply_selection(scene& s, const scene_selection& selection, const claim_book& book = paper_book());
+void apply_selection(scene& s, const scene_selection& selection, const claim_book& book);
 
 /// --precisions (after apply_selection): replaces the precisions of the claims' numeric rechecks and
 /// of every section of the run that has a precision list (work_precision, stability). table1 runs

@@ -23,7 +23,13 @@ struct table1_run_errors {
   double H0 = 0;
   long long steps = 0;
 };
-table1_run_errors table1_run(bool simpson_scheme, long long N, const convention_choice& choice, const parameter_values& values);
+/// The runs from the two basis states (m omega, 0) and (0, 1) of a scheme, mesh and steps, which any
+/// start combines: a search makes tens of thousands of runs of a few such keys, and keeps them here,
+/// a value it owns for its duration (no run shares another's).
+class table1_basis_cache;
+
+table1_run_errors table1_run(bool simpson_scheme, long long N, const convention_choice& choice, const parameter_values& values,
+                             table1_basis_cache* cache = nullptr);
 
 /// The stated conventions (the `stated` option of each of table1_discrete_conventions()).
 convention_choice table1_stated_conventions();
@@ -70,8 +76,8 @@ entry_tally tally_entries(const convention_candidate& c, const std::vector<print
 /// too)": a candidate's count in those words.
 std::string tally_text(const entry_tally& t);
 
-/// Table 1's entries computed under `choice` and `values`.
-std::vector<computed_entry> table1_under(const convention_choice& choice, const parameter_values& values);
+/// Table 1's entries computed under `choice` and `values` (the basis runs kept in `cache` when given).
+std::vector<computed_entry> table1_under(const convention_choice& choice, const parameter_values& values, table1_basis_cache* cache = nullptr);
 
 /// The exact solution the text states for the experiment, q(t) = amplitude sin(ω t + phase) with
 /// ω = 2π/period (read from the text: printed_table1.hpp, read_stated_solution); m is unstated (1).

@@ -23,10 +23,9 @@ class run_memo;             // run_memo.hpp: what a run computes once
 struct corrected_formula;  // formula_reference.hpp: a printed formula's proved correction
 
 /// Corrections of printed formulas a claim is judged again with (its consequences traced): each put
-/// in where the claim reads its formula; `used` says whether any was.
+/// in where the claim reads its formula (the result's `printed` says `corrected: true` when one was).
 struct formula_corrections {
   std::vector<std::shared_ptr<const corrected_formula>> corrected;
-  mutable bool used = false;
 };
 
 struct claim_book;  // ledger.hpp
@@ -130,6 +129,10 @@ struct claim_result {
   /// decide() keeps it only on a claim that holds. Empty: no remark.
   std::string remark;
   finding remark_kind = finding::none;
+  /// An erratum whose printed formula is a nonzero constant multiple of the one derived: its zeros,
+  /// what the text uses it for, are the same (a slip counted apart from substantive errors).
+  /// decide() keeps it only on an erratum.
+  bool constant_factor = false;
 };
 
 /// The class spelled `text` (to_string's spelling), or none.

@@ -69,7 +69,8 @@ class shape_reader {
   /// Whether a definition gives `name` a value.
   bool defines(const GiNaC::symbol& name) const;
 
-  /// What was read, the principal formula first (each shape reads it first), the definitions last.
+  /// What was read, the principal formula first (each shape reads it first), the definitions last;
+  /// `corrected: true` when a proved correction was read in place of a printed formula.
   json printed() const;
 
   /// The identity of the formula the argument names (referenced_formula::identity), once read.
@@ -94,6 +95,9 @@ class shape_reader {
   json read_ = json::array();
   json definitions_read_ = json::array();
   std::map<std::string, std::string> identities_;  // parameter: the identity of its formula
+  /// Whether a proved correction was read in place of a printed formula (the call's corrections):
+  /// said in printed(), so that a consequence's second judgment knows it read one.
+  mutable bool corrected_ = false;
 };
 
 /// The run's document: its paper, or the embedded one when it has none.
