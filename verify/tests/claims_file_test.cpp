@@ -49,7 +49,7 @@ TEST(ClaimsFile, TheEmbeddedFileIsTheLedgerRecordForRecord) {
     EXPECT_EQ(records[k].expected, paper_book().claims[k].expected) << records[k].id;
     if (records[k].headline) headline.insert(records[k].id);
   }
-  EXPECT_EQ(headline, (std::set<std::string>{"phi3-det", "discriminant-factorization", "hd-invariance", "truncation-1440"}));
+  EXPECT_EQ(headline, (std::set<std::string>{"phi3-det", "discriminant-factorization", "stability-condition", "hd-invariance", "truncation-1440"}));
   EXPECT_EQ(paper_book().find("abstract-explicit").follows_from, "phi3-explicit");
   EXPECT_FALSE(paper_book().find("table-orders").coq_none.empty());
 }

@@ -500,8 +500,8 @@ grep -Eq '^simpson-verify [0-9]+\.[0-9]+\.[0-9]+ \(commit ([0-9a-f]{40}|unknown)
 [ -f "$work/reports/out/paper-claims-phi3-det/report.json" ] || fail "selection default out: not in reports/out/paper-claims-phi3-det: $(ls "$work/reports/out" 2>&1)"
 # The fuller report: the quick scene's claims and two of its sections (its table1 and work_precision
 # would add time and nothing to what is checked here).
-# (Under the sanitizers two of its claims: all six took 17 s there.)
-fuller_claims=all fuller_count="6 claims"
+# (Under the sanitizers two of its claims: all seven took about 17 s there.)
+fuller_claims=all fuller_count="7 claims"
 [ "$part" = main-reduced ] && fuller_claims=phi3-det,hd-invariance fuller_count="2 claims"
 check "selection onto a fuller report (setup)" 0 --scene quick --claims "$fuller_claims" --sections stability,long_time --no-timing --quiet --out "$work/quick-full"
 before=$(cd "$work/quick-full" && find . -type f | sort | xargs sha256sum)
@@ -514,11 +514,11 @@ grep -q -- "--out '': an empty directory name" "$work/err" || fail "empty --out:
 # Certified in the Release suite; under the sanitizers coqc's part is noted by compare, not compared.
 headline_certify=--certify
 [ "$part" = main ] || headline_certify=--no-certify
-check "headline claims" 0 --claims phi3-det,discriminant-factorization,hd-invariance,truncation-1440 $headline_certify --no-timing --quiet --out "$work/headline"
+check "headline claims" 0 --claims phi3-det,discriminant-factorization,stability-condition,hd-invariance,truncation-1440 $headline_certify --no-timing --quiet --out "$work/headline"
 check "compare --subset" 0 compare --subset "$reference" "$work/headline"
 grep -q '^the reports agree$' "$work/out" || fail "compare --subset: $(tail -5 "$work/out")"
 check "compare without --subset" 2 compare "$reference" "$work/headline"
-grep -q "is a selection (--claims or --sections: 4 claims, 0 sections) .* compare --subset" "$work/err" || fail "compare without --subset: no hint: $(cat "$work/err")"
+grep -q "is a selection (--claims or --sections: 5 claims, 0 sections) .* compare --subset" "$work/err" || fail "compare without --subset: no hint: $(cat "$work/err")"
 sed 's/"verdict": "holds"/"verdict": "fails"/' "$work/headline/report.json" >"$work/headline-altered.json"
 check "compare --subset altered" 1 compare --subset "$reference" "$work/headline-altered.json"
 # compare's own mistakes in our words: a missing directory, and --subset's two reports swapped.
