@@ -1,0 +1,123 @@
+// The Lobatto IIIA–IIIB pair and RK4 on the Hamiltonian of a Lagrangian quadratic in v
+// (hamiltonian_prk_step.hpp, legendre_hamiltonian.hpp): which variational step the pair is, to
+// round-off, and which it is not; their orders on the double pendulum; the Legendre transform's
+// derivatives against the closed-form energy; a Lagrangian outside the restriction refused.
+
+#include <simpson/discrete_lagrangian_step.hpp>
+#include <simpson/double_pendulum.hpp>
+#include <simpson/hamiltonian_prk_step.hpp>
+
+#include "test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace simpson {
+namespace {
+
+dense_vector<double> vec2(double a, double b) {
+  dense_vector<double> out(2);
+  out << a, b;
+  return out;
+}
+
+double gap(const ndof_state<double>& a, const ndof_state<double>& b) {
+  return std::max((a.p - b.p).cwiseAbs().maxCoeff(), (a.q - b.q).cwiseAbs().maxCoeff());
+}
+
+/// Two pendulums coupled through a constant, non-diagonal mass matrix: L = ½ vᵀ M v + cos q₁ + cos q₂.
+struct constant_mass_pendulums {
+  int dof() const { return 2; }
+  template <class T>
+  T operator()(const Eigen::Matrix<T, Eigen::Dynamic, 1>& q, const Eigen::Matrix<T, Eigen::Dynamic, 1>& v) const {
+    using std::cos;
+    return T(v(0) * v(0) + v(0) * v(1) + v(1) * v(1) / 2 + cos(q(0)) + cos(q(1)));  // M = [[2, 1], [1, 1]]
+  }
+};
+
+/// L = cosh(v) − q²/2: regular, not quadratic in v.
+struct not_quadratic {
+  int dof() const { return 1; }
+  template <class T>
+  T operator()(const Eigen::Matrix<T, Eigen::Dynamic, 1>& q, const Eigen::Matrix<T, Eigen::Dynamic, 1>& v) const {
+    using std::cosh;
+    return T(cosh(v(0)) - q(0) * q(0) / 2);
+  }
+};
+
+const double_pendulum<double> L{1, 1, 1, 1, 1};
+ndof_state<double> start() { return {lagrangian_gradient_at(L, vec2(1.0, -0.5), vec2(0.3, 0.2)).dv, vec2(1.0, -0.5)}; }
+
+TEST(HamiltonianOfALagrangian, IsTheDoublePendulumsEnergyAndItsVelocityGivesBackTheMomentum) {
+  const dense_vector<double> q = vec2(1.0, -0.5), v = vec2(0.3, 0.2);
+  const dense_vector<double> p = lagrangian_gradient_at(L, q, v).dv;
+  const hamiltonian_derivatives<double> H = legendre_hamiltonian(L, q, p);
+  // T + V in closed form (m = l = g = 1): T = v₁² + v₂²/2 + v₁ v₂ cos(q₁ − q₂), V = −2 cos q₁ − cos q₂.
+  const double energy = v(0) * v(0) + v(1) * v(1) / 2 + v(0) * v(1) * std::cos(q(0) - q(1)) - 2 * std::cos(q(0)) - std::cos(q(1));
+  EXPECT_NEAR(H.value, energy, 16 * eps<double>());
+  EXPECT_NEAR(H.dp(0), v(0), 16 * eps<double>());
+  EXPECT_NEAR(H.dp(1), v(1), 16 * eps<double>());
+  // The Hessian blocks against central differences of the gradient (step 1e-6: error ~1e-11).
+  const double d = 1e-6;
+  for (int k = 0; k < 2; ++k) {
+    dense_vector<double> up = q, down = q;
+    up(k) += d;
+    down(k) -= d;
+    const auto Hu = legendre_hamiltonian(L, up, p, false), Hd = legendre_hamiltonian(L, down, p, false);
+    for (int i = 0; i < 2; ++i) {
+      EXPECT_NEAR((Hu.dq(i) - Hd.dq(i)) / (2 * d), H.qq(i, k), 1e-8);
+      EXPECT_NEAR((Hu.dp(i) - Hd.dp(i)) / (2 * d), H.qp(k, i), 1e-8);
+    }
+  }
+  EXPECT_THROW(legendre_hamiltonian(not_quadratic{}, dense_vector<double>::Constant(1, 0.3), dense_vector<double>::Constant(1, 0.7)),
+               std::domain_error);
+}
+
+TEST(HamiltonianPrk, LobattoIsTheCubicGalerkinVariationalStepToRoundOff) {
+  for (const double h : {0.2, 0.1, 0.05}) {
+    const auto lobatto = lobatto_hamiltonian_step(L, h, start());
+    const auto cubic = discrete_lagrangian_step(lobatto_cubic_discretisation<double>(), L, h, start());
+    // Two Newton solves to their tolerances, the Lagrangian form's ~ 16 eps |M| |q| / h in momentum.
+    EXPECT_LE(gap(lobatto.state, cubic.state), 64 * eps<double>() / h) << "h = " << h;
+    EXPECT_LE(lobatto.newton_iterations, 4);
+  }
+}
+
+TEST(HamiltonianPrk, LobattoIsSimpsonsStepWhenTheMassIsConstantButNotOnTheDoublePendulum) {
+  const constant_mass_pendulums C;
+  const ndof_state<double> y{vec2(0.4, -0.3), vec2(1.2, -0.7)};
+  for (const double h : {0.2, 0.05}) {
+    EXPECT_LE(gap(lobatto_hamiltonian_step(C, h, y).state, simpson_lagrangian_step(C, h, y).state), 64 * eps<double>() / h);
+  }
+  // On the double pendulum the mass depends on q: the two are different maps, their gap of order
+  // h⁵ per step (the cubic's bubble; discrete_lagrangian_step.hpp). Halving h divides it by ~2⁵.
+  const double big = gap(lobatto_hamiltonian_step(L, 0.1, start()).state, simpson_lagrangian_step(L, 0.1, start()).state);
+  const double small = gap(lobatto_hamiltonian_step(L, 0.05, start()).state, simpson_lagrangian_step(L, 0.05, start()).state);
+  EXPECT_GT(big, 1e-9);
+  EXPECT_NEAR(std::log2(big / small), 5, 0.6);
+}
+
+TEST(HamiltonianPrk, APerturbedMomentumWeightIsNotTheVariationalStep) {
+  auto for_p = lobatto_iiib3_tableau<double>();
+  for_p.b[1] += 1e-6;
+  const auto wrong = hamiltonian_prk_step(lobatto_iiia3_tableau<double>(), for_p, L, 0.1, start());
+  const auto cubic = discrete_lagrangian_step(lobatto_cubic_discretisation<double>(), L, 0.1, start());
+  EXPECT_GT(gap(wrong.state, cubic.state), 1e-8);
+}
+
+TEST(HamiltonianPrk, LobattoAndRk4AreOfOrderFourOnTheDoublePendulum) {
+  // Against a Lobatto run of 1024 steps (error ~1e-13, three orders below the errors compared).
+  ndof_state<double> reference = start();
+  for (int j = 0; j < 1024; ++j) reference = lobatto_hamiltonian_step(L, 1.0 / 1024, reference).state;
+  const auto error = [&](bool rk4, int N) {
+    ndof_state<double> y = start();
+    for (int j = 0; j < N; ++j) y = rk4 ? rk4_hamiltonian_step(L, 1.0 / N, y).state : lobatto_hamiltonian_step(L, 1.0 / N, y).state;
+    return gap(y, reference);
+  };
+  EXPECT_NEAR(std::log2(error(false, 16) / error(false, 32)), 4, 0.1);
+  EXPECT_NEAR(std::log2(error(true, 16) / error(true, 32)), 4, 0.15);
+}
+
+}  // namespace
+}  // namespace simpson
