@@ -13,7 +13,7 @@
 
 #include <cmath>
 
-namespace simpson {
+namespace simpson::double_pendulum_test {
 namespace {
 
 template <class Real>
@@ -76,4 +76,4 @@ TEST(DoublePendulumLyapunov, ChaoticFromTwoRadiansRegularFromSmallOscillations) 
 }
 
 }  // namespace
-}  // namespace simpson
+}  // namespace simpson::double_pendulum_test

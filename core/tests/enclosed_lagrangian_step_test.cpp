@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-namespace simpson {
+namespace simpson::enclosed_lagrangian_step_test {
 namespace {
 
 template <class Real>
@@ -57,4 +57,4 @@ TEST(EnclosedLagrangianStep, ABoxOfStartsIsCoveredAndAStepTooLargeProvesNothing)
 }
 
 }  // namespace
-}  // namespace simpson
+}  // namespace simpson::enclosed_lagrangian_step_test

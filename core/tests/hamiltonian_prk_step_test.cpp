@@ -13,7 +13,7 @@
 
 #include <cmath>
 
-namespace simpson {
+namespace simpson::hamiltonian_prk_step_test {
 namespace {
 
 dense_vector<double> vec2(double a, double b) {
@@ -70,7 +70,8 @@ TEST(HamiltonianOfALagrangian, IsTheDoublePendulumsEnergyAndItsVelocityGivesBack
       EXPECT_NEAR((Hu.dp(i) - Hd.dp(i)) / (2 * d), H.qp(k, i), 1e-8);
     }
   }
-  EXPECT_THROW(legendre_hamiltonian(not_quadratic{}, dense_vector<double>::Constant(1, 0.3), dense_vector<double>::Constant(1, 0.7)),
+  EXPECT_THROW(legendre_hamiltonian(not_quadratic{}, dense_vector<double>(dense_vector<double>::Constant(1, 0.3)),
+                                    dense_vector<double>(dense_vector<double>::Constant(1, 0.7))),
                std::domain_error);
 }
 
@@ -120,4 +121,4 @@ TEST(HamiltonianPrk, LobattoAndRk4AreOfOrderFourOnTheDoublePendulum) {
 }
 
 }  // namespace
-}  // namespace simpson
+}  // namespace simpson::hamiltonian_prk_step_test

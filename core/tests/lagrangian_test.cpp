@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-namespace simpson {
+namespace simpson::lagrangian_test {
 namespace {
 
 /// L = ½ vᵀ M v + vᵀ B q − ½ qᵀ K q: ∂L/∂q = Bᵀ v − K q, ∂L/∂v = M v + B q, L_qq = −K, L_qv = Bᵀ,
@@ -137,4 +137,4 @@ TEST(LagrangianAutoDiff, IntervalDerivativesEncloseTheMpfrDerivatives) {
 }
 
 }  // namespace
-}  // namespace simpson
+}  // namespace simpson::lagrangian_test

@@ -14,7 +14,7 @@
 #include <cmath>
 #include <functional>
 
-namespace simpson {
+namespace simpson::vprk_step_test {
 namespace {
 
 dense_vector<double> vec2(double a, double b) {
@@ -123,4 +123,4 @@ TEST(Vprk, OnTheirDegeneratePendulumLobatto3AndSimpsonAreOfOrderTwoAndGaussOfOrd
 }
 
 }  // namespace
-}  // namespace simpson
+}  // namespace simpson::vprk_step_test

@@ -57,7 +57,18 @@ enclosed_lagrangian_step discrete_lagrangian_enclosed_step(const discretisation<
   for (std::size_t c = 1; c < m; ++c) {
     for (Eigen::Index i = 0; i < n; ++i) start[(c - 1) * static_cast<std::size_t>(n) + static_cast<std::size_t>(i)] = y.q(i);
   }
-  enclosed_lagrangian_step out{false, krawczyk_system(R, dR, box_around_newton(R, dR, start)), y};
+  // The box around Newton's approximation, widened by the start's own spread (the control points
+  // move about as much as q_j, and as h p_j/M): where the start is a box, the zeros fill a set that
+  // wide. Where the box is, is a heuristic; what it holds is Krawczyk's proof.
+  interval_vector box = box_around_newton(R, dR, start);
+  using real = boost::multiprecision::mpfr_float;
+  real spread(0);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const real s = real(width(y.q(i))) + real(upper(interval(abs(h)))) * real(width(y.p(i)));
+    if (s > spread) spread = s;
+  }
+  for (interval& b : box) b = interval(real(real(lower(b)) - 4 * spread), real(real(upper(b)) + 4 * spread));
+  enclosed_lagrangian_step out{false, krawczyk_system(R, dR, box), y};
   out.proved = out.points.proved;
   if (out.proved) {
     const auto points = points_of(out.points.enclosure);
