@@ -98,5 +98,17 @@ TEST(Interval, EnclosureTextKeepsTheDigitsOfAPrecisionAboveTheDefault) {
   real::default_precision(saved);
 }
 
+TEST(Interval, SquareEnclosedIsNeverNegativeWhereAProductOfTwoCopiesIs) {
+  const scoped_interval_digits digits(30);
+  const interval x = hull(interval(-1), interval(2)), copy = x;
+  const interval product = x * copy, square = square_enclosed(x);
+  EXPECT_EQ(lower(product), -2);  // two equal factors, taken as independent
+  EXPECT_EQ(lower(square), 0);
+  EXPECT_EQ(upper(square), 4);
+  const interval third = square_enclosed(interval(interval(-1) / 3));
+  EXPECT_TRUE(zero_in(interval(third - interval(1) / 9))) << enclosure_text(third);
+  EXPECT_LT(width(third), 1e-29);
+}
+
 }  // namespace
 }  // namespace simpson

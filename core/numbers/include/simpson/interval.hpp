@@ -63,6 +63,14 @@ inline interval enclosed_max(const interval& x, const interval& y) {
   return interval(lo, hi);
 }
 
+/// x² enclosed as MPFI's mpfi_sqr does it: never below 0. Boost's x * x of one object is too, but the
+/// product of two copies (an expression evaluated twice) of an interval holding 0 is not.
+inline interval square_enclosed(const interval& x) {
+  interval r;
+  mpfi_sqr(r.backend().data(), x.backend().data());
+  return r;
+}
+
 /// Whether the interval x contains every point of `value`.
 inline bool encloses(const interval& x, const interval& value) { return lower(x) <= lower(value) && upper(value) <= upper(x); }
 
