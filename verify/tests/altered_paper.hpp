@@ -2,6 +2,7 @@
 // A copy of the embedded paper with one change: `from` replaced by `to` at its first place after
 // `after` (a label or a phrase). The tests judge such copies to show that a verdict follows the text.
 
+#include <simpson/verify/the_paper.hpp>
 #include <simpson/verify/paper_source.hpp>
 
 #include <gtest/gtest.h>

@@ -12,7 +12,7 @@ set -u
 bin="$(realpath "$1")"
 source_dir="$(realpath "$2")"
 doc="$source_dir/docs/ci.md"
-paper="$source_dir/verify/paper/text/simpson-symplectic-gsi2023.tex"
+paper="$source_dir/verify/ledger/text/simpson-symplectic-gsi2023.tex"
 source "$source_dir/verify/tests/paper_copies.sh"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -56,10 +56,10 @@ run_recipe() {  # run_recipe NAME DIR EXPECTED_CODE COMMANDS: run them in DIR un
 }
 
 # The guard's layout: this repository.
-mkdir -p "$work/guard/build/bin" "$work/guard/reports" "$work/guard/verify/paper/text"
+mkdir -p "$work/guard/build/bin" "$work/guard/reports" "$work/guard/verify/ledger/text"
 ln -s "$bin" "$work/guard/build/bin/simpson-verify"
 ln -s "$source_dir/reports/reference" "$work/guard/reports/reference"
-guard_paper="$work/guard/verify/paper/text/simpson-symplectic-gsi2023.tex"
+guard_paper="$work/guard/verify/ledger/text/simpson-symplectic-gsi2023.tex"
 # The author's layout: their repository, the paper at its root, this harness as harness/.
 mkdir -p "$work/author/harness/build/bin"
 ln -s "$bin" "$work/author/harness/build/bin/simpson-verify"

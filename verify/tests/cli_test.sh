@@ -326,7 +326,7 @@ check "a note, undeclared symbol" 2 --paper "$note_dir/trapezoidal-note.tex" --c
 grep -q "the symbol 'p_0' is not declared" "$work/err" || fail "a note, undeclared symbol: $(cat "$work/err")"
 for k in 1 2 3 4; do [ -e "$work/none-note$k" ] && fail "a bad note run wrote $work/none-note$k"; done
 # The paper's source as an input (--paper, or the scene key "paper"): bad sources are bad input.
-paper_src="$(dirname "$0")/../paper/text/simpson-symplectic-gsi2023.tex"
+paper_src="$(dirname "$0")/../ledger/text/simpson-symplectic-gsi2023.tex"
 source "$(dirname "$0")/paper_copies.sh"
 check "paper missing" 2 --claims phi3-det --paper "$work/no-such.tex" --out "$work/none-paper1"
 grep -q "paper '$work/no-such.tex': missing or unreadable" "$work/err" || fail "paper missing: not named"

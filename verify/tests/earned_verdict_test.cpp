@@ -279,6 +279,12 @@ TEST(VerdictMeanings, TheSchemaNamesEveryVerdictOfTheTable) {
     if (m.finding) {
       EXPECT_TRUE(m.expectable) << m.name;
     }
+    // What a verdict carries follows from what it is: a remark only on a judgment that the document
+    // holds, a correction or an expected failure only on a finding, a tool's limit never expected.
+    EXPECT_TRUE(!m.affirms || (m.expectable && !m.finding)) << m.name;
+    EXPECT_TRUE(!(m.corrected || m.expected_failure) || m.finding) << m.name;
+    EXPECT_TRUE(!m.tool_limit || m.met == verdict_meaning::row::never_expected) << m.name;
+    EXPECT_TRUE(*m.passed_words == '\0' || (m.finding && !m.expected_failure)) << m.name;
   }
 }
 

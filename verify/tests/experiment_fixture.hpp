@@ -2,8 +2,9 @@
 // What the experiment tests share: the embedded paper's Table 1 as read, and a section's tables and
 // figures found by key (experiments_test.cpp, table1_search_test.cpp, nonlinear_experiments_test.cpp).
 
+#include <simpson/verify/table1_reader.hpp>
+#include <simpson/verify/the_paper.hpp>
 #include <simpson/verify/experiments.hpp>
-#include <simpson/verify/printed_table1.hpp>
 
 #include <gtest/gtest.h>
 

@@ -2,11 +2,11 @@
 // carry the claim: a copy of the paper whose sentence changed flips the verdict (the new words are
 // judged) or flags it (text-changed: the sentence is gone, or its words no longer parse).
 
+#include <simpson/verify/table1_reader.hpp>
 #include <simpson/verify/ledger.hpp>
 #include "embedded_reading.hpp"
 #include <simpson/verify/paper_reading.hpp>
 #include <simpson/verify/printed_checks.hpp>
-#include <simpson/verify/printed_table1.hpp>
 #include <simpson/verify/prose_span.hpp>
 #include <simpson/verify/quoted_words.hpp>
 #include <simpson/verify/table1_conventions.hpp>

@@ -30,6 +30,7 @@ runs = {
     "claims only": ["--claims", "phi3-det,gamma-system", "--precisions", "double,rational", "--seed", "7", "--samples", "3"],
     "sections only, untimed": ["--scene", "quick", "--sections", "table1,work_precision", "--no-timing"],
     "timing runs": ["--scene", "quick", "--sections", "work_precision", "--timing-runs", "2", "--precisions", "double,mpfr:30"],
+    "sections fpu": ["--scene", "quick", "--sections", "fpu"],
 }
 with tempfile.TemporaryDirectory() as work:
     # A small nonlinear section (the beyond scene's takes ~30 s): its tables, plots and timing.
@@ -38,9 +39,9 @@ with tempfile.TemporaryDirectory() as work:
                                                      "N": [64, 128], "double_pendulum_N": [10, 20], "max_runs": 1}}
     json.dump(small, open(f"{work}/small-nonlinear.json", "w"))
     runs["nonlinear section"] = ["--scene", f"{work}/small-nonlinear.json"]
-    reports = {}
+    reports, outs = {}, {}
     for name, args in runs.items():
-        out = f"{work}/{len(reports)}"
+        out = outs[name] = f"{work}/{len(outs)}"
         done = subprocess.run([binary] + os.environ.get("SIMPSON_VERIFY_ARGS", "").split() + ["--quiet", "--out", out] + args, capture_output=True, text=True)
         if done.returncode != 0:
             print(f"FAIL {name}: exit {done.returncode}: {done.stderr.strip()}")
@@ -54,6 +55,18 @@ with tempfile.TemporaryDirectory() as work:
         failures += bool(found)
         if not found:
             print(f"ok   {name}: report.json is valid (schema_version {report['schema_version']})")
+
+    # The same selection into the same directory again: its own report, replaced (exit 0), not "a
+    # fuller report" refused. Every section of the registry is a selection's section.
+    if "sections fpu" in reports:
+        out = outs["sections fpu"]
+        again = subprocess.run([binary] + os.environ.get("SIMPSON_VERIFY_ARGS", "").split() + ["--quiet", "--out", out] + runs["sections fpu"],
+                               capture_output=True, text=True)
+        if again.returncode != 0 or errors(json.load(open(f"{out}/report.json"))):
+            print(f"FAIL sections fpu, run again into {out}: exit {again.returncode}: {again.stderr.strip()}")
+            failures += 1
+        else:
+            print("ok   sections fpu, run again into the same directory: exit 0, report.json valid")
 
     quick = reports.get("quick scene")
     if quick is not None:

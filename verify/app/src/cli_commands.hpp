@@ -15,6 +15,10 @@ int list_claims(const claim_book& book, const std::string& format);
 /// --list-scenes, --list-precisions.
 int list_scenes();
 int list_precisions();
+/// --list-sections: the registry's sections (a Markdown table, docs/architecture.md's, generated).
+int list_sections();
+/// --list-verdicts: verdict.hpp's table of meanings (a Markdown table, docs/findings.md's, generated).
+int list_verdicts();
 
 /// `simpson-verify compare OLD NEW [--subset] [--junit FILE] [--format json]`: 0 when the reports
 /// agree, 1 on a difference (one line each), 2 on bad input.

@@ -1,10 +1,13 @@
-// simpson-verify's lists (cli_commands.hpp): the claims of a book, the scenes, the precisions.
+// simpson-verify's lists (cli_commands.hpp): the claims of a book, the scenes, the precisions, the
+// sections of the registry and the verdicts' meanings.
 
 #include "cli_commands.hpp"
 
 #include <simpson/precision.hpp>
+#include <simpson/verify/experiment_section.hpp>
 #include <simpson/verify/ledger.hpp>
 #include <simpson/verify/scene.hpp>
+#include <simpson/verify/verdict.hpp>
 
 #include <fmt/core.h>
 #include <fmt/format.h>
@@ -70,6 +73,38 @@ int list_precisions() {
   fmt::print("double, long double (or long-double), float128, bin50, bin100, mpfr:D ({} <= D <= {}), rational\n",
              simpson::precision::min_mpfr_digits, simpson::precision::max_mpfr_digits);
   for (const simpson::precision& p : simpson::default_precisions()) fmt::print("{:<12} epsilon {}\n", p.name(), p.epsilon());
+  return 0;
+}
+
+int list_sections() {
+  fmt::print("| section | computes | scene keys | --precisions | --timing-runs | --long |\n|---|---|---|---|---|---|\n");
+  for (const experiment_section* section : experiment_sections()) {
+    std::vector<std::string> keys;
+    for (const std::string& key : section->keys()) keys.push_back("`" + key + "`");
+    const char* precisions = section->precisions() == experiment_section::precisions_use::applied   ? "applied"
+                             : section->precisions() == experiment_section::precisions_use::refused ? "refused"
+                                                                                                     : "ignored";
+    fmt::print("| `{}` | {} | {} | {} | {} | {} |\n", section->name(), section->summary(), fmt::join(keys, ", "), precisions,
+               section->times_runs() ? "yes" : "", section->runs_long() ? "yes" : "");
+  }
+  return 0;
+}
+
+int list_verdicts() {
+  fmt::print("| verdict | means | a finding | a record may expect it | carries | a run's row | met as expected, in JUnit | summary | "
+             "report.json counts |\n|---|---|---|---|---|---|---|---|---|\n");
+  for (const verdict_meaning& m : verdict_meanings) {
+    const char* row = m.met == verdict_meaning::row::as_judged        ? "compared with the expected verdict"
+                      : m.met == verdict_meaning::row::never_expected ? "fails, whatever was expected"
+                                                                       : "neither passes nor fails";
+    const char* carries = m.affirms ? "a remark, when it says more or less than holds" : m.corrected ? "the proved correction" : "";
+    const std::string junit = !m.expectable        ? std::string()
+                              : m.expected_failure ? std::string("an expected failure")
+                              : *m.passed_words    ? fmt::format("passed: “{}”", m.passed_words)
+                                                   : std::string("passed");
+    fmt::print("| `{}` | {} | {} | {} | {} | {} | {} | {} | `summary.{}` |\n", m.name, m.legend, m.finding ? "yes" : "", m.expectable ? "yes" : "", carries, row,
+               junit, fmt::format(fmt::runtime(m.counted_as), "N"), m.count_key);
+  }
   return 0;
 }
 

@@ -109,6 +109,12 @@ void declare_options(CLI::App& app, cli_options& o) {
   app.add_flag("--list-facts", o.want_facts,
                "list the facts the experiments publish that a record may observe (observes = \"table1.printed-orders\"), what "
                "each states and the records that observe it (a Markdown table), and exit");
+  app.add_flag("--list-sections", o.want_sections,
+               "list the experiment sections of the registry, what each computes, the keys of its scene object and what it does "
+               "with --precisions, --timing-runs and --long (a Markdown table), and exit");
+  app.add_flag("--list-verdicts", o.want_verdicts,
+               "list the verdicts and what each means: whether a finding, whether a record may expect it, how a run's row treats "
+               "it, report.json's count (a Markdown table), and exit");
 }
 
 }  // namespace simpson::verify

@@ -13,7 +13,7 @@ struct cli_options {
   std::string scene_name = "paper", out_dir, seed_text, samples_text, enclosure_budget_text, paper_file, timing_runs_text, claims_file;
   std::vector<std::string> claim_ids, section_list, precision_names;
   bool want_claims = false, want_scenes = false, want_precisions = false, want_holes = false, want_core = false,
-       want_facts = false;
+       want_facts = false, want_sections = false, want_verdicts = false;
   bool allow_expensive = false, long_run = false, quiet = false, no_timing = false, certify = false, no_certify = false, validate = false;
   bool accept_fixes = false;
   std::string baseline;

@@ -67,6 +67,108 @@ int interrupted_exit(const interrupted& e) {
   return 128 + e.signal();
 }
 
+/// An integer option's value from min to max; bad input otherwise (std::invalid_argument naming it).
+unsigned long long parse_count(const std::string& flag, const std::string& text, unsigned long long min, unsigned long long max) {
+  std::size_t used = 0;
+  unsigned long long v = 0;
+  try {
+    if (text.empty() || text.front() == '-') throw std::invalid_argument("");
+    v = std::stoull(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || used == 0 || v < min || v > max) {
+    throw std::invalid_argument(flag + " '" + text + "': expected an integer from " + std::to_string(min) + " to " + std::to_string(max));
+  }
+  return v;
+}
+
+/// A list the command line asks for, printed: its exit code; none when it asks for no list.
+std::optional<int> list_asked(const cli_options& o, const claim_book& book) {
+  if (o.want_claims) return list_claims(book, o.list_format);
+  if (o.want_scenes) return list_scenes();
+  if (o.want_precisions) return list_precisions();
+  if (o.want_sections) return list_sections();
+  if (o.want_verdicts) return list_verdicts();
+  if (o.want_holes) fmt::print("{}", simpson::verify::holes_markdown());
+  if (o.want_facts) fmt::print("{}", simpson::verify::published_facts_markdown(book));
+  if (o.want_core) fmt::print("{}", simpson::verify::core_formulas_markdown(book));
+  if (o.want_holes || o.want_facts || o.want_core) return 0;
+  return std::nullopt;
+}
+
+/// --seed, --samples, --enclosure-budget into the scene (and its overrides).
+void apply_run_numbers(const cli_options& o, scene& s) {
+  if (!o.seed_text.empty()) {
+    s.seed = parse_count("--seed", o.seed_text, 0, ~0ULL);
+    s.overrides["seed"] = s.seed;
+  }
+  if (!o.samples_text.empty()) {
+    s.samples = static_cast<unsigned>(parse_count("--samples", o.samples_text, 1, 10000));
+    s.overrides["samples"] = s.samples;
+  }
+  if (!o.enclosure_budget_text.empty()) {
+    s.enclosure_budget_digits = static_cast<unsigned>(parse_count("--enclosure-budget", o.enclosure_budget_text, 40, 20480));
+    s.overrides["enclosure_budget_digits"] = s.enclosure_budget_digits;
+  }
+}
+
+/// The run-wide options (--timing-runs, --no-timing, --long) checked against the scene's sections
+/// and recorded in its overrides; --long adds the sections that run long. `o.allow_expensive` is set
+/// by --long.
+section_options run_options(cli_options& o, scene& s, const claim_book& book) {
+  if (!o.timing_runs_text.empty() && o.no_timing) throw std::invalid_argument("--timing-runs and --no-timing exclude each other");
+  // The run-wide options, each applied by the sections that take it (experiment_section.hpp).
+  section_options options;
+  if (!o.timing_runs_text.empty()) {
+    const auto runs = static_cast<unsigned>(parse_count("--timing-runs", o.timing_runs_text, 1, 1000));
+    std::vector<std::string> timed;
+    for (const experiment_section* section : book.sections) {
+      if (section->times_runs()) timed.push_back(section->name());
+    }
+    const bool any_timed = std::any_of(s.experiments.entries().begin(), s.experiments.entries().end(),
+                                       [](const experiment_settings::entry& e) { return e.section->times_runs(); });
+    if (!any_timed) {
+      throw std::invalid_argument(fmt::format("--timing-runs: the run has no {} section, the only ones timed by repeats", fmt::join(timed, " or ")));
+    }
+    options.timing_runs = runs;
+    s.overrides["timing_runs"] = runs;
+  }
+  if (o.no_timing) {
+    s.timing = false;
+    options.timed = false;
+    s.overrides["timing"] = false;
+  }
+  if (o.long_run) {
+    for (const experiment_section* section : book.sections) {
+      if (section->runs_long() && !s.experiments.has(section->name())) s.experiments.set(*section, section->defaults({}), book.sections);
+    }
+    options.long_run = true;
+    o.allow_expensive = true;
+    s.overrides["long"] = true;
+  }
+  return options;
+}
+
+/// The run's estimated cost; bad input when it exceeds the budget without --allow-expensive.
+cost_estimate checked_cost(const scene& s, const claim_book& book, bool allow_expensive) {
+  recheck_load rechecks{0, s.samples, s.precisions};
+  for (const std::string& id : s.claims) {
+    const std::vector<std::string>& methods = book.find(id).methods;
+    if (std::find(methods.begin(), methods.end(), "numeric") != methods.end()) ++rechecks.numeric_claims;
+  }
+  const cost_estimate cost = estimate_cost(s.experiments, rechecks);
+  if (cost.units > default_cost_budget && !allow_expensive) {
+    std::string parts;
+    for (const std::string& line : cost.lines) parts += (parts.empty() ? "" : "; ") + line;
+    throw std::invalid_argument(fmt::format("scene '{}': estimated cost {:.3g} units (about {}) exceeds the budget {:.3g} "
+                                            "units (about {}) ({}); pass --allow-expensive to run it anyway",
+                                            s.name, cost.units, seconds_text(cost.units), default_cost_budget,
+                                            seconds_text(default_cost_budget), parts));
+  }
+  return cost;
+}
+
 /// What a run needs, checked: its scene, its book, its paper read, its output directory, its cost.
 struct prepared_run {
   scene s;
@@ -86,9 +188,9 @@ std::optional<int> prepare_run(cli_options& o, const CLI::App& app, int argc, ch
   std::signal(SIGTERM, record_signal);
   scene& s = r.s;
   std::optional<paper_reading>& paper = r.paper;
-  // The run's book: the paper's, or the claims file's; read once, bound to its document once, and
-  // passed to the run.
-  r.book = std::make_shared<claim_book>(paper_book());
+  // The run's book: the paper's, or the claims file's (read below: a note's run never builds the
+  // paper's); read once, bound to its document once, and passed to the run.
+  r.book = o.claims_file.empty() ? std::make_shared<claim_book>(paper_book()) : std::make_shared<claim_book>();
   std::shared_ptr<claim_book>& book = r.book;
   std::filesystem::path& out = r.out;
   cost_estimate& cost = r.cost;
@@ -99,21 +201,7 @@ std::optional<int> prepare_run(cli_options& o, const CLI::App& app, int argc, ch
       const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
       *book = read_claim_book(text, o.claims_file);  // a file that does not read is bad input: nothing runs
     }
-    if (o.want_claims) return list_claims(*book, o.list_format);
-    if (o.want_scenes) return list_scenes();
-    if (o.want_precisions) return list_precisions();
-    if (o.want_holes) {
-      fmt::print("{}", simpson::verify::holes_markdown());
-      return 0;
-    }
-    if (o.want_facts) {
-      fmt::print("{}", simpson::verify::published_facts_markdown(*book));
-      return 0;
-    }
-    if (o.want_core) {
-      fmt::print("{}", simpson::verify::core_formulas_markdown(*book));
-      return 0;
-    }
+    if (const std::optional<int> listed = list_asked(o, *book)) return listed;
     s = load_scene(o.scene_name, *book);
     if (!o.paper_file.empty()) s.paper_file = o.paper_file;
     if (const claims_document* document = book->checked_document()) {
@@ -141,79 +229,11 @@ std::optional<int> prepare_run(cli_options& o, const CLI::App& app, int argc, ch
       s.overrides["validate"] = true;
     }
     if (app.count("--precisions") > 0) apply_precisions(s, o.precision_names);
-    const auto parse_count = [](const std::string& flag, const std::string& text, unsigned long long min, unsigned long long max) {
-      std::size_t used = 0;
-      unsigned long long v = 0;
-      try {
-        if (text.empty() || text.front() == '-') throw std::invalid_argument("");
-        v = std::stoull(text, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (used != text.size() || used == 0 || v < min || v > max) {
-        throw std::invalid_argument(flag + " '" + text + "': expected an integer from " + std::to_string(min) + " to " +
-                                    std::to_string(max));
-      }
-      return v;
-    };
-    if (!o.seed_text.empty()) {
-      s.seed = parse_count("--seed", o.seed_text, 0, ~0ULL);
-      s.overrides["seed"] = s.seed;
-    }
-    if (!o.samples_text.empty()) {
-      s.samples = static_cast<unsigned>(parse_count("--samples", o.samples_text, 1, 10000));
-      s.overrides["samples"] = s.samples;
-    }
-    if (!o.enclosure_budget_text.empty()) {
-      s.enclosure_budget_digits = static_cast<unsigned>(parse_count("--enclosure-budget", o.enclosure_budget_text, 40, 20480));
-      s.overrides["enclosure_budget_digits"] = s.enclosure_budget_digits;
-    }
-    if (!o.timing_runs_text.empty() && o.no_timing) throw std::invalid_argument("--timing-runs and --no-timing exclude each other");
-    // The run-wide options, each applied by the sections that take it (experiment_section.hpp).
-    section_options options;
-    if (!o.timing_runs_text.empty()) {
-      const auto runs = static_cast<unsigned>(parse_count("--timing-runs", o.timing_runs_text, 1, 1000));
-      std::vector<std::string> timed;
-      for (const experiment_section* section : experiment_sections()) {
-        if (section->times_runs()) timed.push_back(section->name());
-      }
-      const bool any_timed = std::any_of(s.experiments.entries().begin(), s.experiments.entries().end(),
-                                         [](const experiment_settings::entry& e) { return e.section->times_runs(); });
-      if (!any_timed) {
-        throw std::invalid_argument(fmt::format("--timing-runs: the run has no {} section, the only ones timed by repeats", fmt::join(timed, " or ")));
-      }
-      options.timing_runs = runs;
-      s.overrides["timing_runs"] = runs;
-    }
-    if (o.no_timing) {
-      s.timing = false;
-      options.timed = false;
-      s.overrides["timing"] = false;
-    }
+    apply_run_numbers(o, s);
+    section_options options = run_options(o, s, *book);
     s.command_line.assign(argv, argv + argc);
-    if (o.long_run) {
-      for (const experiment_section* section : experiment_sections()) {
-        if (section->runs_long() && !s.experiments.has(section->name())) s.experiments.set(*section, section->defaults({}), experiment_sections());
-      }
-      options.long_run = true;
-      o.allow_expensive = true;
-      s.overrides["long"] = true;
-    }
     for (experiment_settings::entry& section : s.experiments.entries()) section.section->apply(section.settings, options);
-    recheck_load rechecks{0, s.samples, s.precisions};
-    for (const std::string& id : s.claims) {
-      const std::vector<std::string>& methods = book->find(id).methods;
-      if (std::find(methods.begin(), methods.end(), "numeric") != methods.end()) ++rechecks.numeric_claims;
-    }
-    cost = estimate_cost(s.experiments, rechecks);
-    if (cost.units > default_cost_budget && !o.allow_expensive) {
-      std::string parts;
-      for (const std::string& line : cost.lines) parts += (parts.empty() ? "" : "; ") + line;
-      throw std::invalid_argument(fmt::format("scene '{}': estimated cost {:.3g} units (about {}) exceeds the budget {:.3g} "
-                                              "units (about {}) ({}); pass --allow-expensive to run it anyway",
-                                              s.name, cost.units, seconds_text(cost.units), default_cost_budget,
-                                              seconds_text(default_cost_budget), parts));
-    }
+    cost = checked_cost(s, *book, o.allow_expensive);
     if (o.certify && coqc_version().empty()) throw std::invalid_argument("--certify: coqc was not found (install Debian's coq)");
     // Checked wherever coqc is installed, unless --no-certify.
     if (!o.certify && !o.no_certify) o.certify = !coqc_version().empty();
@@ -295,7 +315,7 @@ int execute_run(prepared_run& r, const cli_options& o, const claim_checker& chec
         const claim_outcome& c = record.outcomes[k];
         fmt::print("  {:<8} {:<34}{}\n", rows[k].state == verdict_row::status::error ? "fault" : rows[k].verdict, rows[k].name,
                    pointer(rows[k], c, record.validation));
-        if (c.result.outcome == verdict::erratum && !c.result.correction.empty()) fmt::print("           corrected: {}\n", c.result.correction);
+        if (meaning(c.result.outcome).corrected && !c.result.correction.empty()) fmt::print("           corrected: {}\n", c.result.correction);
         if (!c.result.remark.empty()) fmt::print("           remark ({}): {}\n", to_string(c.result.remark_kind), c.result.remark);
       }
     }

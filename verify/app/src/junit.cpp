@@ -105,9 +105,8 @@ testcase claim_case(const claim_outcome& o, bool validation) {
       break;
     case status::passed:
       t.out = row.type == "fixed-accepted"               ? "Fixed: recorded as " + row.expected + ", now holds (accepted: --accept-fixes).\n" + summary
-              : o.result.outcome == verdict::erratum      ? "Erratum, as the ledger expects.\n" + summary
-              : o.result.outcome == verdict::unverifiable ? "Unverifiable (material absent from the source), as the ledger expects.\n" + summary
-                                                          : std::string();
+              : *meaning(o.result.outcome).passed_words != '\0' ? meaning(o.result.outcome).passed_words + ("\n" + summary)
+                                                                 : std::string();
       break;
   }
   return t;

@@ -273,7 +273,7 @@ std::string referee_summary_markdown(const run_record& r) {
   if (c.remarks > 0) {
     md += fmt::format("\nRemarks on claims that hold ({}), not findings:\n\n", c.remarks);
     for (const claim_outcome& o : r.outcomes) {
-      if (o.checked->origin != claim_origin::paper || o.result.outcome != verdict::holds || o.result.remark.empty()) continue;
+      if (o.checked->origin != claim_origin::paper || !meaning(o.result.outcome).affirms || o.result.remark.empty()) continue;
       md += fmt::format("- **`{}`** (§{}, {}{}): {}\n", o.checked->id, markdown_escaped(o.checked->section), to_string(o.result.remark_kind),
                         cause_of(o).empty() ? "" : "; linked to `" + cause_of(o) + "`", markdown_escaped(o.result.remark));
     }
@@ -326,17 +326,12 @@ std::string provenance_markdown(const run_record& r) {
 
 std::string report_markdown(const run_record& r) { return report_markdown(r, report_parts::all_plots_drawn(r)); }
 
-std::string report_markdown(const run_record& r, const plot_outcome& plots) {
+namespace {
+
+/// report.md's part on the run: its summary and expectation lines, what the claims read, the Coq
+/// certificates, the environment, the seed and precisions, the document's provenance, the verdicts.
+std::string run_markdown(const run_record& r) {
   std::string md;
-  md += fmt::format("# simpson-verify report: scene `{}`{}\n\n", r.run_scene.name,
-                    r.run_scene.selection.empty() ? "" : ": " + r.run_scene.selection);
-  if (!r.run_scene.description.empty()) md += markdown_escaped(r.run_scene.description) + "\n\n";
-  if (!r.run_scene.selection.empty()) {
-    md += fmt::format("**A selection**: {}. This report judges only what was selected; the scene's other claims and sections were "
-                      "not run, and nothing here speaks for them.\n\n",
-                      markdown_escaped(r.run_scene.selection));
-  }
-  md += referee_summary_markdown(r);
   md += fmt::format("## The run\n\n**{}**\n\n{}\n\n", markdown_escaped(summary_line(r)), markdown_escaped(expectation_line(r)));
   {
     const report_parts::verdict_counts c = report_parts::count_verdicts(r);
@@ -363,14 +358,16 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
                     "40 digits, doubled up to {}\n\n", r.run_scene.seed,
                     r.run_scene.samples, report_parts::join(report_parts::precision_names(r.run_scene.precisions), ", "), r.run_scene.enclosure_budget_digits);
   md += provenance_markdown(r);
-  md += "Verdicts: **holds** (true as printed), **erratum** (false as printed; a corrected statement is proved), **fails** "
-        "(false, no correction found), **kernels-disagree** (our kernel and GiNaC reached different conclusions on the derived statement: a bug, never expected), "
-        "**text-changed** (the sentence a prose claim quotes is gone from the paper, or its words no longer parse: never expected), "
-        "**undecided** (no interval enclosure proved the statement or its negation within the run's digits: never expected), "
-        "**unproved** (a floating-point claim whose round-off Gappa could not bound, with its reason), **skipped** (a "
-        "floating-point claim not decided because gappa is not installed: never counted against the run), **unverifiable** (material "
-        "the claim needs is absent from the source, a figure or a reference: no verdict on its words).\n\n";
+  std::vector<std::string> legend;  // verdict.hpp's table, in its order
+  for (const verdict_meaning& m : verdict_meanings) legend.push_back(fmt::format("**{}** ({})", m.name, m.legend));
+  md += "Verdicts: " + report_parts::join(legend, ", ") + ".\n\n";
 
+  return md;
+}
+
+/// report.md's table of the claims, one row each.
+std::string claims_table_markdown(const run_record& r) {
+  std::string md;
   {
     const std::string the = r.of_the_paper ? "paper" : "document";
     md += fmt::format("## Claims\n\nStatement: *read* when its formulas are read from the {0}'s source and proved in both kernels "
@@ -389,6 +386,12 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
                       verdict_text, to_string(o.expected), report_parts::join(c.methods, ", ") + (o.result.printed.is_null() ? "" : ", GiNaC"));
   }
 
+  return md;
+}
+
+/// report.md's errata, unverifiable claims, fixes and failures (the verdict table's rows).
+std::string findings_markdown(const run_record& r) {
+  std::string md;
   // The claims of one verdict, each with its printed and corrected statements.
   const auto section_of = [&](verdict v) {
     std::string out;
@@ -433,10 +436,16 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
   }
   if (!any_failure) md += "None in this run.\n\n";
 
+  return md;
+}
+
+/// report.md's notes on claims that hold, and Φ₃ at the paper's configuration (the paper only).
+std::string notes_markdown(const run_record& r) {
+  std::string md;
   md += "## Notes on claims that hold\n\n";
   bool any_note = false;
   for (const claim_outcome& o : r.outcomes) {
-    if (o.result.outcome != verdict::holds || o.result.note.empty()) continue;
+    if (!meaning(o.result.outcome).affirms || o.result.note.empty()) continue;
     any_note = true;
     md += fmt::format("- **[{}](#{})**: {}\n", o.checked->id, heading_slug(o.checked->id), markdown_escaped(o.result.note));
   }
@@ -455,6 +464,12 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
     }
   }
 
+  return md;
+}
+
+/// report.md's experiments: each section's Markdown, and the plots not drawn.
+std::string experiments_markdown(const run_record& r, const plot_outcome& plots) {
+  std::string md;
   if (!r.sections.empty()) {
     md += "\n# Experiments\n\n";
     std::vector<std::string> names;
@@ -467,48 +482,75 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
     }
   }
 
+  return md;
+}
+
+/// report.md's evidence of one claim: what was read, what each kernel proved, the words quoted, the
+/// correction and note, the enclosures and the evidence as JSON.
+std::string evidence_markdown(const run_record& r, const claim_outcome& o) {
+  std::string md;
+  const claim& c = *o.checked;
+  md += fmt::format("### {}\n\n§{}, {} — **{}** (expected {})\n\n> {}\n\n", c.id, c.section, markdown_escaped(c.equation),
+                    to_string(o.result.outcome), to_string(o.expected), markdown_escaped(c.statement));
+  if (!o.result.printed.is_null()) {
+    md += fmt::format("Read from the paper ({}):\n\n", markdown_escaped(o.result.printed["source"].get<std::string>()));
+    for (const json& f : o.result.printed["formulas"]) {
+      // A definition a proof shape puts in has no TeX or parse of its own here (its display is listed).
+      std::vector<std::string> sides;
+      if (f.contains("parsed")) {
+        for (const json& side : f["parsed"]) sides.push_back(markdown_code(side.get<std::string>()));
+      }
+      md += fmt::format("- {} (line {}){}{}\n", markdown_escaped(f["label"].get<std::string>()), f["line"].get<int>(),
+                        f.contains("tex") ? ": " + markdown_code(f["tex"].get<std::string>()) : std::string(),
+                        sides.empty() ? std::string() : "\n  - parsed: " + report_parts::join(sides, " and "));
+    }
+    md += "\n";
+  }
+  if (!o.result.printed.is_null() && o.result.evidence.contains("kernels")) {
+    const json& kernels = o.result.evidence["kernels"];
+    md += fmt::format("What each kernel proved:\n\n- ours: {} ({})\n- GiNaC, printed side: {}\n- GiNaC, derived side: {}\n\n",
+                      kernels["own"]["derived_holds"].get<bool>() ? "the derived statement" : "not the derived statement",
+                      markdown_escaped(kernels["own"]["statement"].get<std::string>()),
+                      markdown_escaped(kernels["ginac"]["printed"].get<std::string>()),
+                      markdown_escaped(kernels["ginac"]["derived"].get<std::string>()));
+  }
+  // A proof shape's identity: both kernels on the statement as read (shape_support.hpp).
+  const json& exact = o.result.evidence.contains("exact") ? o.result.evidence["exact"] : json();
+  if (!o.result.printed.is_null() && exact.is_object() && exact.contains("own") && exact.contains("ginac") && exact.contains("statement")) {
+    md += fmt::format("What each kernel proved, of {}:\n\n- ours: {}\n- GiNaC: {}\n\n", markdown_escaped(exact["statement"].get<std::string>()),
+                      markdown_escaped(exact["own"].get<std::string>()), markdown_escaped(exact["ginac"].get<std::string>()));
+  }
+  for (const json& q : o.result.quoted) md += quoted_markdown(q);
+  if (o.result.printed.is_null() && o.result.quoted.empty()) md += r.of_the_paper ? "Statement typed into the ledger: it quotes no words of the paper.\n\n"
+                        : "Statement typed in the claims file: it quotes no words of the document.\n\n";
+  if (!o.result.correction.empty()) md += "Corrected: " + markdown_escaped(o.result.correction) + "\n\n";
+  if (!o.result.note.empty()) md += "Note: " + markdown_escaped(o.result.note) + "\n\n";
+  md += enclosure_markdown(o.result.evidence);
+  md += "```json\n" + o.result.evidence.dump(2) + "\n```\n\n";
+  return md;
+}
+
+}  // namespace
+
+std::string report_markdown(const run_record& r, const plot_outcome& plots) {
+  std::string md;
+  md += fmt::format("# simpson-verify report: scene `{}`{}\n\n", r.run_scene.name,
+                    r.run_scene.selection.empty() ? "" : ": " + r.run_scene.selection);
+  if (!r.run_scene.description.empty()) md += markdown_escaped(r.run_scene.description) + "\n\n";
+  if (!r.run_scene.selection.empty()) {
+    md += fmt::format("**A selection**: {}. This report judges only what was selected; the scene's other claims and sections were "
+                      "not run, and nothing here speaks for them.\n\n",
+                      markdown_escaped(r.run_scene.selection));
+  }
+  md += referee_summary_markdown(r);
+  md += run_markdown(r);
+  md += claims_table_markdown(r);
+  md += findings_markdown(r);
+  md += notes_markdown(r);
+  md += experiments_markdown(r, plots);
   md += coq_table_markdown(r);
   md += "\n## Evidence\n\n";
-  for (const claim_outcome& o : r.outcomes) {
-    const claim& c = *o.checked;
-    md += fmt::format("### {}\n\n§{}, {} — **{}** (expected {})\n\n> {}\n\n", c.id, c.section, markdown_escaped(c.equation),
-                      to_string(o.result.outcome), to_string(o.expected), markdown_escaped(c.statement));
-    if (!o.result.printed.is_null()) {
-      md += fmt::format("Read from the paper ({}):\n\n", markdown_escaped(o.result.printed["source"].get<std::string>()));
-      for (const json& f : o.result.printed["formulas"]) {
-        // A definition a proof shape puts in has no TeX or parse of its own here (its display is listed).
-        std::vector<std::string> sides;
-        if (f.contains("parsed")) {
-          for (const json& side : f["parsed"]) sides.push_back(markdown_code(side.get<std::string>()));
-        }
-        md += fmt::format("- {} (line {}){}{}\n", markdown_escaped(f["label"].get<std::string>()), f["line"].get<int>(),
-                          f.contains("tex") ? ": " + markdown_code(f["tex"].get<std::string>()) : std::string(),
-                          sides.empty() ? std::string() : "\n  - parsed: " + report_parts::join(sides, " and "));
-      }
-      md += "\n";
-    }
-    if (!o.result.printed.is_null() && o.result.evidence.contains("kernels")) {
-      const json& kernels = o.result.evidence["kernels"];
-      md += fmt::format("What each kernel proved:\n\n- ours: {} ({})\n- GiNaC, printed side: {}\n- GiNaC, derived side: {}\n\n",
-                        kernels["own"]["derived_holds"].get<bool>() ? "the derived statement" : "not the derived statement",
-                        markdown_escaped(kernels["own"]["statement"].get<std::string>()),
-                        markdown_escaped(kernels["ginac"]["printed"].get<std::string>()),
-                        markdown_escaped(kernels["ginac"]["derived"].get<std::string>()));
-    }
-    // A proof shape's identity: both kernels on the statement as read (shape_support.hpp).
-    const json& exact = o.result.evidence.contains("exact") ? o.result.evidence["exact"] : json();
-    if (!o.result.printed.is_null() && exact.is_object() && exact.contains("own") && exact.contains("ginac") && exact.contains("statement")) {
-      md += fmt::format("What each kernel proved, of {}:\n\n- ours: {}\n- GiNaC: {}\n\n", markdown_escaped(exact["statement"].get<std::string>()),
-                        markdown_escaped(exact["own"].get<std::string>()), markdown_escaped(exact["ginac"].get<std::string>()));
-    }
-    for (const json& q : o.result.quoted) md += quoted_markdown(q);
-    if (o.result.printed.is_null() && o.result.quoted.empty()) md += r.of_the_paper ? "Statement typed into the ledger: it quotes no words of the paper.\n\n"
-                          : "Statement typed in the claims file: it quotes no words of the document.\n\n";
-    if (!o.result.correction.empty()) md += "Corrected: " + markdown_escaped(o.result.correction) + "\n\n";
-    if (!o.result.note.empty()) md += "Note: " + markdown_escaped(o.result.note) + "\n\n";
-    md += enclosure_markdown(o.result.evidence);
-    md += "```json\n" + o.result.evidence.dump(2) + "\n```\n\n";
-  }
+  for (const claim_outcome& o : r.outcomes) md += evidence_markdown(r, o);
   return md;
 }
 

@@ -63,7 +63,7 @@ verdict_counts count_verdicts(const run_record& r) {
         ++c.consequences;
       }
     }
-    c.remarks += paper && o.result.outcome == verdict::holds && !o.result.remark.empty();
+    c.remarks += paper && meaning(o.result.outcome).affirms && !o.result.remark.empty();
     ++c.of[static_cast<std::size_t>(o.result.outcome)];
     c.machine_read += !o.result.printed.is_null();
     c.quoted += !o.result.quoted.empty();  // a claim may read a formula and quote its sentence: counted in both
@@ -133,7 +133,7 @@ std::string summary_line(const run_record& r) {
     const std::size_t n = c.count(m.value);
     if (!m.always_counted && n == 0) continue;
     std::string words = fmt::format(fmt::runtime(m.counted_as), n);
-    if (m.value == verdict::holds && c.remarks > 0) words += fmt::format(" ({} with a remark)", c.remarks);
+    if (m.affirms && c.remarks > 0) words += fmt::format(" ({} with a remark)", c.remarks);
     counted.push_back(words);
   }
   if (c.faults) counted.push_back(fmt::format("{} without a verdict (a harness fault: the check threw)", c.faults));
@@ -150,7 +150,7 @@ std::string validation_line(const run_record& r, const report_parts::verdict_cou
   for (const claim_outcome& o : r.outcomes) {
     if (outcome_as_expected(o)) continue;
     const std::string& id = o.checked->id;
-    if (o.result.outcome == verdict::undecided || o.result.outcome == verdict::unproved || o.result.outcome == verdict::kernels_disagree) {
+    if (meaning(o.result.outcome).tool_limit) {
       undecided.push_back(id);
     } else if (is_finding(o.result.outcome) && !cause_of(o).empty()) {
       consequences.push_back(id + " (from " + cause_of(o) + ")");
@@ -319,7 +319,7 @@ std::string findings_headline(const run_record& r) {
   if (!headline.empty()) {
     std::vector<std::string> held, not_held;
     for (const auto& [id, v] : headline) {
-      if (v == verdict::holds) {
+      if (meaning(v).affirms) {
         held.push_back(id);
       } else {
         not_held.push_back(fmt::format("{}: {}", id, to_string(v)));

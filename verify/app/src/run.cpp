@@ -33,7 +33,7 @@ paper_reading read_scene_paper(const scene& s, claim_book& book) {
     check_claims_file_formulas(book, reading.source);
     return reading;
   }
-  paper_reading reading = read_paper(s.paper_file.empty() ? embedded_paper() : load_paper(s.paper_file), book.declarations->reading);
+  paper_reading reading = read_paper(s.paper_file.empty() ? embedded_paper() : load_paper(s.paper_file), book.declarations->reading, book.formulas);
   // What the scene's shape records read, before anything runs: a label or phrase the paper no longer
   // has is bad input, named, not a harness fault in the middle of a run.
   check_claims_file_formulas(book, reading.source, &s.claims);
@@ -63,7 +63,7 @@ void apply_baseline(scene& s, const json& baseline, const std::string& name) {
     if (!expectable(*v)) continue;
     s.expected_overrides[id] = *v;
     baseline_claim b;
-    if (*v == verdict::erratum) b.correction = entry.value("correction", "");
+    if (meaning(*v).corrected) b.correction = entry.value("correction", "");
     if (entry.contains("remark") && entry["remark"].is_object()) {
       const std::string kind = entry["remark"].value("class", "");
       const std::optional<finding> f = finding_of_name(kind);
@@ -187,10 +187,10 @@ run_record run(const scene& s, std::shared_ptr<const claim_book> book, const pap
       outcome.expected_remark_text = c.expected_correction;
     }
     const claim_result& got = outcome.result;
-    if (outcome.expected == verdict::erratum && got.outcome == verdict::erratum && !recorded.empty() && got.correction != recorded) {
+    if (meaning(outcome.expected).corrected && got.outcome == outcome.expected && !recorded.empty() && got.correction != recorded) {
       outcome.content_changed = correction_change(recorded, got.correction);
     }
-    if (!r.validation && got.outcome == verdict::holds && outcome.expected == verdict::holds) {
+    if (!r.validation && meaning(got.outcome).affirms && got.outcome == outcome.expected) {
       if (outcome.expected_remark == finding::none && got.remark_kind != finding::none) {
         outcome.content_changed = fmt::format("it holds with a remark the record does not have ({}: {})", to_string(got.remark_kind), got.remark);
       } else if (outcome.expected_remark != finding::none && got.remark_kind != finding::none &&
@@ -205,7 +205,7 @@ run_record run(const scene& s, std::shared_ptr<const claim_book> book, const pap
     // A finding or a remark of the record that the claim now holds without: fixed, or changed by a
     // premise (resolve_fixes, once every claim ran). The ledger's expectation, or the baseline's.
     const bool recorded_finding = is_finding(outcome.expected) || outcome.expected_remark != finding::none;
-    if (got.outcome == verdict::holds && got.remark_kind == finding::none && recorded_finding && (!overridden || !s.baseline.empty())) {
+    if (meaning(got.outcome).affirms && got.remark_kind == finding::none && recorded_finding && (!overridden || !s.baseline.empty())) {
       outcome.fixed = true;
       outcome.fix_accepted = s.accept_fixes;
     }

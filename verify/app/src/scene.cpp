@@ -66,7 +66,7 @@ scene parse_scene(const std::string& text, const std::string& origin, const clai
   if (!doc.is_object()) fail(origin, "the top level must be an object");
   // The scene's own keys, and a section's object under each section's name (the registry's).
   std::set<std::string> known{"name", "description", "claims", "precisions", "samples", "seed", "expected_overrides", "paper"};
-  for (const experiment_section* section : experiment_sections()) known.insert(section->name());
+  for (const experiment_section* section : book.sections) known.insert(section->name());
   for (const auto& item : doc.items()) {
     if (!known.count(item.key())) fail(origin, "unknown key '" + item.key() + "'");
   }
@@ -81,7 +81,7 @@ scene parse_scene(const std::string& text, const std::string& origin, const clai
     if (!doc["description"].is_string()) fail(origin, "'description' must be a string");
     s.description = doc["description"].get<std::string>();
   }
-  s.experiments = parse_experiments(doc, origin, experiment_sections());
+  s.experiments = parse_experiments(doc, origin, book.sections);
   if (!doc.contains("claims") && !s.experiments.any()) {
     fail(origin, "'claims' is missing (\"all\" or a list of ids; it may be left out only when an experiment section is present)");
   }

@@ -33,20 +33,20 @@ std::vector<precision> floating_precisions(const scene& s) {
   return out;
 }
 
-void keep_sections(scene& s, const std::vector<std::string>& names) {
+void keep_sections(scene& s, const std::vector<std::string>& names, const std::vector<const experiment_section*>& registry) {
   experiment_settings& e = s.experiments;
-  for (const experiment_section* section : experiment_sections()) {
+  for (const experiment_section* section : registry) {
     const bool wanted = std::find(names.begin(), names.end(), section->name()) != names.end();
     if (!wanted) e.remove(section->name());
-    else if (!e.has(section->name())) e.set(*section, section->defaults(floating_precisions(s)), experiment_sections());
+    else if (!e.has(section->name())) e.set(*section, section->defaults(floating_precisions(s)), registry);
   }
 }
 
 }  // namespace
 
-std::vector<std::string> section_names() {
+std::vector<std::string> section_names(const std::vector<const experiment_section*>& registry) {
   std::vector<std::string> names;
-  for (const experiment_section* section : experiment_sections()) names.push_back(section->name());
+  for (const experiment_section* section : registry) names.push_back(section->name());
   return names;
 }
 
@@ -100,15 +100,15 @@ void apply_selection(scene& s, const scene_selection& selection, const claim_boo
     for (const std::string& given : *selection.sections) {
       const std::string name = trimmed(given);
       if (name.empty() || name == "none") continue;
-      if (find_section(experiment_sections(), name) == nullptr) {
-        throw std::invalid_argument("--sections: unknown section '" + name + "' (known: " + joined(section_names()) + ", or none)");
+      if (find_section(book.sections, name) == nullptr) {
+        throw std::invalid_argument("--sections: unknown section '" + name + "' (known: " + joined(section_names(book.sections)) + ", or none)");
       }
       if (std::find(sections.begin(), sections.end(), name) == sections.end()) sections.push_back(name);
     }
   }
-  keep_sections(s, sections);
+  keep_sections(s, sections, book.sections);
   std::vector<std::string> ordered;
-  for (const std::string& name : section_names()) {
+  for (const std::string& name : section_names(book.sections)) {
     if (std::find(sections.begin(), sections.end(), name) != sections.end()) ordered.push_back(name);
   }
   s.overrides["sections"] = ordered;

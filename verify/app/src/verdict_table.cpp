@@ -18,7 +18,7 @@ bool certificate_rejected(const claim_outcome& o) {
 }  // namespace
 
 std::string recorded_as(const claim_outcome& o) {
-  if (o.expected == verdict::holds && o.expected_remark != finding::none) return "holds with a remark (" + to_string(o.expected_remark) + ")";
+  if (meaning(o.expected).affirms && o.expected_remark != finding::none) return "holds with a remark (" + to_string(o.expected_remark) + ")";
   return to_string(o.expected);
 }
 
@@ -61,13 +61,13 @@ verdict_row claim_row(const claim_outcome& o, bool validation) {
       set(status::failed, "consequence", row.verdict + ": a consequence of " + cause_of(o) + ", which does not hold as written");
     }
   } else if (!o.content_changed.empty()) {  // the expected verdict, but another erratum or remark
-    const bool remark = o.result.outcome == verdict::holds;
+    const bool remark = meaning(o.result.outcome).affirms;
     set(status::failed, remark ? "remark-changed" : "erratum-changed", (remark ? "holds, as expected, but " : "erratum, as expected, but ") + o.content_changed);
   } else if (!outcome_as_expected(o)) {
     set(status::failed, "unexpected-verdict", "verdict " + row.verdict + ", expected " + row.expected);
   } else if (certificate_rejected(o)) {
     set(status::failed, "certificate-rejected", "coqc rejected its Coq certificate");
-  } else if (o.result.outcome == verdict::fails) {
+  } else if (meaning(o.result.outcome).expected_failure) {
     set(status::expected_failure, "expected-failure",
         "expected failure: verdict fails, as the ledger expects" + (o.result.note.empty() ? std::string() : ": " + o.result.note));
   }

@@ -5,6 +5,7 @@
 // names the check (`check = "derivation-phi3"`), nothing else: the ledger finds every facet through
 // that one name.
 
+#include <simpson/verify/the_paper.hpp>
 #include "derivation_support.hpp"
 
 #include <simpson/prove/decide.hpp>

@@ -2,11 +2,11 @@
 // book's table1 reads the paper's Table 1 and its stated solution from the run's document first, the
 // knowledge of this paper the experiments layer does not have.
 
+#include <simpson/verify/table1_reader.hpp>
 #include <simpson/verify/ledger.hpp>
 
 #include <simpson/verify/experiments.hpp>
 #include <simpson/verify/paper_reading.hpp>
-#include <simpson/verify/printed_table1.hpp>
 
 #include <memory>
 

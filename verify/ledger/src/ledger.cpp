@@ -178,6 +178,8 @@ claim_book read_claim_book(const std::string& text, const std::string& file) {
   book.declarations = std::make_shared<const claim_declarations>(read_declarations(contents, file));
   book.records = std::move(contents.records);
   book.claims = claims_of(book.records, book.declarations);
+  if (!book.document) book.formulas = printed_formula_locations();
+  book.sections = experiment_sections();
   book.guards = std::any_of(book.records.begin(), book.records.end(), [](const claim_record& r) { return r.expected_given; });
   return book;
 }
@@ -241,7 +243,7 @@ void check_claims_file_formulas(claim_book& book, const paper_source& source, co
   }
 }
 
-paper_reading read_paper(const paper_source& paper) { return read_paper(paper, paper_book().declarations->reading); }
+paper_reading read_paper(const paper_source& paper) { return read_paper(paper, paper_book().declarations->reading, printed_formula_locations()); }
 
 std::vector<std::string> required_claim_ids() {
   std::vector<std::string> out;

@@ -21,7 +21,7 @@ json earlier_text_json(const paper_reading& live, const run_context& ctx, const 
     json entry = {{"label", d.label}, {"line", d.line}, {"tex", folded_space(d.tex)}};
     paper_reading earlier;
     try {
-      earlier = read_paper(with_earlier_display(live.source, d), ctx.book->declarations->reading);
+      earlier = read_paper(with_earlier_display(live.source, d), ctx.book->declarations->reading, ctx.book->formulas);
     } catch (const std::invalid_argument& e) {
       entry["reads"] = false;
       entry["error"] = e.what();

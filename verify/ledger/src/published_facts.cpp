@@ -1,5 +1,6 @@
 // The experiments' published facts a record may observe: see published_facts.hpp.
 
+#include <simpson/verify/table1_reader.hpp>
 #include "published_facts.hpp"
 
 #include "bespoke/bespoke_checks.hpp"
@@ -8,7 +9,6 @@
 #include <simpson/verify/fpu_section.hpp>
 #include <simpson/verify/ledger.hpp>
 #include <simpson/verify/nonlinear_section.hpp>
-#include <simpson/verify/printed_table1.hpp>
 #include <simpson/verify/table1_facts.hpp>
 
 #include <fmt/format.h>

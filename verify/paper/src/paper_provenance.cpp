@@ -2,6 +2,8 @@
 
 #include <simpson/verify/paper_provenance.hpp>
 
+#include <simpson/verify/tex_macros.hpp>
+
 #include <algorithm>
 #include <cctype>
 #include <regex>
@@ -26,18 +28,55 @@ bool single_comment(const std::string& line, std::string& rest) {
   return true;
 }
 
-const std::regex& display_start() {
-  static const std::regex start(R"(\\moneq\s*\\label\{([^}]*)\})");
-  return start;
+/// What opens and what closes a numbered display in this source: `\begin{equation}` and
+/// `\end{equation}`, and every macro the source defines whose body holds one of them (a document
+/// that writes `\newcommand{\moneq}{\vspace*{-7pt} \begin{equation}}` opens its displays with
+/// \moneq).
+struct display_delimiters {
+  std::regex start;             // an opener, then \label{...}: the label in group 1
+  std::vector<std::string> end; // the closers
+};
+
+std::string regex_escaped(const std::string& text) {
+  static const std::regex special(R"([.^$|()\[\]{}*+?\\])");
+  return std::regex_replace(text, special, R"(\$&)");
+}
+
+display_delimiters delimiters_of(const std::string& text) {
+  std::vector<std::string> openers{"\\begin{equation}"}, closers{"\\end{equation}"};
+  tex_macros macros;
+  try {
+    macros = defined_macros(text);
+  } catch (const std::exception&) {  // definitions that do not read: the environment's own delimiters only
+  }
+  for (const auto& [name, macro] : macros.all()) {
+    std::string body;
+    for (const tex_token& t : macro.body) body += t.text;
+    if (body.find("\\begin{equation}") != std::string::npos) openers.push_back(name);
+    if (body.find("\\end{equation}") != std::string::npos) closers.push_back(name);
+  }
+  std::string alternatives;
+  for (const std::string& o : openers) alternatives += (alternatives.empty() ? "" : "|") + regex_escaped(o) + (o.back() == '}' ? "" : "(?![A-Za-z])");
+  return {std::regex("(?:" + alternatives + R"()\s*\\label\{([^}]*)\})"), closers};
+}
+
+bool closes(const std::string& line, const display_delimiters& d) {
+  for (const std::string& c : d.end) {
+    for (std::size_t at = line.find(c); at != std::string::npos; at = line.find(c, at + 1)) {
+      const std::size_t after = at + c.size();
+      if (c.back() == '}' || after >= line.size() || std::isalpha(static_cast<unsigned char>(line[after])) == 0) return true;
+    }
+  }
+  return false;
 }
 
 /// [first, last] line indices (0-based) of the live display labelled `label`, or none (first > last).
-std::pair<std::size_t, std::size_t> live_display(const std::vector<std::string>& live, const std::string& label) {
+std::pair<std::size_t, std::size_t> live_display(const std::vector<std::string>& live, const std::string& label, const display_delimiters& d) {
   for (std::size_t k = 0; k < live.size(); ++k) {
     std::smatch m;
-    if (std::regex_search(live[k], m, display_start()) && m[1] == label) {
+    if (std::regex_search(live[k], m, d.start) && m[1] == label) {
       for (std::size_t e = k; e < live.size(); ++e) {
-        if (live[e].find("\\monend") != std::string::npos) return {k, e};
+        if (closes(live[e], d)) return {k, e};
       }
     }
   }
@@ -117,21 +156,22 @@ std::vector<std::string> citations_in_sentence(const paper_source& paper, int li
 
 std::vector<earlier_display> commented_displays(const paper_source& paper) {
   const std::vector<std::string> raw = lines_of(paper.raw), live = lines_of(paper.text);
+  const display_delimiters d = delimiters_of(paper.text);
   std::vector<earlier_display> out;
   for (std::size_t k = 0; k < raw.size(); ++k) {
     std::string rest;
     std::smatch m;
-    if (!single_comment(raw[k], rest) || !std::regex_search(rest, m, display_start())) continue;
+    if (!single_comment(raw[k], rest) || !std::regex_search(rest, m, d.start)) continue;
     const std::string label = m[1];
-    const auto [first, last] = live_display(live, label);
+    const auto [first, last] = live_display(live, label, d);
     if (first > last) continue;  // no live display with that label: not an earlier version of one
-    earlier_display d{label, static_cast<int>(k) + 1, {}};
-    for (std::size_t e = k; e < raw.size(); ++e) {
+    earlier_display e{label, static_cast<int>(k) + 1, {}};
+    for (std::size_t j = k; j < raw.size(); ++j) {
       std::string body;
-      if (!single_comment(raw[e], body)) break;
-      d.tex += body + "\n";
-      if (body.find("\\monend") != std::string::npos) {
-        out.push_back(d);
+      if (!single_comment(raw[j], body)) break;
+      e.tex += body + "\n";
+      if (closes(body, d)) {
+        out.push_back(e);
         break;
       }
     }
@@ -144,7 +184,7 @@ paper_source with_earlier_display(const paper_source& paper, const earlier_displ
   // display's lines blanked and the earlier one's put in uncommented, line for line.
   const std::vector<std::string> live = lines_of(paper.text);
   std::vector<std::string> raw = lines_of(paper.raw.empty() ? paper.text : paper.raw);
-  const auto [first, last] = live_display(live, earlier.label);
+  const auto [first, last] = live_display(live, earlier.label, delimiters_of(paper.text));
   for (std::size_t k = first; k <= last && k < raw.size(); ++k) raw[k].assign(raw[k].size(), ' ');
   const std::vector<std::string> block = lines_of(earlier.tex);
   for (std::size_t k = 0; k < block.size(); ++k) {

@@ -6,22 +6,6 @@
 
 namespace simpson::verify {
 
-const std::vector<formula_location>& printed_formula_locations() {
-  using k = formula_location::kind;
-  static const std::vector<formula_location> formulas{
-      // What the bespoke checks read (check_registry.hpp's add_printed); a proof shape reads its
-      // record's references instead (formula_reference.hpp).
-      // §2
-      {"matrice-symplectique-ordre-2", k::labelled, "matrice-symplectique-ordre-2"},
-      // §5
-      {"equation-milieu-intervalle", k::labelled, "equation-milieu-intervalle", 0, {0}},
-      {"stabilite", k::labelled, "stabilite", 0, {0, 1, 2}},
-      // §6
-      {"Phi3", k::labelled, "Phi3"},
-  };
-  return formulas;
-}
-
 const printed_formula& paper_reading::at(const std::string& name) const {
   const auto it = formulas.find(name);
   if (it == formulas.end()) throw std::logic_error("paper_reading: no formula '" + name + "'");
@@ -64,13 +48,13 @@ paper_reading read_note(const paper_source& source) {
   return reading;
 }
 
-paper_reading read_paper(const paper_source& paper, const tex_declarations& declared) {
+paper_reading read_paper(const paper_source& paper, const tex_declarations& declared, const std::vector<formula_location>& formulas) {
   paper_reading reading;
   reading.origin = paper.origin;
   reading.sha256 = paper.sha256;
   reading.source = paper;
   reading.document = std::make_shared<const tex_document>(read_document(paper, "paper"));
-  for (const formula_location& where : printed_formula_locations()) reading.formulas.emplace(where.name, read_formula(*reading.document, declared, where));
+  for (const formula_location& where : formulas) reading.formulas.emplace(where.name, read_formula(*reading.document, declared, where));
   return reading;
 }
 

@@ -1,7 +1,5 @@
 #include <simpson/verify/paper_source.hpp>
 
-#include "embedded_paper.hpp"
-
 #include <simpson/verify/sha256.hpp>
 
 #include <algorithm>
@@ -12,11 +10,6 @@
 #include <stdexcept>
 
 namespace simpson::verify {
-namespace {
-
-
-}  // namespace
-
 std::optional<std::pair<std::size_t, std::size_t>> find_ignoring_space(const std::string& text, const std::string& needle,
                                                                        std::size_t from, bool whole_word, std::size_t within) {
   const auto space = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
@@ -85,13 +78,11 @@ void replace_text(paper_source& source, std::size_t at, std::size_t length, cons
   source.text = without_comments(source.raw);
 }
 
-paper_source embedded_paper() {
-  return {"embedded", without_comments(embedded_paper_text()), sha256_hex(embedded_paper_text()), embedded_paper_text()};
+paper_source source_from_text(const std::string& origin, const std::string& text) {
+  return {origin, without_comments(text), sha256_hex(text), text};
 }
 
-namespace {
-
-paper_source read_source(const std::string& path, const std::string& what) {
+paper_source load_source(const std::string& path, const std::string& what) {
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) {
     throw std::invalid_argument(what + " '" + path + "': is a directory, not a LaTeX file");
@@ -107,26 +98,8 @@ paper_source read_source(const std::string& path, const std::string& what) {
   return {path, without_comments(text.str()), sha256_hex(text.str()), text.str()};
 }
 
-}  // namespace
-
-paper_source load_paper(const std::string& path) {
-  paper_source paper = read_source(path, "paper");
-  // Which of three it is: another document (no title), the paper cut short (its title, no end), or
-  // the paper without the display its claims start from.
-  const bool titled = paper.text.find("symplectic scheme") != std::string::npos;
-  const bool ended = paper.text.find("\\end{document}") != std::string::npos;
-  if (!titled) throw std::invalid_argument("paper '" + path + "': not the symplectic Simpson paper (its title, 'symplectic scheme', is not in it)");
-  if (paper.text.find("\\label{Phi3}") == std::string::npos) {
-    const std::size_t lines = static_cast<std::size_t>(std::count(paper.raw.begin(), paper.raw.end(), '\n')) + (paper.raw.back() == '\n' ? 0 : 1);
-    throw std::invalid_argument("paper '" + path + "': " +
-                                (ended ? std::string("the paper without the display \\label{Phi3} (Section 6's map), which its claims read")
-                                       : "truncated: it ends at line " + std::to_string(lines) + " without \\end{document}, before \\label{Phi3} (Section 6's map)"));
-  }
-  return paper;
-}
-
 paper_source load_document(const std::string& path, const std::string& title) {
-  paper_source document = read_source(path, "document");
+  paper_source document = load_source(path, "document");
   if (!find_ignoring_space(document.text, title)) {
     throw std::invalid_argument("document '" + path + "': does not print its claims file's title '" + title + "'");
   }

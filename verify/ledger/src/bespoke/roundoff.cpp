@@ -9,13 +9,14 @@
 // each of p and q over the period. A printed error can only be the scheme's own if that is below half
 // a unit of its last printed digit.
 
+#include <simpson/verify/table1_reader.hpp>
+#include <simpson/verify/the_paper.hpp>
 #include "bespoke_checks.hpp"
 
 #include <simpson/verify/gappa_run.hpp>
 #include <simpson/verify/global_roundoff.hpp>
 #include <simpson/verify/paper_table.hpp>
 #include <simpson/verify/paper_reading.hpp>
-#include <simpson/verify/printed_table1.hpp>
 #include <simpson/verify/stepper_roundoff.hpp>
 #include <simpson/verify/table1_conventions.hpp>
 

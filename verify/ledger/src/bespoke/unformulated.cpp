@@ -1,12 +1,12 @@
 // Prose the paper states without a formula: the abstract's unqualified "explicit" (its "stable" is a record of
 // the unconditional-stability shape), and the conventions Section 8 states (and those it leaves unstated).
 
+#include <simpson/verify/table1_reader.hpp>
 #include "claim_support.hpp"
 #include "bespoke_checks.hpp"
 #include <simpson/verify/readable_math.hpp>
 
 #include <simpson/verify/paper_reading.hpp>
-#include <simpson/verify/printed_table1.hpp>
 #include <simpson/verify/quoted_words.hpp>
 #include <simpson/verify/table1_conventions.hpp>
 

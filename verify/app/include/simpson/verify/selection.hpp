@@ -11,7 +11,7 @@
 namespace simpson::verify {
 
 /// The experiment sections by name, in the order a run computes them.
-std::vector<std::string> section_names();
+std::vector<std::string> section_names(const std::vector<const experiment_section*>& registry);
 
 struct scene_selection {
   std::optional<std::vector<std::string>> claims;    // --claims: ids (spaces around them ignored)

@@ -80,7 +80,7 @@ std::string tally_text(const entry_tally& t);
 std::vector<computed_entry> table1_under(const convention_choice& choice, const parameter_values& values, table1_basis_cache* cache = nullptr);
 
 /// The exact solution the text states for the experiment, q(t) = amplitude sin(ω t + phase) with
-/// ω = 2π/period (read from the text: printed_table1.hpp, read_stated_solution); m is unstated (1).
+/// ω = 2π/period (read from the text by the book: table1_reader.hpp, read_stated_solution); m is unstated (1).
 struct table1_stated {
   double amplitude = 1, phase = 0, period = 1;
 };

@@ -11,6 +11,8 @@
 #include <simpson/verify/claims_file.hpp>
 #include <simpson/verify/paper_reading.hpp>
 #include <simpson/verify/paper_source.hpp>
+#include <simpson/verify/table1_reader.hpp>
+#include <simpson/verify/the_paper.hpp>
 
 #include <memory>
 #include <optional>
@@ -27,6 +29,12 @@ struct claim_book {
   std::shared_ptr<const claim_declarations> declarations;   // never null
   std::vector<claim_record> records;
   std::vector<claim> claims;
+  /// The formulas its checks read from the document by name (paper_reading::formulas): the paper's
+  /// (printed_formula_locations()) for a book that checks the paper, none for a note's.
+  std::vector<formula_location> formulas;
+  /// The experiment sections a scene run with this book may ask for, in the order a run computes
+  /// them: the registry the app iterates (experiment_section.hpp; experiment_sections() below).
+  std::vector<const experiment_section*> sections;
   /// Whether any record says what its verdict is expected to be: a guard against regressions. A file
   /// whose records say none validates its document (every claim is to hold).
   bool guards = false;

@@ -36,7 +36,8 @@ paper_provenance read_provenance(const paper_source& paper);
 std::vector<std::string> citations_in_sentence(const paper_source& paper, int line, const std::string& span_text);
 
 /// A display kept in the comments: its \label and the line of its first line in the source, and the
-/// block uncommented (from "\moneq \label{...}" or "\begin{equation}" to its end).
+/// block uncommented (from "\begin{equation}\label{...}", or a macro of the source that opens one,
+/// to its end).
 struct earlier_display {
   std::string label;
   int line = 0;

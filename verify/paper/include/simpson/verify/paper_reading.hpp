@@ -1,7 +1,8 @@
 #pragma once
-// The formulas the ledger reads from the paper (printed sides), each with where it was found, its
-// TeX and the parsed expression. One table names them; a label or anchor that is missing, or a
-// formula the reader cannot parse, is an error naming the label, the line and the token.
+// A document read: its TeX, once, and the formulas a book names (printed sides), each with where it
+// was found, its TeX and the parsed expression. The book's table names them (a list of
+// formula_location); a label or anchor that is missing, or a formula the reader cannot parse, is an
+// error naming the label, the line and the token.
 
 #include <simpson/verify/paper_source.hpp>
 #include <simpson/verify/tex_document.hpp>
@@ -36,11 +37,8 @@ struct formula_location {
   std::vector<int> sides{-1};    // indices of relation_sides(); negative counts from the end
 };
 
-/// The formulas the ledger reads, in the order of the paper.
-const std::vector<formula_location>& printed_formula_locations();
-
 struct paper_reading {
-  std::string origin;  // "embedded" or the file read
+  std::string origin;  // the file read, or "embedded"
   std::string sha256;  // of the source's bytes
   paper_source source; // the text read (the prose claims quote their sentences from it)
   std::shared_ptr<const tex_document> document;  // the source read as TeX, once
@@ -48,15 +46,14 @@ struct paper_reading {
   const printed_formula& at(const std::string& name) const;
 };
 
-/// A document other than the paper, read as TeX (its claims read their formulas themselves): no
-/// formula of printed_formula_locations(). Throws std::invalid_argument naming the document's line
-/// when its TeX does not read.
+/// A document read as TeX, no formula named (its claims read their formulas themselves). Throws
+/// std::invalid_argument naming the document's line when its TeX does not read.
 paper_reading read_note(const paper_source& source);
 
-/// Reads every formula of printed_formula_locations() from the paper, in paper_symbols(), `declared`
-/// (the paper's claims file's [symbols]) deciding what TeX leaves open. Throws
-/// std::invalid_argument with one line naming the paper, the label (or anchor), the line and the
-/// construct when one is missing or does not read.
-paper_reading read_paper(const paper_source& paper, const tex_declarations& declared);
+/// Reads the document and every formula of `formulas` from it, in paper_symbols(), `declared` (its
+/// claims file's [symbols]) deciding what TeX leaves open. Throws std::invalid_argument with one
+/// line naming the document, the label (or anchor), the line and the construct when one is missing
+/// or does not read.
+paper_reading read_paper(const paper_source& paper, const tex_declarations& declared, const std::vector<formula_location>& formulas);
 
 }  // namespace simpson::verify

@@ -1,8 +1,8 @@
 #pragma once
-// The paper's LaTeX source as an input: the embedded copy of the GSI 2023 text, or another version
-// given by --paper (a revised preprint, a corrected copy). Displays are found by their \label, or,
-// when unlabelled, by a stable anchor in the prose just before them. Comment lines (%, including
-// the older Φ₃ the source keeps in comments) are not part of the text.
+// A document's LaTeX source as an input: a paper or a note, read from a file (the book embeds the
+// paper it checks: the_paper.hpp). Displays are found by their \label, or, when unlabelled, by a
+// stable anchor in the prose just before them. Comment lines (%, including an earlier display a
+// source keeps in comments) are not part of the text.
 
 #include <cstddef>
 #include <optional>
@@ -12,7 +12,7 @@
 namespace simpson::verify {
 
 struct paper_source {
-  std::string origin;  // "embedded" or the file's path
+  std::string origin;  // the file's path, or "embedded" for a book's compiled-in copy
   std::string text;    // with comments blanked out (line numbers kept)
   std::string sha256;  // of the source's bytes as read (report.json's environment)
   std::string raw;     // the source as read, comments included (the earlier text kept in them)
@@ -20,17 +20,18 @@ struct paper_source {
 
 /// One display of the paper: where it was found and its TeX, from after its \label to its end.
 struct tex_display {
-  std::string locator;  // "label Phi3" or "anchor 'can be factorized'"
+  std::string locator;  // "label eq:step" or "anchor 'can be factorized'"
   int line = 0;         // 1-based line of the display's first math line
   std::string tex;      // the math, on one line, comments removed
 };
 
-/// The embedded copy (verify/paper/text/simpson-symplectic-gsi2023.tex, compiled in).
-paper_source embedded_paper();
+/// A LaTeX source read from a file, comments blanked out (line numbers kept); `what` ("paper",
+/// "document") names it in errors. Throws std::invalid_argument naming the file when it is missing,
+/// a directory, unreadable or empty.
+paper_source load_source(const std::string& path, const std::string& what);
 
-/// A paper read from a file. Throws std::invalid_argument naming the file when it is missing,
-/// unreadable, or not this paper (it must carry the title and the \label of Φ₃).
-paper_source load_paper(const std::string& path);
+/// A source given as text (a book's embedded copy), `origin` naming it.
+paper_source source_from_text(const std::string& origin, const std::string& text);
 
 /// A document other than the paper (a note checked with its own claims file), read as the paper
 /// is, comments blanked out. Throws std::invalid_argument naming the file when it is missing,

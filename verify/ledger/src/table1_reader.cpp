@@ -1,6 +1,6 @@
-// Table 1 as printed: see printed_table1.hpp.
+// Table 1 as printed, and the solution the text states for it: see table1_reader.hpp.
 
-#include <simpson/verify/printed_table1.hpp>
+#include <simpson/verify/table1_reader.hpp>
 
 #include <simpson/verify/quoted_sentence.hpp>
 #include <simpson/verify/tex_math.hpp>
