@@ -131,8 +131,9 @@ struct relative_change : observer {
     if (keep_samples) at_samples.push_back(j == 0 ? Real(0) : last);
     if (j > 0) window_maximum = Real(0);
   }
-  /// The largest since the last sample, read before that sample resets it (a window's maximum is
-  /// read in the sample hook of an observer declared after this one, or before the window closes).
+  /// The relative change at y, the run's largest and the window's largest updated. The window closes
+  /// in this observer's sample hook: an observer that reads window_maximum at a sample is passed to
+  /// integrate_n_steps before this one, so that its hook runs first.
   template <class State>
   void take(const State& y) {
     using std::abs;
