@@ -102,35 +102,12 @@ std::pair<std::string, one_step_matrix<symbolic>> gauss_legendre_entry(int s) {
   return {"Gauss–Legendre, " + std::to_string(s) + " stage" + (s == 1 ? " (implicit midpoint)" : "s"), gauss_legendre_map(s)};
 }
 
-}  // namespace
-
-std::string piece_text(const stable_piece& p) {
-  if (p.from_closed && p.to_closed && p.from == p.to) return "{" + p.from + "}";
-  return std::string(p.from_closed ? "[" : "(") + p.from + ", " + (p.to.empty() ? "∞" : p.to) + (p.to_closed ? "]" : ")");
-}
-
-std::vector<quadrature_rule> family_rules(int s) {
-  std::vector<quadrature_rule> out;
-  for (int k = 2; k <= s + 2; ++k) out.push_back({quadrature_family::newton_cotes, k});
-  for (int k = 2; k <= s + 2; ++k) out.push_back({quadrature_family::lobatto, k});
-  for (int k = 1; k <= s + 1; ++k) out.push_back({quadrature_family::gauss, k});
-  return out;
-}
-
-std::string member_name(const galerkin_member& m) { return "s = " + std::to_string(m.degree) + ", " + rule_name(m.rule); }
-
-member_analysis analyse_member(const galerkin_member& member, long budget_degree, run_memo* memo) {
-  const auto start = std::chrono::steady_clock::now();
-  member_analysis out;
-  out.member = member;
-  const int s = member.degree;
-  if (s < 1) throw std::invalid_argument("the interpolant's degree must be at least 1");
-  const std::vector<rational> mu = quadrature_moments(member.rule, 2 * s);
-  const std::vector<tau_polynomial> phi = basis(s);
+/// 1. L_h = (1/2θ) xᵀ K x with K = T − θ² M (m = ω = 1, h = θ): Σ_k w_k h [½ (q'/h)² − ½ q²]; K, and
+/// the evidence of the basis, K and the rule's moments.
+std::vector<std::vector<symbolic>> discrete_lagrangian(const std::vector<tau_polynomial>& phi, const std::vector<rational>& mu,
+                                                       member_analysis& out) {
   const std::size_t n = phi.size();
   const symbolic theta = symbolic::variable(), x = theta * theta;
-
-  // 1. L_h = (1/2θ) xᵀ K x with K = T − θ² M (m = ω = 1, h = θ): Σ_k w_k h [½ (q'/h)² − ½ q²].
   std::vector<std::vector<symbolic>> K(n, std::vector<symbolic>(n));
   json lagrangian = json::array();
   for (std::size_t i = 0; i < n; ++i) {
@@ -150,14 +127,19 @@ member_analysis analyse_member(const galerkin_member& member, long budget_degree
                                             for (const rational& v : mu) m.push_back(simpson::to_string(v));
                                             return m;
                                           }()}};
+  return K;
+}
 
-  // 2–3. dL_h/d(internal) = 0, eliminated one internal unknown at a time (a Schur complement).
+/// 2–3. dL_h/d(internal) = 0, eliminated one internal unknown at a time (a Schur complement): K
+/// reduced in place to its (q_j, q_{j+1}) block; false, with out.failure, where the rule cannot fix an
+/// internal unknown or the elimination passes the budget.
+bool eliminate_internal(std::vector<std::vector<symbolic>>& K, long budget_degree, member_analysis& out) {
+  const std::size_t n = K.size();
   for (std::size_t k = n; k-- > 2;) {
     if (K[k][k].is_zero()) {
       out.failure = "internal system singular: the rule cannot fix internal degree of freedom " + std::to_string(k - 1) +
                     " (too few quadrature points for the degree)";
-      out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      return out;
+      return false;
     }
     for (std::size_t i = 0; i < k; ++i) {
       if (K[i][k].is_zero()) continue;
@@ -171,20 +153,16 @@ member_analysis analyse_member(const galerkin_member& member, long budget_degree
     if (largest > budget_degree) {
       out.failure = "stopped at the budget: the elimination reached degree " + std::to_string(largest) + " in θ (budget " +
                     std::to_string(budget_degree) + ")";
-      out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      return out;
+      return false;
     }
   }
-  const symbolic S00 = K[0][0], S01 = K[0][1], S10 = K[1][0], S11 = K[1][1];
-  if (S01.is_zero()) {
-    out.failure = "the reduced Lagrangian does not couple q_j and q_{j+1}: no one-step map";
-    return out;
-  }
-  out.evidence["reduced_lagrangian"] = {{"form", "L_h(q_j, q_{j+1}) = (1/(2 theta)) (S00 q_j^2 + 2 S01 q_j q_{j+1} + S11 q_{j+1}^2)"},
-                                        {"S00", text(S00)}, {"S01", text(S01)}, {"S11", text(S11)},
-                                        {"symmetric", (S01 - S10).is_zero()}};
+  return true;
+}
 
-  // 4. p_j = −∂L_h/∂q_j = −(S00 q_j + S01 q_{j+1})/θ solved for q_{j+1}; p_{j+1} = ∂L_h/∂q_{j+1}.
+/// 4. p_j = −∂L_h/∂q_j = −(S00 q_j + S01 q_{j+1})/θ solved for q_{j+1}; p_{j+1} = ∂L_h/∂q_{j+1}: Φ, with
+/// its entries as text and as coefficients.
+one_step_matrix<symbolic> one_step_map_of(const symbolic& S00, const symbolic& S01, const symbolic& S11, member_analysis& out) {
+  const symbolic theta = symbolic::variable();
   one_step_matrix<symbolic> map{reduced((symbolic(0) - S11) / S01), reduced((S01 * S01 - S00 * S11) / (theta * S01)),
                                 reduced((symbolic(0) - theta) / S01), reduced((symbolic(0) - S00) / S01)};
   out.alpha = text(map.alpha);
@@ -200,9 +178,12 @@ member_analysis analyse_member(const galerkin_member& member, long budget_degree
   for (std::size_t k = 0; k < 4; ++k) out.map_coefficients[k] = {coefficients(entries[k]->numerator()), coefficients(entries[k]->denominator())};
   out.size = std::max({size_of(map.alpha), size_of(map.beta), size_of(map.gamma), size_of(map.delta)});
   out.derived = true;
+  return map;
+}
 
-  // det Φ = 1 and the conserved form W, as polynomial identities over Φ's common denominator d:
-  // Φ = P/d, det Φ = 1 ⇔ det P = d², and with W = V/d, ΦᵀWΦ = W ⇔ PᵀVP = d² V.
+/// det Φ = 1 and the conserved form W, as polynomial identities over Φ's common denominator d:
+/// Φ = P/d, det Φ = 1 ⇔ det P = d², and with W = V/d, ΦᵀWΦ = W ⇔ PᵀVP = d² V.
+void check_invariants(const one_step_matrix<symbolic>& map, member_analysis& out) {
   const polynomial d = lcm_of(lcm_of(map.alpha.denominator(), map.beta.denominator()),
                               lcm_of(map.gamma.denominator(), map.delta.denominator()));
   const auto over_d = [&](const symbolic& f) { return f.numerator() * (d / f.denominator()); };
@@ -218,10 +199,14 @@ member_analysis analyse_member(const galerkin_member& member, long budget_degree
                        is_zero(quad(Pb, Pd, Pb, Pd) - d2 * v_qq);
   out.evidence["conserved_form"] = {{"W", "[[-gamma, (alpha - delta)/2], [(alpha - delta)/2, beta]]"},
                                     {"Phi^T W Phi = W", out.form_conserved}};
+}
 
-  // Stability: the three-term scheme S01 q_{j−1} + (S00 + S11) q_j + S01 q_{j+1} = 0.
-  // Scaled by the entries' common denominator (the same characteristic roots), so that the
-  // analysis works on polynomials.
+/// Stability: the three-term scheme S01 q_{j−1} + (S00 + S11) q_j + S01 q_{j+1} = 0, scaled by the
+/// entries' common denominator (the same characteristic roots), so that the analysis works on
+/// polynomials; its discriminant, each root's endpoint decided, and the stable set of ωh.
+void analyse_stability(const symbolic& S00, const symbolic& S01, const symbolic& S11, const one_step_matrix<symbolic>& map,
+                       member_analysis& out) {
+  const symbolic theta = symbolic::variable();
   const polynomial common = lcm_of(lcm_of(S00.denominator(), S01.denominator()), S11.denominator());
   const symbolic a_poly(S01.numerator() * (common / S01.denominator()), make_polynomial({rational(1)}));
   const symbolic b_poly(S00.numerator() * (common / S00.denominator()) + S11.numerator() * (common / S11.denominator()),
@@ -302,8 +287,10 @@ member_analysis analyse_member(const galerkin_member& member, long budget_degree
     out.stable_set.push_back(piece);
     i = j + 1;
   }
+}
 
-  // Order: (2 cos θ − tr Φ)/h² = c θ^r / θ² + ..., the three-term scheme's truncation error on e^{iωt}.
+/// Order: (2 cos θ − tr Φ)/h² = c θ^r / θ² + ..., the three-term scheme's truncation error on e^{iωt}.
+void truncation_order(const one_step_matrix<symbolic>& map, member_analysis& out) {
   const symbolic trace = reduced(map.alpha + map.delta);
   const polynomial& N = trace.numerator();
   const polynomial& D = trace.denominator();
@@ -325,7 +312,10 @@ member_analysis analyse_member(const galerkin_member& member, long budget_degree
     out.evidence["truncation"] = {{"leading", simpson::to_string(c) + " omega^" + std::to_string(r) + " h^" + std::to_string(r - 2)},
                                   {"definition", "(q(t+h) - tr(Phi) q(t) + q(t-h))/h^2 on q = exp(i omega t), divided by q"}};
   }
+}
 
+/// The known schemes whose Φ is this one.
+void known_equalities(const one_step_matrix<symbolic>& map, int s, run_memo* memo, member_analysis& out) {
   static const std::vector<std::pair<std::string, one_step_matrix<symbolic>>> fixed = known_schemes();
   for (const auto& [name, known] : fixed) {
     if (same_map(map, known)) out.equals.push_back(name);
@@ -342,6 +332,51 @@ member_analysis analyse_member(const galerkin_member& member, long budget_degree
   for (const auto& [name, known] : by_degree) {
     if (same_map(map, known)) out.equals.push_back(name);
   }
+}
+
+}  // namespace
+
+std::string piece_text(const stable_piece& p) {
+  if (p.from_closed && p.to_closed && p.from == p.to) return "{" + p.from + "}";
+  return std::string(p.from_closed ? "[" : "(") + p.from + ", " + (p.to.empty() ? "∞" : p.to) + (p.to_closed ? "]" : ")");
+}
+
+std::vector<quadrature_rule> family_rules(int s) {
+  std::vector<quadrature_rule> out;
+  for (int k = 2; k <= s + 2; ++k) out.push_back({quadrature_family::newton_cotes, k});
+  for (int k = 2; k <= s + 2; ++k) out.push_back({quadrature_family::lobatto, k});
+  for (int k = 1; k <= s + 1; ++k) out.push_back({quadrature_family::gauss, k});
+  return out;
+}
+
+std::string member_name(const galerkin_member& m) { return "s = " + std::to_string(m.degree) + ", " + rule_name(m.rule); }
+
+member_analysis analyse_member(const galerkin_member& member, long budget_degree, run_memo* memo) {
+  const auto start = std::chrono::steady_clock::now();
+  member_analysis out;
+  out.member = member;
+  const int s = member.degree;
+  if (s < 1) throw std::invalid_argument("the interpolant's degree must be at least 1");
+  const std::vector<rational> mu = quadrature_moments(member.rule, 2 * s);
+  const std::vector<tau_polynomial> phi = basis(s);
+  std::vector<std::vector<symbolic>> K = discrete_lagrangian(phi, mu, out);
+  if (!eliminate_internal(K, budget_degree, out)) {
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return out;
+  }
+  const symbolic S00 = K[0][0], S01 = K[0][1], S10 = K[1][0], S11 = K[1][1];
+  if (S01.is_zero()) {
+    out.failure = "the reduced Lagrangian does not couple q_j and q_{j+1}: no one-step map";
+    return out;
+  }
+  out.evidence["reduced_lagrangian"] = {{"form", "L_h(q_j, q_{j+1}) = (1/(2 theta)) (S00 q_j^2 + 2 S01 q_j q_{j+1} + S11 q_{j+1}^2)"},
+                                        {"S00", text(S00)}, {"S01", text(S01)}, {"S11", text(S11)},
+                                        {"symmetric", (S01 - S10).is_zero()}};
+  const one_step_matrix<symbolic> map = one_step_map_of(S00, S01, S11, out);
+  check_invariants(map, out);
+  analyse_stability(S00, S01, S11, map, out);
+  truncation_order(map, out);
+  known_equalities(map, s, memo, out);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

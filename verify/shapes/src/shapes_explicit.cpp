@@ -79,34 +79,23 @@ std::vector<ex> square_hints(const ex& polynomial) {
   return hints;
 }
 
-}  // namespace
 
-/// "is an explicit scheme", as the field defines it: y_{j+1} follows from y_j with no equation to
-/// solve (Hairer, Nørsett and Wanner, I, II.1). On a linear problem the one-step map of such a
-/// scheme is a polynomial in the step (a finite chain of force evaluations and additions); a
-/// denominator that depends on the step is the inverse of a step equation that was solved. Decided
-/// entry by entry: GiNaC's normal form (its denominator free of the step), and our kernel's finite
-/// difference Δ^k in the step, zero exactly for a polynomial of degree < k (k one more than the
-/// numerator's degree). The sentence's hole {kind} says "explicit" or "implicit". The denominators'
-/// positivity (every step, the `positive` symbols positive) is what the words can mean instead: the
-/// map in closed form and regular; Coq checks each denominator's sign.
-decider_evidence explicit_map_shape(const shape_call& call, const run_context& ctx) {
-  shape_reader read(call, document_of(ctx));
-  const GiNaC::matrix map = as_square_matrix(read.formula("map"), reference_of(call, "map"));
-  const GiNaC::symbol step = read.symbols("step").front();
-  std::set<std::string> positive{step.get_name()};
-  std::vector<ex> positive_symbols{step};
-  if (read.has("positive")) {
-    for (const GiNaC::symbol& s : read.symbols("positive")) {
-      if (positive.insert(s.get_name()).second) positive_symbols.push_back(s);
-    }
-  }
-  const quoted_sentence said = quote(ctx, call.with.at("sentence").values.front());
-  const std::string stated = said.choice("kind", hole_named("kind").phrases);
-  const GiNaC::symbol delta("delta_step");
+/// The map read entry by entry: whether each is a polynomial in the step (GiNaC's normal form, and our
+/// kernel's finite difference), its denominators each once, whether each is positive by its terms,
+/// and the Coq goals of their signs.
+struct map_entries {
   bool polynomial = true, own_polynomial = true, own_decided = true, regular = true;
   std::vector<std::string> denominators, own_evidence;
   std::vector<proof_goal> goals;
+};
+
+map_entries read_map_entries(const GiNaC::matrix& map, const GiNaC::symbol& step, const std::set<std::string>& positive,
+                             const std::vector<ex>& positive_symbols) {
+  map_entries out;
+  bool &polynomial = out.polynomial, &own_polynomial = out.own_polynomial, &own_decided = out.own_decided, &regular = out.regular;
+  std::vector<std::string> &denominators = out.denominators, &own_evidence = out.own_evidence;
+  std::vector<proof_goal>& goals = out.goals;
+  const GiNaC::symbol delta("delta_step");
   GiNaC::exmap inside;
   for (const ex& s : positive_symbols) inside[s] = 1;
   for (unsigned r = 0; r < map.rows(); ++r) {
@@ -139,6 +128,92 @@ decider_evidence explicit_map_shape(const shape_call& call, const run_context& c
       }
     }
   }
+  return out;
+}
+
+/// Our kernel on each denominator with the other positive symbols at 1: its positive roots in the
+/// step by Sturm sequences. None, and positive at a step: it confirms GiNaC's sign read from the
+/// terms (which holds for every positive value, Coq checking each); a root refutes "for every step"
+/// there.
+struct own_signs {
+  std::optional<std::string> pole;
+  bool positive = true, applies = true;
+  std::vector<std::string> lines;
+  std::string at_text;  // " at ω = 1, ..." (the other positive symbols)
+};
+
+own_signs own_denominator_signs(const GiNaC::matrix& map, const GiNaC::symbol& step, const std::vector<ex>& positive_symbols) {
+  const std::string h = step.get_name();
+  own_signs out;
+  std::optional<std::string>& pole = out.pole;
+  bool &own_positive = out.positive, &own_applies = out.applies;
+  std::vector<std::string>& own_lines = out.lines;
+  GiNaC::exmap at_one;
+  for (const ex& p : positive_symbols) {
+    if (!p.is_equal(step)) at_one[p] = 1;
+  }
+  std::vector<ex> all_denominators;
+  for (unsigned r = 0; r < map.rows(); ++r) {
+    for (unsigned c = 0; c < map.cols(); ++c) {
+      const ex den = GiNaC::denom(GiNaC::normal(map(r, c)));
+      if (GiNaC::is_a<GiNaC::numeric>(den)) continue;
+      const ex primitive = GiNaC::factor(GiNaC::expand(den).primpart(step));
+      if (std::none_of(all_denominators.begin(), all_denominators.end(), [&](const ex& d) { return text_of(d) == text_of(primitive); })) {
+        all_denominators.push_back(primitive);
+      }
+    }
+  }
+  for (const ex& d : all_denominators) {
+    try {
+      const simpson::verify::polynomial at = as_polynomial(GiNaC::expand(d.subs(at_one)), step);
+      const std::vector<positive_root> roots = positive_roots(at);
+      const bool positive_somewhere = at.evaluate(rational(1)) > 0;
+      if (!roots.empty() && !pole) pole = fmt::format("{} = 0 at {} = {} (the other positive symbols 1)", text_of(d), h, root_text(roots.front()));
+      own_positive = own_positive && roots.empty() && positive_somewhere;
+      own_lines.push_back(fmt::format("{}: {} positive root{} in {} (Sturm sequences){}", text_of(d), roots.size(), roots.size() == 1 ? "" : "s", h,
+                                      roots.empty() ? (positive_somewhere ? ", positive" : ", negative") : ""));
+    } catch (const std::invalid_argument&) {  // a coefficient that is no rational number there
+      own_applies = false;
+    }
+  }
+  std::vector<std::string> ones;  // in the record's order
+  for (const ex& p : positive_symbols) {
+    if (!p.is_equal(step)) ones.push_back(text_of(p) + " = 1");
+  }
+  out.at_text = ones.empty() ? std::string() : fmt::format(" at {}", fmt::join(ones, ", "));
+  return out;
+}
+
+}  // namespace
+
+/// "is an explicit scheme", as the field defines it: y_{j+1} follows from y_j with no equation to
+/// solve (Hairer, Nørsett and Wanner, I, II.1). On a linear problem the one-step map of such a
+/// scheme is a polynomial in the step (a finite chain of force evaluations and additions); a
+/// denominator that depends on the step is the inverse of a step equation that was solved. Decided
+/// entry by entry: GiNaC's normal form (its denominator free of the step), and our kernel's finite
+/// difference Δ^k in the step, zero exactly for a polynomial of degree < k (k one more than the
+/// numerator's degree). The sentence's hole {kind} says "explicit" or "implicit". The denominators'
+/// positivity (every step, the `positive` symbols positive) is what the words can mean instead: the
+/// map in closed form and regular; Coq checks each denominator's sign.
+decider_evidence explicit_map_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const GiNaC::matrix map = as_square_matrix(read.formula("map"), reference_of(call, "map"));
+  const GiNaC::symbol step = read.symbols("step").front();
+  std::set<std::string> positive{step.get_name()};
+  std::vector<ex> positive_symbols{step};
+  if (read.has("positive")) {
+    for (const GiNaC::symbol& s : read.symbols("positive")) {
+      if (positive.insert(s.get_name()).second) positive_symbols.push_back(s);
+    }
+  }
+  const quoted_sentence said = quote(ctx, call.with.at("sentence").values.front());
+  const std::string stated = said.choice("kind", hole_named("kind").phrases);
+  const map_entries entries = read_map_entries(map, step, positive, positive_symbols);
+  const bool polynomial = entries.polynomial, own_polynomial = entries.own_polynomial, own_decided = entries.own_decided,
+             regular = entries.regular;
+  const std::vector<std::string>& denominators = entries.denominators;
+  const std::vector<std::string>& own_evidence = entries.own_evidence;
+  std::vector<proof_goal> goals = entries.goals;
   claim_result result;
   result.printed = read.printed();
   const std::string map_ref = reference_of(call, "map");
@@ -166,46 +241,11 @@ decider_evidence explicit_map_shape(const shape_call& call, const run_context& c
   const std::string denominators_text = fmt::format("{} {}", denominators.size() == 1 ? "denominator" : "denominators", fmt::join(denominators, ", "));
   if (stated == "explicit") {
     e.statement = "whether the map's denominators are positive for every step";
-    // Our kernel, on each denominator with the other positive symbols at 1: its positive roots in
-    // the step by Sturm sequences. None, and positive at a step: it confirms GiNaC's sign read from
-    // the terms (which holds for every positive value, Coq checking each); a root refutes "for every
-    // step" there.
-    GiNaC::exmap at_one;
-    for (const ex& p : positive_symbols) {
-      if (!p.is_equal(step)) at_one[p] = 1;
-    }
-    std::optional<std::string> pole;
-    bool own_positive = true, own_applies = true;
-    std::vector<std::string> own_lines;
-    std::vector<ex> all_denominators;
-    for (unsigned r = 0; r < map.rows(); ++r) {
-      for (unsigned c = 0; c < map.cols(); ++c) {
-        const ex den = GiNaC::denom(GiNaC::normal(map(r, c)));
-        if (GiNaC::is_a<GiNaC::numeric>(den)) continue;
-        const ex primitive = GiNaC::factor(GiNaC::expand(den).primpart(step));
-        if (std::none_of(all_denominators.begin(), all_denominators.end(), [&](const ex& d) { return text_of(d) == text_of(primitive); })) {
-          all_denominators.push_back(primitive);
-        }
-      }
-    }
-    for (const ex& d : all_denominators) {
-      try {
-        const simpson::verify::polynomial at = as_polynomial(GiNaC::expand(d.subs(at_one)), step);
-        const std::vector<positive_root> roots = positive_roots(at);
-        const bool positive_somewhere = at.evaluate(rational(1)) > 0;
-        if (!roots.empty() && !pole) pole = fmt::format("{} = 0 at {} = {} (the other positive symbols 1)", text_of(d), h, root_text(roots.front()));
-        own_positive = own_positive && roots.empty() && positive_somewhere;
-        own_lines.push_back(fmt::format("{}: {} positive root{} in {} (Sturm sequences){}", text_of(d), roots.size(), roots.size() == 1 ? "" : "s", h,
-                                        roots.empty() ? (positive_somewhere ? ", positive" : ", negative") : ""));
-      } catch (const std::invalid_argument&) {  // a coefficient that is no rational number there
-        own_applies = false;
-      }
-    }
-    std::vector<std::string> ones;  // in the record's order
-    for (const ex& p : positive_symbols) {
-      if (!p.is_equal(step)) ones.push_back(text_of(p) + " = 1");
-    }
-    const std::string at_text = ones.empty() ? std::string() : fmt::format(" at {}", fmt::join(ones, ", "));
+    const own_signs own = own_denominator_signs(map, step, positive_symbols);
+    const std::optional<std::string>& pole = own.pole;
+    const bool own_positive = own.positive, own_applies = own.applies;
+    const std::vector<std::string>& own_lines = own.lines;
+    const std::string& at_text = own.at_text;
     result.evidence["exact"]["ginac"] = regular ? fmt::format("holds: every denominator is positive for {} > 0 (its terms); {}", fmt::join(positive, ", "),
                                                               result.evidence["exact"]["ginac"].get<std::string>())
                                                 : fmt::format("not shown: a denominator's terms are not all positive; {}", result.evidence["exact"]["ginac"].get<std::string>());

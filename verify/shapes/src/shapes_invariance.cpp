@@ -430,28 +430,20 @@ decider_evidence invariance_singular_shape(const shape_call& call, const run_con
   return e;
 }
 
-/// "When α = δ, we obtain η = 0 and a conserved quadratic form Q_c = γp²/2 − βq²/2, up to a
-/// multiplicative constant": once the printed conditions are put in, the printed form's coefficients
-/// (the unknowns that make `form` the printed one) are in the kernel of the printed system, and the
-/// kernel is one-dimensional (rank n − 1), so every solution is a multiple of them; each printed
-/// `obtains` (η = 0) holds there. Kernel membership in both kernels and Coq; the rank by GiNaC and
-/// by our kernel's nonzero minor. An erratum's correction is the kernel of the system as derived
-/// (invariance-system): the printed form when it spans it, else a column of its adjugate.
-decider_evidence invariance_kernel_shape(const shape_call& call, const run_context& ctx) {
-  shape_reader read(call, document_of(ctx));
-  const ex printed_form = read.formula("printed");
-  const printed_system p = read_printed_system(call, read);
+/// The printed form's coefficients, solved from form = printed in every monomial of the state, with
+/// the conditions put in (v, and "u = value" for each unknown); `wrong` says why there are none when
+/// the printed form is not the form for one value of its coefficients.
+struct form_coefficients {
+  std::vector<ex> v;
+  std::vector<std::string> text;
+  std::string wrong;
+};
+
+form_coefficients printed_form_coefficients(const shape_call& call, const printed_system& p, const ex& printed_form) {
   const invariance_rows& d = p.d;
-  const solved_conditions& solved = p.solved;
   const std::vector<GiNaC::symbol>& state = p.state;
   const std::vector<GiNaC::symbol>& unknowns = p.unknowns;
   const std::string printed_ref = reference_of(call, "printed");
-  std::vector<std::pair<referenced_formula, std::vector<ex>>> obtains;
-  if (read.has("obtains")) {
-    for (const referenced_formula& f : read.equations("obtains")) obtains.emplace_back(f, read.sides(f));
-  }
-  claim_result result;
-  result.printed = read.printed();
   // The printed form's coefficients: form = printed in every monomial of the state.
   GiNaC::lst equations, names;
   const ex difference = GiNaC::expand(GiNaC::normal(p.form - printed_form));
@@ -476,16 +468,96 @@ decider_evidence invariance_kernel_shape(const shape_call& call, const run_conte
   if (wrong.empty() && (!determined || !GiNaC::normal(rest).is_zero())) {
     wrong = fmt::format("({}) is not ({}) for one value of its coefficients {}.", printed_ref, reference_of(call, "form"), fmt::join(call.with.at("unknowns").values, ", "));
   }
-  if (!wrong.empty()) {
-    result.note = wrong;
-    return beyond_reach(std::move(result));
-  }
-  std::vector<ex> v;
-  std::vector<std::string> v_text;
+  form_coefficients out;
+  out.wrong = wrong;
+  if (!wrong.empty()) return out;
+  std::vector<ex>& v = out.v;
+  std::vector<std::string>& v_text = out.text;
   for (std::size_t u = 0; u < unknowns.size(); ++u) {
-    v.push_back(GiNaC::normal(coefficients.op(u).rhs().subs(solved.values)));
+    v.push_back(GiNaC::normal(coefficients.op(u).rhs().subs(p.solved.values)));
     v_text.push_back(unknowns[u].get_name() + " = " + text_of(v.back()));
   }
+  return out;
+}
+
+/// The kernel of the system as derived there: the printed form's coefficients v when they are in it,
+/// else the first nonzero column of its adjugate.
+std::vector<ex> derived_kernel_vector(const GiNaC::matrix& derived_there, const std::vector<ex>& v, bool printed_in_derived) {
+  std::vector<ex> w = v;
+  if (printed_in_derived) return w;
+  for (unsigned j = 0; j < derived_there.rows(); ++j) {  // a nonzero column of the adjugate
+    std::vector<ex> column;
+    bool nonzero = false;
+    for (unsigned i = 0; i < derived_there.cols(); ++i) {
+      const ex cofactor = ((i + j) % 2 ? -1 : 1) * minor_matrix(normalised(derived_there), j, i).determinant(GiNaC::determinant_algo::laplace);
+      column.push_back(GiNaC::normal(cofactor));
+      nonzero = nonzero || !column.back().is_zero();
+    }
+    if (nonzero) {
+      w = column;
+      break;
+    }
+  }
+  return w;
+}
+
+/// The ranks found: the printed system's by GiNaC and by our kernel's minor, and the derived one's.
+json rank_evidence(const corank_one& printed_rank, const GiNaC::matrix& printed_there, const corank_one& derived_rank,
+                   const GiNaC::matrix& derived_there) {
+  return {
+      {"printed", printed_rank.ginac ? "n - 1 (GiNaC)" : fmt::format("{} (GiNaC), not {}", normalised(printed_there).rank(), printed_there.rows() - 1)},
+      {"own_minor", printed_rank.own.outcome == kernel_decision::result::nonzero ? "nonzero: " + printed_rank.own.evidence
+                                                                                : "not decided nonzero: " + printed_rank.own.evidence},
+      {"where", "rank n - 1 wherever the gcd of the (n - 1)-minors' numerators, " + printed_rank.where + ", is not zero"},
+      {"derived", derived_rank.ginac ? "n - 1 (GiNaC) wherever the gcd of the (n - 1)-minors' numerators, " + derived_rank.where + ", is not zero"
+                                     : fmt::format("{} (GiNaC), not {}", normalised(derived_there).rank(), derived_there.rows() - 1)}};
+}
+
+/// Where the printed system fails to give the printed form: its rows times the coefficients that are
+/// not 0 (the kernel is wrong), or the rank (the kernel too large), from the note already made.
+std::string where_printed_fails(const GiNaC::matrix& printed_there, const std::vector<ex>& v, const std::string& note) {
+  std::vector<std::string> rows_off;
+  for (unsigned k = 0; k < printed_there.rows(); ++k) {
+    ex row = 0;
+    for (unsigned u = 0; u < printed_there.cols(); ++u) row += printed_there(k, u) * v[u];
+    const ex value = GiNaC::factor(GiNaC::normal(row));
+    if (!value.is_zero()) rows_off.push_back(fmt::format("row {} gives {}", k + 1, text_of(value)));
+  }
+  const std::string printed_fails = !rows_off.empty()
+                                        ? fmt::format("the printed system times those coefficients is not 0 there: {}, not 0.", fmt::join(rows_off, ", "))
+                                    : note.rfind("As printed: ", 0) == 0 ? note.substr(12)
+                                                                               : std::string("the printed system does not determine them.");
+  return printed_fails;
+}
+
+/// "When α = δ, we obtain η = 0 and a conserved quadratic form Q_c = γp²/2 − βq²/2, up to a
+/// multiplicative constant": once the printed conditions are put in, the printed form's coefficients
+/// (the unknowns that make `form` the printed one) are in the kernel of the printed system, and the
+/// kernel is one-dimensional (rank n − 1), so every solution is a multiple of them; each printed
+/// `obtains` (η = 0) holds there. Kernel membership in both kernels and Coq; the rank by GiNaC and
+/// by our kernel's nonzero minor. An erratum's correction is the kernel of the system as derived
+/// (invariance-system): the printed form when it spans it, else a column of its adjugate.
+decider_evidence invariance_kernel_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const ex printed_form = read.formula("printed");
+  const printed_system p = read_printed_system(call, read);
+  const invariance_rows& d = p.d;
+  const solved_conditions& solved = p.solved;
+  const std::vector<GiNaC::symbol>& unknowns = p.unknowns;
+  const std::string printed_ref = reference_of(call, "printed");
+  std::vector<std::pair<referenced_formula, std::vector<ex>>> obtains;
+  if (read.has("obtains")) {
+    for (const referenced_formula& f : read.equations("obtains")) obtains.emplace_back(f, read.sides(f));
+  }
+  claim_result result;
+  result.printed = read.printed();
+  const form_coefficients coefficients = printed_form_coefficients(call, p, printed_form);
+  if (!coefficients.wrong.empty()) {
+    result.note = coefficients.wrong;
+    return beyond_reach(std::move(result));
+  }
+  const std::vector<ex>& v = coefficients.v;
+  const std::vector<std::string>& v_text = coefficients.text;
   const auto obtained_at = [&](const std::vector<ex>& at, std::vector<std::string>& failing) {
     GiNaC::exmap put;
     for (std::size_t u = 0; u < unknowns.size(); ++u) put[unknowns[u]] = at[u];
@@ -498,23 +570,8 @@ decider_evidence invariance_kernel_shape(const shape_call& call, const run_conte
   const GiNaC::matrix printed_there = substituted(p.coefficients, solved.values), derived_there = substituted(d.derived, solved.values);
   // The system as derived: its kernel there, the printed form's coefficients when they are in it.
   const corank_one derived_rank = decide_corank_one(derived_there);
-  std::vector<ex> w = v;
   const bool printed_in_derived = is_zero_expression(GiNaC::normal(rows_times(d.monomials, derived_there, v)));
-  if (!printed_in_derived) {
-    for (unsigned j = 0; j < derived_there.rows(); ++j) {  // a nonzero column of the adjugate
-      std::vector<ex> column;
-      bool nonzero = false;
-      for (unsigned i = 0; i < derived_there.cols(); ++i) {
-        const ex cofactor = ((i + j) % 2 ? -1 : 1) * minor_matrix(normalised(derived_there), j, i).determinant(GiNaC::determinant_algo::laplace);
-        column.push_back(GiNaC::normal(cofactor));
-        nonzero = nonzero || !column.back().is_zero();
-      }
-      if (nonzero) {
-        w = column;
-        break;
-      }
-    }
-  }
+  const std::vector<ex> w = derived_kernel_vector(derived_there, v, printed_in_derived);
   // The form with those coefficients is conserved: form(map y) − form(y) as written, w and the
   // conditions put in (the derived rows times w, in the tree Coq checks).
   GiNaC::exmap at_w;
@@ -537,13 +594,7 @@ decider_evidence invariance_kernel_shape(const shape_call& call, const run_conte
   std::vector<std::string> v_failing;
   const bool v_obtains = obtained_at(v, v_failing);
   found.evidence["exact"]["conditions_solved"] = solved.text;
-  found.evidence["exact"]["rank"] = {
-      {"printed", printed_rank.ginac ? "n - 1 (GiNaC)" : fmt::format("{} (GiNaC), not {}", normalised(printed_there).rank(), printed_there.rows() - 1)},
-      {"own_minor", printed_rank.own.outcome == kernel_decision::result::nonzero ? "nonzero: " + printed_rank.own.evidence
-                                                                                : "not decided nonzero: " + printed_rank.own.evidence},
-      {"where", "rank n - 1 wherever the gcd of the (n - 1)-minors' numerators, " + printed_rank.where + ", is not zero"},
-      {"derived", derived_rank.ginac ? "n - 1 (GiNaC) wherever the gcd of the (n - 1)-minors' numerators, " + derived_rank.where + ", is not zero"
-                                     : fmt::format("{} (GiNaC), not {}", normalised(derived_there).rank(), derived_there.rows() - 1)}};
+  found.evidence["exact"]["rank"] = rank_evidence(printed_rank, printed_there, derived_rank, derived_there);
   found.evidence["exact"]["derived_kernel"] = w_text;
   const bool own_rank = printed_rank.own.outcome == kernel_decision::result::nonzero;
   if (e.found_holds() && (!printed_rank.ginac || !v_obtains)) {
@@ -582,17 +633,7 @@ decider_evidence invariance_kernel_shape(const shape_call& call, const run_conte
     derived.found.remark_kind = finding::derivation_gap;
     // Where the printed system fails: its rows times the coefficients that are not 0 (the kernel is
     // wrong), or the rank (the kernel too large).
-    std::vector<std::string> rows_off;
-    for (unsigned k = 0; k < printed_there.rows(); ++k) {
-      ex row = 0;
-      for (unsigned u = 0; u < printed_there.cols(); ++u) row += printed_there(k, u) * v[u];
-      const ex value = GiNaC::factor(GiNaC::normal(row));
-      if (!value.is_zero()) rows_off.push_back(fmt::format("row {} gives {}", k + 1, text_of(value)));
-    }
-    const std::string printed_fails = !rows_off.empty()
-                                          ? fmt::format("the printed system times those coefficients is not 0 there: {}, not 0.", fmt::join(rows_off, ", "))
-                                      : found.note.rfind("As printed: ", 0) == 0 ? found.note.substr(12)
-                                                                                 : std::string("the printed system does not determine them.");
+    const std::string printed_fails = where_printed_fails(printed_there, v, found.note);
     derived.found.remark = fmt::format("The conclusion holds: {}. The gap is {}: with it {}", correction, entries_differing(p.coefficients, d.derived),
                                        printed_fails);
     derived.found.amendments.push_back(amendment_in_words("the system the conclusion is derived from", "the printed system",

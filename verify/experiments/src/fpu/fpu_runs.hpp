@@ -1,8 +1,10 @@
 #pragma once
-// The fpu section's runs of the chain (fpu_section.cpp): each method's step on the chain, counting
-// its force evaluations, and one run to an end time with H and the oscillatory energies sampled.
+// The fpu section's runs of the chain (fpu_section.cpp): a method of the sections' list
+// (integration_methods.hpp) run by the driver (integration_driver.hpp) to an end time, its force
+// evaluations counted, H and the oscillatory energies sampled.
 
 #include <simpson/verify/fpu_section.hpp>
+#include <simpson/verify/integration_methods.hpp>
 #include <simpson/verify/result_model.hpp>
 
 #include <simpson/fpu_chain.hpp>
@@ -15,9 +17,11 @@ namespace simpson::verify::detail {
 
 using system_type = separable_system<double, fpu_potential<double>>;
 
-enum class fpu_method { simpson, stormer_verlet, implicit_midpoint, gauss_legendre_2, trigonometric };
-constexpr std::array<fpu_method, 5> fpu_methods{fpu_method::simpson, fpu_method::stormer_verlet, fpu_method::implicit_midpoint,
-                                                fpu_method::gauss_legendre_2, fpu_method::trigonometric};
+/// The methods the section runs on the chain, from the sections' one list (integration_methods.hpp),
+/// in the order its tables list them.
+inline constexpr std::array<const integration_method*, 5> chain_methods{
+    &method_of(method_id::simpson), &method_of(method_id::stormer_verlet), &method_of(method_id::implicit_midpoint),
+    &method_of(method_id::gauss_legendre_2), &method_of(method_id::trigonometric)};
 
 /// One run: H and the I_j sampled over time, the largest relative errors, and how it ended.
 struct chain_run {
@@ -35,6 +39,6 @@ struct chain_run {
 
 /// Runs to `end_time` with ωh = omega_h, sampling `samples` times; stops at a state beyond 10³ (the
 /// chain's displacements are of order 1: unstable) or a Newton failure.
-chain_run run_chain(fpu_method m, const system_type& s, const fpu_settings& settings, double omega_h, double end_time, int samples);
+chain_run run_chain(const integration_method& m, const system_type& s, const fpu_settings& settings, double omega_h, double end_time, int samples);
 
 }  // namespace simpson::verify::detail

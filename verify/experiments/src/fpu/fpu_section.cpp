@@ -9,17 +9,13 @@
 
 #include "fpu_runs.hpp"
 #include "stability_parts.hpp"
-#include "../nonlinear/counting_potential.hpp"
 
+#include <simpson/verify/integration_methods.hpp>
 #include <simpson/verify/interruption.hpp>
 #include <simpson/verify/progress.hpp>
 #include <simpson/verify/scheme_style.hpp>
 
-#include <simpson/energy.hpp>
 #include <simpson/fpu_chain.hpp>
-#include <simpson/nonlinear_ndof_step.hpp>
-#include <simpson/runge_kutta_tableaux.hpp>
-#include <simpson/trigonometric_step.hpp>
 
 #include <simpson/scheme.hpp>
 
@@ -29,58 +25,17 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
-#include <numeric>
 #include <optional>
 #include <stdexcept>
 
 namespace simpson::verify {
 namespace {
 
+using detail::chain_methods;
 using detail::chain_run;
-using detail::fpu_method;
-using detail::fpu_methods;
 using detail::run_chain;
 using detail::system_type;
-
-std::string name_of(fpu_method m) {
-  switch (m) {
-    case fpu_method::simpson: return "simpson";
-    case fpu_method::stormer_verlet: return "stormer-verlet";
-    case fpu_method::implicit_midpoint: return "implicit-midpoint";
-    case fpu_method::gauss_legendre_2: return "gauss-legendre-2";
-    case fpu_method::trigonometric: return "trigonometric";
-  }
-  return "";
-}
-
-/// Each method drawn as the scheme it equals on the oscillator: the implicit midpoint rule is Newmark's
-/// average acceleration there (the same matrix), so it takes Newmark's style.
-scheme_style style_for(fpu_method m) {
-  switch (m) {
-    case fpu_method::simpson: return style_of(scheme_id::simpson);
-    case fpu_method::stormer_verlet: return style_of(scheme_id::stormer_verlet);
-    case fpu_method::implicit_midpoint: return style_of(scheme_id::newmark);
-    case fpu_method::gauss_legendre_2: return style_of(scheme_id::gauss_legendre_2);
-    case fpu_method::trigonometric: return {9, 12, line_style::lines_points, 1};  // black, open diamonds: no oscillator scheme of ours
-  }
-  return style_of(scheme_id::simpson);
-}
-
-/// The oscillator's scheme each method is there (its 2 × 2 matrix): the implicit midpoint rule is
-/// Newmark's average acceleration.
-scheme_id linear_scheme(fpu_method m) {
-  switch (m) {
-    case fpu_method::simpson: return scheme_id::simpson;
-    case fpu_method::stormer_verlet: return scheme_id::stormer_verlet;
-    case fpu_method::implicit_midpoint: return scheme_id::newmark;
-    case fpu_method::gauss_legendre_2: return scheme_id::gauss_legendre_2;
-    case fpu_method::trigonometric: break;  // the stiff springs' exact flow: resonant_steps takes cos θ = cos ωh
-  }
-  return scheme_id::simpson;
-}
-
 /// A step-size resonance: an ωh at which a method's rotation angle on the stiff springs is θ = 2π/k.
 struct resonance {
   double omega_h;
@@ -92,10 +47,11 @@ struct resonance {
 /// the oscillatory energy (chapter XIII: near-conservation of I asks |sin(jθ/2)| bounded away from 0
 /// for small j). Sign changes of tr Φ/2 − cos(2π/k) on a grid of 0.001, each refined by bisection in
 /// double; a sign change across a pole of tr Φ (not a root) is recognised and left out.
-std::vector<resonance> resonant_steps(fpu_method m, const std::vector<int>& orders, double last) {
-  const auto cos_theta = [m](double omega_h) {
-    if (m == fpu_method::trigonometric) return std::cos(omega_h);  // exact on the stiff springs: θ = ωh
-    const one_step_matrix<double> phi = stepper<double>(linear_scheme(m), oscillator_parameters<double>{1, 1, omega_h}).matrix();
+std::vector<resonance> resonant_steps(const integration_method& m, const std::vector<int>& orders, double last) {
+  const auto cos_theta = [&m](double omega_h) {
+    if (!m.on_oscillator) return std::cos(omega_h);  // the trigonometric method, exact on the stiff springs: θ = ωh
+    // The scheme it is on the oscillator: the implicit midpoint rule is Newmark's average acceleration.
+    const one_step_matrix<double> phi = stepper<double>(*m.on_oscillator, oscillator_parameters<double>{1, 1, omega_h}).matrix();
     return (phi.alpha + phi.delta) / 2;
   };
   std::vector<resonance> out;
@@ -127,15 +83,15 @@ std::string resonance_text(int k) { return k % 2 == 0 ? fmt::format("θ = π/{}"
 /// of an endpoint is predicted: the soft springs' curvature 12 d² (d, their elongation, of order 1)
 /// beside the stiff springs' ω² = 2500 shifts the stiff frequency by about half a percent, so ωh by
 /// at most 0.025 up to ωh = 5; 0.05 is twice that.
-std::optional<bool> predicted_stable(fpu_method m, const stability_report& region, double omega_h) {
-  switch (m) {
-    case fpu_method::implicit_midpoint:
-    case fpu_method::gauss_legendre_2:
-    case fpu_method::trigonometric: return true;
-    case fpu_method::stormer_verlet:
+std::optional<bool> predicted_stable(const integration_method& m, const stability_report& region, double omega_h) {
+  switch (m.id) {
+    case method_id::implicit_midpoint:
+    case method_id::gauss_legendre_2:
+    case method_id::trigonometric: return true;
+    case method_id::stormer_verlet:
       if (std::abs(omega_h - 2) < 0.05) return std::nullopt;
       return omega_h < 2;
-    case fpu_method::simpson:
+    case method_id::simpson:
       for (const positive_root& root : region.roots) {
         if (std::abs(std::sqrt(root.low.convert_to<double>()) - omega_h) < 0.05) return std::nullopt;
       }
@@ -144,6 +100,9 @@ std::optional<bool> predicted_stable(fpu_method m, const stability_report& regio
         const double to = band.to ? std::sqrt(band.to->low.convert_to<double>()) : INFINITY;
         if (omega_h > from && omega_h < to) return band.stable;
       }
+      break;
+    case method_id::yoshida:
+    case method_id::rk4: break;  // not run on the chain
   }
   return std::nullopt;
 }
@@ -196,18 +155,8 @@ std::optional<double> equal_cost_step(const std::vector<scanned_cost>& scanned, 
   return std::nullopt;
 }
 
-}  // namespace
-
-fpu_run_summary run_fpu_chain(const fpu_settings& s, const std::string& method, double omega_h, double end_time) {
-  const auto m = std::find_if(fpu_methods.begin(), fpu_methods.end(), [&](fpu_method k) { return name_of(k) == method; });
-  if (m == fpu_methods.end()) throw std::invalid_argument("run_fpu_chain: unknown method '" + method + "'");
-  const system_type chain = fpu_system(s.m, s.omega);
-  const chain_run r = run_chain(*m, chain, s, omega_h, end_time, 100);
-  return {r.max_energy_error, r.max_invariant_error, r.invariant_drift, r.max_discrete_invariant_error, r.discrete_invariant_drift,
-          r.steps, r.status.value()};
-}
-
-section_result run_fpu(const fpu_settings& s) {
+/// The section's title, conventions and the chain described.
+section_result fpu_intro(const fpu_settings& s) {
   section_result out;
   out.name = "fpu";
   out.title = fmt::format("A stiff problem: the Fermi–Pasta–Ulam–Tsingou chain (m = {}, ω = {})", s.m, s.omega);
@@ -219,8 +168,6 @@ section_result run_fpu(const fpu_settings& s) {
                      {"scan_end_time", s.scan_end_time},
                      {"resonances", s.resonances},
                      {"samples", s.samples}};
-  const system_type chain = fpu_system(s.m, s.omega);
-  const stability_report region = simpson_exact_region();
   out.text(fmt::format(
       "Hairer, Lubich and Wanner's chain (Geometric Numerical Integration, §I.5.1): {} unit masses, stiff linear springs "
       "of frequency ω = {} inside each pair, soft cubic springs between the pairs and to the walls, their start "
@@ -230,8 +177,36 @@ section_result run_fpu(const fpu_settings& s) {
       "1, so every h here resolves it). Computed in double; each implicit step is solved by Newton's method to 16 eps of "
       "its terms, from the same start.",
       2 * s.m, s.omega));
+  return out;
+}
 
-  // The runs followed over time.
+/// The reference for the exchange: Gauss–Legendre 2 (order 4) at ωh = reference_omega_h over the
+/// exchange's time, with its own error estimated as its gap to the same method at half its step.
+struct exchange_reference {
+  double time;
+  chain_run run;
+  double error;
+};
+
+exchange_reference reference_run(const fpu_settings& s, const system_type& chain) {
+  const integration_method& gl2 = method_of(method_id::gauss_legendre_2);
+  const double exchange_time = std::min(s.exchange_time, s.end_time);
+  chain_run reference = run_chain(gl2, chain, s, s.reference_omega_h, exchange_time, s.samples);
+  // The reference's own error, estimated as its gap to the same method at half its step.
+  const double reference_error = exchange_gap(reference, run_chain(gl2, chain, s, s.reference_omega_h / 2, exchange_time, s.samples));
+  return {exchange_time, std::move(reference), reference_error};
+}
+
+/// The runs followed over time, each method at each ωh: the runs and exchange tables, their panels,
+/// and Simpson's runs (its second band is read from them).
+struct runs_over_time {
+  table runs, exchange;
+  std::vector<panel> exchange_panels, error_panels;
+  std::vector<chain_run> simpson_runs;
+};
+
+runs_over_time runs_over_time_tables(const fpu_settings& s, const exchange_reference& reference) {
+  const double exchange_time = reference.time, reference_error = reference.error;
   table runs{"runs", fmt::format("Each method at each ωh, t up to {}", s.end_time),
              "Relative errors: max |H − H(0)|/H(0) and max |I − I(0)|/I(0) over the samples; the drift of I is its mean over "
              "the last tenth of the run minus its mean over the first tenth, over every step. I_d is I with each stiff spring's ω²x² weighted "
@@ -246,51 +221,52 @@ section_result run_fpu(const fpu_settings& s) {
               {"max_discrete_invariant_error", "max |ΔI_d|/I_d(0), Simpson's"},
               column::fixed_point("newton_per_step", "Newton / step", 2),
               {"status", "status"}}};
-  std::vector<panel> exchange_panels, error_panels;
-  // The reference for the exchange: Gauss–Legendre 2 (order 4) at ωh = reference_omega_h.
-  const double exchange_time = std::min(s.exchange_time, s.end_time);
-  const chain_run reference = run_chain(fpu_method::gauss_legendre_2, chain, s, s.reference_omega_h, exchange_time, s.samples);
-  // The reference's own error, estimated as its gap to the same method at half its step.
-  const double reference_error = exchange_gap(reference, run_chain(fpu_method::gauss_legendre_2, chain, s, s.reference_omega_h / 2, exchange_time, s.samples));
-  exchange_panels.push_back(exchange_panel(fmt::format("reference: gauss-legendre-2, ωh = {}", s.reference_omega_h), reference));
-  progress_step(s.progress, "fpu", "reference for the exchange");
   table exchange{"exchange", fmt::format("The exchange against the reference, t ≤ {}", exchange_time),
                  fmt::format("max over j and t of |I_j − I_j of the reference| (Gauss–Legendre 2 at ωh = {}, interpolated at each "
                              "method's samples): 0 is the reference's exchange, about 1 an exchange out of phase. The reference's own "
                              "error, its gap to Gauss–Legendre 2 at half its step: {:.2g}.",
                              s.reference_omega_h, reference_error),
                  {{"method", "method"}, {"omega_h", "ωh", "", 0}, {"exchange_gap", "max |I_j − I_j ref|"}, {"status", "status"}}};
-  std::vector<chain_run> simpson_runs;
-  for (const fpu_method m : fpu_methods) {
-    panel errors{name_of(m), {"t"}, {"relative error", true}};
-    for (std::size_t k = 0; k < s.omega_h.size(); ++k) {
-      const double omega_h = s.omega_h[k];
-      const chain_run r = run_chain(m, chain, s, omega_h, s.end_time, s.samples);
-      progress_step(s.progress, "fpu", fmt::format("{} at ωh = {}", name_of(m), omega_h));
-      // An unstable run's largest errors are those of the few samples before it stopped: left blank.
-      runs.add({figure::text(name_of(m)), figure::of(omega_h), figure::integer(r.steps), r.ok() ? figure::of(r.max_energy_error) : figure{},
-                r.ok() ? figure::of(r.max_invariant_error) : figure{}, r.ok() ? figure::of(r.invariant_drift) : figure{},
-                m == fpu_method::simpson && r.ok() ? figure::of(r.max_discrete_invariant_error) : figure::text("n/a"),
-                figure::of(static_cast<double>(r.newton_iterations) / static_cast<double>(std::max(1LL, r.steps))), r.status});
-      if (m == fpu_method::simpson) simpson_runs.push_back(r);
-      const int color = static_cast<int>(k);
-      series energy(fmt::format("ωh = {}: H", omega_h), line_style::lines, color, 7, 1), invariant(fmt::format("ωh = {}: I", omega_h), line_style::lines, color, 7, 2);
-      for (std::size_t i = 1; i < r.t.size(); ++i) {  // t = 0: both errors are 0
-        energy.add(figure::of(r.t[i]), figure::of(r.energy_error[i]));
-        invariant.add(figure::of(r.t[i]), figure::of(std::abs(r.I[i] - 1)));
-      }
-      errors.curves.push_back(std::move(energy));
-      errors.curves.push_back(std::move(invariant));
-      // The exchange: I₁, I₂, I₃ and I over the first exchange_time at the second ωh (the book's
-      // hω = 1.5 when it is given), sampled densely.
-      // The run itself when it ends where the exchange does (a quick scene), else a shorter one.
-      const chain_run early = exchange_time < s.end_time ? run_chain(m, chain, s, omega_h, exchange_time, s.samples) : r;
-      exchange.add({figure::text(name_of(m)), figure::of(omega_h), early.ok() ? figure::of(exchange_gap(early, reference)) : figure{}, early.status});
-      if (k == std::min<std::size_t>(1, s.omega_h.size() - 1)) exchange_panels.push_back(exchange_panel(fmt::format("{}, ωh = {}", name_of(m), omega_h), early));
+  return {std::move(runs), std::move(exchange), {}, {}, {}};
+}
+
+/// One method at each ωh over time: its rows, its panel of errors, its exchange against the reference.
+void run_method_over_time(const integration_method& m, const fpu_settings& s, const system_type& chain, const exchange_reference& ref,
+                          runs_over_time& out) {
+  const std::string name(m.name);
+  const double exchange_time = ref.time;
+  const chain_run& reference = ref.run;
+  panel errors{name, {"t"}, {"relative error", true}};
+  for (std::size_t k = 0; k < s.omega_h.size(); ++k) {
+    const double omega_h = s.omega_h[k];
+    const chain_run r = run_chain(m, chain, s, omega_h, s.end_time, s.samples);
+    progress_step(s.progress, "fpu", fmt::format("{} at ωh = {}", name, omega_h));
+    // An unstable run's largest errors are those of the few samples before it stopped: left blank.
+    out.runs.add({figure::text(name), figure::of(omega_h), figure::integer(r.steps), r.ok() ? figure::of(r.max_energy_error) : figure{},
+                  r.ok() ? figure::of(r.max_invariant_error) : figure{}, r.ok() ? figure::of(r.invariant_drift) : figure{},
+                  m.id == method_id::simpson && r.ok() ? figure::of(r.max_discrete_invariant_error) : figure::text("n/a"),
+                  figure::of(static_cast<double>(r.newton_iterations) / static_cast<double>(std::max(1LL, r.steps))), r.status});
+    if (m.id == method_id::simpson) out.simpson_runs.push_back(r);
+    const int color = static_cast<int>(k);
+    series energy(fmt::format("ωh = {}: H", omega_h), line_style::lines, color, 7, 1), invariant(fmt::format("ωh = {}: I", omega_h), line_style::lines, color, 7, 2);
+    for (std::size_t i = 1; i < r.t.size(); ++i) {  // t = 0: both errors are 0
+      energy.add(figure::of(r.t[i]), figure::of(r.energy_error[i]));
+      invariant.add(figure::of(r.t[i]), figure::of(std::abs(r.I[i] - 1)));
     }
-    error_panels.push_back(std::move(errors));
+    errors.curves.push_back(std::move(energy));
+    errors.curves.push_back(std::move(invariant));
+    // The exchange: I₁, I₂, I₃ and I over the first exchange_time at the second ωh (the book's
+    // hω = 1.5 when it is given), sampled densely.
+    // The run itself when it ends where the exchange does (a quick scene), else a shorter one.
+    const chain_run early = exchange_time < s.end_time ? run_chain(m, chain, s, omega_h, exchange_time, s.samples) : r;
+    out.exchange.add({figure::text(name), figure::of(omega_h), early.ok() ? figure::of(exchange_gap(early, reference)) : figure{}, early.status});
+    if (k == std::min<std::size_t>(1, s.omega_h.size() - 1)) out.exchange_panels.push_back(exchange_panel(fmt::format("{}, ωh = {}", name, omega_h), early));
   }
-  // Which method's exchange is nearest the reference at each ωh, from the table.
+  out.error_panels.push_back(std::move(errors));
+}
+
+/// Which method's exchange is nearest the reference at each ωh, from the exchange table.
+std::string nearest_exchange(const fpu_settings& s, const table& exchange) {
   std::vector<std::string> nearest;
   for (const double omega_h : s.omega_h) {
     std::string best;
@@ -305,28 +281,49 @@ section_result run_fpu(const fpu_settings& s) {
     }
     if (!best.empty()) nearest.push_back(fmt::format("at ωh = {} {} ({:.2g})", omega_h, best, best_gap));
   }
-  out.add(std::move(runs));
-  out.add(std::move(exchange));
+  return nearest.empty() ? std::string("none") : fmt::format("{}", fmt::join(nearest, "; "));
+}
+
+/// The runs over time, their tables, the exchange and the plots of both.
+runs_over_time add_runs_over_time(const fpu_settings& s, const system_type& chain, const exchange_reference& reference, section_result& out) {
+  runs_over_time r = runs_over_time_tables(s, reference);
+  r.exchange_panels.push_back(exchange_panel(fmt::format("reference: gauss-legendre-2, ωh = {}", s.reference_omega_h), reference.run));
+  progress_step(s.progress, "fpu", "reference for the exchange");
+  for (const integration_method* m : chain_methods) run_method_over_time(*m, s, chain, reference, r);
+  const std::string nearest = nearest_exchange(s, r.exchange);
+  out.add(std::move(r.runs));
+  out.add(std::move(r.exchange));
   out.text(fmt::format(
       "Nearest the reference's exchange: {}. Against the book: its description of this problem (the stiff energy passes "
       "from I₁ to I₂ and I₃ over t ≈ 0..200 while I stays nearly constant; Störmer–Verlet is stable only for ωh < 2, the "
       "implicit midpoint rule for every ωh) is what the reference and the runs here show. The book's figures per method "
       "and step are not at hand in this project; its theory of step-size resonances is, and the scan below runs each "
       "method at its own.",
-      nearest.empty() ? std::string("none") : fmt::format("{}", fmt::join(nearest, "; "))));
+      nearest));
   out.add(plot_description{"fpu_exchange",
                            fmt::format("The stiff springs' energies I₁, I₂, I₃ and their sum I against t ≤ {}, a reference and each "
                                        "method at one ωh: the energy passes from the first spring to the others on the slow time "
                                        "scale while I stays within O(1/ω) of 1",
                                        std::min(s.exchange_time, s.end_time)),
-                           exchange_panels, 2, 900, 900});
+                           r.exchange_panels, 2, 900, 900});
   out.add(plot_description{"fpu_errors",
                            "Relative energy error |H − H(0)|/H(0) (solid) and |I − I(0)| (dashed) against t, a panel per "
                            "method, a colour per ωh; a run that became unstable ends where it stopped",
-                           error_panels, 2, 900, 620});
+                           r.error_panels, 2, 900, 620});
+  return r;
+}
 
-  // The scan: the largest errors over a shorter run at each ωh of a grid, and the stability each
-  // method's linear theory predicts for the stiff springs.
+/// The scan's table, its two panels, the resonances' points, each method's text at its resonances and
+/// each method's stable grid points with their cost.
+struct scan_figures {
+  table scan;
+  panel energy, invariant;
+  series resonant_points, resonant_invariant;
+  std::vector<std::string> at_resonances;  // each method's error in I at its resonances beside its scanned neighbours'
+  std::vector<std::vector<scanned_cost>> costs;  // each method's stable grid points
+};
+
+scan_figures scan_tables(const fpu_settings& s, const stability_report& region) {
   table scan{"scan", fmt::format("The largest errors over t ≤ {} against ωh", s.scan_end_time), "",
              {{"method", "method"}, {"omega_h", "ωh", "", 0}, {"max_energy_error", "max |ΔH|/H₀"}, {"max_invariant_error", "max |ΔI|/I₀"},
               {"predicted", "linear theory"}, {"resonance", "resonance"}, {"status", "status"}}};
@@ -335,115 +332,145 @@ section_result run_fpu(const fpu_settings& s) {
   panel scan_energy{"max |H − H(0)|/H(0)", {"ωh of the stiff springs"}, {"relative error", true}};
   panel scan_invariant{"max |I − I(0)|/I(0)", {"ωh of the stiff springs"}, {"relative error", true}};
   scan_energy.x.tics = scan_invariant.x.tics = detail::band_end_tics(region, s.scan_to);
-  const int points = static_cast<int>(std::floor((s.scan_to - s.scan_from) / s.scan_step + 1e-9)) + 1;
   series resonant_points("resonance θ = 2π/k", line_style::points, 8, 6, 1);
   series resonant_invariant = resonant_points;
-  std::vector<std::string> at_resonances;  // each method's error in I at its resonances beside its scanned neighbours'
-  std::vector<std::vector<scanned_cost>> scanned_costs(fpu_methods.size());  // each method's stable grid points
-  for (const fpu_method m : fpu_methods) {
-    const scheme_style style = style_for(m);
-    // A curve per run of stable points: a line never bridges a stretch of unstable runs (Simpson's gap).
-    const series blank(name_of(m), line_style::lines_points, style.color, style.point, style.dash);
-    series energy = blank, invariant = blank;
-    const auto close_curve = [&] {
-      if (!energy.x.empty()) {
-        scan_energy.curves.push_back(std::move(energy));
-        scan_invariant.curves.push_back(std::move(invariant));
+  return {std::move(scan), std::move(scan_energy), std::move(scan_invariant), resonant_points, std::move(resonant_invariant), {},
+          std::vector<std::vector<scanned_cost>>(chain_methods.size())};
+}
+
+/// The grid, and the method's resonant ωh within it, in increasing order: ωh, and k for a resonance (0
+/// for a grid point).
+std::vector<std::pair<double, int>> scan_steps(const integration_method& m, const fpu_settings& s) {
+  const int points = static_cast<int>(std::floor((s.scan_to - s.scan_from) / s.scan_step + 1e-9)) + 1;
+  std::vector<std::pair<double, int>> steps;  // ωh, and k for a resonance (0 for a grid point)
+  for (int k = 0; k < points; ++k) steps.emplace_back(std::round((s.scan_from + k * s.scan_step) * 1e9) / 1e9, 0);
+  for (const resonance& r : resonant_steps(m, s.resonances, s.scan_to)) {
+    if (r.omega_h < s.scan_from) continue;
+    // A resonance on a grid point (Störmer–Verlet's θ = π/3 is ωh = 1) marks that point.
+    const auto same = std::find_if(steps.begin(), steps.end(), [&](const auto& p) { return std::abs(p.first - r.omega_h) < 1e-9 * p.first; });
+    if (same != steps.end()) same->second = r.k;
+    else steps.emplace_back(r.omega_h, r.k);
+  }
+  std::stable_sort(steps.begin(), steps.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  return steps;
+}
+
+/// Each resonance of a method against the grid points beside it (the nearest ok one on each side).
+void describe_resonances(const std::string& name, const std::vector<std::pair<double, int>>& steps, const std::vector<double>& grid_invariant,
+                         std::vector<std::string>& at_resonances) {
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    if (!steps[i].second || std::isnan(grid_invariant[i])) continue;
+    std::vector<std::string> beside;
+    for (const int dir : {-1, 1}) {
+      for (std::size_t j = i + dir; j < steps.size(); j += dir) {
+        if (steps[j].second) continue;
+        if (!std::isnan(grid_invariant[j])) beside.push_back(fmt::format("{:.2g} at {}", grid_invariant[j], steps[j].first));
+        break;
       }
-      energy = blank;
-      invariant = blank;
-    };
-    std::size_t agree = 0, predicted_count = 0;
-    std::vector<std::string> disagree;
-    // The grid, and the method's resonant ωh within it, in increasing order.
-    std::vector<std::pair<double, int>> steps;  // ωh, and k for a resonance (0 for a grid point)
-    for (int k = 0; k < points; ++k) steps.emplace_back(std::round((s.scan_from + k * s.scan_step) * 1e9) / 1e9, 0);
-    for (const resonance& r : resonant_steps(m, s.resonances, s.scan_to)) {
-      if (r.omega_h < s.scan_from) continue;
-      // A resonance on a grid point (Störmer–Verlet's θ = π/3 is ωh = 1) marks that point.
-      const auto same = std::find_if(steps.begin(), steps.end(), [&](const auto& p) { return std::abs(p.first - r.omega_h) < 1e-9 * p.first; });
-      if (same != steps.end()) same->second = r.k;
-      else steps.emplace_back(r.omega_h, r.k);
     }
-    std::stable_sort(steps.begin(), steps.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-    std::vector<double> grid_invariant;  // max |ΔI|/I₀ at each step (NaN where not ok)
-    for (const auto& [omega_h, order] : steps) {
-      const chain_run r = run_chain(m, chain, s, omega_h, s.scan_end_time, 200);
-      const std::optional<bool> stable = predicted_stable(m, region, omega_h);
-      scan.add({figure::text(name_of(m)), figure::of(omega_h), r.ok() ? figure::of(r.max_energy_error) : figure{},
+    at_resonances.push_back(fmt::format("{} {} at ωh = {:.4f}: {:.2g}{}", name, resonance_text(steps[i].second), steps[i].first,
+                                        grid_invariant[i], beside.empty() ? std::string() : fmt::format(" (beside it {})", fmt::join(beside, ", "))));
+  }
+}
+
+/// One method's scan: its runs at each step of its grid, its curves, and the expectation that it is
+/// stable where the linear theory of its stiff springs says so.
+void scan_method(std::size_t index, const integration_method& m, const fpu_settings& s, const system_type& chain,
+                 const stability_report& region, scan_figures& f, section_result& out) {
+  const std::string name(m.name);
+  const scheme_style style = style_of(m);
+  // A curve per run of stable points: a line never bridges a stretch of unstable runs (Simpson's gap).
+  const series blank(name, line_style::lines_points, style.color, style.point, style.dash);
+  series energy = blank, invariant = blank;
+  const auto close_curve = [&] {
+    if (!energy.x.empty()) {
+      f.energy.curves.push_back(std::move(energy));
+      f.invariant.curves.push_back(std::move(invariant));
+    }
+    energy = blank;
+    invariant = blank;
+  };
+  std::size_t agree = 0, predicted_count = 0;
+  std::vector<std::string> disagree;
+  const std::vector<std::pair<double, int>> steps = scan_steps(m, s);
+  std::vector<double> grid_invariant;  // max |ΔI|/I₀ at each step (NaN where not ok)
+  for (const auto& [omega_h, order] : steps) {
+    const chain_run r = run_chain(m, chain, s, omega_h, s.scan_end_time, 200);
+    const std::optional<bool> stable = predicted_stable(m, region, omega_h);
+    f.scan.add({figure::text(name), figure::of(omega_h), r.ok() ? figure::of(r.max_energy_error) : figure{},
                 r.ok() ? figure::of(r.max_invariant_error) : figure{},
                 figure::text(stable ? (*stable ? "stable" : "unstable") : "endpoint: not predicted"),
                 order ? figure::text(resonance_text(order)) : figure::text(""), r.status});
-      grid_invariant.push_back(r.ok() ? r.max_invariant_error : NAN);
-      if (r.ok() && r.steps > 0) {
-        const std::size_t index = static_cast<std::size_t>(std::find(fpu_methods.begin(), fpu_methods.end(), m) - fpu_methods.begin());
-        scanned_costs[index].push_back({omega_h, r.gradients_per_step()});
-      }
-      if (r.ok()) {
-        energy.add(figure::of(omega_h), figure::of(r.max_energy_error));
-        invariant.add(figure::of(omega_h), figure::of(r.max_invariant_error));
-        if (order) {
-          resonant_points.add(figure::of(omega_h), figure::of(r.max_energy_error));
-          resonant_invariant.add(figure::of(omega_h), figure::of(r.max_invariant_error));
-        }
-      } else {
-        close_curve();
-      }
-      const bool unstable_run = r.status.value().rfind("unstable", 0) == 0;
-      if (stable) {
-        ++predicted_count;
-        if (*stable == !unstable_run) ++agree;
-        else disagree.push_back(fmt::format("{} ({})", omega_h, r.status.value()));
-      }
+    grid_invariant.push_back(r.ok() ? r.max_invariant_error : NAN);
+    if (r.ok() && r.steps > 0) {
+      f.costs[index].push_back({omega_h, r.gradients_per_step()});
     }
-    progress_step(s.progress, "fpu", "scan of " + name_of(m));
-    close_curve();
-    // Each resonance against the grid points beside it (the nearest ok one on each side).
-    for (std::size_t i = 0; i < steps.size(); ++i) {
-      if (!steps[i].second || std::isnan(grid_invariant[i])) continue;
-      std::vector<std::string> beside;
-      for (const int dir : {-1, 1}) {
-        for (std::size_t j = i + dir; j < steps.size(); j += dir) {
-          if (steps[j].second) continue;
-          if (!std::isnan(grid_invariant[j])) beside.push_back(fmt::format("{:.2g} at {}", grid_invariant[j], steps[j].first));
-          break;
-        }
+    if (r.ok()) {
+      energy.add(figure::of(omega_h), figure::of(r.max_energy_error));
+      invariant.add(figure::of(omega_h), figure::of(r.max_invariant_error));
+      if (order) {
+        f.resonant_points.add(figure::of(omega_h), figure::of(r.max_energy_error));
+        f.resonant_invariant.add(figure::of(omega_h), figure::of(r.max_invariant_error));
       }
-      at_resonances.push_back(fmt::format("{} {} at ωh = {:.4f}: {:.2g}{}", name_of(m), resonance_text(steps[i].second), steps[i].first,
-                                          grid_invariant[i], beside.empty() ? std::string() : fmt::format(" (beside it {})", fmt::join(beside, ", "))));
+    } else {
+      close_curve();
     }
-    out.expect({"scan-stability-" + name_of(m),
-                fmt::format("On the FPU chain, {} is stable at each scanned ωh where the linear theory of its stiff springs says so, "
-                            "and unstable where it says not.",
-                            name_of(m)),
-                m == fpu_method::simpson          ? "Φ₃'s exact region on the stiff springs' ωh (the stability section)"
-                : m == fpu_method::stormer_verlet ? "ωh < 2 (Störmer–Verlet's linear stability)"
-                : m == fpu_method::trigonometric  ? "stable at every ωh (the stiff springs' flow is exact)"
-                                                  : "stable at every ωh (A-stable)",
-                fmt::format("{} of {} scanned ωh off the endpoints as predicted{}", agree, predicted_count,
-                            disagree.empty() ? std::string() : "; not: " + fmt::format("{}", fmt::join(disagree, ", "))),
-                agree == predicted_count});
+    const bool unstable_run = r.status.value().rfind("unstable", 0) == 0;
+    if (stable) {
+      ++predicted_count;
+      if (*stable == !unstable_run) ++agree;
+      else disagree.push_back(fmt::format("{} ({})", omega_h, r.status.value()));
+    }
   }
-  out.add(std::move(scan));
-  if (!resonant_points.x.empty()) {
-    scan_energy.curves.push_back(std::move(resonant_points));
-    scan_invariant.curves.push_back(std::move(resonant_invariant));
+  progress_step(s.progress, "fpu", "scan of " + name);
+  close_curve();
+  describe_resonances(name, steps, grid_invariant, f.at_resonances);
+  out.expect({"scan-stability-" + name,
+              fmt::format("On the FPU chain, {} is stable at each scanned ωh where the linear theory of its stiff springs says so, "
+                          "and unstable where it says not.",
+                          name),
+              m.id == method_id::simpson          ? "Φ₃'s exact region on the stiff springs' ωh (the stability section)"
+              : m.id == method_id::stormer_verlet ? "ωh < 2 (Störmer–Verlet's linear stability)"
+              : m.id == method_id::trigonometric  ? "stable at every ωh (the stiff springs' flow is exact)"
+                                                : "stable at every ωh (A-stable)",
+              fmt::format("{} of {} scanned ωh off the endpoints as predicted{}", agree, predicted_count,
+                          disagree.empty() ? std::string() : "; not: " + fmt::format("{}", fmt::join(disagree, ", "))),
+              agree == predicted_count});
+}
+
+/// The scan: the largest errors over a shorter run at each ωh of a grid, and the stability each
+/// method's linear theory predicts for the stiff springs; returns each method's stable grid points
+/// with their cost.
+std::vector<std::vector<scanned_cost>> add_scan(const fpu_settings& s, const system_type& chain, const stability_report& region,
+                                                section_result& out) {
+  scan_figures f = scan_tables(s, region);
+  for (std::size_t k = 0; k < chain_methods.size(); ++k) scan_method(k, *chain_methods[k], s, chain, region, f, out);
+  out.add(std::move(f.scan));
+  if (!f.resonant_points.x.empty()) {
+    f.energy.curves.push_back(std::move(f.resonant_points));
+    f.invariant.curves.push_back(std::move(f.resonant_invariant));
   }
   out.text(fmt::format(
       "Step-size resonances: the scan adds, for each method, the ωh where its rotation angle θ on the stiff springs (its "
       "oscillator matrix's eigenvalues e^(±iθ)) is 2π/k, k = {} (θ = π, k = 2, is Φ₃'s band end 2√2). Hairer, Lubich and "
       "Wanner's near-conservation of I asks |sin(jθ/2)| to stay away from 0 for small j; at these θ it vanishes for j = k. "
       "max |ΔI|/I₀ there, beside the scanned ωh on either side: {}.",
-      fmt::join(s.resonances, ", "), at_resonances.empty() ? std::string("none in the scanned range") : fmt::format("{}", fmt::join(at_resonances, "; "))));
+      fmt::join(s.resonances, ", "), f.at_resonances.empty() ? std::string("none in the scanned range") : fmt::format("{}", fmt::join(f.at_resonances, "; "))));
   out.add(plot_description{"fpu_scan",
                            fmt::format("The largest relative errors in H and in I over t ≤ {} against the stiff springs' ωh, each "
                                        "method; a method's unstable runs are left out (the scan table has them); grey circles: "
                                        "runs at a step-size resonance. The x tics mark Φ₃'s band ends.",
                                        s.scan_end_time),
-                           {scan_energy, scan_invariant}, 2, 1000, 420});
+                           {f.energy, f.invariant}, 2, 1000, 420});
+  return std::move(f.costs);
+}
 
-  // Every method at equal cost: the force evaluations per unit time of Störmer–Verlet at each ωh of
-  // equal_cost_omega_h, spent by each method on its own step.
+/// Every method at equal cost: the force evaluations per unit time of Störmer–Verlet at each ωh of
+/// equal_cost_omega_h, spent by each method on its own step.
+void add_equal_cost(const fpu_settings& s, const system_type& chain, const exchange_reference& ref,
+                    const std::vector<std::vector<scanned_cost>>& scanned_costs, section_result& out) {
+  const double exchange_time = ref.time, reference_error = ref.error;
+  const chain_run& reference = ref.run;
   table costs{"equal_cost", fmt::format("At equal cost, t ≤ {}", exchange_time),
               fmt::format("Each method's step set so that it spends as many force evaluations per unit time as Störmer–Verlet at the "
                           "ωh of the first column (one a step: ω/ωh per unit time); an implicit method's evaluations per step (its Newton "
@@ -469,15 +496,16 @@ section_result run_fpu(const fpu_settings& s) {
     std::string best;
     double best_gap = INFINITY, best_energy = INFINITY;
     std::string best_energy_method;
-    for (std::size_t k = 0; k < fpu_methods.size(); ++k) {
-      const fpu_method m = fpu_methods[k];
+    for (std::size_t k = 0; k < chain_methods.size(); ++k) {
+      const integration_method& m = *chain_methods[k];
+      const std::string name(m.name);
       const std::optional<double> omega_h = equal_cost_step(scanned_costs[k], at);
       if (!omega_h) {
         const auto cheapest_step = std::min_element(scanned_costs[k].begin(), scanned_costs[k].end(), [](const scanned_cost& x, const scanned_cost& y) {
           return x.per_step / x.omega_h < y.per_step / y.omega_h;
         });
         const bool below = !scanned_costs[k].empty() && at * scanned_costs[k].front().per_step < scanned_costs[k].front().omega_h;
-        costs.add({figure::of(at), figure::text(name_of(m)), figure{}, figure{}, figure{}, figure{}, figure{},
+        costs.add({figure::of(at), figure::text(name), figure{}, figure{}, figure{}, figure{}, figure{},
                    figure::text(cheapest_step == scanned_costs[k].end() ? std::string("no stable step scanned")
                                 : below ? fmt::format("its step at this cost is below the scan's first stable ωh ({})", scanned_costs[k].front().omega_h)
                                         : fmt::format("no scanned stable step this cheap: its cheapest, ωh = {}, costs {:.3g} times as much",
@@ -485,20 +513,20 @@ section_result run_fpu(const fpu_settings& s) {
         continue;
       }
       const chain_run r = run_chain(m, chain, s, *omega_h, exchange_time, s.samples);
-      progress_step(s.progress, "fpu", fmt::format("{} at the cost of Störmer–Verlet at ωh = {}", name_of(m), at));
+      progress_step(s.progress, "fpu", fmt::format("{} at the cost of Störmer–Verlet at ωh = {}", name, at));
       const double per_step = r.gradients_per_step();
       const double gap = r.ok() ? exchange_gap(r, reference) : INFINITY;
-      costs.add({figure::of(at), figure::text(name_of(m)), figure::of(*omega_h), figure::of(per_step),
+      costs.add({figure::of(at), figure::text(name), figure::of(*omega_h), figure::of(per_step),
                  figure::of(static_cast<double>(r.hessians) / static_cast<double>(std::max(1LL, r.steps))),
                  r.ok() ? figure::of(r.max_energy_error) : figure{}, r.ok() ? figure::of(gap) : figure{}, r.status});
-      cost_times.add({figure::of(at), figure::text(name_of(m)), figure::of(r.seconds)});
+      cost_times.add({figure::of(at), figure::text(name), figure::of(r.seconds)});
       if (gap < best_gap) {
         best_gap = gap;
-        best = name_of(m);
+        best = name;
       }
       if (r.ok() && r.max_energy_error < best_energy) {
         best_energy = r.max_energy_error;
-        best_energy_method = name_of(m);
+        best_energy_method = name;
       }
     }
     if (!best.empty()) {
@@ -510,7 +538,10 @@ section_result run_fpu(const fpu_settings& s) {
   out.add(std::move(costs));
   if (s.timed) out.add(std::move(cost_times));
   if (!cheapest.empty()) out.text(fmt::format("At equal cost: {}.", fmt::join(cheapest, "; ")));
-  // Simpson in its second band: does it keep the adiabatic invariant? Decided by the runs above.
+}
+
+/// Simpson in its second band: does it keep the adiabatic invariant? Decided by the runs over time.
+void add_second_band(const fpu_settings& s, const std::vector<chain_run>& simpson_runs, section_result& out) {
   std::vector<std::string> second_band;
   for (std::size_t k = 0; k < s.omega_h.size() && k < simpson_runs.size(); ++k) {
     const double x = s.omega_h[k] * s.omega_h[k];
@@ -524,6 +555,28 @@ section_result run_fpu(const fpu_settings& s) {
     }
   }
   if (!second_band.empty()) out.text("Simpson's scheme in its second stable band, from the runs above: " + fmt::format("{}", fmt::join(second_band, "; ")) + ".");
+}
+
+}  // namespace
+
+fpu_run_summary run_fpu_chain(const fpu_settings& s, const std::string& method, double omega_h, double end_time) {
+  const auto m = std::find_if(chain_methods.begin(), chain_methods.end(), [&](const integration_method* k) { return k->name == method; });
+  if (m == chain_methods.end()) throw std::invalid_argument("run_fpu_chain: unknown method '" + method + "'");
+  const system_type chain = fpu_system(s.m, s.omega);
+  const chain_run r = run_chain(**m, chain, s, omega_h, end_time, 100);
+  return {r.max_energy_error, r.max_invariant_error, r.invariant_drift, r.max_discrete_invariant_error, r.discrete_invariant_drift,
+          r.steps, r.status.value()};
+}
+
+section_result run_fpu(const fpu_settings& s) {
+  section_result out = fpu_intro(s);
+  const system_type chain = fpu_system(s.m, s.omega);
+  const stability_report region = simpson_exact_region();
+  const exchange_reference reference = reference_run(s, chain);
+  const runs_over_time over_time = add_runs_over_time(s, chain, reference, out);
+  const std::vector<std::vector<scanned_cost>> costs = add_scan(s, chain, region, out);
+  add_equal_cost(s, chain, reference, costs, out);
+  add_second_band(s, over_time.simpson_runs, out);
   return out;
 }
 

@@ -12,6 +12,7 @@
 #include "enclosed_figures.hpp"
 #include "guarded_run.hpp"  // growth_limit
 #include "long_time_parts.hpp"
+#include <simpson/verify/integration_driver.hpp>
 
 #include <simpson/energy.hpp>
 
@@ -120,64 +121,53 @@ long_run run_long(const long_run_case& c, const precision& prec, long long steps
                series(fmt::format("{} predicted", traits_of(c.scheme).name), line_style::lines, style.color, style.point),
                std::nullopt};
   phase_point<Real> y = y0;
-  // The unwrapped angle is 2π·turns + angle: an integer count of branch crossings, not a running sum
-  // of ~θ per step (a sum of 1e9 increments in double errs by up to 1e9 ulp(1e8)/2 ≈ 7 rad).
-  Real angle(0), overall(0), measured_phase_error(0), predicted_phase_error(0);
-  long long turns = 0;
-  const Real two_pi = 2 * boost::math::constants::pi<Real>();
+  Real overall(0), measured_phase_error(0), predicted_phase_error(0);
   std::vector<Real> times, maxima;
-  figure status = figure::text("ok");
-  const Real E0 = monitor(y0);
   std::optional<scoped_interval_digits> interval_digits;
   std::optional<enclosed_long_run> enclosed;
   if constexpr (detail::enclosed_above_double_v<Real>) {
     interval_digits.emplace(detail::enclosure_digits_for<Real>());
     enclosed.emplace(par, c.monitored, phi, y0);
   }
-  for (long long start = 0; start < steps && !status.is_fault(); start += window) {
-    const long long length = std::min(window, steps - start);
-    // The window's steps: the energy's largest change against E(y_0), the unwrapped angle, and
-    // growth past growth_limit times the amplitude (|q| + |p|/(mω) = 1 at y_0), where the run stops.
-    Real window_max(0);
-    if (enclosed) enclosed->window_start();
-    phase_point<Real> z = y;
-    for (long long j = 1; j <= length; ++j) {
-      if ((j & 0xFFFFF) == 0) throw_if_interrupted();
-      z = phi * z;
-      if (abs(z.q) + abs(z.p) > detail::growth_limit) {
-        status = unstable_at(start + j);
-        break;
-      }
-      window_max = std::max(window_max, Real(abs(Real(monitor(z) - E0)) / E0));
-      if (enclosed) enclosed->step(z);
-      // Unwrap the angle of (q, p): it advances by about θ per step (< π), so a crossing of the branch
-      // cut is a jump by about ∓2π.
-      const Real next_angle = atan2(z.q, z.p);
-      if (next_angle - angle < -two_pi / 2) ++turns;
-      if (next_angle - angle > two_pi / 2) --turns;
-      angle = next_angle;
-    }
-    if (status.is_fault()) break;
-    y = z;
-    const long long j = start + length;
+  // Every step: the energy's largest change against E(y_0) in the window, and the unwrapped angle.
+  // A state past growth_limit times the amplitude (|q| + |p|/(mω) = 1 at y_0) stops the run.
+  auto energy_change = relative_change_of<Real>(monitor);
+  unwrapped_angle<Real> angle(2 * boost::math::constants::pi<Real>());
+  bool window_closed = false;  // the enclosed window opens at the next window's first step (the last one stays read)
+  auto enclosed_steps = at_steps_of([&](long long, const phase_point<Real>& z) {
+    if (!enclosed) return;
+    if (window_closed) enclosed->window_start();
+    window_closed = false;
+    enclosed->step(z);
+  });
+  // At each window's end (j steps): the phase errors, the window's figures, and the window closed.
+  auto window_ends = at_samples_of([&](long long j, const phase_point<Real>& z) {
+    if (j == 0) return;
     const Real t = Real(theta) * Real(j);
-    measured_phase_error = Real(two_pi * Real(turns) - t) + angle;
+    measured_phase_error = Real(angle.two_pi * Real(angle.turns) - t) + angle.angle;
     predicted_phase_error = Real(j) * phase_per_step - t;
+    const Real window_max = energy_change.window_maximum;
     overall = std::max(overall, window_max);
     times.push_back(t);
     maxima.push_back(window_max);
     if (enclosed) {
-      enclosed->window_end(y, j, turns);
+      enclosed->window_end(z, j, angle.turns);
       out.drift.add(figure::of(t), detail::enclosed_figure(enclosed->window_max));
       out.phase_measured.add(figure::of(t), detail::enclosed_figure(interval(abs(enclosed->measured_phase_error))));
       out.phase_predicted.add(figure::of(t), detail::enclosed_figure(interval(abs(enclosed->predicted_phase_error))));
+      window_closed = true;
     } else {
       out.drift.add(figure::of(t), figure::of(window_max));
       out.phase_measured.add(figure::of(t), figure::of(Real(abs(measured_phase_error))));
       out.phase_predicted.add(figure::of(t), figure::of(Real(abs(predicted_phase_error))));
     }
     progress_step(progress, "long_time", fmt::format("{} {} step {}", name, prec.name(), j), static_cast<double>(j) / static_cast<double>(steps));
-  }
+  });
+  const stop_when_unstable stop([](const phase_point<Real>& z) { return abs(z.q) + abs(z.p) > detail::growth_limit; });
+  // window_ends reads the window's maximum before energy_change's own sample hook closes the window.
+  const run_end end = integrate_n_steps([&phi](const phase_point<Real>& z) { return phase_point<Real>(phi * z); }, y, steps, window,
+                                        stop, window_ends, energy_change, angle, enclosed_steps);
+  const figure status = end.status;
   // Drift: log-log slope of the per-window maxima against time over the second half (0: bounded,
   // 1: linear drift, 0.5: a random walk of round-off).
   std::vector<bool> use(times.size(), false);

@@ -3,7 +3,7 @@
 // its steps make, as they are written (no call is cached or merged), so that error can be set against
 // work that does not depend on the machine or the implementation's speed.
 
-#include <utility>
+#include <utility>  // std::declval, std::move
 
 namespace simpson::verify::detail {
 
@@ -35,7 +35,12 @@ class counting_potential {
   // The split a trigonometric step takes (trigonometric_step.hpp), where the potential has one: the
   // stiff part's frequency and projector (no force evaluated), and ∇U, the slow part's gradient, counted
   // as one force evaluation.
-  decltype(auto) stiff_frequency() const { return inner_.stiff_frequency(); }
+  // Each declared only where Potential has it, so that has_stiff_split (integration_methods.hpp) sees
+  // through the count.
+  template <class P = Potential>
+  auto stiff_frequency() const -> decltype(std::declval<const P&>().stiff_frequency()) {
+    return inner_.stiff_frequency();
+  }
   template <class Vector>
   auto stiff_projection(const Vector& v) const {
     return inner_.stiff_projection(v);

@@ -4,6 +4,7 @@
 
 #include "nonlinear_parts.hpp"
 
+#include <simpson/verify/integration_driver.hpp>
 #include <simpson/verify/floating_tools.hpp>
 #include <simpson/verify/interruption.hpp>
 #include <simpson/verify/progress.hpp>
@@ -75,24 +76,19 @@ energy_run run_energy(const nonlinear_settings& s, long long N, int color) {
   const pendulum_potential<double> V{1, 1};
   phase_point<double> y{0, s.pendulum_q0};
   const auto H = [&V](const phase_point<double>& z) { return z.p * z.p / 2 + V.value(z.q); };
-  const double H0 = H(y);
   energy_run out{figure::text("ok"), 0, series(fmt::format("h = {}", simpson::to_string(h, 3)), line_style::lines, color)};
   const long long windows = 200, window = std::max<long long>(1, s.energy_steps / windows);
-  double window_max = 0;
-  try {
-    for (long long j = 1; j <= s.energy_steps; ++j) {
-      if ((j & 4095) == 0) throw_if_interrupted();
-      y = simpson_nonlinear_step(1.0, h, V, y).state;
-      window_max = std::max(window_max, std::abs(H(y) - H0) / H0);
-      if (j % window == 0 || j == s.energy_steps) {
-        out.curve.add(figure::of(h * static_cast<double>(j)), figure::of(window_max));
-        out.largest = std::max(out.largest, window_max);
-        window_max = 0;
-      }
-    }
-  } catch (const std::domain_error& e) {
-    out.status = figure::fault(std::string("failed: ") + e.what());
-  }
+  // The largest |H(y_j) − H(y₀)|/H(y₀) in each window, drawn at the window's end.
+  auto energy = relative_change_of<double>(H);
+  auto window_ends = at_samples_of([&](long long j, const phase_point<double>&) {
+    if (j == 0) return;
+    out.curve.add(figure::of(h * static_cast<double>(j)), figure::of(energy.window_maximum));
+    out.largest = std::max(out.largest, energy.window_maximum);
+  });
+  // window_ends reads each window's maximum before energy's own sample hook closes the window.
+  out.status = integrate_n_steps([&](const phase_point<double>& z) { return simpson_nonlinear_step(1.0, h, V, z).state; }, y,
+                                 s.energy_steps, window, never_stop{}, window_ends, energy)
+                   .status;
   return out;
 }
 

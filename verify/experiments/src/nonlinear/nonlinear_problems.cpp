@@ -9,6 +9,9 @@
 #include "nonlinear_parts.hpp"
 #include "timed_runs.hpp"
 
+#include <simpson/verify/integration_driver.hpp>
+#include <simpson/verify/integration_methods.hpp>
+
 #include <simpson/verify/floating_tools.hpp>
 #include <simpson/verify/fpu_section.hpp>
 #include <simpson/verify/interruption.hpp>
@@ -38,44 +41,9 @@ namespace {
 // Simpson is drawn once, as the method: Lobatto IIIA–IIIB(3) is the same map (claim
 // nonlinear-lobatto-equivalence), and comparing its stage solve with Simpson's Newton step compares two
 // implementations, which bench/nonlinear_step_bench.cpp measures apart.
-constexpr std::array<scheme_id, 5> methods{scheme_id::simpson, scheme_id::gauss_legendre_2, scheme_id::stormer_verlet,
-                                           scheme_id::yoshida, scheme_id::rk4};
-
-bool implicit(scheme_id id) {
-  return id == scheme_id::simpson || id == scheme_id::gauss_legendre_2;
-}
-
-/// A method's step on a system, in Real; counts Newton's iterations.
-template <class Real, class Potential>
-class ndof_method {
- public:
-  ndof_method(scheme_id id, const separable_system<Real, Potential>& s)
-      : id_(id), system_(s), tableau_(gauss_legendre2_tableau<Real>()), coupling_(couple(tableau_, tableau_)),
-        weights_(yoshida_weights<Real>()) {}
-  ndof_state<Real> step(const Real& h, const ndof_state<Real>& y, long long& iterations) const {
-    switch (id_) {
-      case scheme_id::simpson: return counted(simpson_ndof_step(system_, h, y, kept_), iterations);
-      case scheme_id::gauss_legendre_2: return counted(prk_ndof_step(tableau_, tableau_, coupling_, system_, h, y), iterations);
-      // The explicit compositions keep the force the last kick ended with, and Simpson the force its
-      // impulse ended with (first same as last).
-      case scheme_id::stormer_verlet: return stormer_verlet_ndof_step(system_, h, y, kept_);
-      case scheme_id::yoshida: return yoshida_ndof_step(system_, weights_, h, y, kept_);
-      default: return rk4_ndof_step(system_, h, y);
-    }
-  }
-
- private:
-  static ndof_state<Real> counted(const ndof_step_result<Real>& r, long long& iterations) {
-    iterations += r.newton_iterations;
-    return r.state;
-  }
-  scheme_id id_;
-  const separable_system<Real, Potential>& system_;
-  butcher_tableau<Real> tableau_;
-  stage_coupling<Real> coupling_;
-  std::array<Real, 3> weights_;
-  mutable last_force<Real> kept_;  // the run's state, not the method's: one ndof_method a run
-};
+constexpr std::array<const integration_method*, 5> methods{&method_of(method_id::simpson), &method_of(method_id::gauss_legendre_2),
+                                                       &method_of(method_id::stormer_verlet), &method_of(method_id::yoshida),
+                                                       &method_of(method_id::rk4)};
 
 /// A problem: its system, start, end time and the state at T (rounded to double from a computation
 /// in mpfr), with a sentence saying where that state comes from.
@@ -166,7 +134,7 @@ problem<henon_heiles_potential<double>> henon_heiles_problem(const nonlinear_set
   // |y(N_ref) − y(N_ref/2)|/15).
   const scoped_mpfr_digits digits(s.reference_digits);
   const separable_system<mpfr, henon_heiles_potential<mpfr>> exact_system(dense_matrix<mpfr>::Identity(2, 2), {});
-  const ndof_method<mpfr, henon_heiles_potential<mpfr>> gl2(scheme_id::gauss_legendre_2, exact_system);
+  ndof_stepper<mpfr, henon_heiles_potential<mpfr>> gl2(method_of(method_id::gauss_legendre_2), exact_system);
   const auto run = [&](long long N) {
     ndof_state<mpfr> y = widened(start);
     long long iterations = 0;
@@ -195,7 +163,7 @@ problem<fpu_potential<double>> fpu_problem(const nonlinear_settings& s, long lon
   const fpu_settings chain;
   const double T = s.fpu_T;
   const separable_system<long double, fpu_potential<long double>> exact_system = fpu_system<long double>(chain.m, chain.omega);
-  const ndof_method<long double, fpu_potential<long double>> gl2(scheme_id::gauss_legendre_2, exact_system);
+  ndof_stepper<long double, fpu_potential<long double>> gl2(method_of(method_id::gauss_legendre_2), exact_system);
   const auto run = [&](long long N) {
     ndof_state<long double> y = fpu_start<long double>(chain.m, chain.omega);
     long long iterations = 0;
@@ -228,34 +196,36 @@ struct problem_run {
   bool ok = false;
 };
 
+/// The error run's stop rule: an energy error that is not finite ends the run; a step that throws is
+/// "failed: <why>".
 template <class Potential>
-problem_run run_one(const problem<Potential>& p, scheme_id id, long long N, const timing_policy& timing) {
-  const ndof_method<double, Potential> method(id, p.system);
+struct finite_energy_stop : never_stop {
+  const separable_system<double, Potential>* system;
+  double H0;
+  std::optional<figure> check(long long, const ndof_state<double>& y) const {
+    if (!std::isfinite(std::abs(system->energy(y) - H0) / std::abs(H0))) return figure::fault("non-finite");
+    return std::nullopt;
+  }
+};
+
+template <class Potential>
+problem_run run_one(const problem<Potential>& p, const integration_method& m, long long N, const timing_policy& timing) {
+  ndof_stepper<double, Potential> method(m, p.system);
   // The error run counts its ∇V and ∇²V calls; the timed runs below do not.
   evaluation_count count;
   const separable_system<double, counting_potential<Potential>> counted_system(p.system.mass(), {p.system.potential(), count});
-  const ndof_method<double, counting_potential<Potential>> counted(id, counted_system);
+  ndof_stepper<double, counting_potential<Potential>> counted(m, counted_system);
   const double h = p.T / static_cast<double>(N), H0 = p.system.energy(p.start);
-  const table_row key{figure::text(p.name), figure::text(std::string(traits_of(id).name)), figure::integer(N)};
+  const table_row key{figure::text(p.name), figure::text(std::string(m.name)), figure::integer(N)};
   problem_run out{key, key, figure{}, figure{}, figure{}, figure{}};
   ndof_state<double> y = p.start;
   long long iterations = 0;
-  double energy_error = 0;
-  figure status = figure::text("ok");
-  try {
-    for (long long j = 1; j <= N; ++j) {
-      if ((j & 255) == 0) throw_if_interrupted();
-      y = counted.step(h, y, iterations);
-      const double e = std::abs(p.system.energy(y) - H0) / std::abs(H0);
-      if (!std::isfinite(e)) {
-        status = figure::fault("non-finite");
-        break;
-      }
-      energy_error = std::max(energy_error, e);
-    }
-  } catch (const std::domain_error& e) {
-    status = figure::fault(std::string("failed: ") + e.what());
-  }
+  // The largest relative change of H over the run.
+  auto energy = relative_change_of<double>([&p](const ndof_state<double>& z) { return p.system.energy(z); });
+  const figure status = integrate_n_steps([&](const ndof_state<double>& z) { return counted.step(h, z, iterations); }, y, N, N,
+                                          finite_energy_stop<Potential>{{}, &p.system, H0}, energy)
+                            .status;
+  const double energy_error = energy.maximum;
   out.row.push_back(status);
   if (status.is_fault()) {
     for (int k = 0; k < 6; ++k) out.row.push_back(figure{});
@@ -271,7 +241,7 @@ problem_run run_one(const problem<Potential>& p, scheme_id id, long long N, cons
   out.energy_error = figure::of(energy_error);
   out.gradients = figure::integer(count.gradients);
   out.row.insert(out.row.end(), {out.state_error, figure::of(dense_vector<double>(y.p - p.at_T.p).norm()), out.energy_error,
-                                 implicit(id) ? figure::of(out.iterations) : figure{}, figure::of(out.gradients_per_step),
+                                 m.implicit ? figure::of(out.iterations) : figure{}, figure::of(out.gradients_per_step),
                                  figure::of(static_cast<double>(count.hessians) / static_cast<double>(N))});
   if (timing.max_runs == 0) return out;
   const run_times times = time_runs(timing, [&] {
@@ -289,7 +259,7 @@ problem_run run_one(const problem<Potential>& p, scheme_id id, long long N, cons
 struct problem_panels {
   std::string name;
   panel state, energy, work, time;
-  std::vector<std::pair<scheme_id, std::vector<std::pair<double, double>>>> work_error;  // each method's (∇V, ‖q_N − q(T)‖), runs ok
+  std::vector<std::pair<const integration_method*, std::vector<std::pair<double, double>>>> work_error;  // each method's (∇V, ‖q_N − q(T)‖), runs ok
 };
 
 /// The ∇V evaluations at which a method's error reaches `target`: log-log interpolation between the
@@ -317,9 +287,10 @@ problem_panels run_problem(const problem<Potential>& p, const nonlinear_settings
                      {p.name, {"∇V evaluations in the run", true}, {"|q_N - q(T)|", true}, {}, "bottom left"},
                      {p.name, {"run time (s, median of repeats)", true}, {"|q_N - q(T)|", true}, {}, "bottom left"},
                      {}};
-  for (const scheme_id id : methods) {
+  for (const integration_method* m : methods) {
+    const integration_method& id = *m;
     const scheme_style style = style_of(id);
-    series by_n(std::string(traits_of(id).name), style.line, style.color, style.point, style.dash);
+    series by_n(std::string(id.name), style.line, style.color, style.point, style.dash);
     series energy = by_n, by_work = by_n, by_time = by_n;
     std::vector<double> ok_N, ok_errors;
     std::vector<std::pair<double, double>> work_error;
@@ -341,7 +312,7 @@ problem_panels run_problem(const problem<Potential>& p, const nonlinear_settings
       } else {
         ++failed;
       }
-      progress_step(s.progress, "nonlinear", fmt::format("{} {} N = {}", p.name, traits_of(id).name, N));
+      progress_step(s.progress, "nonlinear", fmt::format("{} {} N = {}", p.name, id.name, N));
       by_n.add(figure::integer(N), r.state_error);
       energy.add(figure::integer(N), r.energy_error);
       by_work.add(r.gradients, r.state_error);
@@ -352,16 +323,16 @@ problem_panels run_problem(const problem<Potential>& p, const nonlinear_settings
       rows.add(std::move(r.row));
     }
     const double order = -log_log_slope(ok_N, ok_errors, use);
-    summary.add({figure::text(p.name), figure::text(std::string(traits_of(id).name)), figure::integer(static_cast<long long>(ok_N.size())),
+    summary.add({figure::text(p.name), figure::text(std::string(id.name)), figure::integer(static_cast<long long>(ok_N.size())),
                  figure::integer(failed), ok_N.size() >= 2 ? figure::of(order) : figure{}, finest_N ? figure::integer(finest_N) : figure{},
                  finest_N ? figure::of(finest.error_q) : figure{}, finest_N ? figure::of(finest.energy) : figure{},
-                 finest_N && implicit(id) ? figure::of(finest.iterations) : figure{},
+                 finest_N && id.implicit ? figure::of(finest.iterations) : figure{},
                  finest_N ? figure::of(finest.gradients_per_step) : figure{}});
     out.state.curves.push_back(by_n);
     out.energy.curves.push_back(energy);
     out.work.curves.push_back(by_work);
     out.time.curves.push_back(by_time);
-    out.work_error.emplace_back(id, std::move(work_error));
+    out.work_error.emplace_back(m, std::move(work_error));
   }
   return out;
 }
@@ -413,7 +384,7 @@ void add_nonlinear_problems(const nonlinear_settings& s, section_result& out) {
               {{"problem", "problem"}, {"target", "target ‖q_N − q(T)‖"}, {"method", "method"}, {"work", "∇V evaluations"},
                column::fixed_point("ratio", "against Simpson's", 2), {"status", "status"}}};
   const auto add_costs = [&](const std::string& name, const problem_panels& p) {
-    const auto simpson = std::find_if(p.work_error.begin(), p.work_error.end(), [](const auto& m) { return m.first == scheme_id::simpson; });
+    const auto simpson = std::find_if(p.work_error.begin(), p.work_error.end(), [](const auto& m) { return m.first->id == method_id::simpson; });
     if (simpson == p.work_error.end() || simpson->second.empty()) return;
     double best = INFINITY;
     for (const auto& [work, error] : simpson->second) best = std::min(best, error);
@@ -423,7 +394,7 @@ void add_nonlinear_problems(const nonlinear_settings& s, section_result& out) {
       const std::optional<double> work = work_for(points, target);
       double smallest = INFINITY;
       for (const auto& [w, e] : points) smallest = std::min(smallest, e);
-      costs.add({figure::text(name), figure::of(target), figure::text(std::string(traits_of(id).name)), work ? figure::of(*work) : figure{},
+      costs.add({figure::text(name), figure::of(target), figure::text(std::string(id->name)), work ? figure::of(*work) : figure{},
                  work && own ? figure::of(*work / *own) : figure{},
                  work ? figure::text("ok")
                       : figure::text(points.empty() ? std::string("no run ok")

@@ -11,6 +11,7 @@
 #include <simpson/verify/floating_tools.hpp>
 #include "enclosed_figures.hpp"
 #include "timed_runs.hpp"
+#include <simpson/verify/integration_driver.hpp>
 
 #include <simpson/energy.hpp>
 #include <simpson/exact_solution.hpp>
@@ -92,6 +93,22 @@ void add_error_figures(measured_run& out, bool simpson_family, const Scalar& err
   }
 }
 
+/// The error run's stop rule: a state whose error against the exact solution is not finite, or whose
+/// q is off by more than 10⁶ times the amplitude (unstable); a step that throws, "failed: <why>".
+template <class Real, class Exact>
+struct error_stop : never_stop {
+  Exact exact;
+  Real m_omega, amplitude;
+  std::optional<figure> check(long long j, const phase_point<Real>& y) const {
+    using std::abs;
+    const Real eq = abs(Real(y.q - exact(j).q));
+    const Real ep = abs(Real(y.p - exact(j).p)) / m_omega;
+    if (!(eq == eq) || !(ep == ep)) return figure::fault("non-finite");
+    if (eq > 1000000 * amplitude) return unstable_at(j);
+    return std::nullopt;
+  }
+};
+
 template <class Real>
 measured_run measure(scheme_id scheme, const std::string& form, const precision& prec, long long N, long long periods,
                      const timing_policy& timing, bool benchmark, const std::vector<phase_point<Real>>& exact,
@@ -114,46 +131,32 @@ measured_run measure(scheme_id scheme, const std::string& form, const precision&
     return runner.step(z);
   };
 
-  // The error run (not timed): maxima over every t_j against the exact solution.
-  Real error_q(0), error_p(0), energy_change(0), discrete_energy_change(0);  // the last two: maxima over the run
-  const Real E0 = energy(par, y0), Ed0 = discrete_energy(par, y0);
+  // The error run (not timed): maxima over every t_j against the exact solution, of the errors in q
+  // and p/(mω) and of the relative changes of H and H_d.
+  const Real m_omega_real = par.m() * omega;
+  const auto exact_at = [&exact](long long j) -> const phase_point<Real>& { return exact[static_cast<std::size_t>(j)]; };
+  auto errors = reference_error_of<Real>(exact_at, m_omega_real);
+  auto energy_change = relative_change_of<Real>([&par](const phase_point<Real>& z) { return Real(energy(par, z)); });
+  auto discrete_energy_change = relative_change_of<Real>([&par](const phase_point<Real>& z) { return Real(discrete_energy(par, z)); });
   phase_point<Real> y = y0;
-  figure status = figure::text("ok");
-  const Real amplitude = abs(y0.p) / (par.m() * omega);
+  // A state not finite, or whose q is off by 10⁶ times the amplitude, ends the run.
+  const error_stop<Real, decltype(exact_at)> stop{{}, exact_at, m_omega_real, Real(abs(y0.p) / m_omega_real)};
   // Above double, the same maxima enclosed: each iterate (an exact binary value) against the
   // enclosed exact solution, so the figures carry only guaranteed digits.
   const bool enclosed = !enclosed_exact.empty();
   interval enclosed_q(0), enclosed_p(0);
   const interval m_omega = enclosed ? interval(2 * boost::math::constants::pi<interval>() * detail::exact_interval(par.m())) : interval(0);
-  try {
-    for (long long j = 1; j <= steps; ++j) {
-      if ((j & 1023) == 0) throw_if_interrupted();
-      y = advance(y);
-      energy_change = std::max(energy_change, Real(abs(Real(energy(par, y) - E0)) / E0));
-      discrete_energy_change = std::max(discrete_energy_change, Real(abs(Real(discrete_energy(par, y) - Ed0)) / abs(Ed0)));
-      const Real eq = abs(Real(y.q - exact[static_cast<std::size_t>(j)].q));
-      const Real ep = abs(Real(y.p - exact[static_cast<std::size_t>(j)].p)) / (par.m() * omega);
-      if (!(eq == eq) || !(ep == ep)) {
-        status = figure::fault("non-finite");
-        break;
-      }
-      if (eq > 1000000 * amplitude) {
-        status = unstable_at(j);
-        break;
-      }
-      error_q = std::max(error_q, eq);
-      error_p = std::max(error_p, ep);
-      if constexpr (detail::enclosed_above_double_v<Real>) {
-        if (enclosed) {
-          const phase_point<interval>& e = enclosed_exact[static_cast<std::size_t>(j)];
-          enclosed_q = enclosed_max(enclosed_q, abs(interval(detail::exact_interval(y.q) - e.q)));
-          enclosed_p = enclosed_max(enclosed_p, abs(interval(detail::exact_interval(y.p) / m_omega - e.p)));
-        }
+  auto enclosed_errors = at_steps_of([&](long long j, const phase_point<Real>& z) {
+    if constexpr (detail::enclosed_above_double_v<Real>) {
+      if (enclosed) {
+        const phase_point<interval>& e = enclosed_exact[static_cast<std::size_t>(j)];
+        enclosed_q = enclosed_max(enclosed_q, abs(interval(detail::exact_interval(z.q) - e.q)));
+        enclosed_p = enclosed_max(enclosed_p, abs(interval(detail::exact_interval(z.p) / m_omega - e.p)));
       }
     }
-  } catch (const std::domain_error& e) {
-    status = figure::fault(std::string("failed: ") + e.what());
-  }
+  });
+  const figure status = integrate_n_steps(advance, y, steps, steps, stop, errors, energy_change, discrete_energy_change, enclosed_errors).status;
+  const Real &error_q = errors.q_max, &error_p = errors.p_max;
   // At the round-off floor: within 100 N eps of zero (N steps, each rounding a few times).
   const Real floor_level = 100 * Real(steps) * eps<Real>();
   const table_row key{figure::text(std::string(traits_of(scheme).name)), figure::text(form), figure::text(prec.name()), figure::integer(N)};
@@ -171,8 +174,8 @@ measured_run measure(scheme_id scheme, const std::string& form, const precision&
   // above double): at the end of whole periods the state is back near y₀, and the end value
   // understates the oscillation.
   const auto with_maxima = [&] {
-    out.row.push_back(figure::of(energy_change));
-    out.row.push_back(simpson_family ? figure::of(discrete_energy_change) : figure{});
+    out.row.push_back(figure::of(energy_change.maximum));
+    out.row.push_back(simpson_family ? figure::of(discrete_energy_change.maximum) : figure{});
   };
   if (enclosed) {
     if constexpr (detail::enclosed_above_double_v<Real>) {
@@ -213,16 +216,9 @@ measured_run measure(scheme_id scheme, const std::string& form, const precision&
   out.seconds = figure::of(times.median);
   return out;
 }
-
-}  // namespace
-
-section_result run_work_precision(const work_precision_settings& s) {
-  section_result out;
-  out.name = "work_precision";
+/// The rows of every run: the errors, the energies' changes and the status (work_precision.csv).
+table rows_table(const work_precision_settings& s) {
   const bool timed = s.timing.max_runs > 0;
-  out.title = timed ? "Work against precision: error and run time" : "Work against precision: error (not timed)";
-  out.conventions = {{"m", 1}, {"omega", "2 pi"}, {"periods", s.periods}, {"start", "y_0 = (m omega, 0)"}};
-  out.timing_conventions = {{"warm_up_runs", 1}, {"max_runs", s.timing.max_runs}, {"max_seconds", s.timing.max_seconds}};
   table rows{"rows", "",
              fmt::format(
                  "m = 1, ω = 2π, {} period(s), y₀ = (mω, 0); N steps per period. Each scheme runs in the forms {}: "
@@ -261,6 +257,11 @@ section_result run_work_precision(const work_precision_settings& s) {
               {"error_Hd_max_relative", "H_d rel. (max)"},
               {"at_round_off_floor", "at floor"}}};
   rows.csv_file = "work_precision.csv";
+  return rows;
+}
+
+/// The run time of each configuration (timing.md).
+table timing_table(const work_precision_settings& s) {
   table times{"timing_rows", "Run time of each configuration",
               fmt::format("One warm-up run, then runs until {} runs or {} s (steady_clock); each run is the N × periods steps "
                           "of the error run, without the error computation.",
@@ -270,123 +271,162 @@ section_result run_work_precision(const work_precision_settings& s) {
   if (s.benchmark) times.columns.push_back({"steps_per_second", "steps/s"});
   times.csv_file = "work_precision_time.csv";
   times.timing = true;
-  // The panels drawn: the first precision large, in every form against run time; the last precision
-  // (the highest, where round-off is far below the schemes' errors) in the step form. Every other
-  // precision's figures are in the tables and work_precision.csv (above double they match double's
-  // to its round-off, and a panel each would show the same curves again).
-  const std::string shown_form = s.forms.front() == "matrix" && s.forms.size() > 1 ? s.forms[1] : s.forms.front();
+  return times;
+}
+
+/// What the runs of every precision add to: the tables, each scheme's measured points in double's
+/// general step (for the cost to an error), and the panels drawn.
+struct work_precision_runs {
+  table rows, times;
   std::map<scheme_id, std::vector<measured_point>> general_steps;  // double's step form (when it is the first precision), for the cost to an error
   std::vector<panel> by_time, by_n;
-  for (std::size_t pk = 0; pk < s.precisions.size(); ++pk) {
-    const precision& prec = s.precisions[pk];
-    const bool first = pk == 0, last = pk + 1 == s.precisions.size();
-    const std::string error_label = "max error of q and p/(mω)";  // error_max: the larger of the two
-    // Against run time, the general step only: as its own 2 × 2 matrix every scheme costs the same per
-    // step, so that error against time would be error against N (work_precision_n) relabelled.
-    std::map<std::string, panel> time_panels;
-    for (const std::string& form : s.forms) {
-      time_panels.emplace(form, panel{fmt::format("{}, each scheme by its general step", prec.name()),
-                                      {"run time (s, median of repeats)", true}, {error_label, true}, {}, "bottom left"});
+};
+
+/// The exact solution at every t_j of each N, shared by the schemes; above double, enclosed too (in
+/// the interval digits the caller has set, enough to hold Real's values exactly).
+template <class Real>
+struct exact_solutions {
+  std::map<long long, std::vector<phase_point<Real>>> exact_by_N;
+  std::map<long long, enclosed_solution> enclosed_by_N;
+};
+
+template <class Real>
+exact_solutions<Real> exact_solutions_of(const work_precision_settings& s) {
+  exact_solutions<Real> out;
+  auto& exact_by_N = out.exact_by_N;
+  [[maybe_unused]] auto& enclosed_by_N = out.enclosed_by_N;
+  for (const long long N : s.meshes) {
+    if constexpr (detail::enclosed_above_double_v<Real>) enclosed_by_N[N] = enclose_exact_solution(N, s.periods);
+    const Real omega = 2 * boost::math::constants::pi<Real>();
+    const long long steps = N * s.periods;
+    const oscillator_parameters<Real> par{Real(1), omega, step_size(Real(s.periods), steps)};
+    const phase_point<Real> y0{omega, Real(0)};
+    std::vector<phase_point<Real>>& exact = exact_by_N[N];
+    exact.reserve(static_cast<std::size_t>(steps) + 1);
+    for (long long j = 0; j <= steps; ++j) {
+      if ((j & 1023) == 0) throw_if_interrupted();
+      exact.push_back(exact_solution(par, y0, Real(par.h() * Real(j))));
     }
-    panel n_panel{fmt::format("{}, {} form", prec.name(), shown_form), {"N (steps per period)", true}, {error_label, true}, {}, "bottom left"};
-    visit_floating(prec, [&](auto precision_tag) {
-      using Real = typename decltype(precision_tag)::type;
-      // The exact solution at every t_j of each N, shared by the schemes; above double, enclosed too
-      // (in enough digits to hold Real's values exactly).
-      std::map<long long, std::vector<phase_point<Real>>> exact_by_N;
-      std::map<long long, enclosed_solution> enclosed_by_N;
-      std::optional<scoped_interval_digits> interval_digits;
-      if constexpr (detail::enclosed_above_double_v<Real>) interval_digits.emplace(detail::enclosure_digits_for<Real>());
-      for (const long long N : s.meshes) {
-        if constexpr (detail::enclosed_above_double_v<Real>) enclosed_by_N[N] = enclose_exact_solution(N, s.periods);
-        const Real omega = 2 * boost::math::constants::pi<Real>();
-        const long long steps = N * s.periods;
-        const oscillator_parameters<Real> par{Real(1), omega, step_size(Real(s.periods), steps)};
-        const phase_point<Real> y0{omega, Real(0)};
-        std::vector<phase_point<Real>>& exact = exact_by_N[N];
-        exact.reserve(static_cast<std::size_t>(steps) + 1);
-        for (long long j = 0; j <= steps; ++j) {
-          if ((j & 1023) == 0) throw_if_interrupted();
-          exact.push_back(exact_solution(par, y0, Real(par.h() * Real(j))));
-        }
-      }
-      // The first error of each order's schemes at the coarsest N, for the guides.
-      std::map<int, double> lowest_first_error;
-      for (const scheme_id scheme : s.schemes) {
-        const scheme_style style = style_of(scheme);
-        for (const std::string& form : s.forms) {
-          series by_seconds{std::string(traits_of(scheme).name), style.line, style.color, style.point, style.dash};
-          series by_mesh = by_seconds;
-          for (const long long N : s.meshes) {
-            measured_run m = measure<Real>(scheme, form, prec, N, s.periods, s.timing, s.benchmark, exact_by_N[N], enclosed_by_N[N]);
-            progress_step(s.progress, "work_precision", fmt::format("{} ({}) {} N = {}", traits_of(scheme).name, form, prec.name(), N));
-            if (timed) by_seconds.add(m.seconds, m.error);
-            const auto e = m.error.plottable(), t = m.seconds.plottable();
-            // In double only: its errors are doubles, so the interpolation passes no enclosure through double.
-            if (timed && first && prec.kind() == precision_kind::float64 && form != "matrix" && e && t) {
-              general_steps[scheme].push_back({static_cast<double>(N), *e, *t});
-            }
-            by_mesh.add(figure::integer(N), m.error);
-            rows.add(std::move(m.row));
-            if (timed) times.add(std::move(m.timing_row));
-          }
-          time_panels.at(form).curves.push_back(by_seconds);
-          if (form != shown_form) continue;
-          if (const auto e0 = by_mesh.y.front().plottable(); e0 && *e0 > 0) {
-            const int order = traits_of(scheme).order;
-            lowest_first_error[order] = lowest_first_error.count(order) ? std::min(lowest_first_error[order], *e0) : *e0;
-          }
-          n_panel.curves.push_back(by_mesh);
-        }
-      }
-      // Guides: slopes N^-2 and N^-4, a factor 4 below the lowest first error among the schemes of
-      // that order, so that each runs beside its schemes' curves and under them, never on one; and
-      // the round-off floor.
-      for (const int order : {2, 4}) {
-        const auto anchor = lowest_first_error.find(order);
-        if (anchor == lowest_first_error.end() || s.meshes.empty()) continue;
-        n_panel.curves.push_back(slope_guide(fmt::format("slope N^{{-{}}}", order), order == 2 ? 8 : 9, static_cast<double>(s.meshes.front()),
-                                             anchor->second / 4, s.meshes, order));
-      }
-      series floor_line{"round-off floor 100 N eps", line_style::dashed, 8, 7, 3};  // short dashes: not a slope
-      floor_line.reference = true;
-      for (const long long N : s.meshes) {
-        floor_line.add(figure::integer(N), figure::of(Real(100 * Real(N * s.periods) * eps<Real>())));
-      }
-      n_panel.curves.push_back(floor_line);
-    });
-    for (const std::string& form : s.forms) {
-      if (form != "matrix" && (first || (last && form == shown_form))) by_time.push_back(time_panels.at(form));
-    }
-    if (first || last) by_n.push_back(n_panel);
   }
-  out.add(std::move(rows));
-  if (timed) out.add(std::move(times));
-  if (timed && !general_steps.empty()) {
-    // The measured ratios: to reach one error, the steps and the seconds each general step needs,
-    // against Simpson's (log-log interpolation between the two measured N that bracket it).
-    const double target = 1e-8;
-    const auto simpson = general_steps.count(scheme_id::simpson) ? reaching(general_steps[scheme_id::simpson], target) : std::nullopt;
-    table cost{"cost_to_error", fmt::format("The cost of an error of {:.0e}", target),
-               fmt::format("In {}, each scheme by its general step: the steps per period and the run time at which its max error of q and "
-                           "p/(mω) reaches {:.0e}, interpolated log-log between the two measured N that bracket it (none: not reached "
-                           "within the measured N), and both against Simpson's.",
-                           s.precisions.front().name(), target),
-               {{"scheme", "scheme"}, column::fixed_point("N_at_error", "N", 1), {"seconds_at_error", "time", "s"},
-                column::fixed_point("N_over_simpson", "N / Simpson's", 2), column::fixed_point("seconds_over_simpson", "time / Simpson's", 2)}};
-    cost.timing = true;
+  return out;
+}
+
+/// One scheme in each form at every N in Real: its rows, its curves against run time and N, and its
+/// first error for the guides.
+template <class Real>
+void measure_scheme(scheme_id scheme, const precision& prec, bool first, const work_precision_settings& s, exact_solutions<Real>& solutions,
+                    const std::string& shown_form, std::map<std::string, panel>& time_panels, panel& n_panel,
+                    std::map<int, double>& lowest_first_error, work_precision_runs& runs) {
+  const bool timed = s.timing.max_runs > 0;
+    const scheme_style style = style_of(scheme);
+    for (const std::string& form : s.forms) {
+      series by_seconds{std::string(traits_of(scheme).name), style.line, style.color, style.point, style.dash};
+      series by_mesh = by_seconds;
+      for (const long long N : s.meshes) {
+        measured_run m = measure<Real>(scheme, form, prec, N, s.periods, s.timing, s.benchmark, solutions.exact_by_N[N], solutions.enclosed_by_N[N]);
+        progress_step(s.progress, "work_precision", fmt::format("{} ({}) {} N = {}", traits_of(scheme).name, form, prec.name(), N));
+        if (timed) by_seconds.add(m.seconds, m.error);
+        const auto e = m.error.plottable(), t = m.seconds.plottable();
+        // In double only: its errors are doubles, so the interpolation passes no enclosure through double.
+        if (timed && first && prec.kind() == precision_kind::float64 && form != "matrix" && e && t) {
+          runs.general_steps[scheme].push_back({static_cast<double>(N), *e, *t});
+        }
+        by_mesh.add(figure::integer(N), m.error);
+        runs.rows.add(std::move(m.row));
+        if (timed) runs.times.add(std::move(m.timing_row));
+      }
+      time_panels.at(form).curves.push_back(by_seconds);
+      if (form != shown_form) continue;
+      if (const auto e0 = by_mesh.y.front().plottable(); e0 && *e0 > 0) {
+        const int order = traits_of(scheme).order;
+        lowest_first_error[order] = lowest_first_error.count(order) ? std::min(lowest_first_error[order], *e0) : *e0;
+      }
+      n_panel.curves.push_back(by_mesh);
+    }
+}
+
+/// Guides: slopes N^-2 and N^-4, a factor 4 below the lowest first error among the schemes of that
+/// order, so that each runs beside its schemes' curves and under them, never on one; and the round-off
+/// floor.
+template <class Real>
+void add_guides(const work_precision_settings& s, const std::map<int, double>& lowest_first_error, panel& n_panel) {
+  for (const int order : {2, 4}) {
+    const auto anchor = lowest_first_error.find(order);
+    if (anchor == lowest_first_error.end() || s.meshes.empty()) continue;
+    n_panel.curves.push_back(slope_guide(fmt::format("slope N^{{-{}}}", order), order == 2 ? 8 : 9, static_cast<double>(s.meshes.front()),
+                                         anchor->second / 4, s.meshes, order));
+  }
+  series floor_line{"round-off floor 100 N eps", line_style::dashed, 8, 7, 3};  // short dashes: not a slope
+  floor_line.reference = true;
+  for (const long long N : s.meshes) {
+    floor_line.add(figure::integer(N), figure::of(Real(100 * Real(N * s.periods) * eps<Real>())));
+  }
+  n_panel.curves.push_back(floor_line);
+}
+
+/// Every scheme in one precision: the tables' rows, and the panels drawn (the first precision large,
+/// in every form against run time; the last precision, the highest, where round-off is far below the
+/// schemes' errors, in the step form).
+void measure_precision(std::size_t pk, const work_precision_settings& s, const std::string& shown_form, work_precision_runs& runs) {
+  const precision& prec = s.precisions[pk];
+  const bool first = pk == 0, last = pk + 1 == s.precisions.size();
+  const std::string error_label = "max error of q and p/(mω)";  // error_max: the larger of the two
+  // Against run time, the general step only: as its own 2 × 2 matrix every scheme costs the same per
+  // step, so that error against time would be error against N (work_precision_n) relabelled.
+  std::map<std::string, panel> time_panels;
+  for (const std::string& form : s.forms) {
+    time_panels.emplace(form, panel{fmt::format("{}, each scheme by its general step", prec.name()),
+                                    {"run time (s, median of repeats)", true}, {error_label, true}, {}, "bottom left"});
+  }
+  panel n_panel{fmt::format("{}, {} form", prec.name(), shown_form), {"N (steps per period)", true}, {error_label, true}, {}, "bottom left"};
+  visit_floating(prec, [&](auto precision_tag) {
+    using Real = typename decltype(precision_tag)::type;
+    std::optional<scoped_interval_digits> interval_digits;
+    if constexpr (detail::enclosed_above_double_v<Real>) interval_digits.emplace(detail::enclosure_digits_for<Real>());
+    exact_solutions<Real> solutions = exact_solutions_of<Real>(s);
+    // The first error of each order's schemes at the coarsest N, for the guides.
+    std::map<int, double> lowest_first_error;
     for (const scheme_id scheme : s.schemes) {
-      if (!general_steps.count(scheme)) continue;
-      const std::optional<measured_point> at = reaching(general_steps[scheme], target);
-      if (!at) {
-        cost.add({figure::text(std::string(traits_of(scheme).name)), figure::text("not reached"), figure{}, figure{}, figure{}});
-        continue;
-      }
-      cost.add({figure::text(std::string(traits_of(scheme).name)), figure::of(at->N), figure::of(at->seconds),
-                simpson ? figure::of(at->N / simpson->N) : figure{}, simpson ? figure::of(at->seconds / simpson->seconds) : figure{}});
+      measure_scheme<Real>(scheme, prec, first, s, solutions, shown_form, time_panels, n_panel, lowest_first_error, runs);
     }
-    out.add(std::move(cost));
+    add_guides<Real>(s, lowest_first_error, n_panel);
+  });
+  for (const std::string& form : s.forms) {
+    if (form != "matrix" && (first || (last && form == shown_form))) runs.by_time.push_back(time_panels.at(form));
   }
+  if (first || last) runs.by_n.push_back(n_panel);
+}
+
+/// The measured ratios: to reach one error, the steps and the seconds each general step needs,
+/// against Simpson's (log-log interpolation between the two measured N that bracket it).
+table cost_to_error_table(const work_precision_settings& s, std::map<scheme_id, std::vector<measured_point>>& general_steps) {
+  const double target = 1e-8;
+  const auto simpson = general_steps.count(scheme_id::simpson) ? reaching(general_steps[scheme_id::simpson], target) : std::nullopt;
+  table cost{"cost_to_error", fmt::format("The cost of an error of {:.0e}", target),
+             fmt::format("In {}, each scheme by its general step: the steps per period and the run time at which its max error of q and "
+                         "p/(mω) reaches {:.0e}, interpolated log-log between the two measured N that bracket it (none: not reached "
+                         "within the measured N), and both against Simpson's.",
+                         s.precisions.front().name(), target),
+             {{"scheme", "scheme"}, column::fixed_point("N_at_error", "N", 1), {"seconds_at_error", "time", "s"},
+              column::fixed_point("N_over_simpson", "N / Simpson's", 2), column::fixed_point("seconds_over_simpson", "time / Simpson's", 2)}};
+  cost.timing = true;
+  for (const scheme_id scheme : s.schemes) {
+    if (!general_steps.count(scheme)) continue;
+    const std::optional<measured_point> at = reaching(general_steps[scheme], target);
+    if (!at) {
+      cost.add({figure::text(std::string(traits_of(scheme).name)), figure::text("not reached"), figure{}, figure{}, figure{}});
+      continue;
+    }
+    cost.add({figure::text(std::string(traits_of(scheme).name)), figure::of(at->N), figure::of(at->seconds),
+              simpson ? figure::of(at->N / simpson->N) : figure{}, simpson ? figure::of(at->seconds / simpson->seconds) : figure{}});
+  }
+  return cost;
+}
+
+/// The plots: error against run time (timed runs only) and against N.
+void add_plots(const work_precision_settings& s, const std::string& shown_form, const std::vector<panel>& by_time,
+               const std::vector<panel>& by_n, section_result& out) {
+  const bool timed = s.timing.max_runs > 0;
   if (timed) {
     plot_description time_plot{"work_precision_time",
                                fmt::format("Maximum error of q and p/(mω) against run time (log-log; the median of the timed runs, their "
@@ -406,6 +446,28 @@ section_result run_work_precision(const work_precision_settings& s) {
                                        "short dashes: the round-off floor 100 N eps. The other precisions are in work_precision.csv",
                                        shown_form),
                            by_n, 2, 1000, 460});
+}
+
+}  // namespace
+
+section_result run_work_precision(const work_precision_settings& s) {
+  section_result out;
+  out.name = "work_precision";
+  const bool timed = s.timing.max_runs > 0;
+  out.title = timed ? "Work against precision: error and run time" : "Work against precision: error (not timed)";
+  out.conventions = {{"m", 1}, {"omega", "2 pi"}, {"periods", s.periods}, {"start", "y_0 = (m omega, 0)"}};
+  out.timing_conventions = {{"warm_up_runs", 1}, {"max_runs", s.timing.max_runs}, {"max_seconds", s.timing.max_seconds}};
+  // The panels drawn: the first precision large, in every form against run time; the last precision
+  // (the highest, where round-off is far below the schemes' errors) in the step form. Every other
+  // precision's figures are in the tables and work_precision.csv (above double they match double's
+  // to its round-off, and a panel each would show the same curves again).
+  const std::string shown_form = s.forms.front() == "matrix" && s.forms.size() > 1 ? s.forms[1] : s.forms.front();
+  work_precision_runs runs{rows_table(s), timing_table(s), {}, {}, {}};
+  for (std::size_t pk = 0; pk < s.precisions.size(); ++pk) measure_precision(pk, s, shown_form, runs);
+  out.add(std::move(runs.rows));
+  if (timed) out.add(std::move(runs.times));
+  if (timed && !runs.general_steps.empty()) out.add(cost_to_error_table(s, runs.general_steps));
+  add_plots(s, shown_form, runs.by_time, runs.by_n, out);
   return out;
 }
 
