@@ -51,15 +51,26 @@ TYPED_TEST(ShearForm, AStepInShearFormIsAStepOfPhi3) {
   }
 }
 
-TEST(ShearFormSingularSet, UndefinedWhereBetaVanishes) {
+TEST(ShearFormSingularSet, UndefinedOnlyAtTheDriftsPole) {
   // ω²h² = 12 and 24 have no rational solution (12 and 24 are not squares). In double, ω = 3 with
-  // the steps below gives ω²h² = 12 and 24 exactly: refused; the next double step is not.
-  for (const auto& [h, target] : {std::pair{0x1.279a74590331cp+0, 12.0}, std::pair{0x1.a20bd700c2c3ep+0, 24.0}}) {
-    const oscillator_parameters<double> singular{1, 3, h};
-    ASSERT_EQ(singular.omega2_h2(), target);
-    EXPECT_THROW(simpson_shear_coefficients(singular), std::domain_error);
-    EXPECT_NO_THROW(simpson_shear_coefficients(oscillator_parameters<double>{1, 3, std::nextafter(h, 10.0)}));
+  // the steps below gives ω²h² = 12 and 24 exactly. At 12 the drift c has its pole and Φ₃ = −I + γE₂₁
+  // is no product L(c)U(b)L(c) (b = β = 0 makes its diagonal 1): refused; the next double step is not.
+  const double h12 = 0x1.279a74590331cp+0, h24 = 0x1.a20bd700c2c3ep+0;
+  const oscillator_parameters<double> at12{1, 3, h12}, at24{1, 3, h24};
+  ASSERT_EQ(at12.omega2_h2(), 12.0);
+  ASSERT_EQ(at24.omega2_h2(), 24.0);
+  EXPECT_THROW(simpson_shear_coefficients(at12), std::domain_error);
+  EXPECT_NO_THROW(simpson_shear_coefficients(oscillator_parameters<double>{1, 3, std::nextafter(h12, 10.0)}));
+  // At 24, β = 0 as well, but c = −h/(2m) is finite and Φ₃ = L(2c) = ((1, 0), (−h/m, 1)): the product.
+  const shear_coefficients<double> s = simpson_shear_coefficients(at24);
+  EXPECT_EQ(s.kick, 0.0);
+  EXPECT_NEAR(s.drift, -h24 / 2, 4 * eps<double>());
+  const one_step_matrix<double> phi = simpson_map(at24), product = shear_product(s);
+  for (const auto& [got, expected] : {std::pair{product.alpha, phi.alpha}, std::pair{product.beta, phi.beta},
+                                      std::pair{product.gamma, phi.gamma}, std::pair{product.delta, phi.delta}}) {
+    EXPECT_NEAR(got, expected, 64 * eps<double>());
   }
+  EXPECT_NEAR(phi.gamma, -h24, 64 * eps<double>());
 }
 
 TEST(ShearFormLongRun, TheEnergyDoesNotDriftInDouble) {

@@ -3,7 +3,9 @@
 //   Φ₃ = L(c) U(b) L(c),  L(c) = [[1, 0], [c, 1]] (a drift q += c p),  U(b) = [[1, b], [0, 1]] (a kick p += b q),
 // with b = β = −m ω² h (1 − ω²h²/12)(1 − ω²h²/24)/(1 + ω²h²/24) and c = (α − 1)/β = h/(2m (1 − ω²h²/12)):
 // L(c)U(b)L(c) = [[1 + bc, b], [c(2 + bc), 1 + bc]], and 1 + bc = α, c(1 + α) = γ because
-// α² − βγ = 1 (claim phi3-shear-factorization). Singular set: β = 0, i.e. ω²h² ∈ {12, 24}.
+// α² − βγ = 1 (claim phi3-shear-factorization). Singular set: ω²h² = 12, the pole of c, where
+// Φ₃ = [[−1, 0], [γ, −1]] and no such product exists (β = 0 makes its α = 1). At ω²h² = 24, β = 0 too
+// but c = −h/(2m) is finite: Φ₃ = L(2c) = [[1, 0], [−h/m, 1]], the product with b = 0.
 // Each shear has determinant 1 whatever its rounded coefficient, so the map computed in floating
 // point is symplectic up to the rounding of each update (no drift from a determinant ≠ 1); with
 // compensated (Kahan) summation of the updates that rounding shrinks further (Hairer, McLachlan,
@@ -32,12 +34,12 @@ shear_coefficients<Real> shear_with_step(const Real& m, const Real& omega, const
 }
 }  // namespace detail
 
-/// The shear coefficients of Φ₃. Throws std::domain_error where β = 0 (ω²h² = 12 or 24), where
-/// the factorization does not exist.
+/// The shear coefficients of Φ₃. Throws std::domain_error at ω²h² = 12, where the factorization does
+/// not exist (at 24 it does, with b = 0).
 template <class Real>
 shear_coefficients<Real> simpson_shear_coefficients(const oscillator_parameters<Real>& par) {
   const Real x = par.omega2_h2();
-  if (x == 12 || x == 24) throw std::domain_error("simpson::simpson_shear_coefficients: beta = 0 at omega^2 h^2 = 12 or 24");
+  if (x == 12) throw std::domain_error("simpson::simpson_shear_coefficients: no shear factorization at omega^2 h^2 = 12 (Phi_3 = -I + gamma E21)");
   return detail::shear_with_step(par.m(), par.omega(), par.h());
 }
 

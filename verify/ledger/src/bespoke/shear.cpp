@@ -40,12 +40,23 @@ decider_evidence check_phi3_shear_factorization(const run_context& ctx) {
     ginac_zero = ginac_zero && normal.is_zero();
     entries.push_back({{"entry", name}, {"normal_form", canonical_text(normal)}});
   }
-  // The singular set: β = −m ω² h (1 − ω²h²/12)(1 − ω²h²/24)/(1 + ω²h²/24) vanishes for h > 0 exactly
-  // at ω²h² = 12 and 24, where c = h/(2m(1 − ω²h²/12)) has a pole (12) or b = 0 makes L U L singular (24).
+  // Where it fails: β = −m ω² h (1 − ω²h²/12)(1 − ω²h²/24)/(1 + ω²h²/24) vanishes for h > 0 exactly at
+  // ω²h² = 12 and 24. At 12, c = h/(2m(1 − ω²h²/12)) has its pole and Φ₃'s α is −1, where any product
+  // with b = β = 0 has α = 1 + bc = 1: no factorization. At 24, c = −h/(2m) is finite and the identity
+  // of rational functions holds there too (both sides evaluated at h = √24/ω).
   const GiNaC::ex x = omega * omega * h * h;
   const GiNaC::ex factored = -h * m * omega * omega * (x - 12) * (x - 24);
   const GiNaC::ex beta_numerator = GiNaC::numer(GiNaC::normal(phi_g.beta));
-  const bool singular_set = GiNaC::normal(beta_numerator / factored).info(GiNaC::info_flags::rational);
+  const bool beta_zeros = GiNaC::normal(beta_numerator / factored).info(GiNaC::info_flags::rational);
+  const GiNaC::exmap at24{{h, GiNaC::sqrt(GiNaC::ex(24)) / omega}}, at12{{h, GiNaC::sqrt(GiNaC::ex(12)) / omega}};
+  bool holds_at_24 = true;
+  for (const GiNaC::ex& difference : {product_g.alpha - phi_g.alpha, product_g.beta - phi_g.beta, product_g.gamma - phi_g.gamma,
+                                      product_g.delta - phi_g.delta}) {
+    holds_at_24 = holds_at_24 && GiNaC::normal(GiNaC::expand(difference.subs(at24))).is_zero();
+  }
+  const GiNaC::ex alpha_at_12 = GiNaC::normal(phi_g.alpha.subs(at12)), beta_at_12 = GiNaC::normal(phi_g.beta.subs(at12));
+  const bool none_at_12 = (alpha_at_12 + 1).is_zero() && beta_at_12.is_zero();
+  const bool singular_set = beta_zeros && holds_at_24 && none_at_12;
   bool within = false;
   const json numeric = recheck_with(
       ctx, "phi3-shear-factorization",
@@ -69,18 +80,23 @@ decider_evidence check_phi3_shear_factorization(const run_context& ctx) {
                                     {"entries", entries},
                                     {"beta_numerator", canonical_text(beta_numerator)},
                                     {"beta_numerator_over_factored", canonical_text(GiNaC::normal(beta_numerator / factored))},
+                                    {"alpha_at_12", canonical_text(alpha_at_12)},
+                                    {"holds_at_24", holds_at_24},
                                     {"singular_set", "beta's numerator is a rational multiple of -h m omega^2 (omega^2 h^2 - 12)(omega^2 h^2 - 24): "
-                                                     "for h > 0, beta = 0 exactly at omega^2 h^2 = 12 and 24"}}});
+                                                     "for h > 0, beta = 0 exactly at omega^2 h^2 = 12 and 24. At 24 the product with b = 0 is Phi_3 "
+                                                     "(each entry's difference is 0 at h = sqrt(24)/omega); at 12, Phi_3's alpha is -1 where any "
+                                                     "product with b = beta = 0 has alpha = 1 + bc = 1: no factorization"}}});
   evidence["numeric"] = numeric;
   return confirmed_if(ours.proved && ginac_zero && singular_set && within, evidence,
                       "Phi_3 = L(c) U(b) L(c) on (p, q), a drift q += c p, a kick p += b q and the same drift, with "
-                      "b = beta and c = h/(2m(1 - omega^2 h^2/12)); defined except at omega^2 h^2 = 12 and 24 (beta = 0). "
+                      "b = beta and c = h/(2m(1 - omega^2 h^2/12)); for every h but omega^2 h^2 = 12, where c has its pole and no such "
+                      "product exists (at 24, b = 0 and Phi_3 = L(2c)). "
                       "Each shear has determinant 1 for any rounded coefficient, so the map computed in floating point "
                       "has no determinant drift (the long_time section compares the forms).");
 }
 
-/// Φ₃ = L(c) U(b) L(c), the core's shears multiplied out, entry by entry (off ω²h² = 12, 24, where
-/// the drift's denominator vanishes: hypotheses of the lemmas).
+/// Φ₃ = L(c) U(b) L(c), the core's shears multiplied out, entry by entry (off ω²h² = 12, where the
+/// drift's denominator vanishes: a hypothesis of the lemmas).
 std::vector<proof_goal> phi3_shear_factorization() {
   const symbolic_derivation& d = derivation();
   const auto product = shear_product(simpson::detail::shear_with_step<GiNaC::ex>(d.m, d.omega, d.h));
