@@ -1,4 +1,4 @@
-(* Certificate of claim phi3-shear-factorization: (Not in the paper.) Phi_3 = L(c) U(b) L(c) with L(c) = ((1, 0), (c, 1)), U(b) = ((1, b), (0, 1)), b = beta, c = h/(2m(1 - omega^2 h^2/12)), except at omega^2 h^2 = 12 and 24.
+(* Certificate of claim phi3-shear-factorization: (Not in the paper.) Phi_3 = L(c) U(b) L(c) with L(c) = ((1, 0), (c, 1)), U(b) = ((1, b), (0, 1)), b = beta, c = h/(2m(1 - omega^2 h^2/12)), for every h except omega^2 h^2 = 12 (at 24, b = beta = 0 and Phi_3 = L(2c)); at 12 no such product exists.
    Written by simpson-verify from the expressions its GiNaC kernel proved; check with coqc. *)
 Require Import Reals Field Lra Psatz.
 Open Scope R_scope.
