@@ -571,7 +571,7 @@ fi
 check "help" 0 --help
 grep -q 'Exit codes: 0 every verdict as expected .* 2 bad input .* 3 a bug in the harness; 130 or 143 interrupted' "$work/out" ||
   fail "help: exit codes not listed"
-grep -q 'embedded scene name (beyond, family, floating, paper, quick, stiff)' "$work/out" || fail "help: scenes not all listed"
+grep -q 'embedded scene name (beyond, family, floating, inseparable, paper, quick, stiff)' "$work/out" || fail "help: scenes not all listed"
 grep -q -- '--samples UINT' "$work/out" || fail "help: --samples not typed UINT"
 
 # --precisions reaches the sections that have precisions, or is refused with the reason.
