@@ -63,7 +63,7 @@ if [ "$part" = beyond-scene ] || [ "$part" = beyond-scene-reduced ]; then
 JSON
     check "beyond scene, reduced" 0 --scene "$work/beyond-reduced.json" --quiet --out "$work/beyond"
   fi
-  claims_held=10
+  claims_held=12
   [ "$part" = beyond-scene ] || claims_held=9
   grep -q "^$claims_held claims: $claims_held held, 0 errata, 0 failed; all verdicts as expected" "$work/out" ||
     { echo "FAIL beyond scene: $(cat "$work/out")"; failures=$((failures + 1)); }
@@ -571,7 +571,7 @@ fi
 check "help" 0 --help
 grep -q 'Exit codes: 0 every verdict as expected .* 2 bad input .* 3 a bug in the harness; 130 or 143 interrupted' "$work/out" ||
   fail "help: exit codes not listed"
-grep -q 'embedded scene name (beyond, family, floating, paper, quick, stiff)' "$work/out" || fail "help: scenes not all listed"
+grep -q 'embedded scene name (beyond, family, floating, inseparable, paper, quick, stiff)' "$work/out" || fail "help: scenes not all listed"
 grep -q -- '--samples UINT' "$work/out" || fail "help: --samples not typed UINT"
 
 # --precisions reaches the sections that have precisions, or is refused with the reason.

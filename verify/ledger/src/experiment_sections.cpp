@@ -51,6 +51,7 @@ const std::vector<const experiment_section*>& experiment_sections() {
     all.push_back(make_floating_section());
     all.push_back(make_family_section());
     all.push_back(make_fpu_section());
+    all.push_back(make_inseparable_section());
     return all;
   }();
   static const std::vector<const experiment_section*> sections = [] {

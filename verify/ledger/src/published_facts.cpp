@@ -7,6 +7,7 @@
 #include "claim_support.hpp"
 
 #include <simpson/verify/fpu_section.hpp>
+#include <simpson/verify/inseparable_section.hpp>
 #include <simpson/verify/ledger.hpp>
 #include <simpson/verify/nonlinear_section.hpp>
 #include <simpson/verify/table1_facts.hpp>
@@ -55,6 +56,14 @@ const std::map<std::string, fact_publisher>& published_facts() {
       {"nonlinear.pendulum-order-4",
        {"The Simpson scheme's global order on the pendulum is 4, proved by enclosures of the scheme and of the exact solution.",
         [](const run_context&) { return pendulum_order_fact(); }}},
+      {"nonlinear_inseparable.simpson-order",
+       {"On the Lagrange top, Simpson's variational step is of order 4 and the implicit midpoint rule's of order 2 in nutation, decided by "
+        "enclosed errors against the top's exact motion enclosed with Arb.",
+        [](const run_context&) { return inseparable_order_fact(inseparable_fact_settings()); }}},
+      {"nonlinear_inseparable.top-momenta-exact",
+       {"On the Lagrange top, Simpson's and the midpoint rule's steps change the cyclic momenta p_phi and p_psi only within the sum of "
+        "their per-step bounds (Newton residual and rounding), at three step sizes.",
+        [](const run_context&) { return inseparable_momenta_fact(inseparable_fact_settings()); }}},
   };
   return facts;
 }

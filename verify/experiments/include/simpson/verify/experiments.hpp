@@ -7,6 +7,7 @@
 #include <simpson/verify/family_section.hpp>
 #include <simpson/verify/floating_section.hpp>
 #include <simpson/verify/fpu_section.hpp>
+#include <simpson/verify/inseparable_section.hpp>
 #include <simpson/verify/long_time_section.hpp>
 #include <simpson/verify/nonlinear_section.hpp>
 #include <simpson/verify/stability_section.hpp>
