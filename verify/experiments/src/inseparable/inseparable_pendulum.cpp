@@ -21,7 +21,7 @@ namespace simpson::verify::detail {
 
 part_runs run_pendulum_part(const inseparable_settings& s, section_result& out) {
   const inseparable_pendulum_settings& d = s.pendulum;
-  const double_pendulum<double> L{d.m1, d.m2, d.l1, d.l2, d.g};
+  const simpson::double_pendulum<double> L{d.m1, d.m2, d.l1, d.l2, d.g};
   dense_vector<double> q(2), v(2);
   q << d.theta1, d.theta2;
   v << d.omega1, d.omega2;
@@ -31,7 +31,7 @@ part_runs run_pendulum_part(const inseparable_settings& s, section_result& out) 
   // The reference: the Hamiltonian equations in MPFR from the same double start (exactly).
   const unsigned digits = static_cast<unsigned>(std::ceil(s.pendulum_reference_digits)) + 10;
   const scoped_mpfr_digits mdigits(digits);
-  const double_pendulum<mpfr> Lm{mpfr(d.m1), mpfr(d.m2), mpfr(d.l1), mpfr(d.l2), mpfr(d.g)};
+  const simpson::double_pendulum<mpfr> Lm{mpfr(d.m1), mpfr(d.m2), mpfr(d.l1), mpfr(d.l2), mpfr(d.g)};
   const ndof_state<mpfr> ym{dense_vector<mpfr>(y0.p.cast<mpfr>()), dense_vector<mpfr>(y0.q.cast<mpfr>())};
   const reference_state ref = lagrangian_reference(Lm, ym, mpfr(T), s.pendulum_reference_digits, 32, 7);
   progress_step(s.progress, "nonlinear_inseparable", "double pendulum: the MPFR reference");
