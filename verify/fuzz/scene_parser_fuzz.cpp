@@ -10,6 +10,7 @@
 #include <string>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  using namespace simpson::verify;
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
     const simpson::verify::scene s = simpson::verify::parse_scene(text, "fuzz", simpson::verify::paper_book());

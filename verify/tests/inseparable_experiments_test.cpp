@@ -157,7 +157,7 @@ TEST(Inseparable, ANewtonFailureStopsTheRunWithItsReason) {
   EXPECT_TRUE(first_newton_failure(heavy, {0.01}).empty());
 }
 
-std::string scene_error_of(const std::string& section) {
+std::string inseparable_scene_error(const std::string& section) {
   try {
     parse_scene(R"({"name": "x", "nonlinear_inseparable": )" + section + "}", "t.json", paper_book());
   } catch (const std::invalid_argument& e) {
@@ -168,18 +168,18 @@ std::string scene_error_of(const std::string& section) {
 
 TEST(Inseparable, SceneRefusesANonPhysicalTopAndAStepTooLargeNamingTheField) {
   const auto mentions = [](const std::string& m, const std::string& part) { return m.find(part) != std::string::npos; };
-  EXPECT_TRUE(mentions(scene_error_of(R"({"I1": 0})"), "'nonlinear_inseparable.I1'")) << scene_error_of(R"({"I1": 0})");
-  EXPECT_TRUE(mentions(scene_error_of(R"({"I3": -1})"), "'nonlinear_inseparable.I3'"));
-  EXPECT_TRUE(mentions(scene_error_of(R"({"theta0": 0})"), "'nonlinear_inseparable.theta0'"));
-  EXPECT_TRUE(mentions(scene_error_of(R"({"theta0": 3.2})"), "'nonlinear_inseparable.theta0' must lie in (0, pi)")) << scene_error_of(R"({"theta0": 3.2})");
+  EXPECT_TRUE(mentions(inseparable_scene_error(R"({"I1": 0})"), "'nonlinear_inseparable.I1'")) << inseparable_scene_error(R"({"I1": 0})");
+  EXPECT_TRUE(mentions(inseparable_scene_error(R"({"I3": -1})"), "'nonlinear_inseparable.I3'"));
+  EXPECT_TRUE(mentions(inseparable_scene_error(R"({"theta0": 0})"), "'nonlinear_inseparable.theta0'"));
+  EXPECT_TRUE(mentions(inseparable_scene_error(R"({"theta0": 3.2})"), "'nonlinear_inseparable.theta0' must lie in (0, pi)")) << inseparable_scene_error(R"({"theta0": 3.2})");
   const std::string heavy = R"({"Mgl": 100, "theta0": 1, "top_N": [1000], "long_h": [0.01, 0.5]})";
-  EXPECT_TRUE(mentions(scene_error_of(heavy), "'nonlinear_inseparable.long_h': too large a step for Newton")) << scene_error_of(heavy);
+  EXPECT_TRUE(mentions(inseparable_scene_error(heavy), "'nonlinear_inseparable.long_h': too large a step for Newton")) << inseparable_scene_error(heavy);
   const std::string coarse = R"({"Mgl": 100, "theta0": 1, "top_end_time": 5, "top_N": [10, 1000], "long_h": [0.01]})";
-  EXPECT_TRUE(mentions(scene_error_of(coarse), "'nonlinear_inseparable.top_N' with 'nonlinear_inseparable.top_end_time': too large a step"))
-      << scene_error_of(coarse);
-  EXPECT_TRUE(mentions(scene_error_of(R"({"top_N": [1]})"), "'nonlinear_inseparable.top_N'"));
-  EXPECT_TRUE(mentions(scene_error_of(R"({"colour": 1})"), "unknown key 'nonlinear_inseparable.colour'")) << scene_error_of(R"({"colour": 1})");
-  EXPECT_EQ(scene_error_of("{}"), "");
+  EXPECT_TRUE(mentions(inseparable_scene_error(coarse), "'nonlinear_inseparable.top_N' with 'nonlinear_inseparable.top_end_time': too large a step"))
+      << inseparable_scene_error(coarse);
+  EXPECT_TRUE(mentions(inseparable_scene_error(R"({"top_N": [1]})"), "'nonlinear_inseparable.top_N'"));
+  EXPECT_TRUE(mentions(inseparable_scene_error(R"({"colour": 1})"), "unknown key 'nonlinear_inseparable.colour'")) << inseparable_scene_error(R"({"colour": 1})");
+  EXPECT_EQ(inseparable_scene_error("{}"), "");
   EXPECT_THROW(check_inseparable_top(inseparable_top_settings{-1, 1, 1, 1, 0, 0, 1}), std::invalid_argument);
 }
 

@@ -314,7 +314,8 @@ std::pair<std::string, std::string> unit_of(const std::string& line) {
 void grouped(const std::vector<std::string>& lines, report_comparison& result) {
   std::vector<report_difference> units;
   for (const std::string& line : lines) {
-    const auto [place, change] = unit_of(line);
+    const std::pair<std::string, std::string> unit = unit_of(line);  // not a structured binding: the lambda below captures it
+    const std::string &place = unit.first, &change = unit.second;
     auto it = std::find_if(units.begin(), units.end(), [&](const report_difference& d) { return d.place == place; });
     if (it == units.end()) {
       units.push_back({place, {}});
