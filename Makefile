@@ -115,7 +115,9 @@ sanitize-build: deps
 # interrupts the process group at each kind of moment once (cli_test.sh interruption-reduced);
 # ConventionSearch.RandomHiddenConventionsOverTheWholeFamilyAreAllRecovered draws 2 hidden conventions
 # instead of 20 (SIMPSON_SANITIZED: each search is the same code, several seconds at -O0 under ASan).
-SANITIZE_SKIP = report\.schema|report\.reproducible|PaperReading\.EveryFormulaOfTheEmbeddedPaperParsesAndKeepsItsVerdict|ReferenceReport\.PaperSceneReproducesTheCommittedReport|PaperReading\.AChangedCoefficientInTheTextChangesTheVerdict|Gappa\.TheBoundsCoqProofIsCheckedByCoqc|GappaGlobal\.TheLiftingLemmaIsCheckedByCoqc|CoqBatch\.OneProcess
+# The inseparable section's three numeric runs (25-32 s each at -O0 under ASan, measured 2026-12-02)
+# run in the Release suite; its refusals and a Newton failure inside a run (the input paths) stay here.
+SANITIZE_SKIP = Inseparable\.(OrderFactProvesFourAndTwo|APerturbedExactSolutionFails|SectionMeetsItsExpectationsAtASmallSize)|report\.schema|report\.reproducible|PaperReading\.EveryFormulaOfTheEmbeddedPaperParsesAndKeepsItsVerdict|ReferenceReport\.PaperSceneReproducesTheCommittedReport|PaperReading\.AChangedCoefficientInTheTextChangesTheVerdict|Gappa\.TheBoundsCoqProofIsCheckedByCoqc|GappaGlobal\.TheLiftingLemmaIsCheckedByCoqc|CoqBatch\.OneProcess
 SANITIZE_ENV = ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:symbolize=$(1) UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:symbolize=$(1) \
 	  LSAN_OPTIONS=suppressions=$(CURDIR)/scripts/lsan.supp:print_suppressions=0
 # Stacks are symbolized only for the tests that failed, in a second run of those alone. Symbolizing
