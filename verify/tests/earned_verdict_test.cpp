@@ -78,7 +78,13 @@ TEST(RefereesCases, ThePaperAsAnExpertReadsIt) {
   EXPECT_EQ(summary["beyond_claims"], 1);
   // Table 1: the numbers right for the start that reproduces them, the round-off entries apart.
   const std::string& values = outcome_of(r, "table-values").result.correction;
-  EXPECT_EQ(values.rfind("The numbers are right for the start that reproduces them, not for the one Section 8 states: the two are inconsistent", 0), 0u) << values;
+  // False as described (the erratum's own sense), the numbers another start's: no sentence that says the numbers are right.
+  EXPECT_EQ(values.rfind("False as described: the start Section 8 states does not give these numbers", 0), 0u) << values;
+  EXPECT_EQ(values.find("The numbers are right"), std::string::npos) << values;
+  // The stated conventions: inconsistent whatever m, and both corrections named.
+  const std::string& conventions = outcome_of(r, "experiment-conventions").result.correction;
+  EXPECT_NE(conventions.find("nor with any other m: the 6 entries of the state rows"), std::string::npos) << conventions;
+  EXPECT_NE(conventions.find("or Table 1 recomputed from the stated solution"), std::string::npos) << conventions;
   EXPECT_NE(values.find("17 of the 18 informative entries (the 6 others, of the rows printed as exact, are round-off"), std::string::npos) << values;
   // "explicited": "made explicit", the record's replacement, not Hunspell's "explicated".
   const claim_outcome& spelling = outcome_of(r, "prose-spelling");
@@ -90,7 +96,17 @@ TEST(RefereesCases, ThePaperAsAnExpertReadsIt) {
   ASSERT_NE(table1, std::string::npos);
   EXPECT_LT(table1, gamma) << "Table 1's finding first";
   EXPECT_LT(md.find("## Referee's summary"), md.find("Exit code 0")) << "the findings before the exit code";
-  EXPECT_NE(md.find("Remarks on claims that hold (5), not findings"), std::string::npos);
+  // The harness's own statement is not shown as the abstract's: its place says whose it is.
+  EXPECT_NE(md.find("beyond, about §abstract, hamiltonien-discret — **holds**"), std::string::npos);
+  EXPECT_NE(md.find("| [approximate-energy-sign](#approximate-energy-sign) | beyond, about abstract |"), std::string::npos);
+  EXPECT_NE(md.find("Remarks on claims that hold (5, of which 3 follow the finding or remark of the claim they link to"), std::string::npos);
+  // Counted once: the remarks that follow another claim's (gamma-singular, conserved-form from
+  // gamma-system; abstract-explicit from phi3-explicit) apart; the spelling a check of the source.
+  const std::string headline = summary["headline"].get<std::string>();
+  EXPECT_NE(headline.find("and 1 check of its source:"), std::string::npos) << headline;
+  EXPECT_NE(headline.find("2 remarks on claims that hold (3 more following the finding or remark of another claim)"), std::string::npos) << headline;
+  EXPECT_NE(headline.find("the source: prose-spelling (6 misspelled words)"), std::string::npos) << headline;
+  EXPECT_EQ(summary["source_checks"], 1);
 }
 
 // The headline says first whether the paper's headline results hold (records with headline = true),

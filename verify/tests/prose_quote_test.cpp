@@ -325,6 +325,14 @@ TEST(ChangedSentence, ExplicitForNonlinearProblemsIsStillAnErratum) {
   const claim_result unqualified = check_claim(paper_book().find("abstract-explicit"), run_context{{precision::parse("double")}, 20230830, 2, &general});
   EXPECT_EQ(unqualified.outcome, verdict::erratum);
   EXPECT_TRUE(unqualified.remark.empty());
+  // "linear" inside "nonlinear" is no limit to linear problems (a substring match took it for one).
+  const paper_reading nonlinear = altered_reading("is explicited for an elementary harmonic oscillator", "is explicited for nonlinear systems");
+  const claim_result extended = check_claim(paper_book().find("abstract-explicit"), run_context{{precision::parse("double")}, 20230830, 2, &nonlinear});
+  EXPECT_EQ(extended.outcome, verdict::erratum);
+  // The scope is what the verdict rests on: the quote records what the check made of it.
+  bool scope_parsed = false;
+  for (const json& q : printed.quoted) scope_parsed = scope_parsed || q.value("parsed", json::object()).contains("scope");
+  EXPECT_TRUE(scope_parsed) << printed.quoted.dump();
 }
 
 // "an explicit scheme" of Phi_3: explicit on this linear problem (its one denominator positive for
@@ -358,6 +366,10 @@ TEST(ChangedTable, TheStatedConventionsAreJudgedByWhetherTheyReproduceTheTable) 
   const claim_result printed = check_claim(paper_book().find("experiment-conventions"), run_context{{precision::parse("double")}, 20230830, 2, &embedded_reading()});
   EXPECT_EQ(printed.outcome, verdict::erratum);
   EXPECT_NE(printed.correction.find("released from rest at q₀ = π/2, p₀ = 0, m = 1"), std::string::npos) << printed.correction;
+  // The stated pair is what the search starts from: the quote records q and p as read.
+  ASSERT_FALSE(printed.quoted.empty());
+  EXPECT_EQ(printed.quoted[0].at("parsed").value("q_exact", ""), "sin(omega*t)") << printed.quoted.dump();
+  EXPECT_EQ(printed.quoted[0].at("parsed").value("p_exact", ""), "cos(omega*t)*omega*m") << printed.quoted.dump();
   const paper_reading reading = altered_reading("$ 4.11  \\,\\, 10^{-4} $", "$ 4.11  \\,\\, 10^{-3} $");
   const claim_result changed = check_claim(paper_book().find("experiment-conventions"), run_context{{precision::parse("double")}, 20230830, 2, &reading});
   EXPECT_EQ(changed.outcome, verdict::fails) << changed.note;

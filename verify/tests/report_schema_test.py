@@ -86,7 +86,7 @@ with tempfile.TemporaryDirectory() as work:
         alterations = {
             "summary removed": lambda r: r.pop("summary"),
             "an unknown verdict": lambda r: r["claims"][0].update(verdict="maybe"),
-            "a newer schema_version": lambda r: r.update(schema_version=3),
+            "a newer schema_version": lambda r: r.update(schema_version=4),
             "a run time back in report.json": lambda r: r.update(timing={"total": 1.0}),
             "a short scene digest": lambda r: r["environment"].update(scene_sha256="abc"),
             "a table cell that is an object": lambda r: r["experiments"]["table1"]["entries"][0].update(ours={"x": 1}),

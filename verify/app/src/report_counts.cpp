@@ -3,6 +3,7 @@
 
 #include "report_parts.hpp"
 
+#include <simpson/verify/certify.hpp>
 #include <simpson/verify/ledger.hpp>
 #include <simpson/verify/verdict_table.hpp>
 
@@ -40,9 +41,12 @@ verdict_counts count_verdicts(const run_record& r) {
       continue;
     }
     const bool paper = o.checked->origin == claim_origin::paper;
-    (paper ? c.paper : o.checked->origin == claim_origin::beyond ? c.beyond : c.harness) += 1;
+    const bool source_check = paper && o.result.reads_whole_text;
+    (source_check ? c.source_checks : paper ? c.paper : o.checked->origin == claim_origin::beyond ? c.beyond : c.harness) += 1;
     const finding kind = finding_of(o);
-    if (paper && is_finding(o.result.outcome) && kind == finding::prose) {
+    if (source_check && is_finding(o.result.outcome) && kind != finding::prose) {
+      ++c.source_findings;
+    } else if (paper && is_finding(o.result.outcome) && kind == finding::prose) {
       ++c.prose_claims;
       c.prose_slips += std::max<std::size_t>(1, o.result.amendments.size());
     } else if (paper && is_finding(o.result.outcome)) {
@@ -63,7 +67,9 @@ verdict_counts count_verdicts(const run_record& r) {
         ++c.consequences;
       }
     }
-    c.remarks += paper && meaning(o.result.outcome).affirms && !o.result.remark.empty();
+    const bool remark = paper && meaning(o.result.outcome).affirms && !o.result.remark.empty();
+    c.remarks += remark;
+    c.linked_remarks += remark && !cause_of(o).empty();
     ++c.of[static_cast<std::size_t>(o.result.outcome)];
     c.machine_read += !o.result.printed.is_null();
     c.quoted += !o.result.quoted.empty();  // a claim may read a formula and quote its sentence: counted in both
@@ -267,7 +273,7 @@ json summary_json(const run_record& r) {
   const report_parts::verdict_counts c = report_parts::count_verdicts(r);
   json out = {{"line", summary_line(r)},     {"expectation", expectation_line(r)}, {"headline", findings_headline(r)}, {"claims", r.outcomes.size()},
               {"harness_faults", c.faults},
-              {"paper_claims", c.paper},     {"beyond_claims", c.beyond},   {"harness_claims", c.harness},
+              {"paper_claims", c.paper},     {"source_checks", c.source_checks}, {"beyond_claims", c.beyond},   {"harness_claims", c.harness},
               {"distinct_findings", c.distinct}, {"substantive_findings", c.substantive}, {"constant_factor_findings", c.constant_factor},
               {"headline_claims", headline_claims_json(r)}, {"typographical_findings", c.typographical},
               {"wording_findings", c.wording}, {"unverifiable_findings", c.unverifiable_findings}, {"consequences", c.consequences},
@@ -298,7 +304,7 @@ std::string findings_headline(const run_record& r) {
   std::vector<std::string> substantive, constant_factor, unverifiable;
   std::size_t follows_other = 0;
   for (const claim_outcome& o : r.outcomes) {
-    if (o.checked->origin != claim_origin::paper || !is_finding(o.result.outcome) || !cause_of(o).empty()) continue;
+    if (o.checked->origin != claim_origin::paper || o.result.reads_whole_text || !is_finding(o.result.outcome) || !cause_of(o).empty()) continue;
     const finding kind = report_parts::finding_of(o);
     std::size_t following = 0;
     for (const claim_outcome& other : r.outcomes) following += cause_of(other) == o.checked->id && is_finding(other.result.outcome);
@@ -314,7 +320,8 @@ std::string findings_headline(const run_record& r) {
       follows_other += following;
     }
   }
-  std::string line = fmt::format("The {}'s {} claims: ", the, c.paper);
+  std::string line = fmt::format("The {}'s {}{}: ", the, n(c.paper, "claim", "claims"),
+                                 c.source_checks == 0 ? std::string() : " and " + n(c.source_checks, "check of its source", "checks of its source"));
   const std::vector<std::pair<std::string, verdict>> headline = headline_results(r);
   if (!headline.empty()) {
     std::vector<std::string> held, not_held;
@@ -346,8 +353,20 @@ std::string findings_headline(const run_record& r) {
     line += fmt::format("; {} the supplied source cannot show, its material absent ({})", n(c.unverifiable_findings, "claim", "claims"),
                         report_parts::join(unverifiable, ", "));
   }
-  line += fmt::format("; {} on claims that hold", n(c.remarks, "remark", "remarks"));
-  if (c.prose_slips > 0) line += fmt::format("; {} apart", n(c.prose_slips, "misspelled word", "misspelled words"));
+  // A remark that follows another claim's finding or remark is counted with it, once.
+  line += fmt::format("; {} on claims that hold", n(c.remarks - c.linked_remarks, "remark", "remarks"));
+  if (c.linked_remarks > 0) line += fmt::format(" ({} more following the finding or remark of another claim)", c.linked_remarks);
+  // The checks of the source as a whole: what each found, apart from the claims.
+  std::vector<std::string> of_source;
+  for (const claim_outcome& o : r.outcomes) {
+    if (o.checked->origin != claim_origin::paper || !o.result.reads_whole_text) continue;
+    const finding kind = report_parts::finding_of(o);
+    of_source.push_back(kind == finding::prose ? fmt::format("{} ({})", o.checked->id, n(c.prose_slips, "misspelled word", "misspelled words"))
+                        : kind == finding::unverifiable ? o.checked->id + " (unverifiable: its material absent from the source)"
+                        : is_finding(o.result.outcome) ? fmt::format("{} ({})", o.checked->id, to_string(o.result.outcome))
+                                                       : o.checked->id + " (holds)");
+  }
+  if (!of_source.empty()) line += "; the source: " + report_parts::join(of_source, ", ");
   return line + ".";
 }
 

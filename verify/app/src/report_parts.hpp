@@ -1,5 +1,5 @@
 #pragma once
-// What the report's files share (report_counts.cpp, report_summary.cpp, report_json.cpp, report.cpp):
+// What the report's files share (report_counts.cpp, report_referee.cpp, report_json.cpp, report.cpp):
 // the verdicts counted once, the class of a finding, and small text helpers.
 
 #include <simpson/verify/report.hpp>
@@ -17,11 +17,15 @@ std::vector<std::string> precision_names(const std::vector<precision>& precision
 struct verdict_counts {
   std::size_t faults = 0;  // checks that threw: a bug in the harness, no verdict (exit 3)
   std::size_t paper = 0, beyond = 0, harness = 0;            // whose statements
+  /// The paper's whole-text checks (its spelling, its citations): checks of the source, not claims
+  /// it makes, counted apart from `paper`; `source_findings` those that are findings, the spelling apart.
+  std::size_t source_checks = 0, source_findings = 0;
   /// The paper's findings, each cause once: distinct = substantive + typographical + wording (the
   /// classes wording, derivation gap and naming of a claim false under every reading) + unverifiable
   /// + constant_factor (errata off by a constant factor only, their zeros the same).
   std::size_t distinct = 0, substantive = 0, constant_factor = 0, typographical = 0, wording = 0, unverifiable_findings = 0, consequences = 0;
   std::size_t remarks = 0;                                       // the paper's claims that hold, with a remark
+  std::size_t linked_remarks = 0;  // of those, the ones that follow a finding or a remark of another claim (counted with it)
   std::size_t whole_text = 0;                                    // claims that read the text as a whole (spelling, citations)
   std::size_t prose_claims = 0, prose_slips = 0;                 // its spelling, counted apart: the claims, and the words they found
   /// How many claims have each verdict, in verdict_meanings' order.
@@ -49,5 +53,12 @@ expectation_counts count_expectations(const run_record& r);
 
 /// Every plot of the run's sections, as drawn (report_json.cpp).
 plot_outcome all_plots_drawn(const run_record& r);
+
+/// report_referee.cpp: a finding's amendments in one line ("where: printed …, should be …"), the first
+/// sentence of a note, the referee's summary of report.md, and the provenance of the text checked.
+std::string amendments_markdown(const std::vector<amendment>& amendments);
+std::string first_sentence(const std::string& text);
+std::string referee_summary_markdown(const run_record& r);
+std::string provenance_markdown(const run_record& r);
 
 }  // namespace simpson::verify::report_parts

@@ -185,12 +185,10 @@ inline decider_evidence words_erratum(json evidence, std::string correction, std
   return e;
 }
 
-/// Whether `e` comes to an erratum (a finding with its correction), as decide() will find.
-inline bool comes_to_erratum(const decider_evidence& e) { return verdict_of(e) == verdict::erratum; }
-
-/// A finding with its one line, "printed X, should be Y" (words): kept only when it is a finding.
+/// A finding with its one line, "printed X, should be Y" (words): decide() keeps it only where the
+/// verdict is an erratum (or a remark is said).
 inline decider_evidence amended(decider_evidence e, const std::string& where, const std::string& printed, const std::string& should_be) {
-  if (comes_to_erratum(e)) e.found.amendments.push_back(amendment{where, printed, should_be, false});
+  e.found.amendments.push_back(amendment{where, printed, should_be, false});
   return e;
 }
 
@@ -202,19 +200,6 @@ inline decider_evidence lexical(decider_evidence e, const std::string& word, con
   r.evidence["lexical"] = "the verdict follows from the word '" + word + "' read in the quoted sentence; " + computed;
   r.note = "Lexical: decided by the word '" + word + "'; " + computed + "." + (r.note.empty() ? "" : " " + r.note);
   return e;
-}
-
-/// A computed result judged against the words quoted for it: when the computation holds but the
-/// words deny it ("not consistent", "not symplectic"), each answer is the words' denial of it, an
-/// erratum whose correction is `computed_statement`.
-inline decider_evidence as_the_words_say(decider_evidence computed, bool words_affirm, std::string computed_statement) {
-  if (verdict_of(computed) != verdict::holds || words_affirm) return computed;
-  computed.ginac = negated(computed.ginac);
-  computed.own = negated(computed.own);
-  computed.lexical = negated(computed.lexical);
-  computed.if_false = verdict::erratum;  // the rest of what was computed (its formulas read, its certificate) stands
-  computed.found.correction = std::move(computed_statement);
-  return computed;
 }
 
 /// The numeric recheck of a check that lives beside its formula in the core:

@@ -86,8 +86,8 @@ detail::decider_evidence as_the_sentence_says(detail::decider_evidence e, const 
   result.evidence["stated"] = affirmed ? property->second.values.front() : "not " + property->second.values.front();
   const json& statement = result.evidence["exact"]["statement"];
   const std::string fact = "It is " + property->second.values.front() + ": " + (statement.is_string() ? statement.get<std::string>() : call.statement);
-  const bool denied = detail::verdict_of(e) == verdict::holds && !affirmed;
-  e = detail::as_the_words_say(std::move(e), affirmed, fact);
+  bool denied = false;
+  e = detail::as_the_words_say(std::move(e), affirmed, fact, &denied);
   if (denied) e.found.note = "Wording: the sentence denies what the formulas it judges prove.";
   return e;
 }

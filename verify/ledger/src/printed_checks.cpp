@@ -32,7 +32,6 @@ using detail::answer;
 using detail::answer_of;
 using detail::decider_evidence;
 using detail::printed_outcome;
-using detail::verdict_of;
 
 /// The registered check that decides `c`, with its facets; null for a claim a proof shape decides.
 const detail::registered_check* bespoke_check(const claim& c) {
@@ -44,65 +43,6 @@ const detail::registered_check* bespoke_check(const claim& c) {
 const detail::registered_check* printed_facet(const claim& c) {
   const detail::registered_check* check = bespoke_check(c);
   return check != nullptr && check->printed ? check : nullptr;
-}
-
-/// Two pieces of prose as sentences: a full stop after the first unless it has one.
-std::string then(const std::string& first, const std::string& second) {
-  if (second.empty()) return first;
-  if (first.empty()) return second;
-  const char last = first.back();
-  return first + (last == '.' || last == ':' || last == ';' ? " " : ". ") + second;
-}
-
-/// The two kernels on a bespoke check's derived statement, and GiNaC's on the printed one. Each
-/// proves the derived statement (ours on our transcription, in θ with the grid lemma; GiNaC from
-/// first principles, every symbol free); they must agree, or they differ on that part. When they
-/// agree that it holds, the printed side is GiNaC's alone: it holds, or it is false (an erratum, the
-/// derived formula its correction, or a printed property that fails). `quoted`: the claim quotes
-/// words, so that an erratum of ours may be of the words and not of the formula.
-decider_evidence with_printed(decider_evidence e, const printed_outcome& g, const std::string& claim_id, bool quoted) {
-  const verdict own = verdict_of(e);
-  const bool own_derived = own != verdict::fails;
-  claim_result& result = e.found;
-  // An erratum of the quoted words (a claim that reads a formula and also judges prose about it)
-  // stands whatever the printed formula: the words, not the transcription, were refuted.
-  const bool words_refuted = own == verdict::erratum && quoted;
-  if (own_derived != g.derived_holds) {
-    e.parts_differ = true;
-    e.disagreement = "The two kernels disagree on '" + claim_id + "': ours " + (own_derived ? "proved" : "did not prove") +
-                     " the derived statement, GiNaC " + (g.derived_holds ? "proved" : "did not prove") + " it (" + g.derived + ")." +
-                     (result.note.empty() ? "" : " " + result.note);
-    return e;
-  }
-  if (!g.derived_holds) {  // neither proved the derived statement: it fails
-    e.ginac = answer::fails;
-    e.if_false = verdict::fails;
-    return e;
-  }
-  if (g.holds && words_refuted) {  // GiNaC judged the formula, not the words: ours decide
-    result.note = then("The printed formula holds (" + g.proved + "); the quoted words do not.", result.note);
-    return e;
-  }
-  // The printed side is GiNaC's: our kernel judged our transcription, which answers for the print
-  // only where it agrees (an erratum of the transcription that the print repeats).
-  e.ginac = answer_of(g.holds);
-  e.lexical = answer::none;
-  if (g.holds) {
-    if (own == verdict::erratum) {
-      result.note = "This copy of the paper prints the derived formula: " + g.proved +
-                    ". (Our kernel's transcription of the printed formula, typed from the GSI 2023 text, is the erratum it refutes.)";
-      result.correction.clear();
-      e.own = answer::none;
-    }
-    return e;
-  }
-  e.if_false = g.property || g.correction.empty() ? verdict::fails : verdict::erratum;
-  if (e.if_false == verdict::erratum && own != verdict::erratum) result.correction = g.correction;
-  e.own = own == verdict::erratum ? answer::fails : answer::none;
-  result.note = then((own == verdict::erratum ? "As printed: " : "The formula as printed in the paper's source differs from the derived one: ") +
-                         g.proved,
-                     result.note);
-  return e;
 }
 
 }  // namespace
@@ -154,8 +94,7 @@ decider_evidence with_facets(decider_evidence e, const registered_check& check, 
                              const std::string& coq_none, const run_context& ctx) {
   // Words that no longer read, or nothing decided: no facet and no certificate (a skipped or unproved
   // floating claim still says why it has none).
-  const verdict own = verdict_of(e);
-  if (own == verdict::text_changed || own == verdict::undecided) return e;
+  if (!detail::settled(e)) return e;
   if (!check.printed) {
     // The check wrote its own, or why there is none (the floating claims: Gappa's and the lifting lemma).
     if (!e.found.certificate.empty() || !e.found.certificate_missing.empty()) return e;
@@ -190,7 +129,7 @@ decider_evidence with_facets(decider_evidence e, const registered_check& check, 
                                          : "the claim's check above: our transcription, rational functions of theta with the grid lemma";
   result.evidence["kernels"] = {
       {"own", {{"statement", own_statement},
-               {"derived_holds", own != verdict::fails}}},
+               {"derived_holds", detail::derived_proved(e)}}},
       {"ginac", {{"printed", outcome.proved}, {"printed_holds", outcome.holds}, {"derived", outcome.derived},
                  {"derived_holds", outcome.derived_holds}}}};
   result.printed_seconds = seconds;

@@ -97,6 +97,8 @@ stated_solution read_stated_solution(const paper_source& paper, json* quotes) {
   s.q_text = canonical_text(q);
   s.p_text = canonical_text(p);
   s.m_dq_dt = canonical_text(m * dq);
+  said.record("q_exact", s.q_text);
+  said.record("p_exact", s.p_text);
   // q = A sin(ω t + φ): q(0) = A sin φ, q'(0)/ω = A cos φ, both numbers (ω a positive symbol).
   const GiNaC::ex q0 = GiNaC::normal(q.subs(t == 0)), v0 = GiNaC::normal(dq.subs(t == 0) / omega);
   const GiNaC::ex q0n = GiNaC::evalf(q0), v0n = GiNaC::evalf(v0);

@@ -78,6 +78,9 @@ claim_result decide(const std::string& claim_id, const std::string& statement, d
     result.remark.clear();
     result.remark_kind = finding::none;
   }
+  // An amendment is said of an erratum (its correction in one line) or of a remark: a decider adds it
+  // whatever it found, and it is dropped here where the verdict says nothing it could belong to.
+  if (!meaning(outcome).corrected && result.remark.empty()) result.amendments.clear();
   if (outcome != verdict::erratum) result.constant_factor = false;
   if (evidence.goals && outcome != verdict::kernels_disagree) record_certificate(result, coq_certificate(claim_id, statement, *evidence.goals));
   result.outcome = outcome;  // the engine's one verdict site

@@ -80,7 +80,11 @@ decider_evidence emerging_condition_shape(const shape_call& call, const run_cont
   const std::string stable_set = bands.empty() ? "no v > 0" : fmt::format("{} in {}", var, fmt::join(bands, " and "));
   result.evidence["exact"] = {
       {"statement", fmt::format("the condition 0 < {} < {} follows from the pole of ({})", var, text_of(high), formula_ref)},
-      {"stated", said.words("emerges")},
+      {"stated", [&] {
+         // Quoted in the remark; the verdict rests on the formulas, not on these words.
+         said.record("emerges", "quoted in the remark, not parsed: the verdict rests on the formulas");
+         return said.words("emerges");
+       }()},
       {"poles", [&] {
          json all = json::array();
          for (const positive_root& e : poles->ends) all.push_back(poles->text(e));

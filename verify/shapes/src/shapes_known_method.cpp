@@ -141,6 +141,7 @@ decider_evidence known_method_shape(const shape_call& call, const run_context& c
                                       : own_decided   ? std::string(ginac_same ? "holds" : "fails") + ": each entry's difference decided on a grid"
                                                       : "not applicable for an entry: GiNaC's proof alone"}};
   result.evidence["stated"] = said.words("novelty");
+  said.record("novelty", "quoted in the remark, not parsed: the verdict rests on the map and on the names looked for");
   result.evidence["names"] = {{"looked_for", names}, {"found", named}};
   // Whether the map is the method's is the kernels' (entry by entry); whether the prose names it is
   // read. The sentence ("we propose a ... method") holds either way: a method that is known prior

@@ -128,8 +128,9 @@ published_fact table1_printed_values_fact(const printed_table_values& published,
   // reproduces them: said first (experiment-conventions is the finding; this claim follows from it).
   const std::string numbers_right =
       simplest != nullptr && search.reproducing() != nullptr
-          ? std::string("The numbers are right for the start that reproduces them, not for the one Section 8 states: the two are inconsistent "
-                        "(experiment-conventions), and which was meant the paper does not say. ")
+          ? std::string("False as described: the start Section 8 states does not give these numbers, and whether the sentence or the "
+                        "table is wrong the paper does not say (the finding is experiment-conventions, counted there once). The numbers "
+                        "themselves are another start's. ")
           : std::string();
   if (simplest != nullptr && simplest->reproduced == entries.size()) {
     return {false, evidence, stated_count + " " + table_not_reproduced(published, orders),

@@ -16,7 +16,7 @@
 namespace simpson::verify {
 
 /// The version of report.json's layout, its member "schema_version" (verify/app/report.schema.json).
-inline constexpr int report_schema_version = 2;
+inline constexpr int report_schema_version = 3;
 
 json report_json(const run_record& r);
 std::string report_markdown(const run_record& r);

@@ -101,6 +101,30 @@ using judge = std::function<decider_evidence(const run_context&)>;
 /// (beyond reach: undecided), or the words it quotes did not read (text-changed).
 decider_evidence within_reach(const judge& judged_by, const run_context& ctx);
 
+// ---- evidence combined: what a book's check adds to a decider's evidence, judged here ----
+// (evidence_combined.cpp). A book hands these its parts; none of them sets or reads a verdict in the
+// book: what the parts come to is decide()'s.
+
+/// The evidence comes to a verdict a printed facet and a certificate can be added to: its words
+/// read, and a kernel decided (not text-changed, not undecided).
+bool settled(const decider_evidence& e);
+
+/// Our kernel's check proved the derived statement (its evidence does not come to a failure).
+bool derived_proved(const decider_evidence& e);
+
+/// A computed result judged against the words quoted for it: when the computation holds but the
+/// words deny it ("not consistent", "not symplectic"), each answer is the words' denial of it, an
+/// erratum whose correction is `computed_statement`; `denied` (when given) says whether they did.
+decider_evidence as_the_words_say(decider_evidence computed, bool words_affirm, std::string computed_statement, bool* denied = nullptr);
+
+/// The two kernels on a check's derived statement, and GiNaC's on the printed one (`g`). Each proves
+/// the derived statement (ours on our transcription; GiNaC from first principles, every symbol
+/// free); they must agree, or they differ on that part. When they agree that it holds, the printed
+/// side is GiNaC's alone: it holds, or it is false (an erratum, the derived formula its correction,
+/// or a printed property that fails). `quoted`: the claim quotes words, so that an erratum of ours
+/// may be of the words and not of the formula.
+decider_evidence with_printed(decider_evidence e, const printed_outcome& g, const std::string& claim_id, bool quoted);
+
 /// A claim's check: `judged_by`'s evidence within reach, made a verdict by decide().
 std::function<claim_result(const run_context&)> claim_check_of(judge judged_by, const std::string& claim_id, const std::string& statement);
 
@@ -109,7 +133,9 @@ std::function<claim_result(const run_context&)> claim_check_of(judge judged_by, 
 /// unproved where a prover could not bound it; kernels-disagree where both kernels
 /// answered and differ, or differ on a part (no finding then: its correction and amendments are
 /// dropped); undecided where the statement is beyond reach or neither kernel answered; else holds,
-/// or `if_false`. The certificate of `goals` is exported unless the kernels disagree.
+/// or `if_false`. The certificate of `goals` is exported unless the kernels disagree. Amendments
+/// ("printed X, should be Y") are kept only where they are said of something: an erratum, or a
+/// claim that holds with a remark.
 claim_result decide(const std::string& claim_id, const std::string& statement, decider_evidence evidence);
 
 }  // namespace simpson::verify::detail

@@ -203,6 +203,7 @@ kernel_decision kernel_confirms_order(const GiNaC::ex& f, const GiNaC::symbol& h
 std::vector<proof_shape> identities_shape_specs();
 std::vector<proof_shape> forms_shape_specs();
 std::vector<proof_shape> invariance_shape_specs();
+std::vector<proof_shape> invariance_kernel_shape_specs();
 std::vector<proof_shape> derivation_shape_specs();
 std::vector<proof_shape> explicit_shape_specs();
 std::vector<proof_shape> intervals_shape_specs();
