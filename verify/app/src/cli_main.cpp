@@ -2,6 +2,7 @@
 // harness's own checks; a test's binary with a seam of its own (a check that throws).
 
 #include "cli_commands.hpp"
+#include "cli_entry.hpp"
 #include "cli_options.hpp"
 
 #include <CLI/CLI.hpp>
@@ -9,6 +10,8 @@
 #include <cstdio>
 
 namespace simpson::verify {
+
+int simpson_verify_main(int argc, char** argv) { return simpson_verify_main(argc, argv, claim_checker{}); }
 
 int simpson_verify_main(int argc, char** argv, const claim_checker& checker) {
   CLI::App app{"simpson-verify: proves, rechecks and reports every claim of the symplectic Simpson paper"};

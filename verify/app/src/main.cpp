@@ -3,6 +3,6 @@
 // 2 bad input or usage (one line on stderr, nothing written); 3 an internal error (a bug in the
 // harness: a check that threw, or an unexpected exception); 128 + n when stopped by signal n.
 
-#include "cli_commands.hpp"
+#include "cli_entry.hpp"
 
-int main(int argc, char** argv) { return simpson::verify::simpson_verify_main(argc, argv, {}); }
+int main(int argc, char** argv) { return simpson::verify::simpson_verify_main(argc, argv); }

@@ -176,7 +176,7 @@ decider_evidence check_experiment_conventions(const run_context& ctx) {
     }
     const std::string any_mass =
         position_reproduced == 0
-            ? fmt::format(", nor with any other m: the {} entries of the state rows (errors in q) do not depend on m from the stated q(t) "
+            ? fmt::format(", nor does it with any other m: the {} entries of the state rows (errors in q) do not depend on m from the stated q(t) "
                           "(lemma-dimensional-scaling: p and the energies scale with m, q does not) and it reproduces none of them",
                           position_entries)
             : "";
