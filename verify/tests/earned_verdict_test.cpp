@@ -83,7 +83,7 @@ TEST(RefereesCases, ThePaperAsAnExpertReadsIt) {
   EXPECT_EQ(values.find("The numbers are right"), std::string::npos) << values;
   // The stated conventions: inconsistent whatever m, and both corrections named.
   const std::string& conventions = outcome_of(r, "experiment-conventions").result.correction;
-  EXPECT_NE(conventions.find("nor does it with any other m: the 6 entries of the state rows"), std::string::npos) << conventions;
+  EXPECT_NE(conventions.find("and no other m reproduces the table: the 6 entries of the state rows"), std::string::npos) << conventions;
   EXPECT_NE(conventions.find("or Table 1 recomputed from the stated solution"), std::string::npos) << conventions;
   EXPECT_NE(values.find("17 of the 18 informative entries (the 6 others, of the rows printed as exact, are round-off"), std::string::npos) << values;
   // "explicited": "made explicit", the record's replacement, not Hunspell's "explicated".
@@ -99,13 +99,13 @@ TEST(RefereesCases, ThePaperAsAnExpertReadsIt) {
   // The harness's own statement is not shown as the abstract's: its place says whose it is.
   EXPECT_NE(md.find("beyond, about §abstract, hamiltonien-discret — **holds**"), std::string::npos);
   EXPECT_NE(md.find("| [approximate-energy-sign](#approximate-energy-sign) | beyond, about abstract |"), std::string::npos);
-  EXPECT_NE(md.find("Remarks on claims that hold (5, of which 3 follow the finding or remark of the claim they link to"), std::string::npos);
+  EXPECT_NE(md.find("Remarks on claims that hold (5, 3 of them following the finding or remark of the claim they link to"), std::string::npos);
   // Counted once: the remarks that follow another claim's (gamma-singular, conserved-form from
   // gamma-system; abstract-explicit from phi3-explicit) apart; the spelling a check of the source.
   const std::string headline = summary["headline"].get<std::string>();
   EXPECT_NE(headline.find("and 1 check of its source:"), std::string::npos) << headline;
-  EXPECT_NE(headline.find("2 remarks on claims that hold (3 more following the finding or remark of another claim)"), std::string::npos) << headline;
-  EXPECT_NE(headline.find("the source: prose-spelling (6 misspelled words)"), std::string::npos) << headline;
+  EXPECT_NE(headline.find("5 remarks on claims that hold (3 of them following the finding or remark of another claim)"), std::string::npos) << headline;
+  EXPECT_NE(headline.find("The source's checks: prose-spelling (6 misspelled words)"), std::string::npos) << headline;
   EXPECT_EQ(summary["source_checks"], 1);
 }
 
@@ -124,7 +124,7 @@ TEST(RefereesCases, TheHeadlineSaysFirstWhetherTheHeadlineResultsHold) {
                        0),
             0u)
       << line;
-  EXPECT_NE(line.find("; the source: bibliography (unverifiable: its material absent from the source)."), std::string::npos) << line;
+  EXPECT_NE(line.find(". The source's checks: bibliography (unverifiable: its material absent from the supplied source)."), std::string::npos) << line;
   const json summary = report_json(printed)["summary"];
   EXPECT_EQ(summary["constant_factor_findings"], 1);
   EXPECT_EQ(summary["substantive_findings"], 0);

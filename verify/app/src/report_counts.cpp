@@ -349,24 +349,24 @@ std::string findings_headline(const run_record& r) {
   if (c.wording > 0) parts.push_back(n(c.wording, "statement false as worded (wording, naming or derivation)", "statements false as worded (wording, naming or derivation)"));
   line += report_parts::join(parts, ", ");
   if (follows_other > 0) line += fmt::format(" ({} following from these)", n(follows_other, "more claim", "more claims"));
+  // A remark that follows another claim's finding or remark says so.
+  line += fmt::format("; {} on claims that hold", n(c.remarks, "remark", "remarks"));
+  if (c.linked_remarks > 0) line += fmt::format(" ({} of them following the finding or remark of another claim)", c.linked_remarks);
+  // What the supplied copy lacks is a limit of the source, not a defect of the mathematics: said apart.
   if (c.unverifiable_findings > 0) {
-    line += fmt::format("; {} the supplied source cannot show, its material absent ({})", n(c.unverifiable_findings, "claim", "claims"),
-                        report_parts::join(unverifiable, ", "));
+    line += fmt::format(". What the supplied source cannot show, its material absent: {}", report_parts::join(unverifiable, ", "));
   }
-  // A remark that follows another claim's finding or remark is counted with it, once.
-  line += fmt::format("; {} on claims that hold", n(c.remarks - c.linked_remarks, "remark", "remarks"));
-  if (c.linked_remarks > 0) line += fmt::format(" ({} more following the finding or remark of another claim)", c.linked_remarks);
   // The checks of the source as a whole: what each found, apart from the claims.
   std::vector<std::string> of_source;
   for (const claim_outcome& o : r.outcomes) {
     if (o.checked->origin != claim_origin::paper || !o.result.reads_whole_text) continue;
     const finding kind = report_parts::finding_of(o);
     of_source.push_back(kind == finding::prose ? fmt::format("{} ({})", o.checked->id, n(c.prose_slips, "misspelled word", "misspelled words"))
-                        : kind == finding::unverifiable ? o.checked->id + " (unverifiable: its material absent from the source)"
+                        : kind == finding::unverifiable ? o.checked->id + " (unverifiable: its material absent from the supplied source)"
                         : is_finding(o.result.outcome) ? fmt::format("{} ({})", o.checked->id, to_string(o.result.outcome))
                                                        : o.checked->id + " (holds)");
   }
-  if (!of_source.empty()) line += "; the source: " + report_parts::join(of_source, ", ");
+  if (!of_source.empty()) line += ". The source's checks: " + report_parts::join(of_source, ", ");
   return line + ".";
 }
 

@@ -141,8 +141,8 @@ std::string report_parts::referee_summary_markdown(const run_record& r) {
   }
   if (c.remarks > 0) {
     md += c.linked_remarks == 0 ? fmt::format("\nRemarks on claims that hold ({}), not findings:\n\n", c.remarks)
-                                : fmt::format("\nRemarks on claims that hold ({}, of which {} follow the finding or remark of the claim they "
-                                              "link to, counted with it), not findings:\n\n",
+                                : fmt::format("\nRemarks on claims that hold ({}, {} of them following the finding or remark of the claim they "
+                                              "link to), not findings:\n\n",
                                               c.remarks, c.linked_remarks);
     for (const claim_outcome& o : r.outcomes) {
       if (o.checked->origin != claim_origin::paper || !meaning(o.result.outcome).affirms || o.result.remark.empty()) continue;

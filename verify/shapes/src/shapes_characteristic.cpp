@@ -546,8 +546,8 @@ decider_evidence unconditional_stability_shape(const shape_call& call, const run
   if (holds) {
     if (small_steps) {
       result.remark_kind = finding::wording;
-      result.remark = fmt::format("Stable as the field reads a plain \"stable\" of a scheme, for every step small enough: ({}) is stable for {}, not for "
-                                  "every step: conditionally stable.",
+      result.remark = fmt::format("Stable for every step small enough, as a plain \"stable\" of a scheme is read; not for every step: ({}) is "
+                                  "stable for {} only, so conditionally stable.",
                                   scheme_ref, bands_text);
       result.amendments.push_back(amendment_in_words("the stated stability", stated_words, "conditionally stable: for " + bands_text + " only"));
     }

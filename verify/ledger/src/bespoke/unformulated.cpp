@@ -96,8 +96,8 @@ decider_evidence check_abstract_explicit(const run_context& ctx) {
     holds.found.remark_kind = finding::wording;
     holds.found.remark = "Explicit for the harmonic oscillator, to which the sentence before limits it (\"explicited for " + scope +
                          "\"): its step equation is linear in q_m, solved in closed form, and Phi_3 follows (phi3-explicit). As a method the "
-                         "scheme is implicit: for a nonlinear V (V = q^3, q^4 here) the internal node's equation is nonlinear and solved at every "
-                         "step, as Section 9 says.";
+                         "scheme is implicit: for a nonlinear V (V = q^3, q^4 here) the internal node's equation is nonlinear, and each step "
+                         "solves it.";
     holds.found.amendments.push_back(amendment{"the scheme's kind", stated, "explicit for the harmonic oscillator; implicit as a method", false});
     return lexical(std::move(holds), stated, fixed);
   }
@@ -176,8 +176,8 @@ decider_evidence check_experiment_conventions(const run_context& ctx) {
     }
     const std::string any_mass =
         position_reproduced == 0
-            ? fmt::format(", nor does it with any other m: the {} entries of the state rows (errors in q) do not depend on m from the stated q(t) "
-                          "(lemma-dimensional-scaling: p and the energies scale with m, q does not) and it reproduces none of them",
+            ? fmt::format("; and no other m reproduces the table: the {} entries of the state rows (errors in q) do not depend on m from the "
+                          "stated q(t) (lemma-dimensional-scaling: p and the energies scale with m, q does not), and it reproduces none of them",
                           position_entries)
             : "";
     evidence["table1"]["state_rows_reproduced_for_any_m"] = fmt::format("{} of {}", position_reproduced, position_entries);
@@ -190,9 +190,10 @@ decider_evidence check_experiment_conventions(const run_context& ctx) {
                          fmt::format("The stated pair is one exact solution with T = {} one period, but not one Table 1 was computed with "
                                      "(table-values, convention search). ", period) + unstated),
                    "Table 1's exact solution", fmt::format("$q(t) = {}$, $p(t) = {}$", stated.q_tex, stated.p_tex),
-                   fmt::format("a start consistent with Table 1 (the stated one reproduces {} of its {} informative entries{}): either the "
+                   fmt::format("a start consistent with Table 1 (the stated one reproduces {} of its {} informative entries at m = 1{}): either the "
                                "start that reproduces it, the best found reproducing {}: the oscillator {}; or Table 1 recomputed from the stated one",
-                               stated_tally.informative_reproduced, stated_tally.informative, position_reproduced == 0 ? ", whatever m" : "",
+                               stated_tally.informative_reproduced, stated_tally.informative,
+                               position_reproduced == 0 ? fmt::format(", and for no m its {} state entries, which m does not change", position_entries) : "",
                                best_tally.informative_reproduced, table1_start(*simplest)));
   }
   return confirmed_if(false, evidence, "The stated pair does not reproduce Table 1, and no convention of the searched family does "
