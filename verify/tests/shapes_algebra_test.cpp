@@ -53,7 +53,7 @@ TEST_F(ShapesOnADocument, ConsequencesAreTracedAndTypedLinksChecked) {
     }
     std::vector<const claim_result*> pointers;
     for (const claim_result& r : results) pointers.push_back(&r);
-    return std::make_pair(results, trace_consequences(claims, pointers, ctx));
+    return std::make_pair(results, trace_consequences(claims, pointers, ctx, check_claim));
   };
   // 'misprint' is an erratum; 'reads-it' fails as printed and holds with the corrected (expanded);
   // 'still-wrong' does not, and follows from nothing.

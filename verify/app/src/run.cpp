@@ -222,7 +222,8 @@ run_record run(const scene& s, std::shared_ptr<const claim_book> book, const pap
       claims.push_back(o.checked);
       results.push_back(&o.result);
     }
-    const std::vector<std::optional<consequence>> traced = trace_consequences(claims, results, ctx);
+    const std::vector<std::optional<consequence>> traced =
+        trace_consequences(claims, results, ctx, checker ? claim_judge(checker) : claim_judge(check_claim));
     for (std::size_t k = 0; k < traced.size(); ++k) {
       if (!traced[k]) continue;
       claim_outcome& o = r.outcomes[k];

@@ -139,7 +139,7 @@ std::vector<claim> claims_of(const std::vector<claim_record>& records, const std
     c.labels_read = labels_read(r);
     c.headline = r.headline;
     c.coq_none = r.coq_none;
-    c.expected_correction = r.expected == verdict::erratum ? r.correction : r.remark;
+    c.expected_correction = meaning(r.expected).corrected ? r.correction : r.remark;
     c.expected_reads = r.reads;
     out.push_back(std::move(c));
   }

@@ -102,7 +102,7 @@ using judge = std::function<decider_evidence(const run_context&)>;
 decider_evidence within_reach(const judge& judged_by, const run_context& ctx);
 
 // ---- evidence combined: what a book's check adds to a decider's evidence, judged here ----
-// (evidence_combined.cpp). A book hands these its parts; none of them sets or reads a verdict in the
+// (decide.cpp). A book hands these its parts; none of them sets or reads a verdict in the
 // book: what the parts come to is decide()'s.
 
 /// The evidence comes to a verdict a printed facet and a certificate can be added to: its words

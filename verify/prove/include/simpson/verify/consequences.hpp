@@ -5,6 +5,7 @@
 
 #include <simpson/verify/claim.hpp>
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,8 +21,10 @@ struct consequence {
 /// printed formulas itself (a proof shape), the erratum whose corrections make it hold: its typed
 /// cause (follows_from) first, then every other erratum with proved corrections, in order. None
 /// where none does. Throws std::logic_error (a harness fault) when a typed cause's corrections are
-/// read by its claim and do not make it hold: a link the derivation contradicts.
+/// read by its claim and do not make it hold: a link the derivation contradicts. `judge` is the
+/// book's: it judges a claim again with the run's context (the corrections in it).
+using claim_judge = std::function<claim_result(const claim&, const run_context&)>;
 std::vector<std::optional<consequence>> trace_consequences(const std::vector<const claim*>& claims, const std::vector<const claim_result*>& results,
-                                                           const run_context& ctx);
+                                                           const run_context& ctx, const claim_judge& judge);
 
 }  // namespace simpson::verify

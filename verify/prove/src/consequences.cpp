@@ -3,7 +3,6 @@
 #include <simpson/verify/consequences.hpp>
 
 #include <simpson/verify/formula_reference.hpp>
-#include <simpson/verify/printed_checks.hpp>
 
 #include <stdexcept>
 
@@ -11,12 +10,12 @@ namespace simpson::verify {
 namespace {
 
 /// The claim's verdict with `corrected` read instead of the printed formulas, and whether it read any.
-std::pair<verdict, bool> judged_with(const claim& c, const claim_result& cause, const run_context& ctx) {
+std::pair<verdict, bool> judged_with(const claim& c, const claim_result& cause, const run_context& ctx, const claim_judge& judge) {
   formula_corrections corrections{cause.corrected_formulas};
   run_context again = ctx;
   again.corrections = &corrections;
   again.quotes = nullptr;  // the document's sentences are quoted once, by the judgment as printed
-  const claim_result r = check_claim(c, again);
+  const claim_result r = judge(c, again);
   return {r.outcome, r.printed.is_object() && r.printed.value("corrected", false)};
 }
 
@@ -29,7 +28,7 @@ std::vector<std::string> shown(const claim_result& cause) {
 }  // namespace
 
 std::vector<std::optional<consequence>> trace_consequences(const std::vector<const claim*>& claims, const std::vector<const claim_result*>& results,
-                                                           const run_context& ctx) {
+                                                           const run_context& ctx, const claim_judge& judge) {
   std::vector<std::optional<consequence>> out(claims.size());
   std::vector<std::size_t> causes;  // the errata with proved corrections of printed formulas
   for (std::size_t k = 0; k < claims.size(); ++k) {
@@ -47,7 +46,7 @@ std::vector<std::optional<consequence>> trace_consequences(const std::vector<con
       else if (e != k) order.push_back(e);
     }
     for (const std::size_t e : order) {
-      const auto [again, read] = judged_with(c, *results[e], ctx);
+      const auto [again, read] = judged_with(c, *results[e], ctx, judge);
       const bool typed = claims[e]->id == c.follows_from;
       if (read && again == verdict::holds) {
         out[k] = consequence{claims[e]->id, shown(*results[e])};
