@@ -192,3 +192,24 @@ corank_one decide_corank_one(const GiNaC::matrix& m) {
 }
 
 }  // namespace simpson::verify::detail::invariance
+
+namespace simpson::verify::detail {
+
+/// What the invariance shapes share besides the printed formula they judge: the quadratic form, the
+/// map it is invariant under, the state and the form's coefficients.
+std::vector<shape_parameter> with_invariance(shape_parameter printed) {
+  return {std::move(printed),
+          {"form", argument_kind::formula, true, "the quadratic form of the state, its coefficients the unknowns"},
+          {"map", argument_kind::matrix, true, "the one-step map"},
+          {"state", argument_kind::symbols, true, "the state's symbols, in the map's order", 0, "map"},
+          {"unknowns", argument_kind::symbols, true, "the form's coefficients: the system's unknowns (as many as the y_i y_j for its determinant)"}};
+}
+
+/// The printed conditions a shape puts in, each solved for one symbol of `solve_for`, in order.
+std::vector<shape_parameter> with_conditions(std::vector<shape_parameter> parameters) {
+  parameters.push_back({"conditions", argument_kind::equations, true, "printed equations a = b (alpha delta - beta gamma = 1), put in in order"});
+  parameters.push_back({"solve_for", argument_kind::symbols, true, "the symbol each condition is solved for (linear in it)", 0, "conditions"});
+  return parameters;
+}
+
+}  // namespace simpson::verify::detail

@@ -32,6 +32,7 @@ const std::map<std::string, proof_shape>& proof_shapes() {
              &forms_shape_specs,
              &invariance_shape_specs,
              &invariance_kernel_shape_specs,
+             &stability_criteria_shape_specs,
              &derivation_shape_specs,
              &explicit_shape_specs,
              &intervals_shape_specs,

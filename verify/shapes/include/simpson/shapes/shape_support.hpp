@@ -204,6 +204,7 @@ std::vector<proof_shape> identities_shape_specs();
 std::vector<proof_shape> forms_shape_specs();
 std::vector<proof_shape> invariance_shape_specs();
 std::vector<proof_shape> invariance_kernel_shape_specs();
+std::vector<proof_shape> stability_criteria_shape_specs();
 std::vector<proof_shape> derivation_shape_specs();
 std::vector<proof_shape> explicit_shape_specs();
 std::vector<proof_shape> intervals_shape_specs();
