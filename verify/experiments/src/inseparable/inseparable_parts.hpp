@@ -8,6 +8,7 @@
 #include <simpson/verify/scheme_style.hpp>
 
 #include <simpson/interval.hpp>
+#include <simpson/lagrange_top_exact.hpp>
 #include <simpson/discrete_lagrangian_step.hpp>
 #include <simpson/hamiltonian_prk_step.hpp>
 #include <simpson/vprk_step.hpp>
@@ -169,6 +170,10 @@ struct part_runs {
   std::string system;
 };
 part_runs run_top_part(const inseparable_settings& s, section_result& out);
+
+/// The top's exact motion (enclosed) against an independent MPFR integration of its Hamiltonian
+/// equations at T: the text and the expectation (inseparable_top_reference.cpp).
+void add_top_reference_check(const inseparable_settings& s, const lagrange_top_exact& exact, section_result& out);
 part_runs run_pendulum_part(const inseparable_settings& s, section_result& out);
 
 }  // namespace simpson::verify::detail

@@ -235,71 +235,9 @@ long_run run_long(ins_method m, const lagrange_top<double>& L, const ndof_state<
 /// Simpson's) at the first h only.
 constexpr std::array<ins_method, 4> long_methods{ins_method::simpson, ins_method::midpoint, ins_method::rk4, ins_method::vprk};
 
-}  // namespace
-
-part_runs run_top_part(const inseparable_settings& s, section_result& out) {
-  check_inseparable_top(s.top);
-  const lagrange_top<double> L(s.top.I1, s.top.I3, s.top.Mgl);
-  const ndof_state<double> y0 = top_start(L, s.top);
-  const top_convergence c = converge_top(s, s.progress);
-  const scoped_interval_digits digits(s.exact_digits);
-  const lagrange_top_exact exact(top_enclosed(s.top), start_enclosed(s.top));
-  out.text(fmt::format(
-      "### The Lagrange top\n\nThe heavy symmetric top in Euler angles (θ, φ, ψ), L = ½I₁(θ̇² + φ̇² sin²θ) + ½I₃(ψ̇ + φ̇ cos θ)² − Mgl cos θ "
-      "(Goldstein §5.7), with I₁ = {}, I₃ = {}, Mgl = {}, started at θ₀ = {}, θ̇₀ = {}, φ̇₀ = {}, ψ̇₀ = {} (φ₀ = ψ₀ = 0); p = ∂L/∂v is "
-      "formed in double from these rates. φ and ψ are cyclic: p_φ = {:.17g} and p_ψ = {:.17g} are conserved, and so is the energy. The "
-      "exact motion is enclosed in {} digits (u = cos θ = u₁ + (u₂ − u₁) sn²(τ₀ + λt, m), φ and ψ by elliptic integrals of the third "
-      "kind, by Arb): {}; nutation between θ = {} and {} rad, period {}. Each method runs in double to T = {}; its error in θ is the largest "
-      "over ten times t_k = (kN/10)h, k = 1…10, enclosed: the run's double θ enters an interval exactly and the exact θ(t_k) is an "
-      "enclosure, so the error shown is the run's own, with only guaranteed digits.",
-      s.top.I1, s.top.I3, s.top.Mgl, s.top.theta0, s.top.theta_dot0, s.top.phi_dot0, s.top.psi_dot0, y0.p(1), y0.p(2), s.exact_digits,
-      exact.motion() == top_motion::nutation ? "a nutation between two proved-distinct roots" : "a steady precession (no nutation band at these digits)",
-      enclosure_text(interval(acos(exact.u1())), 10), enclosure_text(interval(acos(exact.u2())), 10), enclosure_text(exact.nutation_period(), 10),
-      s.top_end_time));
-  if (s.perturb_exact != 0) out.text(fmt::format("**The exact θ is moved by {} here (a test of the checks).**", s.perturb_exact));
-
-  // The enclosure against an independent integration: the Legendre Hamiltonian's equations in MPFR (rkf78, step halving).
-  {
-    const unsigned ref_digits = static_cast<unsigned>(std::ceil(s.reference_digits)) + 10;
-    const scoped_mpfr_digits mdigits(ref_digits);
-    const lagrange_top<mpfr> Lm(mpfr(s.top.I1), mpfr(s.top.I3), mpfr(s.top.Mgl));
-    dense_vector<mpfr> q(3), v(3);
-    q << mpfr(s.top.theta0), mpfr(0), mpfr(0);
-    v << mpfr(s.top.theta_dot0), mpfr(s.top.phi_dot0), mpfr(s.top.psi_dot0);
-    const ndof_state<mpfr> ym{lagrangian_gradient_at(Lm, q, v).dv, q};
-    const reference_state ref = lagrangian_reference(Lm, ym, mpfr(s.top_end_time), s.reference_digits, 32, 6);
-    progress_step(s.progress, "nonlinear_inseparable", "top: the MPFR reference");
-    const top_point_enclosed at = exact.at(interval(s.top_end_time));
-    interval theta = at.state.theta;
-    if (s.perturb_exact != 0) theta += interval(s.perturb_exact);
-    const std::array<interval, 6> ex{theta, at.state.phi, at.state.psi, at.momenta.p_theta, at.momenta.p_phi, at.momenta.p_psi};
-    const std::array<mpfr, 6> rf{ref.state.q(0), ref.state.q(1), ref.state.q(2), ref.state.p(0), ref.state.p(1), ref.state.p(2)};
-    const std::array<const char*, 6> names{"θ", "φ", "ψ", "p_θ", "p_φ", "p_ψ"};
-    bool agree = true;
-    std::vector<std::string> gaps;
-    // The reference's own error: its two finest runs agree to `agreed_digits` relative to max(1, |state|);
-    // allowed: 10 times that, relative to max(1, |value|).
-    const double allowed_relative = 10 * std::pow(10.0, -ref.agreed_digits);
-    double worst = 0;
-    for (std::size_t k = 0; k < 6; ++k) {
-      const interval gap = abs(interval(ex[k] - interval(rf[k])));
-      const double g = static_cast<double>(upper(gap)), scale = std::max(1.0, std::abs(static_cast<double>(rf[k])));
-      worst = std::max(worst, g / scale);
-      agree = agree && g <= allowed_relative * std::max(1.0, std::abs(static_cast<double>(rf[k])));
-      gaps.push_back(fmt::format("{} {:.2g}", names[k], g));
-    }
-    out.text(fmt::format("The enclosure against an independent route: the top's Hamiltonian equations integrated in MPFR ({} digits) by "
-                         "Fehlberg's 7(8) at fixed steps, halved until two runs agree to {:.1f} digits ({} steps). At T = {} the largest "
-                         "distances from the enclosure are {}.",
-                         ref_digits, ref.agreed_digits, ref.steps, s.top_end_time, fmt::join(gaps, ", ")));
-    out.expect({"top-exact-agrees-with-reference",
-                "The Lagrange top's exact motion, enclosed with Arb, agrees at T with an independent MPFR integration of its Hamiltonian "
-                "equations.",
-                fmt::format("every angle and momentum within 10 times the reference's own agreement ({:.1f} digits), relative to max(1, |x|)",
-                            ref.agreed_digits),
-                fmt::format("largest relative distance {:.2g}", worst), agree});
-  }
-
+/// The convergence runs' tables (error against N, run times, orders), the orders' expectations, the
+/// VPRK remark and the error plots; the runs, for the section's work-precision part.
+part_runs add_convergence(const inseparable_settings& s, const top_convergence& c, section_result& out) {
   // Error against N.
   table errors{"top_errors", "The top: error against N",
                fmt::format("max_k |θ − θ(t_k)| over ten times up to T = {} (enclosed: the run's own error, only guaranteed digits), the largest |H − H₀| over the run "
@@ -401,33 +339,39 @@ part_runs run_top_part(const inseparable_settings& s, section_result& out) {
     p.timing = true;
     out.add(std::move(p));
   }
+  return runs;
+}
 
-  // Nutation θ(t) against the exact one, at the coarsest N.
-  {
-    const long long N = s.top_N.front();
-    const double h = s.top_end_time / static_cast<double>(N);
-    std::vector<series> curves;
-    series ex("exact θ(t) (enclosed)", line_style::lines, 8, 0, 1);
-    const int points = std::max(2, s.samples);
-    for (int i = 0; i <= points; ++i) {
-      const double t = s.top_end_time * i / points;
-      ex.add(figure::of(t), enclosed_figure(exact.at(interval(t)).state.theta));
-    }
-    curves.push_back(std::move(ex));
-    for (const ins_method m : {ins_method::simpson, ins_method::midpoint}) {
-      series c2 = styled_series(m, fmt::format("{}, N = {}", name_of(m), N));
-      c2.style = line_style::points;
-      c2.add(figure::of(0.0), figure::of(y0.q(0)));
-      run_method(m, L, y0, h, N, [&](long long j, const ins_step& step) { c2.add(figure::of(static_cast<double>(j) * h), figure::of(step.state.q(0))); });
-      curves.push_back(std::move(c2));
-    }
-    out.add(plot_description{"inseparable_top_nutation",
-                             fmt::format("The top's nutation θ(t): the exact motion (enclosed, its midpoint drawn) and each step of Simpson and "
-                                         "the midpoint rule at N = {} (h = {:.3g}).",
-                                         N, h),
-                             {panel{"nutation", axis{"t"}, axis{"θ (rad)"}, curves, "below"}}});
+/// Nutation θ(t) against the exact one, at the coarsest N.
+void add_nutation_plot(const inseparable_settings& s, const lagrange_top_exact& exact, const lagrange_top<double>& L, const ndof_state<double>& y0,
+                       section_result& out) {
+  const long long N = s.top_N.front();
+  const double h = s.top_end_time / static_cast<double>(N);
+  std::vector<series> curves;
+  series ex("exact θ(t) (enclosed)", line_style::lines, 8, 0, 1);
+  const int points = std::max(2, s.samples);
+  for (int i = 0; i <= points; ++i) {
+    const double t = s.top_end_time * i / points;
+    ex.add(figure::of(t), enclosed_figure(exact.at(interval(t)).state.theta));
   }
+  curves.push_back(std::move(ex));
+  for (const ins_method m : {ins_method::simpson, ins_method::midpoint}) {
+    series c2 = styled_series(m, fmt::format("{}, N = {}", name_of(m), N));
+    c2.style = line_style::points;
+    c2.add(figure::of(0.0), figure::of(y0.q(0)));
+    run_method(m, L, y0, h, N, [&](long long j, const ins_step& step) { c2.add(figure::of(static_cast<double>(j) * h), figure::of(step.state.q(0))); });
+    curves.push_back(std::move(c2));
+  }
+  out.add(plot_description{"inseparable_top_nutation",
+                           fmt::format("The top's nutation θ(t): the exact motion (enclosed, its midpoint drawn) and each step of Simpson and "
+                                       "the midpoint rule at N = {} (h = {:.3g}).",
+                                       N, h),
+                           {panel{"nutation", axis{"t"}, axis{"θ (rad)"}, curves, "below"}}});
+}
 
+/// Long runs: the momenta against the sums of their per-step bounds, and the energy, with their
+/// expectations and the energy plot.
+void add_long_runs(const inseparable_settings& s, const lagrange_top<double>& L, const ndof_state<double>& y0, section_result& out) {
   // Long runs: the momenta and the energy.
   table long_table{"top_long_runs", fmt::format("The top over {} steps", s.long_steps),
                    "Each method at each h: the largest change of p_φ and of p_ψ over the run, and beside it the sum over the steps of each step's "
@@ -512,9 +456,37 @@ part_runs run_top_part(const inseparable_settings& s, section_result& out) {
                                        "steps of h = {}: bounded for Simpson and the midpoint rule, a drift for RK4.",
                                        s.samples, s.long_steps, s.long_h.front()),
                            {panel{"energy error", axis{"t"}, axis{"|H − H₀|", true}, energy_curves, "below"}}});
-  return runs;
 }
 
+}  // namespace
+
+part_runs run_top_part(const inseparable_settings& s, section_result& out) {
+  check_inseparable_top(s.top);
+  const lagrange_top<double> L(s.top.I1, s.top.I3, s.top.Mgl);
+  const ndof_state<double> y0 = top_start(L, s.top);
+  const top_convergence c = converge_top(s, s.progress);
+  const scoped_interval_digits digits(s.exact_digits);
+  const lagrange_top_exact exact(top_enclosed(s.top), start_enclosed(s.top));
+  out.text(fmt::format(
+      "### The Lagrange top\n\nThe heavy symmetric top in Euler angles (θ, φ, ψ), L = ½I₁(θ̇² + φ̇² sin²θ) + ½I₃(ψ̇ + φ̇ cos θ)² − Mgl cos θ "
+      "(Goldstein §5.7), with I₁ = {}, I₃ = {}, Mgl = {}, started at θ₀ = {}, θ̇₀ = {}, φ̇₀ = {}, ψ̇₀ = {} (φ₀ = ψ₀ = 0); p = ∂L/∂v is "
+      "formed in double from these rates. φ and ψ are cyclic: p_φ = {:.17g} and p_ψ = {:.17g} are conserved, and so is the energy. The "
+      "exact motion is enclosed in {} digits (u = cos θ = u₁ + (u₂ − u₁) sn²(τ₀ + λt, m), φ and ψ by elliptic integrals of the third "
+      "kind, by Arb): {}; nutation between θ = {} and {} rad, period {}. Each method runs in double to T = {}; its error in θ is the largest "
+      "over ten times t_k = (kN/10)h, k = 1…10, enclosed: the run's double θ enters an interval exactly and the exact θ(t_k) is an "
+      "enclosure, so the error shown is the run's own, with only guaranteed digits.",
+      s.top.I1, s.top.I3, s.top.Mgl, s.top.theta0, s.top.theta_dot0, s.top.phi_dot0, s.top.psi_dot0, y0.p(1), y0.p(2), s.exact_digits,
+      exact.motion() == top_motion::nutation ? "a nutation between two proved-distinct roots" : "a steady precession (no nutation band at these digits)",
+      enclosure_text(interval(acos(exact.u1())), 10), enclosure_text(interval(acos(exact.u2())), 10), enclosure_text(exact.nutation_period(), 10),
+      s.top_end_time));
+  if (s.perturb_exact != 0) out.text(fmt::format("**The exact θ is moved by {} here (a test of the checks).**", s.perturb_exact));
+
+  add_top_reference_check(s, exact, out);
+  part_runs runs = add_convergence(s, c, out);
+  add_nutation_plot(s, exact, L, y0, out);
+  add_long_runs(s, L, y0, out);
+  return runs;
+}
 }  // namespace detail
 
 std::string first_newton_failure(const inseparable_top_settings& top, const std::vector<double>& h) {
