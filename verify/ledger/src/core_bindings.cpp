@@ -127,7 +127,7 @@ void check_core_bindings(const claim_record& record, const std::string& file, co
 decider_evidence bound_to_core(decider_evidence e, const std::vector<core_binding>& bindings, const shape_call& call, const run_context& ctx) {
   if (bindings.empty()) return e;
   claim_result& result = e.found;
-  const verdict without_core = verdict_of(e);  // the claim's own verdict, before the bindings
+  const bool refuted = refutes_the_print(e);  // the claim's own evidence, before the bindings
   json evidence = json::array();
   std::vector<std::string> differ;
   bool own_refutes = false;
@@ -141,7 +141,7 @@ decider_evidence bound_to_core(decider_evidence e, const std::vector<core_bindin
       against = "as corrected by this claim";
     }
     const std::vector<std::string> entries = differing_entries(pair.core, pair.printed);
-    if (against == "as printed" && without_core == verdict::erratum && !entries.empty()) {
+    if (against == "as printed" && refuted && !entries.empty()) {
       // The claim proves the printed formula wrong but gives no formula to stand in its place: the
       // core cannot be compared with what should be printed, and that is said, not counted.
       evidence.push_back({{"core", b.function},
@@ -174,19 +174,12 @@ decider_evidence bound_to_core(decider_evidence e, const std::vector<core_bindin
     evidence.push_back(row);
   }
   result.evidence["core_bound"] = evidence;
-  if (!differ.empty() && without_core != verdict::kernels_disagree && without_core != verdict::text_changed) {
-    // Code and print differ: the statement, with "our core is the printed formula" in it, is false
-    // for GiNaC, and for our kernel where it decided a binding or the rest; nothing corrects it.
-    e.reached = decider_evidence::reach::judged;
-    e.ginac = answer::fails;
-    e.own = own_refutes || e.own == answer::fails ? answer::fails : answer::none;
-    e.lexical = answer::none;
-    e.if_false = verdict::fails;
-    result.correction.clear();
-    result.corrected_formulas.clear();
-    result.note = fmt::format("Our code and the print disagree: {}. One of them is wrong (a changed core formula, or a changed printed one). ",
-                              fmt::join(differ, "; ")) +
-                  result.note;
+  if (!differ.empty()) {
+    // Code and print differ: decide's rule (a verdict that says so, fails), the differences named.
+    e = code_differs_from_print(std::move(e), own_refutes,
+                                fmt::format("Our code and the print disagree: {}. One of them is wrong (a changed core formula, or a changed "
+                                            "printed one). ",
+                                            fmt::join(differ, "; ")));
   }
   return e;
 }

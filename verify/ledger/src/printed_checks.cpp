@@ -64,20 +64,9 @@ bool reads_printed(const claim& c) { return printed_facet(c) != nullptr || decid
 
 bool reads_printed_formula(const claim& c) { return reads_printed(c); }
 
-std::vector<std::string> claims_reading_formula(const std::vector<claim>& claims, const std::string& label) {
-  std::vector<std::string> ids;
-  for (const claim& c : claims) {
-    const detail::registered_check* check = printed_facet(c);
-    std::vector<std::string> names = check != nullptr ? check->formulas : std::vector<std::string>{};
-    names.insert(names.end(), c.labels_read.begin(), c.labels_read.end());
-    for (const std::string& name : names) {
-      if (name == label || name.rfind(label + "#", 0) == 0) {
-        ids.push_back(c.id);
-        break;
-      }
-    }
-  }
-  return ids;
+std::vector<std::string> formulas_its_check_reads(const claim& c) {
+  const detail::registered_check* check = printed_facet(c);
+  return check != nullptr ? check->formulas : std::vector<std::string>{};
 }
 
 double ginac_derivation_seconds() { return detail::derivation().seconds; }
@@ -145,14 +134,5 @@ decider_evidence with_facets(decider_evidence e, const registered_check& check, 
 }
 
 }  // namespace detail
-
-claim_result check_claim(const claim& c, const run_context& ctx) {
-  json quotes = json::array();
-  run_context quoting = ctx;
-  quoting.quotes = &quotes;
-  claim_result result = c.check(quoting);
-  result.quoted = std::move(quotes);
-  return result;
-}
 
 }  // namespace simpson::verify

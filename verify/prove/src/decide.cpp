@@ -134,6 +134,22 @@ bool settled(const decider_evidence& e) {
 
 bool derived_proved(const decider_evidence& e) { return verdict_of(e) != verdict::fails; }
 
+bool refutes_the_print(const decider_evidence& e) { return verdict_of(e) == verdict::erratum; }
+
+decider_evidence code_differs_from_print(decider_evidence e, bool own_refutes, const std::string& note) {
+  const verdict before = verdict_of(e);
+  if (before == verdict::kernels_disagree || before == verdict::text_changed) return e;
+  e.reached = decider_evidence::reach::judged;
+  e.ginac = answer::fails;
+  e.own = own_refutes || e.own == answer::fails ? answer::fails : answer::none;
+  e.lexical = answer::none;
+  e.if_false = verdict::fails;
+  e.found.correction.clear();
+  e.found.corrected_formulas.clear();
+  e.found.note = note + e.found.note;
+  return e;
+}
+
 decider_evidence as_the_words_say(decider_evidence computed, bool words_affirm, std::string computed_statement, bool* denied) {
   const bool denies = verdict_of(computed) == verdict::holds && !words_affirm;
   if (denied != nullptr) *denied = denies;

@@ -251,8 +251,8 @@ void shape_reader::record(const std::string& reference, const std::string& locat
 }
 
 const tex_document& document_of(const run_context& ctx) {
-  // The run's paper, or the embedded one when the run has none (a note's run always has one: its
-  // claims file's [document] requires --paper).
+  // The run's document, passed as a value (a note's run always has one: its claims file's
+  // [document] requires --paper).
   const paper_reading& reading = paper_of(ctx);
   if (!reading.document) throw std::logic_error("the run's paper (" + reading.origin + ") was never read as TeX");  // a harness fault
   return *reading.document;

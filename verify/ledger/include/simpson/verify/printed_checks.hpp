@@ -7,6 +7,7 @@
 // printed property that fails (det Φ₃ ≠ 1, H_d not conserved) makes it fail.
 
 #include <simpson/verify/claim.hpp>
+#include <simpson/verify/claim_book.hpp>  // check_claim
 
 #include <cstddef>
 #include <string>
@@ -17,20 +18,14 @@ namespace simpson::verify {
 /// True when the claim reads its formula from the paper.
 bool reads_printed_formula(const claim& c);
 
-/// The claims of `claims` that read the printed formula `label` (a \label of the paper, or one of
-/// its equations).
-std::vector<std::string> claims_reading_formula(const std::vector<claim>& claims, const std::string& label);
+/// The printed formulas the claim's bespoke check reads by name (its GiNaC facet's); none for a claim
+/// a proof shape decides (its labels are the claim's labels_read).
+std::vector<std::string> formulas_its_check_reads(const claim& c);
 
 /// Seconds the GiNaC derivation from first principles took (performed once per process, on first use).
 double ginac_derivation_seconds();
 
 /// How many of `claims` read a formula from the paper.
 std::size_t printed_formula_claim_count(const std::vector<claim>& claims);
-
-/// Runs the claim's check with the sentences it quotes recorded. A book's claim's check is its
-/// decider (its shape, or its bespoke check with the GiNaC check of the printed formulas it reads),
-/// its evidence made a verdict by decide() (decide.hpp): both kernels must prove the derived
-/// statement (else kernels-disagree); the printed side then decides holds, erratum or fails.
-claim_result check_claim(const claim& c, const run_context& ctx);
 
 }  // namespace simpson::verify

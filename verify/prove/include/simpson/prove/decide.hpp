@@ -112,6 +112,18 @@ bool settled(const decider_evidence& e);
 /// Our kernel's check proved the derived statement (its evidence does not come to a failure).
 bool derived_proved(const decider_evidence& e);
 
+/// The evidence proves its printed formula wrong as it stands (an erratum comes of it): a book that
+/// compares its own code with that formula has nothing printed to compare it with, unless the
+/// evidence gives the corrected formula.
+bool refutes_the_print(const decider_evidence& e);
+
+/// The book's own code (our core, bound to a printed formula) differs from the print it binds:
+/// the statement, with "our code is the printed formula" in it, is false for GiNaC, and for our
+/// kernel where `own_refutes` (it decided a binding) or it already refuted the rest; nothing corrects
+/// it, so false means fails, `note` first in the note. Evidence that already comes to
+/// kernels-disagree or text-changed stays as it is: the binding does not hide those.
+decider_evidence code_differs_from_print(decider_evidence e, bool own_refutes, const std::string& note);
+
 /// A computed result judged against the words quoted for it: when the computation holds but the
 /// words deny it ("not consistent", "not symplectic"), each answer is the words' denial of it, an
 /// erratum whose correction is `computed_statement`; `denied` (when given) says whether they did.

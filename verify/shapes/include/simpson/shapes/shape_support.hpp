@@ -100,7 +100,8 @@ class shape_reader {
   mutable bool corrected_ = false;
 };
 
-/// The run's document: its paper, or the embedded one when it has none.
+/// The run's document read as TeX (its paper, or a note's document); a harness fault when the run has
+/// none.
 const tex_document& document_of(const run_context& ctx);
 
 /// Where e, as written, divides by zero once `values` are put in: the first denominator (a power

@@ -2,9 +2,8 @@
 
 #include <simpson/verify/provenance.hpp>
 
-#include <simpson/verify/ledger.hpp>
+#include <simpson/verify/claim_book.hpp>
 #include <simpson/verify/paper_provenance.hpp>
-#include <simpson/verify/printed_checks.hpp>
 
 #include <algorithm>
 #include <set>
@@ -33,7 +32,7 @@ json earlier_text_json(const paper_reading& live, const run_context& ctx, const 
     run_context on_earlier = ctx;
     on_earlier.paper = &earlier;
     on_earlier.quotes = nullptr;
-    for (const std::string& id : claims_reading_formula(ctx.book->claims, d.label)) {
+    for (const std::string& id : claims_reading_formula(*ctx.book, d.label)) {
       const auto it = std::find_if(checked.begin(), checked.end(), [&](const checked_claim& c) { return c.id == id; });
       if (it == checked.end()) continue;
       const verdict now = it->live;
