@@ -109,6 +109,33 @@ TEST(RefereesCases, ThePaperAsAnExpertReadsIt) {
   EXPECT_EQ(summary["source_checks"], 1);
 }
 
+// A second referee, blind, on the report's wording: each case failed on the words before.
+TEST(RefereesCases, TheSecondRefereesRewordings) {
+  const run_record r = run_claims({"derivation-phi3", "gamma-singular", "conserved-form", "table-values", "novelty-prior-work", "hd-proportional"},
+                                  embedded_paper());
+  EXPECT_EQ(run_exit_code(r), 0) << summary_line(r);
+  // A composite check of Sections 4 to 6 is not a sentence the paper prints: the harness's own.
+  EXPECT_EQ(outcome_of(r, "derivation-phi3").checked->origin, claim_origin::harness);
+  // A true conclusion reached through a mistyped entry: the remark says first where the derivation fails.
+  for (const char* id : {"gamma-singular", "conserved-form"}) {
+    const std::string& remark = outcome_of(r, id).result.remark;
+    EXPECT_EQ(remark.rfind("The printed derivation fails only through the printed system's entry (3, 3)", 0), 0u) << id << ": " << remark;
+  }
+  // Table 1's numbers: consistent with another start (a fit), not proved to be that start's.
+  const std::string& values = outcome_of(r, "table-values").result.correction;
+  EXPECT_NE(values.find("The numbers themselves are consistent with another start."), std::string::npos) << values;
+  EXPECT_EQ(values.find("are another start's"), std::string::npos) << values;
+  // A known method left unnamed: the remark says what the method is, first.
+  const std::string& novelty = outcome_of(r, "novelty-prior-work").result.remark;
+  EXPECT_EQ(novelty.rfind("The method is the 3-stage Lobatto IIIA-IIIB pair, known prior work:", 0), 0u) << novelty;
+  // A constant of proportionality is defined where it is given, not a bare "c = ...".
+  const std::string& proportional = outcome_of(r, "hd-proportional").result.note;
+  EXPECT_NE(proportional.find("(hamiltonien-discret) = c ("), std::string::npos) << proportional;
+  // The headline names Table 1's finding by what is wrong: the table is not reproduced by the start stated for it.
+  const std::string headline = report_json(run_claims({"experiment-conventions", "table-values"}, embedded_paper()))["summary"]["headline"];
+  EXPECT_NE(headline.find("experiment-conventions: Table 1 not reproduced by its stated start"), std::string::npos) << headline;
+}
+
 // The headline says first whether the paper's headline results hold (records with headline = true),
 // then counts a determinant off by a constant factor (its zeros the same) apart from the substantive
 // errors, and names what the supplied source cannot show. With Phi_3's (2,2) entry changed, the

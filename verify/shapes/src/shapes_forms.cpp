@@ -211,7 +211,8 @@ decider_evidence proportional_shape(const shape_call& call, const run_context& c
     if (e.found_holds()) {
       result.evidence["exact"]["ginac"] = fmt::format("holds: ({})/({}) = {} in normal form, free of {}", reference_of(call, "printed"),
                                                       reference_of(call, "of"), text_of(*factor), fmt::join(names, ", "));
-      result.note = (result.note.empty() ? "" : result.note + " ") + "c = " + text_of(*factor) + ".";
+      result.note = (result.note.empty() ? "" : result.note + " ") +
+                    fmt::format("({}) = c ({}) with c = {}.", reference_of(call, "printed"), reference_of(call, "of"), text_of(*factor));
     }
     return e;
   }

@@ -187,9 +187,9 @@ decider_evidence invariance_singular_shape(const shape_call& call, const run_con
     derived.found.evidence["exact"]["printed_system"] = evidence["exact"];
     derived.found.evidence["exact"]["conditions_solved"] = solved.text;
     derived.found.remark_kind = finding::derivation_gap;
-    derived.found.remark = fmt::format("The conclusion holds: the system as derived (the rows invariance-system derives) is singular with {}. The gap is "
-                                       "{}: with it the printed system's determinant there is {}, not 0.",
-                                       on, entries_differing(p.coefficients, d.derived), text_of(GiNaC::factor(GiNaC::normal(det_printed))));
+    derived.found.remark = fmt::format("The printed derivation fails only through {}; the conclusion holds of the system as derived (the rows "
+                                       "invariance-system derives), singular with {}. With the printed entries the determinant there is {}, not 0.",
+                                       entries_differing(p.coefficients, d.derived), on, text_of(GiNaC::factor(GiNaC::normal(det_printed))));
     derived.found.amendments.push_back(amendment_in_words("the system the conclusion is derived from", "the printed system",
                                                           "the system as derived (its entries corrected)"));
     return derived;

@@ -235,8 +235,8 @@ decider_evidence invariance_kernel_shape(const shape_call& call, const run_conte
     // Where the printed system fails: its rows times the coefficients that are not 0 (the kernel is
     // wrong), or the rank (the kernel too large).
     const std::string printed_fails = where_printed_fails(printed_there, v, found.note);
-    derived.found.remark = fmt::format("The conclusion holds: {}. The gap is {}: with it {}", correction, entries_differing(p.coefficients, d.derived),
-                                       printed_fails);
+    derived.found.remark = fmt::format("The printed derivation fails only through {}; the conclusion holds: {}. With the printed entries {}",
+                                       entries_differing(p.coefficients, d.derived), correction, printed_fails);
     derived.found.amendments.push_back(amendment_in_words("the system the conclusion is derived from", "the printed system",
                                                           "the system as derived (its entries corrected)"));
     if (derived.found_holds()) derived.goals = std::vector<proof_goal>{decided("derived", rows_times(d.monomials, derived_there, v), 0), decided("conserved", conserved_w, 0)};

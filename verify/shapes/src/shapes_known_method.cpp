@@ -165,9 +165,10 @@ decider_evidence known_method_shape(const shape_call& call, const run_context& c
     return e;
   }
   result.remark_kind = finding::naming;
-  result.remark = fmt::format("On this problem the printed map ({}) is {}'s, proved entry by entry, and the text never names it ({} looked for in its "
-                              "prose). Whether a work it cites covers it stays unresolved: the source has no bibliography to read.",
-                              reference_of(call, "map"), method, fmt::format("{}", fmt::join(names, ", ")));
+  result.remark = fmt::format("The method is {}, known prior work: on this problem the printed map ({}) is that method's, proved entry by entry, and "
+                              "the text never names it ({} looked for in its prose): a known method, derived anew. Which of its citations "
+                              "covers it cannot be read: the source has no bibliography.",
+                              method, reference_of(call, "map"), fmt::format("{}", fmt::join(names, ", ")));
   result.amendments.push_back(amendment_in_words("what the method is", said.words("novelty"),
                                                  said.words("novelty") + ", named: " + method + " (known prior work, with its citation)"));
   e.found = std::move(result);

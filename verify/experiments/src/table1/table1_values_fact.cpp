@@ -130,7 +130,7 @@ published_fact table1_printed_values_fact(const printed_table_values& published,
       simplest != nullptr && search.reproducing() != nullptr
           ? std::string("False as described: the start Section 8 states does not give these numbers, and whether the sentence or the "
                         "table is wrong the paper does not say (the finding is experiment-conventions, counted there once). The numbers "
-                        "themselves are another start's. ")
+                        "themselves are consistent with another start. ")
           : std::string();
   if (simplest != nullptr && simplest->reproduced == entries.size()) {
     return {false, evidence, stated_count + " " + table_not_reproduced(published, orders),
