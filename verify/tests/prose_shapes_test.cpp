@@ -144,7 +144,9 @@ TEST_F(ShapesOnADocument, KnownMethod) {
   const claim_result unnamed = judge("map", lobatto_a, presented);
   EXPECT_EQ(unnamed.outcome, verdict::holds) << unnamed.note << unnamed.evidence.dump();
   EXPECT_EQ(unnamed.remark_kind, finding::naming);
-  EXPECT_NE(unnamed.remark.find("is the 2-stage Lobatto IIIA-IIIB pair's, proved entry by entry, and the text never names it"), std::string::npos)
+  EXPECT_NE(unnamed.remark.find("The method is the 2-stage Lobatto IIIA-IIIB pair, known prior work: on this problem the printed map (map) is that "
+                                 "method's, proved entry by entry, and the text never names it"),
+            std::string::npos)
       << unnamed.remark;
   ASSERT_EQ(unnamed.amendments.size(), 1u);
   EXPECT_EQ(unnamed.amendments[0].printed, "new integrator");

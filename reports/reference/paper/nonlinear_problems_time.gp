@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [8.28202e-06:0.00860033]
+set xrange [4.4588e-06:0.00783635]
 set xtics autofreq
 set mxtics default
 set yrange [2.51598e-15:0.00942973]
@@ -34,7 +34,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.46162e-06:0.00892393]
+set xrange [4.75901e-06:0.00756016]
 set xtics autofreq
 set mxtics default
 set yrange [1.00325e-15:0.00120974]
@@ -55,7 +55,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [9.07613e-05:0.177667]
+set xrange [4.90714e-05:0.0905979]
 set xtics autofreq
 set mxtics default
 set yrange [6.13271e-06:1193.17]
@@ -76,7 +76,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [8.20657e-06:0.0163871]
+set xrange [4.60127e-06:0.00850736]
 set xtics autofreq
 set mxtics default
 set yrange [1.74904e-12:0.238914]
@@ -97,7 +97,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.20534e-05:0.0328333]
+set xrange [7.19245e-06:0.0187764]
 set xtics autofreq
 set mxtics default
 set yrange [1.31557e-10:0.114842]
@@ -141,7 +141,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [8.28202e-06:0.00860033]
+set xrange [4.4588e-06:0.00783635]
 set xtics autofreq
 set mxtics default
 set yrange [2.51598e-15:0.00942973]
@@ -162,7 +162,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.46162e-06:0.00892393]
+set xrange [4.75901e-06:0.00756016]
 set xtics autofreq
 set mxtics default
 set yrange [1.00325e-15:0.00120974]
@@ -183,7 +183,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [9.07613e-05:0.177667]
+set xrange [4.90714e-05:0.0905979]
 set xtics autofreq
 set mxtics default
 set yrange [6.13271e-06:1193.17]
@@ -204,7 +204,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [8.20657e-06:0.0163871]
+set xrange [4.60127e-06:0.00850736]
 set xtics autofreq
 set mxtics default
 set yrange [1.74904e-12:0.238914]
@@ -225,7 +225,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.20534e-05:0.0328333]
+set xrange [7.19245e-06:0.0187764]
 set xtics autofreq
 set mxtics default
 set yrange [1.31557e-10:0.114842]
