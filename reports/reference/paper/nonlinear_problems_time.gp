@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.4588e-06:0.00783635]
+set xrange [9.04654e-06:0.016428]
 set xtics autofreq
 set mxtics default
 set yrange [2.51598e-15:0.00942973]
@@ -34,7 +34,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.75901e-06:0.00756016]
+set xrange [9.4666e-06:0.0165134]
 set xtics autofreq
 set mxtics default
 set yrange [1.00325e-15:0.00120974]
@@ -55,7 +55,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.90714e-05:0.0905979]
+set xrange [9.07779e-05:0.189307]
 set xtics autofreq
 set mxtics default
 set yrange [6.13271e-06:1193.17]
@@ -76,7 +76,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.60127e-06:0.00850736]
+set xrange [8.52595e-06:0.0168346]
 set xtics autofreq
 set mxtics default
 set yrange [1.74904e-12:0.238914]
@@ -97,7 +97,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [7.19245e-06:0.0187764]
+set xrange [1.22266e-05:0.0319052]
 set xtics autofreq
 set mxtics default
 set yrange [1.31557e-10:0.114842]
@@ -141,7 +141,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.4588e-06:0.00783635]
+set xrange [9.04654e-06:0.016428]
 set xtics autofreq
 set mxtics default
 set yrange [2.51598e-15:0.00942973]
@@ -162,7 +162,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.75901e-06:0.00756016]
+set xrange [9.4666e-06:0.0165134]
 set xtics autofreq
 set mxtics default
 set yrange [1.00325e-15:0.00120974]
@@ -183,7 +183,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.90714e-05:0.0905979]
+set xrange [9.07779e-05:0.189307]
 set xtics autofreq
 set mxtics default
 set yrange [6.13271e-06:1193.17]
@@ -204,7 +204,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.60127e-06:0.00850736]
+set xrange [8.52595e-06:0.0168346]
 set xtics autofreq
 set mxtics default
 set yrange [1.74904e-12:0.238914]
@@ -225,7 +225,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [7.19245e-06:0.0187764]
+set xrange [1.22266e-05:0.0319052]
 set xtics autofreq
 set mxtics default
 set yrange [1.31557e-10:0.114842]
