@@ -68,13 +68,16 @@ TEST(RefereesCases, ThePaperAsAnExpertReadsIt) {
   remark("conserved-form", finding::derivation_gap);
   remark("novelty-prior-work", finding::naming);
   EXPECT_EQ(cause_of(outcome_of(r, "gamma-singular")), "gamma-system");  // linked to the premise's erratum
-  // "This interpolation is not linear if h > 0" holds, of the curve.
+  // "This interpolation is not linear if h > 0" holds, of the curve, for the data in general: a
+  // wording remark names the data where it is affine after all (q_l + q_r = 0, or omega = 0).
   EXPECT_EQ(outcome_of(r, "qm-not-affine").result.outcome, verdict::holds);
-  EXPECT_TRUE(outcome_of(r, "qm-not-affine").result.remark.empty());
+  EXPECT_EQ(outcome_of(r, "qm-not-affine").result.remark_kind, finding::wording);
+  EXPECT_NE(outcome_of(r, "qm-not-affine").result.remark.find("affine where omega = 0 or q_l+q_r = 0"), std::string::npos)
+      << outcome_of(r, "qm-not-affine").result.remark;
   // Not the paper's claim: the harness's own, not counted among the paper's.
   EXPECT_EQ(outcome_of(r, "approximate-energy-sign").checked->origin, claim_origin::beyond);
   const json summary = report_json(r)["summary"];
-  EXPECT_EQ(summary["remarks"], 5);
+  EXPECT_EQ(summary["remarks"], 6);
   EXPECT_EQ(summary["beyond_claims"], 1);
   // Table 1: the numbers right for the start that reproduces them, the round-off entries apart.
   const std::string& values = outcome_of(r, "table-values").result.correction;
@@ -99,12 +102,12 @@ TEST(RefereesCases, ThePaperAsAnExpertReadsIt) {
   // The harness's own statement is not shown as the abstract's: its place says whose it is.
   EXPECT_NE(md.find("beyond, about §abstract, hamiltonien-discret — **holds**"), std::string::npos);
   EXPECT_NE(md.find("| [approximate-energy-sign](#approximate-energy-sign) | beyond, about abstract |"), std::string::npos);
-  EXPECT_NE(md.find("Remarks on claims that hold (5, 3 of them following the finding or remark of the claim they link to"), std::string::npos);
+  EXPECT_NE(md.find("Remarks on claims that hold (6, 3 of them following the finding or remark of the claim they link to"), std::string::npos);
   // Counted once: the remarks that follow another claim's (gamma-singular, conserved-form from
   // gamma-system; abstract-explicit from phi3-explicit) apart; the spelling a check of the source.
   const std::string headline = summary["headline"].get<std::string>();
   EXPECT_NE(headline.find("and 1 check of its source:"), std::string::npos) << headline;
-  EXPECT_NE(headline.find("5 remarks on claims that hold (3 of them following the finding or remark of another claim)"), std::string::npos) << headline;
+  EXPECT_NE(headline.find("6 remarks on claims that hold (3 of them following the finding or remark of another claim)"), std::string::npos) << headline;
   EXPECT_NE(headline.find("The source's checks: prose-spelling (6 misspelled words)"), std::string::npos) << headline;
   EXPECT_EQ(summary["source_checks"], 1);
 }

@@ -209,6 +209,35 @@ decider_evidence symplectic_shape(const shape_call& call, const run_context& ctx
 /// is one identity, e = Σ v_i × e(v = the i-th unit vector), decided in both kernels and in Coq; its
 /// refutation proves the expression is not linear. Words that say otherwise are a wording erratum,
 /// corrected by what the expression is.
+/// The factors of `departure` (an expression's difference from the linear part it is compared with)
+/// that vanish for some data: in its numerator, free of the `variables`, and neither a number nor a
+/// product of powers of symbols declared positive. Where one vanishes the expression is linear after
+/// all: "not linear" holds of the data in general, not of every datum.
+std::vector<ex> vanishing_data_factors(const ex& departure, const std::vector<GiNaC::symbol>& variables, const std::set<std::string>& positive) {
+  const auto positive_only = [&](const ex& f) {
+    for (auto it = f.preorder_begin(); it != f.preorder_end(); ++it) {
+      if (GiNaC::is_a<GiNaC::symbol>(*it) && !positive.count(GiNaC::ex_to<GiNaC::symbol>(*it).get_name())) return false;
+      if (GiNaC::is_a<GiNaC::add>(*it)) return false;
+    }
+    return true;
+  };
+  std::vector<ex> found;
+  const ex numerator = GiNaC::factor(GiNaC::numer(GiNaC::normal(departure)));
+  std::vector<ex> factors;
+  if (GiNaC::is_a<GiNaC::mul>(numerator)) {
+    for (const ex& f : numerator) factors.push_back(f);
+  } else {
+    factors.push_back(numerator);
+  }
+  for (const ex& factor : factors) {
+    const ex base = GiNaC::is_a<GiNaC::power>(factor) ? factor.op(0) : factor;
+    if (GiNaC::is_a<GiNaC::numeric>(base) || positive_only(base)) continue;
+    if (std::any_of(variables.begin(), variables.end(), [&](const GiNaC::symbol& v) { return base.has(v); })) continue;
+    found.push_back(base);
+  }
+  return found;
+}
+
 decider_evidence linear_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const ex e = read.formula("expression");
@@ -310,6 +339,26 @@ decider_evidence linear_shape(const shape_call& call, const run_context& ctx) {
       const ex at_zero = GiNaC::normal(normal.subs(s == 0));
       const ex at_zero_difference = GiNaC::normal(at_zero - GiNaC::normal(combination.subs(s == 0)));
       if (at_zero_difference.is_zero()) result.note += fmt::format(" At {} = 0 it is {}: the condition {} > 0 is what makes it not {}.", s.get_name(), sense, s.get_name(), sense);
+    }
+    // "Not linear" of data for which it is linear after all (a factor of the departure vanishes):
+    // true of the data in general, as the field reads it, with the exception said in a remark.
+    if (!linear && pole.empty()) {
+      std::set<std::string> positive = call.declared ? call.declared->positive : std::set<std::string>{};
+      if (read.has("positive")) {
+        for (const GiNaC::symbol& p : read.symbols("positive")) positive.insert(p.get_name());
+      }
+      // Sorted by their text: GiNaC orders a product's factors by hash, which differs from run to run.
+      std::vector<std::string> factors, exceptions;
+      for (const ex& f : vanishing_data_factors(normal_difference(e, combination), variables, positive)) factors.push_back(text_of(f));
+      std::sort(factors.begin(), factors.end());
+      for (const std::string& f : factors) exceptions.push_back(f + " = 0");
+      if (!exceptions.empty()) {
+        result.remark_kind = finding::wording;
+        result.remark = fmt::format("Not {} in {} for the data in general, as meant; {} where {}: the departure from {} has the factor{} {}.", sense,
+                                    fmt::join(names, ", "), sense, fmt::join(exceptions, " or "),
+                                    GiNaC::normal(combination).is_zero() ? std::string("0") : fmt::format("{}", fmt::join(terms, " + ")),
+                                    factors.size() > 1 ? "s" : "", fmt::join(factors, ", "));
+      }
     }
   } else {
     result.correction = computed;
