@@ -1,4 +1,4 @@
-(* Certificate of claim stability-condition: A stability condition is naturally emerging: 0 < omega h < 2 sqrt(2).
+(* Certificate of claim stability-condition: The condition (stabilite) 0 < omega h < 2 sqrt(2) is a stability condition of the scheme (schema-ordre-3): the scheme is stable for every omega h in it (whether it emerges from q_m, stability-emerges judges).
    Written by simpson-verify from the expressions its GiNaC kernel proved; check with coqc. *)
 Require Import Reals Field Lra Psatz.
 Open Scope R_scope.
