@@ -139,6 +139,40 @@ TEST(RefereesCases, TheSecondRefereesRewordings) {
   EXPECT_NE(headline.find("experiment-conventions: Table 1 not reproduced by its stated start"), std::string::npos) << headline;
 }
 
+// No stand-ins: a document other than the paper is judged by what it prints. The paper's bespoke
+// proofs do not decide a note's record, and a note observes an experiment's fact only with a core
+// binding that proves its printed scheme is the experiment's; the paper's own file keeps both.
+TEST(NoStandIns, ANoteIsJudgedByWhatItPrints) {
+  const std::string note = "[document]\ntitle = \"A note\"\n\n[symbols]\nreal = ['q']\n\n";
+  const auto record = [](const std::string& decider) {
+    return "[[claim]]\nid = \"stand-in\"\nsection = \"1\"\nequation = 'LLhh'\nstatement = 'The scheme is of order 4.'\nmethods = [\"numeric\"]\n" +
+           decider + "\nexpected = \"holds\"\n";
+  };
+  const auto refused = [&](const std::string& decider, const std::string& why) {
+    try {
+      read_claim_book(note + record(decider), "note.toml");
+      ADD_FAILURE() << decider << ": read, where it is a stand-in";
+    } catch (const claims_file_error& e) {
+      EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
+    }
+  };
+  refused("check = \"derivation-phi3\"", "field 'check': 'derivation-phi3' is one of the paper's bespoke proofs");
+  refused("observes = \"nonlinear.pendulum-order-4\"", "record 'stand-in' observes it only with a core binding");
+  // A binding of another formula than the experiment's scheme proves nothing about it.
+  refused("observes = \"nonlinear.pendulum-order-4\"\ncore = { function = \"energy\", formula = \"HH-exact\" }",
+          "the functions: simpson_lagrangian");
+  refused("observes = \"nonlinear_inseparable.simpson-order\"\ncore = { function = \"simpson_lagrangian\", formula = \"LLhh\" }",
+          "no formula of our core is that experiment's scheme yet");
+  // Bound to the experiment's scheme, it reads (the binding is judged when the run binds the document).
+  const claim_book bound =
+      read_claim_book(note + record("observes = \"nonlinear.pendulum-order-4\"\ncore = { function = \"simpson_lagrangian\", formula = \"LLhh\" }"),
+                      "note.toml");
+  EXPECT_EQ(bound.records.size(), 1u);
+  // The paper's file (no [document]) keeps its bespoke checks and its observations.
+  EXPECT_NO_THROW(read_claim_book(record("check = \"derivation-phi3\""), "paper-copy.toml"));
+  EXPECT_NO_THROW(read_claim_book(record("observes = \"nonlinear.pendulum-order-4\""), "paper-copy.toml"));
+}
+
 // The headline says first whether the paper's headline results hold (records with headline = true),
 // then counts a determinant off by a constant factor (its zeros the same) apart from the substantive
 // errors, and names what the supplied source cannot show. With Phi_3's (2,2) entry changed, the

@@ -18,6 +18,9 @@
 #include "embedded_claims.hpp"
 #include "published_facts.hpp"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <algorithm>
 #include <chrono>
 #include <optional>
@@ -96,8 +99,44 @@ book_deciders paper_deciders() {
   return deciders;
 }
 
+namespace {
+
+/// No stand-ins: a document other than the paper is judged by what it prints. A bespoke check proves
+/// the paper's own statements (on the paper, or an edited copy of it); a published fact is of the
+/// harness's experiment, so a document's record observes it only with a `core` binding that proves
+/// the document's printed scheme is the experiment's. Throws claims_file_error naming the record.
+void only_what_the_document_prints(const claim_book& book) {
+  for (const claim_record& r : book.records) {
+    if (!r.check.empty()) {
+      throw claims_file_error(book.file, r.line, "check",
+                              fmt::format("'{}' is one of the paper's bespoke proofs: it judges the paper or an edited copy of it, not this "
+                                          "[document]; decide record '{}' by a proof shape on the document's own formulas",
+                                          r.check, r.id));
+    }
+    if (r.observes.empty()) continue;
+    const std::vector<std::string>& schemes = detail::published_facts().at(r.observes).schemes;
+    const bool bound = std::any_of(r.core.begin(), r.core.end(), [&](const core_binding& b) {
+      return std::find(schemes.begin(), schemes.end(), b.function) != schemes.end();
+    });
+    if (bound) continue;
+    throw claims_file_error(
+        book.file, r.line, "observes",
+        schemes.empty()
+            ? fmt::format("'{}' is a fact of the harness's own experiment, and no formula of our core is that experiment's scheme yet: "
+                          "record '{}' cannot show that the document's printed scheme is the one the experiment runs",
+                          r.observes, r.id)
+            : fmt::format("'{}' is a fact of the harness's own experiment: on a [document], record '{}' observes it only with a core "
+                          "binding of the document's printed scheme to the experiment's (core = {{ function = \"{}\", formula = ... }}; "
+                          "the functions: {})",
+                          r.observes, r.id, schemes.front(), fmt::join(schemes, ", ")));
+  }
+}
+
+}  // namespace
+
 claim_book read_claim_book(const std::string& text, const std::string& file) {
   claim_book book = read_claim_book(text, file, paper_deciders());
+  if (book.document) only_what_the_document_prints(book);
   if (!book.document) book.formulas = printed_formula_locations();
   book.sections = experiment_sections();
   return book;
