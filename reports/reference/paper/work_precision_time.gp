@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.49294e-07:0.000286175]
+set xrange [1.34985e-07:0.000264043]
 set xtics autofreq
 set mxtics default
 set yrange [2.94139e-15:0.34373]
@@ -36,7 +36,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [7.91848e-06:0.051469]
+set xrange [7.39544e-06:0.0503308]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -84,7 +84,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.49294e-07:0.000286175]
+set xrange [1.34985e-07:0.000264043]
 set xtics autofreq
 set mxtics default
 set yrange [2.94139e-15:0.34373]
@@ -107,7 +107,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [7.91848e-06:0.051469]
+set xrange [7.39544e-06:0.0503308]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
