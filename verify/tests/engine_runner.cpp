@@ -90,10 +90,10 @@ int main(int argc, char** argv) {
   nlohmann::json report;
   try {
     report = verdicts(paper, claims_file);
-  } catch (const claims_file_error& e) {
+  } catch (const std::invalid_argument& e) {  // bad input, as simpson-verify's (a claims_file_error is one)
     std::fprintf(stderr, "engine-runner: %s\n", e.what());
     return 2;
-  } catch (const std::invalid_argument& e) {
+  } catch (const std::domain_error& e) {
     std::fprintf(stderr, "engine-runner: %s\n", e.what());
     return 2;
   } catch (const std::exception& e) {

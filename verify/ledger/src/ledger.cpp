@@ -136,8 +136,11 @@ void only_what_the_document_prints(const claim_book& book) {
 
 claim_book read_claim_book(const std::string& text, const std::string& file) {
   claim_book book = read_claim_book(text, file, paper_deciders());
-  if (book.document) only_what_the_document_prints(book);
-  if (!book.document) book.formulas = printed_formula_locations();
+  if (book.document) {
+    only_what_the_document_prints(book);
+  } else {
+    book.formulas = printed_formula_locations();
+  }
   book.sections = experiment_sections();
   return book;
 }

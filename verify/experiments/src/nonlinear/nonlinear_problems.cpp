@@ -33,7 +33,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <optional>
 
 namespace simpson::verify::detail {
@@ -65,6 +64,15 @@ ndof_state<double> rounded(const ndof_state<Real>& y) {
   for (Eigen::Index i = 0; i < y.p.size(); ++i) {
     out.p(i) = static_cast<double>(y.p(i));
     out.q(i) = static_cast<double>(y.q(i));
+  }
+  return out;
+}
+
+ndof_state<mpfr> widened(const ndof_state<double>& y) {
+  ndof_state<mpfr> out{dense_vector<mpfr>(y.p.size()), dense_vector<mpfr>(y.q.size())};
+  for (Eigen::Index i = 0; i < y.p.size(); ++i) {
+    out.p(i) = y.p(i);
+    out.q(i) = y.q(i);
   }
   return out;
 }
@@ -116,48 +124,35 @@ problem<kepler_potential<double>> kepler_problem(const nonlinear_settings& s) {
                       fmt::format("{:g}", s.eccentricity), s.kepler_periods, s.reference_digits), s.kepler_periods};
 }
 
-/// Hénon–Heiles' state at T by 2-stage Gauss–Legendre (order 4, a method independent of Simpson's)
-/// in `Real`, with N and N/2 steps: the finer run, and the difference of the two bounding its error
-/// (Richardson: e(N) ≈ |y(N) − y(N/2)|/15).
-template <class Real>
-std::pair<ndof_state<double>, double> henon_heiles_reference(const ndof_state<double>& start, double T, long long N) {
-  const separable_system<Real, henon_heiles_potential<Real>> exact_system(dense_matrix<Real>::Identity(2, 2), {});
-  ndof_stepper<Real, henon_heiles_potential<Real>> gl2(method_of(method_id::gauss_legendre_2), exact_system);
-  const auto run = [&](long long steps) {
-    ndof_state<Real> y{dense_vector<Real>(2), dense_vector<Real>(2)};
-    for (Eigen::Index i = 0; i < 2; ++i) {
-      y.p(i) = start.p(i);
-      y.q(i) = start.q(i);
-    }
-    long long iterations = 0;
-    const Real h = Real(T) / steps;
-    for (long long j = 1; j <= steps; ++j) {
-      if ((j & 255) == 0) throw_if_interrupted();
-      y = gl2.step(h, y, iterations);
-    }
-    return y;
-  };
-  const ndof_state<Real> fine = run(N), coarse = run(N / 2);
-  const Real estimate = std::max(Real(dense_vector<Real>(fine.q - coarse.q).norm()), Real(dense_vector<Real>(fine.p - coarse.p).norm())) / 15;
-  return {rounded(fine), static_cast<double>(estimate)};
-}
-
 problem<henon_heiles_potential<double>> henon_heiles_problem(const nonlinear_settings& s, long long finest) {
   const double T = 20;
   ndof_state<double> start{dense_vector<double>(2), dense_vector<double>(2)};
   start.q << 0.1, 0;
   start.p << 0, 0.5;
-  // The reference with 16 and 8 times the finest N, in mpfr. (In float128 it ran in 1.9 s instead of
-  // 10.8, but its one more scalar for the Gauss-Legendre step cost the experiments' unit 28 s of
-  // compile time, more than it saved a `make verify`; measured 2026-12-03.)
-  const long long N_ref = 16 * finest;
+  // The reference: 2-stage Gauss–Legendre (order 4, a method independent of Simpson's) in mpfr with
+  // 8 and 16 times the finest N; the difference of the two bounds its error (Richardson: e(N_ref) ≈
+  // |y(N_ref) − y(N_ref/2)|/15).
   const scoped_mpfr_digits digits(s.reference_digits);
-  const std::pair<ndof_state<double>, double> reference = henon_heiles_reference<mpfr>(start, T, N_ref);
+  const separable_system<mpfr, henon_heiles_potential<mpfr>> exact_system(dense_matrix<mpfr>::Identity(2, 2), {});
+  ndof_stepper<mpfr, henon_heiles_potential<mpfr>> gl2(method_of(method_id::gauss_legendre_2), exact_system);
+  const auto run = [&](long long N) {
+    ndof_state<mpfr> y = widened(start);
+    long long iterations = 0;
+    const mpfr h = mpfr(T) / N;
+    for (long long j = 1; j <= N; ++j) {
+      if ((j & 255) == 0) throw_if_interrupted();
+      y = gl2.step(h, y, iterations);
+    }
+    return y;
+  };
+  const long long N_ref = 16 * finest;
+  const ndof_state<mpfr> fine = run(N_ref), coarse = run(N_ref / 2);
+  const mpfr estimate = std::max(mpfr(dense_vector<mpfr>(fine.q - coarse.q).norm()), mpfr(dense_vector<mpfr>(fine.p - coarse.p).norm())) / 15;
   const separable_system<double, henon_heiles_potential<double>> system(dense_matrix<double>::Identity(2, 2), {});
-  return {"henon-heiles", system, start, T, reference.first,
+  return {"henon-heiles", system, start, T, rounded(fine),
           fmt::format("q(0) = (0.1, 0), p(0) = (0, 0.5), H = {} (below the escape energy 1/6), T = 20; reference: Gauss–Legendre 2 in mpfr:{} with N = {} "
                       "(error estimated {} from the run with N/2)",
-                      fmt::format("{:g}", system.energy(start)), s.reference_digits, N_ref, fmt::format("{:.2g}", reference.second))};
+                      fmt::format("{:g}", system.energy(start)), s.reference_digits, N_ref, simpson::to_string(estimate, 2))};
 }
 
 problem<fpu_potential<double>> fpu_problem(const nonlinear_settings& s, long long finest) {
