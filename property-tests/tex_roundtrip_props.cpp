@@ -1,6 +1,8 @@
 // The TeX reader's round trip: a random expression, printed to TeX in one of several styles people
 // write (\frac, \tfrac, \dfrac, {a \over b}, \frac12 for single tokens; ( ), \left( \right) and
-// \big( \big); \cdot, \times or juxtaposition; V'(x), V''(x), \frac{dV}{dq}(x) for derivatives),
+// \big( \big); \cdot, \times or juxtaposition; V'(x), V''(x), \frac{dV}{dq}(x) for derivatives; a
+// function of two variables L(q, v) applied, and its partial derivatives at points written
+// \frac{\partial L}{\partial v}(a, b), \partial_v L(a, b), D_2 L(a, b) or \partial L / \partial v (a, b)),
 // reads back as the same expression (GiNaC's normal form of the difference is 0), or is refused. It
 // never reads back as something else.
 
@@ -12,6 +14,7 @@
 
 #include <memory>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace {
@@ -20,9 +23,9 @@ using simpson::verify::tex_declarations;
 
 /// An expression as a tree: what is printed and what it is worth are derived from the same node.
 struct expr {
-  enum class kind { number, symbol, add, sub, mul, div, pow, neg, apply, derivative };
+  enum class kind { number, symbol, add, sub, mul, div, pow, neg, apply, derivative, apply2, partial };
   kind what = kind::number;
-  int value = 0;       // number; pow: the exponent (2, 3, or -1 for a square root); derivative: its order
+  int value = 0;       // number; pow: the exponent (2, 3, or -1 for a square root); derivative: its order; partial: the slot (0, 1)
   int symbol = 0;      // index into the symbols
   std::vector<std::shared_ptr<const expr>> args;
 };
@@ -64,7 +67,11 @@ rc::Gen<expr_ptr> expression(int depth) {
                         rc::gen::map(inner, [](const expr_ptr& a) { return make(expr::kind::neg, {a}); }),
                         rc::gen::map(inner, [](const expr_ptr& a) { return make(expr::kind::apply, {a}); }),
                         rc::gen::map(rc::gen::pair(inner, rc::gen::inRange(1, 3)),
-                                     [](const std::pair<expr_ptr, int>& p) { return make(expr::kind::derivative, {p.first}, p.second); }));
+                                     [](const std::pair<expr_ptr, int>& p) { return make(expr::kind::derivative, {p.first}, p.second); }),
+                        binary(expr::kind::apply2),
+                        rc::gen::map(rc::gen::tuple(inner, inner, rc::gen::inRange(0, 2)), [](const std::tuple<expr_ptr, expr_ptr, int>& t) {
+                          return make(expr::kind::partial, {std::get<0>(t), std::get<1>(t)}, std::get<2>(t));
+                        }));
 }
 
 GiNaC::ex value_of(const expr& e) {
@@ -82,6 +89,12 @@ GiNaC::ex value_of(const expr& e) {
       const GiNaC::symbol y("y");
       return GiNaC::diff(simpson::verify::apply_function("V", {y}), y, static_cast<unsigned>(e.value)).subs(y == value_of(*e.args[0]));
     }
+    case expr::kind::apply2: return simpson::verify::apply_function("L", {value_of(*e.args[0]), value_of(*e.args[1])});
+    case expr::kind::partial: {
+      const GiNaC::symbol a("a"), b("b");
+      return GiNaC::diff(simpson::verify::apply_function("L", {a, b}), e.value == 0 ? a : b)
+          .subs(GiNaC::lst{a == value_of(*e.args[0]), b == value_of(*e.args[1])});
+    }
   }
   return 0;
 }
@@ -94,6 +107,7 @@ struct style {
   int product = 0;      // juxtaposition, \cdot, \times
   bool short_scripts = false;  // x^2 for one-token exponents
   int derivative = 0;   // V'(x), \frac{dV}{dq}(x), \frac{\mathrm d V}{\mathrm d q}(x)
+  int partial = 0;      // \frac{\partial L}{\partial v}(a, b), \partial_v L(a, b), D_2 L(a, b), \partial L/\partial v (a, b)
 };
 
 enum precedence { sum_level = 0, product_level = 1, power_level = 2, atom_level = 3 };
@@ -168,6 +182,15 @@ std::string print_raw(const expr& e, const style& s) {
       }
       return "V" + std::string(static_cast<std::size_t>(k), '\'') + argument;
     }
+    case expr::kind::apply2: return "L" + parenthesised(print(*e.args[0], s, sum_level) + ", " + print(*e.args[1], s, sum_level), s);
+    case expr::kind::partial: {
+      const std::string at = parenthesised(print(*e.args[0], s, sum_level) + ", " + print(*e.args[1], s, sum_level), s);
+      const std::string variable = e.value == 0 ? "q" : "v";
+      if (s.partial == 1) return "\\partial_" + variable + " L" + at;
+      if (s.partial == 2) return "D_" + std::to_string(e.value + 1) + " L" + at;
+      if (s.partial == 3) return "\\partial L / \\partial " + variable + at;
+      return "\\frac{\\partial L}{\\partial " + variable + "}" + at;
+    }
   }
   return "";
 }
@@ -178,7 +201,7 @@ std::string print(const expr& e, const style& s, int needed) {
 }
 
 const tex_declarations& declared() {
-  static const tex_declarations d{{"V"}, {"h", "m", "omega", "q_j", "q_j+1", "x"}};
+  static const tex_declarations d{{"V", "L"}, {"h", "m", "omega", "q_j", "q_j+1", "x"}, {{"L", {"q", "v"}}}};
   return d;
 }
 
@@ -191,6 +214,7 @@ RC_GTEST_PROP(TexRoundTrip, PrintedInAnyStyleReadsBackEqualOrIsRefused, ()) {
   s.product = *rc::gen::inRange(0, 3);
   s.short_scripts = *rc::gen::arbitrary<bool>();
   s.derivative = *rc::gen::inRange(0, 3);
+  s.partial = *rc::gen::inRange(0, 4);
   GiNaC::ex expected;
   try {
     expected = value_of(*e);

@@ -15,7 +15,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   using namespace simpson::verify;
   const std::string text(reinterpret_cast<const char*>(data), size);
   // A few names of each kind: a function, a state, symbols (and d, which makes d/dx ambiguous).
-  static const tex_declarations declared{{"V", "q", "f"}, {"q", "x", "h", "m", "omega", "d"}};
+  static const tex_declarations declared{{"V", "q", "f", "L", "L_d"}, {"q", "x", "h", "m", "omega", "d", "t"}, {{"L", {"q", "dq/dt"}}, {"L_d", {"a", "b"}}}};
   try {
     const tex_document document = read_document(paper_source{"fuzz", without_comments(text), "", text});
     for (const tex_region& region : document.regions()) {

@@ -84,7 +84,7 @@ Unlabelled, as the first display after a phrase:
 
 /// What these documents declare: the functions they apply, and q, a state.
 const tex_declarations& test_declarations() {
-  static const tex_declarations declared{{"V", "W", "q", "varphi_0", "varphi_1"}, {"q"}};
+  static const tex_declarations declared{{"V", "W", "q", "varphi_0", "varphi_1"}, {"q"}, {}};
   return declared;
 }
 

@@ -7,7 +7,7 @@
 //   tex_support_dump --refusals FILE [DOCUMENT.tex CLAIMS.toml]...
 //
 // The refusal corpus: one TeX fragment a line, read as one side; `#` starts a comment line; a line
-// `declare: symbols a b; functions V` sets the declarations of the fragments after it (TeX names).
+// `declare: symbols a b; functions V L(q,\dot{q})` sets the declarations of the fragments after it (TeX names).
 
 #include <simpson/verify/claim_declarations.hpp>
 #include <simpson/verify/claims_file.hpp>
@@ -136,7 +136,15 @@ std::vector<refusal> refusals_of(const std::string& path, std::vector<std::strin
         std::vector<std::string> words = names_of(rest.substr(at, end - at));
         if (!words.empty()) {
           const bool functions = words.front() == "functions";
-          for (std::size_t k = 1; k < words.size(); ++k) (functions ? declared.functions : declared.symbols).insert(reader_name(words[k]));
+          for (std::size_t k = 1; k < words.size(); ++k) {
+            if (!functions) {
+              declared.symbols.insert(reader_name(words[k]));
+              continue;
+            }
+            const function_declaration f = read_function_declaration(words[k]);  // V, or L(q,\dot{q}) with its variables
+            declared.functions.insert(f.name);
+            if (f.variables) declared.variables[f.name] = *f.variables;
+          }
         }
         at = end + 1;
       }

@@ -185,6 +185,17 @@ definition read_definition(const tex_document& document, const tex_declarations&
     const std::string function = GiNaC::ex_to<GiNaC::function>(name).get_name();
     return {GiNaC::symbol(function), f.value, f.locator, f.line, f.tex, function, GiNaC::ex_to<GiNaC::symbol>(name.op(0))};
   }
+  // L(q, \dot q) = ..., or L = ... when L declares its variables: a function of several symbols.
+  if (GiNaC::is_exactly_a<GiNaC::function>(name) && name.nops() > 1) {
+    std::vector<GiNaC::symbol> parameters;
+    for (const GiNaC::ex& a : name) {
+      const bool fresh = GiNaC::is_a<GiNaC::symbol>(a) && std::none_of(parameters.begin(), parameters.end(), [&](const GiNaC::symbol& s) { return GiNaC::ex(s).is_equal(a); });
+      if (!fresh) throw std::invalid_argument(f.locator + ": the left side '" + folded_space(f.sides.front()) + "' of a definition applies its function to what is not distinct names");
+      parameters.push_back(GiNaC::ex_to<GiNaC::symbol>(a));
+    }
+    const std::string function = GiNaC::ex_to<GiNaC::function>(name).get_name();
+    return {GiNaC::symbol(function), f.value, f.locator, f.line, f.tex, function, std::nullopt, parameters};
+  }
   std::string hint;  // f(x) read as a product: f is not declared a function
   if (GiNaC::is_a<GiNaC::mul>(name) && !f.side_trees.front().empty()) {
     try {
@@ -259,11 +270,22 @@ struct function_values : GiNaC::map_function {
   const definition& d;
   explicit function_values(const definition& given) : d(given) {}
   GiNaC::ex operator()(const GiNaC::ex& e) override {
-    if (!GiNaC::is_a<GiNaC::function>(e) || GiNaC::ex_to<GiNaC::function>(e).get_name() != d.function || e.nops() != 1) return e.map(*this);
-    const GiNaC::ex at = (*this)(e.op(0));
-    unsigned order = 0;
-    if (GiNaC::is_a<GiNaC::fderivative>(e)) order = static_cast<unsigned>(GiNaC::ex_to<GiNaC::fderivative>(e).derivatives().size());
-    return GiNaC::diff(d.value, *d.parameter, order).subs(*d.parameter == at);
+    const std::size_t arity = d.parameter ? 1 : d.parameters.size();
+    if (!GiNaC::is_a<GiNaC::function>(e) || GiNaC::ex_to<GiNaC::function>(e).get_name() != d.function || e.nops() != arity) return e.map(*this);
+    if (d.parameter) {
+      const GiNaC::ex at = (*this)(e.op(0));
+      unsigned order = 0;
+      if (GiNaC::is_a<GiNaC::fderivative>(e)) order = static_cast<unsigned>(GiNaC::ex_to<GiNaC::fderivative>(e).derivatives().size());
+      return GiNaC::diff(d.value, *d.parameter, order).subs(*d.parameter == at);
+    }
+    // L(a, b), D[0,1](L)(a, b): the value's derivatives by those slots, at the arguments all at once.
+    GiNaC::ex value = d.value;
+    if (GiNaC::is_a<GiNaC::fderivative>(e)) {
+      for (const unsigned slot : GiNaC::ex_to<GiNaC::fderivative>(e).derivatives()) value = value.diff(d.parameters.at(slot));
+    }
+    GiNaC::lst at;
+    for (std::size_t k = 0; k < arity; ++k) at.append(d.parameters[k] == (*this)(e.op(k)));
+    return value.subs(at, GiNaC::subs_options::no_pattern);
   }
 };
 
@@ -277,7 +299,7 @@ namespace {
 std::vector<definition> in_their_arguments(const std::vector<definition>& definitions) {
   std::vector<definition> out = definitions;
   for (definition& d : out) {
-    if (d.function.empty() || d.value.has(*d.parameter)) continue;
+    if (d.function.empty() || !d.parameter || d.value.has(*d.parameter)) continue;
     for (const definition& change : definitions) {
       if (!change.function.empty() || change.name.get_name() != d.parameter->get_name()) continue;
       std::vector<GiNaC::symbol> shared;
@@ -308,7 +330,7 @@ GiNaC::exmap derivative_symbols(const GiNaC::ex& e, const std::vector<definition
     if (name.size() < 4 || name[0] != 'd' || name.find("/d") == std::string::npos) continue;
     for (const definition& d : definitions) {
       if (!d.function.empty()) {
-        for (int k = 1; k <= 4; ++k) {
+        for (int k = 1; d.parameter && k <= 4; ++k) {
           if (name == derivative_name(d.function, d.parameter->get_name(), k, k)) out[*it] = GiNaC::diff(d.value, *d.parameter, static_cast<unsigned>(k));
         }
         continue;

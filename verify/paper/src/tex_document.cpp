@@ -2,6 +2,7 @@
 
 #include <simpson/verify/tex_document.hpp>
 
+#include <cctype>
 #include <algorithm>
 #include <deque>
 #include <map>
@@ -458,6 +459,59 @@ void append_part(equation_part part, std::vector<equation_part>& out) {
   }
 }
 
+/// A row's last words that quantify over an index, `\text{for all } j` (for every, each, any;
+/// the index inside the text or after it) or `\forall j`, taken off the part: the equation is read
+/// for a symbolic index, which is what they say. Other words stay, and the reader refuses them.
+void strip_quantifier(tex_list& part) {
+  const auto last = [&]() -> const tex_node* {
+    for (auto it = part.rbegin(); it != part.rend(); ++it) {
+      if (!is_blank(*it)) return &*it;
+    }
+    return nullptr;
+  };
+  const auto pop_last = [&] {
+    while (!part.empty() && is_blank(part.back())) part.pop_back();
+    if (!part.empty()) part.pop_back();
+  };
+  const auto one_letter = [](const tex_node& n) {
+    return n.kind == tex_node_kind::atom && ((n.text.size() == 1 && std::isalpha(static_cast<unsigned char>(n.text[0]))) || n.text == "\\ell");
+  };
+  const auto words = [](std::string text) {  // spaces collapsed, a $x$ inside kept as x
+    std::string out;
+    for (const char ch : text) {
+      if (ch == '$') continue;
+      if (std::isspace(static_cast<unsigned char>(ch))) {
+        if (!out.empty() && out.back() != ' ') out += ' ';
+      } else {
+        out += ch;
+      }
+    }
+    while (!out.empty() && out.back() == ' ') out.pop_back();
+    return out;
+  };
+  static const std::set<std::string> phrases{"for all", "for every", "for each", "for any"};
+  const tex_node* end = last();
+  if (!end) return;
+  if (end->kind == tex_node_kind::text) {  // \text{for all $j$}, \text{ for every j}
+    const std::string w = words(end->text);
+    const std::size_t space = w.rfind(' ');
+    if (space != std::string::npos && phrases.count(w.substr(0, space)) && w.size() - space == 2 && std::isalpha(static_cast<unsigned char>(w.back()))) pop_last();
+    return;
+  }
+  if (!one_letter(*end) || part.size() < 2) return;
+  tex_list rest = part;
+  while (!rest.empty() && is_blank(rest.back())) rest.pop_back();
+  rest.pop_back();
+  while (!rest.empty() && is_blank(rest.back())) rest.pop_back();
+  if (rest.empty()) return;
+  const tex_node& before = rest.back();
+  const bool quantifier = (before.kind == tex_node_kind::text && phrases.count(words(before.text))) ||
+                          (before.kind == tex_node_kind::atom && before.text == "\\forall");
+  if (!quantifier) return;
+  rest.pop_back();
+  part = rest;
+}
+
 void add_parts(const tex_list& list, const tokens_t& tokens, std::vector<equation_part>& out) {
   if (const tex_node* system = system_in(list)) {
     for (const auto& row : system->rows) {
@@ -473,6 +527,8 @@ void add_parts(const tex_list& list, const tokens_t& tokens, std::vector<equatio
                                                        (part.back().text == "." || part.back().text == ":" || part.back().text == ";")))) {
       part.pop_back();
     }
+    strip_quantifier(part);
+    while (!part.empty() && is_blank(part.back())) part.pop_back();
     if (part.empty()) continue;
     append_part({part, {text_of_nodes(part, tokens)}}, out);
   }

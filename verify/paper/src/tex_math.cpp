@@ -87,6 +87,7 @@ GiNaC::ex reader::term(cursor& c, const std::vector<std::string>& closers) {
       const tex_node& slash = n;
       ++c.k;
       if (ends_term(c, closers)) refuse("a '/' with nothing after it", slash);
+      if (is_atom(c.node(), "\\partial")) refuse("a / before a slanted derivative: which '/' divides first is not written", slash, "\\frac{...}{...}");
       const GiNaC::ex divisor = factor(c, closers);
       if (!ends_term(c, closers)) {
         refuse("a / b followed by more factors: whether they divide or multiply is not written", slash, "write \\frac{...}{...}");
@@ -113,18 +114,18 @@ GiNaC::ex reader::primary(cursor& c, const std::vector<std::string>& closers) {
   if (c.done()) throw tex_error("a factor missing at the end of the formula (after \\cdot, \\times or an operator)", c.list->empty() ? 0 : c.list->back().offset);
   const tex_node& n = c.node();
   switch (n.kind) {
-    case tex_node_kind::atom: return atom(c);
+    case tex_node_kind::atom: return atom(c, closers);
     case tex_node_kind::group: {
       if (const auto landau = order_term(c)) return *landau;
-      if (const auto op = named_operator(c)) return *op;
+      if (const auto op = named_operator(c, closers)) return *op;
       // {{dV}\over{dq}}(x): a fraction alone in its group (\over's braces) is read where the group
       // is, so that an application after it applies to it.
-      if (unwrapped(n).kind == tex_node_kind::fraction) return fraction(c);
+      if (unwrapped(n).kind == tex_node_kind::fraction) return fraction(c, closers);
       if (differential_of(n)) refuse("an upright d outside a derivative or an integral", n);
       ++c.k;
       return whole(n.children);
     }
-    case tex_node_kind::fraction: return fraction(c);
+    case tex_node_kind::fraction: return fraction(c, closers);
     case tex_node_kind::root: {
       ++c.k;
       const GiNaC::ex radicand = whole(n.children[0].children);
@@ -142,7 +143,7 @@ GiNaC::ex reader::primary(cursor& c, const std::vector<std::string>& closers) {
     }
     case tex_node_kind::font: {
       if (const auto landau = order_term(c)) return *landau;
-      if (const auto op = named_operator(c)) return *op;
+      if (const auto op = named_operator(c, closers)) return *op;
       if (n.text == "mathbf" || n.text == "boldsymbol" || n.text == "mathcal" || n.text == "mathbb") return named(c, symbol_name(n));
       if (differential_of(n)) refuse("an upright d outside a derivative or an integral", n);
       refuse("the font " + n.text + " on '" + normal_form(n.children) + "': an upright name the reader gives no meaning to", n,
@@ -156,7 +157,7 @@ GiNaC::ex reader::primary(cursor& c, const std::vector<std::string>& closers) {
   refuse("unexpected", n);
 }
 
-GiNaC::ex reader::atom(cursor& c) {
+GiNaC::ex reader::atom(cursor& c, const std::vector<std::string>& closers) {
   const tex_node& n = c.node();
   if (n.text.size() == 1 && std::isdigit(static_cast<unsigned char>(n.text[0]))) return number(c);
   if (n.text == "O") {
@@ -182,7 +183,7 @@ GiNaC::ex reader::atom(cursor& c) {
     if (!close.sub.empty()) refuse("a subscript on a closing '|'", close);
     return power_of(GiNaC::abs(inside), whole_node(close.sup.front()));  // |r|^2
   }
-  if (n.text == "\\partial") refuse("a \\partial outside a derivative", n, "\\frac{\\partial L}{\\partial q} or \\partial_q L");
+  if (n.text == "\\partial") return slanted_derivative(c, closers);
   if (n.text == "\\ldots" || n.text == "\\cdots" || n.text == "\\dots") refuse("an ellipsis: what it stands for is not written", n);
   if (n.text == "\\infty") refuse("\\infty", n);
   if (n.text == "\\prime") refuse("a prime on no function (a prime is the derivative of a declared function: V'(x))", n);
@@ -325,11 +326,18 @@ GiNaC::ex reader::named(cursor& c, const std::string& name, int derivative) {
   ++c.k;
   const bool applied = !c.done() && opens_application(&c.node());
   if (declared_.is_function(name) && applied) {
-    const application a = arguments_and_power(c);
+    application a = arguments_and_power(c);
+    a.args = checked(name, a.args, at);
     if (derivative == 0) return raised(apply_function(name, a.args), a.power);
     if (a.args.size() != 1) refuse("a derivative of " + name + ", a function of " + std::to_string(a.args.size()) + " arguments: by which is not written", at);
-    const GiNaC::symbol x("derivative_variable");
-    return raised(GiNaC::diff(apply_function(name, {x}), x, static_cast<unsigned>(derivative)).subs(x == a.args.front()), a.power);
+    return raised(by_slots(name, std::vector<std::size_t>(static_cast<std::size_t>(derivative), 0), a.args), a.power);
+  }
+  // A function declared with its variables, written alone: at its variables (L, V' when V(q)).
+  if (declared_.is_function(name) && !declared_.is_state(name) && declared_.variables_of(name)) {
+    const GiNaC::exvector args = at_variables(name, at);
+    if (derivative == 0) return apply_function(name, args);
+    if (args.size() != 1) refuse("a derivative of " + name + ", a function of " + std::to_string(args.size()) + " arguments: by which is not written", at);
+    return by_slots(name, std::vector<std::size_t>(static_cast<std::size_t>(derivative), 0), args);
   }
   if (derivative > 0) {
     if (!declared_.is_function(name)) {

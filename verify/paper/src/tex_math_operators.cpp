@@ -13,15 +13,15 @@
 
 namespace simpson::verify::tex_reading {
 
-GiNaC::ex reader::fraction(cursor& c) {
+GiNaC::ex reader::fraction(cursor& c, const std::vector<std::string>& closers) {
   const tex_node& n = unwrapped(c.node());
   if (n.text == "\\binom" || n.text == "\\atop") refuse("a binomial coefficient or \\atop", n);
-  if (const auto d = leibniz(c)) return *d;
+  if (const auto d = leibniz(c, closers)) return *d;
   ++c.k;
   return whole(n.children[0].children) / whole(n.children[1].children);
 }
 
-std::optional<GiNaC::ex> reader::leibniz(cursor& c) {
+std::optional<GiNaC::ex> reader::leibniz(cursor& c, const std::vector<std::string>& closers) {
   const tex_node& n = unwrapped(c.node());
   const tex_list top = unwrapped_list(n.children[0].children), bottom = unwrapped_list(n.children[1].children);
   if (top.empty() || bottom.size() < 2) return std::nullopt;
@@ -32,41 +32,103 @@ std::optional<GiNaC::ex> reader::leibniz(cursor& c) {
     refuse("\\frac{d...}{d...} with d declared a symbol is ambiguous: a derivative, or a quotient of products of d", n,
            "write \\mathrm d, or do not declare d");
   }
-  if (top.size() == 1) refuse("a derivative operator \\frac{d}{dt} applied to what follows", n, "write \\frac{dX}{dt}");
-  if (top.size() != 2) refuse("a derivative of more than one name (the numerator after its d)", n);
-  if (bottom.size() != 2 || db->order != 1) refuse("a derivative by more than one variable, or by a variable whose order is not written after it", n);
-  const std::string of = symbol_name(top[1]);
-  const tex_node& variable = unwrapped(bottom[1]);
-  std::string by;
-  int k = dt->order, order = 1;
-  if (variable.kind == tex_node_kind::scripts && !variable.sup.empty()) {
-    const tex_node& sup = unwrapped(variable.sup.front());
-    if (sup.kind != tex_node_kind::atom || sup.text.size() != 1 || !std::isdigit(static_cast<unsigned char>(sup.text[0]))) {
-      refuse("a derivative whose order is not a digit", variable);
-    }
-    order = sup.text[0] - '0';
-    tex_node base = variable;
-    base.sup.clear();
-    by = base.sub.empty() ? symbol_name(base.children.front()) : symbol_name(base);
-  } else {
-    by = symbol_name(variable);
+  if (const auto j = jacobian(n, top, bottom, *dt, *db)) {
+    ++c.k;
+    return *j;
   }
+  if (top.size() > 2) refuse("a derivative of more than one name (the numerator after its d)", n);
+  // The variables below, each after its own d: \partial q, \partial \dot q^2, \partial q \partial p.
+  std::vector<std::pair<std::string, int>> by;
+  int total = 0;
+  for (std::size_t k = 0; k < bottom.size(); k += 2) {
+    const std::optional<differential> d = differential_of(bottom[k]);
+    if (!d || d->partial != db->partial || d->order != 1 || k + 1 >= bottom.size()) {
+      refuse("a derivative by more than one variable, or by a variable whose order is not written after it", n);
+    }
+    const tex_node& variable = unwrapped(bottom[k + 1]);
+    int order = 1;
+    std::string name;
+    if (variable.kind == tex_node_kind::scripts && !variable.sup.empty()) {
+      const tex_node& sup = unwrapped(variable.sup.front());
+      if (sup.kind != tex_node_kind::atom || sup.text.size() != 1 || !std::isdigit(static_cast<unsigned char>(sup.text[0]))) {
+        refuse("a derivative whose order is not a digit", variable);
+      }
+      order = sup.text[0] - '0';
+      tex_node base = variable;
+      base.sup.clear();
+      name = base.sub.empty() ? symbol_name(base.children.front()) : symbol_name(base);
+    } else {
+      name = symbol_name(variable);
+    }
+    by.emplace_back(name, order);
+    total += order;
+  }
+  if (top.size() == 1) {  // \frac{d}{dt} X: an operator on what follows
+    if (by.size() != 1) refuse("a derivative operator by more than one variable", n);
+    if (dt->order != total) refuse("a derivative operator whose orders above and below differ", n);
+    ++c.k;
+    return derivative_operator(c, closers, by.front().first, total, dt->partial, n);
+  }
+  const std::string of = symbol_name(top[1]);
+  const int k = dt->order;
   ++c.k;
   const bool applied = !c.done() && opens_application(&c.node());
   // A function's derivative: at its argument when one follows (a state's too: dq/dt(0) is q'(0)),
-  // else at the variable below (dV/dq is V' at q); a state's without one is a quantity, dq/dt.
+  // else at the variable below (dV/dq is V' at q, \partial L/\partial \dot q at L's variables); a
+  // state's without one is a quantity, dq/dt.
   if (declared_.is_function(of) && (applied || !declared_.is_state(of))) {
-    if (k != order) refuse("the derivative d^" + std::to_string(k) + " " + of + " / d" + by + "^" + std::to_string(order) + ": the orders differ", n);
-    const application a = applied ? arguments_and_power(c) : application{{symbols_[by]}, std::nullopt};
-    if (a.args.size() != 1) refuse("a derivative of " + of + ", a function of " + std::to_string(a.args.size()) + " arguments, by name", n);
-    const GiNaC::symbol x("derivative_variable");
-    return raised(GiNaC::diff(apply_function(of, {x}), x, static_cast<unsigned>(k)).subs(x == a.args.front()), a.power);
+    if (k != total) refuse("the derivative d^" + std::to_string(k) + " " + of + " / d" + by.front().first + "^" + std::to_string(total) + ": the orders differ", n);
+    if (declared_.variables_of(of)) return partial_of(c, of, by, n);
+    if (by.size() != 1) refuse("a derivative of " + of + " by more than one variable, and " + of + " declares no variables", n, "declare " + of + "(x, y) under [symbols] functions");
+    const application a = applied ? arguments_and_power(c) : application{{symbols_[by.front().first]}, std::nullopt};
+    if (a.args.size() != 1) {
+      refuse("a derivative of " + of + ", a function of " + std::to_string(a.args.size()) + " arguments, by name, and " + of + " declares no variables", n,
+             "declare " + of + "(x, y) under [symbols] functions");
+    }
+    return raised(by_slots(of, std::vector<std::size_t>(static_cast<std::size_t>(k), 0), a.args), a.power);
   }
+  if (by.size() != 1) refuse("a derivative of " + of + ", which is not declared a function, by more than one variable", n);
   if (applied) {
-    refuse("\\frac{d" + of + "}{d" + by + "}(...) applies the derivative of " + of + " to an argument, and " + of + " is not declared a function", n,
+    refuse("\\frac{d" + of + "}{d" + by.front().first + "}(...) applies the derivative of " + of + " to an argument, and " + of + " is not declared a function", n,
            "declare " + of + " under [symbols] functions");
   }
-  return GiNaC::ex(symbols_[derivative_name(of, by, k, order)]);
+  return GiNaC::ex(symbols_[derivative_name(of, by.front().first, k, total)]);
+}
+
+std::optional<GiNaC::ex> reader::jacobian(const tex_node& n, const tex_list& top, const tex_list& bottom, const differential& dt, const differential& db) {
+  // \partial(a, b) over \partial(c, d): names between the parentheses, as many above as below.
+  const auto names = [&](const tex_list& part) -> std::optional<std::vector<GiNaC::symbol>> {
+    if (part.size() < 2) return std::nullopt;
+    tex_list inside;
+    if (part.size() == 2 && part[1].kind == tex_node_kind::delimited && part[1].text == "(") {
+      inside = part[1].children;
+    } else if (is_atom(part[1], "(") && is_atom(part.back(), ")")) {
+      inside = tex_list(part.begin() + 2, part.end() - 1);
+    } else {
+      return std::nullopt;
+    }
+    std::vector<GiNaC::symbol> out;
+    tex_list name;
+    const auto take = [&] {
+      if (name.size() != 1) refuse("a Jacobian whose parentheses hold what is not names between commas", n);
+      out.push_back(GiNaC::ex_to<GiNaC::symbol>(GiNaC::ex(symbols_[symbol_name(name.front())])));
+      name.clear();
+    };
+    for (const tex_node& x : inside) {
+      if (is_atom(x, ",")) {
+        take();
+      } else {
+        name.push_back(x);
+      }
+    }
+    take();
+    return out;
+  };
+  const auto above = names(top), below = names(bottom);
+  if (!above && !below) return std::nullopt;
+  if (!above || !below || !dt.partial || !db.partial || dt.order != 1 || db.order != 1) refuse("a Jacobian is \\frac{\\partial(a, b)}{\\partial(c, d)}", n);
+  if (above->size() != below->size()) refuse("a Jacobian with " + std::to_string(above->size()) + " names above and " + std::to_string(below->size()) + " below", n);
+  return jacobian_of(*above, *below);
 }
 
 GiNaC::ex reader::scripts(cursor& c, const std::vector<std::string>& closers) {
@@ -75,13 +137,31 @@ GiNaC::ex reader::scripts(cursor& c, const std::vector<std::string>& closers) {
   if (base.kind == tex_node_kind::op) return op(c, closers);
   if (base.kind == tex_node_kind::atom && base.text == "\\partial") {
     if (!n.sup.empty() || n.sub.empty()) refuse("\\partial with a superscript", n);
-    const std::string by = subscript_text(n.sub.front());
+    // By a variable's name (\partial_q, \partial_{\dot q}) or by a slot (\partial_2).
+    const tex_node& sub = unwrapped(n.sub.front());
+    const bool slot = sub.kind == tex_node_kind::atom && sub.text.size() == 1 && std::isdigit(static_cast<unsigned char>(sub.text[0]));
+    const std::string by = slot ? sub.text : symbol_name(sub);
     ++c.k;
     if (c.done()) refuse("\\partial_" + by + " of nothing", n);
     const std::string of = symbol_name(c.node());
+    if (declared_.is_function(of) && !declared_.is_state(of)) {
+      ++c.k;
+      if (!slot) return partial_of(c, of, {{by, 1}}, n);
+      const std::size_t k = static_cast<std::size_t>(sub.text[0] - '0');
+      const GiNaC::exvector args = !c.done() && opens_application(&c.node()) ? checked(of, arguments(c), n) : at_variables(of, n);
+      if (k == 0 || k > args.size()) refuse("\\partial_" + by + " " + of + ": " + of + " has " + std::to_string(args.size()) + " arguments", n);
+      return by_slots(of, {k - 1}, args);
+    }
+    if (slot) refuse("\\partial_" + by + " " + of + ": a derivative by slot of what is not declared a function", n);
     ++c.k;
-    if (!c.done() && opens_application(&c.node())) refuse("\\partial_" + by + " " + of + "(...): a partial derivative of a function by name", n);
+    if (!c.done() && opens_application(&c.node())) {
+      refuse("\\partial_" + by + " " + of + "(...): a partial derivative of " + of + ", which is not declared a function", n,
+             "declare " + of + "(x, y) under [symbols] functions");
+    }
     return symbols_[derivative_name(of, by, 1, 1)];
+  }
+  if (base.kind == tex_node_kind::atom && base.text == "D" && !n.sub.empty() && n.sup.empty()) {
+    if (const auto d = slot_operator(c)) return *d;
   }
   if (base.kind == tex_node_kind::atom && (base.atom_class == tex_class::close || base.atom_class == tex_class::open)) {
     refuse("a script on the delimiter '" + base.text + "'", n);
@@ -178,18 +258,40 @@ std::optional<GiNaC::ex> reader::order_term(cursor& c) {
   return GiNaC::Order(args.front());
 }
 
-std::optional<GiNaC::ex> reader::named_operator(cursor& c) {
+std::optional<GiNaC::ex> reader::named_operator(cursor& c, const std::vector<std::string>& closers) {
   const auto u = upright(c.node());
   if (!u || (u->first != "mathrm" && u->first != "operatorname")) return std::nullopt;
   const tex_node& n = c.node();
   const std::string& name = u->second;
+  if (u->first == "operatorname" && is_known_function(name)) {  // \operatorname{sin} x: \sin x
+    ++c.k;
+    if (c.done()) refuse("the operator " + name + " of nothing", n);
+    return *known_function(name, operand(c, closers, "\\operatorname{" + name + "}"));
+  }
   if (name != "tr" && name != "Tr" && name != "trace" && name != "det") {
-    refuse("the operator '" + name + "' is not one the reader knows", n, "\\det, \\operatorname{tr}");
+    refuse("the operator '" + name + "' is not one the reader knows", n, "\\det, \\operatorname{tr}, \\operatorname{sin}");
   }
   ++c.k;
   if (c.done()) refuse("the operator " + name + " of nothing", n);
   const GiNaC::ex of = factor(c, {});
   return name == "det" ? determinant_of(of) : trace_of(of);
+}
+
+bool reader::is_known_function(const std::string& name) {
+  static const std::set<std::string> names{"sin", "cos", "tan", "exp", "log", "ln", "sinh", "cosh", "tanh"};
+  return names.count(name) > 0;
+}
+
+std::optional<GiNaC::ex> reader::known_function(const std::string& name, const GiNaC::ex& x) {
+  if (name == "sin") return GiNaC::sin(x);
+  if (name == "cos") return GiNaC::cos(x);
+  if (name == "tan") return GiNaC::tan(x);
+  if (name == "exp") return GiNaC::exp(x);
+  if (name == "log" || name == "ln") return GiNaC::log(x);
+  if (name == "sinh") return GiNaC::sinh(x);
+  if (name == "cosh") return GiNaC::cosh(x);
+  if (name == "tanh") return GiNaC::tanh(x);
+  return std::nullopt;
 }
 
 GiNaC::ex reader::op(cursor& c, const std::vector<std::string>& closers) {
@@ -198,17 +300,22 @@ GiNaC::ex reader::op(cursor& c, const std::vector<std::string>& closers) {
   const std::string& name = o.text;
   if (name == "\\sum") return sum_of(c, closers);
   if (name == "\\int") return integral(c, closers);
-  static const std::set<std::string> functions{"\\sin", "\\cos", "\\tan", "\\exp", "\\log", "\\ln", "\\det", "\\sinh", "\\cosh", "\\tanh"};
-  if (!functions.count(name)) refuse("the operator " + name, n);
+  if (name != "\\det" && !is_known_function(name.substr(1))) refuse("the operator " + name, n);
   if (n.kind == tex_node_kind::scripts && !n.sub.empty()) refuse(name + " with a subscript", n);
   std::optional<GiNaC::ex> power;
   if (n.kind == tex_node_kind::scripts) power = whole_node(n.sup.front());  // \sin^2 x
   ++c.k;
   if (c.done()) refuse(name + " of nothing", n);
-  // Its argument: a parenthesised group alone (\sin(x) y is sin(x) y); else the product written
-  // after it, as mathematics reads it (ISO 80000-2: \sin \omega t is sin(ωt)), up to +, -, a
-  // relation, an explicit product (\cdot, \times) or the next operator (\sin x \cos y). A
-  // parenthesis inside that product, or a '/' after it, leaves open what the argument is: refused.
+  const GiNaC::ex x = operand(c, closers, name);
+  const GiNaC::ex value = name == "\\det" ? determinant_of(x) : *known_function(name.substr(1), x);
+  return power ? power_of(value, *power) : value;
+}
+
+GiNaC::ex reader::operand(cursor& c, const std::vector<std::string>& closers, const std::string& name) {
+  // A parenthesised group alone (\sin(x) y is sin(x) y); else the product written after it, as
+  // mathematics reads it (ISO 80000-2: \sin \omega t is sin(ωt)), up to +, -, a relation, an explicit
+  // product (\cdot, \times) or the next operator (\sin x \cos y). A parenthesis inside that product,
+  // or a '/' after it, leaves open what the argument is: refused.
   const auto opens = [](const tex_node& node) {
     const tex_node& core = node.kind == tex_node_kind::scripts ? node.children.front() : node;
     return core.kind == tex_node_kind::delimited || (core.kind == tex_node_kind::atom && core.atom_class == tex_class::open);
@@ -230,17 +337,7 @@ GiNaC::ex reader::op(cursor& c, const std::vector<std::string>& closers) {
     }
     x *= factor(c, {});
   }
-  GiNaC::ex value;
-  if (name == "\\sin") value = GiNaC::sin(x);
-  if (name == "\\cos") value = GiNaC::cos(x);
-  if (name == "\\tan") value = GiNaC::tan(x);
-  if (name == "\\exp") value = GiNaC::exp(x);
-  if (name == "\\log" || name == "\\ln") value = GiNaC::log(x);
-  if (name == "\\sinh") value = GiNaC::sinh(x);
-  if (name == "\\cosh") value = GiNaC::cosh(x);
-  if (name == "\\tanh") value = GiNaC::tanh(x);
-  if (name == "\\det") value = determinant_of(x);
-  return power ? power_of(value, *power) : value;
+  return x;
 }
 
 GiNaC::ex reader::sum_of(cursor& c, const std::vector<std::string>& closers) {

@@ -31,6 +31,7 @@ std::optional<std::pair<std::string, std::string>> upright(const tex_node& given
 /// det and tr of a named matrix: held until the matrix is put in, then evaluated.
 GiNaC::ex determinant_of(const GiNaC::ex& x);
 GiNaC::ex trace_of(const GiNaC::ex& x);
+unsigned jacobian_serial();
 
 /// A differential mark: d, {\rm d}, \mathrm{d}, \operatorname{d}, \partial; its order when it
 /// carries one (d^2).

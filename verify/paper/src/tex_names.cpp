@@ -82,6 +82,24 @@ std::string derivative_name(const std::string& of, const std::string& by, int k,
   return "d" + power(k) + of + "/d" + by + power(n);
 }
 
+GiNaC::ex jacobian_of(const std::vector<GiNaC::symbol>& to, const std::vector<GiNaC::symbol>& from) {
+  GiNaC::lst above, below;
+  for (const GiNaC::symbol& s : to) above.append(s);
+  for (const GiNaC::symbol& s : from) below.append(s);
+  return GiNaC::function(tex_reading::jacobian_serial(), above, below).hold();
+}
+
+bool is_jacobian(const GiNaC::ex& e) {
+  return GiNaC::is_exactly_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_serial() == tex_reading::jacobian_serial();
+}
+
+std::pair<std::vector<GiNaC::symbol>, std::vector<GiNaC::symbol>> jacobian_names(const GiNaC::ex& e) {
+  std::pair<std::vector<GiNaC::symbol>, std::vector<GiNaC::symbol>> out;
+  for (const GiNaC::ex& s : e.op(0)) out.first.push_back(GiNaC::ex_to<GiNaC::symbol>(s));
+  for (const GiNaC::ex& s : e.op(1)) out.second.push_back(GiNaC::ex_to<GiNaC::symbol>(s));
+  return out;
+}
+
 bool is_sum(const GiNaC::ex& e) {
   return GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "sum" && e.nops() == 4;
 }
@@ -116,6 +134,11 @@ unsigned trace_serial() {
 }
 
 GiNaC::ex determinant_of(const GiNaC::ex& x) { return GiNaC::function(det_serial(), x); }
+
+unsigned jacobian_serial() {
+  static const unsigned serial = GiNaC::function::register_new(GiNaC::function_options("jacobian", 2));
+  return serial;
+}
 GiNaC::ex trace_of(const GiNaC::ex& x) { return GiNaC::function(trace_serial(), x); }
 
 // --- names
@@ -169,8 +192,23 @@ std::string subscript_text(const tex_node& n) {
       if (!n.sup.empty()) refuse("a superscript inside a subscript", n);
       return subscript_text(n.children.front()) + "_" + subscript_text(n.sub.front());
     case tex_node_kind::label: return "";
-    default: refuse("a subscript that is not a name nor an index (a fraction, a root, ...)", n);
+    case tex_node_kind::fraction: {  // q_{j+\frac12}: the half-index node q_{j+1/2}
+      const auto digits = [](const tex_node& part) -> std::optional<std::string> {
+        std::string out;
+        for (const tex_node& c : unwrapped_list(part.children)) {
+          if (c.kind != tex_node_kind::atom || c.text.size() != 1 || !std::isdigit(static_cast<unsigned char>(c.text[0]))) return std::nullopt;
+          out += c.text;
+        }
+        return out.empty() ? std::nullopt : std::optional<std::string>(out);
+      };
+      if (n.text != "\\frac" && n.text != "\\tfrac" && n.text != "\\dfrac") break;
+      const auto top = digits(n.children[0]), bottom = digits(n.children[1]);
+      if (top && bottom) return *top + "/" + *bottom;
+      break;
+    }
+    default: break;
   }
+  refuse("a subscript that is not a name nor an index (a fraction, a root, ...)", n);
 }
 
 std::optional<std::string> font_letters(const tex_node& n) {  // \mathrm{tr}: "tr"

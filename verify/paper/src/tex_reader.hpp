@@ -63,7 +63,7 @@ class reader {
 
   GiNaC::ex primary(cursor& c, const std::vector<std::string>& closers);
 
-  GiNaC::ex atom(cursor& c);
+  GiNaC::ex atom(cursor& c, const std::vector<std::string>& closers);
 
   /// Digits (and a decimal point between digits): an exact number; a superscript on its last digit
   /// is on the number (12^2).
@@ -96,13 +96,54 @@ class reader {
   /// A name: a symbol, or a declared function applied to what follows in parentheses.
   GiNaC::ex named(cursor& c, const std::string& name, int derivative = 0);
 
+  // --- functions of several arguments (tex_math_functions.cpp)
+
+  /// The arguments of the function `name` as applied, refused when it declares another number of
+  /// variables.
+  GiNaC::exvector checked(const std::string& name, GiNaC::exvector args, const tex_node& at);
+
+  /// The function `name` written alone stands at its declared variables; refused when it declares
+  /// none (what it is applied to is not written).
+  GiNaC::exvector at_variables(const std::string& name, const tex_node& at);
+
+  /// The slot of the variable `by` among the function's declared variables (rac{\partial L}{\partial
+  /// \dot q}: "dq/dt", the second); refused when it declares none, or not that one.
+  std::size_t slot_of(const std::string& of, const std::string& by, const tex_node& at);
+
+  /// The partial derivative of the function `of` by its slots (0-based, repeated for a higher one),
+  /// at `args`: GiNaC's D[...](of)(args).
+  static GiNaC::ex by_slots(const std::string& of, const std::vector<std::size_t>& slots, const GiNaC::exvector& args);
+
+  /// The derivative of the function `of` by the variables `by` (each with its order), at what
+  /// follows in parentheses or else at its variables.
+  GiNaC::ex partial_of(cursor& c, const std::string& of, const std::vector<std::pair<std::string, int>>& by, const tex_node& at);
+
+  /// D_1 L_d(a, b), D_2 D_1 L_d(a, b): a derivative by slot, when what D_k is written before is a
+  /// declared function; none otherwise.
+  std::optional<GiNaC::ex> slot_operator(cursor& c);
+
+  /// \partial L_h / \partial \psi_l: the derivative in slanted form, refused when more factors follow
+  /// it (whether they divide or multiply is not written).
+  GiNaC::ex slanted_derivative(cursor& c, const std::vector<std::string>& closers);
+
+  /// rac{d}{dt} X: the derivative of X along a trajectory (X's states and their derivatives in t
+  /// are the trajectory's; its other symbols are constants, each one declared), X the parenthesised
+  /// group after it, or else the product written after it, as for \sin.
+  GiNaC::ex derivative_operator(cursor& c, const std::vector<std::string>& closers, const std::string& by, int order, bool partial,
+                                const tex_node& at);
+  GiNaC::ex along_trajectory(const GiNaC::ex& e, const std::string& by, const tex_node& at);
+
   // --- fractions and derivatives
 
-  GiNaC::ex fraction(cursor& c);
+  GiNaC::ex fraction(cursor& c, const std::vector<std::string>& closers = {});
 
   /// \frac{d^k X}{d y^k}, {\rm d}, \mathrm d, \partial: the derivative, or none when the fraction
   /// is not one.
-  std::optional<GiNaC::ex> leibniz(cursor& c);
+  std::optional<GiNaC::ex> leibniz(cursor& c, const std::vector<std::string>& closers);
+
+  /// \frac{\partial(q_{j+1}, p_{j+1})}{\partial(q_j, p_j)}: the held Jacobian (jacobian_of); none
+  /// when neither part is a parenthesised list.
+  std::optional<GiNaC::ex> jacobian(const tex_node& n, const tex_list& top, const tex_list& bottom, const differential& dt, const differential& db);
 
   // --- scripts
 
@@ -122,9 +163,19 @@ class reader {
   std::optional<GiNaC::ex> order_term(cursor& c);
 
   /// \det, \operatorname{tr}, \mathrm{tr}, {\rm det}: of the factor that follows.
-  std::optional<GiNaC::ex> named_operator(cursor& c);
+  std::optional<GiNaC::ex> named_operator(cursor& c, const std::vector<std::string>& closers);
 
   GiNaC::ex op(cursor& c, const std::vector<std::string>& closers);
+
+  /// What an operator written without parentheses applies to: the parenthesised group after it
+  /// alone, or else the product written after it up to +, -, a relation, an explicit product or the
+  /// next operator; a parenthesis inside that product or a '/' after it refused.
+  GiNaC::ex operand(cursor& c, const std::vector<std::string>& closers, const std::string& name);
+
+  /// \sin ... 	anh (and \operatorname{sin}): the function of that name applied to x; none for
+  /// another name.
+  static std::optional<GiNaC::ex> known_function(const std::string& name, const GiNaC::ex& x);
+  static bool is_known_function(const std::string& name);
 
   /// \sum_{j=a}^{b} s: the summand is the rest of the term.
   GiNaC::ex sum_of(cursor& c, const std::vector<std::string>& closers);

@@ -50,17 +50,23 @@ class coq_printer {
     throw unsupported("a term of another kind: " + to_text(e));
   }
 
-  /// An uninterpreted function of the paper (V, q, ...) applied, `(V x)`; its k-th derivative is a
-  /// function of its own, `(dV x)`, `(d2V x)`. The lemma quantifies over each: an identity GiNaC proved
+  /// An uninterpreted function of the paper (V, q, L, ...) applied, `(V x)`, `(L q v)`; its k-th
+  /// derivative is a function of its own, `(dV x)`, `(d2V x)`, and a partial derivative of a function
+  /// of several arguments by its slots too, `(d_1_L q v)`. The lemma quantifies over each: an identity GiNaC proved
   /// with V(x) and V'(x) as independent atoms holds for every pair of functions, V' among them.
   std::string application_text(const ex& e) {
     const GiNaC::function& f = GiNaC::ex_to<GiNaC::function>(e);
     std::string name = f.get_name();
     if (!is_reader_function(e)) throw unsupported("the function " + name);
     if (GiNaC::is_a<GiNaC::fderivative>(e)) {
-      if (f.nops() != 1) throw unsupported("a partial derivative of " + name);
-      const std::size_t order = GiNaC::ex_to<GiNaC::fderivative>(e).derivatives().size();
-      name = "d" + (order > 1 ? std::to_string(order) : std::string()) + name;
+      const GiNaC::paramset& slots = GiNaC::ex_to<GiNaC::fderivative>(e).derivatives();
+      if (f.nops() == 1) {
+        name = "d" + (slots.size() > 1 ? std::to_string(slots.size()) : std::string()) + name;
+      } else {  // a partial derivative of L(q, v) by its slots, D[0,1](L): a function of its own, d_0_1_L
+        std::string by;
+        for (const unsigned slot : slots) by += "_" + std::to_string(slot);
+        name = "d" + by + "_" + name;
+      }
     }
     const std::string id = coq_identifier(name);
     functions_[id] = f.nops();

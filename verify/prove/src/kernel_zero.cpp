@@ -280,8 +280,53 @@ GiNaC::ex with_monomial(const GiNaC::ex& e, const std::string& name, int power) 
 /// The degree of the polynomial potentials an identity linear in an uninterpreted V is proved for.
 constexpr int potential_degree = 4;
 
+namespace {
+
+/// Each application of a function the reader made, and each partial derivative of one, at each point
+/// (its arguments in normal form) replaced by an unknown of its own, arguments first: the jets of the
+/// functions at the points the expression evaluates them at. Zero in them is zero for every smooth
+/// function; nonzero in them is nonzero for some, since finitely many jet values at distinct points
+/// can be given any values.
+struct jet_unknowns : GiNaC::map_function {
+  std::map<std::string, GiNaC::symbol> unknowns;
+  GiNaC::ex operator()(const GiNaC::ex& e) override {
+    if (!is_reader_function(e)) return e.map(*this);
+    const GiNaC::ex inner = e.map(*this);
+    std::string key = GiNaC::ex_to<GiNaC::function>(e).get_name();
+    if (GiNaC::is_a<GiNaC::fderivative>(e)) {
+      std::string slots;
+      for (const unsigned s : GiNaC::ex_to<GiNaC::fderivative>(e).derivatives()) slots += (slots.empty() ? "" : ",") + std::to_string(s);
+      key = "D[" + slots + "](" + key + ")";
+    }
+    std::string args;
+    for (std::size_t k = 0; k < inner.nops(); ++k) args += (k ? "," : "") + canonical_text(GiNaC::normal(inner.op(k)));
+    key += "(" + args + ")";
+    const auto it = unknowns.find(key);
+    if (it != unknowns.end()) return it->second;
+    return unknowns.emplace(key, GiNaC::symbol(key)).first->second;
+  }
+};
+
+bool applies_several_arguments(const GiNaC::ex& e) {
+  for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (it->nops() > 1 && is_reader_function(*it)) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 kernel_decision kernel_decides_zero(const GiNaC::ex& given, std::size_t most_points) {
   const GiNaC::ex e = given.evalm();
+  if (applies_several_arguments(e)) {  // L(q, v): its jets at the points are the unknowns
+    jet_unknowns jets;
+    const GiNaC::ex abstracted = jets(e);
+    const kernel_decision d = decide_entries(abstracted, most_points);
+    std::string names;
+    for (const auto& [key, symbol] : jets.unknowns) names += (names.empty() ? "" : ", ") + key;
+    return {d.outcome, fmt::format("with each function value and partial derivative at each point an unknown ({} of them: {}): {}", jets.unknowns.size(),
+                                   names, d.evidence)};
+  }
   const std::set<std::string> functions = applied_functions(e);
   if (functions.size() > 1) return {kernel_decision::result::not_applicable, "holds what our kernel does not compute: more than one function (" + fmt::format("{}", fmt::join(functions, ", ")) + ")"};
   if (functions.size() == 1) {

@@ -43,7 +43,8 @@ const std::map<std::string, proof_shape>& proof_shapes() {
              &emerging_shape_specs,
              &known_method_shape_specs,
              &prose_shape_specs,
-             &characteristic_shape_specs}) {
+             &characteristic_shape_specs,
+             &variational_shape_specs}) {
       for (proof_shape& shape : family()) {
         const std::string name = shape.name;
         if (!all.emplace(name, std::move(shape)).second) throw std::logic_error("two proof shapes are named '" + name + "'");

@@ -199,7 +199,19 @@ ex shape_reader::parsed_side(const referenced_formula& equation, std::size_t k) 
 
 std::vector<ex> shape_reader::sides(const referenced_formula& equation) const {
   std::vector<ex> out;
-  for (std::size_t k = 0; k < equation.sides.size(); ++k) out.push_back(with_definitions(parsed_side(equation, k), definitions_));
+  // A side a proved correction replaces, when the call is judged again with it: its value corrected.
+  const std::string stem = equation.identity.substr(0, equation.identity.rfind(":side"));
+  for (std::size_t k = 0; k < equation.sides.size(); ++k) {
+    ex side = parsed_side(equation, k);
+    if (call_.corrections) {
+      for (const auto& c : call_.corrections->corrected) {
+        if (c->identity != stem + ":side" + std::to_string(k + 1)) continue;
+        side = c->value;
+        corrected_ = true;
+      }
+    }
+    out.push_back(with_definitions(side, definitions_));
+  }
   return out;
 }
 
@@ -579,6 +591,52 @@ kernel_decision kernel_confirms_order(const ex& f, const GiNaC::symbol& h, int p
     evidence += "; n at " + h.get_name() + " = 0 " + leading.evidence;
   }
   return {kernel_decision::result::zero, evidence};
+}
+
+std::map<std::string, std::pair<ex, ex>> terms_by_parts(const ex& e, const std::function<bool(const ex&)>& depends) {
+  std::map<std::string, std::pair<ex, ex>> out;
+  const ex expanded = GiNaC::expand(e);
+  const auto add = [&](const ex& term) {
+    ex part = 1, coefficient = 1;
+    for (const ex& f : GiNaC::is_a<GiNaC::mul>(term) ? GiNaC::exvector(term.begin(), term.end()) : GiNaC::exvector{term}) {
+      (depends(f) ? part : coefficient) *= f;
+    }
+    auto& slot = out[text_of(part)];
+    slot.first = part;
+    slot.second = slot.second + coefficient;
+  };
+  if (GiNaC::is_a<GiNaC::add>(expanded)) {
+    for (const ex& term : expanded) add(term);
+  } else {
+    add(expanded);
+  }
+  return out;
+}
+
+std::string differing_application_coefficients(const ex& printed, const ex& derived) {
+  const auto applies = [](const ex& f) {
+    for (GiNaC::const_preorder_iterator it = f.preorder_begin(); it != f.preorder_end(); ++it) {
+      if (is_reader_function(*it)) return true;
+    }
+    return false;
+  };
+  if (!applies(printed) || !applies(derived)) return "";
+  const auto p = terms_by_parts(printed, applies), d = terms_by_parts(derived, applies);
+  std::set<std::string> keys;
+  for (const auto& [k, t] : p) keys.insert(k);
+  for (const auto& [k, t] : d) keys.insert(k);
+  std::vector<std::string> differing;
+  for (const std::string& k : keys) {
+    const auto pt = p.find(k), dt = d.find(k);
+    const ex part = pt != p.end() ? pt->second.first : dt->second.first;
+    if (!applies(part)) continue;
+    const ex a = pt == p.end() ? ex(0) : GiNaC::normal(pt->second.second), b = dt == d.end() ? ex(0) : GiNaC::normal(dt->second.second);
+    if (!GiNaC::normal(a - b).is_zero()) differing.push_back(fmt::format("the coefficient of {}: printed {}, derived {}", text_of(part), text_of(a), text_of(b)));
+  }
+  if (differing.empty()) return "";
+  std::string out;
+  for (std::size_t k = 0; k < differing.size(); ++k) out += (k ? "; " : " (") + differing[k];
+  return out + ")";
 }
 
 }  // namespace simpson::verify::detail

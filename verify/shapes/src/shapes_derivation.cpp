@@ -9,6 +9,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <map>
+#include <optional>
 #include <set>
 
 namespace simpson::verify::detail {
@@ -16,6 +19,55 @@ namespace simpson::verify::detail {
 using GiNaC::ex;
 
 namespace {
+
+/// The derived equation scaled so that as many of its terms as can be have the printed coefficients,
+/// and the terms whose printed coefficient differs: a wrong coefficient named, with the right one.
+/// None when no term is shared, or when the printed equation holds a denominator in the unknowns.
+std::optional<std::string> scaled_correction(const ex& printed, const ex& derived, const std::vector<GiNaC::symbol>& unknowns) {
+  const ex p = GiNaC::normal(printed), d = GiNaC::normal(derived);
+  const auto free_denominator = [&](const ex& e) {
+    const ex den = GiNaC::denom(e);
+    return std::none_of(unknowns.begin(), unknowns.end(), [&](const GiNaC::symbol& u) { return den.has(u); });
+  };
+  if (!free_denominator(p) || !free_denominator(d)) return std::nullopt;
+  const auto depends = [&](const ex& f) { return std::any_of(unknowns.begin(), unknowns.end(), [&](const GiNaC::symbol& u) { return f.has(u); }); };
+  const auto printed_terms = terms_by_parts(printed, depends), derived_terms = terms_by_parts(d, depends);
+  std::optional<ex> best_scale;
+  std::size_t best_agreeing = 0;
+  for (const auto& [key, term] : printed_terms) {
+    const auto it = derived_terms.find(key);
+    if (it == derived_terms.end() || GiNaC::normal(term.second).is_zero()) continue;
+    const ex scale = GiNaC::normal(it->second.second / term.second);
+    std::size_t agreeing = 0;
+    for (const auto& [k, t] : printed_terms) {
+      const auto o = derived_terms.find(k);
+      if (o != derived_terms.end() && GiNaC::normal(o->second.second / scale - t.second).is_zero()) ++agreeing;
+    }
+    if (agreeing > best_agreeing) {
+      best_agreeing = agreeing;
+      best_scale = scale;
+    }
+  }
+  if (!best_scale) return std::nullopt;
+  std::vector<std::string> differing;
+  ex scaled = 0;
+  std::set<std::string> keys;
+  for (const auto& [k, t] : printed_terms) keys.insert(k);
+  for (const auto& [k, t] : derived_terms) keys.insert(k);
+  for (const std::string& k : keys) {
+    const auto pt = printed_terms.find(k), dt = derived_terms.find(k);
+    const ex printed_coefficient = pt == printed_terms.end() ? ex(0) : GiNaC::normal(pt->second.second);
+    const ex derived_coefficient = dt == derived_terms.end() ? ex(0) : GiNaC::normal(dt->second.second / *best_scale);
+    const ex part = pt != printed_terms.end() ? pt->second.first : dt->second.first;
+    scaled += derived_coefficient * part;
+    if (!GiNaC::normal(printed_coefficient - derived_coefficient).is_zero()) {
+      differing.push_back(fmt::format("the coefficient of {}: printed {}, derived {}", text_of(part), text_of(printed_coefficient), text_of(derived_coefficient)));
+    }
+  }
+  std::string out = "as derived, with the printed coefficients where they are right: " + text_of(scaled) + " = 0";
+  for (std::size_t k = 0; k < differing.size(); ++k) out += (k ? "; " : " (") + differing[k];
+  return differing.empty() ? out : out + ")";
+}
 
 /// The printed equation (= 0) against the derived one (= 0): the same when the printed one times a
 /// factor free of the unknowns (GiNaC finds it) is the derived one, an identity both kernels decide.
@@ -31,7 +83,8 @@ decider_evidence same_equation_evidence(shape_reader& read, const std::string& g
   e.statement = what;
   e.ginac = answer::fails;
   claim_result& result = e.found;
-  result.correction = "as derived: " + text_of(GiNaC::normal(derived)) + " = 0";
+  const std::optional<std::string> scaled = scaled_correction(printed, derived, unknowns);
+  result.correction = scaled ? *scaled : "as derived: " + text_of(GiNaC::normal(derived)) + " = 0";
   result.note = "As printed: no factor free of the unknowns makes the printed equation the derived one (GiNaC: the ratio depends on them); our kernel decides identities only, not this refutation.";
   result.evidence["exact"] = {{"statement", what}, {"ginac", "fails: derived / printed depends on the unknowns"},
                               {"own", "not applicable: a refutation of proportionality"}};

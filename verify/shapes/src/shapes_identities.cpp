@@ -40,7 +40,8 @@ decider_evidence identity_shape(const shape_call& call, const run_context& ctx) 
   const ex rhs = read.formula("rhs"), lhs = read.formula("lhs");
   const std::string what = fmt::format("({}) = ({})", reference_of(call, "lhs"), reference_of(call, "rhs"));
   decider_evidence e = identity_evidence(read, "identity", what, lhs, rhs,
-                                         fmt::format("as derived from ({}): ({}) = {}", reference_of(call, "lhs"), reference_of(call, "rhs"), text_of(lhs)));
+                                         fmt::format("as derived from ({}): ({}) = {}{}", reference_of(call, "lhs"), reference_of(call, "rhs"), text_of(lhs),
+                                                     differing_application_coefficients(rhs, lhs)));
   if (e.found_false()) e.found.corrected_formulas.push_back(read.correction_of("rhs", lhs));
   return e;
 }

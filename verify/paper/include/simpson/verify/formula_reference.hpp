@@ -83,8 +83,8 @@ GiNaC::ex read_side(const referenced_formula& f, std::size_t k, const tex_declar
 /// Every symbol in `e`, by name.
 std::vector<std::string> symbol_names(const GiNaC::ex& e);
 
-/// A definition read from a display "x = ..." or "V(q) = ...": its first side, a symbol or a function
-/// of one symbol, and its value, the last side (a chain "g = dq/dt(0) = ..." defines g by its last
+/// A definition read from a display "x = ...", "V(q) = ..." or "L(q, \dot q) = ...": its first side,
+/// a symbol or a function of distinct symbols, and its value, the last side (a chain "g = dq/dt(0) = ..." defines g by its last
 /// side; that the sides between are equal is another claim's).
 struct definition {
   GiNaC::symbol name;  // the symbol, or the function's name as a symbol
@@ -94,6 +94,9 @@ struct definition {
   std::string tex;  // as printed
   std::string function{};               // a function's name ("V"): V(x) is value at parameter = x, and V' its derivative
   std::optional<GiNaC::symbol> parameter{};
+  /// A function of several variables (L(q, \dot q) = ..., or L = ... with L's variables declared):
+  /// its parameters, slot by slot; `parameter` is then empty.
+  std::vector<GiNaC::symbol> parameters{};
 };
 definition read_definition(const tex_document& document, const tex_declarations& declared, const std::string& reference);
 

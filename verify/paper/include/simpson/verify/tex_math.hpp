@@ -13,8 +13,12 @@
 // ( ) [ ] \left \right \big; matrices (pmatrix, bmatrix, array, and vmatrix as a determinant);
 // derivatives as people write them (V'(x), V''(x), V^{(k)}(x), \dot q, \ddot q, \frac{dV}{dq}(x),
 // \frac{\mathrm d^2 q}{\mathrm d t^2}, {{\rm d}V \over {\rm d}q}, \frac{\partial L}{\partial q},
-// \partial_q L); Landau's O(h^k), \mathcal O(h^k), {\rm O}(h^k); \det and \operatorname{tr} (also
-// \mathrm{tr}, {\rm det}) of what follows; \sin, \cos, \exp, \log; \sum_{j=a}^{b} s; \int_a^b f \, dx.
+// \partial_q L); functions of several arguments declared with their variables (L(q, \dot q)) and
+// their partial derivatives at points, by name or by slot (\frac{\partial L}{\partial \dot q}(a, b),
+// \partial_{\dot q} L, D_2 L_d(a, b), \partial L_h / \partial q_m ending its term); \frac{d}{dt} X
+// along a trajectory; Landau's O(h^k), \mathcal O(h^k), {\rm O}(h^k); \det and \operatorname{tr} (also
+// \mathrm{tr}, {\rm det}) of what follows; \sin, \cos, \exp, \log (also \operatorname{sin}, ...);
+// \sum_{j=a}^{b} s; \int_a^b f \, dx.
 
 #include <simpson/verify/tex_tree.hpp>
 
@@ -45,7 +49,15 @@ tex_symbols& paper_symbols();
 struct tex_declarations {
   std::set<std::string> functions;  // applied to what follows in parentheses
   std::set<std::string> symbols;    // real or positive symbols: a function also declared here is a state
+  /// A function's variables, slot by slot, where the file declares them (L(q, \dot q): "q", "dq/dt"):
+  /// its partial derivatives by a variable's name are by that slot, it is applied to as many
+  /// arguments, and written alone (L, V') it stands at its variables.
+  std::map<std::string, std::vector<std::string>> variables;
   bool is_function(const std::string& name) const { return functions.count(name) > 0; }
+  const std::vector<std::string>* variables_of(const std::string& name) const {
+    const auto it = variables.find(name);
+    return it == variables.end() ? nullptr : &it->second;
+  }
   bool is_state(const std::string& name) const { return functions.count(name) > 0 && symbols.count(name) > 0; }
 };
 
@@ -67,6 +79,14 @@ bool is_reader_function(const GiNaC::ex& e);
 /// The symbol the reader makes of a state's derivative {{\dd^k x}\over{\dd t^n}}: "dq/dt",
 /// "d^2q/dt^2", and for a misprint such as k = 6, n = 5, "d^6q/dt^5".
 std::string derivative_name(const std::string& of, const std::string& by, int k, int n);
+
+/// \frac{\partial(q_{j+1}, p_{j+1})}{\partial(q_j, p_j)} as read: the Jacobian of a one-step map, held
+/// as jacobian({q_j+1, p_j+1}, {q_j, p_j}) (a shape computes it from the relations that define the
+/// step); `to` and `from` the names above and below, in order.
+GiNaC::ex jacobian_of(const std::vector<GiNaC::symbol>& to, const std::vector<GiNaC::symbol>& from);
+/// Whether `e` is a held Jacobian; its names above and below.
+bool is_jacobian(const GiNaC::ex& e);
+std::pair<std::vector<GiNaC::symbol>, std::vector<GiNaC::symbol>> jacobian_names(const GiNaC::ex& e);
 
 /// \sum_{j=a}^{b} s as read: sum(s, j, a, b).
 bool is_sum(const GiNaC::ex& e);

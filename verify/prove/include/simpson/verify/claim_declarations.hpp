@@ -6,8 +6,10 @@
 #include <simpson/verify/claims_file.hpp>
 #include <simpson/verify/tex_math.hpp>
 
+#include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace simpson::verify {
 
@@ -32,5 +34,14 @@ claim_declarations read_declarations(const claims_file_contents& contents, const
 /// The reader's name of a TeX name ('q_{j+1}' is "q_j+1", '\omega' "omega"); throws
 /// std::invalid_argument when it is not one name.
 std::string reader_name(const std::string& tex);
+
+/// A function's declaration: its reader's name, and its variables when the file writes them
+/// ('L(q, \dot q)': "L", {"q", "dq/dt"}; 'V': "V", none). Throws std::invalid_argument when it is
+/// neither one name nor one name applied to distinct names.
+struct function_declaration {
+  std::string name;
+  std::optional<std::vector<std::string>> variables;
+};
+function_declaration read_function_declaration(const std::string& tex);
 
 }  // namespace simpson::verify

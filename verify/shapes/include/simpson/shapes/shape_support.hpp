@@ -15,6 +15,7 @@
 
 #include <ginac/ginac.h>
 
+#include <functional>
 #include <map>
 #include <optional>
 #include <set>
@@ -217,6 +218,7 @@ std::vector<proof_shape> emerging_shape_specs();
 std::vector<proof_shape> known_method_shape_specs();
 std::vector<proof_shape> prose_shape_specs();
 std::vector<proof_shape> characteristic_shape_specs();
+std::vector<proof_shape> variational_shape_specs();
 
 // The shapes.
 decider_evidence identity_shape(const shape_call& call, const run_context& ctx);
@@ -259,5 +261,14 @@ decider_evidence spelling_shape(const shape_call& call, const run_context& ctx);
 decider_evidence emerging_condition_shape(const shape_call& call, const run_context& ctx);
 decider_evidence known_method_shape(const shape_call& call, const run_context& ctx);
 decider_evidence citations_shape(const shape_call& call, const run_context& ctx);
+
+/// An expression's terms by their part that `depends` holds for (q_m, sin(q_m), D[1](L)(q_l, v_l)),
+/// each such part (by its text) with its coefficient: the product of the term's other factors.
+std::map<std::string, std::pair<GiNaC::ex, GiNaC::ex>> terms_by_parts(const GiNaC::ex& e, const std::function<bool(const GiNaC::ex&)>& depends);
+
+/// Where a printed expression and the derived one differ in the coefficient of an application of a
+/// function the document leaves general (∂L/∂q̇ at a node): " (the coefficient of X: printed a,
+/// derived b; ...)", or nothing when either holds none or they agree on each.
+std::string differing_application_coefficients(const GiNaC::ex& printed, const GiNaC::ex& derived);
 
 }  // namespace simpson::verify::detail
