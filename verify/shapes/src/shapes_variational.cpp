@@ -103,8 +103,9 @@ decider_evidence symplectic_step_shape(const shape_call& call, const run_context
                                           names_of(from), map, n, reference_of(call, "equals"));
     decider_evidence e = identity_evidence(read, "symplectic_step", what, p.determinant(GiNaC::determinant_algo::laplace), GiNaC::pow(det_a, n) * equals, "",
                                            verdict::erratum);
-    if (e.found_false()) {
-      e.found.correction = "as derived: det M = " + text_of(GiNaC::normal(p.determinant() / GiNaC::pow(det_a, n)));
+    if (e.found_false()) {  // det M itself is long for a general L: in the evidence, not the one line
+      e.found.correction = fmt::format("as derived: det M is not ({}) for the relations as printed (det M in the evidence, exact.det_M)", reference_of(call, "equals"));
+      e.found.evidence["exact"]["det_M"] = text_of(GiNaC::normal(p.determinant(GiNaC::determinant_algo::laplace) / GiNaC::pow(det_a, n)));
     }
     return e;
   }
