@@ -11,6 +11,7 @@
 // Exit 0: every claim judged; 2: bad input (one line); 3: a harness fault. It certifies nothing
 // (--no-certify is accepted, as simpson-verify's note runs pass it).
 
+#include <simpson/verify/claims_file.hpp>
 #include <simpson/verify/claim_book.hpp>
 #include <simpson/verify/consequences.hpp>
 #include <simpson/verify/paper_reading.hpp>
@@ -91,7 +92,7 @@ int main(int argc, char** argv) {
   try {
     report = verdicts(paper, claims_file);
   } catch (const std::invalid_argument& e) {  // bad input, as simpson-verify's (a claims_file_error is one)
-    std::fprintf(stderr, "engine-runner: %s\n", e.what());
+    for (const std::string& line : simpson::verify::lines_of(e.what())) std::fprintf(stderr, "engine-runner: %s\n", line.c_str());  // a claims file's refusals, one a line
     return 2;
   } catch (const std::domain_error& e) {
     std::fprintf(stderr, "engine-runner: %s\n", e.what());

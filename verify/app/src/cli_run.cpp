@@ -4,6 +4,7 @@
 
 #include "cli_commands.hpp"
 
+#include <simpson/verify/claims_file.hpp>
 #include <simpson/verify/certify.hpp>
 #include <simpson/verify/environment.hpp>
 #include <simpson/verify/experiment_cost.hpp>
@@ -242,7 +243,7 @@ std::optional<int> prepare_run(cli_options& o, const CLI::App& app, int argc, ch
     out = output_directory(s, app.count("--out") > 0 ? std::optional<std::string>(o.out_dir) : std::nullopt);
     prepare_output_directory(out);
   } catch (const std::invalid_argument& e) {
-    std::fprintf(stderr, "simpson-verify: %s\n", e.what());
+    for (const std::string& line : simpson::verify::lines_of(e.what())) std::fprintf(stderr, "simpson-verify: %s\n", line.c_str());  // a claims file's refusals, one a line
     return 2;
   } catch (const std::domain_error& e) {
     std::fprintf(stderr, "simpson-verify: %s\n", e.what());

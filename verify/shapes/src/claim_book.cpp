@@ -6,13 +6,56 @@
 #include <simpson/verify/sentence_holes.hpp>
 #include <simpson/verify/tex_document.hpp>
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <exception>
 #include <chrono>
 #include <stdexcept>
 
 namespace simpson::verify {
 
 namespace {
+
+/// Every record's refusal in one pass (bad input: each one line with its record and line): the one
+/// refusal as it was thrown, or all of them, one line each, as one std::invalid_argument.
+class refusals {
+ public:
+  explicit refusals(std::string file) : file_(std::move(file)) {}
+
+  /// Runs `check` for the record `r`; false when it refused (its message kept).
+  template <typename F>
+  bool check(const claim_record& r, F&& check) {
+    try {
+      check();
+      return true;
+    } catch (const std::invalid_argument&) {
+      caught_.push_back(std::current_exception());
+      records_.push_back(fmt::format("claims file '{}', record '{}' (line {})", file_, r.id, r.line));
+      return false;
+    }
+  }
+  void throw_any() const {
+    if (caught_.empty()) return;
+    if (caught_.size() == 1) std::rethrow_exception(caught_.front());
+    std::string lines;
+    for (std::size_t k = 0; k < caught_.size(); ++k) {
+      try {
+        std::rethrow_exception(caught_[k]);
+      } catch (const std::invalid_argument& refused) {
+        // A claims file's own refusal names its line; one in a document it reads is named with its record.
+        const std::string what = refused.what();
+        lines += (lines.empty() ? "" : "\n") + (what.rfind("claims file", 0) == 0 ? what : records_[k] + ": " + what);
+      }
+    }
+    throw std::invalid_argument(lines);
+  }
+
+ private:
+  std::string file_;
+  std::vector<std::exception_ptr> caught_;
+  std::vector<std::string> records_;
+};
 
 /// The labels of the displays a shape record reads (its formula, matrix, condition and definition
 /// arguments that name a \label).
@@ -105,9 +148,11 @@ claim_book read_claim_book(const std::string& text, const std::string& file, con
     if (field == "shape") return detail::proof_shapes().count(name) > 0;
     return deciders.knows && deciders.knows(field, name);
   });
+  refusals all(file);
   for (const claim_record& r : contents.records) {
-    if (!r.shape.empty()) detail::check_shape_arguments(r, file);
+    if (!r.shape.empty()) all.check(r, [&] { detail::check_shape_arguments(r, file); });
   }
+  all.throw_any();
   claim_book book;
   book.file = file;
   book.document = contents.document;
@@ -131,14 +176,20 @@ void check_claims_file_formulas(claim_book& book, const paper_source& source, co
   const auto check_core = [&](const claim_record& r) {
     if (book.deciders.check_core) book.deciders.check_core(r, book.file, document, *book.declarations);
   };
+  refusals all(book.file);
   for (const claim_record& r : book.records) {
     if (only && std::find(only->begin(), only->end(), r.id) == only->end()) continue;
     if (r.shape.empty()) {
-      check_core(r);
+      all.check(r, [&] { check_core(r); });
       continue;
     }
-    const std::string printed = detail::check_shape_formulas(r, book.file, document, *book.declarations);
-    check_core(r);
+    std::string printed;
+    if (!all.check(r, [&] {
+          printed = detail::check_shape_formulas(r, book.file, document, *book.declarations);
+          check_core(r);
+        })) {
+      continue;
+    }
     if (!r.statement.empty()) continue;
     // A record without a statement: the reports, and its shape's notes, show the TeX it reads.
     claim_record stated = r;
@@ -149,6 +200,7 @@ void check_claims_file_formulas(claim_book& book, const paper_source& source, co
       c.check = check_of(stated, book.declarations, book.deciders);
     }
   }
+  all.throw_any();
 }
 
 std::vector<std::string> claims_reading_formula(const claim_book& book, const std::string& label) {

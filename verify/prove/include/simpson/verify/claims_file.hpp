@@ -71,6 +71,16 @@ inline decider decider_of(const claim_record& r) {
 
 /// A claims file that does not read: "claims file 'NAME', line N, field 'F': why". Bad input
 /// (exit 2 for a file given on the command line).
+/// The lines of a refusal's message: a claims file refused in one pass gives one line per refusal,
+/// each printed after the program's name.
+inline std::vector<std::string> lines_of(const std::string& message) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  for (std::size_t end; (end = message.find('\n', start)) != std::string::npos; start = end + 1) out.push_back(message.substr(start, end - start));
+  out.push_back(message.substr(start));
+  return out;
+}
+
 class claims_file_error : public std::invalid_argument {
  public:
   claims_file_error(const std::string& file, int line, const std::string& field, const std::string& why);

@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Every refusal of a claims file in one pass: a copy of a corpus note's claims file with faults in
+# four records (q no longer declared, which two formulas the records read need; an undeclared
+# variable, twice; a label that is not there) is refused with exit 2, one line per refusal, each naming the
+# claims file and its record's line, and nothing is written.
+set -u
+bin="$1"
+notes="$2"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+sed -e "s/real = \['q', 'q_\\\\ell'/real = ['q_\\\\ell'/" \
+    -e "s/variable = \['q_m'\], unknowns/variable = ['q_x'], unknowns/" \
+    -e 's/relations = \["internal", "pl", "pr"\]/relations = ["internal", "nolabel", "pr"]/' \
+    "$notes/simpson-any-lagrangian.toml" >"$work/bad.toml"
+[ "$(diff "$notes/simpson-any-lagrangian.toml" "$work/bad.toml" | grep -c '^>')" = 4 ] || { echo "FAIL the edits did not all apply"; exit 1; }
+"$bin" --paper "$notes/simpson-any-lagrangian.tex" --claims-file "$work/bad.toml" --no-certify --out "$work/out" 2>"$work/err"
+code=$?
+cat "$work/err"
+[ "$code" = 2 ] || { echo "FAIL exit $code, expected 2"; exit 1; }
+[ ! -e "$work/out" ] || { echo "FAIL the output directory was written"; exit 1; }
+[ "$(wc -l <"$work/err")" = 4 ] || { echo "FAIL $(wc -l <"$work/err") lines, expected 4 (one per refusal)"; exit 1; }
+if grep -v "^simpson-verify: claims file '$work/bad.toml', \(record '[a-z-]*' (line [0-9]*)\|line [0-9]*, field\)" "$work/err"; then
+  echo "FAIL a line above does not name the claims file and its record's line"; exit 1
+fi
+grep -q "record 'lagrangian' (line 14)" "$work/err" && grep -q "field 'with.variable'" "$work/err" && grep -q "no \\\\label{nolabel}" "$work/err" &&
+  grep -q "record 'pendulum-internal'\|line 68" "$work/err" || { echo "FAIL a refusal is missing"; exit 1; }
+echo "ok: 4 refusals in one pass"
