@@ -39,13 +39,20 @@ class refusals {
     if (caught_.empty()) return;
     if (caught_.size() == 1) std::rethrow_exception(caught_.front());
     std::string lines;
+    std::vector<std::string> seen;
     for (std::size_t k = 0; k < caught_.size(); ++k) {
       try {
         std::rethrow_exception(caught_[k]);
       } catch (const std::invalid_argument& refused) {
-        // A claims file's own refusal names its line; one in a document it reads is named with its record.
+        // A claims file's own refusal names its line; a formula of the document that does not read
+        // names the document's line, once however many records read it (the fault is the TeX's, or
+        // the declarations', not a record's); any other is named with its record.
         const std::string what = refused.what();
-        lines += (lines.empty() ? "" : "\n") + (what.rfind("claims file", 0) == 0 ? what : records_[k] + ": " + what);
+        const bool named = what.rfind("claims file", 0) == 0 || what.rfind("document '", 0) == 0;
+        const std::string line = named ? what : records_[k] + ": " + what;
+        if (std::find(seen.begin(), seen.end(), line) != seen.end()) continue;
+        seen.push_back(line);
+        lines += (lines.empty() ? "" : "\n") + line;
       }
     }
     throw std::invalid_argument(lines);
