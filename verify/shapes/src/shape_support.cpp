@@ -593,6 +593,15 @@ kernel_decision kernel_confirms_order(const ex& f, const GiNaC::symbol& h, int p
   return {kernel_decision::result::zero, evidence};
 }
 
+GiNaC::matrix canonical_j(unsigned n) {
+  GiNaC::matrix j(2 * n, 2 * n);
+  for (unsigned k = 0; k < n; ++k) {
+    j(k, n + k) = 1;
+    j(n + k, k) = -1;
+  }
+  return j;
+}
+
 std::map<std::string, std::pair<ex, ex>> terms_by_parts(const ex& e, const std::function<bool(const ex&)>& depends) {
   std::map<std::string, std::pair<ex, ex>> out;
   const ex expanded = GiNaC::expand(e);

@@ -22,19 +22,6 @@ namespace simpson::verify::detail {
 
 using GiNaC::ex;
 
-namespace {
-
-GiNaC::matrix canonical_j(unsigned n) {
-  GiNaC::matrix j(2 * n, 2 * n);
-  for (unsigned k = 0; k < n; ++k) {
-    j(k, n + k) = 1;
-    j(n + k, k) = -1;
-  }
-  return j;
-}
-
-}  // namespace
-
 decider_evidence identity_shape(const shape_call& call, const run_context& ctx) {
   shape_reader read(call, document_of(ctx));
   const ex rhs = read.formula("rhs"), lhs = read.formula("lhs");

@@ -22,15 +22,6 @@ std::string names_of(const std::vector<GiNaC::symbol>& symbols) {
   return out;
 }
 
-GiNaC::matrix canonical_form(unsigned n) {
-  GiNaC::matrix j(2 * n, 2 * n);
-  for (unsigned k = 0; k < n; ++k) {
-    j(k, n + k) = 1;
-    j(n + k, k) = -1;
-  }
-  return j;
-}
-
 }  // namespace
 
 /// The one-step map the printed relations define, (from) -> (to) with the internal nodes solved
@@ -53,9 +44,10 @@ decider_evidence symplectic_step_shape(const shape_call& call, const run_context
   const std::vector<GiNaC::symbol> internal = read.has("internal") ? read.symbols("internal") : std::vector<GiNaC::symbol>{};
   std::vector<ex> relations;
   for (const referenced_formula& f : read.equations("relations")) {
+    // a = b, or a chain a = b = ... (p_n = -dL_d/dq_n = ...): its first side against its last, as printed.
     const std::vector<ex> sides = read.sides(f);
-    if (sides.size() != 2) throw argument_error("relations", "'" + f.locator + "' is not one equation a = b");
-    relations.push_back(sides[0] - sides[1]);
+    if (sides.size() < 2) throw argument_error("relations", "'" + f.locator + "' is no equation");
+    relations.push_back(sides.front() - sides.back());
   }
   std::vector<GiNaC::symbol> unknowns = to;
   unknowns.insert(unknowns.end(), internal.begin(), internal.end());
@@ -109,7 +101,7 @@ decider_evidence symplectic_step_shape(const shape_call& call, const run_context
     }
     return e;
   }
-  const GiNaC::matrix j = canonical_form(n / 2);
+  const GiNaC::matrix j = canonical_j(n / 2);
   const std::string what = fmt::format("M^T J M = J for M = d({})/d({}), {}: P^T J P = det(A)^2 J, P = adj(A) B", names_of(to), names_of(from), map);
   decider_evidence e = identity_evidence(read, "symplectic_step", what, p.transpose().mul(j).mul(p), j.mul_scalar(GiNaC::pow(det_a, 2)), "", verdict::erratum);
   if (e.found_false()) e.found.correction = "as derived: the step is not symplectic (M^T J M - J is not 0)";

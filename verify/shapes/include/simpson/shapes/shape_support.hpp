@@ -262,6 +262,9 @@ decider_evidence emerging_condition_shape(const shape_call& call, const run_cont
 decider_evidence known_method_shape(const shape_call& call, const run_context& ctx);
 decider_evidence citations_shape(const shape_call& call, const run_context& ctx);
 
+/// J = [[0, I], [-I, 0]] of n degrees of freedom (2n x 2n): the symplectic form on (q, p).
+GiNaC::matrix canonical_j(unsigned n);
+
 /// An expression's terms by their part that `depends` holds for (q_m, sin(q_m), D[1](L)(q_l, v_l)),
 /// each such part (by its text) with its coefficient: the product of the term's other factors.
 std::map<std::string, std::pair<GiNaC::ex, GiNaC::ex>> terms_by_parts(const GiNaC::ex& e, const std::function<bool(const GiNaC::ex&)>& depends);
