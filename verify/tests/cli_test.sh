@@ -303,6 +303,7 @@ grep -q '"correction": "stable exactly for 0 < h\*omega < 2"' "$work/note/report
 grep -q "^Exit code 0: every verdict is the expected one, the claims file's expected verdicts for its document" "$work/note/report.md" ||
   fail "a note: the exit line speaks of the paper"
 ls "$work/note"/*.csv >/dev/null 2>&1 && fail "a note: a section of the paper's experiments ran"
+grep -q "headline claims" "$work/note/timing.md" && fail "a note: timing.md speaks of the paper's headline claims (a note's records name none)"
 grep -q "^What each kernel proved, of (map)^T J (map) = J:" "$work/note/report.md" || fail "a note: a shape's two kernels are not in report.md"
 grep -q '"file": "certificates/stability_condition.v"' "$work/note/report.json" || fail "a note: the stability band has no Coq certificate"
 # Every certificate the shapes export, checked by coqc: in the Release suite only (coqc is the same

@@ -311,6 +311,10 @@ TEST(ShapeRecords, BadRecordsAreNamedWithTheirLineAndArgument) {
             std::string::npos);
   EXPECT_NE(error_of("identity", R"({ lhs = "sum", rhs = '$a +* b$' })").find("field 'with.rhs': "), std::string::npos);
   EXPECT_NE(error_of("identity", R"({ lhs = "sum", rhs = '$z$' })").find("the symbol 'z' is not declared"), std::string::npos);
+  // A derivative of something neither declared nor defined: the hint is its definition, not a declaration of dg/dx.
+  EXPECT_NE(error_of("identity", R"({ lhs = "sum", rhs = '$\frac{\partial g}{\partial x}$' })")
+                .find("the derivative 'dg/dx' of g by x: g is neither declared nor defined; put the label of its definition (g = ...) in 'where'"),
+            std::string::npos) << error_of("identity", R"({ lhs = "sum", rhs = '$\frac{\partial g}{\partial x}$' })");
   // Of the wrong kind or size for the shape: found before anything runs, not when the claim runs.
   EXPECT_NE(error_of("determinant", R"({ matrix = "sum", equals = "one" })").find("field 'with.matrix': label sum (line 15) is not a square matrix"),
             std::string::npos);

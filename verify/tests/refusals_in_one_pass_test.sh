@@ -25,3 +25,17 @@ fi
 grep -q "inline formula at 'applied to the action of one step', line 32" "$work/err" && grep -q "field 'with.variable'" "$work/err" &&
   grep -q "no \\\\label{nolabel}" "$work/err" && grep -q "label pendulum, line 58" "$work/err" || { echo "FAIL a refusal is missing"; exit 1; }
 echo "ok: 4 refusals in one pass"
+
+# An argument only its claim's run can judge (symplectic-step counts its relations against the
+# unknowns it finds as it reads them) is bad input too: exit 2, one line naming the record's field,
+# nothing written; not "internal error" (exit 3), which would lose the run to a fault of the harness.
+sed -e 's/relations = \["internal", "pl", "pr"\]/relations = ["pl", "pr"]/' "$notes/simpson-any-lagrangian.toml" >"$work/short.toml"
+[ "$(diff "$notes/simpson-any-lagrangian.toml" "$work/short.toml" | grep -c '^>')" = 1 ] || { echo "FAIL the relations edit did not apply"; exit 1; }
+"$bin" --paper "$notes/simpson-any-lagrangian.tex" --claims-file "$work/short.toml" --no-certify --quiet --out "$work/out2" >/dev/null 2>"$work/err2"
+code=$?
+cat "$work/err2"
+[ "$code" = 2 ] || { echo "FAIL exit $code for a relation too few, expected 2"; exit 1; }
+[ ! -e "$work/out2" ] || { echo "FAIL the output directory was written"; exit 1; }
+[ "$(wc -l <"$work/err2")" = 1 ] && grep -q "^simpson-verify: claims file '$work/short.toml', line 60, field 'with.relations': 2 relations for 3 unknowns" "$work/err2" ||
+  { echo "FAIL not one line naming with.relations at line 60"; exit 1; }
+echo "ok: a refusal at run time"

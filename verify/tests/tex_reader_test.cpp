@@ -108,6 +108,18 @@ TEST(TexReader, AFunctionsArgumentIsTheProductAfterIt) {
   EXPECT_NE(why_refused("\\sin x / 2").find("whether it divides the argument is not written"), std::string::npos) << why_refused("\\sin x / 2");
   EXPECT_TRUE(equal_values(reading_of("\\sin(x) / 2"), GiNaC::sin(x) / 2));
   EXPECT_TRUE(equal_values(reading_of("\\frac{\\sin x}{2}"), GiNaC::sin(x) / 2));
+  // A space after an unspaced first factor ends the argument to many (\sin^2\theta\,\dot\phi^2 is
+  // (sin θ)² φ̇²), and so does a velocity: refused; a writer who spaces every factor, as the paper
+  // does (\sin \, \omega \, t), writes one product.
+  EXPECT_NE(why_refused("\\sin^2 x\\, h^2").find("a space after \\sin's unparenthesised argument"), std::string::npos) << why_refused("\\sin^2 x\\, h^2");
+  EXPECT_NE(why_refused("\\sin x \\dot{q}").find("a velocity after \\sin's unparenthesised argument"), std::string::npos) << why_refused("\\sin x \\dot{q}");
+  EXPECT_NE(why_refused("\\sin \\, x \\, \\dot{q}").find("a velocity after"), std::string::npos) << why_refused("\\sin \\, x \\, \\dot{q}");
+  EXPECT_TRUE(equal_values(reading_of("\\sin^2(x)\\, h^2"), GiNaC::pow(GiNaC::sin(x), 2) * h * h));
+  EXPECT_TRUE(equal_values(reading_of("m \\, \\omega \\, \\cos \\, \\omega \\, t"), m * omega * GiNaC::cos(omega * t)));
+  // The state q, also written alone: q\,(x + h) is q applied, or q times x + h; V \, (x) only applied.
+  EXPECT_NE(why_refused("q\\,(x + h)").find("a space between the state q and a parenthesis"), std::string::npos) << why_refused("q\\,(x + h)");
+  EXPECT_TRUE(equal_values(reading_of("q(x + h)"), apply_function("q", {x + h})));
+  EXPECT_TRUE(equal_values(reading_of("V \\, (x)"), apply_function("V", {x})));
 }
 
 TEST(TexReader, DerivativesAsPeopleWriteThem) {

@@ -7,6 +7,7 @@
 #include <simpson/verify/claims_file.hpp>
 #include <simpson/verify/certify.hpp>
 #include <simpson/verify/environment.hpp>
+#include <simpson/verify/formula_reference.hpp>
 #include <simpson/verify/experiment_cost.hpp>
 #include <simpson/verify/interruption.hpp>
 #include <simpson/verify/ledger.hpp>
@@ -358,6 +359,12 @@ int execute_run(prepared_run& r, const cli_options& o, const claim_checker& chec
     return code;
   } catch (const interrupted& e) {
     return interrupted_exit(e);
+  } catch (const claims_file_error& e) {  // an argument only its claim's run could judge: bad input, nothing written
+    for (const std::string& line : simpson::verify::lines_of(e.what())) std::fprintf(stderr, "simpson-verify: %s\n", line.c_str());
+    return 2;
+  } catch (const document_error& e) {
+    for (const std::string& line : simpson::verify::lines_of(e.what())) std::fprintf(stderr, "simpson-verify: %s\n", line.c_str());
+    return 2;
   } catch (const std::filesystem::filesystem_error& e) {  // writing the report: the output directory
     fmt::print(stderr, "simpson-verify: --out '{}': cannot write the report ({}); the previous report, if any, is unchanged\n",
                out.string(), e.code().message());

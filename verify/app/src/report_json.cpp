@@ -196,7 +196,7 @@ std::string timing_markdown(const run_record& r, const plot_outcome& plots) {
   md += fmt::format("Total: {:.2f} s. The verdicts and figures: [report.md](report.md).\n\n", r.seconds);
   if (!r.outcomes.empty()) {
     const speed_figures speed = speed_of(r);
-    if (machine_read(r) > 0) {
+    if (machine_read(r) > 0 && !speed.headline_ids.empty()) {  // a note's records name no headline claims
       md += fmt::format("The GiNaC derivation from first principles took {:.2e} s; the headline claims ({}) in GiNaC, with that "
                         "derivation, {:.2e} s.\n\n",
                         r.ginac_derivation_seconds, report_parts::join(speed.headline_ids, ", "), speed.headline);

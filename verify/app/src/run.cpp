@@ -8,6 +8,8 @@
 #include <simpson/verify/run.hpp>
 #include <simpson/verify/utf8_text.hpp>
 #include <simpson/verify/claim_reads.hpp>
+#include <simpson/verify/claims_file.hpp>
+#include <simpson/verify/formula_reference.hpp>
 #include <simpson/verify/run_memo.hpp>
 
 #include <simpson/verify/certify.hpp>
@@ -165,6 +167,10 @@ run_record run(const scene& s, std::shared_ptr<const claim_book> book, const pap
     try {
       outcome.result = checker ? checker(c, ctx) : check_claim(c, ctx);
     } catch (const interrupted&) {
+      throw;
+    } catch (const claims_file_error&) {  // an argument only the run could judge: bad input (exit 2), no verdict
+      throw;
+    } catch (const document_error&) {
       throw;
     } catch (const std::exception& e) {
       outcome.result = claim_result{};

@@ -293,15 +293,23 @@ struct function_values : GiNaC::map_function {
 
 namespace {
 
-/// A function defined in another variable than its argument, q(t) = ... θ with t = h θ among the
-/// definitions (a symbol's, linear in exactly one symbol of the function's value), is read in its
-/// argument: θ = t/h put in its value. Any other definition is as read.
+/// A function defined in another variable than its argument, q(t) = ... σ, is read in its argument
+/// when the definitions say how the two relate: σ = t/h (a symbol of the value defined by an
+/// expression in the argument) is put in as it is; t = h σ (the argument's definition, linear in
+/// exactly one symbol of the value) is solved for σ. A value that holds symbols but not its argument,
+/// and that no definition relates to it, is refused: read as printed it would be constant in t, and
+/// its derivatives 0, which the text does not say.
 std::vector<definition> in_their_arguments(const std::vector<definition>& definitions) {
   std::vector<definition> out = definitions;
   for (definition& d : out) {
     if (d.function.empty() || !d.parameter || d.value.has(*d.parameter)) continue;
     for (const definition& change : definitions) {
-      if (!change.function.empty() || change.name.get_name() != d.parameter->get_name()) continue;
+      if (!change.function.empty()) continue;
+      if (d.value.has(change.name) && change.value.has(*d.parameter)) {  // σ = t/h
+        d.value = d.value.subs(change.name == change.value);
+        continue;
+      }
+      if (change.name.get_name() != d.parameter->get_name()) continue;  // t = h σ
       std::vector<GiNaC::symbol> shared;
       for (GiNaC::const_preorder_iterator it = change.value.preorder_begin(); it != change.value.preorder_end(); ++it) {
         if (!GiNaC::is_a<GiNaC::symbol>(*it) || !d.value.has(*it)) continue;
@@ -313,6 +321,15 @@ std::vector<definition> in_their_arguments(const std::vector<definition>& defini
       if (slope.has(shared.front()) || GiNaC::normal(slope).is_zero()) continue;  // not linear in it
       const GiNaC::ex solved = GiNaC::normal((GiNaC::ex(*d.parameter) - change.value.subs(shared.front() == 0)) / slope);
       d.value = d.value.subs(shared.front() == solved);
+    }
+    bool holds_symbols = false;
+    for (GiNaC::const_preorder_iterator it = d.value.preorder_begin(); it != d.value.preorder_end() && !holds_symbols; ++it) {
+      holds_symbols = GiNaC::is_a<GiNaC::symbol>(*it);
+    }
+    if (holds_symbols && !d.value.has(*d.parameter)) {
+      throw std::invalid_argument(d.locator + ": " + d.function + "(" + d.parameter->get_name() +
+                                  ") is defined without " + d.parameter->get_name() + "; when its value is written in another variable, put that variable's " +
+                                  "definition in 'where' (as s = " + d.parameter->get_name() + "/h or " + d.parameter->get_name() + " = h s)");
     }
   }
   return out;

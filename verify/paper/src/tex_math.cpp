@@ -325,6 +325,12 @@ GiNaC::ex reader::named(cursor& c, const std::string& name, int derivative) {
   if (name == "O") refuse("O is Landau's symbol: O(h^k)", at);
   ++c.k;
   const bool applied = !c.done() && opens_application(&c.node());
+  // A state is also written alone (θ for θ(t)): \theta\,(a + b) may be θ applied to a + b, or θ times
+  // it; the space says the second to some, and the paper spaces its applications (H_d \, (p, q)).
+  if (declared_.is_state(name) && applied && c.node().spaced) {
+    refuse("a space between the state " + name + " and a parenthesis: whether " + name + " is applied to it or multiplies it is not written", c.node(),
+           name + "(t_n), or " + name + " \\cdot (a + b)");
+  }
   if (declared_.is_function(name) && applied) {
     application a = arguments_and_power(c);
     a.args = checked(name, a.args, at);

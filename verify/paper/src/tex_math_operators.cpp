@@ -314,18 +314,26 @@ GiNaC::ex reader::op(cursor& c, const std::vector<std::string>& closers) {
 GiNaC::ex reader::operand(cursor& c, const std::vector<std::string>& closers, const std::string& name) {
   // A parenthesised group alone (\sin(x) y is sin(x) y); else the product written after it, as
   // mathematics reads it (ISO 80000-2: \sin \omega t is sin(ωt)), up to +, -, a relation, an explicit
-  // product (\cdot, \times) or the next operator (\sin x \cos y). A parenthesis inside that product,
-  // or a '/' after it, leaves open what the argument is: refused.
+  // product (\cdot, \times) or the next operator (\sin x \cos y). What leaves open where the argument
+  // ends is refused: a parenthesis inside that product, a '/' after it, a velocity in it (\sin\theta
+  // \dot\phi is (sin θ) φ̇ to a physicist), or a space command after an unspaced first factor
+  // (\sin^2\theta\,\dot\phi^2 ends the argument at the space to many, while the paper spaces every
+  // factor of one argument: \sin \, \omega \, t, which reads as sin(ωt)).
   const auto opens = [](const tex_node& node) {
     const tex_node& core = node.kind == tex_node_kind::scripts ? node.children.front() : node;
     return core.kind == tex_node_kind::delimited || (core.kind == tex_node_kind::atom && core.atom_class == tex_class::open);
   };
   const bool parenthesised = opens(c.node());
+  const bool spaced_factors = c.node().spaced;  // \sin \, \omega \, t: the writer spaces every factor
   GiNaC::ex x = factor(c, {});
   while (!parenthesised && !ends_term(c, closers)) {
     const tex_node& next = c.node();
     const tex_node& core = next.kind == tex_node_kind::scripts ? unwrapped(next.children.front()) : next;
     if (core.kind == tex_node_kind::op) break;
+    if (next.spaced && !spaced_factors) {
+      refuse("a space after " + name + "'s unparenthesised argument: whether what follows belongs to the argument is not written", next,
+             name + "(x)\\, y or " + name + "(x\\, y)");
+    }
     if (core.kind == tex_node_kind::atom && core.text == "/") {  // sin x/2: sin(x/2) to some, (sin x)/2 to others
       refuse("a '/' after " + name + "'s unparenthesised argument: whether it divides the argument is not written", next,
              name + "(x/2) or \\frac{" + name + " x}{2}");
@@ -334,6 +342,11 @@ GiNaC::ex reader::operand(cursor& c, const std::vector<std::string>& closers, co
     if (opens(next)) {
       refuse("a parenthesis after " + name + "'s unparenthesised argument: whether it belongs to the argument is not written", next,
              name + "(x (1 + y)) or (" + name + " x)(1 + y)");
+    }
+    const bool differentiates = name.rfind("\\frac{", 0) == 0;  // d/dt m \dot q: a product, differentiated whole
+    if (!differentiates && core.kind == tex_node_kind::accent && (core.text == "\\dot" || core.text == "\\ddot")) {  // \sin\theta\dot\phi: (sin θ) φ̇ to a physicist
+      refuse("a velocity after " + name + "'s unparenthesised argument: whether it belongs to the argument is not written", next,
+             name + "(\\theta)\\,\\dot\\phi or " + name + "(\\theta\\dot\\phi)");
     }
     x *= factor(c, {});
   }

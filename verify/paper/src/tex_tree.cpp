@@ -77,6 +77,7 @@ class tree_parser {
     std::string over_kind;
     tex_token over_token;
     std::size_t over_index = 0;
+    bool spaced = false;  // a space command read since the last node: the next one is marked
     while (!at_end()) {
       const tex_token& t = peek();
       if (t.category == tex_category::end_group || t.category == tex_category::alignment || t.is_control("\\\\") || t.is_control("\\end") ||
@@ -104,7 +105,13 @@ class tree_parser {
         out.push_back(std::move(font));
         continue;
       }
-      atom_into(out);
+      const std::size_t before = out.size();
+      if (atom_into(out)) {
+        spaced = true;
+      } else if (out.size() > before) {
+        out.back().spaced = spaced;
+        spaced = false;
+      }
     }
     if (!over) return out;
     tex_node fraction{tex_node_kind::fraction, over_kind == "\\over" ? "\\frac" : over_kind == "\\atop" ? "\\atop" : "\\binom"};
@@ -147,15 +154,23 @@ class tree_parser {
 
   // --- atoms
   /// One atom, or the scripts of the last atom of `out`, or nothing (a command consumed by rule).
-  void atom_into(tex_list& out) {
+  /// True when what it consumed was a space command (\, \: \; \> \  \quad \qquad ~ and the
+  /// named widths), which the next node records: the reader ends an operator's argument there.
+  bool atom_into(tex_list& out) {
     const std::size_t count = out.size();
     const std::size_t from = (skip_spaces(), k_);
+    static const std::set<std::string> spaces{"\\,", "\\:", "\\;", "\\>", "\\ ", "\\quad", "\\qquad", "\\enspace", "\\thinspace", "\\medspace", "\\thickspace"};
+    if (!at_end() && (peek().category == tex_category::active || (peek().category == tex_category::control && spaces.count(peek().text) > 0))) {
+      atom(out);
+      return true;
+    }
     const bool script = peek().category == tex_category::superscript || peek().category == tex_category::subscript || peek().is_char('\'');
     atom(out);
     if (!script && out.size() > count) {
       out.back().first_token = from;
       out.back().last_token = k_;
     }
+    return false;
   }
 
   void atom(tex_list& out) {
@@ -215,6 +230,7 @@ class tree_parser {
         out.pop_back();
       }
       base.offset = inner.offset;
+      base.spaced = inner.spaced;  // \, \dot\phi^2: the space is before the whole
       base.first_token = inner.children.empty() && inner.kind == tex_node_kind::group && inner.last_token == 0 ? from : inner.first_token;
       base.children = {std::move(inner)};
     }

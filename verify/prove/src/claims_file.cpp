@@ -278,6 +278,7 @@ claims_file_contents read_claims_contents(const std::string& text, const std::st
     const record_reader read(*table, file);
     claim_record r;
     r.line = read.line();
+    r.file = file;
     r.id = read.text("id", true);
     if (!kebab_case(r.id)) throw claims_file_error(file, read.line_of_field("id"), "id", "'" + r.id + "' is not kebab-case (a-z, 0-9, -)");
     if (!line_of_id.emplace(r.id, r.line).second) {

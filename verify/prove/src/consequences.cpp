@@ -4,6 +4,8 @@
 
 #include <simpson/verify/formula_reference.hpp>
 
+#include <algorithm>
+#include <map>
 #include <stdexcept>
 
 namespace simpson::verify {
@@ -56,6 +58,22 @@ std::vector<std::optional<consequence>> trace_consequences(const std::vector<con
         throw std::logic_error("claim '" + c.id + "' is recorded to follow from '" + c.follows_from + "', but with the corrected " + shown(*results[e]).front() +
                                " it is still " + to_string(again) + ": a link the derivation contradicts");
       }
+    }
+  }
+  // Two records that find the same misprint each hold with the other's correction: a cycle of
+  // consequences names no cause. The first in the file is the cause, each other one in the cycle
+  // its consequence (the misprint counted once).
+  std::map<std::string, std::size_t> index;
+  for (std::size_t k = 0; k < claims.size(); ++k) index.emplace(claims[k]->id, k);
+  for (std::size_t k = 0; k < claims.size(); ++k) {
+    std::vector<std::size_t> chain{k};
+    for (std::size_t at = k; out[at];) {
+      at = index.at(out[at]->cause);
+      if (std::find(chain.begin(), chain.end(), at) != chain.end()) {
+        if (at == k) out[*std::min_element(chain.begin(), chain.end())].reset();
+        break;
+      }
+      chain.push_back(at);
     }
   }
   return out;

@@ -1,6 +1,7 @@
 #include <simpson/verify/claim_book.hpp>
 
 #include <simpson/prove/printed_check_support.hpp>
+#include <simpson/shapes/shape_support.hpp>
 #include <simpson/verify/formula_reference.hpp>
 #include <simpson/verify/quoted_words.hpp>
 #include <simpson/verify/sentence_holes.hpp>
@@ -111,11 +112,19 @@ detail::judge judge_of(const claim_record& r, const std::shared_ptr<const claim_
   }
   const detail::shape_call call{r.id, r.statement, r.with, declared};
   const detail::proof_shape& shape = detail::proof_shapes().at(r.shape);
-  return [call, run = shape.run, core = r.core, coq_none = r.coq_none, bind = deciders.bind_core](const run_context& ctx) {
+  return [call, run = shape.run, core = r.core, coq_none = r.coq_none, bind = deciders.bind_core, file = r.file, line = r.line](const run_context& ctx) {
     detail::shape_call with_document = call;
     with_document.corrections = ctx.corrections;
     const auto start = std::chrono::steady_clock::now();
-    detail::decider_evidence e = run(with_document, ctx);
+    detail::decider_evidence e;
+    try {
+      e = run(with_document, ctx);
+    } catch (const detail::argument_error& error) {
+      // An argument the checks before the run could not judge (the shape learns it only as it
+      // reads): bad input, named by its field, never a fault of the harness.
+      const auto it = call.with.find(error.argument);
+      throw claims_file_error(file, it != call.with.end() ? it->second.line : line, "with." + error.argument, error.what());
+    }
     e.found.printed_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();  // GiNaC's and ours
     if (!e.goals && e.found.certificate.empty() && e.found.certificate_missing.empty()) {
       e.found.certificate_missing = detail::without_coq_statement(coq_none);

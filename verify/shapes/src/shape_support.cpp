@@ -66,6 +66,7 @@ shape_reader::shape_reader(const shape_call& call, const tex_document& document)
     for (int k = 1; d.parameter && k <= 4; ++k) declared_.insert(derivative_name(d.function, d.parameter->get_name(), k, k));  // dq/dt, q(t) defined
   }
   for (const definition& d : definitions_) declared_only(d.value, d.locator);
+  (void)with_definitions(GiNaC::ex(0), definitions_);  // each function read in its argument, or refused now, before anything runs
 }
 
 /// A generic matrix printed with a symbol for each entry (Φ = (α β; γ δ)) named for the entries of
@@ -244,6 +245,14 @@ void shape_reader::declared_only(const ex& e, const std::string& where) const {
   };
   for (const std::string& name : symbol_names(e)) {
     if (!declared_.count(name) && !bound.count(name) && !derivative_of_declared(name)) {
+      // dL_d/dq_n: a derivative of something the document defines, read from its definition in 'where'.
+      const std::size_t slash = name.find("/d");
+      if (name.size() > 3 && name[0] == 'd' && name[1] != '^' && slash != std::string::npos && slash > 1) {
+        const std::string of = name.substr(1, slash - 1), by = name.substr(slash + 2);
+        throw std::invalid_argument(where + ": the derivative '" + name + "' of " + of + " by " + by + ": " + of +
+                                    " is neither declared nor defined; put the label of its definition (" + of + " = ...) in 'where', "
+                                    "or declare " + of + " under functions with its variables (" + of + "(a, b)) and write its partial derivative at a point");
+      }
       throw std::invalid_argument(where + ": the symbol '" + name + "' is not declared in [symbols] (declare it under positive or real; "
                                   "or under functions if the document applies it, " + name + "(x))");
     }

@@ -9,7 +9,8 @@ folder passes when `simpson-verify --paper note.tex --claims-file claims.toml` g
 expected verdict, and every record expecting a remark (`expected = "holds"` with its class in
 `finding`) that remark's class, and no other record a remark. A folder must hold a statement the
 shape refuses (a verdict other than holds) or one it holds with a remark, so that a shape that stopped
-telling right from wrong fails it.
+telling right from wrong fails it. A record's `follows_from` names the claim it is a consequence of:
+the report must trace it to that cause, and a record without one to none.
 """
 import pathlib
 import sys
@@ -32,5 +33,10 @@ for r in records:
 if all(v == "holds" for v in expected.values()):
     sys.exit(f"FAIL {name}: every record holds without a remark; a fixture needs a statement its shape refuses or remarks")
 report = report_of(binary, name, folder / "note.tex", folder / "claims.toml")
-got = lambda c: c["verdict"] + (f", with a remark ({c['remark']['class']})" if "remark" in c else "")
+follows = {r["id"]: r.get("follows_from") for r in records}
+for r in records:
+    if follows[r["id"]]:
+        expected[r["id"]] += f", following from {follows[r['id']]}"
+got = lambda c: (c["verdict"] + (f", with a remark ({c['remark']['class']})" if "remark" in c else "") +
+                 (f", following from {c['follows_from']}" if c.get("follows_from") else ""))
 sys.exit(1 if compare(name, report, expected, got, "claims.toml's expected") else 0)

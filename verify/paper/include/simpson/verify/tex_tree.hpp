@@ -44,6 +44,7 @@ struct tex_node {
   std::size_t offset = 0;                          // where it starts in the source
   std::size_t end = 0;                             // where it ends in the source (0 when a macro made it)
   bool sized = false;                              // atom: a delimiter of \big, \Big, ... (its size dropped)
+  bool spaced = false;                             // a space command (\, \; \quad ~ ...) before it: what it follows ends there
   std::size_t first_token = 0, last_token = 0;     // [first, last) of the tokens parsed, in the list given
 };
 

@@ -60,6 +60,7 @@ struct claim_record {
   std::string remark;              // an expected remark's text, as recorded (expected holds, `finding` its class)
   std::string reads;               // the digest of the text it read when recorded (reads_digest): a fix changes it
   int line = 0;           // the line of its [[claim]] header
+  std::string file;       // the claims file it was read from (what a refusal at run time names)
 };
 
 /// What decides a record (its `shape`, `observes` or `check`), typed.
