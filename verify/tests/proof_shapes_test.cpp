@@ -169,9 +169,20 @@ Set $t = h \, \theta$ and $t = 2 \, h \, \theta$.)"));
   // The change read as printed: t = 2 h theta makes q(h) the value at theta = 1/2.
   defs.back() = read_definition(d, declared, "inline:t = 2");
   EXPECT_TRUE(GiNaC::normal(value("$q(h)$", defs) - (a + b) / 2).is_zero()) << value("$q(h)$", defs);
-  // Without it, q's value is in theta, not in t: q(h) stays a function of theta.
+  // Without it, q's value is in theta, not in t: read as printed it would be constant in t. Refused.
   defs.pop_back();
-  EXPECT_TRUE(value("$q(h)$", defs).has(theta));
+  try {
+    value("$q(h)$", defs);
+    ADD_FAILURE() << "q(t) defined in theta alone was read";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("q(t) is defined without t"), std::string::npos) << e.what();
+  }
+  // sigma = t/h, the other way round, is put in as it is: q(h) = b again.
+  const tex_document with_sigma(document(R"(\begin{equation}\label{interp} q(t) = a \, (1 - \sigma) + b \, \sigma \end{equation}
+Set $\sigma = t / h$.)"));
+  const std::vector<definition> in_sigma{read_definition(with_sigma, declared, "interp"), read_definition(with_sigma, declared, "inline:\\sigma = t")};
+  const GiNaC::ex at_h = with_definitions(read_reference(with_sigma, declared, "$q(h)$").value, in_sigma);
+  EXPECT_TRUE(GiNaC::normal(at_h - b).is_zero()) << at_h;
 }
 
 TEST(FormulaReference, APartialDerivativeOfADefinedSymbol) {

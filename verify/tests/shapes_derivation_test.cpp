@@ -45,8 +45,14 @@ TEST_F(ShapesOnADocument, EqualSides) {
   const claim_result middle = run("equal-sides", "{ equations = ['slopemiddle'], " + where + " }");
   EXPECT_EQ(middle.outcome, verdict::erratum) << middle.evidence.dump();
   EXPECT_NE(middle.correction.find("not \\frac{b - a}{2 h}"), std::string::npos) << middle.correction;
-  // The change of variable is needed: without it q's value stays in theta.
-  EXPECT_EQ(run("equal-sides", R"({ equations = ['inline:q(h) = b'], where = ["phis#1", "phis#2", "linear"] })").outcome, verdict::erratum);
+  // The change of variable is needed: without it q's value is in theta, not t, and would read as
+  // constant in t (a false erratum): refused, naming the definition.
+  try {
+    run("equal-sides", R"({ equations = ['inline:q(h) = b'], where = ["phis#1", "phis#2", "linear"] })");
+    ADD_FAILURE() << "q(t) defined in theta alone was read";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("field 'with.where': label linear (line 53): q(t) is defined without t"), std::string::npos) << e.what();
+  }
 }
 
 TEST_F(ShapesOnADocument, QuadratureExactness) {

@@ -42,6 +42,16 @@ std::string tex_name(const std::string& name) {
   return greek.count(name) ? "\\" + name : name;
 }
 
+/// A symbol's name in plain text: as it is, but a subscript that is not one word in braces, so that
+/// q_{n+1/2} does not read as q_n + 1/2 in a sum (q_n+1/2 would).
+std::string plain_name(const std::string& name) {
+  const std::size_t under = name.find('_');
+  if (under == std::string::npos || under == 0 || (name.front() == 'd' && name.find("/d") != std::string::npos)) return name;
+  const std::string sub = name.substr(under + 1);
+  if (sub.empty() || sub.front() == '{' || sub.find_first_of("+-/*") == std::string::npos) return name;
+  return name.substr(0, under) + "_{" + sub + "}";
+}
+
 /// A coefficient: an integer as it is, a fraction as \frac in TeX.
 std::string coefficient_text(const GiNaC::numeric& n, spelling how) {
   if (how == spelling::plain || n.is_integer()) return numeric_text(n);
@@ -70,7 +80,7 @@ std::string polynomial_text(const GiNaC::ex& poly, const std::vector<GiNaC::symb
       rest = rest / GiNaC::pow(x, d);
       total += d;
       if (how == spelling::plain) {
-        monomial += "*" + x.get_name() + (d == 1 ? "" : "^" + std::to_string(d));
+        monomial += "*" + plain_name(x.get_name()) + (d == 1 ? "" : "^" + std::to_string(d));
       } else {
         monomial += " " + tex_name(x.get_name()) + (d == 1 ? "" : "^{" + std::to_string(d) + "}");
       }

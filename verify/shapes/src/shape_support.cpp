@@ -65,7 +65,12 @@ shape_reader::shape_reader(const shape_call& call, const tex_document& document)
     declared_.insert(d.name.get_name());
     for (int k = 1; d.parameter && k <= 4; ++k) declared_.insert(derivative_name(d.function, d.parameter->get_name(), k, k));  // dq/dt, q(t) defined
   }
-  for (const definition& d : definitions_) declared_only(d.value, d.locator);
+  for (const definition& d : definitions_) {  // a function's own variables (L(q, \dot q) = ...) are bound in its value
+    GiNaC::exmap bound;
+    if (d.parameter) bound[*d.parameter] = 0;
+    for (const GiNaC::symbol& p : d.parameters) bound[p] = 0;
+    declared_only(bound.empty() ? d.value : d.value.subs(bound), d.locator);
+  }
   (void)with_definitions(GiNaC::ex(0), definitions_);  // each function read in its argument, or refused now, before anything runs
 }
 

@@ -1,12 +1,13 @@
 #!/usr/bin/env python3
 """A note of the corpus, checked from its claims file alone, against its independent derivation.
 
-  note_test.py SIMPSON_VERIFY NOTE_DIR NAME
+  note_test.py SIMPSON_VERIFY NOTE_DIR NAME [--without ID,...]
 
 runs NAME.py (sympy: each claim's verdict, the erratum a consequence follows from, and an erratum's
 wrong coefficient with the right one, which the harness's correction must name) and
 `simpson-verify --paper NAME.tex --claims-file NAME.toml` (validation: the claims file records no
 expected verdict), and fails, naming the claim, where the two differ or the note does not read.
+--without leaves those claims out of the run (`--claims` the others) and out of the comparison.
 """
 import json
 import pathlib
@@ -19,8 +20,17 @@ sys.dont_write_bytecode = True  # nothing written into the source tree
 from verdicts import compare, report_of
 
 binary, note_dir, name = sys.argv[1], pathlib.Path(sys.argv[2]), sys.argv[3]
+without = set(sys.argv[5].split(",")) if len(sys.argv) > 5 and sys.argv[4] == "--without" else set()
 derived = json.loads(subprocess.run([sys.executable, str(note_dir / f"{name}.py")], check=True, capture_output=True, text=True).stdout)
-report = report_of(binary, name, note_dir / f"{name}.tex", note_dir / f"{name}.toml")
+extra = []
+if without:
+    import tomllib
+    ids = [r["id"] for r in tomllib.loads((note_dir / f"{name}.toml").read_text())["claim"]]
+    if not without <= set(ids):
+        sys.exit(f"FAIL {name}: --without names no claim of the note: {sorted(without - set(ids))}")
+    extra = ["--claims", ",".join(i for i in ids if i not in without)]
+    derived = {k: v for k, v in derived.items() if k not in without}
+report = report_of(binary, name, note_dir / f"{name}.tex", note_dir / f"{name}.toml", extra)
 
 
 def ginac_text(sympy_text):

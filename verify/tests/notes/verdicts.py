@@ -7,11 +7,11 @@ import sys
 import tempfile
 
 
-def report_of(binary, name, tex, claims):
-    """report.json of `simpson-verify --paper TEX --claims-file CLAIMS`; exits naming the fault when it
-    does not run to verdicts (exit 2: bad input; 3: a harness bug)."""
+def report_of(binary, name, tex, claims, extra=()):
+    """report.json of `simpson-verify --paper TEX --claims-file CLAIMS [EXTRA...]`; exits naming the
+    fault when it does not run to verdicts (exit 2: bad input; 3: a harness bug)."""
     with tempfile.TemporaryDirectory() as out:
-        run = subprocess.run([binary, "--paper", str(tex), "--claims-file", str(claims), "--no-certify", "--quiet", "--out", out],
+        run = subprocess.run([binary, "--paper", str(tex), "--claims-file", str(claims), "--no-certify", "--quiet", "--out", out, *extra],
                              capture_output=True, text=True)
         if run.returncode not in (0, 1):
             sys.exit(f"FAIL {name}: simpson-verify exited {run.returncode}: {run.stderr.strip()}")
