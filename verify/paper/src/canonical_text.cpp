@@ -47,6 +47,8 @@ std::string tex_name(const std::string& name) {
 std::string plain_name(const std::string& name) {
   const std::size_t under = name.find('_');
   if (under == std::string::npos || under == 0 || (name.front() == 'd' && name.find("/d") != std::string::npos)) return name;
+  // A function application spelled as one symbol (L_d(q_j,q_j+1), functions_as_symbols) is no name.
+  if (name.find_first_of("() ") != std::string::npos) return name;
   const std::string sub = name.substr(under + 1);
   if (sub.empty() || sub.front() == '{' || sub.find_first_of("+-/*") == std::string::npos) return name;
   return name.substr(0, under) + "_{" + sub + "}";
