@@ -1,6 +1,7 @@
 // The variational shapes (shape_support.hpp) for any Lagrangian, its functions left general:
-// symplecticity of the one-step map that printed relations define, by implicit differentiation; and
-// the discrete Noether identity of a coordinate the discrete Lagrangian is invariant under shifting.
+// symplecticity of the one-step map that printed relations define, by implicit differentiation; the
+// discrete Noether identity of a coordinate the discrete Lagrangian is invariant under shifting; and
+// the cyclic coordinates of a Lagrangian, whose conjugate momenta the Euler-Lagrange equations keep.
 
 #include <simpson/shapes/shape_support.hpp>
 
@@ -148,6 +149,43 @@ decider_evidence discrete_noether_shape(const shape_call& call, const run_contex
   return e;
 }
 
+/// The coordinates are cyclic: the Lagrangian does not depend on them, ∂L/∂φ = 0 for each, so along
+/// the Euler-Lagrange equations d/dt ∂L/∂φ̇ = 0 (the conjugate momentum is a constant of the motion).
+/// A Lagrangian that holds neither a coordinate nor its velocity says nothing of it (a definition
+/// left out of `where`, or another system's Lagrangian): refused, never held.
+decider_evidence cyclic_shape(const shape_call& call, const run_context& ctx) {
+  shape_reader read(call, document_of(ctx));
+  const ex lagrangian = read.formula("lagrangian");
+  const std::vector<GiNaC::symbol> coordinates = read.symbols("coordinates");
+  GiNaC::matrix lhs(static_cast<unsigned>(coordinates.size()), 1);
+  for (std::size_t k = 0; k < coordinates.size(); ++k) {
+    const GiNaC::symbol& c = coordinates[k];
+    const std::string velocity = "d" + c.get_name() + "/dt";
+    bool holds_velocity = false;
+    for (GiNaC::const_preorder_iterator it = lagrangian.preorder_begin(); it != lagrangian.preorder_end() && !holds_velocity; ++it) {
+      holds_velocity = GiNaC::is_a<GiNaC::symbol>(*it) && GiNaC::ex_to<GiNaC::symbol>(*it).get_name() == velocity;
+    }
+    if (!holds_velocity && !lagrangian.has(c)) {
+      throw argument_error("coordinates", fmt::format("({}) holds neither {} nor its velocity: it says nothing of that coordinate",
+                                                      reference_of(call, "lagrangian"), c.get_name()));
+    }
+    lhs(static_cast<unsigned>(k), 0) = lagrangian.diff(c);
+  }
+  const std::string what = fmt::format("({}) does not depend on {}: its partial derivative by each is 0, so each conjugate momentum "
+                                       "(its partial derivative by the velocity) is constant along the Euler-Lagrange equations",
+                                       reference_of(call, "lagrangian"), names_of(coordinates));
+  decider_evidence e = identity_evidence(read, "cyclic", what, lhs, GiNaC::matrix(static_cast<unsigned>(coordinates.size()), 1), "", verdict::erratum);
+  if (e.found_false()) {
+    std::string depends;
+    for (std::size_t k = 0; k < coordinates.size(); ++k) {
+      const ex d = GiNaC::normal(lhs(static_cast<unsigned>(k), 0));
+      if (!d.is_zero()) depends += (depends.empty() ? "" : "; ") + fmt::format("d({})/d{} = {}", reference_of(call, "lagrangian"), coordinates[k].get_name(), text_of(d));
+    }
+    e.found.correction = "as derived: not cyclic: " + depends;
+  }
+  return e;
+}
+
 std::vector<proof_shape> variational_shape_specs() {
   std::vector<proof_shape> all;
   const auto add = [&](proof_shape s) { all.push_back(std::move(s)); };
@@ -171,6 +209,13 @@ std::vector<proof_shape> variational_shape_specs() {
                    {"start", argument_kind::formula, true, "the printed momentum at the step's start (p_l, = -dL_h/dpsi_l)"},
                    {"end", argument_kind::formula, true, "the printed momentum at the step's end (p_r, = dL_h/dpsi_r)"}}),
        discrete_noether_shape});
+  add({"cyclic",
+       "the Lagrangian does not depend on the coordinates (its partial derivative by each is 0): each is cyclic, and its conjugate momentum is "
+       "a constant of the motion",
+       "lagrangian",
+       with_where({{"lagrangian", argument_kind::formula, true, "the Lagrangian, in the coordinates and their velocities"},
+                   {"coordinates", argument_kind::symbols, true, "the coordinates said cyclic (\\phi, \\psi)"}}),
+       cyclic_shape});
   return all;
 }
 
