@@ -298,7 +298,7 @@ grep -q "q(t_n) is read, but nothing says which q it is: when q(t) is the exact 
 # errors are errata with corrections (exit 0: as the file expects); --validate judges them failures.
 note_dir="$(dirname "$0")/notes"
 check "a note from its claims file" 0 --paper "$note_dir/trapezoidal-note.tex" --claims-file "$note_dir/trapezoidal-note.toml" --out "$work/note"
-grep -q '^13 claims: 7 held, 6 errata, 0 failed' "$work/out" || fail "a note: summary: $(cat "$work/out")"
+grep -q '^13 claims: 7 held, 6 errata (1 following from another'"'"'s), 0 failed' "$work/out" || fail "a note: summary: $(cat "$work/out")"
 grep -q '"correction": "stable exactly for 0 < h\*omega < 2"' "$work/note/report.json" || fail "a note: the stability correction is not in the report"
 grep -q "^Exit code 0: every verdict is the expected one, the claims file's expected verdicts for its document" "$work/note/report.md" ||
   fail "a note: the exit line speaks of the paper"

@@ -383,6 +383,7 @@ std::string report_markdown(const run_record& r, const plot_outcome& plots) {
   md += notes_markdown(r);
   md += experiments_markdown(r, plots);
   md += coq_table_markdown(r);
+  md += report_parts::earlier_text_markdown(r);
   md += "\n## Evidence\n\n";
   for (const claim_outcome& o : r.outcomes) md += evidence_markdown(r, o);
   return md;

@@ -67,6 +67,7 @@ verdict_counts count_verdicts(const run_record& r) {
         ++c.consequences;
       }
     }
+    c.errata_following += o.result.outcome == verdict::erratum && !cause_of(o).empty();
     const bool remark = paper && meaning(o.result.outcome).affirms && !o.result.remark.empty();
     c.remarks += remark;
     c.linked_remarks += remark && !cause_of(o).empty();
@@ -140,6 +141,7 @@ std::string summary_line(const run_record& r) {
     if (!m.always_counted && n == 0) continue;
     std::string words = fmt::format(fmt::runtime(m.counted_as), n);
     if (m.affirms && c.remarks > 0) words += fmt::format(" ({} with a remark)", c.remarks);
+    if (m.value == verdict::erratum && c.errata_following > 0) words += fmt::format(" ({} following from another's)", c.errata_following);
     counted.push_back(words);
   }
   if (c.faults) counted.push_back(fmt::format("{} without a verdict (a harness fault: the check threw)", c.faults));

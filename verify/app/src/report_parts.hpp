@@ -24,6 +24,7 @@ struct verdict_counts {
   /// classes wording, derivation gap and naming of a claim false under every reading) + unverifiable
   /// + constant_factor (errata off by a constant factor only, their zeros the same).
   std::size_t distinct = 0, substantive = 0, constant_factor = 0, typographical = 0, wording = 0, unverifiable_findings = 0, consequences = 0;
+  std::size_t errata_following = 0;  // errata (any origin) that follow from another claim's correction: counted with it, said so
   std::size_t remarks = 0;                                       // the paper's claims that hold, with a remark
   std::size_t linked_remarks = 0;  // of those, the ones that follow a finding or a remark of another claim (counted with it)
   std::size_t whole_text = 0;                                    // claims that read the text as a whole (spelling, citations)
@@ -60,5 +61,6 @@ std::string amendments_markdown(const std::vector<amendment>& amendments);
 std::string first_sentence(const std::string& text);
 std::string referee_summary_markdown(const run_record& r);
 std::string provenance_markdown(const run_record& r);
+std::string earlier_text_markdown(const run_record& r);
 
 }  // namespace simpson::verify::report_parts

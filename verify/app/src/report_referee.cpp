@@ -5,6 +5,7 @@
 
 #include <simpson/verify/markdown_text.hpp>
 #include <simpson/verify/report.hpp>
+#include <simpson/verify/report_html.hpp>
 
 #include <fmt/format.h>
 
@@ -153,7 +154,9 @@ std::string report_parts::referee_summary_markdown(const run_record& r) {
   return md + "\n";
 }
 
-/// The text checked, as the source prints it; its citations; its earlier text, checked.
+constexpr const char* earlier_text_heading = "Earlier text in the source's comments";
+
+/// The text checked, as the source prints it; its citations; where its earlier text's verdicts are.
 std::string report_parts::provenance_markdown(const run_record& r) {
   const json& p = r.provenance;
   if (!p.is_object()) return {};
@@ -174,23 +177,35 @@ std::string report_parts::provenance_markdown(const run_record& r) {
                       claims.empty() ? std::string() : "; the claims whose quoted sentence cites: " + report_parts::join(claims, ", "));
   }
   md += "\n\n";
-  if (p["earlier_text"].is_array() && !p["earlier_text"].empty()) {
-    md += "Earlier text kept in the source's comments, checked like the live text:\n\n";
-    for (const json& e : p["earlier_text"]) {
-      md += fmt::format("- ({}) commented out at line {}: ", markdown_escaped(e["label"].get<std::string>()), e["line"].get<int>());
-      if (!e["reads"].get<bool>()) {
-        md += "does not parse: " + markdown_escaped(e.value("error", "")) + "\n";
-        continue;
-      }
-      std::vector<std::string> rows;
-      for (const json& c : e["claims"]) {
-        rows.push_back(fmt::format(fmt::runtime(c["differs"].get<bool>() ? "`{}` {} on the live text, **{}** on the earlier one" : "`{}` {} on both"),
-                                   c["claim"].get<std::string>(), c["live"].get<std::string>(), c["earlier"].get<std::string>()));
-      }
-      md += (rows.empty() ? std::string("no claim of this run reads it") : report_parts::join(rows, "; ")) + "\n";
-    }
-    md += "\n";
+  if (p["earlier_text"].is_array() && !p["earlier_text"].empty()) {  // the verdicts on it at the end: no verdict on the paper
+    md += fmt::format("Earlier text kept in the source's comments ({} display{}) is checked like the live text: "
+                      "[its verdicts](#{}), at the end of this report, judge drafts, not the paper.\n\n",
+                      p["earlier_text"].size(), p["earlier_text"].size() == 1 ? "" : "s", heading_slug(earlier_text_heading));
   }
+  return md;
+}
+
+/// The earlier text the source keeps in its comments, checked like the live text: the last section
+/// before the evidence (drafts, not the paper: no verdict of the run).
+std::string report_parts::earlier_text_markdown(const run_record& r) {
+  const json& p = r.provenance;
+  if (!p.is_object() || !p["earlier_text"].is_array() || p["earlier_text"].empty()) return {};
+  std::string md = fmt::format("\n## {}\n\nDisplays the source keeps in its comments, checked like the live text: "
+                               "drafts the authors set aside, not claims of the paper.\n\n", earlier_text_heading);
+  for (const json& e : p["earlier_text"]) {
+    md += fmt::format("- ({}) commented out at line {}: ", markdown_escaped(e["label"].get<std::string>()), e["line"].get<int>());
+    if (!e["reads"].get<bool>()) {
+      md += "does not parse: " + markdown_escaped(e.value("error", "")) + "\n";
+      continue;
+    }
+    std::vector<std::string> rows;
+    for (const json& c : e["claims"]) {
+      rows.push_back(fmt::format(fmt::runtime(c["differs"].get<bool>() ? "`{}` {} on the live text, **{}** on the earlier one" : "`{}` {} on both"),
+                                 c["claim"].get<std::string>(), c["live"].get<std::string>(), c["earlier"].get<std::string>()));
+    }
+    md += (rows.empty() ? std::string("no claim of this run reads it") : report_parts::join(rows, "; ")) + "\n";
+  }
+  md += "\n";
   return md;
 }
 
