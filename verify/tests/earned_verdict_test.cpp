@@ -131,6 +131,10 @@ TEST(RefereesCases, TheSecondRefereesRewordings) {
   // A known method left unnamed: the remark says what the method is, first.
   const std::string& novelty = outcome_of(r, "novelty-prior-work").result.remark;
   EXPECT_EQ(novelty.rfind("The method is the 3-stage Lobatto IIIA-IIIB pair, known prior work:", 0), 0u) << novelty;
+  // ... and the referee's summary says it, not only the remarks: the point a referee asks about first.
+  const std::string with_novelty = report_json(r)["summary"]["headline"];
+  EXPECT_NE(with_novelty.find("Prior work: the method is the 3-stage Lobatto IIIA-IIIB pair, which the text never names (novelty-prior-work)"),
+            std::string::npos) << with_novelty;
   // A constant of proportionality is defined where it is given, not a bare "c = ...".
   const std::string& proportional = outcome_of(r, "hd-proportional").result.note;
   EXPECT_NE(proportional.find("(hamiltonien-discret) = c ("), std::string::npos) << proportional;

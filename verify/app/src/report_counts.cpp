@@ -354,6 +354,14 @@ std::string findings_headline(const run_record& r) {
   // A remark that follows another claim's finding or remark says so.
   line += fmt::format("; {} on claims that hold", n(c.remarks, "remark", "remarks"));
   if (c.linked_remarks > 0) line += fmt::format(" ({} of them following the finding or remark of another claim)", c.linked_remarks);
+  // Prior work the text never names is what a referee asks about first: said here, not only among the remarks.
+  for (const claim_outcome& o : r.outcomes) {
+    if (o.checked->origin != claim_origin::paper || !meaning(o.result.outcome).affirms || o.result.remark.empty() ||
+        !o.result.evidence.contains("prior_work")) {
+      continue;
+    }
+    line += fmt::format(". Prior work: the method is {}, which the text never names ({})", o.result.evidence["prior_work"].get<std::string>(), o.checked->id);
+  }
   // What the supplied copy lacks is a limit of the source, not a defect of the mathematics: said apart.
   if (c.unverifiable_findings > 0) {
     line += fmt::format(". What the supplied source cannot show, its material absent: {}", report_parts::join(unverifiable, ", "));

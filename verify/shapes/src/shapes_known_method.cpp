@@ -165,6 +165,7 @@ decider_evidence known_method_shape(const shape_call& call, const run_context& c
     return e;
   }
   result.remark_kind = finding::naming;
+  result.evidence["prior_work"] = method;  // the referee's summary names it: a known method derived anew
   result.remark = fmt::format("The method is {}, known prior work: on this problem the printed map ({}) is that method's, proved entry by entry, and "
                               "the text never names it ({} looked for in its prose): a known method, derived anew. Which of its citations "
                               "covers it cannot be read: the source has no bibliography.",
