@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <exception>
 #include <chrono>
+#include <set>
 #include <stdexcept>
 
 namespace simpson::verify {
@@ -141,11 +142,36 @@ std::function<claim_result(const run_context&)> check_of(const claim_record& r, 
   return detail::claim_check_of(judge_of(r, declared, deciders), r.id, r.statement);
 }
 
+/// A claim that follows from a premise its record calls a typographical slip, and holds as derived
+/// where its printed derivation fails only through that premise: its printed conclusion is the
+/// corrected premise's, not the printed one's, so the derivation went through the right value and
+/// the misprint is the premise's alone, counted there. Its derivation-gap remark becomes a note (no
+/// finding, no remark): a gap the text does not have is no verdict it earned.
+std::function<claim_result(const run_context&)> through_a_slip(std::function<claim_result(const run_context&)> check, const std::string& slip) {
+  return [check = std::move(check), slip](const run_context& ctx) {
+    claim_result got = check(ctx);
+    if (!meaning(got.outcome).affirms || got.remark_kind != finding::derivation_gap) return got;
+    got.note = (got.note.empty() ? std::string() : got.note + " ") + "It holds as printed: its printed conclusion is what the premise corrected by `" + slip +
+               "` (a typographical slip) gives, and not what the premise as printed gives, so the derivation went through the right value; "
+               "the slip is counted there.";
+    got.remark.clear();
+    got.remark_kind = finding::none;
+    got.amendments.clear();
+    return got;
+  };
+}
+
 std::vector<claim> claims_of(const std::vector<claim_record>& records, const std::shared_ptr<const claim_declarations>& declared,
                              const book_deciders& deciders) {
+  std::set<std::string> slips;  // the records that call themselves typographical slips
+  for (const claim_record& r : records) {
+    if (r.typographical) slips.insert(r.id);
+  }
   std::vector<claim> out;
   for (const claim_record& r : records) {
-    claim c{r.id, r.section, r.equation, r.statement, r.methods, r.expected, check_of(r, declared, deciders), r.kind, r.follows_from, r.typographical, r.origin};
+    std::function<claim_result(const run_context&)> check = check_of(r, declared, deciders);
+    if (slips.count(r.follows_from) > 0) check = through_a_slip(std::move(check), r.follows_from);
+    claim c{r.id, r.section, r.equation, r.statement, r.methods, r.expected, std::move(check), r.kind, r.follows_from, r.typographical, r.origin};
     c.decided_by = decider_of(r);
     c.labels_read = labels_read(r);
     c.headline = r.headline;
