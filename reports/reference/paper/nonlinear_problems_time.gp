@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.3869e-06:0.00733294]
+set xrange [4.40725e-06:0.00713394]
 set xtics autofreq
 set mxtics default
 set yrange [2.51598e-15:0.00942973]
@@ -34,7 +34,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.68605e-06:0.00748199]
+set xrange [4.97467e-06:0.00717468]
 set xtics autofreq
 set mxtics default
 set yrange [1.00325e-15:0.00120974]
@@ -55,7 +55,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.80229e-05:0.0865849]
+set xrange [4.68473e-05:0.0871875]
 set xtics autofreq
 set mxtics default
 set yrange [6.13271e-06:1193.17]
@@ -76,7 +76,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.48186e-06:0.00807504]
+set xrange [4.26756e-06:0.00801409]
 set xtics autofreq
 set mxtics default
 set yrange [1.74904e-12:0.238914]
@@ -97,7 +97,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [7.12721e-06:0.0179466]
+set xrange [7.2158e-06:0.0179394]
 set xtics autofreq
 set mxtics default
 set yrange [1.31557e-10:0.114842]
@@ -141,7 +141,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.3869e-06:0.00733294]
+set xrange [4.40725e-06:0.00713394]
 set xtics autofreq
 set mxtics default
 set yrange [2.51598e-15:0.00942973]
@@ -162,7 +162,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.68605e-06:0.00748199]
+set xrange [4.97467e-06:0.00717468]
 set xtics autofreq
 set mxtics default
 set yrange [1.00325e-15:0.00120974]
@@ -183,7 +183,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.80229e-05:0.0865849]
+set xrange [4.68473e-05:0.0871875]
 set xtics autofreq
 set mxtics default
 set yrange [6.13271e-06:1193.17]
@@ -204,7 +204,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.48186e-06:0.00807504]
+set xrange [4.26756e-06:0.00801409]
 set xtics autofreq
 set mxtics default
 set yrange [1.74904e-12:0.238914]
@@ -225,7 +225,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [7.12721e-06:0.0179466]
+set xrange [7.2158e-06:0.0179394]
 set xtics autofreq
 set mxtics default
 set yrange [1.31557e-10:0.114842]
