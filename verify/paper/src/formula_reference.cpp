@@ -390,6 +390,16 @@ GiNaC::ex with_definitions(const GiNaC::ex& e, const std::vector<definition>& gi
     if (!changed) break;
     if (round == definitions.size()) throw std::invalid_argument("the definitions use each other without end");
   }
+  // A function's value with the symbols' definitions put in before anything differentiates it
+  // (L_d(q_0, q_1) = h L(\bar q, v), with \bar q and v defined): D_1 L_d is then taken through them, not
+  // 0. Its own variables stay its variables.
+  for (definition& d : definitions) {
+    if (d.function.empty()) continue;
+    GiNaC::exmap outside = values;
+    if (d.parameter) outside.erase(GiNaC::ex(*d.parameter));
+    for (const GiNaC::symbol& p : d.parameters) outside.erase(GiNaC::ex(p));
+    d.value = d.value.subs(outside);
+  }
   GiNaC::ex out = e;
   for (std::size_t round = 0; round <= definitions.size(); ++round) {
     const GiNaC::exmap derivatives = derivative_symbols(out, definitions);

@@ -301,7 +301,7 @@ namespace simpson::verify::detail {
 /// "is explicit (implicit) for a general potential": what the scheme is with the document's
 /// functions left uninterpreted. A step computes the last state of the sequence; it does so in
 /// closed form when the scheme is linear in it, with a coefficient that does not vanish
-/// identically, and the state is never inside the argument of an uninterpreted function (q_{j+1}
+/// identically, and the state is never inside the argument of a function, uninterpreted or known (q_{j+1}
 /// in V'((q_j + q_{j+1})/2) makes the step a nonlinear equation for a general V, whatever the
 /// harmonic case allows). GiNaC reads the structure and solves; our kernel decides that the
 /// solution satisfies the scheme (that identity is the Coq certificate). The sentence's hole {kind}
@@ -317,10 +317,14 @@ decider_evidence explicit_scheme_shape(const shape_call& call, const run_context
   result.printed = read.printed();
   result.evidence["stated"] = stated;
   const std::string scheme_ref = reference_of(call, "scheme"), state = next.get_name();
-  // Where the next state is an argument of an uninterpreted function.
+  // Where the next state is an argument of a function: an uninterpreted one (V'((q_j + q_{j+1})/2))
+  // or a known one (\sin q_{j+1}): a step linear in q_{j+1} outside them still solves a nonlinear
+  // equation (solving for the q_{j+1} outside would leave it inside).
   std::vector<std::string> arguments_of;
+  bool only_known = true;
   for (auto it = scheme.preorder_begin(); it != scheme.preorder_end(); ++it) {
-    if (!is_reader_function(*it) || !it->has(next)) continue;
+    if (!GiNaC::is_a<GiNaC::function>(*it) || !it->has(next)) continue;
+    only_known = only_known && !is_reader_function(*it);
     const std::string text = text_of(*it);
     if (std::find(arguments_of.begin(), arguments_of.end(), text) == arguments_of.end()) arguments_of.push_back(text);
   }
@@ -328,7 +332,8 @@ decider_evidence explicit_scheme_shape(const shape_call& call, const run_context
   std::optional<ex> solution;
   if (!arguments_of.empty()) {
     computed = "implicit";
-    why = fmt::format("{} is in the argument of {}: for a general function the step solves a nonlinear equation in it", state, fmt::join(arguments_of, ", "));
+    why = fmt::format("{} is in the argument of {}: {}the step solves a nonlinear equation in it", state, fmt::join(arguments_of, ", "),
+                      only_known ? "" : "for a general function ");
   } else {
     const ex normal = GiNaC::normal(scheme);
     const ex numerator = GiNaC::numer(normal);
