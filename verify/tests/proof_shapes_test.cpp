@@ -300,6 +300,20 @@ TEST(ShapeRecords, ADeclaredFunctionIsOneName) {
   }
 }
 
+// One name declared twice with other variables (a second system's Lagrangian): the later one would
+// win and the first system's formulas read wrongly; refused, saying so.
+TEST(ShapeRecords, AFunctionDeclaredTwiceIsRefused) {
+  const std::string file = "[document]\ntitle = \"x\"\n[symbols]\nreal = ['x']\nfunctions = ['L(q, \\dot q)', 'L(\\theta, \\dot\\theta, \\dot\\phi)']\n" +
+                           record("r", "identity", R"({ lhs = '$x$', rhs = '$x$' })");
+  try {
+    read_claim_book(file, "bad.toml");
+    ADD_FAILURE() << "L declared twice was read";
+  } catch (const claims_file_error& e) {
+    EXPECT_NE(std::string(e.what()).find("field 'symbols.functions': 'L(\\theta, \\dot\\theta, \\dot\\phi)' declares L a second time"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(ShapeRecords, BadRecordsAreNamedWithTheirLineAndArgument) {
   EXPECT_EQ(error_of("identity", R"({ lhs = "sum", rhs = "expanded" })"), "");
   // A misused argument is bad input before the run, never a harness fault in it: a scale that

@@ -89,7 +89,11 @@ claim_declarations read_declarations(const claims_file_contents& contents, const
     if (reserved != reserved_names().end()) {
       throw claims_file_error(file, out.written.line, "symbols.functions", "'" + tex + "' cannot be declared: " + reserved->second);
     }
-    out.reading.functions.insert(f.name);
+    // L(q, \dot q) and L(\theta, \dot\theta, \dot\phi): one name, two declarations; the later would win.
+    if (!out.reading.functions.insert(f.name).second) {
+      throw claims_file_error(file, out.written.line, "symbols.functions",
+                              "'" + tex + "' declares " + f.name + " a second time; a note with two systems names their functions apart (L, L_s)");
+    }
     if (f.variables) out.reading.variables[f.name] = *f.variables;
   }
   names(out.written.solutions, "symbols.solutions", out.solutions);
