@@ -142,15 +142,29 @@ const std::string& shape_reader::identity_of(const std::string& parameter) const
   return it->second;
 }
 
-std::shared_ptr<const corrected_formula> shape_reader::correction_of(const std::string& parameter, const GiNaC::ex& value) const {
-  // Named as a reader of the document names it: (label), or the display or formula at its phrase.
-  const std::string& identity = identity_of(parameter);
+namespace {
+
+/// A corrected formula named as a reader of the document names it: (label), or the display or
+/// formula at its phrase.
+std::shared_ptr<const corrected_formula> named_correction(const std::string& identity, const GiNaC::ex& value) {
   const std::string place = identity.substr(0, identity.rfind('#'));
   std::string shown = place;
   if (place.rfind("label ", 0) == 0) shown = "(" + place.substr(6) + ")";
   if (place.rfind("anchor ", 0) == 0) shown = "the display after " + place.substr(7);
   if (place.rfind("inline formula at ", 0) == 0) shown = "the formula at " + place.substr(18);
   return std::make_shared<const corrected_formula>(corrected_formula{identity, shown, value});
+}
+
+}  // namespace
+
+std::shared_ptr<const corrected_formula> shape_reader::correction_of(const std::string& parameter, const GiNaC::ex& value) const {
+  return named_correction(identity_of(parameter), value);
+}
+
+std::shared_ptr<const corrected_formula> shape_reader::correction_of_side(const referenced_formula& equation, std::size_t k, const GiNaC::ex& value) const {
+  // The identity sides() looks for when the call is judged again with it.
+  const std::string stem = equation.identity.substr(0, equation.identity.rfind(":side"));
+  return named_correction(stem + ":side" + std::to_string(k + 1), value);
 }
 
 referenced_formula shape_reader::raw(const std::string& parameter) {

@@ -46,6 +46,7 @@ decider_evidence equal_sides_shape(const shape_call& call, const run_context& ct
 decider_evidence equal_sides_evidence(const shape_call& call, shape_reader& read, const std::vector<referenced_formula>& equations, const GiNaC::exmap& given,
                                       const std::string& given_text) {
   claim_result result;
+  std::vector<std::shared_ptr<const corrected_formula>> corrected;  // each side that differs, as derived: what the claims that read it are judged again with
   std::vector<proof_goal> goals;
   json decided_sides = json::array();
   std::vector<std::string> corrections, not_decided;
@@ -73,6 +74,7 @@ decider_evidence equal_sides_evidence(const shape_call& call, shape_reader& read
       if (!ginac_zero) {
         corrections.push_back(fmt::format("{} = {}, not {}", folded_space(equation.sides[first]), text_of(GiNaC::normal(sides[first])),
                                           folded_space(equation.sides[k])));
+        corrected.push_back(read.correction_of_side(equation, k, sides[first]));
       }
       decided_sides.push_back({{"statement", what},
                                {"with_definitions", text_of(sides[first]) + " = " + text_of(sides[k])},
@@ -101,6 +103,7 @@ decider_evidence equal_sides_evidence(const shape_call& call, shape_reader& read
                                fmt::format("as derived from the definitions{}: {}", given_text, fmt::join(corrections, "; ")));
   e.parts_differ = disagree;
   e.goals = std::move(goals);
+  if (e.found_false()) e.found.corrected_formulas = std::move(corrected);
   return e;
 }
 

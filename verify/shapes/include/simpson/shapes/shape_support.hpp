@@ -80,6 +80,8 @@ class shape_reader {
   /// A proved correction of the formula the argument names, `value` standing where it is printed:
   /// what the claims that read it are judged again with.
   std::shared_ptr<const corrected_formula> correction_of(const std::string& parameter, const GiNaC::ex& value) const;
+  /// The same for side k (from 0) of an equation read by sides(): what it is judged again with.
+  std::shared_ptr<const corrected_formula> correction_of_side(const referenced_formula& equation, std::size_t k, const GiNaC::ex& value) const;
 
  private:
   void read_entries(const std::vector<std::string>& references);
