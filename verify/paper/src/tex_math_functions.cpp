@@ -154,7 +154,7 @@ GiNaC::ex reader::derivative_operator(cursor& c, const std::vector<std::string>&
                                       const tex_node& at) {
   const std::string name = partial ? "\\frac{\\partial}{\\partial " + by + "}" : "\\frac{d}{d" + by + "}";
   if (c.done() || ends_term(c, closers)) refuse("the derivative operator " + name + " of nothing", at, "write \\frac{dX}{d" + by + "}");
-  GiNaC::ex e = operand(c, closers, name);
+  GiNaC::ex e = operand(c, closers, name, true);
   for (int k = 0; k < order; ++k) {
     e = partial ? e.diff(symbols_[by]) : along_trajectory(e, by, at);
   }

@@ -311,7 +311,7 @@ GiNaC::ex reader::op(cursor& c, const std::vector<std::string>& closers) {
   return power ? power_of(value, *power) : value;
 }
 
-GiNaC::ex reader::operand(cursor& c, const std::vector<std::string>& closers, const std::string& name) {
+GiNaC::ex reader::operand(cursor& c, const std::vector<std::string>& closers, const std::string& name, bool differentiates) {
   // A parenthesised group alone (\sin(x) y is sin(x) y); else the product written after it, as
   // mathematics reads it (ISO 80000-2: \sin \omega t is sin(ωt)), up to +, -, a relation, an explicit
   // product (\cdot, \times) or the next operator (\sin x \cos y). What leaves open where the argument
@@ -343,7 +343,6 @@ GiNaC::ex reader::operand(cursor& c, const std::vector<std::string>& closers, co
       refuse("a parenthesis after " + name + "'s unparenthesised argument: whether it belongs to the argument is not written", next,
              name + "(x (1 + y)) or (" + name + " x)(1 + y)");
     }
-    const bool differentiates = name.rfind("\\frac{", 0) == 0;  // d/dt m \dot q: a product, differentiated whole
     if (!differentiates && core.kind == tex_node_kind::accent && (core.text == "\\dot" || core.text == "\\ddot")) {  // \sin\theta\dot\phi: (sin θ) φ̇ to a physicist
       refuse("a velocity after " + name + "'s unparenthesised argument: whether it belongs to the argument is not written", next,
              name + "(\\theta)\\,\\dot\\phi or " + name + "(\\theta\\dot\\phi)");

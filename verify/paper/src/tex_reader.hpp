@@ -170,7 +170,9 @@ class reader {
   /// What an operator written without parentheses applies to: the parenthesised group after it
   /// alone, or else the product written after it up to +, -, a relation, an explicit product or the
   /// next operator; a parenthesis inside that product or a '/' after it refused.
-  GiNaC::ex operand(cursor& c, const std::vector<std::string>& closers, const std::string& name);
+  /// What an operator applies to; `differentiates` for d/dt and \partial (a product with a velocity in
+  /// it is differentiated whole), not for \sin and the like.
+  GiNaC::ex operand(cursor& c, const std::vector<std::string>& closers, const std::string& name, bool differentiates = false);
 
   /// \sin ... 	anh (and \operatorname{sin}): the function of that name applied to x; none for
   /// another name.
