@@ -210,6 +210,35 @@ TEST(RefereesCases, TheHeadlineSaysFirstWhetherTheHeadlineResultsHold) {
   EXPECT_EQ(broken_line.rfind("The paper's 2 claims: of its 2 headline results, 0 hold; phi3-det: fails; hd-invariance: fails. Findings: 2 substantive errors", 0), 0u) << broken_line;
 }
 
+// Section 8's stated start does not give Table 1 (experiment-conventions, an erratum); the orders and
+// the conservation Section 8 draws from the table hold of its printed numbers. With them run and
+// holding, the erratum changes no conclusion: an inconsistency, counted apart from substantive
+// errors. Run alone, nothing shows that; and with an order cell changed (table-orders fails), a
+// conclusion changed too: a substantive error in both.
+TEST(RefereesCases, AnInconsistencyKeepsItsClassOnlyWhileItsConclusionsHold) {
+  const std::vector<std::string> ids{"experiment-conventions", "table-orders", "table-conservation"};
+  const run_record printed = run_claims(ids, embedded_paper());
+  const std::string line = findings_headline(printed);
+  EXPECT_NE(line.find(": 0 substantive errors, 1 inconsistency that changes no conclusion (§8, experiment-conventions: "), std::string::npos)
+      << line;
+  EXPECT_NE(line.find("the conclusions drawn from it hold: table-orders, table-conservation)"), std::string::npos) << line;
+  const json report = report_json(printed);
+  EXPECT_EQ(report["summary"]["inconsistent_findings"], 1);
+  EXPECT_EQ(report["summary"]["substantive_findings"], 0);
+  EXPECT_EQ(report["claims"][0]["conclusions_standing"], json::array({"table-orders", "table-conservation"}));
+
+  const run_record alone = run_claims({"experiment-conventions"}, embedded_paper());
+  EXPECT_EQ(report_json(alone)["summary"]["substantive_findings"], 1) << findings_headline(alone);
+  EXPECT_EQ(report_json(alone)["summary"]["inconsistent_findings"], 0);
+  EXPECT_FALSE(report_json(alone)["claims"][0].contains("conclusions_standing"));
+
+  const paper_source changed_order = altered("Newmark & momentum", "$ 1.27  \\,\\, 10^{-1} $  & 2", "$ 1.27  \\,\\, 10^{-1} $  & 3");
+  const run_record broken = run_claims(ids, changed_order);
+  EXPECT_EQ(outcome_of(broken, "table-orders").result.outcome, verdict::fails);
+  EXPECT_EQ(report_json(broken)["summary"]["inconsistent_findings"], 0) << findings_headline(broken);
+  EXPECT_NE(findings_headline(broken).find("substantive errors (§8, experiment-conventions"), std::string::npos) << findings_headline(broken);
+}
+
 // The 11/25 copy: Phi_3's (2,2) entry changed. Seven claims that read Phi_3 turn red; the naming
 // remark of novelty-prior-work goes away (the map is no longer Lobatto's, nothing to name), which is
 // no fix: it changed because of phi3-elimination, which reads the same display, and --accept-fixes

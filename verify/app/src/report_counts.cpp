@@ -33,6 +33,16 @@ finding finding_of(const claim_outcome& o) {
   return o.result.outcome == verdict::unverifiable ? finding::unverifiable : finding::erratum;
 }
 
+std::vector<std::string> conclusions_standing(const claim_outcome& o, const run_record& r) {
+  const std::vector<std::string>& kept = o.checked->conclusions_kept;
+  if (o.result.outcome != verdict::erratum || kept.empty()) return {};
+  for (const std::string& id : kept) {
+    const auto at = std::find_if(r.outcomes.begin(), r.outcomes.end(), [&](const claim_outcome& other) { return other.checked->id == id; });
+    if (at == r.outcomes.end() || !meaning(at->result.outcome).affirms) return {};
+  }
+  return kept;
+}
+
 verdict_counts count_verdicts(const run_record& r) {
   verdict_counts c;
   for (const claim_outcome& o : r.outcomes) {
@@ -56,6 +66,8 @@ verdict_counts count_verdicts(const run_record& r) {
           ++c.typographical;
         } else if (o.result.constant_factor) {
           ++c.constant_factor;
+        } else if (!conclusions_standing(o, r).empty()) {
+          ++c.inconsistent;
         } else if (kind == finding::unverifiable) {
           ++c.unverifiable_findings;
         } else if (remark_class(kind)) {
@@ -68,6 +80,7 @@ verdict_counts count_verdicts(const run_record& r) {
       }
     }
     c.errata_following += o.result.outcome == verdict::erratum && !cause_of(o).empty();
+    c.prose_errata += paper && o.result.outcome == verdict::erratum && kind == finding::prose;
     const bool remark = paper && meaning(o.result.outcome).affirms && !o.result.remark.empty();
     c.remarks += remark;
     c.linked_remarks += remark && !cause_of(o).empty();
@@ -99,6 +112,16 @@ expectation_counts count_expectations(const run_record& r) {
 }
 
 }  // namespace report_parts
+
+namespace {
+
+/// The spelling checks' errata in words: "1 spelling check failing (6 misspelled words)".
+std::string spelling_words(const report_parts::verdict_counts& c) {
+  return fmt::format("{} spelling check{} failing ({} misspelled word{})", c.prose_errata, c.prose_errata == 1 ? "" : "s", c.prose_slips,
+                     c.prose_slips == 1 ? "" : "s");
+}
+
+}  // namespace
 
 std::string summary_line(const run_record& r) {
   const report_parts::verdict_counts c = report_parts::count_verdicts(r);
@@ -137,12 +160,15 @@ std::string summary_line(const run_record& r) {
   // Each verdict's count in its words (verdict.hpp's table): those always shown, then the others met.
   std::vector<std::string> counted;
   for (const verdict_meaning& m : verdict_meanings) {
-    const std::size_t n = c.count(m.value);
+    // A spelling check's erratum judges the source's words, not a statement: named apart, after the errata.
+    const std::size_t spelling = m.value == verdict::erratum ? c.prose_errata : 0;
+    const std::size_t n = c.count(m.value) - spelling;
     if (!m.always_counted && n == 0) continue;
     std::string words = fmt::format(fmt::runtime(m.counted_as), n);
     if (m.affirms && c.remarks > 0) words += fmt::format(" ({} with a remark)", c.remarks);
     if (m.value == verdict::erratum && c.errata_following > 0) words += fmt::format(" ({} following from another's)", c.errata_following);
     counted.push_back(words);
+    if (spelling > 0) counted.push_back(spelling_words(c));
   }
   if (c.faults) counted.push_back(fmt::format("{} without a verdict (a harness fault: the check threw)", c.faults));
   return fmt::format("{} {}: {}{}; {}", r.outcomes.size(), r.outcomes.size() == 1 ? "claim" : "claims", report_parts::join(counted, ", "), expectations,
@@ -241,14 +267,15 @@ std::string expectation_line(const run_record& r) {
                                  "mean that {} or the harness changed), not a validation",
                                  judgment, changed);
   std::vector<std::string> findings;
-  const std::size_t errata = c.count(verdict::erratum);
+  const std::size_t errata = c.count(verdict::erratum) - c.prose_errata;
   if (errata > 0) findings.push_back(fmt::format("{} {} (false as printed, a correction proved)", errata, errata == 1 ? "erratum" : "errata"));
+  if (c.prose_errata > 0) findings.push_back(spelling_words(c));
   if (!expected_failures.empty()) {
     findings.push_back(fmt::format("{} expected failure{} ({}: not reproduced, no correction found)", expected_failures.size(),
                                    expected_failures.size() == 1 ? "" : "s", report_parts::join(expected_failures, ", ")));
   }
   if (findings.empty()) return line + ".";
-  const std::size_t expected_findings = errata + expected_failures.size();
+  const std::size_t expected_findings = errata + c.prose_errata + expected_failures.size();
   return line + ": " + report_parts::join(findings, " and ") + (expected_findings == 1 ? " is an expected verdict." : " are expected verdicts.");
 }
 
@@ -277,6 +304,7 @@ json summary_json(const run_record& r) {
               {"harness_faults", c.faults},
               {"paper_claims", c.paper},     {"source_checks", c.source_checks}, {"beyond_claims", c.beyond},   {"harness_claims", c.harness},
               {"distinct_findings", c.distinct}, {"substantive_findings", c.substantive}, {"constant_factor_findings", c.constant_factor},
+              {"inconsistent_findings", c.inconsistent},
               {"headline_claims", headline_claims_json(r)}, {"typographical_findings", c.typographical},
               {"wording_findings", c.wording}, {"unverifiable_findings", c.unverifiable_findings}, {"consequences", c.consequences},
               {"remarks", c.remarks},
@@ -303,7 +331,7 @@ std::string findings_headline(const run_record& r) {
   const std::string the = r.of_the_paper ? "paper" : "document";
   const auto n = [](std::size_t k, const char* one, const char* many) { return fmt::format("{} {}", k, k == 1 ? one : many); };
   // Each distinct finding's category, and what follows from it.
-  std::vector<std::string> substantive, constant_factor, unverifiable;
+  std::vector<std::string> substantive, constant_factor, inconsistent, unverifiable;
   std::size_t follows_other = 0;
   for (const claim_outcome& o : r.outcomes) {
     if (o.checked->origin != claim_origin::paper || o.result.reads_whole_text || !is_finding(o.result.outcome) || !cause_of(o).empty()) continue;
@@ -312,8 +340,12 @@ std::string findings_headline(const run_record& r) {
     for (const claim_outcome& other : r.outcomes) following += cause_of(other) == o.checked->id && is_finding(other.result.outcome);
     const std::string place = fmt::format("§{}, {}", o.checked->section, o.checked->id);
     const std::string and_following = following == 0 ? std::string() : fmt::format(", and {} following from it", n(following, "claim", "claims"));
+    const std::vector<std::string> standing = report_parts::conclusions_standing(o, r);
     if (kind == finding::erratum && !o.checked->typographical && o.result.constant_factor) {
       constant_factor.push_back(place + and_following);
+    } else if (kind == finding::erratum && !o.checked->typographical && !standing.empty()) {
+      const std::string where = o.result.amendments.empty() ? std::string() : ": " + o.result.amendments.front().where;
+      inconsistent.push_back(place + where + and_following + "; the conclusions drawn from it hold: " + report_parts::join(standing, ", "));
     } else if (kind == finding::erratum && !o.checked->typographical) {
       const std::string where = o.result.amendments.empty() ? std::string() : ": " + o.result.amendments.front().where;
       substantive.push_back(place + where + and_following);
@@ -343,6 +375,11 @@ std::string findings_headline(const run_record& r) {
   std::string errors = n(c.substantive, "substantive error", "substantive errors");
   if (!substantive.empty()) errors += " (" + report_parts::join(substantive, "; ") + ")";
   std::vector<std::string> parts{errors};
+  if (c.inconsistent > 0) {
+    parts.push_back(fmt::format("{} ({})",
+                                n(c.inconsistent, "inconsistency that changes no conclusion", "inconsistencies that change no conclusion"),
+                                report_parts::join(inconsistent, "; ")));
+  }
   if (c.constant_factor > 0) {
     parts.push_back(fmt::format("{}, zeros unchanged ({})", n(c.constant_factor, "constant-factor slip", "constant-factor slips"),
                                 report_parts::join(constant_factor, "; ")));

@@ -22,13 +22,17 @@ struct verdict_counts {
   std::size_t source_checks = 0, source_findings = 0;
   /// The paper's findings, each cause once: distinct = substantive + typographical + wording (the
   /// classes wording, derivation gap and naming of a claim false under every reading) + unverifiable
-  /// + constant_factor (errata off by a constant factor only, their zeros the same).
+  /// + constant_factor (errata off by a constant factor only, their zeros the same) + inconsistent
+  /// (errata whose conclusions_kept all hold: a stated set-up that does not give its data, no
+  /// conclusion changed).
+  std::size_t inconsistent = 0;
   std::size_t distinct = 0, substantive = 0, constant_factor = 0, typographical = 0, wording = 0, unverifiable_findings = 0, consequences = 0;
   std::size_t errata_following = 0;  // errata (any origin) that follow from another claim's correction: counted with it, said so
   std::size_t remarks = 0;                                       // the paper's claims that hold, with a remark
   std::size_t linked_remarks = 0;  // of those, the ones that follow a finding or a remark of another claim (counted with it)
   std::size_t whole_text = 0;                                    // claims that read the text as a whole (spelling, citations)
   std::size_t prose_claims = 0, prose_slips = 0;                 // its spelling, counted apart: the claims, and the words they found
+  std::size_t prose_errata = 0;  // the paper's spelling checks whose verdict is erratum, named apart from the errata on the run line
   /// How many claims have each verdict, in verdict_meanings' order.
   std::array<std::size_t, verdict_meanings.size()> of{};
   std::size_t machine_read = 0, quoted = 0, typed = 0, read_and_quoted = 0, coq_exported = 0, coq_checked = 0;
@@ -37,7 +41,10 @@ struct verdict_counts {
   std::size_t count(verdict v) const { return of[static_cast<std::size_t>(v)]; }
 };
 
-/// A verdict that is a finding about the paper: false or unsupported as printed.
+/// An erratum's conclusions that stand: its record's conclusions_kept when every one of them was
+/// run and holds (it changes no conclusion), else none.
+std::vector<std::string> conclusions_standing(const claim_outcome& o, const run_record& r);
+
 
 /// The class of a claim's finding: the ledger's when the verdict is the expected one; an unexpected
 /// finding is an erratum (or unverifiable) until the ledger classifies it; none when it holds.

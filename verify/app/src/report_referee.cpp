@@ -91,7 +91,7 @@ std::string report_parts::referee_summary_markdown(const run_record& r) {
                                    r.outcomes.size() == 1 ? "" : "s", the));
   }
   // Ordered by consequence: a substantive error that others follow from first, then the other
-  // substantive errors, a slip that breaks a derivation, derivation gaps, wording and naming, what
+  // substantive errors, an inconsistency that changes no conclusion, a slip that breaks a derivation, derivation gaps, wording and naming, what
   // cannot be verified, the typographical slips that break nothing, the prose's spelling; the
   // ledger's order within each.
   const auto follows = [&](const claim& k) {
@@ -106,22 +106,22 @@ std::string report_parts::referee_summary_markdown(const run_record& r) {
   const auto rank = [&](const claim_outcome& o) {
     const bool consequential = !follows(*o.checked).empty();
     const finding kind = report_parts::finding_of(o);
-    if (kind == finding::prose) return 7;
-    if (o.checked->typographical || o.result.constant_factor) return consequential ? 2 : 6;
+    if (kind == finding::prose) return 8;
+    if (o.checked->typographical || o.result.constant_factor) return consequential ? 3 : 7;
     switch (kind) {
-      case finding::erratum: return consequential ? 0 : 1;
-      case finding::derivation_gap: return 3;
+      case finding::erratum: return !report_parts::conclusions_standing(o, r).empty() ? 2 : consequential ? 0 : 1;
+      case finding::derivation_gap: return 4;
       case finding::wording:
-      case finding::naming: return 4;
-      case finding::unverifiable: return 5;
-      default: return 6;
+      case finding::naming: return 5;
+      case finding::unverifiable: return 6;
+      default: return 7;
     }
   };
   if (c.distinct + c.source_findings > 0 || c.prose_slips > 0) {
-    md += "Findings, ordered by consequence: substantive errors first (those that others follow from before the rest), then slips that break a "
-          "derivation, derivation gaps, wording and naming, what cannot be verified, typographical and constant-factor slips, and the prose's spelling.\n\n";
+    md += "Findings, ordered by consequence: substantive errors first (those that others follow from before the rest), then inconsistencies that change no "
+          "conclusion, slips that break a derivation, derivation gaps, wording and naming, what cannot be verified, typographical and constant-factor slips, and the prose's spelling.\n\n";
   }
-  for (int level = 0; level <= 7; ++level) {
+  for (int level = 0; level <= 8; ++level) {
     for (const claim_outcome& o : r.outcomes) {
       const claim& k = *o.checked;
       if (k.origin != claim_origin::paper || !is_finding(o.result.outcome) || !cause_of(o).empty() || rank(o) != level) continue;
@@ -134,6 +134,8 @@ std::string report_parts::referee_summary_markdown(const run_record& r) {
       const std::string label = o.result.reads_whole_text                  ? "a check of the source, " + to_string(kind)
                                 : o.checked->typographical                    ? to_string(kind) + ", typographical"
                                 : kind == finding::erratum && o.result.constant_factor ? std::string("erratum, a constant factor, zeros unchanged")
+                                : kind == finding::erratum && !report_parts::conclusions_standing(o, r).empty()
+                                    ? "an inconsistency that changes no conclusion (" + report_parts::join(report_parts::conclusions_standing(o, r), ", ") + " hold)"
                                 : kind == finding::erratum                             ? std::string("substantive error")
                                                            : to_string(kind);
       md += fmt::format("- **`{}`** (§{}, {}): {}{}{}\n", k.id, markdown_escaped(k.section), label, what, stops || consequences.empty() ? "" : ".",

@@ -44,7 +44,7 @@ class record_reader {
     static const std::set<std::string> fields{"id",       "section",  "equation",     "statement",     "methods", "check",
                                               "expected",    "finding",       "follows_from",
                                               "typographical", "origin", "headline",  "coq_none", "shape", "with", "core", "correction",
-                                              "observes", "remark", "reads"};
+                                              "observes", "remark", "reads", "conclusions_kept"};
     for (const auto& [key, node] : table_) {
       if (!fields.count(std::string(key.str()))) {
         throw claims_file_error(file_, line_of(node), std::string(key.str()), "not a field of a claim record (docs/claims-file.md)");
@@ -168,6 +168,8 @@ class record_reader {
     const toml::node* node = table_.get(field);
     return node ? line_of(*node) : line_;
   }
+
+  bool has(const std::string& field) const { return table_.get(field) != nullptr; }
 
  private:
   const toml::table& table_;
@@ -333,6 +335,15 @@ claims_file_contents read_claims_contents(const std::string& text, const std::st
     r.follows_from = read.text("follows_from", false);
     if (r.follows_from == r.id) throw claims_file_error(file, read.line_of_field("follows_from"), "follows_from", "a claim cannot follow from itself");
     r.typographical = read.flag("typographical");
+    // An erratum that changes none of the text's conclusions: the claims that draw them.
+    if (read.has("conclusions_kept")) {
+      r.conclusions_kept = read.texts("conclusions_kept");
+      if (r.expected != verdict::erratum) {
+        throw claims_file_error(file, read.line_of_field("conclusions_kept"), "conclusions_kept",
+                                "given for a claim whose expected verdict is " + to_string(r.expected) +
+                                    ": only an erratum names the conclusions it leaves standing");
+      }
+    }
     const std::string origin = read.text("origin", false);
     if (origin == "harness") {
       r.origin = claim_origin::harness;
@@ -374,6 +385,10 @@ claims_file_contents read_claims_contents(const std::string& text, const std::st
   for (const claim_record& r : records) {
     if (!r.follows_from.empty() && by_id.find(r.follows_from) == by_id.end()) {
       throw claims_file_error(file, r.line, "follows_from", "no record has the id '" + r.follows_from + "'");
+    }
+    for (const std::string& kept : r.conclusions_kept) {
+      if (by_id.find(kept) == by_id.end()) throw claims_file_error(file, r.line, "conclusions_kept", "no record has the id '" + kept + "'");
+      if (kept == r.id) throw claims_file_error(file, r.line, "conclusions_kept", "an erratum is not a conclusion it leaves standing");
     }
   }
   for (const claim_record& r : records) {

@@ -175,6 +175,7 @@ std::vector<claim> claims_of(const std::vector<claim_record>& records, const std
     c.decided_by = decider_of(r);
     c.labels_read = labels_read(r);
     c.headline = r.headline;
+    c.conclusions_kept = r.conclusions_kept;
     c.coq_none = r.coq_none;
     c.expected_correction = meaning(r.expected).corrected ? r.correction : r.remark;
     c.expected_reads = r.reads;

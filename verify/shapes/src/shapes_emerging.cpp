@@ -112,14 +112,16 @@ decider_evidence emerging_condition_shape(const shape_call& call, const run_cont
     return e;
   }
   if (end_is_band) {
-    // The condition is right and its end is the pole; but a pole is not a stability argument, and the
-    // scheme is stable again beyond it: the condition holds, its derivation has a gap (a remark).
-    result.remark_kind = finding::derivation_gap;
-    result.remark = fmt::format("The condition is the first stable band of ({}), and its end {} = {} is the first pole of ({}); stability itself follows "
-                                "from the root condition on ({}) (its discriminant), not from the pole, and the scheme is stable again beyond it: for {}.",
+    // The condition is right and its end is the pole. "Emerging" is read as the field reads it, a
+    // motivation: the words say more than the pole shows (a pole is no stability argument, and the
+    // scheme is stable again beyond it), so the condition holds with a wording remark.
+    result.remark_kind = finding::wording;
+    result.remark = fmt::format("Read as a motivation, as meant: the condition is the first stable band of ({}), and its end {} = {} is the first pole of "
+                                "({}); its proof is the root condition on ({}) (its discriminant), not the pole, and it is sufficient, not necessary: "
+                                "the scheme is stable again beyond it, for {}.",
                                 scheme_ref, var, text_of(high), formula_ref, scheme_ref, stable_set);
-    result.amendments.push_back(amendment_in_words("the condition's derivation", said.words("emerges") + " (from the pole of " + formula_ref + ")",
-                                                   "the first stable band, whose end is the pole; stability from the root condition: stable for " + stable_set));
+    result.amendments.push_back(amendment_in_words("the condition's origin", said.words("emerges") + " (from the pole of " + formula_ref + ")",
+                                                   "motivated by the pole, which ends the first stable band; proved by the root condition: stable for " + stable_set));
     e.found = std::move(result);
     return e;
   }

@@ -210,6 +210,10 @@ struct claim {
   /// sentences it reads, reads_digest()): a claim recorded as a finding or a remark that now holds
   /// without it is a fix only when that text changed. Empty: not recorded.
   std::string expected_reads = {};
+  /// For an erratum: the claims that draw the text's conclusions from what it is about (its record's
+  /// conclusions_kept). When each holds in the run, the erratum is an inconsistency that changes no
+  /// conclusion, counted apart from substantive errors; when one is not run or does not hold, it is not.
+  std::vector<std::string> conclusions_kept = {};
   /// Whether the record expects a remark: it holds, with a remark of class `kind`.
   bool expects_remark() const { return expected == verdict::holds && kind != finding::none; }
 };
