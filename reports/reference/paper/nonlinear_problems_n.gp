@@ -79,7 +79,7 @@ unset key
 set xrange [51.9842:5042.77]
 set xtics autofreq
 set mxtics default
-set yrange [1.74904e-12:0.238914]
+set yrange [1.74912e-12:0.238913]
 set ytics 1e2
 set mytics 1
 plot 'nonlinear_problems_n.dat' index 15 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
@@ -312,7 +312,7 @@ unset key
 set xrange [51.9842:5042.77]
 set xtics autofreq
 set mxtics default
-set yrange [1.74904e-12:0.238914]
+set yrange [1.74912e-12:0.238913]
 set ytics 1e2
 set mytics 1
 plot 'nonlinear_problems_n.dat' index 15 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \

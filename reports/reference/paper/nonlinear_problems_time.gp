@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.44191e-06:0.00751518]
+set xrange [4.7329e-06:0.00794229]
 set xtics autofreq
 set mxtics default
 set yrange [2.51598e-15:0.00942973]
@@ -34,7 +34,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.68374e-06:0.00743398]
+set xrange [5.27899e-06:0.00812969]
 set xtics autofreq
 set mxtics default
 set yrange [1.00325e-15:0.00120974]
@@ -55,7 +55,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.93393e-05:0.0881911]
+set xrange [5.56556e-05:0.095486]
 set xtics autofreq
 set mxtics default
 set yrange [6.13271e-06:1193.17]
@@ -76,10 +76,10 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.29093e-06:0.00797252]
+set xrange [4.75564e-06:0.00875526]
 set xtics autofreq
 set mxtics default
-set yrange [1.74904e-12:0.238914]
+set yrange [1.74912e-12:0.238913]
 set ytics 1e2
 set mytics 1
 plot 'nonlinear_problems_time.dat' index 15 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
@@ -97,7 +97,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [8.01721e-06:0.0178606]
+set xrange [7.9366e-06:0.0194879]
 set xtics autofreq
 set mxtics default
 set yrange [1.31557e-10:0.114842]
@@ -141,7 +141,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.44191e-06:0.00751518]
+set xrange [4.7329e-06:0.00794229]
 set xtics autofreq
 set mxtics default
 set yrange [2.51598e-15:0.00942973]
@@ -162,7 +162,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.68374e-06:0.00743398]
+set xrange [5.27899e-06:0.00812969]
 set xtics autofreq
 set mxtics default
 set yrange [1.00325e-15:0.00120974]
@@ -183,7 +183,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.93393e-05:0.0881911]
+set xrange [5.56556e-05:0.095486]
 set xtics autofreq
 set mxtics default
 set yrange [6.13271e-06:1193.17]
@@ -204,10 +204,10 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.29093e-06:0.00797252]
+set xrange [4.75564e-06:0.00875526]
 set xtics autofreq
 set mxtics default
-set yrange [1.74904e-12:0.238914]
+set yrange [1.74912e-12:0.238913]
 set ytics 1e2
 set mytics 1
 plot 'nonlinear_problems_time.dat' index 15 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
@@ -225,7 +225,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [8.01721e-06:0.0178606]
+set xrange [7.9366e-06:0.0194879]
 set xtics autofreq
 set mxtics default
 set yrange [1.31557e-10:0.114842]

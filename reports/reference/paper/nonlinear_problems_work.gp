@@ -79,7 +79,7 @@ unset key
 set xrange [49.299:21602.1]
 set xtics autofreq
 set mxtics default
-set yrange [1.74904e-12:0.238914]
+set yrange [1.74912e-12:0.238913]
 set ytics 1e2
 set mytics 1
 plot 'nonlinear_problems_work.dat' index 15 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
@@ -207,7 +207,7 @@ unset key
 set xrange [49.299:21602.1]
 set xtics autofreq
 set mxtics default
-set yrange [1.74904e-12:0.238914]
+set yrange [1.74912e-12:0.238913]
 set ytics 1e2
 set mytics 1
 plot 'nonlinear_problems_work.dat' index 15 u 1:2 w lp pt 7 ps 0.8 lw 1.2 dt 1 lc rgb '#d62728' t 'simpson', \
