@@ -31,7 +31,9 @@ work = tempfile.TemporaryDirectory()
 if directories[:1] == ["--binary"]:
     binary, directories = directories[1], directories[2:]
     fresh = os.path.join(work.name, "quick")
-    done = subprocess.run([binary] + os.environ.get("SIMPSON_VERIFY_ARGS", "").split() + ["--scene", "quick", "--no-timing", "--quiet", "--out", fresh], capture_output=True, text=True)
+    # Not certified: the page shows a certificate checked or only exported alike, and coqc's run
+    # is coq.certificates'.
+    done = subprocess.run([binary] + os.environ.get("SIMPSON_VERIFY_ARGS", "").split() + ["--scene", "quick", "--no-timing", "--no-certify", "--quiet", "--out", fresh], capture_output=True, text=True)
     if done.returncode != 0:
         sys.exit(f"FAIL the quick scene did not run: exit {done.returncode}: {done.stderr[-400:]}")
     directories.append(fresh)

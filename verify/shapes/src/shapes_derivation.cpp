@@ -20,10 +20,18 @@ using GiNaC::ex;
 
 namespace {
 
-/// The derived equation scaled so that as many of its terms as can be have the printed coefficients,
-/// and the terms whose printed coefficient differs: a wrong coefficient named, with the right one.
-/// None when no term is shared, or when the printed equation holds a denominator in the unknowns.
-std::optional<std::string> scaled_correction(const ex& printed, const ex& derived, const std::vector<GiNaC::symbol>& unknowns) {
+/// The derived equation (= 0) scaled so that as many of its terms as can be have the printed
+/// coefficients, in words with the terms whose printed coefficient differs (a wrong coefficient
+/// named, with the right one), and as an expression: what stands for the printed one when the claims
+/// that read it are judged again.
+struct scaled_equation {
+  std::string text;
+  ex value;
+};
+
+/// The derived equation scaled to the printed one's coefficients; none when no term is shared, or
+/// when the printed equation holds a denominator in the unknowns.
+std::optional<scaled_equation> scaled_correction(const ex& printed, const ex& derived, const std::vector<GiNaC::symbol>& unknowns) {
   const ex p = GiNaC::normal(printed), d = GiNaC::normal(derived);
   const auto free_denominator = [&](const ex& e) {
     const ex den = GiNaC::denom(e);
@@ -66,7 +74,7 @@ std::optional<std::string> scaled_correction(const ex& printed, const ex& derive
   }
   std::string out = "as derived, with the printed coefficients where they are right: " + text_of(scaled) + " = 0";
   for (std::size_t k = 0; k < differing.size(); ++k) out += (k ? "; " : " (") + differing[k];
-  return differing.empty() ? out : out + ")";
+  return scaled_equation{differing.empty() ? out : out + ")", scaled};
 }
 
 /// The printed equation (= 0) against the derived one (= 0): the same when the printed one times a
@@ -83,8 +91,11 @@ decider_evidence same_equation_evidence(shape_reader& read, const std::string& g
   e.statement = what;
   e.ginac = answer::fails;
   claim_result& result = e.found;
-  const std::optional<std::string> scaled = scaled_correction(printed, derived, unknowns);
-  result.correction = scaled ? *scaled : "as derived: " + text_of(GiNaC::normal(derived)) + " = 0";
+  const std::optional<scaled_equation> scaled = scaled_correction(printed, derived, unknowns);
+  result.correction = scaled ? scaled->text : "as derived: " + text_of(GiNaC::normal(derived)) + " = 0";
+  // The claims that read the printed equation are judged again with the derived one in its place:
+  // one that fails only through it follows from this erratum (consequences.cpp).
+  result.corrected_formulas.push_back(read.correction_of("printed", scaled ? scaled->value : GiNaC::normal(derived)));
   result.note = "As printed: no factor free of the unknowns makes the printed equation the derived one (GiNaC: the ratio depends on them); our kernel decides identities only, not this refutation.";
   result.evidence["exact"] = {{"statement", what}, {"ginac", "fails: derived / printed depends on the unknowns"},
                               {"own", "not applicable: a refutation of proportionality"}};
