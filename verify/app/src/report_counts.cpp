@@ -164,7 +164,7 @@ std::string summary_line(const run_record& r) {
     const std::size_t spelling = m.value == verdict::erratum ? c.prose_errata : 0;
     const std::size_t n = c.count(m.value) - spelling;
     if (!m.always_counted && n == 0) continue;
-    std::string words = fmt::format(fmt::runtime(m.counted_as), n);
+    std::string words = fmt::format(fmt::runtime(n == 1 ? m.counted_as_one : m.counted_as), n);
     if (m.affirms && c.remarks > 0) words += fmt::format(" ({} with a remark)", c.remarks);
     if (m.value == verdict::erratum && c.errata_following > 0) words += fmt::format(" ({} following from another's)", c.errata_following);
     counted.push_back(words);

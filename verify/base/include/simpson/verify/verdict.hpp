@@ -37,8 +37,10 @@ struct verdict_meaning {
   /// Where the row's reason is in the evidence (`evidence[reason_key]`), and the words when absent.
   const char* reason_key;
   const char* default_reason;
-  /// The summary line's words for a count of them ("{} held"); always shown, or only when nonzero.
+  /// The summary line's words for a count of them ("{} held"), and for one of them ("{} erratum");
+  /// always shown, or only when nonzero.
   const char* counted_as;
+  const char* counted_as_one;
   bool always_counted;
   /// report.json's summary member that counts them.
   const char* count_key;
@@ -59,37 +61,37 @@ struct verdict_meaning {
 
 /// Every verdict's meaning, in the enum's order.
 inline constexpr std::array<verdict_meaning, 9> verdict_meanings{{
-    {verdict::holds, "holds", true, false, verdict_meaning::row::as_judged, "", "", "{} held", true, "held",
+    {verdict::holds, "holds", true, false, verdict_meaning::row::as_judged, "", "", "{} held", "{} held", true, "held",
      true, false, false, false, "",
      "true as printed"},
-    {verdict::erratum, "erratum", true, true, verdict_meaning::row::as_judged, "", "", "{} errata", true, "errata",
+    {verdict::erratum, "erratum", true, true, verdict_meaning::row::as_judged, "", "", "{} errata", "{} erratum", true, "errata",
      false, true, false, false, "Erratum, as the ledger expects.",
      "false as printed; a corrected statement is proved"},
-    {verdict::fails, "fails", true, true, verdict_meaning::row::as_judged, "", "", "{} failed", true, "failed",
+    {verdict::fails, "fails", true, true, verdict_meaning::row::as_judged, "", "", "{} failed", "{} failed", true, "failed",
      false, false, true, false, "",
      "false, no correction found"},
     {verdict::kernels_disagree, "kernels-disagree", false, false, verdict_meaning::row::never_expected, "kernels_disagree",
-     "the two kernels disagree (a bug in one of them)", "{} with the kernels in disagreement", false, "kernels_disagree",
+     "the two kernels disagree (a bug in one of them)", "{} with the kernels in disagreement", "{} with the kernels in disagreement", false, "kernels_disagree",
      false, false, false, true, "",
      "our kernel and GiNaC reached different conclusions on the derived statement: a bug, never expected"},
     {verdict::text_changed, "text-changed", false, false, verdict_meaning::row::never_expected, "text_changed", "the quoted words changed",
-     "{} whose quoted words changed (text-changed)", false, "text_changed",
+     "{} whose quoted words changed (text-changed)", "{} whose quoted words changed (text-changed)", false, "text_changed",
      false, false, false, false, "",
      "the sentence a prose claim quotes is gone from the paper, or its words no longer parse: never expected"},
     {verdict::undecided, "undecided", false, false, verdict_meaning::row::never_expected, "undecided", "no enclosure decided the claim",
-     "{} undecided within the enclosure budget", false, "undecided",
+     "{} undecided within the enclosure budget", "{} undecided within the enclosure budget", false, "undecided",
      false, false, false, true, "",
      "no interval enclosure proved the statement or its negation within the run's digits: never expected"},
     {verdict::unproved, "unproved", false, false, verdict_meaning::row::never_expected, "unproved", "Gappa could not bound the round-off",
-     "{} unproved (Gappa could not bound the round-off)", false, "unproved",
+     "{} unproved (Gappa could not bound the round-off)", "{} unproved (Gappa could not bound the round-off)", false, "unproved",
      false, false, false, true, "",
      "a floating-point claim whose round-off Gappa could not bound, with its reason"},
     {verdict::skipped, "skipped", false, false, verdict_meaning::row::not_counted, "skipped", "the prover is not installed",
-     "{} skipped (gappa not installed)", false, "skipped",
+     "{} skipped (gappa not installed)", "{} skipped (gappa not installed)", false, "skipped",
      false, false, false, false, "",
      "a floating-point claim not decided because gappa is not installed: never counted against the run"},
     {verdict::unverifiable, "unverifiable", true, true, verdict_meaning::row::as_judged, "", "",
-     "{} unverifiable (material absent from the source)", false, "unverifiable",
+     "{} unverifiable (material absent from the source)", "{} unverifiable (material absent from the source)", false, "unverifiable",
      false, false, false, false, "Unverifiable (material absent from the source), as the ledger expects.",
      "material the claim needs is absent from the source, a figure or a reference: no verdict on its words"},
 }};
