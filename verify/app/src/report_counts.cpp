@@ -345,7 +345,7 @@ std::string findings_headline(const run_record& r) {
       constant_factor.push_back(place + and_following);
     } else if (kind == finding::erratum && !o.checked->typographical && !standing.empty()) {
       const std::string where = o.result.amendments.empty() ? std::string() : ": " + o.result.amendments.front().where;
-      inconsistent.push_back(place + where + and_following + "; the conclusions drawn from it hold: " + report_parts::join(standing, ", "));
+      inconsistent.push_back(place + where + and_following + "; the conclusions the text draws from those data hold of the printed numbers: " + report_parts::join(standing, ", "));
     } else if (kind == finding::erratum && !o.checked->typographical) {
       const std::string where = o.result.amendments.empty() ? std::string() : ": " + o.result.amendments.front().where;
       substantive.push_back(place + where + and_following);

@@ -116,10 +116,10 @@ decider_evidence emerging_condition_shape(const shape_call& call, const run_cont
     // motivation: the words say more than the pole shows (a pole is no stability argument, and the
     // scheme is stable again beyond it), so the condition holds with a wording remark.
     result.remark_kind = finding::wording;
-    result.remark = fmt::format("Read as a motivation, as meant: the condition is the first stable band of ({}), and its end {} = {} is the first pole of "
+    result.remark = fmt::format("Read as a motivation, as meant: the condition is the first stable band of ({}), and its end {} = {} is the {} of "
                                 "({}); its proof is the root condition on ({}) (its discriminant), not the pole, and it is sufficient, not necessary: "
-                                "the scheme is stable again beyond it, for {}.",
-                                scheme_ref, var, text_of(high), formula_ref, scheme_ref, stable_set);
+                                "the scheme is stable exactly for {}, so stable again beyond it.",
+                                scheme_ref, var, text_of(high), poles->ends.size() == 1 ? "pole" : "first pole", formula_ref, scheme_ref, stable_set);
     result.amendments.push_back(amendment_in_words("the condition's origin", said.words("emerges") + " (from the pole of " + formula_ref + ")",
                                                    "motivated by the pole, which ends the first stable band; proved by the root condition: stable for " + stable_set));
     e.found = std::move(result);
