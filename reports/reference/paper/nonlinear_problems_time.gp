@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.7329e-06:0.00794229]
+set xrange [8.29782e-06:0.0150705]
 set xtics autofreq
 set mxtics default
 set yrange [2.51598e-15:0.00942973]
@@ -34,7 +34,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.27899e-06:0.00812969]
+set xrange [4.45786e-06:0.0171415]
 set xtics autofreq
 set mxtics default
 set yrange [1.00325e-15:0.00120974]
@@ -55,7 +55,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.56556e-05:0.095486]
+set xrange [8.4105e-05:0.222805]
 set xtics autofreq
 set mxtics default
 set yrange [6.13271e-06:1193.17]
@@ -76,7 +76,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.75564e-06:0.00875526]
+set xrange [4.44295e-06:0.00986843]
 set xtics autofreq
 set mxtics default
 set yrange [1.74912e-12:0.238913]
@@ -97,7 +97,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [7.9366e-06:0.0194879]
+set xrange [7.30093e-06:0.0247332]
 set xtics autofreq
 set mxtics default
 set yrange [1.31557e-10:0.114842]
@@ -141,7 +141,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.7329e-06:0.00794229]
+set xrange [8.29782e-06:0.0150705]
 set xtics autofreq
 set mxtics default
 set yrange [2.51598e-15:0.00942973]
@@ -162,7 +162,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.27899e-06:0.00812969]
+set xrange [4.45786e-06:0.0171415]
 set xtics autofreq
 set mxtics default
 set yrange [1.00325e-15:0.00120974]
@@ -183,7 +183,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.56556e-05:0.095486]
+set xrange [8.4105e-05:0.222805]
 set xtics autofreq
 set mxtics default
 set yrange [6.13271e-06:1193.17]
@@ -204,7 +204,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.75564e-06:0.00875526]
+set xrange [4.44295e-06:0.00986843]
 set xtics autofreq
 set mxtics default
 set yrange [1.74912e-12:0.238913]
@@ -225,7 +225,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [7.9366e-06:0.0194879]
+set xrange [7.30093e-06:0.0247332]
 set xtics autofreq
 set mxtics default
 set yrange [1.31557e-10:0.114842]
