@@ -190,11 +190,11 @@ decider_evidence check_experiment_conventions(const run_context& ctx) {
                          fmt::format("The stated pair is one exact solution with T = {} one period, but not one Table 1 was computed with "
                                      "(table-values, convention search). ", period) + unstated),
                    "Table 1 not reproduced by its stated start", fmt::format("$q(t) = {}$, $p(t) = {}$", stated.q_tex, stated.p_tex),
-                   fmt::format("a start consistent with Table 1 (the stated one reproduces {} of its {} informative entries at m = 1{}): either the "
-                               "start that reproduces it, the best found reproducing {}: the oscillator {}; or Table 1 recomputed from the stated one",
+                   fmt::format("a start consistent with Table 1 (the stated one reproduces {} of its {} informative entries at m = 1{}): either "
+                               "the oscillator {}, which reproduces {} of them to their printed digits; or Table 1 recomputed from the stated one",
                                stated_tally.informative_reproduced, stated_tally.informative,
                                position_reproduced == 0 ? fmt::format(", and for no m its {} state entries, which m does not change", position_entries) : "",
-                               best_tally.informative_reproduced, table1_start(*simplest)));
+                               table1_start(*simplest), best_tally.informative_reproduced));
   }
   return confirmed_if(false, evidence, "The stated pair does not reproduce Table 1, and no convention of the searched family does "
                                        "(table-values). " + unstated);
