@@ -93,7 +93,7 @@ TEST(RefereesCases, ThePaperAsAnExpertReadsIt) {
   const std::string& conventions = outcome_of(r, "experiment-conventions").result.correction;
   EXPECT_NE(conventions.find("and no other m reproduces the table: the 6 entries of the state rows"), std::string::npos) << conventions;
   EXPECT_NE(conventions.find("or Table 1 recomputed from the stated solution"), std::string::npos) << conventions;
-  EXPECT_NE(values.find("17 of the 18 informative entries (the 6 others, of the rows printed as exact, are round-off"), std::string::npos) << values;
+  EXPECT_NE(values.find("17 of the 18 informative entries (the 6 others, of the rows printed as exact, are at round-off level"), std::string::npos) << values;
   // "explicited": "made explicit", the record's replacement, not Hunspell's "explicated".
   const claim_outcome& spelling = outcome_of(r, "prose-spelling");
   EXPECT_NE(spelling.result.correction.find("explicited (4 times): made explicit"), std::string::npos) << spelling.result.correction;

@@ -441,7 +441,7 @@ TEST(ChangedTable, ATableComputedWithSimpleValuesIsExplainedByThem) {
   EXPECT_EQ(r.outcome, verdict::erratum) << r.note;
   EXPECT_NE(r.correction.find("Table 1 is reproduced, every entry within its printed digits: The oscillator released from rest at q₀ = π/4, "
                               "p₀ = 0, m = 2 (q(t) = π/4 cos ωt), under the stated discrete conventions, reproduces within their printed digits 18 of the 18 informative "
-                             "entries (the 6 others, of the rows printed as exact, are round-off and reproduced too)"),
+                             "entries (the 6 others, of the rows printed as exact, are at round-off level, as ours are)"),
             std::string::npos)
       << r.correction;
   EXPECT_EQ(r.evidence.at("simplest").at("enclosed").at("reproduced"), "24 of 24") << r.evidence.at("simplest").dump();

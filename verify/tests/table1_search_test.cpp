@@ -154,7 +154,7 @@ TEST(ConventionSearch, ThePapersTableIsExplainedByTheOscillatorReleasedFromRest)
   EXPECT_EQ(table1_explanation(r, entries),
             "the oscillator released from rest at q₀ = π/2, p₀ = 0, m = 1 (q(t) = π/2 cos ωt), under the stated discrete conventions, "
             "reproduces within their printed digits 17 of the 18 informative entries (the 6 others, of the rows printed as exact, are "
-            "round-off and reproduced too); the one it misses, Newmark momentum at N = 10, computes "
+            "at round-off level, as ours are); the one it misses, Newmark momentum at N = 10, computes "
             "1.915007, printed 1.91: 7.1e-06 past its rounding boundary 1.915");
   // The fit's joint region: moved together, the parameters that reproduce all 24 entries reach the
   // simple values π/2 (amplitude), 3π/2 (the phase of a release from rest, the sign flipped) and

@@ -283,7 +283,7 @@ std::string tally_text(const entry_tally& t) {
   std::string text = fmt::format("{} of the {} informative entries", t.informative_reproduced, t.informative);
   if (t.round_off == 0) return text;
   return text + (t.round_off_reproduced == t.round_off
-                     ? fmt::format(" (the {} others, of the rows printed as exact, are round-off and reproduced too)", t.round_off)
+                     ? fmt::format(" (the {} others, of the rows printed as exact, are at round-off level, as ours are)", t.round_off)
                      : fmt::format(" ({} of the {} others, of the rows printed as exact, round-off)", t.round_off_reproduced, t.round_off));
 }
 
