@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.32896e-06:0.0140472]
+set xrange [8.21329e-06:0.0146328]
 set xtics autofreq
 set mxtics default
 set yrange [2.51598e-15:0.00942973]
@@ -34,7 +34,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.67688e-06:0.0237252]
+set xrange [8.6535e-06:0.0148116]
 set xtics autofreq
 set mxtics default
 set yrange [1.00325e-15:0.00120974]
@@ -55,7 +55,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.09762e-05:0.292501]
+set xrange [8.36618e-05:0.161756]
 set xtics autofreq
 set mxtics default
 set yrange [6.13271e-06:1193.17]
@@ -76,7 +76,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [8.39174e-06:0.0176798]
+set xrange [7.40974e-06:0.0161957]
 set xtics autofreq
 set mxtics default
 set yrange [1.74912e-12:0.238913]
@@ -97,7 +97,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [6.83888e-06:0.0413527]
+set xrange [1.19315e-05:0.0314136]
 set xtics autofreq
 set mxtics default
 set yrange [1.31557e-10:0.114842]
@@ -141,7 +141,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.32896e-06:0.0140472]
+set xrange [8.21329e-06:0.0146328]
 set xtics autofreq
 set mxtics default
 set yrange [2.51598e-15:0.00942973]
@@ -162,7 +162,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.67688e-06:0.0237252]
+set xrange [8.6535e-06:0.0148116]
 set xtics autofreq
 set mxtics default
 set yrange [1.00325e-15:0.00120974]
@@ -183,7 +183,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.09762e-05:0.292501]
+set xrange [8.36618e-05:0.161756]
 set xtics autofreq
 set mxtics default
 set yrange [6.13271e-06:1193.17]
@@ -204,7 +204,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [8.39174e-06:0.0176798]
+set xrange [7.40974e-06:0.0161957]
 set xtics autofreq
 set mxtics default
 set yrange [1.74912e-12:0.238913]
@@ -225,7 +225,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [6.83888e-06:0.0413527]
+set xrange [1.19315e-05:0.0314136]
 set xtics autofreq
 set mxtics default
 set yrange [1.31557e-10:0.114842]
