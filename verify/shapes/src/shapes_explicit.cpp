@@ -219,8 +219,9 @@ decider_evidence explicit_map_shape(const shape_call& call, const run_context& c
   const std::string map_ref = reference_of(call, "map");
   const std::string h = step.get_name();
   result.evidence["exact"] = {
-      {"statement", fmt::format("({}) gives the next state in closed form for every {} > 0 (explicit on this linear problem); every entry a polynomial in {} "
-                                "(explicit as a method: no step equation solved)",
+      {"statement", fmt::format("({}) gives the next state in closed form for every {} > 0 (explicit on this linear problem: the verdict's "
+                                "statement); and, apart, whether every entry is a polynomial in {} (explicit as a method: no step equation "
+                                "solved; when not, a wording remark)",
                                 map_ref, h, h)},
       {"ginac", polynomial ? "a polynomial: no denominator depends on " + h
                            : fmt::format("not a polynomial: the denominators {} depend on {}", fmt::join(denominators, ", "), h)},
