@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [8.21329e-06:0.0146328]
+set xrange [4.80573e-06:0.00772732]
 set xtics autofreq
 set mxtics default
 set yrange [2.51598e-15:0.00942973]
@@ -34,7 +34,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [8.6535e-06:0.0148116]
+set xrange [5.14005e-06:0.00762866]
 set xtics autofreq
 set mxtics default
 set yrange [1.00325e-15:0.00120974]
@@ -55,7 +55,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [8.36618e-05:0.161756]
+set xrange [5.04067e-05:0.0915734]
 set xtics autofreq
 set mxtics default
 set yrange [6.13271e-06:1193.17]
@@ -76,7 +76,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [7.40974e-06:0.0161957]
+set xrange [4.69511e-06:0.00822733]
 set xtics autofreq
 set mxtics default
 set yrange [1.74912e-12:0.238913]
@@ -97,7 +97,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.19315e-05:0.0314136]
+set xrange [7.38038e-06:0.0181647]
 set xtics autofreq
 set mxtics default
 set yrange [1.31557e-10:0.114842]
@@ -141,7 +141,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [8.21329e-06:0.0146328]
+set xrange [4.80573e-06:0.00772732]
 set xtics autofreq
 set mxtics default
 set yrange [2.51598e-15:0.00942973]
@@ -162,7 +162,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [8.6535e-06:0.0148116]
+set xrange [5.14005e-06:0.00762866]
 set xtics autofreq
 set mxtics default
 set yrange [1.00325e-15:0.00120974]
@@ -183,7 +183,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [8.36618e-05:0.161756]
+set xrange [5.04067e-05:0.0915734]
 set xtics autofreq
 set mxtics default
 set yrange [6.13271e-06:1193.17]
@@ -204,7 +204,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [7.40974e-06:0.0161957]
+set xrange [4.69511e-06:0.00822733]
 set xtics autofreq
 set mxtics default
 set yrange [1.74912e-12:0.238913]
@@ -225,7 +225,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.19315e-05:0.0314136]
+set xrange [7.38038e-06:0.0181647]
 set xtics autofreq
 set mxtics default
 set yrange [1.31557e-10:0.114842]

@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.48991e-07:0.000283445]
+set xrange [1.41634e-07:0.000280631]
 set xtics autofreq
 set mxtics default
 set yrange [2.94139e-15:0.34373]
@@ -36,7 +36,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [8.1204e-06:0.0532197]
+set xrange [7.57508e-06:0.0507771]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -84,7 +84,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.48991e-07:0.000283445]
+set xrange [1.41634e-07:0.000280631]
 set xtics autofreq
 set mxtics default
 set yrange [2.94139e-15:0.34373]
@@ -107,7 +107,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [8.1204e-06:0.0532197]
+set xrange [7.57508e-06:0.0507771]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
