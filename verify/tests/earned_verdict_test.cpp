@@ -239,6 +239,15 @@ TEST(RefereesCases, AnInconsistencyKeepsItsClassOnlyWhileItsConclusionsHold) {
   EXPECT_NE(findings_headline(broken).find("substantive errors (§8, experiment-conventions"), std::string::npos) << findings_headline(broken);
 }
 
+// The spelling check judges the source's words, not a statement the paper makes: the run line names
+// its erratum apart from the errata (one erratum said in the singular).
+TEST(RefereesCases, TheRunLineNamesTheSpellingCheckApartFromTheErrata) {
+  const run_record r = run_claims({"gamma-system", "prose-spelling", "phi3-det"}, embedded_paper());
+  const std::string line = summary_line(r);
+  EXPECT_EQ(line.rfind("3 claims: 1 held, 1 erratum, 1 spelling check failing (6 misspelled words), 0 failed;", 0), 0u) << line;
+  EXPECT_EQ(report_json(r)["summary"]["errata"], 2) << "report.json counts verdicts: the spelling check's is an erratum";
+}
+
 // The 11/25 copy: Phi_3's (2,2) entry changed. Seven claims that read Phi_3 turn red; the naming
 // remark of novelty-prior-work goes away (the map is no longer Lobatto's, nothing to name), which is
 // no fix: it changed because of phi3-elimination, which reads the same display, and --accept-fixes

@@ -33,16 +33,6 @@ finding finding_of(const claim_outcome& o) {
   return o.result.outcome == verdict::unverifiable ? finding::unverifiable : finding::erratum;
 }
 
-std::vector<std::string> conclusions_standing(const claim_outcome& o, const run_record& r) {
-  const std::vector<std::string>& kept = o.checked->conclusions_kept;
-  if (o.result.outcome != verdict::erratum || kept.empty()) return {};
-  for (const std::string& id : kept) {
-    const auto at = std::find_if(r.outcomes.begin(), r.outcomes.end(), [&](const claim_outcome& other) { return other.checked->id == id; });
-    if (at == r.outcomes.end() || !meaning(at->result.outcome).affirms) return {};
-  }
-  return kept;
-}
-
 verdict_counts count_verdicts(const run_record& r) {
   verdict_counts c;
   for (const claim_outcome& o : r.outcomes) {
@@ -66,7 +56,7 @@ verdict_counts count_verdicts(const run_record& r) {
           ++c.typographical;
         } else if (o.result.constant_factor) {
           ++c.constant_factor;
-        } else if (!conclusions_standing(o, r).empty()) {
+        } else if (!o.conclusions_standing.empty()) {
           ++c.inconsistent;
         } else if (kind == finding::unverifiable) {
           ++c.unverifiable_findings;
@@ -340,7 +330,7 @@ std::string findings_headline(const run_record& r) {
     for (const claim_outcome& other : r.outcomes) following += cause_of(other) == o.checked->id && is_finding(other.result.outcome);
     const std::string place = fmt::format("§{}, {}", o.checked->section, o.checked->id);
     const std::string and_following = following == 0 ? std::string() : fmt::format(", and {} following from it", n(following, "claim", "claims"));
-    const std::vector<std::string> standing = report_parts::conclusions_standing(o, r);
+    const std::vector<std::string>& standing = o.conclusions_standing;
     if (kind == finding::erratum && !o.checked->typographical && o.result.constant_factor) {
       constant_factor.push_back(place + and_following);
     } else if (kind == finding::erratum && !o.checked->typographical && !standing.empty()) {

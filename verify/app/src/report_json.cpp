@@ -109,7 +109,7 @@ json report_json(const run_record& r, const plot_outcome& plots) {
     if (const std::string reads = reads_digest(o.result.printed, o.result.quoted); !reads.empty()) entry["reads"] = reads;
     if (c.typographical) entry["typographical"] = true;
     if (o.result.constant_factor) entry["constant_factor"] = true;
-    if (const std::vector<std::string> standing = report_parts::conclusions_standing(o, r); !standing.empty()) entry["conclusions_standing"] = standing;
+    if (!o.conclusions_standing.empty()) entry["conclusions_standing"] = o.conclusions_standing;
     if (!o.result.correction.empty()) entry["correction"] = o.result.correction;
     if (!o.result.amendments.empty()) entry["amendments"] = amendments_json(o.result.amendments);
     if (!o.result.note.empty()) entry["note"] = o.result.note;

@@ -41,10 +41,6 @@ struct verdict_counts {
   std::size_t count(verdict v) const { return of[static_cast<std::size_t>(v)]; }
 };
 
-/// An erratum's conclusions that stand: its record's conclusions_kept when every one of them was
-/// run and holds (it changes no conclusion), else none.
-std::vector<std::string> conclusions_standing(const claim_outcome& o, const run_record& r);
-
 
 /// The class of a claim's finding: the ledger's when the verdict is the expected one; an unexpected
 /// finding is an erratum (or unverifiable) until the ledger classifies it; none when it holds.

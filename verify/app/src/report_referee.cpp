@@ -109,7 +109,7 @@ std::string report_parts::referee_summary_markdown(const run_record& r) {
     if (kind == finding::prose) return 8;
     if (o.checked->typographical || o.result.constant_factor) return consequential ? 3 : 7;
     switch (kind) {
-      case finding::erratum: return !report_parts::conclusions_standing(o, r).empty() ? 2 : consequential ? 0 : 1;
+      case finding::erratum: return !o.conclusions_standing.empty() ? 2 : consequential ? 0 : 1;
       case finding::derivation_gap: return 4;
       case finding::wording:
       case finding::naming: return 5;
@@ -134,8 +134,8 @@ std::string report_parts::referee_summary_markdown(const run_record& r) {
       const std::string label = o.result.reads_whole_text                  ? "a check of the source, " + to_string(kind)
                                 : o.checked->typographical                    ? to_string(kind) + ", typographical"
                                 : kind == finding::erratum && o.result.constant_factor ? std::string("erratum, a constant factor, zeros unchanged")
-                                : kind == finding::erratum && !report_parts::conclusions_standing(o, r).empty()
-                                    ? "an inconsistency that changes no conclusion (" + report_parts::join(report_parts::conclusions_standing(o, r), ", ") + " hold)"
+                                : kind == finding::erratum && !o.conclusions_standing.empty()
+                                    ? "an inconsistency that changes no conclusion (" + report_parts::join(o.conclusions_standing, ", ") + " hold)"
                                 : kind == finding::erratum                             ? std::string("substantive error")
                                                            : to_string(kind);
       md += fmt::format("- **`{}`** (§{}, {}): {}{}{}\n", k.id, markdown_escaped(k.section), label, what, stops || consequences.empty() ? "" : ".",

@@ -18,6 +18,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <chrono>
 #include <map>
 #include <optional>
@@ -130,6 +131,20 @@ void resolve_fixes(run_record& r, const scene& s) {
   }
 }
 
+/// Each erratum whose record names the conclusions it leaves standing: those claims, when every one of
+/// them ran and holds (claim_outcome::conclusions_standing).
+void conclusions_standing(run_record& r) {
+  for (claim_outcome& o : r.outcomes) {
+    const std::vector<std::string>& kept = o.checked->conclusions_kept;
+    if (o.result.outcome != verdict::erratum || kept.empty()) continue;
+    const bool all_hold = std::all_of(kept.begin(), kept.end(), [&](const std::string& id) {
+      const auto at = std::find_if(r.outcomes.begin(), r.outcomes.end(), [&](const claim_outcome& other) { return other.checked->id == id; });
+      return at != r.outcomes.end() && meaning(at->result.outcome).affirms;
+    });
+    if (all_hold) o.conclusions_standing = kept;
+  }
+}
+
 }  // namespace
 
 std::string text_change(const std::string& what, const std::string& recorded, const std::string& now) {
@@ -219,6 +234,7 @@ run_record run(const scene& s, std::shared_ptr<const claim_book> book, const pap
     if (progress) progress(k, s.claims.size(), c, &r.outcomes.back());
   }
   resolve_fixes(r, s);
+  conclusions_standing(r);
   // Consequences traced: a claim that does not hold, judged again with an erratum's corrected
   // formulas, that then holds, is counted under that erratum.
   {

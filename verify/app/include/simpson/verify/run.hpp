@@ -43,6 +43,10 @@ struct claim_outcome {
   bool fix_accepted = false;
   std::string changed;
   std::string changed_cause;
+  /// An erratum whose record names the conclusions it leaves standing (conclusions_kept), each run and
+  /// holding in this run: those claims (an inconsistency that changes no conclusion, counted apart
+  /// from substantive errors); empty otherwise. Set once every claim ran (run.cpp).
+  std::vector<std::string> conclusions_standing;
 };
 
 /// Whether an outcome is the one its record expects: its verdict, for an erratum whose record

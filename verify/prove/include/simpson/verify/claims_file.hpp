@@ -53,7 +53,7 @@ struct claim_record {
   std::string follows_from;
   bool typographical = false;
   /// An erratum's conclusions_kept: the claims that draw the text's conclusions from what it is
-  /// about; when each of them holds in the run, the erratum changes none of them (report_counts.cpp).
+  /// about; when each of them holds in the run, the erratum changes none of them (run.cpp, claim_outcome::conclusions_standing).
   std::vector<std::string> conclusions_kept;
   claim_origin origin = claim_origin::paper;
   bool headline = false;  // one of the claims whose GiNaC time the report's speed line sums
