@@ -74,11 +74,14 @@ TEST(RefereesCases, ThePaperAsAnExpertReadsIt) {
   }
   remark("novelty-prior-work", finding::naming);
   // "This interpolation is not linear if h > 0" holds, of the curve, for the data in general: a
-  // wording remark names the data where it is affine after all (q_l + q_r = 0, or omega = 0).
+  // wording remark names the data where it is affine after all (q_l + q_r = 0). Not omega = 0: the
+  // oscillator's frequency is positive (the claims file's [symbols], as 0 < omega h < 2 sqrt(2) takes
+  // it), and an exception of no oscillator is none a referee signs (the referee).
   EXPECT_EQ(outcome_of(r, "qm-not-affine").result.outcome, verdict::holds);
   EXPECT_EQ(outcome_of(r, "qm-not-affine").result.remark_kind, finding::wording);
-  EXPECT_NE(outcome_of(r, "qm-not-affine").result.remark.find("affine where omega = 0 or q_l+q_r = 0"), std::string::npos)
+  EXPECT_NE(outcome_of(r, "qm-not-affine").result.remark.find("affine where q_l+q_r = 0:"), std::string::npos)
       << outcome_of(r, "qm-not-affine").result.remark;
+  EXPECT_EQ(outcome_of(r, "qm-not-affine").result.remark.find("omega = 0"), std::string::npos) << outcome_of(r, "qm-not-affine").result.remark;
   // Not the paper's claim: the harness's own, not counted among the paper's.
   EXPECT_EQ(outcome_of(r, "approximate-energy-sign").checked->origin, claim_origin::beyond);
   const json summary = report_json(r)["summary"];
@@ -96,7 +99,14 @@ TEST(RefereesCases, ThePaperAsAnExpertReadsIt) {
   EXPECT_NE(values.find("17 of the 18 informative entries (the 6 others, of the rows printed as exact, are at round-off level"), std::string::npos) << values;
   // "explicited": "made explicit", the record's replacement, not Hunspell's "explicated".
   const claim_outcome& spelling = outcome_of(r, "prose-spelling");
-  EXPECT_NE(spelling.result.correction.find("explicited (4 times): made explicit"), std::string::npos) << spelling.result.correction;
+  // Where the record's phrase is printed ("explicited at the relation"), its own replacement: "made
+  // explicit at the relation" is no English (the referee).
+  EXPECT_NE(spelling.result.correction.find("explicited (3 times): made explicit; explicited at the relation: given explicitly by relation"),
+            std::string::npos) << spelling.result.correction;
+  // Real words misused pass the dictionary; the record's phrases find them.
+  EXPECT_NE(spelling.result.correction.find("3 phrases of dictionary words misused: To explicit: To make explicit; equation and explicit: "
+                                            "equation and make explicit; can we written: can be written"),
+            std::string::npos) << spelling.result.correction;
   // The headline: in a referee's words, Table 1's finding first in the summary.
   EXPECT_EQ(summary["headline"].get<std::string>().rfind("The paper's ", 0), 0u);
   const std::string md = report_markdown(r);
@@ -113,7 +123,7 @@ TEST(RefereesCases, ThePaperAsAnExpertReadsIt) {
   const std::string headline = summary["headline"].get<std::string>();
   EXPECT_NE(headline.find("and 1 check of its source:"), std::string::npos) << headline;
   EXPECT_NE(headline.find("4 remarks on claims that hold (1 of them following the finding or remark of another claim)"), std::string::npos) << headline;
-  EXPECT_NE(headline.find("The source's checks: prose-spelling (6 misspelled words)"), std::string::npos) << headline;
+  EXPECT_NE(headline.find("The source's checks: prose-spelling (6 misspelled words and 3 phrases misused)"), std::string::npos) << headline;
   EXPECT_EQ(summary["source_checks"], 1);
 }
 
@@ -135,9 +145,14 @@ TEST(RefereesCases, TheSecondRefereesRewordings) {
   const std::string& values = outcome_of(r, "table-values").result.correction;
   EXPECT_NE(values.find("The numbers themselves are consistent with another start."), std::string::npos) << values;
   EXPECT_EQ(values.find("are another start's"), std::string::npos) << values;
-  // A known method left unnamed: the remark says what the method is, first.
+  // A known method left unnamed: the remark says what the method is, first, and the construction
+  // that gives it (the referee: Marsden and West's Galerkin integrator with Lobatto quadrature), and
+  // that the proof is of this problem's map only.
   const std::string& novelty = outcome_of(r, "novelty-prior-work").result.remark;
-  EXPECT_EQ(novelty.rfind("The method is the 3-stage Lobatto IIIA-IIIB pair, known prior work:", 0), 0u) << novelty;
+  EXPECT_EQ(novelty.rfind("Known prior work, never named: the method is the 3-stage Lobatto IIIA-IIIB pair, the Galerkin variational integrator", 0), 0u)
+      << novelty;
+  EXPECT_NE(novelty.find("Proved here on this problem only"), std::string::npos) << novelty;
+  EXPECT_NE(novelty.find("beyond this problem is that work's theorem, not checked here"), std::string::npos) << novelty;
   // ... and the referee's summary says it, not only the remarks: the point a referee asks about first.
   const std::string with_novelty = report_json(r)["summary"]["headline"];
   EXPECT_NE(with_novelty.find("Prior work: the method is the 3-stage Lobatto IIIA-IIIB pair, which the text never names (novelty-prior-work)"),
@@ -239,13 +254,27 @@ TEST(RefereesCases, AnInconsistencyKeepsItsClassOnlyWhileItsConclusionsHold) {
   EXPECT_NE(findings_headline(broken).find("substantive errors (§8, experiment-conventions"), std::string::npos) << findings_headline(broken);
 }
 
-// The spelling check judges the source's words, not a statement the paper makes: the run line names
-// its erratum apart from the errata (one erratum said in the singular).
+// The spelling check judges the source's words, not a statement the paper makes: the run line counts
+// it apart from the paper's claims (one erratum said in the singular), by its id and what it found.
 TEST(RefereesCases, TheRunLineNamesTheSpellingCheckApartFromTheErrata) {
   const run_record r = run_claims({"gamma-system", "prose-spelling", "phi3-det"}, embedded_paper());
   const std::string line = summary_line(r);
-  EXPECT_EQ(line.rfind("3 claims: 1 held, 1 erratum, 1 spelling check failing (6 misspelled words), 0 failed;", 0), 0u) << line;
+  EXPECT_EQ(line.rfind("3 records: the paper's 2 claims: 1 held, 1 erratum, 0 failed; 1 check of its source: prose-spelling failing "
+                       "(6 misspelled words and 3 phrases misused);", 0), 0u) << line;
   EXPECT_EQ(report_json(r)["summary"]["errata"], 2) << "report.json counts verdicts: the spelling check's is an erratum";
+}
+
+// The referee: "72 claims" counted the checks of the source and the harness's own records among
+// the paper's claims, and "2 unverifiable" put a missing figure with a missing bibliography. Each
+// group is counted apart, the source's checks by name.
+TEST(RefereesCases, TheRunLineCountsThePapersClaimsTheSourcesChecksAndTheHarnesssOwnApart) {
+  const run_record r = run_claims({"lemma-dimensional-scaling", "gamma-system", "bibliography", "prose-spelling"}, embedded_paper());
+  const std::string line = summary_line(r);
+  EXPECT_EQ(line.rfind("4 records: the paper's 1 claim: 0 held, 1 erratum, 0 failed; 2 checks of its source: bibliography unverifiable (its "
+                       "material absent from the supplied source), prose-spelling failing (6 misspelled words and 3 phrases misused); 1 of the "
+                       "harness's own: 1 held;", 0), 0u) << line;
+  // One group alone keeps the short form.
+  EXPECT_EQ(summary_line(run_claims({"gamma-system"}, embedded_paper())).rfind("1 claim: 0 held, 1 erratum, 0 failed;", 0), 0u);
 }
 
 // The 11/25 copy: Phi_3's (2,2) entry changed. Seven claims that read Phi_3 turn red; the naming

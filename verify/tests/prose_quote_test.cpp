@@ -272,7 +272,7 @@ TEST(ChangedSentence, TheReferesReadingsHoldWithARemark) {
   const run_context ctx{{precision::parse("double")}, 20230830, 2, &embedded_reading()};
   const claim_result affine = check_claim(paper_book().find("qm-not-affine"), ctx);
   EXPECT_EQ(affine.outcome, verdict::holds) << affine.note;
-  EXPECT_EQ(affine.remark_kind, finding::wording) << affine.remark;  // affine for some data: q_l + q_r = 0, or omega = 0
+  EXPECT_EQ(affine.remark_kind, finding::wording) << affine.remark;  // affine for some data: q_l + q_r = 0
   EXPECT_NE(affine.note.find("At h = 0 it is affine: the condition h > 0 is what makes it not affine"), std::string::npos) << affine.note;
   // With the harmonic q_m printed as the midpoint, the curve is affine for every h: "not linear" is false.
   const paper_reading midpoint = altered_reading("q_m = {{1}\\over{1-{{\\omega^2 \\, h^2}\\over{8}}}} \\, {{q_\\ell + q_r}\\over2} .", "q_m = {{q_\\ell + q_r}\\over2} .");

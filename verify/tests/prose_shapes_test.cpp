@@ -82,6 +82,34 @@ TEST_F(ProseOfADocument, SpellingFindsEachSlipOnceWithTheDictionarysSuggestion) 
   EXPECT_EQ(clean.outcome, verdict::holds) << clean.evidence.dump();
 }
 
+// A phrase of the record's takes over a misspelled word where it is printed, and a misuse of real
+// words (which the dictionary passes) is a slip only where the prose prints its phrase.
+TEST_F(ProseOfADocument, SpellingReadsTheRecordsPhrases) {
+  const std::string text = "\\title{Prose under test}\nThe map is explicited here. To explicit the map is easy; it is explicited at the relation "
+                           "$(1)$, and it can we written.\n";
+  const std::string with = "{ suggestions = ['explicited: made explicit', 'explicited at the relation: given explicitly by relation'], "
+                           "misused = ['To explicit: To make explicit', 'can we written: can be written', 'and explicit: and make explicit'] }";
+  const claim_result slips = run("spelling", with, text);
+  ASSERT_EQ(slips.outcome, verdict::erratum) << slips.evidence.dump();
+  ASSERT_EQ(slips.amendments.size(), 4u) << slips.evidence.dump();
+  EXPECT_EQ(slips.amendments[0].printed, "explicited");
+  EXPECT_EQ(slips.amendments[0].should_be, "made explicit");
+  EXPECT_EQ(slips.amendments[1].printed, "explicited at the relation");
+  EXPECT_EQ(slips.amendments[1].should_be, "given explicitly by relation");
+  EXPECT_EQ(slips.amendments[2].printed, "To explicit");
+  EXPECT_EQ(slips.amendments[3].printed, "can we written");
+  EXPECT_EQ(slips.evidence.at("prose").at("misused").size(), 2u) << "'and explicit' is not printed: no slip";
+  // Without the phrases the dictionary passes the real words, and every "explicited" takes one replacement.
+  const claim_result words_only = run("spelling", "{ suggestions = ['explicited: made explicit'] }", text);
+  ASSERT_EQ(words_only.amendments.size(), 1u) << words_only.evidence.dump();
+  EXPECT_EQ(words_only.amendments[0].where, "line 2") << "two on one line: the line once";
+  // The misuse corrected, the words as English uses them: it holds.
+  const claim_result clean = run("spelling", with, "\\title{Prose under test}\nTo make explicit the map, it can be written.\n");
+  EXPECT_EQ(clean.outcome, verdict::holds) << clean.evidence.dump();
+  // A phrase without its replacement is refused when the claims file is read.
+  EXPECT_THROW(run("spelling", "{ misused = ['To explicit'] }", text), claims_file_error);
+}
+
 TEST_F(ProseOfADocument, CitationsWithoutTheirEntriesAreUnverifiableOnce) {
   const std::string cited = "\\title{Prose under test}\nAs shown \\cite{Ar74,Ne59} and again \\cite{Ar74}.\n";
   const claim_result missing = run("citations", "{}", cited);
@@ -144,8 +172,8 @@ TEST_F(ShapesOnADocument, KnownMethod) {
   const claim_result unnamed = judge("map", lobatto_a, presented);
   EXPECT_EQ(unnamed.outcome, verdict::holds) << unnamed.note << unnamed.evidence.dump();
   EXPECT_EQ(unnamed.remark_kind, finding::naming);
-  EXPECT_NE(unnamed.remark.find("The method is the 2-stage Lobatto IIIA-IIIB pair, known prior work: on this problem the printed map (map) is that "
-                                 "method's, proved entry by entry, and the text never names it"),
+  EXPECT_NE(unnamed.remark.find("Known prior work, never named: the method is the 2-stage Lobatto IIIA-IIIB pair. Proved here on this problem "
+                                 "only: the printed map (map) is that method's on q'' = -omega^2 q, entry by entry. The text never names it"),
             std::string::npos)
       << unnamed.remark;
   ASSERT_EQ(unnamed.amendments.size(), 1u);

@@ -27,6 +27,21 @@ std::vector<std::string> precision_names(const std::vector<precision>& precision
   return names;
 }
 
+prose_slips prose_slips_of(const claim_outcome& o) {
+  prose_slips out;
+  if (!o.result.evidence.contains("prose")) return out;
+  const json& prose = o.result.evidence["prose"];
+  if (prose.contains("not_in_dictionary")) out.misspelled = prose["not_in_dictionary"].size();
+  if (prose.contains("misused")) out.misused = prose["misused"].size();
+  return out;
+}
+
+std::string prose_slips_words(std::size_t misspelled, std::size_t misused) {
+  std::string out = fmt::format("{} misspelled word{}", misspelled, misspelled == 1 ? "" : "s");
+  if (misused > 0) out += fmt::format(" and {} phrase{} misused", misused, misused == 1 ? "" : "s");
+  return out;
+}
+
 finding finding_of(const claim_outcome& o) {
   if (!is_finding(o.result.outcome)) return finding::none;
   if (o.result.outcome == o.expected && o.checked->kind != finding::none) return o.checked->kind;
@@ -34,8 +49,13 @@ finding finding_of(const claim_outcome& o) {
 }
 
 verdict_counts count_verdicts(const run_record& r) {
+  return count_verdicts(r, [](const claim_outcome&) { return true; });
+}
+
+verdict_counts count_verdicts(const run_record& r, const std::function<bool(const claim_outcome&)>& keep) {
   verdict_counts c;
   for (const claim_outcome& o : r.outcomes) {
+    if (!keep(o)) continue;
     if (o.result.evidence.contains("error")) {  // a harness fault is never counted as a verdict
       ++c.faults;
       continue;
@@ -48,7 +68,10 @@ verdict_counts count_verdicts(const run_record& r) {
       ++c.source_findings;
     } else if (paper && is_finding(o.result.outcome) && kind == finding::prose) {
       ++c.prose_claims;
-      c.prose_slips += std::max<std::size_t>(1, o.result.amendments.size());
+      const prose_slips slips = prose_slips_of(o);
+      c.prose_misspelled += slips.misspelled;
+      c.prose_misused += slips.misused;
+      c.prose_slips += std::max<std::size_t>(1, slips.misspelled + slips.misused);
     } else if (paper && is_finding(o.result.outcome)) {
       if (cause_of(o).empty()) {
         ++c.distinct;
@@ -107,8 +130,42 @@ namespace {
 
 /// The spelling checks' errata in words: "1 spelling check failing (6 misspelled words)".
 std::string spelling_words(const report_parts::verdict_counts& c) {
-  return fmt::format("{} spelling check{} failing ({} misspelled word{})", c.prose_errata, c.prose_errata == 1 ? "" : "s", c.prose_slips,
-                     c.prose_slips == 1 ? "" : "s");
+  return fmt::format("{} spelling check{} failing ({})", c.prose_errata, c.prose_errata == 1 ? "" : "s",
+                     report_parts::prose_slips_words(c.prose_misspelled, c.prose_misused));
+}
+
+/// Each verdict's count in its words (verdict.hpp's table): those always shown, then the others met.
+std::string counted_words(const report_parts::verdict_counts& c, bool only_met = false) {
+  std::vector<std::string> counted;
+  for (const verdict_meaning& m : verdict_meanings) {
+    // A spelling check's erratum judges the source's words, not a statement: named apart, after the errata.
+    const std::size_t spelling = m.value == verdict::erratum ? c.prose_errata : 0;
+    const std::size_t n = c.count(m.value) - spelling;
+    if ((only_met || !m.always_counted) && n == 0) continue;
+    std::string words = fmt::format(fmt::runtime(n == 1 ? m.counted_as_one : m.counted_as), n);
+    if (m.affirms && c.remarks > 0) words += fmt::format(" ({} with a remark)", c.remarks);
+    if (m.value == verdict::erratum && c.errata_following > 0) words += fmt::format(" ({} following from another's)", c.errata_following);
+    counted.push_back(words);
+    if (spelling > 0) counted.push_back(spelling_words(c));
+  }
+  if (c.faults) counted.push_back(fmt::format("{} without a verdict (a harness fault: the check threw)", c.faults));
+  return report_parts::join(counted, ", ");
+}
+
+/// A check of the source by its id and verdict: "prose-spelling failing (6 misspelled words)",
+/// "bibliography unverifiable (its material absent from the supplied source)".
+std::string source_check_words(const claim_outcome& o) {
+  const std::string& id = o.checked->id;
+  if (o.result.evidence.contains("error")) return id + " without a verdict (a harness fault)";
+  const report_parts::prose_slips slips = report_parts::prose_slips_of(o);
+  switch (o.result.outcome) {
+    case verdict::holds: return id + " holds";
+    case verdict::erratum:
+      return report_parts::finding_of(o) == finding::prose ? fmt::format("{} failing ({})", id, report_parts::prose_slips_words(slips.misspelled, slips.misused))
+                                                        : id + " erratum";
+    case verdict::unverifiable: return id + " unverifiable (its material absent from the supplied source)";
+    default: return id + " " + to_string(o.result.outcome);
+  }
 }
 
 }  // namespace
@@ -147,22 +204,36 @@ std::string summary_line(const run_record& r) {
                              : r.validation      ? std::string(e.total == 0 ? "every claim holds" : "every claim and expectation holds")
                              : !c.fixed.empty()  ? fmt::format("all verdicts as expected, {} fixed, fixes accepted ({})", c.fixed.size(), report_parts::join(c.fixed, ", "))
                                                  : std::string("all verdicts as expected");
-  // Each verdict's count in its words (verdict.hpp's table): those always shown, then the others met.
-  std::vector<std::string> counted;
-  for (const verdict_meaning& m : verdict_meanings) {
-    // A spelling check's erratum judges the source's words, not a statement: named apart, after the errata.
-    const std::size_t spelling = m.value == verdict::erratum ? c.prose_errata : 0;
-    const std::size_t n = c.count(m.value) - spelling;
-    if (!m.always_counted && n == 0) continue;
-    std::string words = fmt::format(fmt::runtime(n == 1 ? m.counted_as_one : m.counted_as), n);
-    if (m.affirms && c.remarks > 0) words += fmt::format(" ({} with a remark)", c.remarks);
-    if (m.value == verdict::erratum && c.errata_following > 0) words += fmt::format(" ({} following from another's)", c.errata_following);
-    counted.push_back(words);
-    if (spelling > 0) counted.push_back(spelling_words(c));
+  // The records in their groups, each counted apart: the paper's (or the document's) claims, the
+  // checks of its source (its spelling, its citations: no statement of the text), the harness's own
+  // (beyond the paper, or the reductions every proof uses). One group alone is "N claims: ...".
+  const auto source_check = [](const claim_outcome& o) { return o.checked->origin == claim_origin::paper && o.result.reads_whole_text; };
+  const auto text_claim = [&](const claim_outcome& o) { return o.checked->origin == claim_origin::paper && !source_check(o); };
+  const auto own = [](const claim_outcome& o) { return o.checked->origin != claim_origin::paper; };
+  std::size_t claims = 0, checks = 0, owns = 0;
+  for (const claim_outcome& o : r.outcomes) (source_check(o) ? checks : text_claim(o) ? claims : owns) += 1;
+  const int groups = (claims > 0) + (checks > 0) + (owns > 0);
+  if (groups <= 1) {
+    return fmt::format("{} {}: {}{}; {}", r.outcomes.size(), r.outcomes.size() == 1 ? "claim" : "claims", counted_words(report_parts::count_verdicts(r)),
+                       expectations, ending);
   }
-  if (c.faults) counted.push_back(fmt::format("{} without a verdict (a harness fault: the check threw)", c.faults));
-  return fmt::format("{} {}: {}{}; {}", r.outcomes.size(), r.outcomes.size() == 1 ? "claim" : "claims", report_parts::join(counted, ", "), expectations,
-                     ending);
+  const std::string whose = r.of_the_paper ? "the paper's" : "the document's";
+  std::vector<std::string> parts;
+  if (claims > 0) {
+    parts.push_back(fmt::format("{} {} claim{}: {}", whose, claims, claims == 1 ? "" : "s", counted_words(report_parts::count_verdicts(r, text_claim))));
+  }
+  if (checks > 0) {
+    std::vector<std::string> each;
+    for (const claim_outcome& o : r.outcomes) {
+      if (source_check(o)) each.push_back(source_check_words(o));
+    }
+    parts.push_back(fmt::format("{} check{} of {} source: {}", checks, checks == 1 ? "" : "s", r.of_the_paper ? "its" : "the", report_parts::join(each, ", ")));
+  }
+  if (owns > 0) {
+    // The harness's own records: only the verdicts met ("6 held"), no findings of the paper's to count.
+    parts.push_back(fmt::format("{} of the harness's own: {}", owns, counted_words(report_parts::count_verdicts(r, own), true)));
+  }
+  return fmt::format("{} records: {}{}; {}", r.outcomes.size(), report_parts::join(parts, "; "), expectations, ending);
 }
 
 namespace {
@@ -398,7 +469,8 @@ std::string findings_headline(const run_record& r) {
   for (const claim_outcome& o : r.outcomes) {
     if (o.checked->origin != claim_origin::paper || !o.result.reads_whole_text) continue;
     const finding kind = report_parts::finding_of(o);
-    of_source.push_back(kind == finding::prose ? fmt::format("{} ({})", o.checked->id, n(c.prose_slips, "misspelled word", "misspelled words"))
+    const report_parts::prose_slips slips = report_parts::prose_slips_of(o);
+    of_source.push_back(kind == finding::prose ? fmt::format("{} ({})", o.checked->id, report_parts::prose_slips_words(slips.misspelled, slips.misused))
                         : kind == finding::unverifiable ? o.checked->id + " (unverifiable: its material absent from the supplied source)"
                         : is_finding(o.result.outcome) ? fmt::format("{} ({})", o.checked->id, to_string(o.result.outcome))
                                                        : o.checked->id + " (holds)");

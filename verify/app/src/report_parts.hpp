@@ -6,6 +6,7 @@
 #include <simpson/verify/run.hpp>
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -31,7 +32,8 @@ struct verdict_counts {
   std::size_t remarks = 0;                                       // the paper's claims that hold, with a remark
   std::size_t linked_remarks = 0;  // of those, the ones that follow a finding or a remark of another claim (counted with it)
   std::size_t whole_text = 0;                                    // claims that read the text as a whole (spelling, citations)
-  std::size_t prose_claims = 0, prose_slips = 0;                 // its spelling, counted apart: the claims, and the words they found
+  std::size_t prose_claims = 0, prose_slips = 0;                 // its spelling, counted apart: the claims, and the slips they found
+  std::size_t prose_misspelled = 0, prose_misused = 0;           // the slips: words not in the dictionary, phrases of real words misused
   std::size_t prose_errata = 0;  // the paper's spelling checks whose verdict is erratum, named apart from the errata on the run line
   /// How many claims have each verdict, in verdict_meanings' order.
   std::array<std::size_t, verdict_meanings.size()> of{};
@@ -42,11 +44,23 @@ struct verdict_counts {
 };
 
 
+/// A spelling check's slips, from its evidence: the words not in the dictionary, and the phrases of
+/// real words the record names as misused that the prose prints.
+struct prose_slips {
+  std::size_t misspelled = 0, misused = 0;
+};
+prose_slips prose_slips_of(const claim_outcome& o);
+/// "6 misspelled words", "6 misspelled words and 2 phrases misused".
+std::string prose_slips_words(std::size_t misspelled, std::size_t misused);
+
 /// The class of a claim's finding: the ledger's when the verdict is the expected one; an unexpected
 /// finding is an erratum (or unverifiable) until the ledger classifies it; none when it holds.
 finding finding_of(const claim_outcome& o);
 
 verdict_counts count_verdicts(const run_record& r);
+/// The same counts over the outcomes `keep` accepts (one group of the run line: the paper's claims,
+/// the checks of its source, the harness's own records).
+verdict_counts count_verdicts(const run_record& r, const std::function<bool(const claim_outcome&)>& keep);
 
 /// The experiments' expectations of a run: how many, and the keys of those that failed.
 struct expectation_counts {

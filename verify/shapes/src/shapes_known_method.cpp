@@ -166,10 +166,15 @@ decider_evidence known_method_shape(const shape_call& call, const run_context& c
   }
   result.remark_kind = finding::naming;
   result.evidence["prior_work"] = method;  // the referee's summary names it: a known method derived anew
-  result.remark = fmt::format("The method is {}, known prior work: on this problem the printed map ({}) is that method's, proved entry by entry, and "
-                              "the text never names it ({} looked for in its prose): a known method, derived anew. Which of its citations "
-                              "covers it cannot be read: the source has no bibliography.",
-                              method, reference_of(call, "map"), fmt::format("{}", fmt::join(names, ", ")));
+  // What the proof covers is this problem's map; the construction's general equivalence with the
+  // method is the literature's theorem (the record's `construction`, its words), not proved here.
+  const std::string construction = read.has("construction") ? call.with.at("construction").values.front() : std::string();
+  result.remark = fmt::format("Known prior work, never named: the method is {}{}. Proved here on this problem only: the printed map ({}) is that "
+                              "method's on q'' = -omega^2 q, entry by entry{}. The text never names it ({} looked for in its prose). Which of "
+                              "its citations covers it cannot be read: the source has no bibliography.",
+                              method, construction.empty() ? std::string() : ", " + construction, reference_of(call, "map"),
+                              construction.empty() ? std::string() : "; that the construction gives the method beyond this problem is that work's theorem, not checked here",
+                              fmt::format("{}", fmt::join(names, ", ")));
   result.amendments.push_back(amendment_in_words("what the method is", said.words("novelty"),
                                                  said.words("novelty") + ", named: " + method + " (known prior work, with its citation)"));
   e.found = std::move(result);
@@ -195,6 +200,9 @@ std::vector<proof_shape> known_method_shape_specs() {
                    {"weights", argument_kind::formula, true, "its weights, a 1 x s row"},
                    {"method", argument_kind::word, true, "the method's name, in words ('the 3-stage Lobatto IIIA-IIIB pair')"},
                    {"names", argument_kind::words, true, "words whose presence in the prose names it ('Lobatto')"},
+                   {"construction", argument_kind::word, false,
+                    "the construction in the literature that gives the method in general, with its source, in words ('the Galerkin variational "
+                    "integrator of ... (Marsden and West 2001)'): the remark says the proof is of this problem's map only"},
                    pattern_with_hole("sentence", "the sentence presenting the method as the text's own, with the hole {novelty}", "novelty")}),
        known_method_shape});
   return all;

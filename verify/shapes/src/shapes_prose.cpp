@@ -17,6 +17,8 @@
 #include <map>
 #include <memory>
 #include <set>
+#include <algorithm>
+#include <cctype>
 #include <stdexcept>
 
 namespace simpson::verify::detail {
@@ -38,12 +40,57 @@ std::string stem(const std::string& word) {
   return word;
 }
 
+/// A record's "printed: replacement" rule, its printed side split into words.
+struct phrase_rule {
+  std::vector<std::string> words;
+  std::string replacement;
+};
+
+std::vector<phrase_rule> phrase_rules(const shape_call& call, const std::string& parameter) {
+  std::vector<phrase_rule> rules;
+  if (!call.with.count(parameter)) return rules;
+  for (const std::string& pair : call.with.at(parameter).values) {
+    const std::size_t colon = pair.find(": ");
+    if (colon == std::string::npos) throw std::invalid_argument("'" + parameter + "': '" + pair + "' is not 'printed: replacement'");
+    phrase_rule rule{{}, pair.substr(colon + 2)};
+    std::string word;
+    for (const char c : pair.substr(0, colon) + " ") {
+      if (c != ' ') {
+        word += c;
+      } else if (!word.empty()) {
+        rule.words.push_back(word);
+        word.clear();
+      }
+    }
+    if (rule.words.empty() || rule.replacement.empty()) throw std::invalid_argument("'" + parameter + "': '" + pair + "' is not 'printed: replacement'");
+    rules.push_back(std::move(rule));
+  }
+  return rules;
+}
+
+/// Whether the prose's words from `at` on are the phrase's (ASCII letters' case aside: a phrase may
+/// open a sentence).
+bool phrase_at(const std::vector<prose_word>& words, std::size_t at, const std::vector<std::string>& phrase) {
+  if (at + phrase.size() > words.size()) return false;
+  for (std::size_t k = 0; k < phrase.size(); ++k) {
+    const std::string& a = words[at + k].word;
+    const std::string& b = phrase[k];
+    if (a.size() != b.size()) return false;
+    for (std::size_t c = 0; c < a.size(); ++c) {
+      if (std::tolower(static_cast<unsigned char>(a[c])) != std::tolower(static_cast<unsigned char>(b[c]))) return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 /// Every word of the prose (prose_words.hpp) is in Hunspell's en_US dictionary or the record's
 /// vocabulary (the document's names and terms of art: symplectic, Newmark). A word that is in
-/// neither is a spelling slip, the dictionary's first suggestion what should stand there; each
-/// slip once, with the lines it is printed on. Lexical by nature: no computation is involved.
+/// neither is a spelling slip, the dictionary's first suggestion what should stand there (or the
+/// record's, in a phrase of the record's where that phrase is printed); each slip once, with the
+/// lines it is printed on. Real words misused pass a dictionary: the record names their phrases
+/// (`misused`), each a slip where the prose prints it. Lexical: no computation is involved.
 decider_evidence spelling_shape(const shape_call& call, const run_context& ctx) {
   const paper_reading& paper = paper_of(ctx);
   const std::unique_ptr<Hunspell> dictionary = english_dictionary();
@@ -65,61 +112,126 @@ decider_evidence spelling_shape(const shape_call& call, const run_context& ctx) 
     }
   }
   // The record's own replacements, where the dictionary's first suggestion is not what an English
-  // writer would put ("explicited": "made explicit", not "explicated").
+  // writer would put ("explicited": "made explicit", not "explicated"); a key of several words is a
+  // phrase, its replacement taking over the misspelled word where the phrase is printed
+  // ("explicited at the relation": "given explicitly by relation").
   std::map<std::string, std::string> replacements;
-  if (call.with.count("suggestions")) {
-    for (const std::string& pair : call.with.at("suggestions").values) {
-      const std::size_t colon = pair.find(": ");
-      replacements[pair.substr(0, colon)] = pair.substr(colon + 2);
+  std::vector<phrase_rule> context_rules = phrase_rules(call, "suggestions");
+  for (auto it = context_rules.begin(); it != context_rules.end();) {
+    if (it->words.size() == 1) {
+      replacements[it->words.front()] = it->replacement;
+      it = context_rules.erase(it);
+    } else {
+      ++it;
     }
   }
+  // Real words misused, named by the record as phrases ("To explicit": "To make explicit"; "can we
+  // written": "can be written"): a dictionary passes them, the record's phrase finds them in the prose.
+  const std::vector<phrase_rule> misuse_rules = phrase_rules(call, "misused");
   const std::string from = call.with.count("from") ? call.with.at("from").values.front() : std::string();
   const std::vector<prose_word> words = prose_words(paper.source, document_of(ctx), from);
-  std::map<std::string, std::vector<int>> slips;  // word: its lines
+  // Each misspelled word's occurrences: the word, and the replacement where a phrase of the record
+  // covers that occurrence (empty: the word's own replacement).
+  struct occurrence {
+    int line;
+    std::string phrase, replacement;
+  };
+  std::map<std::string, std::vector<occurrence>> slips;
   std::vector<std::string> order;
-  for (const prose_word& w : words) {
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    const prose_word& w = words[i];
     const std::string word = stem(w.word);
     if (dictionary->spell(word) || dictionary->spell(w.word)) continue;
     if (!slips.count(w.word)) order.push_back(w.word);
-    slips[w.word].push_back(w.line);
+    occurrence at{w.line, "", ""};
+    for (const phrase_rule& rule : context_rules) {
+      for (std::size_t k = 0; k < rule.words.size(); ++k) {
+        if (k <= i && phrase_at(words, i - k, rule.words)) at = {w.line, fmt::format("{}", fmt::join(rule.words, " ")), rule.replacement};
+      }
+    }
+    slips[w.word].push_back(at);
   }
   json found = json::array();
   std::vector<std::string> corrections;
+  const auto lines_of = [](std::vector<int> lines) {  // each line once, in order
+    lines.erase(std::unique(lines.begin(), lines.end()), lines.end());
+    return lines.size() == 1 ? fmt::format("line {}", lines.front()) : fmt::format("lines {}", fmt::join(lines, ", "));
+  };
   for (const std::string& word : order) {
     const std::vector<std::string> suggested = dictionary->suggest(word);
     const auto replaced = replacements.find(word);
     const std::string best = replaced != replacements.end() ? replaced->second : suggested.empty() ? std::string() : suggested.front();
-    json lines = slips[word];
-    found.push_back({{"word", word}, {"lines", lines}, {"suggestions", suggested}});
+    // The occurrences grouped by what replaces them: the word's own replacement first, then each phrase's.
+    std::vector<std::pair<std::string, std::string>> groups;  // printed, replacement
+    std::map<std::pair<std::string, std::string>, std::vector<int>> lines;
+    std::vector<int> all_lines;
+    for (const occurrence& at : slips[word]) {
+      const std::pair<std::string, std::string> key = at.phrase.empty() ? std::make_pair(word, best) : std::make_pair(at.phrase, at.replacement);
+      if (!lines.count(key)) groups.push_back(key);
+      lines[key].push_back(at.line);
+      all_lines.push_back(at.line);
+    }
+    found.push_back({{"word", word}, {"lines", all_lines}, {"suggestions", suggested}});
     if (replaced != replacements.end()) found.back()["replacement"] = replaced->second;
-    const std::string where = slips[word].size() == 1 ? fmt::format("line {}", slips[word].front()) : fmt::format("lines {}", fmt::join(slips[word], ", "));
-    result.amendments.push_back(amendment_in_words(where, word, best.empty() ? "(no suggestion)" : best));
-    // No line in the correction: the recorded correction guards the words, and an edit elsewhere moves the lines.
-    const std::size_t times = slips[word].size();
-    corrections.push_back(fmt::format("{}{}: {}", word, times == 1 ? std::string() : fmt::format(" ({} times)", times), best.empty() ? "no suggestion" : best));
+    json in_phrases = json::array();
+    for (const auto& key : groups) {
+      const std::vector<int>& at = lines[key];
+      if (key.first != word) in_phrases.push_back({{"phrase", key.first}, {"lines", at}, {"replacement", key.second}});
+      result.amendments.push_back(amendment_in_words(lines_of(at), key.first, key.second.empty() ? "(no suggestion)" : key.second));
+      // No line in the correction: the recorded correction guards the words, and an edit elsewhere moves the lines.
+      corrections.push_back(fmt::format("{}{}: {}", key.first, at.size() == 1 ? std::string() : fmt::format(" ({} times)", at.size()),
+                                        key.second.empty() ? "no suggestion" : key.second));
+    }
+    if (!in_phrases.empty()) found.back()["in_phrases"] = in_phrases;
   }
-  result.evidence["prose"] = {{"statement", "every word of the prose is in Hunspell's en_US dictionary or the record's vocabulary"},
+  json misused = json::array();
+  std::vector<std::string> misuses;
+  for (const phrase_rule& rule : misuse_rules) {
+    std::vector<int> at;
+    for (std::size_t i = 0; i < words.size(); ++i) {
+      if (phrase_at(words, i, rule.words)) at.push_back(words[i].line);
+    }
+    if (at.empty()) continue;  // not printed (or no longer): no slip
+    const std::string phrase = fmt::format("{}", fmt::join(rule.words, " "));
+    misused.push_back({{"phrase", phrase}, {"lines", at}, {"replacement", rule.replacement}});
+    result.amendments.push_back(amendment_in_words(lines_of(at), phrase, rule.replacement));
+    misuses.push_back(fmt::format("{}{}: {}", phrase, at.size() == 1 ? std::string() : fmt::format(" ({} times)", at.size()), rule.replacement));
+  }
+  result.evidence["prose"] = {{"statement", "every word of the prose is in Hunspell's en_US dictionary or the record's vocabulary, and no phrase the record names as a "
+                                            "misuse is printed"},
                               {"from", from.empty() ? "the body's start" : from},
                               {"words", words.size()},
                               {"vocabulary", vocabulary},
                               {"dictionary", "Hunspell 1.7, en_US (Debian's hunspell-en-us); suggestions are Hunspell's, first first"},
-                              {"not_in_dictionary", found}};
+                              {"not_in_dictionary", found},
+                              {"misused", misused}};
   result.evidence["lexical"] = "the verdict follows from the words as printed; no computation is involved";
   result.certificate_missing = "a spelling check: no identity to state";
   decider_evidence e;
   e.statement = "the prose's spelling";
-  e.lexical = answer_of(order.empty());
-  if (order.empty()) {
-    result.note = fmt::format("Lexical: every one of the {} words of the prose is in the dictionary or the vocabulary.", words.size());
+  e.lexical = answer_of(order.empty() && misuses.empty());
+  if (order.empty() && misuses.empty()) {
+    result.note = fmt::format("Lexical: every one of the {} words of the prose is in the dictionary or the vocabulary{}.", words.size(),
+                              misuse_rules.empty() ? "" : ", and no phrase the record names as a misuse is printed");
     e.found = std::move(result);
     return e;
   }
-  result.correction = fmt::format("{} word{} not in the dictionary, with {}: {}", order.size(), order.size() == 1 ? "" : "s",
-                                  replacements.empty() ? "Hunspell's first suggestion" : "Hunspell's first suggestion or the record's replacement",
-                                  fmt::join(corrections, "; "));
-  result.note = fmt::format("Lexical: {} of the {} words of the prose are in neither Hunspell's en_US dictionary nor the record's vocabulary. A "
-                            "grammatical slip of real words ('can we written') is beyond a dictionary.",
-                            order.size(), words.size());
+  std::vector<std::string> said;
+  if (!order.empty()) {
+    said.push_back(fmt::format("{} word{} not in the dictionary, with {}: {}", order.size(), order.size() == 1 ? "" : "s",
+                               replacements.empty() && context_rules.empty() ? "Hunspell's first suggestion" : "Hunspell's first suggestion or the record's replacement",
+                               fmt::join(corrections, "; ")));
+  }
+  if (!misuses.empty()) {
+    said.push_back(fmt::format("{} phrase{} of dictionary words misused: {}", misuses.size(), misuses.size() == 1 ? "" : "s", fmt::join(misuses, "; ")));
+  }
+  result.correction = fmt::format("{}", fmt::join(said, "; and "));
+  result.note = fmt::format("Lexical: {} of the {} words of the prose {} in neither Hunspell's en_US dictionary nor the record's vocabulary{}. A "
+                            "misuse of real words is found only where the record names its phrase{}.",
+                            order.size(), words.size(), order.size() == 1 ? "is" : "are",
+                            misuses.empty() ? "" : fmt::format(", and {} phrase{} the record names as a misuse {} printed", misuses.size(),
+                                                               misuses.size() == 1 ? "" : "s", misuses.size() == 1 ? "is" : "are"),
+                            misuse_rules.empty() ? " (none named here: 'can we written' would pass)" : "");
   e.found = std::move(result);
   return e;
 }
@@ -161,12 +273,18 @@ decider_evidence citations_shape(const shape_call&, const run_context& ctx) {
 std::vector<proof_shape> prose_shape_specs() {
   std::vector<proof_shape> all;
   const auto add = [&](proof_shape s) { all.push_back(std::move(s)); };
-  add({"spelling", "every word of the document's prose is in Hunspell's en_US dictionary or the record's vocabulary (its names and terms of art)", "",
+  add({"spelling", "every word of the document's prose is in Hunspell's en_US dictionary or the record's vocabulary (its names and terms of art), "
+       "and no phrase the record names as a misuse of real words is printed", "",
        {{"vocabulary", argument_kind::words, false, "words the dictionary lacks that the document spells right: names, terms of art ('symplectic')"},
         {"from", argument_kind::word, false, "where the prose checked starts: words the source prints ('Abstract'); the body's start without it"},
         {"suggestions", argument_kind::words, false,
          "the record's replacement for a slip, where the dictionary's first suggestion is not what an English writer puts there "
-         "('explicited: made explicit')",
+         "('explicited: made explicit'); a key of several words is a phrase whose replacement takes over the word where it is printed "
+         "('explicited at the relation: given explicitly by relation')",
+         0, "", false, {}, "", "", "", "", "", true},
+        {"misused", argument_kind::words, false,
+         "phrases of dictionary words the record names as a misuse, each 'printed: replacement' ('To explicit: To make explicit', 'can we "
+         "written: can be written'): a slip wherever the prose prints it",
          0, "", false, {}, "", "", "", "", "", true}},
        spelling_shape});
   add({"citations", "every \\cite key of the document has its entry in the document's bibliography; unverifiable when one has none", "", {},
