@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.80573e-06:0.00772732]
+set xrange [4.81775e-06:0.00799512]
 set xtics autofreq
 set mxtics default
 set yrange [2.51598e-15:0.00942973]
@@ -34,7 +34,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.14005e-06:0.00762866]
+set xrange [5.13123e-06:0.00840906]
 set xtics autofreq
 set mxtics default
 set yrange [1.00325e-15:0.00120974]
@@ -55,7 +55,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.04067e-05:0.0915734]
+set xrange [8.56419e-05:0.171706]
 set xtics autofreq
 set mxtics default
 set yrange [6.13271e-06:1193.17]
@@ -76,7 +76,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.69511e-06:0.00822733]
+set xrange [8.38375e-06:0.0167164]
 set xtics autofreq
 set mxtics default
 set yrange [1.74912e-12:0.238913]
@@ -97,7 +97,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [7.38038e-06:0.0181647]
+set xrange [7.31233e-06:0.0202925]
 set xtics autofreq
 set mxtics default
 set yrange [1.31557e-10:0.114842]
@@ -141,7 +141,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.80573e-06:0.00772732]
+set xrange [4.81775e-06:0.00799512]
 set xtics autofreq
 set mxtics default
 set yrange [2.51598e-15:0.00942973]
@@ -162,7 +162,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.14005e-06:0.00762866]
+set xrange [5.13123e-06:0.00840906]
 set xtics autofreq
 set mxtics default
 set yrange [1.00325e-15:0.00120974]
@@ -183,7 +183,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [5.04067e-05:0.0915734]
+set xrange [8.56419e-05:0.171706]
 set xtics autofreq
 set mxtics default
 set yrange [6.13271e-06:1193.17]
@@ -204,7 +204,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.69511e-06:0.00822733]
+set xrange [8.38375e-06:0.0167164]
 set xtics autofreq
 set mxtics default
 set yrange [1.74912e-12:0.238913]
@@ -225,7 +225,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [7.38038e-06:0.0181647]
+set xrange [7.31233e-06:0.0202925]
 set xtics autofreq
 set mxtics default
 set yrange [1.31557e-10:0.114842]
