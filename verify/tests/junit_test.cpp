@@ -147,17 +147,17 @@ TEST(JUnit, AValidationFailsWhatDoesNotHoldAndNamesACauseOnce) {
       messages[name] = testcase.get<std::string>("failure.<xmlattr>.message");
     }
   }
-  EXPECT_EQ(types.size(), 3u);
+  // Table 1's numbers hold (another start reproduces them), with a remark linked to the finding on
+  // their description, experiment-conventions: no failure of their own, the cause named once.
+  EXPECT_EQ(types.size(), 2u);
   EXPECT_EQ(types["gamma-system"], "does-not-hold");
   EXPECT_EQ(types["experiment-conventions"], "does-not-hold");
-  EXPECT_EQ(types["table-values"], "consequence");
+  EXPECT_EQ(types.count("table-values"), 0u) << "holds, its remark linked to experiment-conventions: " << messages["table-values"];
   EXPECT_EQ(types.count("gamma-singular"), 0u) << "holds (its printed conclusion the corrected Gamma's): " << messages["gamma-singular"];
-  EXPECT_NE(messages["table-values"].find("a consequence of experiment-conventions"), std::string::npos) << messages["table-values"];
   const std::string line = expectation_line(r);
-  EXPECT_EQ(line.rfind("Exit code 1: 2 claims do not hold as written (gamma-system, experiment-conventions); 1 follows from", 0), 0u) << line;
+  EXPECT_EQ(line.rfind("Exit code 1: 2 claims do not hold as written (gamma-system, experiment-conventions); see Failures.", 0), 0u) << line;
   EXPECT_EQ(line.find("expected"), std::string::npos) << line;
-  EXPECT_NE(summary_line(r).find("3 not holding"), std::string::npos) << summary_line(r);
-  EXPECT_EQ(summary_line(r).find("with a remark"), std::string::npos) << summary_line(r);
+  EXPECT_NE(summary_line(r).find("2 not holding"), std::string::npos) << summary_line(r);
 }
 
 // A section's expectation is a testcase of its section: passed while the run shows what was

@@ -139,6 +139,17 @@ TEST(TexReader, DerivativesAsPeopleWriteThem) {
   EXPECT_TRUE(equal_values(reading_of("\\frac{d q}{d t}"), symbol_of("dq/dt")));
   EXPECT_TRUE(equal_values(reading_of("\\frac{d^6 q}{d t^5}"), symbol_of("d^6q/dt^5")));  // a misprinted order stays visible
   EXPECT_TRUE(equal_values(reading_of("\\frac{dV}{dq}"), GiNaC::diff(apply_function("V", {y}), y).subs(y == symbol_of("q"))));  // V' at q
+  // A dotted state applied at a point is its derivative there, as \frac{dq}{dt}(0) reads: a blind
+  // user's \dot q(0) was read as dq/dt times 0, and \dot q(h/2) as dq/dt h/2, two wrong errata.
+  const ex h = symbol_of("h"), t = symbol_of("t");
+  const ex q1 = GiNaC::diff(apply_function("q", {y}), y), q2 = GiNaC::diff(apply_function("q", {y}), y, 2);
+  EXPECT_TRUE(equal_values(reading_of("\\dot q(0)"), q1.subs(y == 0)));
+  EXPECT_TRUE(equal_values(reading_of("\\dot q(0)"), reading_of("\\frac{\\mathrm d q}{\\mathrm d t}(0)")));
+  EXPECT_TRUE(equal_values(reading_of("\\dot q(h/2)"), q1.subs(y == h / 2)));
+  EXPECT_TRUE(equal_values(reading_of("\\ddot q(t)"), q2.subs(y == t)));
+  EXPECT_TRUE(equal_values(reading_of("L\\bigl(q(t), \\dot q(t)\\bigr)"), apply_function("L", {apply_function("q", {t}), q1.subs(y == t)})));
+  // Spaced, whether applied or a product is not written: refused, as for q itself.
+  EXPECT_NE(why_refused("\\dot q\\,(0)").find("a space between the state q and a parenthesis"), std::string::npos) << why_refused("\\dot q\\,(0)");
 }
 
 TEST(TexReader, LandauTraceAndDeterminant) {

@@ -37,9 +37,10 @@ prose_slips prose_slips_of(const claim_outcome& o) {
 }
 
 std::string prose_slips_words(std::size_t misspelled, std::size_t misused) {
-  std::string out = fmt::format("{} misspelled word{}", misspelled, misspelled == 1 ? "" : "s");
+  // "At least": a dictionary and the record's phrases find what they know, not every slip of usage.
+  std::string out = fmt::format("{} word{} not English", misspelled, misspelled == 1 ? "" : "s");
   if (misused > 0) out += fmt::format(" and {} phrase{} misused", misused, misused == 1 ? "" : "s");
-  return out;
+  return out + ", at least";
 }
 
 finding finding_of(const claim_outcome& o) {
@@ -128,9 +129,9 @@ expectation_counts count_expectations(const run_record& r) {
 
 namespace {
 
-/// The spelling checks' errata in words: "1 spelling check failing (6 misspelled words)".
+/// The spelling checks' errata in words: "1 spelling erratum (6 words not English, at least)".
 std::string spelling_words(const report_parts::verdict_counts& c) {
-  return fmt::format("{} spelling check{} failing ({})", c.prose_errata, c.prose_errata == 1 ? "" : "s",
+  return fmt::format("{} spelling errat{} ({})", c.prose_errata, c.prose_errata == 1 ? "um" : "a",
                      report_parts::prose_slips_words(c.prose_misspelled, c.prose_misused));
 }
 
@@ -152,7 +153,7 @@ std::string counted_words(const report_parts::verdict_counts& c, bool only_met =
   return report_parts::join(counted, ", ");
 }
 
-/// A check of the source by its id and verdict: "prose-spelling failing (6 misspelled words)",
+/// A check of the source by its id and verdict: "prose-spelling erratum (6 words not English, at least)",
 /// "bibliography unverifiable (its material absent from the supplied source)".
 std::string source_check_words(const claim_outcome& o) {
   const std::string& id = o.checked->id;
@@ -161,7 +162,7 @@ std::string source_check_words(const claim_outcome& o) {
   switch (o.result.outcome) {
     case verdict::holds: return id + " holds";
     case verdict::erratum:
-      return report_parts::finding_of(o) == finding::prose ? fmt::format("{} failing ({})", id, report_parts::prose_slips_words(slips.misspelled, slips.misused))
+      return report_parts::finding_of(o) == finding::prose ? fmt::format("{} erratum ({})", id, report_parts::prose_slips_words(slips.misspelled, slips.misused))
                                                         : id + " erratum";
     case verdict::unverifiable: return id + " unverifiable (its material absent from the supplied source)";
     default: return id + " " + to_string(o.result.outcome);
@@ -230,8 +231,14 @@ std::string summary_line(const run_record& r) {
     parts.push_back(fmt::format("{} check{} of {} source: {}", checks, checks == 1 ? "" : "s", r.of_the_paper ? "its" : "the", report_parts::join(each, ", ")));
   }
   if (owns > 0) {
-    // The harness's own records: only the verdicts met ("6 held"), no findings of the paper's to count.
-    parts.push_back(fmt::format("{} of the harness's own: {}", owns, counted_words(report_parts::count_verdicts(r, own), true)));
+    // Records not of the text: beyond it (a statement it does not make) and the harness's own (the
+    // reductions its proofs use); only the verdicts met ("6 held"), no findings of the text's to count.
+    const report_parts::verdict_counts c = report_parts::count_verdicts(r, own);
+    std::vector<std::string> whose_own;
+    if (c.beyond > 0) whose_own.push_back(fmt::format("{} beyond it", c.beyond));
+    if (c.harness > 0) whose_own.push_back(fmt::format("{} the harness's own", c.harness));
+    parts.push_back(fmt::format("{} not of the {} ({}): {}", owns, r.of_the_paper ? "paper" : "document", report_parts::join(whose_own, ", "),
+                                counted_words(c, true)));
   }
   return fmt::format("{} records: {}{}; {}", r.outcomes.size(), report_parts::join(parts, "; "), expectations, ending);
 }
@@ -458,7 +465,9 @@ std::string findings_headline(const run_record& r) {
         !o.result.evidence.contains("prior_work")) {
       continue;
     }
-    line += fmt::format(". Prior work: the method is {}, which the text never names ({})", o.result.evidence["prior_work"].get<std::string>(), o.checked->id);
+    line += fmt::format(". Prior work the text never names: on this problem its map is exactly {}'s, proved here; beyond it, by the "
+                        "literature's construction the remark cites ({})",
+                        o.result.evidence["prior_work"].get<std::string>(), o.checked->id);
   }
   // What the supplied copy lacks is a limit of the source, not a defect of the mathematics: said apart.
   if (c.unverifiable_findings > 0) {

@@ -50,7 +50,7 @@ struct prose_slips {
   std::size_t misspelled = 0, misused = 0;
 };
 prose_slips prose_slips_of(const claim_outcome& o);
-/// "6 misspelled words", "6 misspelled words and 2 phrases misused".
+/// "6 words not English, at least", "6 words not English and 2 phrases misused, at least".
 std::string prose_slips_words(std::size_t misspelled, std::size_t misused);
 
 /// The class of a claim's finding: the ledger's when the verdict is the expected one; an unexpected

@@ -150,7 +150,21 @@ GiNaC::ex reader::primary(cursor& c, const std::vector<std::string>& closers) {
              "\\operatorname{tr}, \\det, \\mathrm d in a derivative, \\mathcal O(h^k)");
     }
     case tex_node_kind::op: return op(c, closers);
-    case tex_node_kind::accent: return named(c, symbol_name(n));
+    case tex_node_kind::accent: {
+      // A dotted function applied at a point, \dot q(0) (q a state or a function): its time
+      // derivative there, D[0](q)(0), as \frac{dq}{dt}(0) reads; never dq/dt times (0). Alone, a
+      // dotted state is its own quantity (dq/dt).
+      const int order = n.text == "\\dot" ? 1 : n.text == "\\ddot" ? 2 : n.text == "\\dddot" ? 3 : 0;
+      if (order > 0 && c.k + 1 < c.list->size()) {
+        const tex_node& base = unwrapped(n.children.front());
+        const tex_node* next = &(*c.list)[c.k + 1];
+        if ((is_greek_or_letter(base) || base.kind == tex_node_kind::scripts) && opens_application(next)) {
+          const std::string name = symbol_name(base);
+          if (declared_.is_function(name)) return named(c, name, order);
+        }
+      }
+      return named(c, symbol_name(n));
+    }
     case tex_node_kind::text: refuse("words inside a formula (\\text{" + n.text + "})", n);
     case tex_node_kind::label: break;
   }

@@ -3,6 +3,7 @@
 #include <simpson/verify/enclosure_undecided.hpp>
 #include <simpson/verify/quoted_sentence.hpp>
 
+#include <stdexcept>
 #include <utility>
 
 namespace simpson::verify::detail {
@@ -48,6 +49,12 @@ decider_evidence observed(published_fact fact, const std::string& coq_none) {
   e.found.evidence = std::move(fact.evidence);
   e.found.note = std::move(fact.note);
   if (!fact.holds) e.found.correction = std::move(fact.correction);
+  if (fact.holds && !fact.remark.empty()) {
+    const std::optional<finding> kind = finding_of_name(fact.remark_class);
+    if (!kind) throw std::logic_error("observed: a fact's remark of no class '" + fact.remark_class + "'");
+    e.found.remark = std::move(fact.remark);
+    e.found.remark_kind = *kind;
+  }
   e.found.certificate_missing = without_coq_statement(coq_none, "a fact an experiment measured: nothing for a proof assistant to state");
   return e;
 }

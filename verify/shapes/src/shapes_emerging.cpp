@@ -52,7 +52,10 @@ decider_evidence emerging_condition_shape(const shape_call& call, const run_cont
   const std::vector<GiNaC::symbol> q = read.symbols("sequence");
   const quoted_sentence said = quote(ctx, call.with.at("sentence").values.front());
   const ex high = interval_end(condition, v, read.reading());
-  const std::string formula_ref = reference_of(call, "formula"), scheme_ref = reference_of(call, "scheme"), var = text_of(v);
+  // The scheme named as a reader names the equation (its left side = 0 is the scheme itself).
+  std::string scheme_ref = reference_of(call, "scheme");
+  if (const std::size_t side = scheme_ref.rfind(", left side"); side != std::string::npos && side + 11 == scheme_ref.size()) scheme_ref.resize(side);
+  const std::string formula_ref = reference_of(call, "formula"), var = text_of(v);
   claim_result result;
   result.printed = read.printed();
   result.certificate_missing = "an argument's reach (where a pole lies against the stable set): the stable bands' signs are certified by the stability claims";
@@ -79,7 +82,10 @@ decider_evidence emerging_condition_shape(const shape_call& call, const run_cont
   const bool end_is_band = same_value(first_band_end, GiNaC::normal(high));
   const std::string stable_set = bands.empty() ? "no v > 0" : fmt::format("{} in {}", var, fmt::join(bands, " and "));
   result.evidence["exact"] = {
-      {"statement", fmt::format("the condition 0 < {} < {} follows from the pole of ({})", var, text_of(high), formula_ref)},
+      // What the verdict decides: the bound is the formula's (first) pole and ends the scheme's first
+      // stable band (not "the condition follows from the pole": a pole excludes one point only).
+      {"statement", fmt::format("the bound {} = {} of the condition 0 < {} < {} is the first pole of ({}) and the end of the first stable band of ({})",
+                                var, text_of(high), var, text_of(high), formula_ref, scheme_ref)},
       {"stated", [&] {
          // Quoted in the remark; the verdict rests on the formulas, not on these words.
          said.record("emerges", "quoted in the remark, not parsed: the verdict rests on the formulas");

@@ -266,9 +266,10 @@ decider_evidence explicit_map_shape(const shape_call& call, const run_context& c
       result.amendments.push_back(amendment_in_words("the scheme's kind", said.words("kind"), "explicit only where " + *pole + " does not hold"));
     } else if (!polynomial) {
       result.remark_kind = finding::wording;
-      result.remark = fmt::format("Explicit on this linear problem: ({}) gives the next state in closed form, regular for every {} > 0. As a method the "
-                                  "scheme is implicit: the entries are rational in {}, with the {} (up to factors free of {}) that solving the step's "
-                                  "linear equation leaves; for a general potential that equation is nonlinear and solved at every step.",
+      result.remark = fmt::format("Explicit only in the sense that on this linear problem ({}) gives the next state in closed form, regular for every "
+                                  "{} > 0, as every linear one-step method does, an implicit one too. In the usual sense the scheme is implicit: the "
+                                  "entries are rational in {}, with the {} (up to factors free of {}) that solving the step's linear equation leaves; "
+                                  "for a general potential that equation is nonlinear and solved at every step.",
                                   map_ref, h, h, denominators_text, h);
       result.amendments.push_back(amendment_in_words("the scheme's kind", said.words("kind"),
                                                      "explicit for this linear problem (in closed form); implicit as a method"));

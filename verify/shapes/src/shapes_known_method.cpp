@@ -170,8 +170,8 @@ decider_evidence known_method_shape(const shape_call& call, const run_context& c
   // method is the literature's theorem (the record's `construction`, its words), not proved here.
   const std::string construction = read.has("construction") ? call.with.at("construction").values.front() : std::string();
   result.remark = fmt::format("Known prior work, never named: the method is {}{}. Proved here on this problem only: the printed map ({}) is that "
-                              "method's on q'' = -omega^2 q, entry by entry{}. The text never names it ({} looked for in its prose). Which of "
-                              "its citations covers it cannot be read: the source has no bibliography.",
+                              "method's on q'' = -omega^2 q, entry by entry{}. The text never names it ({} looked for in its prose). Whether "
+                              "one of its citations covers it cannot be verified: the source has no bibliography.",
                               method, construction.empty() ? std::string() : ", " + construction, reference_of(call, "map"),
                               construction.empty() ? std::string() : "; that the construction gives the method beyond this problem is that work's theorem, not checked here",
                               fmt::format("{}", fmt::join(names, ", ")));

@@ -18,6 +18,10 @@ struct published_fact {
   /// Found false, what holds instead, established by the experiment (an erratum's correction: the
   /// convention under which a printed table is reproduced); empty: a fact found false fails.
   std::string correction = {};
+  /// Found so, what a reader must know beside it (a remark of class `remark_class`, a finding class's
+  /// name: "wording"): the numbers right, their description another claim's finding.
+  std::string remark = {};
+  std::string remark_class = "wording";
 };
 
 }  // namespace simpson::verify
