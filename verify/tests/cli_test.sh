@@ -432,7 +432,7 @@ cmp -s "$paper_src" "$work/table.tex" && fail "changed table: sed changed nothin
 # reading and search in process there.)
 if [ "$part" = main ]; then
   check "changed table" 1 --claims table-values --sections table1 --paper "$work/table.tex" --out "$work/table"
-  grep -q "table-values: verdict fails, expected erratum" "$work/err" || fail "changed table: not named: $(cat "$work/err")"
+  grep -q "table-values: verdict fails, expected holds" "$work/err" || fail "changed table: not named: $(cat "$work/err")"
   grep -q '^Symplectic Simpson,state,10,[^,]*,[^,]*,4.1099999999999999e-03,' "$work/table/table1.csv" || fail "changed table: the section shows the embedded value"
   grep -q '"printed": "4.11e-03"' "$work/table/report.json" || fail "changed table: the claim did not read the changed value"
 fi
