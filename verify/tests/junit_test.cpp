@@ -1,5 +1,8 @@
 // report.junit.xml parses as XML (Boost.PropertyTree's parser) and counts every claim and table.
 
+#include "altered_paper.hpp"
+
+#include <simpson/verify/claims_file.hpp>
 #include <simpson/verify/experiments.hpp>
 #include <simpson/verify/junit.hpp>
 #include <simpson/verify/report.hpp>
@@ -158,6 +161,40 @@ TEST(JUnit, AValidationFailsWhatDoesNotHoldAndNamesACauseOnce) {
   EXPECT_EQ(line.rfind("Exit code 1: 2 claims do not hold as written (gamma-system, experiment-conventions); see Failures.", 0), 0u) << line;
   EXPECT_EQ(line.find("expected"), std::string::npos) << line;
   EXPECT_NE(summary_line(r).find("2 not holding"), std::string::npos) << summary_line(r);
+}
+
+// A consequence is named once, under its cause: on a copy whose Simpson state entry at N = 10 is ten
+// times the printed one, no start reproduces Table 1 (table-values fails, no correction) and the
+// stated one still does not (experiment-conventions): table-values' JUnit failure is a consequence
+// of experiment-conventions, and the exit line counts it apart from the claims that do not hold.
+TEST(JUnit, AValidationNamesAConsequenceUnderItsCause) {
+  const paper_source copy = altered("Symplectic Simpson  & state", "$ 4.11  \\,\\, 10^{-4} $", "$ 4.11  \\,\\, 10^{-3} $");
+  scene s = load_scene("quick", paper_book());
+  s.claims = {"experiment-conventions", "table-values"};
+  s.experiments = experiment_settings{};
+  for (const std::string& id : s.claims) s.expected_overrides[id] = verdict::holds;
+  s.overrides["validate"] = true;
+  auto book = std::make_shared<claim_book>(paper_book());
+  const paper_reading reading = read_paper(copy);
+  check_claims_file_formulas(*book, reading.source);
+  const run_record r = run(s, book, reading);
+  ASSERT_TRUE(r.validation);
+  const boost::property_tree::ptree tree = parsed(report_junit(r));
+  std::map<std::string, std::string> types, messages;
+  for (const auto& [tag, suite] : tree.get_child("testsuites")) {
+    if (tag != "testsuite") continue;
+    for (const auto& [case_tag, testcase] : suite) {
+      if (case_tag != "testcase" || testcase.count("failure") == 0) continue;
+      const std::string name = testcase.get<std::string>("<xmlattr>.name");
+      types[name] = testcase.get<std::string>("failure.<xmlattr>.type");
+      messages[name] = testcase.get<std::string>("failure.<xmlattr>.message");
+    }
+  }
+  EXPECT_EQ(types["experiment-conventions"], "does-not-hold") << messages["experiment-conventions"];
+  EXPECT_EQ(types["table-values"], "consequence") << messages["table-values"];
+  EXPECT_NE(messages["table-values"].find("a consequence of experiment-conventions"), std::string::npos) << messages["table-values"];
+  const std::string line = expectation_line(r);
+  EXPECT_NE(line.find("1 follows from another's correction (table-values (from experiment-conventions))"), std::string::npos) << line;
 }
 
 // A section's expectation is a testcase of its section: passed while the run shows what was
