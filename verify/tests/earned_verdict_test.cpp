@@ -82,6 +82,9 @@ TEST(RefereesCases, ThePaperAsAnExpertReadsIt) {
   EXPECT_NE(outcome_of(r, "qm-not-affine").result.remark.find("affine where q_l+q_r = 0:"), std::string::npos)
       << outcome_of(r, "qm-not-affine").result.remark;
   EXPECT_EQ(outcome_of(r, "qm-not-affine").result.remark.find("omega = 0"), std::string::npos) << outcome_of(r, "qm-not-affine").result.remark;
+  // The departure itself, factored (the second referee): zero only where q_l + q_r = 0, a pole at h omega = 2 sqrt(2).
+  EXPECT_NE(outcome_of(r, "qm-not-affine").result.remark.find("(2*h^2*omega^2*(q_l+q_r)*theta*(theta-1))/(h^2*omega^2-8)"), std::string::npos)
+      << outcome_of(r, "qm-not-affine").result.remark;
   // Not the paper's claim: the harness's own, not counted among the paper's.
   EXPECT_EQ(outcome_of(r, "approximate-energy-sign").checked->origin, claim_origin::beyond);
   const json summary = report_json(r)["summary"];

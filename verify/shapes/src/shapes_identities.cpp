@@ -345,9 +345,29 @@ decider_evidence linear_shape(const shape_call& call, const run_context& ctx) {
       for (const std::string& f : factors) exceptions.push_back(f + " = 0");
       if (!exceptions.empty()) {
         result.remark_kind = finding::wording;
-        result.remark = fmt::format("Not {} in {} for the data in general, as meant; {} where {}: the departure from {} has the factor{} {}.", sense,
+        result.remark = fmt::format("Not {} in {} for the data in general, as meant; {} where {}: the departure from {}, {}, has the factor{} {}.", sense,
                                     fmt::join(names, ", "), sense, fmt::join(exceptions, " or "),
                                     GiNaC::normal(combination).is_zero() ? std::string("0") : fmt::format("{}", fmt::join(terms, " + ")),
+                                    [&] {  // each side's factors in canonical text, sorted (GiNaC orders a product by hash)
+                                      const ex nd = GiNaC::normal(normal_difference(e, combination)).numer_denom();
+                                      const auto factored = [](const ex& side) {
+                                        const ex f = GiNaC::factor(side);
+                                        std::vector<std::string> parts;
+                                        if (GiNaC::is_a<GiNaC::mul>(f)) {
+                                          for (const ex& part : f) parts.push_back(text_of(part));
+                                        } else {
+                                          parts.push_back(text_of(f));
+                                        }
+                                        std::sort(parts.begin(), parts.end());
+                                        std::string out;
+                                        for (const std::string& part : parts) {
+                                          const bool bracket = parts.size() > 1 && part.find_first_of("+-") != std::string::npos && part.front() != '-';
+                                          out += (out.empty() ? "" : "*") + (bracket ? "(" + part + ")" : part);
+                                        }
+                                        return out;
+                                      };
+                                      return "(" + factored(nd.op(0)) + ")/(" + factored(nd.op(1)) + ")";
+                                    }(),
                                     factors.size() > 1 ? "s" : "", fmt::join(factors, ", "));
       }
     }
