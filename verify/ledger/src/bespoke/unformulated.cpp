@@ -189,7 +189,9 @@ decider_evidence check_experiment_conventions(const run_context& ctx) {
                                      simplest->reproduced == entries.size() ? "" : "; a fit of m, the amplitude and the phase reproduces every entry (table-values)"),
                          fmt::format("The stated pair is one exact solution with T = {} one period, but not one Table 1 was computed with "
                                      "(table-values, convention search). ", period) + unstated),
-                   "Table 1 not from its stated start: another, never stated, reproduces it", fmt::format("$q(t) = {}$, $p(t) = {}$", stated.q_tex, stated.p_tex),
+                   fmt::format("Table 1 not from its stated start ({} of its {} informative entries); a start never stated reproduces {} of them",
+                               stated_tally.informative_reproduced, stated_tally.informative, best_tally.informative_reproduced),
+                   fmt::format("$q(t) = {}$, $p(t) = {}$", stated.q_tex, stated.p_tex),
                    fmt::format("a start consistent with Table 1 (the stated one reproduces {} of its {} informative entries at m = 1{}): either "
                                "the oscillator {}, which reproduces {} of them to their printed digits; or Table 1 recomputed from the stated one",
                                stated_tally.informative_reproduced, stated_tally.informative,
