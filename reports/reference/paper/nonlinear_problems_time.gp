@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.47201e-06:0.00736437]
+set xrange [4.57705e-06:0.00735616]
 set xtics autofreq
 set mxtics default
 set yrange [2.51598e-15:0.00942973]
@@ -34,7 +34,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.69052e-06:0.00757091]
+set xrange [4.86441e-06:0.00765683]
 set xtics autofreq
 set mxtics default
 set yrange [1.00325e-15:0.00120974]
@@ -55,7 +55,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.52663e-05:0.0850544]
+set xrange [4.82229e-05:0.10523]
 set xtics autofreq
 set mxtics default
 set yrange [6.13271e-06:1193.17]
@@ -76,7 +76,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.51098e-06:0.00825695]
+set xrange [4.52154e-06:0.00815232]
 set xtics autofreq
 set mxtics default
 set yrange [1.74912e-12:0.238913]
@@ -97,7 +97,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [7.02739e-06:0.0177925]
+set xrange [7.26132e-06:0.0180162]
 set xtics autofreq
 set mxtics default
 set yrange [1.31557e-10:0.114842]
@@ -141,7 +141,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.47201e-06:0.00736437]
+set xrange [4.57705e-06:0.00735616]
 set xtics autofreq
 set mxtics default
 set yrange [2.51598e-15:0.00942973]
@@ -162,7 +162,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.69052e-06:0.00757091]
+set xrange [4.86441e-06:0.00765683]
 set xtics autofreq
 set mxtics default
 set yrange [1.00325e-15:0.00120974]
@@ -183,7 +183,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.52663e-05:0.0850544]
+set xrange [4.82229e-05:0.10523]
 set xtics autofreq
 set mxtics default
 set yrange [6.13271e-06:1193.17]
@@ -204,7 +204,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [4.51098e-06:0.00825695]
+set xrange [4.52154e-06:0.00815232]
 set xtics autofreq
 set mxtics default
 set yrange [1.74912e-12:0.238913]
@@ -225,7 +225,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [7.02739e-06:0.0177925]
+set xrange [7.26132e-06:0.0180162]
 set xtics autofreq
 set mxtics default
 set yrange [1.31557e-10:0.114842]

@@ -13,7 +13,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.34631e-07:0.00026334]
+set xrange [1.49385e-07:0.000268152]
 set xtics autofreq
 set mxtics default
 set yrange [2.94139e-15:0.34373]
@@ -36,7 +36,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [7.416e-06:0.0485315]
+set xrange [7.4917e-06:0.0501633]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
@@ -84,7 +84,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [1.34631e-07:0.00026334]
+set xrange [1.49385e-07:0.000268152]
 set xtics autofreq
 set mxtics default
 set yrange [2.94139e-15:0.34373]
@@ -107,7 +107,7 @@ set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
 unset key
-set xrange [7.416e-06:0.0485315]
+set xrange [7.4917e-06:0.0501633]
 set xtics autofreq
 set mxtics default
 set yrange [3.33375e-15:0.341687]
